@@ -1,0 +1,561 @@
+// servoctl commands: ports, decode, packet (frame builder) and their argument handling.
+#include "cli/servoctl.h"
+
+#include "cli/decoder.h"
+#include "feetech/feetechpacket.h"
+#include "ptk/ptkparameters.h"
+#include "util/hex.h"
+
+#include <QCoreApplication>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QMap>
+#include <QSerialPortInfo>
+#include <QSet>
+
+#include <functional>
+
+namespace cli {
+
+namespace {
+
+// Translation context for the messages of this file.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(servoctl)
+};
+
+const char *const kUsage = QT_TRANSLATE_NOOP(
+    "servoctl",
+    "usage: servoctl [--port PATH] [--baud N] [--json] [--trace] <command> [args]\n"
+    "\n"
+    "commands:\n"
+    "  ports                                  list serial ports\n"
+    "  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each\n"
+    "  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)\n"
+    "  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values\n"
+    "  packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]\n"
+    "      INSTRUCTION: ping read write reg-write action sync-write sync-read\n"
+    "                   recovery reboot reset calibrate\n"
+    "\n"
+    "exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)\n");
+
+// A usage error: the message is printed as one line and servoctl exits 2.
+struct UsageError
+{
+    QString message;
+};
+
+// Options and positional arguments of one invocation. Options may stand anywhere.
+class Arguments
+{
+public:
+    Arguments(const QStringList &raw, const QSet<QString> &valueOptions,
+              const QSet<QString> &flagOptions)
+    {
+        for (int i = 0; i < raw.size(); ++i) {
+            const QString &token = raw.at(i);
+            if (!token.startsWith(QLatin1String("--")) || token == QLatin1String("--")) {
+                m_positional.append(token);
+                continue;
+            }
+            QString name = token.mid(2);
+            QString value;
+            bool hasValue = false;
+            if (const int eq = name.indexOf(u'='); eq >= 0) {
+                value = name.mid(eq + 1);
+                name = name.left(eq);
+                hasValue = true;
+            }
+            if (flagOptions.contains(name)) {
+                if (hasValue)
+                    throw UsageError {Tr::tr("--%1 takes no value").arg(name)};
+                m_flags.insert(name);
+            } else if (valueOptions.contains(name)) {
+                if (!hasValue) {
+                    if (i + 1 >= raw.size())
+                        throw UsageError {Tr::tr("--%1 needs a value").arg(name)};
+                    value = raw.at(++i);
+                }
+                m_values.insert(name, value);
+            } else {
+                throw UsageError {Tr::tr("unknown option --%1").arg(name)};
+            }
+        }
+    }
+
+    const QStringList &positional() const { return m_positional; }
+    bool flag(const QString &name) const { return m_flags.contains(name); }
+    bool has(const QString &name) const { return m_values.contains(name); }
+    QString value(const QString &name) const { return m_values.value(name); }
+    QStringList valueNames() const { return m_values.keys(); }
+
+private:
+    QStringList m_positional;
+    QSet<QString> m_flags;
+    QMap<QString, QString> m_values;
+};
+
+qint64 integerOption(const Arguments &args, const QString &name, qint64 minimum, qint64 maximum)
+{
+    const auto value = util::parseInteger(args.value(name));
+    if (!value)
+        throw UsageError {Tr::tr("--%1: \"%2\" is not a number").arg(name, args.value(name))};
+    if (*value < minimum || *value > maximum)
+        throw UsageError {Tr::tr("--%1: %2 is out of range (%3 to %4)")
+                              .arg(name)
+                              .arg(*value)
+                              .arg(minimum)
+                              .arg(maximum)};
+    return *value;
+}
+
+QByteArray hexOption(const Arguments &args, const QString &name)
+{
+    QString error;
+    const auto bytes = util::parseHex(args.value(name), &error);
+    if (!bytes)
+        throw UsageError {QStringLiteral("--%1: %2").arg(name, error)};
+    return *bytes;
+}
+
+// "1,2,5-7" -> 1 2 5 6 7
+QVector<quint8> idList(const QString &text, int maximumId)
+{
+    QVector<quint8> ids;
+    const auto parseId = [&](const QString &part) {
+        const auto value = util::parseInteger(part);
+        if (!value)
+            throw UsageError {Tr::tr("--ids: \"%1\" is not an ID").arg(part)};
+        if (*value < 0 || *value > maximumId)
+            throw UsageError {Tr::tr("--ids: ID %1 is over %2").arg(*value).arg(maximumId)};
+        return int(*value);
+    };
+    for (const QString &part : text.split(u',', Qt::SkipEmptyParts)) {
+        const int dash = part.indexOf(u'-', 1);
+        if (dash > 0) {
+            const int first = parseId(part.left(dash));
+            const int last = parseId(part.mid(dash + 1));
+            if (last < first)
+                throw UsageError {Tr::tr("--ids: the range %1 runs backwards").arg(part)};
+            for (int id = first; id <= last; ++id)
+                ids.append(quint8(id));
+        } else {
+            ids.append(quint8(parseId(part)));
+        }
+    }
+    if (ids.isEmpty())
+        throw UsageError {Tr::tr("--ids needs at least one ID")};
+    return ids;
+}
+
+class Servoctl
+{
+public:
+    Servoctl(QTextStream &out, QTextStream &err)
+        : m_out(out)
+        , m_err(err)
+    { }
+
+    int run(const QStringList &raw)
+    {
+        try {
+            const Arguments args(raw,
+                                 {QStringLiteral("port"), QStringLiteral("baud"),
+                                  QStringLiteral("family"), QStringLiteral("id"),
+                                  QStringLiteral("addr"), QStringLiteral("data"),
+                                  QStringLiteral("len"), QStringLiteral("ids")},
+                                 {QStringLiteral("json"), QStringLiteral("trace"),
+                                  QStringLiteral("help"), QStringLiteral("version")});
+            m_json = args.flag(QStringLiteral("json"));
+            if (args.flag(QStringLiteral("help"))) {
+                m_out << Tr::tr(kUsage);
+                return ExitOk;
+            }
+            if (args.flag(QStringLiteral("version"))) {
+                m_out << "servoctl " << QCoreApplication::applicationVersion() << '\n';
+                return ExitOk;
+            }
+            if (args.positional().isEmpty())
+                throw UsageError {Tr::tr("no command given (try servoctl --help)")};
+            const QString command = args.positional().first();
+            const QStringList rest = args.positional().mid(1);
+            if (command == QLatin1String("ports"))
+                return ports(args, rest);
+            if (command == QLatin1String("decode"))
+                return decode(args, rest);
+            if (command == QLatin1String("packet"))
+                return packet(args, rest);
+            throw UsageError {Tr::tr("unknown command \"%1\" (try servoctl --help)").arg(command)};
+        } catch (const UsageError &error) {
+            m_err << "servoctl: " << error.message << '\n';
+            m_err.flush();
+            return ExitUsage;
+        }
+    }
+
+private:
+    // Options a command accepts besides the global ones.
+    static void allowOnly(const Arguments &args, const QStringList &allowed, const QString &what)
+    {
+        static const QStringList kGlobal {QStringLiteral("port"), QStringLiteral("baud")};
+        for (const QString &name : args.valueNames()) {
+            if (!allowed.contains(name) && !kGlobal.contains(name))
+                throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
+        }
+    }
+
+    void printJson(const QJsonValue &value)
+    {
+        const QJsonDocument document =
+            value.isArray() ? QJsonDocument(value.toArray()) : QJsonDocument(value.toObject());
+        m_out << document.toJson(QJsonDocument::Indented);
+        m_out.flush();
+    }
+
+    int ports(const Arguments &args, const QStringList &rest)
+    {
+        allowOnly(args, {}, QStringLiteral("ports"));
+        if (!rest.isEmpty())
+            throw UsageError {Tr::tr("ports takes no arguments")};
+        const auto available = QSerialPortInfo::availablePorts();
+        if (m_json) {
+            QJsonArray array;
+            for (const QSerialPortInfo &port : available) {
+                QJsonObject object {{QStringLiteral("name"), port.portName()},
+                                    {QStringLiteral("path"), port.systemLocation()},
+                                    {QStringLiteral("description"), port.description()},
+                                    {QStringLiteral("manufacturer"), port.manufacturer()},
+                                    {QStringLiteral("serial_number"), port.serialNumber()}};
+                if (port.hasVendorIdentifier())
+                    object.insert(QStringLiteral("vendor_id"), port.vendorIdentifier());
+                if (port.hasProductIdentifier())
+                    object.insert(QStringLiteral("product_id"), port.productIdentifier());
+                array.append(object);
+            }
+            printJson(array);
+            return ExitOk;
+        }
+        if (available.isEmpty())
+            m_out << Tr::tr("no serial ports found") << '\n';
+        for (const QSerialPortInfo &port : available) {
+            m_out << port.systemLocation();
+            if (!port.description().isEmpty())
+                m_out << "  " << port.description();
+            m_out << '\n';
+        }
+        m_out.flush();
+        return ExitOk;
+    }
+
+    int decode(const Arguments &args, const QStringList &rest)
+    {
+        allowOnly(args, {QStringLiteral("family")}, QStringLiteral("decode"));
+        if (rest.isEmpty())
+            throw UsageError {Tr::tr("decode needs the bytes to decode, as hex")};
+        QString error;
+        const auto bytes = util::parseHex(rest, &error);
+        if (!bytes)
+            throw UsageError {error};
+        std::optional<Protocol> protocol;
+        if (args.has(QStringLiteral("family"))) {
+            const QString family = args.value(QStringLiteral("family"));
+            if (family == QLatin1String("ptk"))
+                protocol = Protocol::Ptk;
+            else if (family == QLatin1String("feetech"))
+                protocol = Protocol::Feetech;
+            else
+                throw UsageError {Tr::tr("--family must be ptk or feetech")};
+        } else {
+            protocol = guessProtocol(*bytes);
+            if (!protocol)
+                throw UsageError {Tr::tr("no PTK (AF FA) or Feetech (FF FF) header found; "
+                                         "name the protocol with --family")};
+        }
+        const QVector<DecodedFrame> frames = decodeStream(*protocol, *bytes);
+        if (m_json) {
+            QJsonArray array;
+            for (const DecodedFrame &frame : frames)
+                array.append(toJson(frame));
+            printJson(array);
+        } else {
+            for (const DecodedFrame &frame : frames) {
+                m_out << util::toHex(frame.bytes) << '\n' << "    " << frame.summary;
+                if (frame.kind != QLatin1String("garbage")
+                    && frame.kind != QLatin1String("incomplete"))
+                    m_out << (frame.checksumValid ? Tr::tr(" [checksum ok]")
+                                                  : Tr::tr(" [BAD CHECKSUM]"));
+                m_out << '\n';
+            }
+            m_out.flush();
+        }
+        return ExitOk;
+    }
+
+    int printFrames(const QVector<std::pair<QString, QByteArray>> &frames)
+    {
+        if (m_json) {
+            QJsonArray array;
+            for (const auto &[name, bytes] : frames)
+                array.append(QJsonObject {{QStringLiteral("name"), name},
+                                          {QStringLiteral("hex"), util::toHex(bytes)}});
+            printJson(array);
+        } else {
+            for (const auto &frame : frames)
+                m_out << util::toHex(frame.second) << '\n';
+            m_out.flush();
+        }
+        return ExitOk;
+    }
+
+    int packet(const Arguments &args, const QStringList &rest)
+    {
+        if (rest.isEmpty())
+            throw UsageError {Tr::tr("packet needs a protocol: ptk or feetech")};
+        if (rest.first() == QLatin1String("ptk"))
+            return ptkPacket(args, rest.mid(1));
+        if (rest.first() == QLatin1String("feetech"))
+            return feetechPacket(args, rest.mid(1));
+        throw UsageError {Tr::tr("unknown protocol \"%1\": use ptk or feetech").arg(rest.first())};
+    }
+
+    int ptkPacket(const Arguments &args, const QStringList &rest)
+    {
+        allowOnly(args, {}, QStringLiteral("packet ptk"));
+        if (rest.isEmpty())
+            throw UsageError {Tr::tr("packet ptk needs query CMD or write NAME=VALUE...")};
+        if (rest.first() == QLatin1String("query")) {
+            if (rest.size() != 2)
+                throw UsageError {Tr::tr("packet ptk query needs exactly one command")};
+            const QString text = rest.at(1);
+            for (const ptk::FrameLayout &query : ptk::queryLayouts()) {
+                if (text.compare(QLatin1String(query.name), Qt::CaseInsensitive) == 0)
+                    return printFrames(
+                        {{QLatin1String(query.name), ptk::encodeQuery(query.command)}});
+            }
+            const auto command = util::parseInteger(text);
+            if (!command || *command < 0 || *command > 255)
+                throw UsageError {
+                    Tr::tr("\"%1\" is not a command byte (0-255) or N1..N8").arg(text)};
+            const ptk::FrameLayout *known = ptk::findQuery(quint8(*command));
+            return printFrames({{known ? QLatin1String(known->name) : QString(),
+                                 ptk::encodeQuery(quint8(*command))}});
+        }
+        if (rest.first() == QLatin1String("write"))
+            return ptkWrite(rest.mid(1));
+        throw UsageError {
+            Tr::tr("unknown PTK packet \"%1\": use query or write").arg(rest.first())};
+    }
+
+    int ptkWrite(const QStringList &assignments)
+    {
+        if (assignments.isEmpty())
+            throw UsageError {Tr::tr("packet ptk write needs NAME=VALUE arguments")};
+        ptk::ParameterSet values;
+        for (const QString &assignment : assignments) {
+            const int eq = assignment.indexOf(u'=');
+            if (eq <= 0)
+                throw UsageError {Tr::tr("\"%1\" is not NAME=VALUE").arg(assignment)};
+            const QString key = assignment.left(eq);
+            const QString text = assignment.mid(eq + 1);
+            const ptk::ParameterInfo *meta = ptk::findParameter(key);
+            if (!meta) {
+                QStringList known;
+                for (const ptk::ParameterInfo &candidate : ptk::parameterInfos())
+                    known.append(QLatin1String(candidate.key));
+                throw UsageError {Tr::tr("unknown parameter \"%1\" (known: %2)")
+                                      .arg(key, known.join(QStringLiteral(", ")))};
+            }
+            double number = 0;
+            bool ok = false;
+            if (meta->isSwitch && (text == QLatin1String("on") || text == QLatin1String("true"))) {
+                number = 1;
+                ok = true;
+            } else if (meta->isSwitch
+                       && (text == QLatin1String("off") || text == QLatin1String("false"))) {
+                number = 0;
+                ok = true;
+            } else {
+                number = text.toDouble(&ok);
+            }
+            if (!ok)
+                throw UsageError {Tr::tr("%1: \"%2\" is not a number").arg(key, text)};
+            QString error;
+            const auto wire = ptk::fromUserValue(meta->parameter, number, &error);
+            if (!wire)
+                throw UsageError {error};
+            values.set(meta->parameter, *wire);
+        }
+        // Every frame that carries a named value; the whole sequence (N10 included) when every
+        // parameter is named, as PTK's software sends it.
+        QVector<std::pair<QString, QByteArray>> frames;
+        const bool complete = values.isComplete();
+        for (const ptk::FrameLayout &layout : ptk::writeLayouts()) {
+            const bool carries = (layout.word0 && values.has(*layout.word0))
+                || (layout.word1 && values.has(*layout.word1));
+            if (!carries && !complete)
+                continue;
+            const auto request = ptk::writeRequest(layout, values);
+            if (!request) {
+                const auto missing =
+                    layout.word0 && !values.has(*layout.word0) ? *layout.word0 : *layout.word1;
+                throw UsageError {
+                    Tr::tr("write %1 also carries %2; give it too")
+                        .arg(QLatin1String(layout.name), QLatin1String(ptk::info(missing).key))};
+            }
+            frames.append({QLatin1String(layout.name), ptk::encodeRequest(*request)});
+        }
+        return printFrames(frames);
+    }
+
+    int feetechPacket(const Arguments &args, const QStringList &rest)
+    {
+        if (rest.size() != 1)
+            throw UsageError {Tr::tr("packet feetech needs one instruction (try servoctl --help)")};
+        const QString name = rest.first();
+        const QString what = QStringLiteral("packet feetech ") + name;
+        const auto id = [&](bool unicastOnly, std::optional<int> fallback = std::nullopt) {
+            if (!args.has(QStringLiteral("id"))) {
+                if (fallback)
+                    return quint8(*fallback);
+                throw UsageError {Tr::tr("%1 needs --id").arg(what)};
+            }
+            if (unicastOnly) {
+                const auto value = util::parseInteger(args.value(QStringLiteral("id")));
+                if (value && *value > feetech::kMaxServoId && *value <= 255)
+                    throw UsageError {
+                        Tr::tr("%1 needs a unicast ID (0-253), not %2").arg(what).arg(*value)};
+            }
+            return quint8(integerOption(args, QStringLiteral("id"), 0, feetech::kBroadcastId));
+        };
+        const auto address = [&]() {
+            if (!args.has(QStringLiteral("addr")))
+                throw UsageError {Tr::tr("%1 needs --addr").arg(what)};
+            return quint8(integerOption(args, QStringLiteral("addr"), 0, 255));
+        };
+        const auto data = [&]() {
+            if (!args.has(QStringLiteral("data")))
+                throw UsageError {Tr::tr("%1 needs --data").arg(what)};
+            const QByteArray bytes = hexOption(args, QStringLiteral("data"));
+            if (bytes.isEmpty())
+                throw UsageError {Tr::tr("--data is empty")};
+            return bytes;
+        };
+        const auto length = [&](int maximum) {
+            if (!args.has(QStringLiteral("len")))
+                throw UsageError {Tr::tr("%1 needs --len").arg(what)};
+            return int(integerOption(args, QStringLiteral("len"), 1, maximum));
+        };
+        const int maxData = feetech::kMaxPacketSize - feetech::kMinimumPacketSize - 1;
+        const auto checkSize = [&](const QByteArray &packet) {
+            if (packet.size() > feetech::kMaxPacketSize)
+                throw UsageError {Tr::tr("the packet would be %1 bytes; the limit is %2")
+                                      .arg(packet.size())
+                                      .arg(feetech::kMaxPacketSize)};
+            return printFrames({{name, packet}});
+        };
+
+        if (name == QLatin1String("ping")) {
+            allowOnly(args, {QStringLiteral("id")}, what);
+            return checkSize(feetech::ping(id(false)));
+        }
+        if (name == QLatin1String("read")) {
+            allowOnly(args, {QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("len")},
+                      what);
+            const quint8 target = id(true);
+            const quint8 start = address();
+            return checkSize(feetech::read(target, start, quint8(length(maxData))));
+        }
+        if (name == QLatin1String("write") || name == QLatin1String("reg-write")) {
+            allowOnly(args, {QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data")},
+                      what);
+            const quint8 target = id(false);
+            const quint8 start = address();
+            const QByteArray bytes = data();
+            return checkSize(name == QLatin1String("write")
+                                 ? feetech::write(target, start, bytes)
+                                 : feetech::regWrite(target, start, bytes));
+        }
+        if (name == QLatin1String("action")) {
+            allowOnly(args, {QStringLiteral("id")}, what);
+            return checkSize(feetech::action(id(false, feetech::kBroadcastId)));
+        }
+        if (name == QLatin1String("recovery") || name == QLatin1String("reboot")
+            || name == QLatin1String("reset")) {
+            allowOnly(args, {QStringLiteral("id")}, what);
+            const quint8 target = id(false);
+            if (name == QLatin1String("recovery"))
+                return checkSize(feetech::recovery(target));
+            return checkSize(name == QLatin1String("reboot") ? feetech::reboot(target)
+                                                             : feetech::reset(target));
+        }
+        if (name == QLatin1String("calibrate")) {
+            allowOnly(args, {QStringLiteral("id"), QStringLiteral("data")}, what);
+            const quint8 target = id(false);
+            QByteArray position;
+            if (args.has(QStringLiteral("data"))) {
+                position = data();
+                if (position.size() != 2)
+                    throw UsageError {
+                        Tr::tr("calibrate --data is a 2-byte position in the family's byte order")};
+            }
+            return checkSize(feetech::calibrate(target, position));
+        }
+        if (name == QLatin1String("sync-read")) {
+            allowOnly(args, {QStringLiteral("addr"), QStringLiteral("len"), QStringLiteral("ids")},
+                      what);
+            if (!args.has(QStringLiteral("ids")))
+                throw UsageError {Tr::tr("%1 needs --ids").arg(what)};
+            const quint8 start = address();
+            const int count = length(maxData);
+            return checkSize(
+                feetech::syncRead(start, quint8(count),
+                                  idList(args.value(QStringLiteral("ids")), feetech::kMaxServoId)));
+        }
+        if (name == QLatin1String("sync-write")) {
+            allowOnly(args,
+                      {QStringLiteral("addr"), QStringLiteral("len"), QStringLiteral("ids"),
+                       QStringLiteral("data")},
+                      what);
+            if (!args.has(QStringLiteral("ids")))
+                throw UsageError {Tr::tr("%1 needs --ids").arg(what)};
+            const quint8 start = address();
+            const QVector<quint8> ids =
+                idList(args.value(QStringLiteral("ids")), feetech::kMaxServoId);
+            const QByteArray bytes = data();
+            // --data holds one block that every servo gets, or with --len one block per servo.
+            const int blockSize =
+                args.has(QStringLiteral("len")) ? length(maxData) : int(bytes.size());
+            const bool shared = bytes.size() == blockSize;
+            if (!shared && bytes.size() != blockSize * ids.size())
+                throw UsageError {Tr::tr("--data must hold %1 or %2 bytes (--len %1 for %3 servos)")
+                                      .arg(blockSize)
+                                      .arg(blockSize * ids.size())
+                                      .arg(ids.size())};
+            QVector<feetech::SyncWriteEntry> entries;
+            for (int i = 0; i < ids.size(); ++i)
+                entries.append({ids.at(i), shared ? bytes : bytes.mid(i * blockSize, blockSize)});
+            const auto packet = feetech::syncWrite(start, quint8(blockSize), entries);
+            if (!packet)
+                throw UsageError {
+                    Tr::tr("the SYNC WRITE would exceed %1 bytes").arg(feetech::kMaxPacketSize)};
+            return checkSize(*packet);
+        }
+        throw UsageError {
+            Tr::tr("unknown Feetech instruction \"%1\" (try servoctl --help)").arg(name)};
+    }
+
+    QTextStream &m_out;
+    QTextStream &m_err;
+    bool m_json = false;
+};
+
+} // namespace
+
+int runServoctl(const QStringList &arguments, QTextStream &out, QTextStream &err)
+{
+    return Servoctl(out, err).run(arguments);
+}
+
+} // namespace cli

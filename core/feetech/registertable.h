@@ -1,0 +1,121 @@
+// Feetech register tables and the model table, loaded from JSON data and validated.
+#pragma once
+
+#include "feetech/feetechvalue.h"
+
+#include <QString>
+#include <QStringView>
+#include <QVector>
+
+#include <optional>
+
+namespace feetech {
+
+enum class Family { Scs, Sts, Sms, Hls };
+constexpr Family kAllFamilies[] = {Family::Scs, Family::Sts, Family::Sms, Family::Hls};
+
+QString familyKey(Family family); // "scs", "sts", "sms", "hls"
+QString familyName(Family family); // "SCS", "STS", ...
+std::optional<Family> familyFromKey(QStringView key);
+
+enum class Storage { Eeprom, Ram };
+enum class Access { ReadOnly, ReadWrite };
+
+struct Choice
+{
+    qint32 value = 0;
+    QString label;
+};
+
+struct BitName
+{
+    int bit = 0;
+    QString label;
+};
+
+struct Register
+{
+    int address = 0;
+    int size = 1;
+    QString key;
+    QString label;
+    Storage storage = Storage::Ram;
+    Access access = Access::ReadOnly;
+    QString unit;
+    double scale = 1.0;
+    qint32 minimum = 0; // register units (decoded, signed where signBit is set)
+    qint32 maximum = 0;
+    std::optional<int> signBit;
+    std::optional<qint32> defaultValue;
+    QVector<Choice> choices;
+    QVector<BitName> bits;
+    QString note;
+
+    int end() const { return address + size; } // one past the last address
+    bool writable() const { return access == Access::ReadWrite; }
+};
+
+// A run of registers with no gap between them: one READ covers it.
+struct Block
+{
+    int address = 0;
+    int size = 0;
+};
+
+class RegisterTable
+{
+public:
+    // Parses and validates a table; on failure returns nothing and says why in *error, naming
+    // `source` and the register at fault.
+    static std::optional<RegisterTable> fromJson(const QByteArray &json, const QString &source,
+                                                 QString *error);
+    // The table compiled into the application for a family (loaded once).
+    static const RegisterTable &forFamily(Family family);
+
+    Family family() const { return m_family; }
+    const QString &title() const { return m_title; }
+    ByteOrder byteOrder() const { return m_byteOrder; }
+    const QVector<Register> &registers() const { return m_registers; }
+
+    const Register *find(QStringView key) const;
+    const Register *at(int address) const; // the register starting at this address
+    ValueFormat format(const Register &reg) const { return {reg.size, m_byteOrder, reg.signBit}; }
+    QVector<Block> blocks() const;
+
+private:
+    Family m_family = Family::Sts;
+    QString m_title;
+    ByteOrder m_byteOrder = ByteOrder::Little;
+    QVector<Register> m_registers; // ascending addresses, no overlaps
+};
+
+struct ModelInfo
+{
+    int major = 0;
+    int minor = 0;
+    QString name;
+    std::optional<Family> family; // absent: no table we trust, the servo gets a raw view
+};
+
+class ModelTable
+{
+public:
+    static std::optional<ModelTable> fromJson(const QByteArray &json, const QString &source,
+                                              QString *error);
+    static const ModelTable &builtIn();
+
+    // What addresses 3 (major) and 4 (minor) say. An unlisted minor of a known major is named
+    // after the family ("STS (model 9/42)") and keeps the family's table.
+    ModelInfo identify(quint8 major, quint8 minor) const;
+    std::optional<ModelInfo> findByName(QStringView name) const; // case-insensitive
+    const QVector<ModelInfo> &models() const { return m_models; }
+
+private:
+    QVector<ModelInfo> m_models;
+    QVector<std::pair<int, Family>> m_familiesByMajor;
+};
+
+// The model number as the servo's own byte order reads addresses 3-4 (STS3215 = 777).
+quint16 modelNumber(quint8 major, quint8 minor, ByteOrder order);
+
+} // namespace feetech

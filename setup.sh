@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# ServoBench set-up: installs what is missing (Debian 12 / Ubuntu 24.04), builds, then runs the
+# GUI on simulated servos (`./setup.sh run`) or the whole test suite (`./setup.sh test`).
+set -euo pipefail
+
+cd "$(dirname "$0")"
+
+packages=(
+    g++ cmake ninja-build pkg-config
+    qt6-base-dev qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev libgl-dev libxkbcommon-dev
+    qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+)
+
+usage() {
+    echo "usage: ./setup.sh run            build and start ServoBench"
+    echo "       ./setup.sh test           build and run every test (offscreen)"
+    echo "       ./setup.sh test --sanitize  the same with AddressSanitizer + UBSan"
+    echo "       ./setup.sh build          only install what is missing and build"
+}
+
+install_missing() {
+    local missing=()
+    for package in "${packages[@]}"; do
+        if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+            missing+=("$package")
+        fi
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    echo "setup: installing ${missing[*]}"
+    local sudo=()
+    if [ "$(id -u)" -ne 0 ]; then
+        command -v sudo >/dev/null || { echo "setup: need root or sudo to install packages" >&2; exit 1; }
+        sudo=(sudo)
+    fi
+    "${sudo[@]}" apt-get update
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+build() {
+    local dir=$1; shift
+    cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@"
+    cmake --build "$dir" --parallel "$(nproc)"
+}
+
+command=${1:-}
+shift || true
+case "$command" in
+    run)
+        install_missing
+        build build
+        exec ./build/app/servobench "$@"
+        ;;
+    test)
+        install_missing
+        dir=build
+        flags=()
+        if [ "${1:-}" = "--sanitize" ]; then
+            dir=build-sanitize
+            flags=(-DSERVOBENCH_SANITIZE=ON)
+            export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+            export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+        fi
+        build "$dir" "${flags[@]}"
+        ctest --test-dir "$dir" --output-on-failure --parallel "$(nproc)" --timeout 600
+        ;;
+    build)
+        install_missing
+        build build
+        ;;
+    *)
+        usage
+        exit 2
+        ;;
+esac

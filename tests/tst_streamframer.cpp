@@ -1,0 +1,146 @@
+// Tests the generic framer's bookkeeping with a toy format: 'S', length byte, payload, sum.
+#include "link/streamframer.h"
+
+#include <QtTest>
+
+namespace {
+
+// Frames look like 'S' N payload[N] checksum, checksum = N + sum(payload) mod 256.
+class ToyFormat final : public seriallink::FrameFormat
+{
+public:
+    int frameLength(QByteArrayView buffer) const override
+    {
+        if (buffer.isEmpty())
+            return 0;
+        if (buffer[0] != 'S')
+            return -1;
+        if (buffer.size() < 2)
+            return 0;
+        return quint8(buffer[1]) + 3;
+    }
+    bool checksumValid(QByteArrayView frame) const override
+    {
+        unsigned sum = 0;
+        for (qsizetype i = 1; i + 1 < frame.size(); ++i)
+            sum += quint8(frame[i]);
+        return quint8(sum) == quint8(frame.back());
+    }
+};
+
+QByteArray toyFrame(const QByteArray &payload)
+{
+    QByteArray frame("S");
+    frame.append(char(payload.size()));
+    frame.append(payload);
+    unsigned sum = unsigned(payload.size());
+    for (const char c : payload)
+        sum += quint8(c);
+    frame.append(char(sum));
+    return frame;
+}
+
+} // namespace
+
+class TestStreamFramer : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void saysNeedMoreOnAPartialFrameAndKeepsIt()
+    {
+        ToyFormat format;
+        seriallink::StreamFramer framer(format);
+        const QByteArray frame = toyFrame("abc");
+        framer.append(frame.left(3));
+        QVERIFY(!framer.next().has_value());
+        QCOMPARE(framer.pendingBytes(), 3);
+        framer.append(frame.mid(3));
+        const auto item = framer.next();
+        QVERIFY(item.has_value());
+        QCOMPARE(item->kind, seriallink::StreamItem::Kind::Frame);
+        QCOMPARE(item->bytes, frame);
+        QCOMPARE(framer.framesAccepted(), 1);
+    }
+
+    void reportsGarbageAsOneRunWithItsOffset()
+    {
+        ToyFormat format;
+        seriallink::StreamFramer framer(format);
+        framer.append("xyz" + toyFrame("a"));
+        const auto garbage = framer.next();
+        QVERIFY(garbage.has_value());
+        QCOMPARE(garbage->kind, seriallink::StreamItem::Kind::Garbage);
+        QCOMPARE(garbage->bytes, QByteArray("xyz"));
+        QCOMPARE(garbage->offset, 0);
+        const auto frame = framer.next();
+        QVERIFY(frame.has_value());
+        QCOMPARE(frame->offset, 3);
+        QCOMPARE(framer.bytesDiscarded(), 3);
+    }
+
+    void resyncPolicyFindsAFrameHiddenInsideABadCandidate()
+    {
+        ToyFormat format;
+        seriallink::StreamFramer framer(format);
+        // 'S' 3 then a real frame: the false header claims most of the real frame's bytes.
+        const QByteArray real = toyFrame("ok");
+        framer.append(QByteArray("S\x03", 2) + real);
+        QList<seriallink::StreamItem> items;
+        while (auto item = framer.next())
+            items.append(*item);
+        QVERIFY(!items.isEmpty());
+        QCOMPARE(items.last().kind, seriallink::StreamItem::Kind::Frame);
+        QCOMPARE(items.last().bytes, real);
+        QCOMPARE(framer.checksumErrors(), 1);
+    }
+
+    void consumePolicyHandsOutTheBadFrameWhole()
+    {
+        ToyFormat format;
+        seriallink::StreamFramer framer(format,
+                                        seriallink::StreamFramer::BadChecksumPolicy::ConsumeFrame);
+        QByteArray bad = toyFrame("abc");
+        bad[bad.size() - 1] = char(bad.back() + 1);
+        framer.append(bad + toyFrame("d"));
+        const auto first = framer.next();
+        QVERIFY(first.has_value());
+        QCOMPARE(first->kind, seriallink::StreamItem::Kind::BadChecksum);
+        QCOMPARE(first->bytes, bad);
+        QCOMPARE(framer.bytesDiscarded(), bad.size());
+        const auto second = framer.next();
+        QVERIFY(second.has_value());
+        QCOMPARE(second->kind, seriallink::StreamItem::Kind::Frame);
+    }
+
+    void discardPendingDropsAndCountsBufferedBytes()
+    {
+        ToyFormat format;
+        seriallink::StreamFramer framer(format);
+        framer.append(toyFrame("abcd").left(4));
+        QVERIFY(!framer.next().has_value());
+        QCOMPARE(framer.discardPending(), 4);
+        QCOMPARE(framer.pendingBytes(), 0);
+        QCOMPARE(framer.bytesDiscarded(), 4);
+        framer.append(toyFrame("z"));
+        const auto item = framer.next();
+        QVERIFY(item.has_value());
+        QCOMPARE(item->offset, 4);
+    }
+
+    void flushHandsOutTheIncompleteRest()
+    {
+        ToyFormat format;
+        seriallink::StreamFramer framer(format);
+        framer.append(QByteArray("S\x09", 2) + "ab");
+        QVERIFY(!framer.next().has_value());
+        const auto rest = framer.flush();
+        QVERIFY(rest.has_value());
+        QCOMPARE(rest->kind, seriallink::StreamItem::Kind::Incomplete);
+        QCOMPARE(rest->bytes.size(), 4);
+        QVERIFY(!framer.flush().has_value());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestStreamFramer)
+#include "tst_streamframer.moc"
