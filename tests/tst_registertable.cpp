@@ -376,6 +376,16 @@ private slots:
         QVERIFY(!ModelTable::builtIn().findByName(u"sts9999").has_value());
     }
 
+    void findByNameAcceptsEitherAliasOfASlashedName()
+    {
+        const auto info = ModelTable::builtIn().findByName(u"scs0009");
+        QVERIFY(info.has_value());
+        QCOMPARE(info->major, 5);
+        QCOMPARE(info->minor, 4);
+        QVERIFY(ModelTable::builtIn().findByName(u"SCS009").has_value());
+        QVERIFY(!ModelTable::builtIn().findByName(u"SCS009/").has_value());
+    }
+
     void modelTableFromJsonAcceptsAMinimalTable()
     {
         QString error;

@@ -435,9 +435,12 @@ ModelInfo ModelTable::identify(quint8 major, quint8 minor) const
 
 std::optional<ModelInfo> ModelTable::findByName(QStringView name) const
 {
+    // "SCS009/SCS0009" answers to either name.
     for (const ModelInfo &model : m_models) {
-        if (model.name.compare(name, Qt::CaseInsensitive) == 0)
-            return model;
+        for (const QString &alias : model.name.split(u'/')) {
+            if (alias.compare(name, Qt::CaseInsensitive) == 0)
+                return model;
+        }
     }
     return std::nullopt;
 }

@@ -107,7 +107,8 @@ public:
     // What addresses 3 (major) and 4 (minor) say. An unlisted minor of a known major is named
     // after the family ("STS (model 9/42)") and keeps the family's table.
     ModelInfo identify(quint8 major, quint8 minor) const;
-    std::optional<ModelInfo> findByName(QStringView name) const; // case-insensitive
+    std::optional<ModelInfo>
+    findByName(QStringView name) const; // case-insensitive; aliases split by /
     const QVector<ModelInfo> &models() const { return m_models; }
 
 private:

@@ -1,0 +1,57 @@
+// servosim: simulated PTK servo or Feetech bus on a pseudo-terminal, for users and tests.
+#include "sim/simulator.h"
+#include "sim/unixsignals.h"
+#include "version.h"
+
+#include <QCoreApplication>
+#include <QTextStream>
+
+#include <csignal>
+#include <cstdio>
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("servosim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SERVOBENCH_VERSION));
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+
+    const QStringList arguments = QCoreApplication::arguments().mid(1);
+    if (arguments.contains(QStringLiteral("--help")) || arguments.contains(QStringLiteral("-h"))) {
+        out << sim::simulatorUsage();
+        return 0;
+    }
+    QString error;
+    const auto options = sim::parseSimulatorArguments(arguments, &error);
+    if (!options) {
+        err << "servosim: " << error << '\n' << sim::simulatorUsage();
+        return 2;
+    }
+    auto simulator = sim::Simulator::create(*options, &error);
+    if (!simulator) {
+        err << "servosim: " << error << '\n';
+        return 2;
+    }
+
+    sim::UnixSignalWatcher watcher;
+    watcher.watch(SIGINT);
+    watcher.watch(SIGTERM);
+    watcher.watch(SIGHUP);
+    QObject::connect(&watcher, &sim::UnixSignalWatcher::received, &app, [&](int number) {
+        if (number == SIGHUP)
+            simulator->powerCycle();
+        else
+            QCoreApplication::quit();
+    });
+
+    if (!simulator->start(&error)) {
+        err << "servosim: " << error << '\n';
+        return 1;
+    }
+    out << "ready " << simulator->linkPath() << '\n';
+    out.flush();
+    const int status = QCoreApplication::exec();
+    simulator->stop(); // removes the link
+    return status;
+}

@@ -1,0 +1,58 @@
+// A pseudo-terminal whose slave side a client opens like a serial port, through a symlink.
+#pragma once
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+class QSocketNotifier;
+
+namespace sim {
+
+// The simulator holds the master side. A client (QSerialPort, a vendor SDK) opens the symlink.
+// The slave is not kept open here, so the client's exclusive lock (TIOCEXCL) ends with its
+// close and a later client can open it again; while no client has it open, the master reports
+// a hang-up, which is handled by polling until a client returns.
+class PseudoTerminal : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit PseudoTerminal(QObject *parent = nullptr);
+    ~PseudoTerminal() override;
+
+    // Creates the pty and makes `linkPath` a symlink to its slave (replacing a stale symlink).
+    bool open(const QString &linkPath, QString *error);
+    void close();
+
+    bool isOpen() const { return m_master >= 0; }
+    QString slavePath() const { return m_slavePath; }
+    QString linkPath() const { return m_linkPath; }
+
+    // The baud rate the client configured on its side (0 when it cannot be read).
+    qint32 hostBaudRate() const;
+
+    void write(const QByteArray &bytes);
+
+signals:
+    void received(const QByteArray &bytes);
+
+private:
+    void readAvailable();
+    void flushPending();
+
+    int m_master = -1;
+    QString m_slavePath;
+    QString m_linkPath;
+    QSocketNotifier *m_readNotifier = nullptr;
+    QSocketNotifier *m_writeNotifier = nullptr;
+    QTimer m_hangupPoll {this}; // a child, so it moves threads with us
+    QByteArray m_pending; // bytes the pty buffer could not take yet
+};
+
+// TCGETS2 through the master: Linux answers a pty master's termios requests with the slave's
+// settings, which are the ones the client set. Returns 0 when unavailable.
+qint32 readSlaveBaudRate(int masterFd);
+
+} // namespace sim

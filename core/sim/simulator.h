@@ -1,0 +1,126 @@
+// The simulator: a virtual PTK servo or Feetech bus behind a pseudo-terminal, with wire-rate
+// pacing, optional echo, fault injection and a frame log.
+#pragma once
+
+#include "sim/faults.h"
+#include "sim/pseudoterminal.h"
+#include "sim/simlog.h"
+#include "sim/virtualdevice.h"
+#include "sim/virtualfeetechbus.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QStringList>
+#include <QThread>
+#include <QTimer>
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace sim {
+
+class VirtualPtkServo;
+
+using FeetechServoSpec = VirtualFeetechBus::ServoSpec;
+
+struct SimulatorOptions
+{
+    enum class Kind { Ptk, Feetech };
+    Kind kind = Kind::Ptk;
+    QString linkPath;
+    bool echo = false; // answer every host byte back first, like a single-wire adapter
+    FaultSettings faults;
+    quint32 seed = 1;
+    QString logPath;
+    qint64 replyDelayUs = 0; // added to every reply's turnaround
+    QString ptkValues; // "gain=20,..." starting values of the PTK servo
+    QVector<FeetechServoSpec> servos;
+    QString statePath; // Feetech: keeps EEPROM across runs
+};
+
+// Parses servosim's arguments (program name excluded); nothing and *error on a bad one.
+std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &arguments,
+                                                        QString *error);
+QString simulatorUsage();
+
+class Simulator : public QObject
+{
+    Q_OBJECT
+
+public:
+    // Checks the options that need the device (models, IDs, bauds, values, state file).
+    static std::unique_ptr<Simulator> create(const SimulatorOptions &options, QString *error);
+    ~Simulator() override;
+
+    // Opens the pty and makes the link; call in the thread the simulator lives in.
+    bool start(QString *error);
+    void stop();
+
+    QString linkPath() const { return m_pty->linkPath(); }
+    qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
+
+    VirtualDevice &device() { return *m_device; }
+    VirtualPtkServo *ptkServo(); // null on a Feetech bus
+    VirtualFeetechBus *feetechBus(); // null for PTK
+    void powerCycle();
+
+private:
+    Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDevice> device);
+
+    struct Outgoing
+    {
+        qint64 dueUs = 0;
+        QByteArray bytes;
+        const char *direction = nullptr; // set on the last chunk of a frame: log it then
+        QByteArray frame;
+        QString note;
+    };
+
+    void onReceived(const QByteArray &bytes);
+    void respond(const QVector<Response> &responses, qint32 hostBaud, qint64 requestEndUs);
+    void schedule(qint64 startUs, const QByteArray &frame, double byteUs, const char *direction,
+                  const QString &note);
+    void sendDue();
+    void tick();
+
+    SimulatorOptions m_options;
+    std::unique_ptr<VirtualDevice> m_device;
+    PseudoTerminal *m_pty = nullptr;
+    SimLog m_log;
+    std::optional<FaultInjector> m_faults;
+    std::unique_ptr<seriallink::StreamFramer> m_framer;
+    QElapsedTimer m_clock;
+    QTimer *m_sendTimer = nullptr;
+    QTimer *m_tickTimer = nullptr;
+    std::deque<Outgoing> m_outgoing;
+    qint64 m_inputEndUs = 0; // when the host's last byte has crossed the wire
+    qint64 m_busFreeUs = 0; // when the last scheduled reply has crossed the wire
+};
+
+// Runs a simulator on its own thread (tests and the GUI's demo mode).
+class SimulatorThread
+{
+public:
+    SimulatorThread() = default;
+    ~SimulatorThread();
+    SimulatorThread(const SimulatorThread &) = delete;
+    SimulatorThread &operator=(const SimulatorThread &) = delete;
+
+    bool start(const SimulatorOptions &options, QString *error);
+    void stop();
+    bool isRunning() const { return m_simulator != nullptr; }
+    QString linkPath() const { return m_linkPath; }
+
+    // Runs `work` in the simulator's thread and waits for it: the only safe way to look at or
+    // change the simulated devices while they run.
+    void call(const std::function<void(Simulator &)> &work);
+
+private:
+    QThread m_thread;
+    std::unique_ptr<Simulator> m_simulator;
+    QString m_linkPath;
+};
+
+} // namespace sim

@@ -1,0 +1,86 @@
+// A simulated Feetech bus: several virtual servos on one wire, each at its own baud rate, with
+// broadcast, SYNC READ / SYNC WRITE, reply collisions, reboot silence and a persistent EEPROM file.
+#pragma once
+
+#include "feetech/feetechpacket.h"
+#include "sim/virtualdevice.h"
+#include "sim/virtualfeetechservo.h"
+
+#include <QString>
+#include <QVector>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace sim {
+
+class VirtualFeetechBus final : public VirtualDevice
+{
+public:
+    // A rebooting servo (instruction 0x08) hears nothing for this long.
+    static constexpr qint64 kRebootTimeUs = 500'000;
+    static constexpr int kStateFormat = 1;
+
+    struct ServoSpec
+    {
+        quint8 id = 1;
+        QString model; // a model-table name ("STS3215"), "MAJOR/MINOR", or a family ("HLS")
+        qint32 baud = 0; // 0: the family's default rate
+    };
+
+    // The model a spec names: a model-table name, "major/minor" (e.g. "10/1"), or a family key
+    // or name ("hls", "HLS": the family's first listed model, or its generic major/0). Only
+    // models with a register table.
+    static std::optional<feetech::ModelInfo> resolveModel(QStringView name);
+    // Unknown model, ID over 253, baud not a code of spec §6, two servos with one ID at one baud.
+    static bool validate(const QVector<ServoSpec> &specs, QString *error);
+    static std::unique_ptr<VirtualFeetechBus> create(const QVector<ServoSpec> &specs,
+                                                     QString *error);
+
+    // Specs must have passed validate(); invalid entries are skipped.
+    explicit VirtualFeetechBus(const QVector<ServoSpec> &specs);
+
+    const seriallink::FrameFormat &frameFormat() const override { return m_format; }
+    QVector<Response> handleFrame(const QByteArray &frame, qint32 hostBaud, qint64 nowUs) override;
+    void advanceTo(qint64 nowUs) override;
+    void powerCycle() override;
+
+    int servoCount() const { return int(m_slots.size()); }
+    VirtualFeetechServo &servo(int index) { return m_slots.at(size_t(index)).servo; }
+    const VirtualFeetechServo &servo(int index) const { return m_slots.at(size_t(index)).servo; }
+    VirtualFeetechServo *findServo(quint8 id); // first servo with this ID, any baud
+    bool isRebooting(int index, qint64 nowUs) const;
+
+    // State file: JSON {"format": 1, "servos": [{"model", "eeprom": hex of 256 bytes}...]} in
+    // spec order. Loading checks every slot first (count, model, image) and changes nothing on
+    // error; then every servo powers up from its image.
+    bool loadState(const QString &path, QString *error);
+    bool saveState(const QString &path, QString *error) const;
+    // When set, the bus saves the state after every frame that changed an EEPROM image.
+    void setStatePath(const QString &path);
+    QString statePath() const { return m_statePath; }
+    QString lastStateError() const { return m_lastStateError; } // of the last automatic save
+
+    // Bytes of simultaneous replies as the wire sees them: wired-AND (the line idles high),
+    // padded to the longest.
+    static QByteArray collide(const QVector<QByteArray> &frames);
+
+private:
+    struct Slot
+    {
+        VirtualFeetechServo servo;
+        qint64 rebootUntilUs = 0;
+        quint64 savedRevision = 0;
+    };
+
+    bool listens(const Slot &slot, qint32 hostBaud, qint64 nowUs) const;
+    void saveIfChanged();
+
+    feetech::FrameFormat m_format;
+    std::vector<Slot> m_slots;
+    QString m_statePath;
+    QString m_lastStateError;
+};
+
+} // namespace sim

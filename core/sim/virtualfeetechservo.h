@@ -1,0 +1,217 @@
+// One simulated Feetech serial-bus servo: register file, EEPROM lock, instructions and a simple
+// motion / load / thermal model. Pure logic: no I/O, no timers; time passes through advanceTo().
+#pragma once
+
+#include "feetech/feetechpacket.h"
+#include "feetech/registertable.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringView>
+
+#include <array>
+#include <optional>
+
+namespace sim {
+
+class VirtualFeetechServo
+{
+public:
+    static constexpr int kRegisterFileSize = 256;
+
+    // Environment defaults: a 2S LiPo (HLS: a 12 V supply) in a room.
+    static constexpr double kDefaultSupplyVolts = 7.4;
+    static constexpr double kDefaultHlsSupplyVolts = 12.0;
+    static constexpr double kDefaultAmbientCelsius = 25.0;
+
+    // Motion model (steps, seconds). Speed 0 and acceleration 0 mean "the model's maximum".
+    static constexpr double kMaxSpeed4096 = 3400.0; // STS / SMS / HLS, step/s
+    static constexpr double kMaxSpeedScs = 1000.0; // SCS, step/s
+    static constexpr double kFastAcceleration = 50000.0; // step/s² when register 41 is 0 (or SCS)
+    static constexpr double kAccelerationUnit = 100.0; // register 41 unit, step/s²
+    static constexpr double kDampingTimeConstantS = 0.05; // torque enable 2: speed decay
+    static constexpr qint64 kMaxStepUs = 1000; // integration sub-step
+    static constexpr qint64 kMaxCatchUpUs =
+        600'000'000; // longer gaps integrate only the last 10 min
+
+    // Load model (permille of full torque) and electrical / thermal model.
+    static constexpr double kLoadPerAcceleration = 0.004; // ‰ per step/s² applied
+    static constexpr double kFrictionLoad = 30.0; // ‰ while moving
+    static constexpr double kViscousLoad = 0.01; // ‰ per step/s while moving
+    static constexpr double kIdleAmps = 0.05;
+    static constexpr double kStallAmps = 3.0; // added at |load| = 1000 ‰
+    static constexpr double kCurrentUnitAmps = 0.0065; // register 69 unit
+    static constexpr double kSupplyResistanceOhms = 0.2; // voltage sag with current
+    static constexpr double kThermalRiseCelsiusPerAmp = 15.0; // steady state above ambient
+    static constexpr double kThermalTimeConstantS = 120.0;
+
+    // Firmware versions the simulated servos report (spec §2.2 / §10 support rules):
+    // STS 3.10 (0x0B with and without position), HLS 3.45 (both forms), SMS 2.54 (torque
+    // enable 128, no 0x0B), SCS 1.0 (neither).
+    static int firmwareMajor(feetech::Family family);
+    static int firmwareMinor(feetech::Family family);
+
+    // Baud-rate codes 0-7 of spec §6.
+    static std::optional<int> baudCode(qint32 baud);
+    static qint32 baudForCode(int code); // 0 for a code outside 0-7
+    static qint32 defaultBaud(feetech::Family family); // SMS 115200, others 1000000
+
+    // `model.family` must be set and `baud` one of the codes' rates (otherwise the family's
+    // default is used).
+    VirtualFeetechServo(const feetech::ModelInfo &model, quint8 id, qint32 baud);
+
+    feetech::Family family() const { return m_table->family(); }
+    QString modelName() const { return m_model.name; }
+    const feetech::ModelInfo &model() const { return m_model; }
+    const feetech::RegisterTable &table() const { return *m_table; }
+
+    // Live values: an ID or baud change takes effect as soon as it is written.
+    quint8 id() const;
+    qint32 baudRate() const;
+    // HLS "secondary ID" (address 7) when set and different from the ID: write, reg-write,
+    // action and sync-write addressed to it are executed without a reply.
+    std::optional<quint8> secondaryId() const;
+    // Silence before a reply: register 7 × 2 µs (SMS: at least 100 µs); 0 where 7 is no delay.
+    qint64 returnDelayUs() const;
+    bool answersSyncRead() const { return family() != feetech::Family::Scs; }
+
+    // An instruction addressed to this servo (by ID, or broadcast): the status packet to send,
+    // if any. SYNC READ / SYNC WRITE are the bus's business (see below).
+    std::optional<QByteArray> execute(const feetech::Packet &packet, bool broadcast);
+    // One SYNC WRITE entry for this servo: a write without a reply.
+    void applySyncWrite(quint8 address, const QByteArray &data);
+    // The READ status frame for `length` bytes at `address`, or nothing when the range is invalid.
+    std::optional<QByteArray> readReply(int address, int length) const;
+
+    void advanceTo(qint64 nowUs);
+    qint64 nowUs() const { return m_nowUs; }
+
+    // EEPROM values reload from the image, RAM returns to power-on values, lock = 1.
+    void powerCycle();
+
+    // The persistent EEPROM: 256 bytes laid out like the register file, RAM bytes zero.
+    QByteArray eepromImage() const { return m_image; }
+    // Replaces the writable EEPROM bytes (read-only factory bytes are kept); takes effect at the
+    // next powerCycle(). False when the image is not 256 bytes.
+    bool setEepromImage(const QByteArray &image);
+    // Counts changes of the image, so the bus can save the state file when it moves.
+    quint64 eepromRevision() const { return m_eepromRevision; }
+
+    // Environment hooks.
+    void setSupplyVoltage(double volts);
+    void setAmbientTemperature(double celsius);
+    void setExternalLoad(int permille); // signed, ±1000; |load| ≥ torque limit blocks the horn
+    void setTemperature(double celsius);
+    void setPhysicalPosition(double steps); // turns the horn by hand
+    double supplyVoltage() const { return m_supplyVolts; }
+    double temperature() const { return m_temperature; }
+    double physicalPosition() const { return m_position; }
+
+    // Test hooks: decoded register units; setValue writes the live register, no lock semantics.
+    qint32 value(QStringView key) const;
+    void setValue(QStringView key, qint32 value);
+    const QByteArray &registerFile() const { return m_registers; }
+
+private:
+    enum class Control { Position, Wheel, Pwm };
+
+    struct Keys
+    {
+        const feetech::Register *id = nullptr;
+        const feetech::Register *baud = nullptr;
+        const feetech::Register *returnDelay = nullptr;
+        const feetech::Register *secondaryId = nullptr;
+        const feetech::Register *responseLevel = nullptr;
+        const feetech::Register *minAngle = nullptr;
+        const feetech::Register *maxAngle = nullptr;
+        const feetech::Register *maxTemperature = nullptr;
+        const feetech::Register *maxVoltage = nullptr;
+        const feetech::Register *minVoltage = nullptr;
+        const feetech::Register *maxTorque = nullptr;
+        const feetech::Register *cwDeadZone = nullptr;
+        const feetech::Register *ccwDeadZone = nullptr;
+        const feetech::Register *protectionCurrent = nullptr;
+        const feetech::Register *offset = nullptr;
+        const feetech::Register *mode = nullptr;
+        const feetech::Register *holdingTorque = nullptr;
+        const feetech::Register *protectionTime = nullptr;
+        const feetech::Register *overloadTorque = nullptr;
+        const feetech::Register *torqueEnable = nullptr;
+        const feetech::Register *acceleration = nullptr;
+        const feetech::Register *goalPosition = nullptr;
+        const feetech::Register *goalTime = nullptr; // 44: time / PWM / HLS goal current
+        const feetech::Register *goalSpeed = nullptr;
+        const feetech::Register *torqueLimit = nullptr;
+        const feetech::Register *lock = nullptr;
+        const feetech::Register *presentPosition = nullptr;
+        const feetech::Register *presentSpeed = nullptr;
+        const feetech::Register *presentLoad = nullptr;
+        const feetech::Register *presentVoltage = nullptr;
+        const feetech::Register *presentTemperature = nullptr;
+        const feetech::Register *asyncFlag = nullptr;
+        const feetech::Register *status = nullptr;
+        const feetech::Register *moving = nullptr;
+        const feetech::Register *currentGoal = nullptr;
+        const feetech::Register *presentCurrent = nullptr;
+    };
+
+    struct PendingWrite
+    {
+        quint8 address = 0;
+        QByteArray data;
+    };
+
+    qint32 get(const feetech::Register *reg) const;
+    void put(const feetech::Register *reg, qint32 value); // clamps to what the format holds
+    void putRegisterBytes(const feetech::Register &reg, const QByteArray &from, QByteArray &to);
+    void store(const feetech::Register *reg, qint32 value); // a host write: lock semantics
+    bool unlocked() const;
+    bool replies(quint8 instruction, bool broadcast) const;
+    QByteArray statusReply(quint8 replyId, const QByteArray &data = {}) const;
+
+    void applyWrite(int address, QByteArrayView data);
+    bool acceptable(const feetech::Register &reg, qint32 value) const;
+    void recover();
+    bool calibrate(const QByteArray &parameters);
+    void calibratePresentTo(qint32 target);
+
+    bool is4096() const { return family() != feetech::Family::Scs; }
+    Control control() const;
+    double maxSpeed() const;
+    double accelerationLimit() const;
+    double torqueCapPermille() const;
+    double presentCoordinate() const; // physical position − offset, in the position range
+    double clampedGoal() const;
+    void step(double dt);
+    void refreshRegisters();
+    quint8 statusBits() const;
+
+    const feetech::RegisterTable *m_table = nullptr;
+    feetech::ModelInfo m_model;
+    Keys m_keys;
+    std::array<const feetech::Register *, kRegisterFileSize> m_byAddress {};
+
+    QByteArray m_registers = QByteArray(kRegisterFileSize, '\0');
+    QByteArray m_powerOnRam = QByteArray(kRegisterFileSize, '\0');
+    QByteArray m_image = QByteArray(kRegisterFileSize, '\0');
+    QByteArray m_factory = QByteArray(kRegisterFileSize, '\0');
+    std::optional<QByteArray> m_backup;
+    quint64 m_eepromRevision = 0;
+    std::optional<PendingWrite> m_pending;
+
+    // Physical state.
+    qint64 m_nowUs = 0;
+    double m_position = 0.0; // horn, encoder steps
+    double m_velocity = 0.0; // step/s
+    double m_appliedAcceleration = 0.0; // step/s², last sub-step
+    double m_loadPermille = 0.0;
+    double m_amps = kIdleAmps;
+    double m_temperature = kDefaultAmbientCelsius;
+    double m_ambient = kDefaultAmbientCelsius;
+    double m_supplyVolts = kDefaultSupplyVolts;
+    int m_externalLoad = 0;
+    double m_overloadSeconds = 0.0;
+    bool m_overloaded = false;
+};
+
+} // namespace sim

@@ -1,0 +1,99 @@
+// Test helpers: a QSerialPort client on a simulator's pty, and simulator start-up in a temp dir.
+#pragma once
+
+#include "sim/simulator.h"
+
+#include <QFile>
+#include <QSerialPort>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace testsupport {
+
+// Collects every byte the simulator sends; waits by polling the event loop for a condition,
+// never for a fixed time.
+class PortClient
+{
+public:
+    bool open(const QString &path, qint32 baud)
+    {
+        m_port.setPortName(path);
+        if (!m_port.open(QIODevice::ReadWrite))
+            return false;
+        QObject::connect(&m_port, &QSerialPort::readyRead,
+                         [this] { m_received += m_port.readAll(); });
+        return setBaud(baud);
+    }
+    bool setBaud(qint32 baud) { return m_port.setBaudRate(baud); }
+    void close() { m_port.close(); }
+
+    void send(const QByteArray &bytes)
+    {
+        m_port.write(bytes);
+        m_port.flush();
+    }
+    // Sends and waits until at least `count` bytes have come back; returns what came.
+    QByteArray exchange(const QByteArray &request, int count, int timeoutMs = 2000)
+    {
+        m_received.clear();
+        send(request);
+        waitFor(count, timeoutMs);
+        return m_received;
+    }
+    bool waitFor(int count, int timeoutMs = 2000)
+    {
+        return QTest::qWaitFor([&] { return m_received.size() >= count; }, timeoutMs);
+    }
+    QByteArray &received() { return m_received; }
+    QSerialPort &port() { return m_port; }
+
+private:
+    QSerialPort m_port;
+    QByteArray m_received;
+};
+
+// A simulator on its own thread with a client connected to its link.
+struct ConnectedSimulator
+{
+    sim::SimulatorThread simulator;
+    PortClient client;
+    QString error;
+
+    bool start(const sim::SimulatorOptions &options, qint32 baud)
+    {
+        if (!simulator.start(options, &error))
+            return false;
+        if (!client.open(simulator.linkPath(), baud)) {
+            error = client.port().errorString();
+            return false;
+        }
+        return true;
+    }
+};
+
+// Lines of a simulator log with the timestamps cut off ("in AF FA ...").
+inline QStringList logLines(const QString &path)
+{
+    QFile file(path);
+    QStringList lines;
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return lines;
+    for (const QByteArray &line : file.readAll().split('\n')) {
+        const int space = line.indexOf(' ');
+        if (space > 0)
+            lines.append(QString::fromLatin1(line.mid(space + 1)));
+    }
+    return lines;
+}
+
+inline QStringList logLinesStartingWith(const QString &path, const QString &prefix)
+{
+    QStringList matching;
+    for (const QString &line : logLines(path)) {
+        if (line.startsWith(prefix))
+            matching.append(line);
+    }
+    return matching;
+}
+
+} // namespace testsupport

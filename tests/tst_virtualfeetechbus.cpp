@@ -1,0 +1,318 @@
+// Tests the simulated Feetech bus: routing by ID and baud, broadcast, SYNC READ / SYNC WRITE,
+// collisions, baud changes, reboot silence, the EEPROM state file and spec validation.
+#include "feetech/feetechpacket.h"
+#include "sim/virtualfeetechbus.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using feetech::Instruction;
+using sim::Response;
+using sim::VirtualFeetechBus;
+
+Q_DECLARE_METATYPE(sim::VirtualFeetechBus::ServoSpec)
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr qint32 k115k = 115200;
+constexpr qint64 kMs = 1000;
+
+using Specs = QVector<VirtualFeetechBus::ServoSpec>;
+
+// STS3215 id 1, SCS15 id 2, HLS id 3 at 1 Mbps; an SMS at its default 115200, id 4.
+Specs mixedSpecs()
+{
+    return {{1, QStringLiteral("STS3215"), 0},
+            {2, QStringLiteral("SCS15"), 0},
+            {3, QStringLiteral("HLS"), 0},
+            {4, QStringLiteral("SM40BLHV"), 0}};
+}
+
+QByteArray byte(int value)
+{
+    return QByteArray(1, char(value));
+}
+
+QByteArray littleEndian(int value)
+{
+    return QByteArray() + char(value & 0xFF) + char((value >> 8) & 0xFF);
+}
+
+QVector<quint8> replyIds(const QVector<Response> &responses)
+{
+    QVector<quint8> ids;
+    for (const Response &response : responses) {
+        const auto packet = feetech::decodePacket(response.bytes);
+        ids.append(packet ? packet->id : 0xFF);
+    }
+    return ids;
+}
+
+} // namespace
+
+class TestVirtualFeetechBus : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void mixedBusAnswersPingPerIdOnlyAtItsOwnBaud()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        QCOMPARE(bus.servoCount(), 4);
+        QCOMPARE(bus.servo(2).family(), feetech::Family::Hls);
+        for (quint8 id : {1, 2, 3}) {
+            QCOMPARE(replyIds(bus.handleFrame(feetech::ping(id), k1M, 0)), QVector<quint8> {id});
+            QVERIFY(bus.handleFrame(feetech::ping(id), k115k, 0).isEmpty());
+        }
+        QVERIFY(bus.handleFrame(feetech::ping(4), k1M, 0).isEmpty());
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(4), k115k, 0)), QVector<quint8> {4});
+        QVERIFY(bus.handleFrame(feetech::ping(5), k1M, 0).isEmpty());
+    }
+
+    void scsRepliesBigEndianOnAMixedBus()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        const auto replies = bus.handleFrame(feetech::read(2, 11, 2), k1M, 0);
+        QCOMPARE(replies.size(), 1);
+        QCOMPARE(feetech::decodePacket(replies[0].bytes)->parameters.toHex(), QByteArray("03eb"));
+    }
+
+    void syncReadAnswersInListOrderWithGapsAndScsNeverAnswers()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        const auto replies = bus.handleFrame(feetech::syncRead(56, 2, {3, 2, 9, 1, 4}), k1M, 0);
+        QCOMPARE(replyIds(replies), (QVector<quint8> {3, 1}));
+        const auto first = feetech::decodePacket(replies[0].bytes);
+        QCOMPARE(first->parameters, littleEndian(2048));
+        QCOMPARE(replies[1].bytes.size(), 8); // an ordinary READ status frame of 2 bytes
+    }
+
+    void syncWriteMovesGoalsOfSeveralServosWithoutReply()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        const auto frame = feetech::syncWrite(
+            42, 2, {{1, littleEndian(1000)}, {3, littleEndian(3000)}, {7, littleEndian(5)}});
+        QVERIFY(frame);
+        QVERIFY(bus.handleFrame(*frame, k1M, 0).isEmpty());
+        QCOMPARE(bus.findServo(1)->value(u"goal_position"), 1000);
+        QCOMPARE(bus.findServo(3)->value(u"goal_position"), 3000);
+
+        for (quint8 id : {1, 3})
+            bus.handleFrame(feetech::write(id, 40, byte(1)), k1M, 0);
+        bus.advanceTo(2000 * kMs);
+        QCOMPARE(bus.findServo(1)->value(u"present_position"), 1000);
+        QCOMPARE(bus.findServo(3)->value(u"present_position"), 3000);
+    }
+
+    void broadcastWriteExecutesOnAllListeningServosWithoutReply()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        QVERIFY(
+            bus.handleFrame(feetech::write(feetech::kBroadcastId, 40, byte(1)), k1M, 0).isEmpty());
+        for (quint8 id : {1, 2, 3})
+            QCOMPARE(bus.findServo(id)->value(u"torque_enable"), 1);
+        QCOMPARE(bus.findServo(4)->value(u"torque_enable"), 0); // at 115200: heard only noise
+    }
+
+    void broadcastPingWithOneServoListeningGetsOneCleanReply()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        const auto replies = bus.handleFrame(feetech::ping(feetech::kBroadcastId), k115k, 0);
+        QCOMPARE(replies.size(), 1);
+        QCOMPARE(replies[0].bytes, feetech::status(4, 0));
+    }
+
+    void broadcastPingWithTwoServosListeningGetsACollidedReply()
+    {
+        VirtualFeetechBus bus(
+            Specs {{1, QStringLiteral("STS3215"), 0}, {3, QStringLiteral("STS3215"), 0}});
+        const auto replies = bus.handleFrame(feetech::ping(feetech::kBroadcastId), k1M, 0);
+        QCOMPARE(replies.size(), 1);
+        // FF FF 01 02 00 FC and FF FF 03 02 00 FA overlap as FF FF 01 02 00 F8.
+        QCOMPARE(replies[0].bytes.toHex(), QByteArray("ffff010200f8"));
+        QVERIFY(!feetech::decodePacket(replies[0].bytes));
+    }
+
+    void collisionPadsToTheLongestFrame()
+    {
+        const QByteArray wire = VirtualFeetechBus::collide(
+            {QByteArray::fromHex("F0F0"), QByteArray::fromHex("3C3C3C")});
+        QCOMPARE(wire.toHex(), QByteArray("30303c"));
+    }
+
+    void baudChangeRepliesAtTheOldBaudThenAnswersOnlyAtTheNewOne()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        const auto replies = bus.handleFrame(feetech::write(1, 6, byte(4)), k1M, 0);
+        QCOMPARE(replyIds(replies), QVector<quint8> {1}); // the 1 Mbps host heard it
+        QVERIFY(bus.handleFrame(feetech::ping(1), k1M, 10).isEmpty());
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(1), k115k, 20)), QVector<quint8> {1});
+    }
+
+    void rebootIsSilentDuringTheRebootTimeThenAnswersAgain()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        QVERIFY(bus.handleFrame(feetech::reboot(1), k1M, 1000 * kMs).isEmpty());
+        QVERIFY(bus.handleFrame(feetech::ping(1), k1M, 1100 * kMs).isEmpty());
+        QVERIFY(bus.handleFrame(feetech::ping(1), k1M, 1499 * kMs).isEmpty());
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(3), k1M, 1499 * kMs)), QVector<quint8> {3});
+        const qint64 after = 1000 * kMs + VirtualFeetechBus::kRebootTimeUs;
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(1), k1M, after)), QVector<quint8> {1});
+    }
+
+    void turnaroundIsTheServosReturnDelay()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        bus.handleFrame(feetech::write(1, 7, byte(250)), k1M, 0);
+        QCOMPARE(bus.handleFrame(feetech::ping(1), k1M, 0).value(0).turnaroundUs, qint64(500));
+        QCOMPARE(bus.handleFrame(feetech::ping(4), k115k, 0).value(0).turnaroundUs, qint64(100));
+        QCOMPARE(bus.handleFrame(feetech::ping(3), k1M, 0).value(0).turnaroundUs, qint64(0));
+    }
+
+    void unlockedIdChangeSurvivesSaveNewBusAndLoad()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("state.json"));
+        {
+            VirtualFeetechBus bus(mixedSpecs());
+            bus.handleFrame(feetech::write(1, 55, byte(0)), k1M, 0);
+            const auto replies = bus.handleFrame(feetech::write(1, 5, byte(10)), k1M, 0);
+            QCOMPARE(replyIds(replies), QVector<quint8> {1});
+            bus.handleFrame(feetech::write(2, 5, byte(20)), k1M, 0); // locked: lost
+            QString error;
+            QVERIFY2(bus.saveState(path, &error), qPrintable(error));
+        }
+        VirtualFeetechBus restarted(mixedSpecs());
+        QString error;
+        QVERIFY2(restarted.loadState(path, &error), qPrintable(error));
+        QVERIFY(restarted.handleFrame(feetech::ping(1), k1M, 0).isEmpty());
+        QCOMPARE(replyIds(restarted.handleFrame(feetech::ping(10), k1M, 0)), QVector<quint8> {10});
+        QCOMPARE(replyIds(restarted.handleFrame(feetech::ping(2), k1M, 0)), QVector<quint8> {2});
+        QCOMPARE(restarted.servo(0).value(u"lock"), 1);
+    }
+
+    void statePathSavesAutomaticallyWhenAnImageChanges()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("auto.json"));
+        VirtualFeetechBus bus(mixedSpecs());
+        bus.setStatePath(path);
+        bus.handleFrame(feetech::write(1, 13, byte(60)), k1M, 0); // locked: no change
+        QVERIFY(!QFile::exists(path));
+        bus.handleFrame(feetech::write(1, 55, byte(0)), k1M, 0);
+        bus.handleFrame(feetech::write(1, 13, byte(60)), k1M, 0);
+        QVERIFY(QFile::exists(path));
+
+        VirtualFeetechBus restarted(mixedSpecs());
+        QString error;
+        QVERIFY2(restarted.loadState(path, &error), qPrintable(error));
+        QCOMPARE(restarted.servo(0).value(u"max_temperature"), 60);
+    }
+
+    void loadRejectsAFileWhoseModelsDiffer()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("state.json"));
+        VirtualFeetechBus saved(mixedSpecs());
+        QVERIFY(saved.saveState(path, nullptr));
+
+        Specs other = mixedSpecs();
+        other[1].model = QStringLiteral("SCS40");
+        VirtualFeetechBus bus(other);
+        QString error;
+        QVERIFY(!bus.loadState(path, &error));
+        QVERIFY2(error.contains(QStringLiteral("SCS15")), qPrintable(error));
+
+        VirtualFeetechBus shorter(Specs {{1, QStringLiteral("STS3215"), 0}});
+        QVERIFY(!shorter.loadState(path, &error));
+    }
+
+    void loadRejectsAFileThatIsNoState()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("broken.json"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QJsonDocument(QJsonObject {{QStringLiteral("format"), 2}}).toJson());
+        file.close();
+        VirtualFeetechBus bus(mixedSpecs());
+        QString error;
+        QVERIFY(!bus.loadState(path, &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!bus.loadState(dir.filePath(QStringLiteral("missing.json")), &error));
+    }
+
+    void validationRejectsBadSpecs_data()
+    {
+        QTest::addColumn<Specs>("specs");
+        QTest::addColumn<QString>("mention");
+        QTest::newRow("unknown model")
+            << Specs {{1, QStringLiteral("XYZ123"), 0}} << QStringLiteral("XYZ123");
+        QTest::newRow("model without a table")
+            << Specs {{1, QStringLiteral("SCS15-2"), 0}} << QStringLiteral("SCS15-2");
+        QTest::newRow("duplicate id at one baud")
+            << Specs {{5, QStringLiteral("STS3215"), 0}, {5, QStringLiteral("SCS15"), 1000000}}
+            << QStringLiteral("5");
+        QTest::newRow("id 254") << Specs {{254, QStringLiteral("STS3215"), 0}}
+                                << QStringLiteral("254");
+        QTest::newRow("bad baud") << Specs {{1, QStringLiteral("STS3215"), 9600}}
+                                  << QStringLiteral("9600");
+        QTest::newRow("no servos") << Specs {} << QString();
+    }
+
+    void validationRejectsBadSpecs()
+    {
+        QFETCH(Specs, specs);
+        QFETCH(QString, mention);
+        QString error;
+        QVERIFY(!VirtualFeetechBus::validate(specs, &error));
+        QVERIFY(error.contains(mention));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!VirtualFeetechBus::create(specs, nullptr));
+    }
+
+    void validationAcceptsOneIdAtTwoBauds()
+    {
+        const Specs specs {{5, QStringLiteral("STS3215"), 0},
+                           {5, QStringLiteral("STS3215"), 500000}};
+        QString error;
+        QVERIFY2(VirtualFeetechBus::validate(specs, &error), qPrintable(error));
+        QVERIFY(VirtualFeetechBus::validate(mixedSpecs(), &error));
+        QVERIFY(VirtualFeetechBus::create(specs, &error));
+    }
+
+    void modelsResolveByNameNumberOrFamily()
+    {
+        QCOMPARE(VirtualFeetechBus::resolveModel(u"sts3215")->name, QStringLiteral("STS3215"));
+        QCOMPARE(VirtualFeetechBus::resolveModel(u"9/3")->name, QStringLiteral("STS3215"));
+        QCOMPARE(*VirtualFeetechBus::resolveModel(u"10/2")->family, feetech::Family::Hls);
+        QCOMPARE(*VirtualFeetechBus::resolveModel(u"hls")->family, feetech::Family::Hls);
+        QVERIFY(!VirtualFeetechBus::resolveModel(u"6/3")); // SM-CL: no table
+    }
+
+    void hlsSecondaryIdExecutesWritesSilently()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        bus.handleFrame(feetech::write(3, 7, byte(40)), k1M, 0);
+        QVERIFY(bus.handleFrame(feetech::write(40, 42, littleEndian(1234)), k1M, 0).isEmpty());
+        QCOMPARE(bus.findServo(3)->value(u"goal_position"), 1234);
+        QVERIFY(bus.handleFrame(feetech::ping(40), k1M, 0).isEmpty());
+    }
+
+    void powerCycleReloadsEveryServo()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        bus.handleFrame(feetech::write(1, 5, byte(9)), k1M, 0);
+        QVERIFY(bus.findServo(9));
+        bus.powerCycle();
+        QVERIFY(!bus.findServo(9));
+        QVERIFY(bus.findServo(1));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestVirtualFeetechBus)
+#include "tst_virtualfeetechbus.moc"
