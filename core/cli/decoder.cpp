@@ -86,7 +86,7 @@ QVector<DecodedFrame> decodePtk(const QByteArray &stream)
         QJsonObject values;
         const QByteArray &b = item.bytes;
         const auto word = [&](int index) {
-            return quint16((quint8(b[index]) << 8) | quint8(b[index + 1]));
+            return ptk::wordAt(b, index);
         };
         if (b.size() == ptk::kRequestSize) {
             const quint8 command = quint8(b[4]);

@@ -17,7 +17,7 @@ static void appendWord(QByteArray &out, quint16 word)
     out.append(char(word & 0xFF));
 }
 
-static quint16 wordAt(QByteArrayView frame, int index)
+quint16 wordAt(QByteArrayView frame, int index)
 {
     return quint16((quint8(frame[index]) << 8) | quint8(frame[index + 1]));
 }

@@ -35,6 +35,9 @@ struct Reply
     quint16 word1 = 0;
 };
 
+// The big-endian 16-bit word at `index` of a frame (no checks: callers know the frame's size).
+quint16 wordAt(QByteArrayView frame, int index);
+
 QByteArray encodeRequest(const Request &request);
 QByteArray encodeQuery(quint8 command);
 QByteArray encodeReply(const Reply &reply);

@@ -123,7 +123,6 @@ void Simulator::onReceived(const QByteArray &bytes)
         switch (item->kind) {
         case seriallink::StreamItem::Kind::Frame: {
             m_log.write(now, "in", item->bytes);
-            m_device->advanceTo(now);
             respond(m_device->handleFrame(item->bytes, hostBaud, now), hostBaud, m_inputEndUs);
             break;
         }

@@ -24,12 +24,13 @@ public:
     virtual const seriallink::FrameFormat &frameFormat() const = 0;
 
     // A complete, checksum-valid frame from the host, sent at `hostBaud` bits per second and
-    // fully received at `nowUs` (simulator clock, microseconds). Returns the replies in the
-    // order they go out on the bus; a device at another baud rate hears only noise.
+    // fully received at `nowUs` (simulator clock, microseconds). A device with motion brings
+    // itself up to `nowUs` first. Returns the replies in the order they go out on the bus; a
+    // device at another baud rate hears only noise.
     virtual QVector<Response> handleFrame(const QByteArray &frame, qint32 hostBaud,
                                           qint64 nowUs) = 0;
 
-    // Lets time pass (motion, temperature); called periodically and before every frame.
+    // Lets time pass (motion, temperature) while the host is silent; called periodically.
     virtual void advanceTo(qint64 nowUs) { Q_UNUSED(nowUs); }
 
     // Power off and on again: EEPROM values are reloaded, RAM returns to its power-on state.
