@@ -101,6 +101,28 @@ QString translatedLabel(Parameter parameter)
     return QCoreApplication::translate("ptk", info(parameter).label);
 }
 
+QVector<model::Definition> modelDefinitions()
+{
+    QVector<model::Definition> definitions;
+    for (const ParameterInfo &meta : parameterInfos()) {
+        model::Definition definition;
+        definition.key = QLatin1String(meta.key);
+        definition.label = translatedLabel(meta.parameter);
+        definition.group = translatedGroup(meta.group);
+        definition.unit = QString::fromUtf8(meta.unit);
+        definition.scale = 1.0 / meta.wirePerUnit;
+        definition.minimum = qint64(meta.minimum) * meta.wirePerUnit;
+        definition.maximum = qint64(meta.maximum) * meta.wirePerUnit;
+        definition.access = model::Access::ReadWrite;
+        definition.storage = model::Storage::Ptk;
+        if (meta.isSwitch)
+            definition.choices = {{0, QCoreApplication::translate("ptk", "Off")},
+                                  {1, QCoreApplication::translate("ptk", "On")}};
+        definitions.append(definition);
+    }
+    return definitions;
+}
+
 QString translatedGroup(Group group)
 {
     switch (group) {

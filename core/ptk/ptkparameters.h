@@ -1,6 +1,7 @@
 // The thirteen PTK parameters and where each sits in the eight query replies and twelve writes.
 #pragma once
 
+#include "model/parametermodel.h"
 #include "ptk/ptkframe.h"
 
 #include <QString>
@@ -51,6 +52,10 @@ const ParameterInfo &info(Parameter parameter);
 const ParameterInfo *findParameter(QStringView key);
 QString translatedLabel(Parameter parameter);
 QString translatedGroup(Group group);
+
+// The thirteen parameters as parameter-model definitions: raw values are wire values, shown
+// and entered in user units (pulse widths in µs), on/off parameters with Off / On choices.
+QVector<model::Definition> modelDefinitions();
 
 // Which parameter travels in which 16-bit word of a frame. A word with no parameter is zero.
 struct FrameLayout

@@ -1,0 +1,2 @@
+// (being written)
+#include "link/packetlogmodel.h"
