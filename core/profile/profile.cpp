@@ -1,2 +1,381 @@
-// (being written)
+// JSON parameter profiles: writing in user units, strict validation on reading, the device diff.
 #include "profile/profile.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QHash>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QJsonValue>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+namespace profile {
+
+namespace {
+
+// Translation context for the messages of this file.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(Profile)
+};
+
+constexpr char kFormatKey[] = "format";
+constexpr char kVersionKey[] = "version";
+constexpr char kFamilyKey[] = "family";
+constexpr char kModelKey[] = "model";
+constexpr char kSavedKey[] = "saved";
+constexpr char kNoteKey[] = "note";
+constexpr char kParametersKey[] = "parameters";
+
+// Profiles are a few kilobytes; refusing anything far larger keeps a wrongly picked file (a log,
+// a firmware image) from being read whole just to be rejected.
+constexpr qint64 kMaxFileBytes = 1024 * 1024;
+
+// How far user value / scale may sit from a whole raw value and still count as one: decimal
+// scales such as 0.1 V do not divide exactly in binary floating point.
+constexpr double kRawTolerance = 1e-6;
+
+QString displayName(const QString &path)
+{
+    return QDir::toNativeSeparators(path);
+}
+
+// On/off parameters travel as JSON booleans so a hand-edited profile reads naturally.
+bool isSwitch(const model::Definition &definition)
+{
+    if (definition.choices.size() != 2)
+        return false;
+    const qint64 first = definition.choices.at(0).value;
+    const qint64 second = definition.choices.at(1).value;
+    return (first == 0 && second == 1) || (first == 1 && second == 0);
+}
+
+const model::Definition *findDefinition(const QVector<model::Definition> &definitions,
+                                        const QString &key)
+{
+    for (const model::Definition &definition : definitions) {
+        if (definition.key == key)
+            return &definition;
+    }
+    return nullptr;
+}
+
+// A value as it appears in the file, for messages: numbers in user units, switches as JSON.
+// The lower end of a range goes without its unit ("500 to 1500 µs"), as people write it.
+QString userText(const model::Definition &definition, double user, bool withUnit = true)
+{
+    if (isSwitch(definition))
+        return user != 0 ? QStringLiteral("true") : QStringLiteral("false");
+    QString text = QString::number(user, 'g', 15);
+    if (withUnit && !definition.unit.isEmpty())
+        text += u' ' + definition.unit;
+    return text;
+}
+
+QString rawText(const model::Definition &definition, qint64 raw, bool withUnit = true)
+{
+    return userText(definition, double(raw) * definition.scale, withUnit);
+}
+
+QJsonValue jsonValue(const model::Definition &definition, qint64 raw)
+{
+    if (isSwitch(definition))
+        return raw != 0;
+    if (definition.scale == 1.0)
+        return raw;
+    return double(raw) * definition.scale;
+}
+
+// The raw value a file entry stands for, or nothing and *why when it has the wrong type, lies
+// outside the definition's range or falls between two raw steps.
+std::optional<qint64> rawValue(const model::Definition &definition, const QJsonValue &value,
+                               QString *why)
+{
+    double raw = 0;
+    double user = 0;
+    if (isSwitch(definition)) {
+        if (!value.isBool()) {
+            *why = Tr::tr("expected true or false");
+            return std::nullopt;
+        }
+        raw = value.toBool() ? 1 : 0;
+        user = raw;
+    } else {
+        if (!value.isDouble()) {
+            *why = Tr::tr("expected a number");
+            return std::nullopt;
+        }
+        user = value.toDouble();
+        raw = user / definition.scale;
+    }
+    // The range check comes first so that llround below only ever sees a representable value.
+    if (!std::isfinite(raw) || raw < double(definition.minimum) - kRawTolerance
+        || raw > double(definition.maximum) + kRawTolerance) {
+        *why = Tr::tr("%1 is out of range (%2 to %3)")
+                   .arg(userText(definition, user), rawText(definition, definition.minimum, false),
+                        rawText(definition, definition.maximum));
+        return std::nullopt;
+    }
+    const qint64 rounded = std::llround(raw);
+    if (std::abs(raw - double(rounded)) > kRawTolerance) {
+        *why = definition.scale == 1.0
+            ? Tr::tr("%1 is not a whole number").arg(userText(definition, user))
+            : Tr::tr("%1 is not a multiple of %2")
+                  .arg(userText(definition, user), userText(definition, definition.scale));
+        return std::nullopt;
+    }
+    return rounded;
+}
+
+bool optionalText(const QJsonObject &root, const char *key, QString *text)
+{
+    const QJsonValue value = root.value(QLatin1String(key));
+    if (value.isUndefined())
+        return true;
+    if (!value.isString())
+        return false;
+    *text = value.toString();
+    return true;
+}
+
+} // namespace
+
+std::optional<qint64> Profile::value(const QString &key) const
+{
+    for (const ProfileValue &entry : values) {
+        if (entry.key == key)
+            return entry.raw;
+    }
+    return std::nullopt;
+}
+
+QByteArray toJson(const Profile &profile, const QVector<model::Definition> &definitions)
+{
+    QJsonObject parameters;
+    for (const ProfileValue &entry : profile.values) {
+        // Without its definition a raw value has no unit or scale to be written in.
+        if (const model::Definition *definition = findDefinition(definitions, entry.key))
+            parameters.insert(entry.key, jsonValue(*definition, entry.raw));
+    }
+    QJsonObject root;
+    root.insert(QLatin1String(kFormatKey), QLatin1String(kFormatMarker));
+    root.insert(QLatin1String(kVersionKey), kFormatVersion);
+    root.insert(QLatin1String(kFamilyKey), profile.family);
+    root.insert(QLatin1String(kModelKey), profile.model);
+    // UTC, so the time means the same wherever the file is opened.
+    if (profile.saved.isValid())
+        root.insert(QLatin1String(kSavedKey), profile.saved.toUTC().toString(Qt::ISODate));
+    if (!profile.note.isEmpty())
+        root.insert(QLatin1String(kNoteKey), profile.note);
+    root.insert(QLatin1String(kParametersKey), parameters);
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+bool save(const QString &path, const Profile &profile,
+          const QVector<model::Definition> &definitions, QString *error)
+{
+    const auto fail = [&](const QString &why) {
+        if (error)
+            *error = Tr::tr("%1 was not saved: %2").arg(displayName(path), why);
+        return false;
+    };
+    // toJson would drop such a value without a word; the user must hear that it cannot be saved.
+    for (const ProfileValue &entry : profile.values) {
+        if (!findDefinition(definitions, entry.key))
+            return fail(Tr::tr("unknown parameter \"%1\"").arg(entry.key));
+    }
+    const QByteArray json = toJson(profile, definitions);
+    // Write nothing that load() would refuse, so every saved profile can be loaded again.
+    QString why;
+    const std::optional<Profile> check = parse(json, profile.family, definitions, &why);
+    if (!check)
+        return fail(why);
+    // A switch holding neither 0 nor 1 would come back as 1: refuse rather than change it.
+    for (const ProfileValue &entry : profile.values) {
+        const model::Definition *definition = findDefinition(definitions, entry.key);
+        if (definition->access != model::Access::ReadOnly && check->value(entry.key) != entry.raw)
+            return fail(Tr::tr("%1: the raw value %2 cannot be kept in a profile")
+                            .arg(entry.key)
+                            .arg(entry.raw));
+    }
+
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return fail(file.errorString());
+    if (file.write(json) != json.size()) {
+        const QString reason = file.errorString();
+        file.cancelWriting();
+        return fail(reason);
+    }
+    if (!file.commit())
+        return fail(file.errorString());
+    return true;
+}
+
+std::optional<Profile> parse(const QByteArray &json, const QString &expectedFamily,
+                             const QVector<model::Definition> &definitions, QString *error)
+{
+    const auto fail = [&](const QString &why) -> std::optional<Profile> {
+        if (error)
+            *error = why;
+        return std::nullopt;
+    };
+
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError)
+        return fail(Tr::tr("not valid JSON: %1 at offset %2")
+                        .arg(parseError.errorString())
+                        .arg(parseError.offset));
+    if (!document.isObject())
+        return fail(Tr::tr("not a ServoBench profile (the document is not a JSON object)"));
+    const QJsonObject root = document.object();
+
+    // The marker and the version come before anything else: a file that is no profile, or one
+    // from a newer format, should be named as such, not as a list of unexpected entries.
+    if (root.value(QLatin1String(kFormatKey)).toString() != QLatin1String(kFormatMarker))
+        return fail(Tr::tr("not a ServoBench profile (\"%1\" is not \"%2\")")
+                        .arg(QLatin1String(kFormatKey), QLatin1String(kFormatMarker)));
+    const QJsonValue versionValue = root.value(QLatin1String(kVersionKey));
+    const double version = versionValue.toDouble();
+    if (!versionValue.isDouble() || !std::isfinite(version) || version != std::floor(version))
+        return fail(Tr::tr("the format version is missing or not a whole number"));
+    if (version > kFormatVersion)
+        return fail(Tr::tr("the profile has format version %1 and was written by a newer "
+                           "ServoBench; this version reads format version %2 and older")
+                        .arg(QString::number(version, 'g', 15))
+                        .arg(kFormatVersion));
+    if (version < 1)
+        return fail(Tr::tr("unknown format version %1").arg(QString::number(version, 'g', 15)));
+
+    static const char *const knownEntries[] = {kFormatKey, kVersionKey, kFamilyKey,    kModelKey,
+                                               kSavedKey,  kNoteKey,    kParametersKey};
+    for (auto it = root.constBegin(); it != root.constEnd(); ++it) {
+        const QString key = it.key();
+        const bool known =
+            std::any_of(std::begin(knownEntries), std::end(knownEntries),
+                        [&](const char *entry) { return key == QLatin1String(entry); });
+        if (!known)
+            return fail(Tr::tr("unknown entry \"%1\"").arg(key));
+    }
+
+    Profile profile;
+    const QJsonValue family = root.value(QLatin1String(kFamilyKey));
+    if (!family.isString() || family.toString().isEmpty())
+        return fail(Tr::tr("the profile names no servo family"));
+    profile.family = family.toString();
+    if (profile.family != expectedFamily)
+        return fail(Tr::tr("the profile is for \"%1\" servos, not \"%2\"")
+                        .arg(profile.family, expectedFamily));
+    if (!optionalText(root, kModelKey, &profile.model))
+        return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kModelKey)));
+    if (!optionalText(root, kNoteKey, &profile.note))
+        return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kNoteKey)));
+    QString saved;
+    if (!optionalText(root, kSavedKey, &saved))
+        return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kSavedKey)));
+    if (!saved.isEmpty()) {
+        profile.saved = QDateTime::fromString(saved, Qt::ISODate);
+        if (!profile.saved.isValid())
+            return fail(Tr::tr("\"%1\": \"%2\" is not an ISO 8601 date and time")
+                            .arg(QLatin1String(kSavedKey), saved));
+    }
+
+    const QJsonValue parametersValue = root.value(QLatin1String(kParametersKey));
+    if (!parametersValue.isObject())
+        return fail(Tr::tr("the profile has no \"%1\" object").arg(QLatin1String(kParametersKey)));
+    const QJsonObject parameters = parametersValue.toObject();
+
+    QHash<QString, int> rows;
+    for (int row = 0; row < definitions.size(); ++row)
+        rows.insert(definitions.at(row).key, row);
+    QVector<std::optional<qint64>> raws(definitions.size());
+    for (auto it = parameters.constBegin(); it != parameters.constEnd(); ++it) {
+        const int row = rows.value(it.key(), -1);
+        if (row < 0)
+            return fail(Tr::tr("unknown parameter \"%1\"").arg(it.key()));
+        const model::Definition &definition = definitions.at(row);
+        // A full register dump carries read-only values (model number, present position); they
+        // cannot be applied, so they are skipped rather than held against the file.
+        if (definition.access == model::Access::ReadOnly)
+            continue;
+        QString why;
+        raws[row] = rawValue(definition, it.value(), &why);
+        if (!raws.at(row))
+            return fail(Tr::tr("%1: %2").arg(it.key(), why));
+    }
+    // Definition order, so callers write in the order the device expects.
+    for (int row = 0; row < definitions.size(); ++row) {
+        if (raws.at(row))
+            profile.values.append({definitions.at(row).key, *raws.at(row)});
+    }
+    return profile;
+}
+
+std::optional<Profile> load(const QString &path, const QString &expectedFamily,
+                            const QVector<model::Definition> &definitions, QString *error)
+{
+    const auto fail = [&](const QString &why) -> std::optional<Profile> {
+        if (error)
+            *error = Tr::tr("%1: %2").arg(displayName(path), why);
+        return std::nullopt;
+    };
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(file.errorString());
+    if (file.size() > kMaxFileBytes)
+        return fail(Tr::tr("too large to be a profile"));
+    const QByteArray json = file.readAll();
+    if (file.error() != QFileDevice::NoError)
+        return fail(file.errorString());
+    QString why;
+    std::optional<Profile> profile = parse(json, expectedFamily, definitions, &why);
+    if (!profile)
+        return fail(why);
+    return profile;
+}
+
+QVector<DiffRow> diff(const Profile &profile, const model::ParameterModel &parameters)
+{
+    QVector<DiffRow> rows;
+    for (const ProfileValue &entry : profile.values) {
+        const model::Definition *definition = parameters.definition(entry.key);
+        // What cannot be written to this device is no change it would see.
+        if (!definition || definition->access == model::Access::ReadOnly)
+            continue;
+        const std::optional<qint64> device = parameters.deviceValue(entry.key);
+        if (device && *device == entry.raw)
+            continue;
+        rows.append({entry.key, definition->label, device, entry.raw});
+    }
+    return rows;
+}
+
+Profile fromModel(const model::ParameterModel &parameters, const QString &family,
+                  const QString &modelName, bool preferPending)
+{
+    Profile profile;
+    profile.family = family;
+    profile.model = modelName;
+    // Whole seconds: that is what the file keeps, so a reloaded profile compares equal.
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    profile.saved = now.addMSecs(-now.time().msec());
+    for (const model::Definition &definition : parameters.definitions()) {
+        std::optional<qint64> raw;
+        if (preferPending)
+            raw = parameters.pendingValue(definition.key);
+        if (!raw)
+            raw = parameters.deviceValue(definition.key);
+        if (raw)
+            profile.values.append({definition.key, *raw});
+    }
+    return profile;
+}
+
+} // namespace profile

@@ -1,0 +1,292 @@
+// Request engine: queueing, timeouts, retries, echo suppression, counters and the packet log.
+#include "link/requestengine.h"
+
+#include "link/transport.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QLoggingCategory>
+
+namespace seriallink {
+
+Q_LOGGING_CATEGORY(lcRaw, "servobench.link.raw", QtWarningMsg)
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(RequestEngine)
+};
+
+// Counters reach the GUI at most this often; a fast bus would otherwise flood it.
+constexpr std::chrono::milliseconds kCounterPublishInterval {100};
+// How long a frame may take to leave the program before the port counts as stuck.
+constexpr std::chrono::milliseconds kWriteStallTimeout {500};
+
+} // namespace
+
+RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, Describer describer,
+                             QObject *parent)
+    : QObject(parent)
+    , m_transport(transport)
+    , m_framer(format)
+    , m_describer(std::move(describer))
+{
+    connect(&m_transport, &Transport::received, this, &RequestEngine::onReceived);
+    connect(&m_transport, &Transport::bytesWritten, this, &RequestEngine::onBytesWritten);
+    m_countersTimer = new QTimer(this);
+    m_countersTimer->setSingleShot(true);
+    m_countersTimer->setInterval(kCounterPublishInterval);
+    connect(m_countersTimer, &QTimer::timeout, this, [this] {
+        if (m_countersDirty) {
+            m_countersDirty = false;
+            emit countersChanged(m_counters);
+        }
+    });
+}
+
+RequestEngine::~RequestEngine() = default;
+
+void RequestEngine::setEchoMode(EchoMode mode)
+{
+    m_echoMode = mode;
+    m_echoSeen = Decision::Unknown;
+}
+
+void RequestEngine::submit(Transaction transaction)
+{
+    if (transaction.priority == Transaction::Priority::Command)
+        m_commands.push_back(std::move(transaction));
+    else
+        m_polls.push_back(std::move(transaction));
+    scheduleNext();
+}
+
+void RequestEngine::cancelAll(Failure failure)
+{
+    std::deque<Transaction> ended;
+    ended.swap(m_commands);
+    for (Transaction &poll : m_polls)
+        ended.push_back(std::move(poll));
+    m_polls.clear();
+    if (m_current) {
+        ++m_generation;
+        finish(failure);
+    }
+    for (Transaction &transaction : ended) {
+        if (transaction.done)
+            transaction.done({failure, {}, 0});
+    }
+}
+
+void RequestEngine::cancelPolls()
+{
+    std::deque<Transaction> ended;
+    ended.swap(m_polls);
+    for (Transaction &transaction : ended) {
+        if (transaction.done)
+            transaction.done({Failure::Cancelled, {}, 0});
+    }
+}
+
+void RequestEngine::scheduleNext()
+{
+    // Queued, so that a `done` callback submitting the next request never recurses.
+    if (m_nextScheduled || m_state != State::Idle)
+        return;
+    m_nextScheduled = true;
+    QMetaObject::invokeMethod(this, &RequestEngine::startNext, Qt::QueuedConnection);
+}
+
+void RequestEngine::startNext()
+{
+    m_nextScheduled = false;
+    if (m_state != State::Idle)
+        return;
+    std::deque<Transaction> &queue = !m_commands.empty() ? m_commands : m_polls;
+    if (queue.empty())
+        return;
+    m_current = std::make_unique<Transaction>(std::move(queue.front()));
+    queue.pop_front();
+    m_attempts = 0;
+    if (!m_transport.isOpen()) {
+        finish(Failure::LinkDown);
+        return;
+    }
+    send();
+}
+
+void RequestEngine::send()
+{
+    // Whatever is still waiting belongs to an earlier exchange; it must not answer this one.
+    QByteArray stray = m_transport.discardInput();
+    if (m_framer.pendingBytes() > 0) {
+        m_framer.discardPending();
+    }
+    if (!stray.isEmpty()) {
+        m_counters.discardedBytes += stray.size();
+        log(Direction::Stray, stray, Tr::tr("stray input discarded before a request"));
+    }
+    ++m_attempts;
+    ++m_generation;
+    m_state = State::Sending;
+    m_writtenBytes = 0;
+    m_echoConsumed = false;
+    m_sawFrame = false;
+    ++m_counters.framesSent;
+    log(Direction::Out, m_current->request);
+    m_transport.write(m_current->request);
+    publishCounters();
+    // A port that never confirms the write must not hang the queue.
+    const quint64 generation = m_generation;
+    const auto stalled = wireTime(int(m_current->request.size())) + kWriteStallTimeout;
+    QTimer::singleShot(std::chrono::duration_cast<std::chrono::milliseconds>(stalled), this,
+                       [this, generation] { onTimeout(generation); });
+}
+
+void RequestEngine::onBytesWritten(qint64 count)
+{
+    if (m_state != State::Sending)
+        return;
+    m_writtenBytes += count;
+    if (m_writtenBytes < m_current->request.size())
+        return;
+    // The whole frame has left the program: the clock for the answer starts now. It includes
+    // the time the frame, its echo and the reply take on the wire at this baud rate.
+    m_state = State::AwaitingReply;
+    ++m_generation; // the stall guard of send() no longer applies
+    const int requestSize = int(m_current->request.size());
+    const int echoSize = echoExpected() ? requestSize : 0;
+    const quint64 generation = m_generation;
+    std::chrono::microseconds wait;
+    if (!m_current->acceptsReply)
+        wait = wireTime(requestSize + echoSize) + m_timing.writeSettle;
+    else
+        wait =
+            wireTime(requestSize + echoSize + m_current->expectedReplySize) + m_timing.replyTimeout;
+    const int waitMs = int((wait.count() + 999) / 1000);
+    QTimer::singleShot(waitMs, Qt::PreciseTimer, this,
+                       [this, generation] { onTimeout(generation); });
+}
+
+void RequestEngine::onReceived(const QByteArray &bytes)
+{
+    qCDebug(lcRaw) << "rx" << bytes.toHex(' ');
+    if (m_state == State::Idle || !m_current) {
+        // Nothing is waiting for these: a late reply, noise, or an echo after the fact.
+        m_counters.discardedBytes += bytes.size();
+        log(Direction::Stray, bytes, Tr::tr("received while no request was waiting"));
+        publishCounters();
+        return;
+    }
+    m_framer.append(bytes);
+    while (auto item = m_framer.next()) {
+        switch (item->kind) {
+        case StreamItem::Kind::Frame: {
+            const bool isOwnEcho =
+                item->bytes == m_current->request && !m_echoConsumed && echoExpected();
+            if (isOwnEcho) {
+                m_echoConsumed = true;
+                m_echoSeen = Decision::Yes;
+                m_counters.echoBytes += item->bytes.size();
+                log(Direction::Echo, item->bytes);
+                break;
+            }
+            if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown && !m_sawFrame)
+                m_echoSeen = Decision::No;
+            m_sawFrame = true;
+            if (m_current->acceptsReply && m_current->acceptsReply(item->bytes)) {
+                ++m_counters.repliesOk;
+                log(Direction::In, item->bytes);
+                finish(Failure::None, item->bytes);
+                return;
+            }
+            m_counters.discardedBytes += item->bytes.size();
+            log(Direction::In, item->bytes, Tr::tr("unexpected frame, ignored"));
+            break;
+        }
+        case StreamItem::Kind::BadChecksum:
+            ++m_counters.checksumErrors;
+            log(Direction::In, item->bytes, Tr::tr("bad checksum"));
+            break;
+        case StreamItem::Kind::Garbage:
+        case StreamItem::Kind::Incomplete:
+            m_counters.discardedBytes += item->bytes.size();
+            log(Direction::Stray, item->bytes, Tr::tr("bytes that form no frame"));
+            break;
+        }
+    }
+    publishCounters();
+}
+
+void RequestEngine::onTimeout(quint64 generation)
+{
+    if (generation != m_generation || m_state == State::Idle || !m_current)
+        return; // a timer of an exchange that has already ended
+    if (m_state == State::AwaitingReply && !m_current->acceptsReply) {
+        finish(Failure::None);
+        return;
+    }
+    ++m_counters.timeouts;
+    log(Direction::In, {},
+        Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(m_timing.retryCount + 1));
+    if (m_attempts <= m_timing.retryCount && m_transport.isOpen()) {
+        ++m_counters.retries;
+        send();
+        return;
+    }
+    ++m_counters.failures;
+    finish(Failure::Timeout);
+}
+
+void RequestEngine::finish(Failure failure, const QByteArray &reply)
+{
+    std::unique_ptr<Transaction> done = std::move(m_current);
+    m_state = State::Idle;
+    ++m_generation;
+    publishCounters();
+    if (done && done->done)
+        done->done({failure, reply, m_attempts});
+    scheduleNext();
+}
+
+void RequestEngine::log(Direction direction, const QByteArray &bytes, const QString &error)
+{
+    PacketLogEntry entry;
+    entry.timestampMs = QDateTime::currentMSecsSinceEpoch();
+    entry.direction = direction;
+    entry.bytes = bytes;
+    entry.error = error;
+    if (!bytes.isEmpty() && m_describer && direction != Direction::Stray)
+        entry.summary = m_describer(bytes, m_current ? m_current->request : QByteArray());
+    emit packetLogged(entry);
+}
+
+void RequestEngine::publishCounters()
+{
+    m_countersDirty = true;
+    if (!m_countersTimer->isActive())
+        m_countersTimer->start();
+}
+
+bool RequestEngine::echoExpected() const
+{
+    switch (m_echoMode) {
+    case EchoMode::On:
+        return true;
+    case EchoMode::Off:
+        return false;
+    case EchoMode::Auto:
+        return m_echoSeen != Decision::No;
+    }
+    return false;
+}
+
+std::chrono::microseconds RequestEngine::wireTime(int bytes) const
+{
+    const qint32 baud = m_transport.baudRate() > 0 ? m_transport.baudRate() : 9600;
+    // 8N1: ten bit times per byte.
+    return std::chrono::microseconds(qint64(bytes) * 10 * 1'000'000 / baud);
+}
+
+} // namespace seriallink

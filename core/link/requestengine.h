@@ -1,0 +1,131 @@
+// The request engine both servo families share: one transaction in flight, commands before
+// polls, timeouts from the moment the frame has left, bounded retries, echo suppression.
+#pragma once
+
+#include "link/linktypes.h"
+#include "link/streamframer.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <memory>
+
+namespace seriallink {
+
+class Transport;
+
+// Single-wire adapters send every byte back. Auto decides from the first answer.
+enum class EchoMode { Auto, On, Off };
+
+struct EngineTiming
+{
+    // Time allowed after the request (and any echo and the reply) has crossed the wire.
+    std::chrono::milliseconds replyTimeout {25};
+    int retryCount = 2;
+    // Extra time a request that expects no reply is given to leave the adapter.
+    std::chrono::milliseconds writeSettle {1};
+};
+
+enum class Failure { None, Timeout, LinkDown, Cancelled };
+
+struct TransactionResult
+{
+    Failure failure = Failure::None;
+    QByteArray reply;
+    int attempts = 0;
+    bool ok() const { return failure == Failure::None; }
+};
+
+struct Transaction
+{
+    enum class Priority { Command, Poll };
+
+    QByteArray request;
+    Priority priority = Priority::Command;
+    // Whether a received frame is this request's answer; no function: nothing is expected back.
+    std::function<bool(const QByteArray &frame)> acceptsReply;
+    int expectedReplySize = 0; // for the wire-time part of the timeout
+    std::function<void(const TransactionResult &)> done;
+};
+
+// Lives in the link's worker thread with its transport; everything is driven by signals and
+// timers, nothing blocks.
+class RequestEngine : public QObject
+{
+    Q_OBJECT
+
+public:
+    // Describes a frame for the packet log; `request` is what was sent last (PTK replies carry
+    // no command and mean something only next to their query).
+    using Describer = std::function<QString(const QByteArray &frame, const QByteArray &request)>;
+
+    RequestEngine(Transport &transport, const FrameFormat &format, Describer describer,
+                  QObject *parent = nullptr);
+    ~RequestEngine() override;
+
+    void setTiming(const EngineTiming &timing) { m_timing = timing; }
+    const EngineTiming &timing() const { return m_timing; }
+    void setEchoMode(EchoMode mode);
+    EchoMode echoMode() const { return m_echoMode; }
+    bool echoDetected() const { return m_echoSeen == Decision::Yes; }
+
+    void submit(Transaction transaction);
+    // Ends every queued transaction (and the one in flight) with `failure`.
+    void cancelAll(Failure failure = Failure::Cancelled);
+    // Ends queued polls only: a write sequence is about to start.
+    void cancelPolls();
+    bool isIdle() const { return m_state == State::Idle && m_commands.empty() && m_polls.empty(); }
+    int queuedCount() const { return int(m_commands.size() + m_polls.size()); }
+
+    const LinkCounters &counters() const { return m_counters; }
+    void resetCounters() { m_counters = {}; }
+    // Forget what auto echo detection decided (a new port or adapter).
+    void resetEchoDetection() { m_echoSeen = Decision::Unknown; }
+
+signals:
+    void packetLogged(const seriallink::PacketLogEntry &entry);
+    void countersChanged(const seriallink::LinkCounters &counters);
+
+private:
+    enum class State { Idle, Sending, AwaitingReply };
+    enum class Decision { Unknown, Yes, No };
+
+    void scheduleNext();
+    void startNext();
+    void send();
+    void onBytesWritten(qint64 count);
+    void onReceived(const QByteArray &bytes);
+    void onTimeout(quint64 generation);
+    void finish(Failure failure, const QByteArray &reply = {});
+    void log(Direction direction, const QByteArray &bytes, const QString &error = {});
+    void publishCounters();
+    bool echoExpected() const;
+    std::chrono::microseconds wireTime(int bytes) const;
+
+    Transport &m_transport;
+    StreamFramer m_framer;
+    Describer m_describer;
+    EngineTiming m_timing;
+    EchoMode m_echoMode = EchoMode::Auto;
+    LinkCounters m_counters;
+    Decision m_echoSeen = Decision::Unknown;
+
+    std::deque<Transaction> m_commands;
+    std::deque<Transaction> m_polls;
+    std::unique_ptr<Transaction> m_current;
+    State m_state = State::Idle;
+    int m_attempts = 0;
+    qint64 m_writtenBytes = 0;
+    bool m_echoConsumed = false;
+    bool m_sawFrame = false;
+    quint64 m_generation = 0; // stale timer firings carry an old generation and are ignored
+    bool m_nextScheduled = false;
+    bool m_countersDirty = false;
+    QTimer *m_countersTimer = nullptr; // a child, so it follows the engine to its thread
+};
+
+} // namespace seriallink

@@ -1,0 +1,133 @@
+// Serial transport over QSerialPort, and the table of port error messages.
+#include "link/transport.h"
+
+#include <QCoreApplication>
+#include <QLoggingCategory>
+
+namespace seriallink {
+
+Q_LOGGING_CATEGORY(lcLink, "servobench.link", QtWarningMsg)
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(SerialLink)
+};
+
+} // namespace
+
+SerialTransport::SerialTransport(QObject *parent)
+    : Transport(parent)
+    , m_port(new QSerialPort(this))
+{
+    connect(m_port, &QSerialPort::readyRead, this, [this] {
+        const QByteArray bytes = m_port->readAll();
+        if (!bytes.isEmpty())
+            emit received(bytes);
+    });
+    connect(m_port, &QSerialPort::bytesWritten, this, &Transport::bytesWritten);
+    connect(m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onError);
+}
+
+bool SerialTransport::open(const QString &portName, qint32 baud, QString *error)
+{
+    close();
+    m_port->setPortName(portName);
+    m_port->setBaudRate(baud);
+    m_port->setDataBits(QSerialPort::Data8);
+    m_port->setParity(QSerialPort::NoParity);
+    m_port->setStopBits(QSerialPort::OneStop);
+    m_port->setFlowControl(QSerialPort::NoFlowControl);
+    // open() reports its own failure through errorOccurred too; that one is answered here.
+    const QSignalBlocker quiet(m_port);
+    if (!m_port->open(QIODevice::ReadWrite)) {
+        if (error)
+            *error = portErrorMessage(m_port->error(), portName, m_port->errorString());
+        m_port->clearError();
+        return false;
+    }
+    m_port->clear(QSerialPort::AllDirections);
+    qCDebug(lcLink) << "opened" << portName << "at" << baud;
+    return true;
+}
+
+void SerialTransport::close()
+{
+    if (m_port->isOpen())
+        m_port->close();
+    m_port->clearError();
+}
+
+bool SerialTransport::setBaudRate(qint32 baud)
+{
+    return m_port->setBaudRate(baud);
+}
+
+void SerialTransport::write(const QByteArray &bytes)
+{
+    m_port->write(bytes);
+}
+
+QByteArray SerialTransport::discardInput()
+{
+    QByteArray stray = m_port->readAll();
+    m_port->clear(QSerialPort::Input);
+    return stray;
+}
+
+void SerialTransport::onError(QSerialPort::SerialPortError error)
+{
+    if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError)
+        return;
+    const QString message = portErrorMessage(error, m_port->portName(), m_port->errorString());
+    qCDebug(lcLink) << "port error" << error << message;
+    m_port->clearError();
+    emit failed(message, isLostError(error));
+}
+
+bool isLostError(QSerialPort::SerialPortError error)
+{
+    return error == QSerialPort::ResourceError || error == QSerialPort::DeviceNotFoundError
+        || error == QSerialPort::ReadError || error == QSerialPort::WriteError;
+}
+
+QString portErrorMessage(QSerialPort::SerialPortError error, const QString &portName,
+                         const QString &systemMessage)
+{
+    switch (error) {
+    case QSerialPort::NoError:
+        return QString();
+    case QSerialPort::DeviceNotFoundError:
+        return Tr::tr("%1 does not exist. Is the adapter plugged in?").arg(portName);
+    case QSerialPort::PermissionError:
+#ifdef Q_OS_LINUX
+        return Tr::tr("Permission denied on %1. Either another program has it open, or you are "
+                      "not in the group that may use serial ports: run \"sudo usermod -aG "
+                      "dialout $USER\", then log out and back in.")
+            .arg(portName);
+#else
+        return Tr::tr("Permission denied on %1: another program may have it open.").arg(portName);
+#endif
+    case QSerialPort::OpenError:
+        return Tr::tr("%1 is already open.").arg(portName);
+    case QSerialPort::NotOpenError:
+        return Tr::tr("%1 is not open.").arg(portName);
+    case QSerialPort::WriteError:
+        return Tr::tr("Could not write to %1 (%2).").arg(portName, systemMessage);
+    case QSerialPort::ReadError:
+        return Tr::tr("Could not read from %1 (%2).").arg(portName, systemMessage);
+    case QSerialPort::ResourceError:
+        return Tr::tr("%1 went away: the adapter was unplugged or the device closed.")
+            .arg(portName);
+    case QSerialPort::UnsupportedOperationError:
+        return Tr::tr("%1 does not support this setting (%2).").arg(portName, systemMessage);
+    case QSerialPort::TimeoutError:
+        return Tr::tr("%1 timed out.").arg(portName);
+    case QSerialPort::UnknownError:
+        break;
+    }
+    return Tr::tr("%1: %2").arg(portName, systemMessage);
+}
+
+} // namespace seriallink

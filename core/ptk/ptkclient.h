@@ -1,0 +1,78 @@
+// The GUI thread's handle on a PTK servo: runs the session in its own worker thread and keeps a
+// parameter model in step with what the servo reports.
+#pragma once
+
+#include "link/linktypes.h"
+#include "link/requestengine.h"
+#include "model/parametermodel.h"
+#include "ptk/ptksession.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QThread>
+
+#include <deque>
+
+namespace ptk {
+
+class Client : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit Client(const SessionTiming &timing = {}, QObject *parent = nullptr);
+    ~Client() override; // quits the worker thread with a bounded wait
+
+    model::ParameterModel *model() { return &m_model; }
+    const seriallink::ConnectionStatus &status() const { return m_status; }
+    const seriallink::LinkCounters &counters() const { return m_counters; }
+    bool isConnected() const { return m_status.state == seriallink::ConnectionState::Connected; }
+    bool isBusy() const { return m_applying || m_reading; }
+
+    void connectTo(const QString &portName, qint32 baud = 115200,
+                   seriallink::EchoMode echo = seriallink::EchoMode::Auto);
+    void disconnectFrom();
+    void setPolling(bool enabled);
+    void setPollInterval(int milliseconds, bool fast);
+
+    // One read of all eight queries now.
+    void readAll();
+    // Why Apply cannot run now (empty when it can).
+    QString applyBlocker() const;
+    // Sends the full N1..N12 sequence: the edits, and the device values of everything else.
+    // Returns false (and *error) when nothing was sent.
+    bool apply(QString *error = nullptr);
+
+    // Answers per second over the last two seconds of polling.
+    double pollRate() const;
+
+signals:
+    void statusChanged(const seriallink::ConnectionStatus &status);
+    void countersChanged(const seriallink::LinkCounters &counters);
+    void packetLogged(const seriallink::PacketLogEntry &entry);
+    void readFinished(bool ok, const QString &message);
+    void applyProgress(int done, int total);
+    void applyFinished(bool ok, const QString &message);
+    void valuesUpdated();
+
+private:
+    void onValuesRead(const ptk::ParameterSet &values, ptk::ReadSource source);
+    void onApplyFinished(bool ok, const QString &message);
+    template<typename Work>
+    void inWorker(Work work)
+    {
+        QMetaObject::invokeMethod(m_session, std::move(work), Qt::QueuedConnection);
+    }
+
+    QThread m_thread;
+    Session *m_session = nullptr; // lives in m_thread
+    model::ParameterModel m_model;
+    seriallink::ConnectionStatus m_status;
+    seriallink::LinkCounters m_counters;
+    bool m_applying = false;
+    bool m_reading = false;
+    QElapsedTimer m_clock;
+    std::deque<qint64> m_answerTimesMs; // poll answers of the last two seconds
+};
+
+} // namespace ptk

@@ -1,0 +1,371 @@
+// PTK session: the poll loop, the Apply sequence with its gaps, read-back and reconnection.
+#include "ptk/ptksession.h"
+
+#include "cli/decoder.h"
+#include "link/transport.h"
+
+#include <QCoreApplication>
+
+namespace ptk {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(PtkSession)
+};
+
+constexpr int kQueryCount = int(std::tuple_size_v<std::decay_t<decltype(queryLayouts())>>);
+constexpr int kWriteCount = int(std::tuple_size_v<std::decay_t<decltype(writeLayouts())>>);
+
+// Packet-log meaning of a PTK frame; a reply is read next to the query it answers.
+QString describe(const QByteArray &frame, const QByteArray &request)
+{
+    const bool isReply = frame.size() == kReplySize && request.size() == kRequestSize;
+    const auto frames = cli::decodeStream(cli::Protocol::Ptk, isReply ? request + frame : frame);
+    return frames.isEmpty() ? QString() : frames.last().summary;
+}
+
+QString parameterNames(const FrameLayout &layout)
+{
+    QStringList names;
+    for (const auto slot : {layout.word0, layout.word1}) {
+        if (slot)
+            names.append(translatedLabel(*slot));
+    }
+    return names.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+Session::Session(const SessionTiming &timing, QObject *parent)
+    : QObject(parent)
+    , m_timing(timing)
+    , m_transport(new seriallink::SerialTransport(this))
+    , m_engine(new seriallink::RequestEngine(*m_transport, m_format, describe, this))
+    , m_pollTimer(new QTimer(this))
+    , m_reopenTimer(new QTimer(this))
+{
+    qRegisterMetaType<seriallink::PacketLogEntry>();
+    qRegisterMetaType<seriallink::LinkCounters>();
+    qRegisterMetaType<seriallink::ConnectionStatus>();
+    qRegisterMetaType<ptk::ParameterSet>();
+    qRegisterMetaType<ptk::ReadSource>();
+    m_engine->setTiming(m_timing.engine);
+    connect(m_engine, &seriallink::RequestEngine::packetLogged, this, &Session::packetLogged);
+    connect(m_engine, &seriallink::RequestEngine::countersChanged, this, &Session::countersChanged);
+    connect(m_transport, &seriallink::Transport::failed, this, &Session::onPortFailed);
+    m_pollTimer->setTimerType(Qt::PreciseTimer);
+    connect(m_pollTimer, &QTimer::timeout, this, &Session::pollNext);
+    connect(m_reopenTimer, &QTimer::timeout, this, &Session::tryReopen);
+}
+
+Session::~Session()
+{
+    close();
+}
+
+const seriallink::LinkCounters &Session::counters() const
+{
+    return m_engine->counters();
+}
+
+void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode echo)
+{
+    close();
+    m_status.portName = portName;
+    m_status.baud = baud;
+    m_echo = echo;
+    setStatus(seriallink::ConnectionState::Connecting);
+    QString error;
+    if (!m_transport->open(portName, baud, &error)) {
+        setStatus(seriallink::ConnectionState::Disconnected, error);
+        return;
+    }
+    m_engine->resetCounters();
+    m_engine->setEchoMode(echo);
+    resumePolling();
+}
+
+void Session::close()
+{
+    ++m_openGeneration;
+    m_pollTimer->stop();
+    m_reopenTimer->stop();
+    m_engine->cancelAll(seriallink::Failure::Cancelled);
+    m_transport->close();
+    m_phase = Phase::Idle;
+    m_pollInFlight = false;
+    if (m_status.state != seriallink::ConnectionState::Disconnected)
+        setStatus(seriallink::ConnectionState::Disconnected);
+}
+
+void Session::setPolling(bool enabled)
+{
+    m_pollingEnabled = enabled;
+    if (m_phase == Phase::Polling && !enabled) {
+        m_pollTimer->stop();
+        m_engine->cancelPolls();
+        m_phase = Phase::Idle;
+    } else if (m_phase == Phase::Idle && enabled && m_transport->isOpen()) {
+        resumePolling();
+    }
+}
+
+void Session::setPollInterval(int milliseconds, bool fast)
+{
+    m_timing.pollInterval = std::chrono::milliseconds(milliseconds);
+    m_timing.fastPolling = fast;
+    if (m_phase == Phase::Polling)
+        resumePolling();
+}
+
+void Session::resumePolling()
+{
+    m_phase = m_pollingEnabled ? Phase::Polling : Phase::Idle;
+    m_pollTimer->stop();
+    if (m_phase != Phase::Polling)
+        return;
+    if (!m_timing.fastPolling)
+        m_pollTimer->start(m_timing.pollInterval);
+    pollNext();
+}
+
+void Session::pollNext()
+{
+    if (m_phase != Phase::Polling || m_pollInFlight || !m_transport->isOpen())
+        return;
+    m_pollInFlight = true;
+    const int index = m_nextPoll;
+    m_nextPoll = (m_nextPoll + 1) % kQueryCount;
+    const quint64 generation = m_openGeneration;
+    submitQuery(index, seriallink::Transaction::Priority::Poll, [this, generation](bool) {
+        if (generation != m_openGeneration)
+            return;
+        m_pollInFlight = false;
+        if (m_timing.fastPolling)
+            pollNext();
+    });
+}
+
+void Session::submitQuery(int index, seriallink::Transaction::Priority priority,
+                          std::function<void(bool ok)> then)
+{
+    const FrameLayout &layout = queryLayouts().at(std::size_t(index));
+    const ReadSource source = m_phase == Phase::ReadingBack ? ReadSource::ReadBack
+        : m_phase == Phase::Reading                         ? ReadSource::Read
+                                                            : ReadSource::Poll;
+    seriallink::Transaction transaction;
+    transaction.request = encodeQuery(layout.command);
+    transaction.priority = priority;
+    // A reply carries no command byte: any well-formed reply answers the one query in flight,
+    // which is why the engine discards everything received before the query went out.
+    transaction.acceptsReply = [](const QByteArray &frame) {
+        return frame.size() == kReplySize;
+    };
+    transaction.expectedReplySize = kReplySize;
+    const quint64 generation = m_openGeneration;
+    transaction.done = [this, &layout, source, generation,
+                        then = std::move(then)](const seriallink::TransactionResult &result) {
+        if (generation != m_openGeneration)
+            return;
+        if (result.failure == seriallink::Failure::Cancelled
+            || result.failure == seriallink::Failure::LinkDown) {
+            then(false);
+            return;
+        }
+        const auto reply = decodeReply(result.reply);
+        noteAnswer(reply.has_value());
+        if (reply) {
+            ParameterSet values;
+            applyReply(layout, *reply, values);
+            emit valuesRead(values, source);
+        }
+        then(reply.has_value());
+    };
+    m_engine->submit(std::move(transaction));
+}
+
+void Session::readAll()
+{
+    if (!m_transport->isOpen()) {
+        emit readFinished(false, Tr::tr("Not connected."));
+        return;
+    }
+    if (isApplying() || m_phase == Phase::Reading) {
+        emit readFinished(false, Tr::tr("Busy: a read or write is already running."));
+        return;
+    }
+    startSweep(Phase::Reading);
+}
+
+void Session::startSweep(Phase phase)
+{
+    m_phase = phase;
+    m_pollTimer->stop();
+    m_engine->cancelPolls();
+    sweepStep(0, phase, {});
+}
+
+void Session::sweepStep(int index, Phase phase, QVector<QString> failed)
+{
+    if (index == kQueryCount) {
+        const bool ok = failed.isEmpty();
+        const QString message = ok
+            ? QString()
+            : Tr::tr("No answer to the query for %1.")
+                  .arg(QStringList(failed.toList()).join(QStringLiteral("; ")));
+        resumePolling();
+        if (phase == Phase::ReadingBack) {
+            emit applyFinished(
+                ok, ok ? QString() : Tr::tr("Written, but not verified. %1").arg(message));
+        } else {
+            emit readFinished(ok, message);
+        }
+        return;
+    }
+    const FrameLayout &layout = queryLayouts().at(std::size_t(index));
+    const quint64 generation = m_openGeneration;
+    submitQuery(index, seriallink::Transaction::Priority::Command,
+                [this, index, phase, failed, generation, &layout](bool ok) mutable {
+                    if (generation != m_openGeneration)
+                        return;
+                    if (!m_transport->isOpen()) {
+                        // The port went away mid-sweep; onPortFailed has said so.
+                        if (phase == Phase::ReadingBack)
+                            emit applyFinished(false,
+                                               Tr::tr("The link went down before the "
+                                                      "values could be read back."));
+                        else
+                            emit readFinished(false, Tr::tr("The link went down."));
+                        return;
+                    }
+                    if (!ok)
+                        failed.append(parameterNames(layout));
+                    if (phase == Phase::ReadingBack)
+                        emit applyProgress(kWriteCount + index + 1, kWriteCount + kQueryCount);
+                    sweepStep(index + 1, phase, failed);
+                });
+}
+
+void Session::apply(const ParameterSet &values)
+{
+    if (!m_transport->isOpen()) {
+        emit applyFinished(false, Tr::tr("Not connected."));
+        return;
+    }
+    if (isApplying() || m_phase == Phase::Reading) {
+        emit applyFinished(false, Tr::tr("Busy: a read or write is already running."));
+        return;
+    }
+    // Nothing leaves unless every value is complete and inside its range.
+    for (const ParameterInfo &meta : parameterInfos()) {
+        const auto wire = values.value(meta.parameter);
+        if (!wire) {
+            emit applyFinished(false,
+                               Tr::tr("%1 has not been read yet; nothing was written.")
+                                   .arg(translatedLabel(meta.parameter)));
+            return;
+        }
+        QString error;
+        if (!fromUserValue(meta.parameter, toUserValue(meta.parameter, *wire), &error)
+            || *wire % meta.wirePerUnit != 0) {
+            emit applyFinished(false,
+                               Tr::tr("%1; nothing was written.")
+                                   .arg(error.isEmpty() ? translatedLabel(meta.parameter) : error));
+            return;
+        }
+    }
+    const auto sequence = writeSequence(values);
+    m_writes = *sequence;
+    m_phase = Phase::Writing;
+    m_pollTimer->stop();
+    m_engine->cancelPolls();
+    writeStep(0);
+}
+
+void Session::writeStep(int index)
+{
+    if (index == m_writes.size()) {
+        startSweep(Phase::ReadingBack);
+        return;
+    }
+    seriallink::Transaction transaction;
+    transaction.request = encodeRequest(m_writes.at(index));
+    transaction.priority = seriallink::Transaction::Priority::Command;
+    const quint64 generation = m_openGeneration;
+    transaction.done = [this, index, generation](const seriallink::TransactionResult &result) {
+        if (generation != m_openGeneration)
+            return;
+        if (!result.ok()) {
+            const char *name = writeLayouts().at(std::size_t(index)).name;
+            resumePolling();
+            emit applyFinished(false,
+                               Tr::tr("The link went down while writing %1; the servo "
+                                      "may hold only part of the new values.")
+                                   .arg(QLatin1String(name)));
+            return;
+        }
+        emit applyProgress(index + 1, kWriteCount + kQueryCount);
+        // The servo never acknowledges a write; PTK's own software leaves it this long.
+        QTimer::singleShot(m_timing.writeGap, this, [this, index, generation] {
+            if (generation == m_openGeneration && m_phase == Phase::Writing)
+                writeStep(index + 1);
+        });
+    };
+    m_engine->submit(std::move(transaction));
+}
+
+void Session::noteAnswer(bool ok)
+{
+    using seriallink::ConnectionState;
+    if (ok && m_status.state != ConnectionState::Connected)
+        setStatus(ConnectionState::Connected);
+    else if (!ok && m_status.state != ConnectionState::NoReply)
+        setStatus(ConnectionState::NoReply,
+                  Tr::tr("The port is open but the servo does not answer. Check that it is "
+                         "powered and plugged into the programmer."));
+}
+
+void Session::setStatus(seriallink::ConnectionState state, const QString &message)
+{
+    m_status.state = state;
+    m_status.message = message;
+    emit statusChanged(m_status);
+}
+
+void Session::onPortFailed(const QString &message, bool lost)
+{
+    ++m_openGeneration;
+    const bool wasApplying = isApplying();
+    const bool wasReading = m_phase == Phase::Reading;
+    m_pollTimer->stop();
+    m_engine->cancelAll(seriallink::Failure::LinkDown);
+    m_transport->close();
+    m_phase = Phase::Idle;
+    m_pollInFlight = false;
+    if (wasApplying)
+        emit applyFinished(false, Tr::tr("The link went down during Apply: %1").arg(message));
+    if (wasReading)
+        emit readFinished(false, message);
+    if (lost) {
+        setStatus(seriallink::ConnectionState::Lost,
+                  Tr::tr("%1 Reconnecting when it comes back.").arg(message));
+        m_reopenTimer->start(m_timing.reconnectInterval);
+    } else {
+        setStatus(seriallink::ConnectionState::Disconnected, message);
+    }
+}
+
+void Session::tryReopen()
+{
+    if (!m_transport->open(m_status.portName, m_status.baud, nullptr))
+        return;
+    m_reopenTimer->stop();
+    ++m_openGeneration;
+    m_engine->setEchoMode(m_echo);
+    setStatus(seriallink::ConnectionState::Connecting);
+    resumePolling();
+}
+
+} // namespace ptk
