@@ -1,5 +1,5 @@
 // Tests servoctl's offline commands (decode, packet) in-process: output and exit codes.
-#include "cli/servoctl.h"
+#include "servoctlrun.h"
 #include "specvectors.h"
 #include "util/hex.h"
 
@@ -10,23 +10,8 @@
 
 namespace {
 
-struct Result
-{
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-Result run(const QStringList &arguments)
-{
-    Result result;
-    QTextStream out(&result.out);
-    QTextStream err(&result.err);
-    result.exitCode = cli::runServoctl(arguments, out, err);
-    out.flush();
-    err.flush();
-    return result;
-}
+using Result = testsupport::ServoctlResult;
+constexpr auto run = testsupport::runServoctl;
 
 QString hexLine(const char *spec)
 {

@@ -1,7 +1,9 @@
 // servoctl commands: ports, decode, packet (frame builder) and their argument handling.
 #include "cli/servoctl.h"
 
+#include "cli/arguments.h"
 #include "cli/decoder.h"
+#include "cli/ptkcommands.h"
 #include "feetech/feetechpacket.h"
 #include "ptk/ptkparameters.h"
 #include "util/hex.h"
@@ -21,10 +23,7 @@ namespace cli {
 namespace {
 
 // Translation context for the messages of this file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
+using Tr = ServoctlTr;
 
 const char *const kUsage = QT_TRANSLATE_NOOP(
     "servoctl",
@@ -32,6 +31,10 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "\n"
     "commands:\n"
     "  ports                                  list serial ports\n"
+    "  ptk read                               read the PTK servo's thirteen parameters\n"
+    "  ptk write NAME=VALUE...                change parameters (full sequence, verified)\n"
+    "  ptk save FILE | ptk load FILE          save the servo to a profile / program one\n"
+    "  ptk monitor [--duration S] [--csv]     poll continuously, one row per full refresh\n"
     "  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each\n"
     "  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)\n"
     "  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values\n"
@@ -39,116 +42,10 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "      INSTRUCTION: ping read write reg-write action sync-write sync-read\n"
     "                   recovery reboot reset calibrate\n"
     "\n"
+    "options: --port PATH (device commands), --baud N (PTK: 115200),\n"
+    "         --echo auto|on|off (single-wire adapter echo; default auto)\n"
+    "\n"
     "exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)\n");
-
-// A usage error: the message is printed as one line and servoctl exits 2.
-struct UsageError
-{
-    QString message;
-};
-
-// Options and positional arguments of one invocation. Options may stand anywhere.
-class Arguments
-{
-public:
-    Arguments(const QStringList &raw, const QSet<QString> &valueOptions,
-              const QSet<QString> &flagOptions)
-    {
-        for (int i = 0; i < raw.size(); ++i) {
-            const QString &token = raw.at(i);
-            if (!token.startsWith(QLatin1String("--")) || token == QLatin1String("--")) {
-                m_positional.append(token);
-                continue;
-            }
-            QString name = token.mid(2);
-            QString value;
-            bool hasValue = false;
-            if (const int eq = name.indexOf(u'='); eq >= 0) {
-                value = name.mid(eq + 1);
-                name = name.left(eq);
-                hasValue = true;
-            }
-            if (flagOptions.contains(name)) {
-                if (hasValue)
-                    throw UsageError {Tr::tr("--%1 takes no value").arg(name)};
-                m_flags.insert(name);
-            } else if (valueOptions.contains(name)) {
-                if (!hasValue) {
-                    if (i + 1 >= raw.size())
-                        throw UsageError {Tr::tr("--%1 needs a value").arg(name)};
-                    value = raw.at(++i);
-                }
-                m_values.insert(name, value);
-            } else {
-                throw UsageError {Tr::tr("unknown option --%1").arg(name)};
-            }
-        }
-    }
-
-    const QStringList &positional() const { return m_positional; }
-    bool flag(const QString &name) const { return m_flags.contains(name); }
-    bool has(const QString &name) const { return m_values.contains(name); }
-    QString value(const QString &name) const { return m_values.value(name); }
-    QStringList valueNames() const { return m_values.keys(); }
-
-private:
-    QStringList m_positional;
-    QSet<QString> m_flags;
-    QMap<QString, QString> m_values;
-};
-
-qint64 integerOption(const Arguments &args, const QString &name, qint64 minimum, qint64 maximum)
-{
-    const auto value = util::parseInteger(args.value(name));
-    if (!value)
-        throw UsageError {Tr::tr("--%1: \"%2\" is not a number").arg(name, args.value(name))};
-    if (*value < minimum || *value > maximum)
-        throw UsageError {Tr::tr("--%1: %2 is out of range (%3 to %4)")
-                              .arg(name)
-                              .arg(*value)
-                              .arg(minimum)
-                              .arg(maximum)};
-    return *value;
-}
-
-QByteArray hexOption(const Arguments &args, const QString &name)
-{
-    QString error;
-    const auto bytes = util::parseHex(args.value(name), &error);
-    if (!bytes)
-        throw UsageError {QStringLiteral("--%1: %2").arg(name, error)};
-    return *bytes;
-}
-
-// "1,2,5-7" -> 1 2 5 6 7
-QVector<quint8> idList(const QString &text, int maximumId)
-{
-    QVector<quint8> ids;
-    const auto parseId = [&](const QString &part) {
-        const auto value = util::parseInteger(part);
-        if (!value)
-            throw UsageError {Tr::tr("--ids: \"%1\" is not an ID").arg(part)};
-        if (*value < 0 || *value > maximumId)
-            throw UsageError {Tr::tr("--ids: ID %1 is over %2").arg(*value).arg(maximumId)};
-        return int(*value);
-    };
-    for (const QString &part : text.split(u',', Qt::SkipEmptyParts)) {
-        const int dash = part.indexOf(u'-', 1);
-        if (dash > 0) {
-            const int first = parseId(part.left(dash));
-            const int last = parseId(part.mid(dash + 1));
-            if (last < first)
-                throw UsageError {Tr::tr("--ids: the range %1 runs backwards").arg(part)};
-            for (int id = first; id <= last; ++id)
-                ids.append(quint8(id));
-        } else {
-            ids.append(quint8(parseId(part)));
-        }
-    }
-    if (ids.isEmpty())
-        throw UsageError {Tr::tr("--ids needs at least one ID")};
-    return ids;
-}
 
 class Servoctl
 {
@@ -161,13 +58,14 @@ public:
     int run(const QStringList &raw)
     {
         try {
-            const Arguments args(raw,
-                                 {QStringLiteral("port"), QStringLiteral("baud"),
-                                  QStringLiteral("family"), QStringLiteral("id"),
-                                  QStringLiteral("addr"), QStringLiteral("data"),
-                                  QStringLiteral("len"), QStringLiteral("ids")},
-                                 {QStringLiteral("json"), QStringLiteral("trace"),
-                                  QStringLiteral("help"), QStringLiteral("version")});
+            const Arguments args(
+                raw,
+                {QStringLiteral("port"), QStringLiteral("baud"), QStringLiteral("family"),
+                 QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
+                 QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
+                 QStringLiteral("duration")},
+                {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
+                 QStringLiteral("help"), QStringLiteral("version")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);
@@ -187,6 +85,8 @@ public:
                 return decode(args, rest);
             if (command == QLatin1String("packet"))
                 return packet(args, rest);
+            if (command == QLatin1String("ptk"))
+                return runPtkCommand(args, rest, {m_out, m_err, m_json});
             throw UsageError {Tr::tr("unknown command \"%1\" (try servoctl --help)").arg(command)};
         } catch (const UsageError &error) {
             m_err << "servoctl: " << error.message << '\n';
@@ -199,7 +99,8 @@ private:
     // Options a command accepts besides the global ones.
     static void allowOnly(const Arguments &args, const QStringList &allowed, const QString &what)
     {
-        static const QStringList kGlobal {QStringLiteral("port"), QStringLiteral("baud")};
+        static const QStringList kGlobal {QStringLiteral("port"), QStringLiteral("baud"),
+                                          QStringLiteral("echo")};
         for (const QString &name : args.valueNames()) {
             if (!allowed.contains(name) && !kGlobal.contains(name))
                 throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
@@ -352,41 +253,7 @@ private:
     {
         if (assignments.isEmpty())
             throw UsageError {Tr::tr("packet ptk write needs NAME=VALUE arguments")};
-        ptk::ParameterSet values;
-        for (const QString &assignment : assignments) {
-            const int eq = assignment.indexOf(u'=');
-            if (eq <= 0)
-                throw UsageError {Tr::tr("\"%1\" is not NAME=VALUE").arg(assignment)};
-            const QString key = assignment.left(eq);
-            const QString text = assignment.mid(eq + 1);
-            const ptk::ParameterInfo *meta = ptk::findParameter(key);
-            if (!meta) {
-                QStringList known;
-                for (const ptk::ParameterInfo &candidate : ptk::parameterInfos())
-                    known.append(QLatin1String(candidate.key));
-                throw UsageError {Tr::tr("unknown parameter \"%1\" (known: %2)")
-                                      .arg(key, known.join(QStringLiteral(", ")))};
-            }
-            double number = 0;
-            bool ok = false;
-            if (meta->isSwitch && (text == QLatin1String("on") || text == QLatin1String("true"))) {
-                number = 1;
-                ok = true;
-            } else if (meta->isSwitch
-                       && (text == QLatin1String("off") || text == QLatin1String("false"))) {
-                number = 0;
-                ok = true;
-            } else {
-                number = text.toDouble(&ok);
-            }
-            if (!ok)
-                throw UsageError {Tr::tr("%1: \"%2\" is not a number").arg(key, text)};
-            QString error;
-            const auto wire = ptk::fromUserValue(meta->parameter, number, &error);
-            if (!wire)
-                throw UsageError {error};
-            values.set(meta->parameter, *wire);
-        }
+        const ptk::ParameterSet values = parsePtkAssignments(assignments);
         // Every frame that carries a named value; the whole sequence (N10 included) when every
         // parameter is named, as PTK's software sends it.
         QVector<std::pair<QString, QByteArray>> frames;
