@@ -12,7 +12,7 @@ packages=(
 )
 
 usage() {
-    echo "usage: ./setup.sh run            build and start ServoBench"
+    echo "usage: ./setup.sh run            build and start ServoBench on a simulated servo"
     echo "       ./setup.sh test           build and run every test (offscreen)"
     echo "       ./setup.sh test --sanitize  the same with AddressSanitizer + UBSan"
     echo "       ./setup.sh build          only install what is missing and build"
@@ -48,7 +48,7 @@ case "$command" in
     run)
         install_missing
         build build
-        exec ./build/app/servobench "$@"
+        exec ./build/app/servobench --demo "$@"
         ;;
     test)
         install_missing

@@ -3,6 +3,7 @@
 #include "version.h"
 
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QTranslator>
@@ -19,7 +20,26 @@ int main(int argc, char *argv[])
                         QStringLiteral(":/i18n")))
         QApplication::installTranslator(&translator);
 
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QApplication::translate("main", "Programmer and live monitor for PTK and Feetech servos"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption demo(
+        QStringLiteral("demo"),
+        QApplication::translate("main", "Start simulated servos and connect to them."));
+    const QCommandLineOption port(QStringList {QStringLiteral("port")},
+                                  QApplication::translate("main", "Connect to PORT at start."),
+                                  QStringLiteral("PORT"));
+    parser.addOption(demo);
+    parser.addOption(port);
+    parser.process(app);
+
     MainWindow window;
     window.show();
+    if (parser.isSet(demo))
+        window.startDemo();
+    else if (parser.isSet(port))
+        window.connectToPort(parser.value(port));
     return QApplication::exec();
 }

@@ -1,7 +1,10 @@
 // Test helpers: a QSerialPort client on a simulator's pty, and simulator start-up in a temp dir.
 #pragma once
 
+#include "ptk/ptkframe.h"
+#include "ptk/ptkparameters.h"
 #include "sim/simulator.h"
+#include "util/hex.h"
 
 #include <QFile>
 #include <QSerialPort>
@@ -94,6 +97,42 @@ inline QStringList logLinesStartingWith(const QString &path, const QString &pref
             matching.append(line);
     }
     return matching;
+}
+
+// A simulated PTK servo on `name` in `dir`, logging to `name`.log.
+inline sim::SimulatorOptions ptkOptions(const QTemporaryDir &dir, const QString &name,
+                                        bool echo = false)
+{
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Ptk;
+    options.linkPath = dir.filePath(name);
+    options.logPath = dir.filePath(name + QStringLiteral(".log"));
+    options.echo = echo;
+    return options;
+}
+
+// The PTK write frames a simulator log shows the servo received, in order, as hex.
+inline QStringList ptkWritesReceived(const QString &logPath)
+{
+    QStringList writes;
+    for (const QString &line : logLinesStartingWith(logPath, QStringLiteral("in "))) {
+        const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
+        const auto frame = util::parseHex(hex);
+        if (frame && frame->size() == ptk::kRequestSize && ptk::findWrite(quint8(frame->at(4))))
+            writes.append(hex);
+    }
+    return writes;
+}
+
+// The hex of the full N1..N12 sequence that programs `values`.
+inline QStringList ptkWriteFrames(const ptk::ParameterSet &values)
+{
+    QStringList frames;
+    if (const auto sequence = ptk::writeSequence(values)) {
+        for (const ptk::Request &request : *sequence)
+            frames.append(util::toHex(ptk::encodeRequest(request)));
+    }
+    return frames;
 }
 
 } // namespace testsupport

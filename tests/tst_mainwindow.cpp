@@ -1,4 +1,4 @@
-// Tests that the main window opens with its menus and status bar.
+// Tests that the main window opens with its menus, connection bar and status bar.
 #include "mainwindow.h"
 
 #include <QLabel>
@@ -20,7 +20,9 @@ private slots:
         QStringList menus;
         for (QAction *action : window.menuBar()->actions())
             menus.append(action->text());
-        QCOMPARE(menus, (QStringList {QStringLiteral("&File"), QStringLiteral("&Help")}));
+        QCOMPARE(menus,
+                 (QStringList {QStringLiteral("&File"), QStringLiteral("&View"),
+                               QStringLiteral("&Help")}));
         auto *state = window.findChild<QLabel *>(QStringLiteral("connectionState"));
         QVERIFY(state);
         QCOMPARE(state->text(), QStringLiteral("Not connected"));

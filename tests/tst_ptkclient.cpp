@@ -42,19 +42,6 @@ bool modelMatches(ptk::Client &client, const ptk::ParameterSet &values)
     return true;
 }
 
-// The write frames the simulated servo received, in order, as hex.
-QStringList writesReceived(const QString &logPath)
-{
-    QStringList writes;
-    for (const QString &line : testsupport::logLinesStartingWith(logPath, QStringLiteral("in "))) {
-        const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
-        const auto frame = util::parseHex(hex);
-        if (frame && frame->size() == ptk::kRequestSize && ptk::findWrite(quint8(frame->at(4))))
-            writes.append(hex);
-    }
-    return writes;
-}
-
 } // namespace
 
 class TestPtkClient : public QObject
@@ -66,12 +53,7 @@ private:
 
     sim::SimulatorOptions options(const QString &name, bool echo = false)
     {
-        sim::SimulatorOptions result;
-        result.kind = sim::SimulatorOptions::Kind::Ptk;
-        result.linkPath = m_dir.filePath(name);
-        result.logPath = m_dir.filePath(name + QStringLiteral(".log"));
-        result.echo = echo;
-        return result;
+        return testsupport::ptkOptions(m_dir, name, echo);
     }
 
 private slots:
@@ -127,12 +109,9 @@ private slots:
         ptk::ParameterSet written = ptk::ParameterSet::seedSample(false);
         written.set(ptk::Parameter::Gain, 21);
         written.set(ptk::Parameter::Deadband, 7);
-        QStringList expected;
-        const auto sequence = ptk::writeSequence(written);
-        QVERIFY(sequence.has_value());
-        for (const ptk::Request &request : *sequence)
-            expected.append(util::toHex(ptk::encodeRequest(request)));
-        QCOMPARE(writesReceived(opts.logPath), expected);
+        const QStringList expected = testsupport::ptkWriteFrames(written);
+        QCOMPARE(expected.size(), 12);
+        QCOMPARE(testsupport::ptkWritesReceived(opts.logPath), expected);
         QCOMPARE(model.state(QStringLiteral("gain")), model::State::Verified);
         QCOMPARE(model.state(QStringLiteral("deadband")), model::State::Verified);
         QCOMPARE(model.state(QStringLiteral("damping")), model::State::Clean);

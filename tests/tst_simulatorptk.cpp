@@ -21,11 +21,7 @@ private:
 
     sim::SimulatorOptions options(const QString &name)
     {
-        sim::SimulatorOptions result;
-        result.kind = sim::SimulatorOptions::Kind::Ptk;
-        result.linkPath = m_dir.filePath(name);
-        result.logPath = m_dir.filePath(name + QStringLiteral(".log"));
-        return result;
+        return testsupport::ptkOptions(m_dir, name);
     }
 
 private slots:

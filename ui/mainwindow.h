@@ -1,9 +1,24 @@
-// ServoBench's main window: menus, status bar and the page area.
+// ServoBench's main window: connection bar, the PTK page, the packet log and the status bar.
 #pragma once
+
+#include "link/linktypes.h"
 
 #include <QMainWindow>
 
+#include <memory>
+
+class ConnectionBar;
+class PacketLogDock;
+class PtkPage;
 class QLabel;
+class QTimer;
+
+namespace ptk {
+class Client;
+}
+namespace sim {
+class DemoServos;
+}
 
 class MainWindow : public QMainWindow
 {
@@ -11,10 +26,47 @@ class MainWindow : public QMainWindow
 
 public:
     explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    // Connects to the in-process simulated servo (servobench --demo).
+    void startDemo();
+    void connectToPort(const QString &port);
+
+    ptk::Client *ptkClient() const { return m_ptk.get(); }
+    ConnectionBar *connectionBar() const { return m_connectionBar; }
+    PtkPage *ptkPage() const { return m_ptkPage; }
+    PacketLogDock *packetLog() const { return m_packetLog; }
+
+    // Loads a profile into the form as edits after showing what it changes.
+    void loadProfile(const QString &path);
+    bool saveProfile(const QString &path);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
 
 private:
     void createMenus();
     void showAbout();
+    void connectRequested();
+    void disconnectRequested();
+    void onStatusChanged(const seriallink::ConnectionStatus &status);
+    void onCountersChanged(const seriallink::LinkCounters &counters);
+    void apply();
+    void onApplyFinished(bool ok, const QString &message);
+    void chooseProfileToSave();
+    void chooseProfileToLoad();
+    void showProblem(const QString &message);
+    void updatePollRate();
 
+    std::unique_ptr<sim::DemoServos> m_demo;
+    std::unique_ptr<ptk::Client> m_ptk;
+    ConnectionBar *m_connectionBar = nullptr;
+    PtkPage *m_ptkPage = nullptr;
+    PacketLogDock *m_packetLog = nullptr;
+    QLabel *m_problem = nullptr; // a banner above the page: why the last action failed
     QLabel *m_connectionState = nullptr;
+    QLabel *m_pollRate = nullptr;
+    QLabel *m_counters = nullptr;
+    QTimer *m_rateTimer = nullptr;
+    QString m_portShown; // what the user connected to, as they chose it
 };

@@ -1,2 +1,623 @@
-// (being written)
+// The PTK page: grouped parameter form bound by hand to the parameter model, and its buttons.
 #include "ptkpage.h"
+
+#include "model/parametermodel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using model::Definition;
+using model::ParameterModel;
+using model::State;
+
+namespace {
+
+enum GridColumn { LabelColumn, DeviceColumn, EditorColumn, UnitColumn, StateColumn, GridColumns };
+
+int toInt(qint64 value)
+{
+    return int(std::clamp<qint64>(value, std::numeric_limits<int>::min(),
+                                  std::numeric_limits<int>::max()));
+}
+
+// Enough decimals to show every raw step exactly (scale 0.25 → 2).
+int decimalsFor(double scale)
+{
+    int decimals = 0;
+    double step = std::abs(scale);
+    while (decimals < 6 && std::abs(step - std::round(step)) > 1e-9) {
+        step *= 10;
+        ++decimals;
+    }
+    return decimals;
+}
+
+QString userText(const Definition &definition, qint64 raw)
+{
+    if (definition.scale == 1.0)
+        return QString::number(raw);
+    return QString::number(double(raw) * definition.scale, 'g', 10); // as the model shows it
+}
+
+bool isDark(const QPalette &palette)
+{
+    return palette.color(QPalette::Window).lightness() < 128;
+}
+
+// State colours chosen to stay readable on light and dark palettes.
+QColor stateColor(State state, bool dark)
+{
+    switch (state) {
+    case State::Edited:
+        return dark ? QColor(255, 196, 84) : QColor(168, 98, 0);
+    case State::Writing:
+        return dark ? QColor(120, 170, 255) : QColor(25, 90, 190);
+    case State::Verified:
+        return dark ? QColor(110, 210, 120) : QColor(30, 120, 45);
+    case State::Mismatch:
+    case State::Failed:
+        return dark ? QColor(255, 120, 110) : QColor(190, 30, 30);
+    case State::Clean:
+        break;
+    }
+    return {};
+}
+
+void setForeground(QWidget *widget, const QColor &color, bool bold)
+{
+    if (color.isValid()) {
+        QPalette palette = widget->palette();
+        palette.setColor(QPalette::WindowText, color);
+        widget->setPalette(palette);
+    } else {
+        widget->setPalette(QPalette()); // back to the inherited palette
+    }
+    QFont font = widget->font();
+    font.setBold(bold);
+    widget->setFont(font);
+}
+
+// An edited value stands out from those that match the servo.
+void setHighlighted(QWidget *editor, bool highlighted)
+{
+    if (!highlighted) {
+        editor->setPalette(QPalette());
+        return;
+    }
+    QPalette palette = editor->palette();
+    const QColor background(255, 240, 170);
+    const QColor text(20, 20, 20);
+    palette.setColor(QPalette::Base, background);
+    palette.setColor(QPalette::Button, background);
+    palette.setColor(QPalette::Text, text);
+    palette.setColor(QPalette::ButtonText, text);
+    editor->setPalette(palette);
+}
+
+} // namespace
+
+PtkPage::PtkPage(model::ParameterModel *model, QWidget *parent)
+    : QWidget(parent)
+    , m_model(model)
+{
+    Q_ASSERT(model);
+    setObjectName(QStringLiteral("ptkPage"));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("ptkScrollArea"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *scrolled = new QWidget(scroll);
+    auto *columns = new QHBoxLayout(scrolled);
+    columns->setContentsMargins(12, 12, 12, 12);
+    // A form column of reading width, not stretched across a wide window.
+    m_form = new QWidget(scrolled);
+    m_formLayout = new QVBoxLayout(m_form);
+    m_formLayout->setContentsMargins(0, 0, 0, 0);
+    m_formLayout->setSpacing(12);
+    columns->addWidget(m_form, 1);
+    columns->addStretch(0);
+    scroll->setWidget(scrolled);
+    layout->addWidget(scroll, 1);
+
+    // The buttons stay outside the scroll area so Apply is always in reach.
+    auto *line = new QFrame(this);
+    line->setFrameShape(QFrame::HLine);
+    line->setFrameShadow(QFrame::Sunken);
+    layout->addWidget(line);
+    auto *buttons = new QHBoxLayout;
+    buttons->setContentsMargins(12, 8, 12, 10);
+    buttons->setSpacing(8);
+    layout->addLayout(buttons);
+
+    const auto makeButton = [this](const QString &text, const char *name, const QString &tip) {
+        auto *button = new QPushButton(text, this);
+        button->setObjectName(QLatin1String(name));
+        button->setToolTip(tip);
+        button->setAutoDefault(false);
+        return button;
+    };
+    m_loadProfile = makeButton(tr("Load profile…"), "loadProfileButton",
+                               tr("Load parameter values from a profile file as edits"));
+    m_saveProfile = makeButton(tr("Save profile…"), "saveProfileButton",
+                               tr("Save the servo's parameter values to a profile file"));
+    m_read = makeButton(tr("Read"), "readButton", tr("Read every parameter from the servo"));
+    m_revert = makeButton(tr("Revert"), "revertButton",
+                          tr("Drop every edit and show the servo's values again"));
+    m_apply = makeButton(tr("Apply"), "applyButton",
+                         tr("Write the edited parameters to the servo, then read them back "
+                            "to verify"));
+    QFont applyFont = m_apply->font();
+    applyFont.setBold(true);
+    m_apply->setFont(applyFont);
+
+    m_busyLabel = new QLabel(this);
+    m_busyLabel->setObjectName(QStringLiteral("busyLabel"));
+    m_busyLabel->hide();
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("applyProgress"));
+    m_progress->setMaximumWidth(220);
+    m_progress->setFormat(tr("%v of %m"));
+    m_progress->hide();
+
+    buttons->addWidget(m_loadProfile);
+    buttons->addWidget(m_saveProfile);
+    buttons->addStretch(1);
+    buttons->addWidget(m_busyLabel);
+    buttons->addWidget(m_progress);
+    buttons->addSpacing(12);
+    buttons->addWidget(m_read);
+    buttons->addWidget(m_revert);
+    buttons->addWidget(m_apply);
+
+    connect(m_read, &QPushButton::clicked, this, &PtkPage::readRequested);
+    connect(m_apply, &QPushButton::clicked, this, &PtkPage::applyRequested);
+    connect(m_revert, &QPushButton::clicked, this, &PtkPage::revertAll);
+    connect(m_saveProfile, &QPushButton::clicked, this, &PtkPage::saveProfileRequested);
+    connect(m_loadProfile, &QPushButton::clicked, this, &PtkPage::loadProfileRequested);
+
+    connect(m_model, &ParameterModel::parameterChanged, this, &PtkPage::refreshRow);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &PtkPage::rebuild);
+    rebuild();
+}
+
+void PtkPage::rebuild()
+{
+    m_rows.clear();
+    m_rowIndex.clear();
+    while (QLayoutItem *item = m_formLayout->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+
+    auto *intro = new QLabel(tr("<b>Device</b> is what the servo reports. Edits are written "
+                                "only when you press <b>Apply</b>, then read back and verified."),
+                             m_form);
+    intro->setObjectName(QStringLiteral("ptkIntro"));
+    intro->setWordWrap(true);
+    intro->setForegroundRole(QPalette::PlaceholderText);
+    m_formLayout->addWidget(intro);
+
+    // Groups in the order the definitions first name them.
+    const QVector<Definition> &definitions = m_model->definitions();
+    QStringList groups;
+    for (const Definition &definition : definitions) {
+        if (!groups.contains(definition.group))
+            groups.append(definition.group);
+    }
+
+    // Two columns of groups, each group going to the shorter one, so the whole form fits a
+    // laptop screen without scrolling.
+    auto *groupArea = new QWidget(m_form);
+    auto *groupColumns = new QHBoxLayout(groupArea);
+    groupColumns->setContentsMargins(0, 0, 0, 0);
+    groupColumns->setSpacing(16);
+    QVBoxLayout *columnLayouts[2] = {new QVBoxLayout, new QVBoxLayout};
+    int columnRows[2] = {0, 0};
+    for (QVBoxLayout *column : columnLayouts) {
+        column->setSpacing(12);
+        groupColumns->addLayout(column, 1);
+    }
+    m_formLayout->addWidget(groupArea);
+
+    QVector<QGridLayout *> grids;
+    for (const QString &group : std::as_const(groups)) {
+        auto *box = new QGroupBox(group, groupArea);
+        box->setObjectName(QStringLiteral("group_") + group);
+        auto *grid = new QGridLayout(box);
+        grid->setHorizontalSpacing(14);
+        grid->setVerticalSpacing(6);
+        grids.append(grid);
+
+        const auto header = [&](const QString &text, int column, Qt::Alignment alignment) {
+            auto *label = new QLabel(text, box);
+            label->setForegroundRole(QPalette::PlaceholderText);
+            grid->addWidget(label, 0, column, alignment | Qt::AlignBottom);
+        };
+        header(tr("Device"), DeviceColumn, Qt::AlignRight);
+        header(tr("New value"), EditorColumn, Qt::AlignLeft);
+        header(tr("State"), StateColumn, Qt::AlignLeft);
+
+        int gridRow = 1;
+        for (int modelRow = 0; modelRow < definitions.size(); ++modelRow) {
+            const Definition &definition = definitions.at(modelRow);
+            if (definition.group != group)
+                continue;
+            Row row;
+            row.key = definition.key;
+            row.modelRow = modelRow;
+            row.editor = createEditor(definition);
+            row.editor->setParent(box);
+            row.label = new QLabel(definition.label, box);
+            row.label->setBuddy(row.editor);
+            row.label->setToolTip(row.editor->toolTip());
+            row.device = new QLabel(box);
+            row.device->setObjectName(QStringLiteral("device_") + definition.key);
+            row.device->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            row.device->setTextInteractionFlags(Qt::TextSelectableByMouse);
+            row.unit = new QLabel(definition.unit, box);
+            row.state = new QLabel(box);
+            row.state->setObjectName(QStringLiteral("state_") + definition.key);
+            grid->addWidget(row.label, gridRow, LabelColumn);
+            grid->addWidget(row.device, gridRow, DeviceColumn);
+            grid->addWidget(row.editor, gridRow, EditorColumn);
+            grid->addWidget(row.unit, gridRow, UnitColumn);
+            grid->addWidget(row.state, gridRow, StateColumn);
+            ++gridRow;
+            m_rowIndex.insert(row.key, int(m_rows.size()));
+            m_rows.append(row);
+        }
+        grid->setColumnStretch(GridColumns, 1);
+        const int column = columnRows[1] < columnRows[0] ? 1 : 0;
+        columnLayouts[column]->addWidget(box);
+        columnRows[column] += gridRow;
+    }
+    for (QVBoxLayout *column : columnLayouts)
+        column->addStretch(1);
+    m_formLayout->addStretch(1);
+
+    // The same column widths in every group, so the boxes read as one table.
+    const QFontMetrics metrics = fontMetrics();
+    QFont bold = font();
+    bold.setBold(true);
+    const QFontMetrics boldMetrics(bold);
+    int widths[GridColumns] = {};
+    widths[DeviceColumn] = metrics.horizontalAdvance(tr("Device"));
+    widths[StateColumn] = boldMetrics.horizontalAdvance(
+        QStringLiteral("✓ ") + ParameterModel::stateName(State::Verified));
+    for (const State state : {State::Edited, State::Writing, State::Mismatch, State::Failed})
+        widths[StateColumn] = std::max(
+            widths[StateColumn],
+            boldMetrics.horizontalAdvance(QStringLiteral("✗ ") + ParameterModel::stateName(state)));
+    for (const Row &row : std::as_const(m_rows)) {
+        const Definition &definition = definitions.at(row.modelRow);
+        widths[LabelColumn] = std::max(widths[LabelColumn], row.label->sizeHint().width());
+        widths[EditorColumn] = std::max(widths[EditorColumn], row.editor->sizeHint().width());
+        widths[UnitColumn] = std::max(widths[UnitColumn], row.unit->sizeHint().width());
+        for (const qint64 raw : {definition.minimum, definition.maximum}) {
+            QString shown = userText(definition, raw);
+            if (!definition.unit.isEmpty())
+                shown += u' ' + definition.unit;
+            widths[DeviceColumn] = std::max(widths[DeviceColumn], metrics.horizontalAdvance(shown));
+        }
+        for (const model::Choice &choice : definition.choices)
+            widths[DeviceColumn] =
+                std::max(widths[DeviceColumn], metrics.horizontalAdvance(choice.label));
+    }
+    widths[LabelColumn] += 12;
+    widths[DeviceColumn] += 16;
+    widths[EditorColumn] = std::max(widths[EditorColumn] + 8, 110);
+    widths[UnitColumn] = std::max(widths[UnitColumn], metrics.horizontalAdvance(u'm') * 3);
+    int formWidth = 0;
+    for (QGridLayout *grid : std::as_const(grids)) {
+        for (int column = 0; column < GridColumns; ++column)
+            grid->setColumnMinimumWidth(column, widths[column]);
+        formWidth = std::max(formWidth, grid->minimumSize().width());
+    }
+    // Room for the longest state text and its neighbours to breathe.
+    m_form->setMaximumWidth(std::max(2 * formWidth + 16 + 60, 640));
+
+    for (Row &row : m_rows)
+        updateRow(row);
+    updateButtons();
+}
+
+QWidget *PtkPage::createEditor(const model::Definition &definition)
+{
+    const QString key = definition.key;
+    QWidget *editor = nullptr;
+    QString range;
+    if (!definition.choices.isEmpty()) {
+        auto *combo = new QComboBox;
+        QStringList labels;
+        for (const model::Choice &choice : definition.choices) {
+            combo->addItem(choice.label, QVariant::fromValue<qlonglong>(choice.value));
+            labels.append(choice.label);
+        }
+        combo->setCurrentIndex(-1);
+        connect(combo, &QComboBox::currentIndexChanged, this, [this, key] { editorChanged(key); });
+        range = tr("%1: %2").arg(definition.label, labels.join(tr(" or ")));
+        editor = combo;
+    } else {
+        QAbstractSpinBox *spin = nullptr;
+        if (definition.scale == 1.0) {
+            auto *box = new QSpinBox;
+            box->setRange(toInt(definition.minimum), toInt(definition.maximum));
+            connect(box, &QSpinBox::valueChanged, this, [this, key] { editorChanged(key); });
+            spin = box;
+        } else {
+            auto *box = new QDoubleSpinBox;
+            box->setDecimals(decimalsFor(definition.scale));
+            box->setRange(double(definition.minimum) * definition.scale,
+                          double(definition.maximum) * definition.scale);
+            // Whole user units per step (1 µs), not one raw step (0.25 µs).
+            box->setSingleStep(std::max(1.0, std::abs(definition.scale)));
+            connect(box, &QDoubleSpinBox::valueChanged, this, [this, key] { editorChanged(key); });
+            spin = box;
+        }
+        spin->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        spin->setKeyboardTracking(true); // Apply lights up as soon as a value is typed
+        spin->setAccelerated(true);
+        spin->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
+        connect(spin, &QAbstractSpinBox::editingFinished, this,
+                [this, key] { editorFinished(key); });
+        const QString unit = definition.unit.isEmpty() ? QString() : u' ' + definition.unit;
+        range = tr("%1: %2 to %3%4")
+                    .arg(definition.label, userText(definition, definition.minimum),
+                         userText(definition, definition.maximum), unit);
+        editor = spin;
+    }
+    editor->setObjectName(QStringLiteral("editor_") + key);
+    editor->setAccessibleName(definition.label);
+    // No wheel focus: scrolling the page must never change a servo parameter by accident.
+    editor->setFocusPolicy(Qt::StrongFocus);
+    editor->installEventFilter(this);
+    editor->setToolTip(definition.note.isEmpty() ? range : range + u'\n' + definition.note);
+    return editor;
+}
+
+bool PtkPage::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::Wheel) {
+        auto *widget = qobject_cast<QWidget *>(watched);
+        if (widget && !widget->hasFocus()) {
+            // Ignored and filtered: the wheel goes on to the scroll area instead.
+            event->ignore();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void PtkPage::editorChanged(const QString &key)
+{
+    Row *row = findRow(key);
+    const Definition *definition = m_model->definition(key);
+    if (!row || !definition)
+        return;
+    QString error;
+    bool accepted = true;
+    m_committing = key; // the editor is the source: the model's echo must not rewrite it
+    if (auto *combo = qobject_cast<QComboBox *>(row->editor)) {
+        if (combo->currentIndex() >= 0)
+            accepted = m_model->edit(key, combo->currentData().toLongLong(), &error);
+    } else if (auto *spin = qobject_cast<QSpinBox *>(row->editor)) {
+        row->typing = true;
+        accepted = m_model->edit(key, spin->value(), &error);
+    } else if (auto *spin = qobject_cast<QDoubleSpinBox *>(row->editor)) {
+        row->typing = true;
+        accepted = m_model->editScaled(key, spin->value(), &error);
+    }
+    m_committing.clear();
+    if (!accepted) {
+        // The editors' ranges come from the definitions, so this is rare; say why in place.
+        setForeground(row->state, stateColor(State::Failed, isDark(palette())), true);
+        row->state->setText(tr("Refused"));
+        row->state->setToolTip(error);
+    }
+}
+
+void PtkPage::editorFinished(const QString &key)
+{
+    Row *row = findRow(key);
+    if (!row || !row->typing)
+        return;
+    row->typing = false;
+    // The device value may have moved while the user typed; what they see when they leave the
+    // field is what they asked for, so it becomes the edit (or no edit) now.
+    if (!m_busy && row->editor->isEnabled())
+        editorChanged(key);
+    row->typing = false;
+    updateRow(*row);
+}
+
+void PtkPage::refreshRow(const QString &key)
+{
+    if (Row *row = findRow(key))
+        updateRow(*row);
+    updateButtons();
+}
+
+void PtkPage::updateRow(Row &row)
+{
+    const Definition *definition = m_model->definition(row.key);
+    if (!definition)
+        return;
+    const std::optional<qint64> device = m_model->deviceValue(row.key);
+    const std::optional<qint64> pending = m_model->pendingValue(row.key);
+    const State state = m_model->state(row.key);
+
+    row.device->setText(
+        device
+            ? m_model->data(m_model->index(row.modelRow, ParameterModel::DeviceColumn)).toString()
+            : tr("—"));
+    row.device->setToolTip(device ? QString() : tr("Not read from the servo yet"));
+
+    QString stateText = ParameterModel::stateName(state);
+    QString stateTip;
+    switch (state) {
+    case State::Clean:
+        break;
+    case State::Edited:
+        stateTip = tr("Changed here; written to the servo when you press Apply");
+        break;
+    case State::Writing:
+        stateText += QStringLiteral("…");
+        stateTip = tr("Being written to the servo");
+        break;
+    case State::Verified:
+        stateText = QStringLiteral("✓ ") + stateText;
+        stateTip = tr("Written and read back with the same value");
+        break;
+    case State::Mismatch:
+        stateText = QStringLiteral("✗ ") + stateText;
+        stateTip = tr("The value read back differs from the value written");
+        break;
+    case State::Failed:
+        stateText = QStringLiteral("✗ ") + stateText;
+        stateTip = tr("The write did not go out; the edit is kept so you can try again");
+        break;
+    }
+    row.state->setText(stateText);
+    row.state->setToolTip(stateTip);
+    setForeground(row.state, stateColor(state, isDark(palette())),
+                  state == State::Edited || state == State::Mismatch || state == State::Failed);
+
+    const bool readable = device.has_value() || definition->access == model::Access::WriteOnly;
+    const bool enabled = readable && !m_busy && definition->access != model::Access::ReadOnly;
+    row.editor->setEnabled(enabled);
+    setHighlighted(row.editor, pending.has_value());
+
+    // Never under the user's fingers: not while they type in it, not while it sends its value.
+    if (m_committing == row.key || (row.typing && row.editor->hasFocus()))
+        return;
+    row.typing = false;
+    if (pending)
+        showValue(row, *pending);
+    else if (device)
+        showValue(row, *device);
+    else
+        showUnread(row);
+}
+
+void PtkPage::showUnread(Row &row)
+{
+    // A number in an unread editor would look like the servo's value; show a dash instead.
+    const QSignalBlocker blocker(row.editor);
+    if (auto *combo = qobject_cast<QComboBox *>(row.editor)) {
+        combo->setCurrentIndex(-1);
+    } else if (auto *spin = qobject_cast<QSpinBox *>(row.editor)) {
+        spin->setSpecialValueText(tr("—"));
+        spin->setValue(spin->minimum());
+    } else if (auto *spin = qobject_cast<QDoubleSpinBox *>(row.editor)) {
+        spin->setSpecialValueText(tr("—"));
+        spin->setValue(spin->minimum());
+    }
+}
+
+void PtkPage::showValue(Row &row, qint64 raw)
+{
+    const Definition *definition = m_model->definition(row.key);
+    const QSignalBlocker blocker(row.editor); // showing a value is not an edit
+    if (auto *combo = qobject_cast<QComboBox *>(row.editor)) {
+        combo->setCurrentIndex(combo->findData(QVariant::fromValue<qlonglong>(raw)));
+    } else if (auto *spin = qobject_cast<QSpinBox *>(row.editor)) {
+        spin->setSpecialValueText(QString());
+        spin->setValue(toInt(raw));
+    } else if (auto *spin = qobject_cast<QDoubleSpinBox *>(row.editor)) {
+        spin->setSpecialValueText(QString());
+        spin->setValue(double(raw) * definition->scale);
+    }
+}
+
+void PtkPage::updateButtons()
+{
+    const bool edits = m_model->hasEdits();
+    m_read->setEnabled(m_linkReady && !m_busy);
+    m_apply->setEnabled(m_linkReady && edits && !m_busy);
+    m_revert->setEnabled(edits && !m_busy);
+    m_saveProfile->setEnabled(!m_busy);
+    m_loadProfile->setEnabled(!m_busy);
+}
+
+void PtkPage::revertAll()
+{
+    // An explicit Revert wins over a half-typed value.
+    for (Row &row : m_rows)
+        row.typing = false;
+    m_model->revertAll();
+}
+
+void PtkPage::setLinkReady(bool ready)
+{
+    m_linkReady = ready;
+    updateButtons();
+}
+
+void PtkPage::setBusy(bool busy, const QString &what)
+{
+    m_busy = busy;
+    m_busyLabel->setText(what);
+    m_busyLabel->setVisible(busy && !what.isEmpty());
+    m_progress->setVisible(busy);
+    m_progress->setRange(0, 0); // indeterminate until setProgress() says how far
+    m_progress->setValue(0);
+    for (Row &row : m_rows)
+        updateRow(row);
+    updateButtons();
+}
+
+void PtkPage::setProgress(int done, int total)
+{
+    m_progress->setRange(0, std::max(total, 0));
+    m_progress->setValue(std::clamp(done, 0, std::max(total, 0)));
+}
+
+QWidget *PtkPage::editor(const QString &key) const
+{
+    const Row *row = findRow(key);
+    return row ? row->editor : nullptr;
+}
+
+QLabel *PtkPage::deviceLabel(const QString &key) const
+{
+    const Row *row = findRow(key);
+    return row ? row->device : nullptr;
+}
+
+QLabel *PtkPage::stateLabel(const QString &key) const
+{
+    const Row *row = findRow(key);
+    return row ? row->state : nullptr;
+}
+
+PtkPage::Row *PtkPage::findRow(const QString &key)
+{
+    const int index = m_rowIndex.value(key, -1);
+    return index < 0 ? nullptr : &m_rows[index];
+}
+
+const PtkPage::Row *PtkPage::findRow(const QString &key) const
+{
+    const int index = m_rowIndex.value(key, -1);
+    return index < 0 ? nullptr : &m_rows.at(index);
+}

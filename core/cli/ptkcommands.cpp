@@ -115,47 +115,40 @@ public:
     // All thirteen values, or nothing (and error()) when a query went unanswered.
     std::optional<ptk::ParameterSet> readAll()
     {
-        ptk::ParameterSet values;
-        const QMetaObject::Connection collect = QObject::connect(
-            m_session.get(), &ptk::Session::valuesRead,
-            [&](const ptk::ParameterSet &read, ptk::ReadSource) { merge(values, read); });
-        bool ok = false;
-        run(
-            &ptk::Session::readFinished, [&] { m_session->readAll(); },
-            [&](bool success, const QString &message) {
-                ok = success;
-                m_error = message;
-            });
-        QObject::disconnect(collect);
-        if (!ok)
-            return std::nullopt;
-        return values;
+        return collect(&ptk::Session::readFinished, std::nullopt, [this] { m_session->readAll(); });
     }
 
     // Writes the full sequence; returns the values read back (nothing when the link failed).
     std::optional<ptk::ParameterSet> apply(const ptk::ParameterSet &values)
     {
-        ptk::ParameterSet readBack;
-        const QMetaObject::Connection collect =
-            QObject::connect(m_session.get(), &ptk::Session::valuesRead,
-                             [&](const ptk::ParameterSet &read, ptk::ReadSource source) {
-                                 if (source == ptk::ReadSource::ReadBack)
-                                     merge(readBack, read);
-                             });
-        bool ok = false;
-        run(
-            &ptk::Session::applyFinished, [&] { m_session->apply(values); },
-            [&](bool success, const QString &message) {
-                ok = success;
-                m_error = message;
-            });
-        QObject::disconnect(collect);
-        if (!ok)
-            return std::nullopt;
-        return readBack;
+        return collect(&ptk::Session::applyFinished, ptk::ReadSource::ReadBack,
+                       [this, values] { m_session->apply(values); });
     }
 
 private:
+    // Runs `work` to `finished`, gathering the values read (only those from `source` if given).
+    template<typename Signal, typename Work>
+    std::optional<ptk::ParameterSet> collect(Signal finished, std::optional<ptk::ReadSource> source,
+                                             Work work)
+    {
+        ptk::ParameterSet values;
+        const QMetaObject::Connection collecting =
+            QObject::connect(m_session.get(), &ptk::Session::valuesRead,
+                             [&](const ptk::ParameterSet &read, ptk::ReadSource from) {
+                                 if (!source || from == *source)
+                                     merge(values, read);
+                             });
+        bool ok = false;
+        run(finished, work, [&](bool success, const QString &message) {
+            ok = success;
+            m_error = message;
+        });
+        QObject::disconnect(collecting);
+        if (!ok)
+            return std::nullopt;
+        return values;
+    }
+
     // Starts `work` and runs the event loop until `finished` fires or the guard time passes.
     template<typename Signal, typename Work, typename Done>
     void run(Signal finished, Work work, Done done)

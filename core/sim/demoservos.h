@@ -1,0 +1,32 @@
+// Simulated servos inside the application, so ServoBench can be tried before hardware arrives.
+#pragma once
+
+#include "sim/simulator.h"
+
+#include <QTemporaryDir>
+
+#include <memory>
+
+namespace sim {
+
+// Starts each simulator on first use, on a pseudo-terminal in a private temporary folder, and
+// stops them all when destroyed.
+class DemoServos
+{
+public:
+    DemoServos() = default;
+    ~DemoServos();
+    DemoServos(const DemoServos &) = delete;
+    DemoServos &operator=(const DemoServos &) = delete;
+
+    // The port of the simulated PTK servo (empty and *error when it cannot start).
+    QString ptkPort(QString *error);
+
+private:
+    bool ensureFolder(QString *error);
+
+    std::unique_ptr<QTemporaryDir> m_folder;
+    std::unique_ptr<SimulatorThread> m_ptk;
+};
+
+} // namespace sim

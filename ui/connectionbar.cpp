@@ -1,0 +1,144 @@
+// Connection bar: port discovery, settings and the Connect button.
+#include "connectionbar.h"
+
+#include <QComboBox>
+#include <QIntValidator>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSerialPortInfo>
+#include <QTimer>
+
+namespace {
+
+// Hot-plugged adapters show up within this time.
+constexpr int kPortRefreshMs = 1000;
+
+} // namespace
+
+const QString ConnectionBar::kSimulatedPtkPort = QStringLiteral("simulated:ptk");
+
+ConnectionBar::ConnectionBar(QWidget *parent)
+    : QToolBar(tr("Connection"), parent)
+{
+    setObjectName(QStringLiteral("connectionBar"));
+    setMovable(false);
+
+    addWidget(new QLabel(tr("Port "), this));
+    m_port = new QComboBox(this);
+    m_port->setObjectName(QStringLiteral("portCombo"));
+    m_port->setEditable(true); // a path the list does not show, e.g. servosim's link
+    m_port->setInsertPolicy(QComboBox::NoInsert);
+    m_port->setMinimumContentsLength(24);
+    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_port->setToolTip(tr("The serial port of the USB programmer, or a simulated servo"));
+    addWidget(m_port);
+
+    addSeparator();
+    addWidget(new QLabel(tr("Baud "), this));
+    m_baud = new QComboBox(this);
+    m_baud->setObjectName(QStringLiteral("baudCombo"));
+    m_baud->setEditable(true);
+    m_baud->setValidator(new QIntValidator(1200, 4000000, m_baud));
+    for (const int rate : {115200, 57600, 38400, 19200, 9600, 1000000, 500000, 250000, 128000})
+        m_baud->addItem(QString::number(rate));
+    m_baud->setToolTip(tr("PTK servos talk at 115200 baud"));
+    addWidget(m_baud);
+
+    addSeparator();
+    addWidget(new QLabel(tr("Protocol "), this));
+    m_protocol = new QComboBox(this);
+    m_protocol->setObjectName(QStringLiteral("protocolCombo"));
+    m_protocol->addItem(tr("PTK RC servo"));
+    addWidget(m_protocol);
+
+    addSeparator();
+    addWidget(new QLabel(tr("Echo "), this));
+    m_echo = new QComboBox(this);
+    m_echo->setObjectName(QStringLiteral("echoCombo"));
+    m_echo->addItem(tr("Auto"), int(seriallink::EchoMode::Auto));
+    m_echo->addItem(tr("On"), int(seriallink::EchoMode::On));
+    m_echo->addItem(tr("Off"), int(seriallink::EchoMode::Off));
+    m_echo->setToolTip(tr("Single-wire programmers send every byte back. Auto detects it."));
+    addWidget(m_echo);
+
+    addSeparator();
+    m_connect = new QPushButton(tr("Connect"), this);
+    m_connect->setObjectName(QStringLiteral("connectButton"));
+    m_connect->setDefault(true);
+    addWidget(m_connect);
+    connect(m_connect, &QPushButton::clicked, this, [this] {
+        if (m_active)
+            emit disconnectRequested();
+        else
+            emit connectRequested();
+    });
+
+    m_refresh = new QTimer(this);
+    m_refresh->setInterval(kPortRefreshMs);
+    connect(m_refresh, &QTimer::timeout, this, &ConnectionBar::refreshPorts);
+    m_refresh->start();
+    refreshPorts();
+}
+
+QString ConnectionBar::port() const
+{
+    const int index = m_port->findText(m_port->currentText());
+    if (index >= 0 && !m_port->itemData(index).toString().isEmpty())
+        return m_port->itemData(index).toString();
+    return m_port->currentText().trimmed();
+}
+
+void ConnectionBar::setPort(const QString &port)
+{
+    const int index = m_port->findData(port);
+    if (index >= 0)
+        m_port->setCurrentIndex(index);
+    else
+        m_port->setEditText(port);
+}
+
+qint32 ConnectionBar::baud() const
+{
+    return m_baud->currentText().toInt();
+}
+
+seriallink::EchoMode ConnectionBar::echoMode() const
+{
+    return seriallink::EchoMode(m_echo->currentData().toInt());
+}
+
+void ConnectionBar::setSessionActive(bool active)
+{
+    m_active = active;
+    m_connect->setText(active ? tr("Disconnect") : tr("Connect"));
+    for (QWidget *setting : {static_cast<QWidget *>(m_port), static_cast<QWidget *>(m_baud),
+                             static_cast<QWidget *>(m_protocol), static_cast<QWidget *>(m_echo)})
+        setting->setEnabled(!active);
+}
+
+void ConnectionBar::refreshPorts()
+{
+    QStringList ports;
+    QStringList descriptions;
+    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts()) {
+        ports.append(info.systemLocation());
+        descriptions.append(info.description());
+    }
+    if (ports == m_knownPorts && m_port->count() > 0)
+        return;
+    m_knownPorts = ports;
+    // Rebuilding the list must not lose what the user chose or is typing.
+    const QString chosen = port();
+    const QSignalBlocker quiet(m_port);
+    m_port->clear();
+    for (int i = 0; i < ports.size(); ++i) {
+        const QString text = descriptions.at(i).isEmpty()
+            ? ports.at(i)
+            : QStringLiteral("%1 (%2)").arg(ports.at(i), descriptions.at(i));
+        m_port->addItem(text, ports.at(i));
+    }
+    m_port->addItem(tr("Simulated PTK servo"), kSimulatedPtkPort);
+    if (!chosen.isEmpty())
+        setPort(chosen);
+}

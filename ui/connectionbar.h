@@ -1,0 +1,46 @@
+// The connection bar: port (refreshed on hot-plug), baud, protocol, echo and Connect/Disconnect.
+#pragma once
+
+#include "link/requestengine.h"
+
+#include <QToolBar>
+
+class QComboBox;
+class QPushButton;
+class QTimer;
+
+class ConnectionBar : public QToolBar
+{
+    Q_OBJECT
+
+public:
+    // The port list's entry for the in-process simulated servo.
+    static const QString kSimulatedPtkPort;
+
+    explicit ConnectionBar(QWidget *parent = nullptr);
+
+    QString port() const; // a system path, or kSimulatedPtkPort
+    void setPort(const QString &port);
+    qint32 baud() const;
+    seriallink::EchoMode echoMode() const;
+
+    // Connected (or trying to be): the button offers Disconnect and the settings are locked.
+    void setSessionActive(bool active);
+
+    // Reads the system's ports again, keeping what the user selected or typed.
+    void refreshPorts();
+
+signals:
+    void connectRequested();
+    void disconnectRequested();
+
+private:
+    QComboBox *m_port = nullptr;
+    QComboBox *m_baud = nullptr;
+    QComboBox *m_protocol = nullptr;
+    QComboBox *m_echo = nullptr;
+    QPushButton *m_connect = nullptr;
+    QTimer *m_refresh = nullptr;
+    QStringList m_knownPorts;
+    bool m_active = false;
+};
