@@ -21,8 +21,8 @@ private slots:
         for (QAction *action : window.menuBar()->actions())
             menus.append(action->text());
         QCOMPARE(menus,
-                 (QStringList {QStringLiteral("&File"), QStringLiteral("&View"),
-                               QStringLiteral("&Help")}));
+                 (QStringList {QStringLiteral("&File"), QStringLiteral("&Link"),
+                               QStringLiteral("&View"), QStringLiteral("&Help")}));
         auto *state = window.findChild<QLabel *>(QStringLiteral("connectionState"));
         QVERIFY(state);
         QCOMPARE(state->text(), QStringLiteral("Not connected"));

@@ -135,6 +135,20 @@ void MainWindow::createMenus()
     quit->setShortcut(QKeySequence::Quit);
     quit->setObjectName(QStringLiteral("quitAction"));
 
+    QMenu *link = menuBar()->addMenu(tr("&Link"));
+    QAction *polling = link->addAction(tr("&Poll the servo"));
+    polling->setObjectName(QStringLiteral("pollingAction"));
+    polling->setCheckable(true);
+    polling->setChecked(true);
+    polling->setToolTip(tr("Keep reading the eight queries so the values stay live"));
+    connect(polling, &QAction::toggled, this, [this](bool on) { m_ptk->setPolling(on); });
+    QAction *fast = link->addAction(tr("&Fast polling (queries back to back)"));
+    fast->setObjectName(QStringLiteral("fastPollingAction"));
+    fast->setCheckable(true);
+    connect(fast, &QAction::toggled, this, [this](bool on) {
+        m_ptk->setPollInterval(int(ptk::SessionTiming().pollInterval.count()), on);
+    });
+
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_packetLog->toggleViewAction());
     view->addAction(m_connectionBar->toggleViewAction());

@@ -34,6 +34,7 @@ RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, De
 {
     connect(&m_transport, &Transport::received, this, &RequestEngine::onReceived);
     connect(&m_transport, &Transport::bytesWritten, this, &RequestEngine::onBytesWritten);
+    m_clock.start();
     m_countersTimer = new QTimer(this);
     m_countersTimer->setSingleShot(true);
     m_countersTimer->setInterval(kCounterPublishInterval);
@@ -118,6 +119,19 @@ void RequestEngine::startNext()
 
 void RequestEngine::send()
 {
+    // A reply that missed its timeout may still come; PTK replies name no query, so it must
+    // land before the next request goes out, where it is discarded as stray input.
+    const qint64 quietFor = m_quietUntilMs - m_clock.elapsed();
+    if (quietFor > 0) {
+        m_state = State::Settling;
+        const quint64 generation = ++m_generation;
+        QTimer::singleShot(std::chrono::milliseconds(quietFor), Qt::PreciseTimer, this,
+                           [this, generation] {
+                               if (generation == m_generation && m_state == State::Settling)
+                                   send();
+                           });
+        return;
+    }
     // Whatever is still waiting belongs to an earlier exchange; it must not answer this one.
     QByteArray stray = m_transport.discardInput();
     if (m_framer.pendingBytes() > 0) {
@@ -172,10 +186,12 @@ void RequestEngine::onBytesWritten(qint64 count)
 void RequestEngine::onReceived(const QByteArray &bytes)
 {
     qCDebug(lcRaw) << "rx" << bytes.toHex(' ');
-    if (m_state == State::Idle || !m_current) {
+    if (m_state == State::Idle || m_state == State::Settling || !m_current) {
         // Nothing is waiting for these: a late reply, noise, or an echo after the fact.
         m_counters.discardedBytes += bytes.size();
-        log(Direction::Stray, bytes, Tr::tr("received while no request was waiting"));
+        log(Direction::Stray, bytes,
+            m_state == State::Settling ? Tr::tr("late reply, discarded")
+                                       : Tr::tr("received while no request was waiting"));
         publishCounters();
         return;
     }
@@ -228,6 +244,7 @@ void RequestEngine::onTimeout(quint64 generation)
         return;
     }
     ++m_counters.timeouts;
+    m_quietUntilMs = m_clock.elapsed() + m_timing.replyTimeout.count();
     log(Direction::In, {},
         Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(m_timing.retryCount + 1));
     if (m_attempts <= m_timing.retryCount && m_transport.isOpen()) {

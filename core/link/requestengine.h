@@ -91,7 +91,8 @@ signals:
     void countersChanged(const seriallink::LinkCounters &counters);
 
 private:
-    enum class State { Idle, Sending, AwaitingReply };
+    // Settling: after a timeout, waiting out a reply that may still arrive late.
+    enum class State { Idle, Settling, Sending, AwaitingReply };
     enum class Decision { Unknown, Yes, No };
 
     void scheduleNext();
@@ -122,6 +123,8 @@ private:
     qint64 m_writtenBytes = 0;
     bool m_echoConsumed = false;
     bool m_sawFrame = false;
+    QElapsedTimer m_clock;
+    qint64 m_quietUntilMs = 0; // no request goes out before this: a late reply may be on its way
     quint64 m_generation = 0; // stale timer firings carry an old generation and are ignored
     bool m_nextScheduled = false;
     bool m_countersDirty = false;

@@ -1,0 +1,286 @@
+// Unit tests of the request engine over a scripted transport: ordering, timeouts, retries, echo.
+#include "link/requestengine.h"
+#include "link/transport.h"
+#include "ptk/ptkframe.h"
+
+#include <QtTest>
+
+using seriallink::EchoMode;
+using seriallink::Failure;
+using seriallink::RequestEngine;
+using seriallink::Transaction;
+using seriallink::TransactionResult;
+
+namespace {
+
+// Records what is written and answers each write with what the test queued for it.
+class ScriptedTransport final : public seriallink::Transport
+{
+public:
+    bool open = true;
+    bool echo = false;
+    QVector<QByteArray> written;
+    QVector<QByteArray> answers; // one per write, in order; empty: silence
+    QByteArray pendingInput; // what discardInput() finds
+
+    bool isOpen() const override { return open; }
+    qint32 baudRate() const override { return 115200; }
+    void write(const QByteArray &bytes) override
+    {
+        written.append(bytes);
+        const QByteArray answer = answers.isEmpty() ? QByteArray() : answers.takeFirst();
+        QTimer::singleShot(0, this, [this, bytes, answer] {
+            emit bytesWritten(bytes.size());
+            if (echo)
+                emit received(bytes);
+            if (!answer.isEmpty())
+                emit received(answer);
+        });
+    }
+    QByteArray discardInput() override { return std::exchange(pendingInput, {}); }
+    void deliver(const QByteArray &bytes) { emit received(bytes); }
+};
+
+// A result that reads as failed until a transaction writes over it.
+TransactionResult unfinished()
+{
+    TransactionResult result;
+    result.failure = Failure::Cancelled;
+    return result;
+}
+
+QByteArray reply(quint16 word0)
+{
+    return ptk::encodeReply({word0, 0});
+}
+
+Transaction query(quint8 command, Transaction::Priority priority, QVector<QString> *order,
+                  TransactionResult *result = nullptr)
+{
+    Transaction transaction;
+    transaction.request = ptk::encodeQuery(command);
+    transaction.priority = priority;
+    transaction.expectedReplySize = ptk::kReplySize;
+    transaction.acceptsReply = [](const QByteArray &frame) {
+        return frame.size() == ptk::kReplySize;
+    };
+    transaction.done = [order, result, command](const TransactionResult &outcome) {
+        if (order)
+            order->append(QString::number(command));
+        if (result)
+            *result = outcome;
+    };
+    return transaction;
+}
+
+} // namespace
+
+class TestRequestEngine : public QObject
+{
+    Q_OBJECT
+
+private:
+    ptk::FrameFormat m_format;
+
+    std::unique_ptr<RequestEngine> engine(ScriptedTransport &transport)
+    {
+        auto result = std::make_unique<RequestEngine>(transport, m_format, nullptr);
+        seriallink::EngineTiming timing;
+        timing.replyTimeout = std::chrono::milliseconds(5);
+        timing.retryCount = 2;
+        result->setTiming(timing);
+        return result;
+    }
+
+private slots:
+    void commandsGoBeforeQueuedPolls()
+    {
+        ScriptedTransport transport;
+        transport.answers = {reply(1), reply(2), reply(3), reply(4)};
+        auto requests = engine(transport);
+        QVector<QString> order;
+        requests->submit(query(0x38, Transaction::Priority::Poll, &order));
+        requests->submit(query(0x3D, Transaction::Priority::Poll, &order));
+        requests->submit(query(0x01, Transaction::Priority::Command, &order));
+        requests->submit(query(0x05, Transaction::Priority::Command, &order));
+        QTRY_COMPARE(order.size(), 4);
+        QCOMPARE(order,
+                 (QVector<QString> {QStringLiteral("1"), QStringLiteral("5"), QStringLiteral("56"),
+                                    QStringLiteral("61")}));
+    }
+
+    void onlyOneTransactionIsInFlight()
+    {
+        ScriptedTransport transport; // silent: every query times out
+        auto requests = engine(transport);
+        QVector<QString> order;
+        requests->submit(query(0x38, Transaction::Priority::Poll, &order));
+        requests->submit(query(0x3D, Transaction::Priority::Poll, &order));
+        QTRY_COMPARE(transport.written.size(), 1 + 0); // the first goes out alone
+        QCOMPARE(order.size(), 0);
+        QTRY_COMPARE(order.size(), 2);
+        // Three tries each, never interleaved.
+        QCOMPARE(transport.written.size(), 6);
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(transport.written.at(i), ptk::encodeQuery(0x38));
+    }
+
+    void aMissingReplyIsRetriedThenReportedAsATimeout()
+    {
+        ScriptedTransport transport;
+        transport.answers = {QByteArray(), QByteArray(), QByteArray()};
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        QVector<QString> order;
+        requests->submit(query(0x38, Transaction::Priority::Command, &order, &result));
+        QTRY_COMPARE(order.size(), 1);
+        QCOMPARE(result.failure, Failure::Timeout);
+        QCOMPARE(result.attempts, 3);
+        QCOMPARE(requests->counters().timeouts, 3);
+        QCOMPARE(requests->counters().retries, 2);
+        QCOMPARE(requests->counters().failures, 1);
+    }
+
+    void aReplyOnTheSecondTryIsAccepted()
+    {
+        ScriptedTransport transport;
+        transport.answers = {QByteArray(), reply(42)};
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        QVector<QString> order;
+        requests->submit(query(0x38, Transaction::Priority::Command, &order, &result));
+        QTRY_COMPARE(order.size(), 1);
+        QVERIFY(result.ok());
+        QCOMPARE(result.attempts, 2);
+        QCOMPARE(ptk::decodeReply(result.reply)->word0, quint16(42));
+    }
+
+    void strayInputIsDiscardedBeforeEachRequest()
+    {
+        ScriptedTransport transport;
+        transport.pendingInput = reply(7); // a late reply of an earlier exchange
+        transport.answers = {reply(8)};
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &result));
+        QTRY_VERIFY(result.ok());
+        QCOMPARE(ptk::decodeReply(result.reply)->word0, quint16(8));
+        QCOMPARE(requests->counters().discardedBytes, ptk::kReplySize);
+    }
+
+    void bytesWhileIdleAreCountedAsStrayAndNeverAnswerTheNextRequest()
+    {
+        ScriptedTransport transport;
+        auto requests = engine(transport);
+        QSignalSpy log(requests.get(), &RequestEngine::packetLogged);
+        transport.deliver(reply(9));
+        QCOMPARE(requests->counters().discardedBytes, ptk::kReplySize);
+        QCOMPARE(log.size(), 1);
+        QCOMPARE(log.first().first().value<seriallink::PacketLogEntry>().direction,
+                 seriallink::Direction::Stray);
+    }
+
+    void aCorruptedReplyIsCountedAndNotTakenAsTheAnswer()
+    {
+        ScriptedTransport transport;
+        QByteArray corrupted = reply(5);
+        corrupted[5] = char(corrupted[5] ^ 0x10);
+        transport.answers = {corrupted, reply(5)};
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &result));
+        QTRY_VERIFY(result.ok());
+        QCOMPARE(result.attempts, 2);
+        QCOMPARE(requests->counters().checksumErrors, 1);
+    }
+
+    void autoEchoDetectionRemovesTheAdaptersEcho_data()
+    {
+        QTest::addColumn<EchoMode>("mode");
+        QTest::addColumn<bool>("adapterEchoes");
+        QTest::addColumn<bool>("echoRemoved");
+        QTest::newRow("auto, echoing adapter") << EchoMode::Auto << true << true;
+        QTest::newRow("auto, plain adapter") << EchoMode::Auto << false << false;
+        QTest::newRow("on") << EchoMode::On << true << true;
+        QTest::newRow("off, plain adapter") << EchoMode::Off << false << false;
+    }
+
+    void autoEchoDetectionRemovesTheAdaptersEcho()
+    {
+        QFETCH(EchoMode, mode);
+        QFETCH(bool, adapterEchoes);
+        QFETCH(bool, echoRemoved);
+        ScriptedTransport transport;
+        transport.echo = adapterEchoes;
+        transport.answers = {reply(1), reply(2)};
+        auto requests = engine(transport);
+        requests->setEchoMode(mode);
+        TransactionResult first = unfinished();
+        TransactionResult second = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &first));
+        requests->submit(query(0x3D, Transaction::Priority::Command, nullptr, &second));
+        QTRY_VERIFY(second.ok());
+        QVERIFY(first.ok());
+        QCOMPARE(requests->echoDetected(), echoRemoved);
+        QCOMPARE(requests->counters().echoBytes, echoRemoved ? 2 * ptk::kRequestSize : 0);
+        QCOMPARE(requests->counters().timeouts, 0);
+    }
+
+    void aWriteThatExpectsNoReplyCompletesAfterItHasLeft()
+    {
+        ScriptedTransport transport;
+        auto requests = engine(transport);
+        Transaction write;
+        write.request = ptk::encodeRequest({1, 20, 0});
+        TransactionResult result = unfinished();
+        write.done = [&](const TransactionResult &outcome) {
+            result = outcome;
+        };
+        requests->submit(write);
+        QTRY_VERIFY(result.ok());
+        QCOMPARE(requests->counters().timeouts, 0);
+    }
+
+    void cancellingEndsQueuedAndCurrentTransactions()
+    {
+        ScriptedTransport transport;
+        auto requests = engine(transport);
+        QVector<QString> order;
+        TransactionResult last = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Command, &order));
+        requests->submit(query(0x3D, Transaction::Priority::Poll, &order, &last));
+        QTRY_COMPARE(transport.written.size(), 1);
+        requests->cancelAll(Failure::LinkDown);
+        QCOMPARE(order.size(), 2);
+        QCOMPARE(last.failure, Failure::LinkDown);
+        QVERIFY(requests->isIdle());
+    }
+
+    void aClosedPortFailsTheTransactionAtOnce()
+    {
+        ScriptedTransport transport;
+        transport.open = false;
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        QVector<QString> order;
+        requests->submit(query(0x38, Transaction::Priority::Command, &order, &result));
+        QTRY_COMPARE(order.size(), 1);
+        QCOMPARE(result.failure, Failure::LinkDown);
+        QVERIFY(transport.written.isEmpty());
+    }
+
+    void thePermissionMessageExplainsTheDialoutGroup()
+    {
+        const QString message = seriallink::portErrorMessage(
+            QSerialPort::PermissionError, QStringLiteral("/dev/ttyUSB0"), QString());
+        QVERIFY(message.contains(QStringLiteral("/dev/ttyUSB0")));
+#ifdef Q_OS_LINUX
+        QVERIFY(message.contains(QStringLiteral("dialout")));
+#endif
+        QVERIFY(seriallink::isLostError(QSerialPort::ResourceError));
+        QVERIFY(!seriallink::isLostError(QSerialPort::PermissionError));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRequestEngine)
+#include "tst_requestengine.moc"
