@@ -90,7 +90,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_pollRate->setObjectName(QStringLiteral("pollRate"));
     m_counters = new QLabel(this);
     m_counters->setObjectName(QStringLiteral("linkCounters"));
-    statusBar()->addWidget(m_connectionState, 1);
+    // Permanent, so that a passing message never hides whether the servo is connected.
+    statusBar()->addPermanentWidget(m_connectionState);
     statusBar()->addPermanentWidget(m_pollRate);
     statusBar()->addPermanentWidget(m_counters);
     onCountersChanged({});
