@@ -5,7 +5,49 @@
 
 namespace cli {
 
-using Tr = ServoctlTr;
+namespace {
+
+// The servoctl translation context, as in every servoctl file (lupdate needs it spelled out).
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(servoctl)
+};
+
+} // namespace
+
+Arguments::Arguments(const QStringList &raw, const QSet<QString> &valueOptions,
+                     const QSet<QString> &flagOptions)
+{
+    for (int i = 0; i < raw.size(); ++i) {
+        const QString &token = raw.at(i);
+        if (!token.startsWith(QLatin1String("--")) || token == QLatin1String("--")) {
+            m_positional.append(token);
+            continue;
+        }
+        QString name = token.mid(2);
+        QString value;
+        bool hasValue = false;
+        if (const int eq = name.indexOf(u'='); eq >= 0) {
+            value = name.mid(eq + 1);
+            name = name.left(eq);
+            hasValue = true;
+        }
+        if (flagOptions.contains(name)) {
+            if (hasValue)
+                throw UsageError {Tr::tr("--%1 takes no value").arg(name)};
+            m_flags.insert(name);
+        } else if (valueOptions.contains(name)) {
+            if (!hasValue) {
+                if (i + 1 >= raw.size())
+                    throw UsageError {Tr::tr("--%1 needs a value").arg(name)};
+                value = raw.at(++i);
+            }
+            m_values.insert(name, value);
+        } else {
+            throw UsageError {Tr::tr("unknown option --%1").arg(name)};
+        }
+    }
+}
 
 qint64 integerOption(const Arguments &args, const QString &name, qint64 minimum, qint64 maximum)
 {

@@ -9,12 +9,6 @@
 
 namespace cli {
 
-// Translation context of every servoctl message.
-struct ServoctlTr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
 // A usage error: the message is printed as one line and servoctl exits 2.
 struct UsageError
 {
@@ -25,39 +19,9 @@ struct UsageError
 class Arguments
 {
 public:
+    // Throws UsageError for an unknown option or a missing value.
     Arguments(const QStringList &raw, const QSet<QString> &valueOptions,
-              const QSet<QString> &flagOptions)
-    {
-        for (int i = 0; i < raw.size(); ++i) {
-            const QString &token = raw.at(i);
-            if (!token.startsWith(QLatin1String("--")) || token == QLatin1String("--")) {
-                m_positional.append(token);
-                continue;
-            }
-            QString name = token.mid(2);
-            QString value;
-            bool hasValue = false;
-            if (const int eq = name.indexOf(u'='); eq >= 0) {
-                value = name.mid(eq + 1);
-                name = name.left(eq);
-                hasValue = true;
-            }
-            if (flagOptions.contains(name)) {
-                if (hasValue)
-                    throw UsageError {ServoctlTr::tr("--%1 takes no value").arg(name)};
-                m_flags.insert(name);
-            } else if (valueOptions.contains(name)) {
-                if (!hasValue) {
-                    if (i + 1 >= raw.size())
-                        throw UsageError {ServoctlTr::tr("--%1 needs a value").arg(name)};
-                    value = raw.at(++i);
-                }
-                m_values.insert(name, value);
-            } else {
-                throw UsageError {ServoctlTr::tr("unknown option --%1").arg(name)};
-            }
-        }
-    }
+              const QSet<QString> &flagOptions);
 
     const QStringList &positional() const { return m_positional; }
     bool flag(const QString &name) const { return m_flags.contains(name); }

@@ -22,7 +22,10 @@ namespace cli {
 
 namespace {
 
-using Tr = ServoctlTr;
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(servoctl)
+};
 
 const QString kFamily = QStringLiteral("ptk");
 // Long enough for a full sweep with every retry, or an Apply with its gaps and read-back.

@@ -23,7 +23,10 @@ namespace cli {
 namespace {
 
 // Translation context for the messages of this file.
-using Tr = ServoctlTr;
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(servoctl)
+};
 
 const char *const kUsage = QT_TRANSLATE_NOOP(
     "servoctl",
