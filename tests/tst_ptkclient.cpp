@@ -215,6 +215,54 @@ private slots:
         QTRY_VERIFY(client.counters().repliesOk > before);
     }
 
+    void disconnectingDuringAnApplyEndsItAndTheNextApplyWorks()
+    {
+        sim::SimulatorThread simulator;
+        QString error;
+        QVERIFY2(simulator.start(options(QStringLiteral("cut")), &error), qPrintable(error));
+        auto timing = testTiming();
+        timing.writeGap = std::chrono::milliseconds(40); // time to cut in between writes
+        ptk::Client client(timing);
+        client.connectTo(simulator.linkPath());
+        QTRY_VERIFY(modelMatches(client, servoValues(simulator)));
+        model::ParameterModel &model = *client.model();
+        QVERIFY(model.edit(QStringLiteral("gain"), 21));
+        QSignalSpy finished(&client, &ptk::Client::applyFinished);
+        QSignalSpy progress(&client, &ptk::Client::applyProgress);
+        QVERIFY(client.apply());
+        QTRY_VERIFY(progress.size() >= 2);
+        client.disconnectFrom();
+        QTRY_COMPARE(finished.size(), 1);
+        QCOMPARE(finished.first().at(0).toBool(), false);
+        QVERIFY(!client.isBusy());
+        QCOMPARE(model.state(QStringLiteral("gain")), model::State::Failed);
+        QCOMPARE(*model.pendingValue(QStringLiteral("gain")), 21); // kept for another try
+
+        client.connectTo(simulator.linkPath());
+        QTRY_COMPARE(client.status().state, ConnectionState::Connected);
+        QTRY_VERIFY(client.applyBlocker().isEmpty());
+        QVERIFY(client.apply());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 5000);
+        QVERIFY(finished.at(1).at(0).toBool());
+        QCOMPARE(model.state(QStringLiteral("gain")), model::State::Verified);
+    }
+
+    void withPollingOffTheServoIsStillFound()
+    {
+        sim::SimulatorThread simulator;
+        QString error;
+        QVERIFY2(simulator.start(options(QStringLiteral("quiet")), &error), qPrintable(error));
+        ptk::Client client(testTiming());
+        client.setPolling(false);
+        client.connectTo(simulator.linkPath());
+        QTRY_COMPARE(client.status().state, ConnectionState::Connected);
+        QSignalSpy read(&client, &ptk::Client::readFinished);
+        client.readAll();
+        QTRY_COMPARE(read.size(), 1);
+        QVERIFY(read.first().at(0).toBool());
+        QVERIFY(modelMatches(client, servoValues(simulator)));
+    }
+
     void anApplyIsRefusedUntilEverythingHasBeenRead()
     {
         ptk::Client client(testTiming());

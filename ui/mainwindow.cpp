@@ -249,7 +249,7 @@ void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
         m_problem->hide();
     else if (!status.message.isEmpty())
         showProblem(status.message);
-    if (status.state != ConnectionState::Connected && m_ptkPage->isBusy())
+    if (!m_ptk->isBusy() && m_ptkPage->isBusy())
         m_ptkPage->setBusy(false);
 }
 
@@ -344,6 +344,10 @@ void MainWindow::chooseProfileToLoad()
 
 void MainWindow::loadProfile(const QString &path)
 {
+    if (m_ptk->isBusy()) {
+        showProblem(tr("Wait for the running read or Apply to finish before loading a profile."));
+        return;
+    }
     QString error;
     const auto loaded = profile::load(path, kPtkFamily, m_ptk->model()->definitions(), &error);
     if (!loaded) {

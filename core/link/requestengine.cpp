@@ -141,6 +141,12 @@ void RequestEngine::send()
         m_counters.discardedBytes += stray.size();
         log(Direction::Stray, stray, Tr::tr("stray input discarded before a request"));
     }
+    if (!m_current || !m_transport.isOpen()) {
+        // Reading the port found it gone; whoever handles that ends the transaction.
+        if (m_current)
+            finish(Failure::LinkDown);
+        return;
+    }
     ++m_attempts;
     ++m_generation;
     m_state = State::Sending;

@@ -37,6 +37,13 @@ Client::Client(const SessionTiming &timing, QObject *parent)
         m_status = status;
         if (status.state != seriallink::ConnectionState::Connected)
             m_answerTimesMs.clear();
+        // The session reports a read or Apply the link cut short; this is only a backstop.
+        if (status.state == seriallink::ConnectionState::Disconnected
+            || status.state == seriallink::ConnectionState::Lost) {
+            m_reading = false;
+            if (m_applying)
+                onApplyFinished(false, status.message);
+        }
         emit statusChanged(status);
     });
     connect(m_session, &Session::countersChanged, this, [this](const auto &counters) {
@@ -88,6 +95,8 @@ void Client::setPollInterval(int milliseconds, bool fast)
 
 void Client::readAll()
 {
+    if (isBusy())
+        return; // the running read or Apply will bring fresh values anyway
     m_reading = true;
     Session *session = m_session;
     inWorker([session] { session->readAll(); });
@@ -164,6 +173,8 @@ void Client::onValuesRead(const ParameterSet &values, ReadSource source)
 
 void Client::onApplyFinished(bool ok, const QString &message)
 {
+    if (!m_applying)
+        return; // already ended (the status backstop came first)
     m_applying = false;
     // Whatever the read-back did not settle was written but not confirmed: keep the edit.
     for (const model::Definition &definition : m_model.definitions()) {

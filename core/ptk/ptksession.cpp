@@ -26,6 +26,20 @@ QString describe(const QByteArray &frame, const QByteArray &request)
     return frames.isEmpty() ? QString() : frames.last().summary;
 }
 
+// Replies carry no command byte, so a reply that cannot belong to this query is refused: a
+// word no parameter uses is zero, and on/off parameters are 0 or 1 (spec, read map).
+bool isPlausibleReply(const FrameLayout &query, const Reply &reply)
+{
+    for (const auto &[slot, word] :
+         {std::pair {query.word0, reply.word0}, std::pair {query.word1, reply.word1}}) {
+        if (!slot && word != 0)
+            return false;
+        if (slot && info(*slot).isSwitch && word > 1)
+            return false;
+    }
+    return true;
+}
+
 QString parameterNames(const FrameLayout &layout)
 {
     QStringList names;
@@ -54,7 +68,9 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     m_engine->setTiming(m_timing.engine);
     connect(m_engine, &seriallink::RequestEngine::packetLogged, this, &Session::packetLogged);
     connect(m_engine, &seriallink::RequestEngine::countersChanged, this, &Session::countersChanged);
-    connect(m_transport, &seriallink::Transport::failed, this, &Session::onPortFailed);
+    // Queued: a port error can be raised inside a call the engine is making to the port.
+    connect(m_transport, &seriallink::Transport::failed, this, &Session::onPortFailed,
+            Qt::QueuedConnection);
     m_pollTimer->setTimerType(Qt::PreciseTimer);
     connect(m_pollTimer, &QTimer::timeout, this, &Session::pollNext);
     connect(m_reopenTimer, &QTimer::timeout, this, &Session::tryReopen);
@@ -90,12 +106,21 @@ void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode ec
 void Session::close()
 {
     ++m_openGeneration;
+    const bool wasApplying = isApplying();
+    const bool wasReading = m_phase == Phase::Reading;
     m_pollTimer->stop();
     m_reopenTimer->stop();
     m_engine->cancelAll(seriallink::Failure::Cancelled);
     m_transport->close();
     m_phase = Phase::Idle;
     m_pollInFlight = false;
+    // Whoever waits for a read or an Apply hears that it ended, so nothing stays busy.
+    if (wasApplying)
+        emit applyFinished(false,
+                           Tr::tr("Disconnected during Apply; the servo may hold only "
+                                  "part of the new values."));
+    if (wasReading)
+        emit readFinished(false, Tr::tr("Disconnected during the read."));
     if (m_status.state != seriallink::ConnectionState::Disconnected)
         setStatus(seriallink::ConnectionState::Disconnected);
 }
@@ -105,8 +130,8 @@ void Session::setPolling(bool enabled)
     m_pollingEnabled = enabled;
     if (m_phase == Phase::Polling && !enabled) {
         m_pollTimer->stop();
+        m_phase = Phase::Idle; // before the cancelled polls' callbacks run
         m_engine->cancelPolls();
-        m_phase = Phase::Idle;
     } else if (m_phase == Phase::Idle && enabled && m_transport->isOpen()) {
         resumePolling();
     }
@@ -124,8 +149,12 @@ void Session::resumePolling()
 {
     m_phase = m_pollingEnabled ? Phase::Polling : Phase::Idle;
     m_pollTimer->stop();
-    if (m_phase != Phase::Polling)
+    if (m_phase != Phase::Polling) {
+        // Without polling, one query still tells whether a servo is there.
+        if (m_status.state == seriallink::ConnectionState::Connecting && m_transport->isOpen())
+            submitQuery(0, seriallink::Transaction::Priority::Command, [](bool) {});
         return;
+    }
     if (!m_timing.fastPolling)
         m_pollTimer->start(m_timing.pollInterval);
     pollNext();
@@ -160,8 +189,9 @@ void Session::submitQuery(int index, seriallink::Transaction::Priority priority,
     transaction.priority = priority;
     // A reply carries no command byte: any well-formed reply answers the one query in flight,
     // which is why the engine discards everything received before the query went out.
-    transaction.acceptsReply = [](const QByteArray &frame) {
-        return frame.size() == kReplySize;
+    transaction.acceptsReply = [&layout](const QByteArray &frame) {
+        const auto reply = decodeReply(frame);
+        return reply && isPlausibleReply(layout, *reply);
     };
     transaction.expectedReplySize = kReplySize;
     const quint64 generation = m_openGeneration;
