@@ -115,6 +115,15 @@ public:
         return true;
     }
 
+    // Opens the port without polling and reads all thirteen values; nothing (and error()) when
+    // the port or a query failed.
+    std::optional<ptk::ParameterSet> openAndRead()
+    {
+        if (!open(false))
+            return std::nullopt;
+        return readAll();
+    }
+
     // All thirteen values, or nothing (and error()) when a query went unanswered.
     std::optional<ptk::ParameterSet> readAll()
     {
@@ -260,9 +269,7 @@ private:
         if (!operands.isEmpty())
             throw UsageError {Tr::tr("ptk read takes no arguments")};
         PtkDevice device(m_args, m_output);
-        if (!device.open(false))
-            return fail(device.error());
-        const auto values = device.readAll();
+        const auto values = device.openAndRead();
         if (!values)
             return fail(device.error());
         printValues(*values);
@@ -270,9 +277,10 @@ private:
     }
 
     // Reads the servo, changes `changes`, writes the full sequence and compares the read-back.
-    int program(PtkDevice &device, const ptk::ParameterSet &changes)
+    int program(const ptk::ParameterSet &changes)
     {
-        auto values = device.readAll();
+        PtkDevice device(m_args, m_output);
+        auto values = device.openAndRead();
         if (!values)
             return fail(device.error());
         merge(*values, changes);
@@ -316,10 +324,7 @@ private:
             throw UsageError {
                 Tr::tr("ptk write needs NAME=VALUE arguments (names: %1)").arg(knownKeys())};
         const ptk::ParameterSet changes = parsePtkAssignments(operands);
-        PtkDevice device(m_args, m_output);
-        if (!device.open(false))
-            return fail(device.error());
-        return program(device, changes);
+        return program(changes);
     }
 
     int save(const QStringList &operands)
@@ -332,9 +337,7 @@ private:
             throw UsageError {
                 Tr::tr("the folder of %1 does not exist").arg(QDir::toNativeSeparators(path))};
         PtkDevice device(m_args, m_output);
-        if (!device.open(false))
-            return fail(device.error());
-        const auto values = device.readAll();
+        const auto values = device.openAndRead();
         if (!values)
             return fail(device.error());
         profile::Profile saved;
@@ -365,10 +368,7 @@ private:
         ptk::ParameterSet changes;
         for (const profile::ProfileValue &value : loaded->values)
             changes.set(ptk::findParameter(value.key)->parameter, quint16(value.raw));
-        PtkDevice device(m_args, m_output);
-        if (!device.open(false))
-            return fail(device.error());
-        return program(device, changes);
+        return program(changes);
     }
 
     int monitor(const QStringList &operands)
@@ -464,37 +464,11 @@ int runPtkCommand(const Arguments &args, const QStringList &rest, const Output &
 
 ptk::ParameterSet parsePtkAssignments(const QStringList &assignments)
 {
-    ptk::ParameterSet values;
-    for (const QString &assignment : assignments) {
-        const int eq = assignment.indexOf(u'=');
-        if (eq <= 0)
-            throw UsageError {Tr::tr("\"%1\" is not NAME=VALUE").arg(assignment)};
-        const QString key = assignment.left(eq);
-        const QString text = assignment.mid(eq + 1);
-        const ptk::ParameterInfo *meta = ptk::findParameter(key);
-        if (!meta)
-            throw UsageError {Tr::tr("unknown parameter \"%1\" (known: %2)").arg(key, knownKeys())};
-        double number = 0;
-        bool ok = false;
-        if (meta->isSwitch && (text == QLatin1String("on") || text == QLatin1String("true"))) {
-            number = 1;
-            ok = true;
-        } else if (meta->isSwitch
-                   && (text == QLatin1String("off") || text == QLatin1String("false"))) {
-            number = 0;
-            ok = true;
-        } else {
-            number = text.toDouble(&ok);
-        }
-        if (!ok)
-            throw UsageError {Tr::tr("%1: \"%2\" is not a number").arg(key, text)};
-        QString error;
-        const auto wire = ptk::fromUserValue(meta->parameter, number, &error);
-        if (!wire)
-            throw UsageError {error};
-        values.set(meta->parameter, *wire);
-    }
-    return values;
+    QString error;
+    const auto values = ptk::parseAssignments(assignments, &error);
+    if (!values)
+        throw UsageError {error};
+    return *values;
 }
 
 } // namespace cli

@@ -123,6 +123,51 @@ QVector<model::Definition> modelDefinitions()
     return definitions;
 }
 
+std::optional<ParameterSet> parseAssignments(const QStringList &assignments, QString *error)
+{
+    const auto fail = [&](const QString &message) {
+        if (error)
+            *error = message;
+        return std::nullopt;
+    };
+    ParameterSet values;
+    for (const QString &assignment : assignments) {
+        const int eq = assignment.indexOf(u'=');
+        if (eq <= 0)
+            return fail(
+                QCoreApplication::translate("ptk", "\"%1\" is not NAME=VALUE").arg(assignment));
+        const QString key = assignment.left(eq).trimmed();
+        const QString text = assignment.mid(eq + 1).trimmed();
+        const ParameterInfo *meta = findParameter(key);
+        if (!meta) {
+            QStringList known;
+            for (const ParameterInfo &candidate : parameterInfos())
+                known.append(QLatin1String(candidate.key));
+            return fail(QCoreApplication::translate("ptk", "unknown parameter \"%1\" (known: %2)")
+                            .arg(key, known.join(QStringLiteral(", "))));
+        }
+        double number = 0;
+        bool ok = false;
+        if (meta->isSwitch && (text == QLatin1String("on") || text == QLatin1String("true"))) {
+            number = 1;
+            ok = true;
+        } else if (meta->isSwitch
+                   && (text == QLatin1String("off") || text == QLatin1String("false"))) {
+            ok = true;
+        } else {
+            number = text.toDouble(&ok);
+        }
+        if (!ok)
+            return fail(
+                QCoreApplication::translate("ptk", "%1: \"%2\" is not a number").arg(key, text));
+        const auto wire = fromUserValue(meta->parameter, number, error);
+        if (!wire)
+            return std::nullopt;
+        values.set(meta->parameter, *wire);
+    }
+    return values;
+}
+
 QString translatedGroup(Group group)
 {
     switch (group) {

@@ -5,6 +5,7 @@
 #include "ptk/ptkframe.h"
 
 #include <QString>
+#include <QStringList>
 #include <QStringView>
 #include <QVector>
 
@@ -95,6 +96,11 @@ private:
 double toUserValue(Parameter parameter, quint16 wireValue);
 std::optional<quint16> fromUserValue(Parameter parameter, double userValue,
                                      QString *error = nullptr);
+
+// "NAME=VALUE" assignments in user units ("on"/"off"/"true"/"false" for switches) into wire
+// values, all or nothing: *error names the first bad name or value.
+std::optional<ParameterSet> parseAssignments(const QStringList &assignments,
+                                             QString *error = nullptr);
 
 // Stores the parameters a reply to `query` carries; returns which ones it set.
 QVector<Parameter> applyReply(const FrameLayout &query, const Reply &reply, ParameterSet &values);

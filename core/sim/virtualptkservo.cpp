@@ -1,7 +1,6 @@
 // Simulated PTK servo (spec/ptk-protocol.md): replies to queries, never to writes.
 #include "sim/virtualptkservo.h"
 
-#include <QCoreApplication>
 #include <QStringList>
 
 namespace sim {
@@ -35,27 +34,17 @@ QVector<Response> VirtualPtkServo::handleFrame(const QByteArray &frame, qint32 h
 
 bool VirtualPtkServo::setValues(const QString &assignments, QString *error)
 {
-    ptk::ParameterSet updated = m_values;
-    for (const QString &assignment : assignments.split(u',', Qt::SkipEmptyParts)) {
-        const int eq = assignment.indexOf(u'=');
-        const QString key = assignment.left(eq).trimmed();
-        const ptk::ParameterInfo *meta = eq > 0 ? ptk::findParameter(key) : nullptr;
-        bool ok = false;
-        const double value = assignment.mid(eq + 1).toDouble(&ok);
-        if (!meta || !ok) {
-            if (error)
-                *error = QCoreApplication::translate("VirtualPtkServo",
-                                                     "--values: \"%1\" is not KEY=NUMBER with a "
-                                                     "PTK parameter key")
-                             .arg(assignment);
-            return false;
-        }
-        const auto wire = ptk::fromUserValue(meta->parameter, value, error);
-        if (!wire)
-            return false;
-        updated.set(meta->parameter, *wire);
+    QString why;
+    const auto values = ptk::parseAssignments(assignments.split(u',', Qt::SkipEmptyParts), &why);
+    if (!values) {
+        if (error)
+            *error = QStringLiteral("--values: ") + why;
+        return false;
     }
-    m_values = updated;
+    for (const ptk::ParameterInfo &meta : ptk::parameterInfos()) {
+        if (const auto wire = values->value(meta.parameter))
+            m_values.set(meta.parameter, *wire);
+    }
     return true;
 }
 
