@@ -453,4 +453,52 @@ quint16 modelNumber(quint8 major, quint8 minor, ByteOrder order)
     return decodeRaw(bytes, order);
 }
 
+const RegisterTable &RegisterTable::rawView()
+{
+    static const RegisterTable table = [] {
+        RegisterTable raw;
+        raw.m_raw = true;
+        raw.m_title = Tr::tr("Raw bytes (unknown model)");
+        for (int address = 0; address < kRawViewSize; ++address) {
+            Register reg;
+            reg.address = address;
+            reg.key = QStringLiteral("byte_%1").arg(address, 3, 10, QLatin1Char('0'));
+            reg.label = Tr::tr("Byte %1").arg(address);
+            reg.storage = address < 40 ? Storage::Eeprom : Storage::Ram;
+            reg.maximum = 255;
+            raw.m_registers.append(reg);
+        }
+        return raw;
+    }();
+    return table;
+}
+
+namespace {
+constexpr qint32 kBaudRates[] = {1000000, 500000, 250000, 128000, 115200, 76800, 57600, 38400};
+} // namespace
+
+QVector<qint32> baudRates()
+{
+    return QVector<qint32>(std::begin(kBaudRates), std::end(kBaudRates));
+}
+
+std::optional<int> baudCode(qint32 baud)
+{
+    for (int code = 0; code < int(std::size(kBaudRates)); ++code) {
+        if (kBaudRates[code] == baud)
+            return code;
+    }
+    return std::nullopt;
+}
+
+qint32 baudForCode(int code)
+{
+    return code >= 0 && code < int(std::size(kBaudRates)) ? kBaudRates[code] : 0;
+}
+
+qint32 defaultBaud(Family family)
+{
+    return family == Family::Sms ? 115200 : 1000000;
+}
+
 } // namespace feetech

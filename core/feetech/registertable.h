@@ -71,8 +71,13 @@ public:
                                                  QString *error);
     // The table compiled into the application for a family (loaded once).
     static const RegisterTable &forFamily(Family family);
+    // A servo whose model no table describes: `size` read-only bytes from address 0, shown as
+    // they are, never interpreted.
+    static const RegisterTable &rawView();
+    static constexpr int kRawViewSize = 87; // addresses 0-86: what every known table spans
 
     Family family() const { return m_family; }
+    bool isRaw() const { return m_raw; }
     const QString &title() const { return m_title; }
     ByteOrder byteOrder() const { return m_byteOrder; }
     const QVector<Register> &registers() const { return m_registers; }
@@ -87,6 +92,7 @@ private:
     QString m_title;
     ByteOrder m_byteOrder = ByteOrder::Little;
     QVector<Register> m_registers; // ascending addresses, no overlaps
+    bool m_raw = false;
 };
 
 struct ModelInfo
@@ -115,6 +121,12 @@ private:
     QVector<ModelInfo> m_models;
     QVector<std::pair<int, Family>> m_familiesByMajor;
 };
+
+// Baud-rate codes 0-7 of address 6 (spec §6), fastest first.
+QVector<qint32> baudRates();
+std::optional<int> baudCode(qint32 baud);
+qint32 baudForCode(int code); // 0 for a code outside 0-7
+qint32 defaultBaud(Family family); // SMS 115200, the others 1000000
 
 // The model number as the servo's own byte order reads addresses 3-4 (STS3215 = 777).
 quint16 modelNumber(quint8 major, quint8 minor, ByteOrder order);

@@ -7,6 +7,8 @@
 #include <QDateTime>
 #include <QLoggingCategory>
 
+#include <algorithm>
+
 namespace seriallink {
 
 Q_LOGGING_CATEGORY(lcRaw, "servobench.link.raw", QtWarningMsg)
@@ -151,6 +153,9 @@ void RequestEngine::send()
     ++m_generation;
     m_state = State::Sending;
     m_writtenBytes = 0;
+    m_bytesHeard = 0;
+    m_rawSinceSend = 0;
+    m_firstHeardUs = -1;
     m_echoConsumed = false;
     m_sawFrame = false;
     ++m_counters.framesSent;
@@ -178,12 +183,13 @@ void RequestEngine::onBytesWritten(qint64 count)
     const int requestSize = int(m_current->request.size());
     const int echoSize = echoExpected() ? requestSize : 0;
     const quint64 generation = m_generation;
+    m_writtenAtUs = m_clock.nsecsElapsed() / 1000;
+    m_replyWireTime = wireTime(echoSize);
     std::chrono::microseconds wait;
     if (!m_current->acceptsReply)
         wait = wireTime(requestSize + echoSize) + m_timing.writeSettle;
     else
-        wait =
-            wireTime(requestSize + echoSize + m_current->expectedReplySize) + m_timing.replyTimeout;
+        wait = wireTime(requestSize + echoSize + m_current->expectedReplySize) + replyTimeout();
     const int waitMs = int((wait.count() + 999) / 1000);
     QTimer::singleShot(waitMs, Qt::PreciseTimer, this,
                        [this, generation] { onTimeout(generation); });
@@ -201,6 +207,12 @@ void RequestEngine::onReceived(const QByteArray &bytes)
         publishCounters();
         return;
     }
+    // The first byte beyond what an echo would account for starts the answer: that is when the
+    // line answered, even if the bytes never make a frame (two servos at once).
+    m_rawSinceSend += int(bytes.size());
+    const int echoBudget = echoExpected() ? int(m_current->request.size()) : 0;
+    if (m_rawSinceSend > echoBudget && m_firstHeardUs < 0)
+        m_firstHeardUs = m_clock.nsecsElapsed() / 1000;
     m_framer.append(bytes);
     while (auto item = m_framer.next()) {
         switch (item->kind) {
@@ -217,6 +229,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown && !m_sawFrame)
                 m_echoSeen = Decision::No;
             m_sawFrame = true;
+            heard(int(item->bytes.size()));
             if (m_current->acceptsReply && m_current->acceptsReply(item->bytes)) {
                 ++m_counters.repliesOk;
                 log(Direction::In, item->bytes);
@@ -228,11 +241,13 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             break;
         }
         case StreamItem::Kind::BadChecksum:
+            heard(int(item->bytes.size()));
             ++m_counters.checksumErrors;
             log(Direction::In, item->bytes, Tr::tr("bad checksum"));
             break;
         case StreamItem::Kind::Garbage:
         case StreamItem::Kind::Incomplete:
+            heard(int(item->bytes.size()));
             m_counters.discardedBytes += item->bytes.size();
             log(Direction::Stray, item->bytes, Tr::tr("bytes that form no frame"));
             break;
@@ -250,10 +265,12 @@ void RequestEngine::onTimeout(quint64 generation)
         return;
     }
     ++m_counters.timeouts;
-    m_quietUntilMs = m_clock.elapsed() + m_timing.replyTimeout.count();
+    if (m_timing.settleAfterTimeout)
+        m_quietUntilMs = m_clock.elapsed()
+            + std::chrono::duration_cast<std::chrono::milliseconds>(replyTimeout()).count();
     log(Direction::In, {},
-        Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(m_timing.retryCount + 1));
-    if (m_attempts <= m_timing.retryCount && m_transport.isOpen()) {
+        Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(retryCount() + 1));
+    if (m_attempts <= retryCount() && m_transport.isOpen()) {
         ++m_counters.retries;
         send();
         return;
@@ -265,11 +282,18 @@ void RequestEngine::onTimeout(quint64 generation)
 void RequestEngine::finish(Failure failure, const QByteArray &reply)
 {
     std::unique_ptr<Transaction> done = std::move(m_current);
+    TransactionResult result {failure, reply, m_attempts};
+    // Bytes that form no frame yet (two servos answering at once) were heard all the same.
+    result.bytesHeard = m_bytesHeard + int(m_framer.pendingBytes());
+    if (m_firstHeardUs >= 0)
+        result.latency =
+            std::max(std::chrono::microseconds(0),
+                     std::chrono::microseconds(m_firstHeardUs - m_writtenAtUs) - m_replyWireTime);
     m_state = State::Idle;
     ++m_generation;
     publishCounters();
     if (done && done->done)
-        done->done({failure, reply, m_attempts});
+        done->done(result);
     scheduleNext();
 }
 
@@ -283,6 +307,13 @@ void RequestEngine::log(Direction direction, const QByteArray &bytes, const QStr
     if (!bytes.isEmpty() && m_describer && direction != Direction::Stray)
         entry.summary = m_describer(bytes, m_current ? m_current->request : QByteArray());
     emit packetLogged(entry);
+}
+
+void RequestEngine::heard(int bytes)
+{
+    if (m_firstHeardUs < 0)
+        m_firstHeardUs = m_clock.nsecsElapsed() / 1000;
+    m_bytesHeard += bytes;
 }
 
 void RequestEngine::publishCounters()
@@ -303,6 +334,20 @@ bool RequestEngine::echoExpected() const
         return m_echoSeen != Decision::No;
     }
     return false;
+}
+
+std::chrono::microseconds RequestEngine::replyTimeout() const
+{
+    if (m_current && m_current->replyTimeout)
+        return *m_current->replyTimeout;
+    return m_timing.replyTimeout;
+}
+
+int RequestEngine::retryCount() const
+{
+    if (m_current && m_current->retryCount)
+        return *m_current->retryCount;
+    return m_timing.retryCount;
 }
 
 std::chrono::microseconds RequestEngine::wireTime(int bytes) const

@@ -13,6 +13,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace seriallink {
 
@@ -28,6 +29,10 @@ struct EngineTiming
     int retryCount = 2;
     // Extra time a request that expects no reply is given to leave the adapter.
     std::chrono::milliseconds writeSettle {1};
+    // After a timeout, hold the next request back for one reply timeout so a late reply lands
+    // while nothing waits. PTK needs this (its replies name no query); Feetech replies carry
+    // the servo's ID, so a late one is recognised and discarded without the wait.
+    bool settleAfterTimeout = true;
 };
 
 enum class Failure { None, Timeout, LinkDown, Cancelled };
@@ -37,6 +42,12 @@ struct TransactionResult
     Failure failure = Failure::None;
     QByteArray reply;
     int attempts = 0;
+    // From the moment the request had left the program to the accepted reply, minus the wire
+    // time of the echo and reply: what the adapter, the servo and the OS added.
+    // Measured on the first byte that was not an echo, so a garbled answer (two servos at
+    // once) still tells how quickly the line answers.
+    std::chrono::microseconds latency {0};
+    int bytesHeard = 0; // bytes other than the echo that arrived for this request
     bool ok() const { return failure == Failure::None; }
 };
 
@@ -49,6 +60,9 @@ struct Transaction
     // Whether a received frame is this request's answer; no function: nothing is expected back.
     std::function<bool(const QByteArray &frame)> acceptsReply;
     int expectedReplySize = 0; // for the wire-time part of the timeout
+    // Overrides of the engine's timing for this transaction (a scan waits less than a write).
+    std::optional<std::chrono::microseconds> replyTimeout;
+    std::optional<int> retryCount;
     std::function<void(const TransactionResult &)> done;
 };
 
@@ -104,8 +118,11 @@ private:
     void finish(Failure failure, const QByteArray &reply = {});
     void log(Direction direction, const QByteArray &bytes, const QString &error = {});
     void publishCounters();
+    void heard(int bytes);
     bool echoExpected() const;
     std::chrono::microseconds wireTime(int bytes) const;
+    std::chrono::microseconds replyTimeout() const;
+    int retryCount() const;
 
     Transport &m_transport;
     StreamFramer m_framer;
@@ -121,6 +138,11 @@ private:
     State m_state = State::Idle;
     int m_attempts = 0;
     qint64 m_writtenBytes = 0;
+    qint64 m_writtenAtUs = 0; // when the whole request had left
+    qint64 m_firstHeardUs = -1; // when the first byte other than the echo came
+    int m_bytesHeard = 0;
+    int m_rawSinceSend = 0; // bytes of any kind since the request went out
+    std::chrono::microseconds m_replyWireTime {0};
     bool m_echoConsumed = false;
     bool m_sawFrame = false;
     QElapsedTimer m_clock;

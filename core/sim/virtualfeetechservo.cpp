@@ -16,7 +16,6 @@ using feetech::Storage;
 
 namespace {
 
-constexpr qint32 kBaudRates[] = {1000000, 500000, 250000, 128000, 115200, 76800, 57600, 38400};
 constexpr int kPositionSteps4096 = 4096;
 constexpr int kScsMaxPosition = 1023;
 constexpr qint32 kMiddlePosition = 2048;
@@ -107,21 +106,17 @@ int VirtualFeetechServo::firmwareMinor(Family family)
 
 std::optional<int> VirtualFeetechServo::baudCode(qint32 baud)
 {
-    for (int code = 0; code < int(std::size(kBaudRates)); ++code) {
-        if (kBaudRates[code] == baud)
-            return code;
-    }
-    return std::nullopt;
+    return feetech::baudCode(baud);
 }
 
 qint32 VirtualFeetechServo::baudForCode(int code)
 {
-    return code >= 0 && code < int(std::size(kBaudRates)) ? kBaudRates[code] : 0;
+    return feetech::baudForCode(code);
 }
 
 qint32 VirtualFeetechServo::defaultBaud(Family family)
 {
-    return family == Family::Sms ? 115200 : 1000000;
+    return feetech::defaultBaud(family);
 }
 
 VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8 id, qint32 baud)

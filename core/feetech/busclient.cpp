@@ -1,0 +1,375 @@
+// Feetech bus client: queued calls into the worker's session; servo list and model updates.
+#include "feetech/busclient.h"
+
+#include "feetech/servoparameters.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace feetech {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
+};
+
+} // namespace
+
+BusClient::BusClient(const SessionTiming &timing, QObject *parent)
+    : QObject(parent)
+    , m_worker(QStringLiteral("feetech-link"), timing)
+{
+    m_clock.start();
+    Session *session = m_worker.session();
+    connect(session, &Session::statusChanged, this, [this](const auto &status) {
+        m_status = status;
+        emit statusChanged(status);
+    });
+    connect(session, &Session::countersChanged, this, [this](const auto &counters) {
+        m_counters = counters;
+        emit countersChanged(counters);
+    });
+    connect(session, &Session::packetLogged, this, &BusClient::packetLogged);
+    connect(session, &Session::scanProgress, this, &BusClient::scanProgress);
+    connect(session, &Session::servoFound, this, &BusClient::onServoFound);
+    connect(session, &Session::scanFinished, this, [this](bool completed, const QString &m) {
+        m_scanning = false;
+        emit busyChanged(isBusy());
+        emit scanFinished(completed, m);
+    });
+    connect(session, &Session::memoryRead, this, &BusClient::onMemoryRead);
+    connect(session, &Session::progress, this, &BusClient::progress);
+    connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
+}
+
+BusClient::~BusClient() = default;
+
+bool BusClient::isBusy() const
+{
+    return m_scanning || std::any_of(m_pending.begin(), m_pending.end(), [](const Pending &p) {
+               return !p.background;
+           });
+}
+
+void BusClient::connectTo(const QString &portName, qint32 baud, seriallink::EchoMode echo)
+{
+    clearServos();
+    m_worker.run([portName, baud, echo](Session &s) { s.open(portName, baud, echo); });
+}
+
+void BusClient::disconnectFrom()
+{
+    m_worker.run([](Session &s) { s.close(); });
+}
+
+void BusClient::scan(const ScanOptions &options)
+{
+    if (m_scanning)
+        return;
+    clearServos();
+    m_scanning = true;
+    emit busyChanged(true);
+    m_worker.run([options](Session &s) { s.scan(options); });
+}
+
+void BusClient::cancelScan()
+{
+    // Not queued behind the scan: the flag must be seen while it runs.
+    Session *session = m_worker.session();
+    QMetaObject::invokeMethod(
+        session, [session] { session->cancelScan(); }, Qt::QueuedConnection);
+}
+
+model::ParameterModel *BusClient::parameters(int index) const
+{
+    if (index < 0 || index >= servoCount())
+        return nullptr;
+    return m_servos.at(std::size_t(index))->parameters.get();
+}
+
+int BusClient::indexOf(quint8 id, qint32 baud) const
+{
+    for (int i = 0; i < servoCount(); ++i) {
+        if (servo(i).info.id == id && servo(i).info.baud == baud)
+            return i;
+    }
+    return -1;
+}
+
+QVector<int> BusClient::idsInUse() const
+{
+    QVector<int> ids;
+    for (const auto &entry : m_servos)
+        ids.append(entry->info.id);
+    return ids;
+}
+
+QString BusClient::writeBlocker(int index) const
+{
+    if (!isConnected())
+        return Tr::tr("The bus is not connected.");
+    if (index < 0 || index >= servoCount())
+        return Tr::tr("No servo is selected.");
+    if (isBusy())
+        return Tr::tr("Another operation is still running.");
+    if (!servo(index).info.hasTable())
+        return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+    return {};
+}
+
+void BusClient::onServoFound(const ServoInfo &info)
+{
+    auto entry = std::make_unique<Servo>();
+    entry->info = info;
+    entry->parameters = std::make_unique<model::ParameterModel>();
+    entry->parameters->setDefinitions(modelDefinitions(info.table()));
+    m_servos.push_back(std::move(entry));
+    // Fastest rate first, then by ID: the order the tree shows.
+    std::stable_sort(m_servos.begin(), m_servos.end(), [](const auto &a, const auto &b) {
+        return a->info.baud != b->info.baud ? a->info.baud > b->info.baud : a->info.id < b->info.id;
+    });
+    emit servosChanged();
+}
+
+void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
+                             ReadSource, quint8 statusByte)
+{
+    const int index = indexOf(id, baud);
+    if (index < 0)
+        return;
+    Servo &entry = *m_servos.at(std::size_t(index));
+    entry.statusByte = statusByte;
+    if (address >= 0) {
+        const qint64 now = m_clock.elapsed() + 1; // 0 means "never read"
+        for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes))
+            entry.parameters->setDeviceValue(item.reg->key, item.value, now);
+    }
+    emit servoUpdated(index);
+}
+
+void BusClient::onOperationFinished(const OperationResult &result)
+{
+    if (result.operation == Operation::Scan)
+        return; // a scan ends through scanFinished
+    Pending target;
+    if (!m_pending.empty()) {
+        target = m_pending.front();
+        m_pending.pop_front();
+    }
+    const int index = indexOf(target.id, target.baud);
+    if (index >= 0) {
+        Servo &entry = *m_servos.at(std::size_t(index));
+        model::ParameterModel &parameters = *entry.parameters;
+        if (result.operation == Operation::Read && result.ok && !target.background)
+            entry.read = true;
+        if (result.operation == Operation::Write && !result.ok) {
+            // What was on its way and never came back verified keeps its edit, as Failed.
+            for (const model::Definition &definition : parameters.definitions()) {
+                if (parameters.state(definition.key) == model::State::Writing)
+                    parameters.markFailed(definition.key);
+            }
+        }
+        const bool moved = result.servo.id != entry.info.id || result.servo.baud != entry.info.baud;
+        if (result.ok && moved
+            && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
+                || result.operation == Operation::FactoryReset)) {
+            entry.info = result.servo;
+            emit servosChanged();
+        }
+        if (result.ok
+            && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
+                || result.operation == Operation::FactoryReset
+                || result.operation == Operation::CalibrateMiddle)) {
+            // What the flow changed on the servo shows everywhere at once.
+            parameters.revertAll();
+            readServo(indexOf(entry.info.id, entry.info.baud));
+        }
+    }
+    if (!target.background)
+        emit busyChanged(isBusy());
+    if (!target.background || !result.ok)
+        emit operationFinished(result);
+}
+
+bool BusClient::startOperation(int index, QString *error, bool background,
+                               const std::function<void(Session &, const ServoInfo &)> &work)
+{
+    if (index < 0 || index >= servoCount()) {
+        if (error)
+            *error = Tr::tr("No servo is selected.");
+        return false;
+    }
+    if (!isConnected()) {
+        if (error)
+            *error = Tr::tr("The bus is not connected.");
+        return false;
+    }
+    const ServoInfo info = servo(index).info;
+    const bool wasBusy = isBusy();
+    m_pending.push_back({info.id, info.baud, background});
+    if (!background && !wasBusy)
+        emit busyChanged(true);
+    m_worker.run([work, info](Session &s) { work(s, info); });
+    return true;
+}
+
+void BusClient::readServo(int index)
+{
+    startOperation(index, nullptr, false,
+                   [](Session &s, const ServoInfo &info) { s.read(info, {}, ReadSource::Read); });
+}
+
+void BusClient::refreshRam(int index)
+{
+    if (isBusy() || !m_pending.empty() || index < 0 || index >= servoCount())
+        return; // the next refresh will come; real work goes first
+    const ServoInfo &info = servo(index).info;
+    if (!info.hasTable())
+        return;
+    QVector<Block> ram;
+    for (const Block &block : info.table().blocks()) {
+        const Register *first = info.table().at(block.address);
+        if (first && first->storage == Storage::Ram)
+            ram.append(block);
+    }
+    startOperation(index, nullptr, true, [ram](Session &s, const ServoInfo &target) {
+        s.read(target, ram, ReadSource::Refresh);
+    });
+}
+
+bool BusClient::apply(int index, QString *error)
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return false;
+    }
+    model::ParameterModel &parameters = *this->parameters(index);
+    const RegisterTable &table = servo(index).info.table();
+    // The ID and baud rate have their own flows; they stay pending here.
+    QVector<model::WriteItem> plan;
+    for (const model::Definition &definition : parameters.definitions()) {
+        const auto pending = parameters.pendingValue(definition.key);
+        if (pending && definition.key != u"id" && definition.key != u"baud_rate")
+            plan.append({definition.key, *pending});
+    }
+    if (plan.isEmpty()) {
+        if (error)
+            *error = Tr::tr("Nothing to write.");
+        return false;
+    }
+    const auto writes = encodeWrites(table, plan, error);
+    if (!writes)
+        return false;
+    // Marks exactly the planned keys Writing: the ID and baud edits are put back as edits.
+    const auto idEdit = parameters.pendingValue(QStringLiteral("id"));
+    const auto baudEdit = parameters.pendingValue(QStringLiteral("baud_rate"));
+    parameters.revert(QStringLiteral("id"));
+    parameters.revert(QStringLiteral("baud_rate"));
+    parameters.takeWritePlan();
+    if (idEdit)
+        parameters.edit(QStringLiteral("id"), *idEdit);
+    if (baudEdit)
+        parameters.edit(QStringLiteral("baud_rate"), *baudEdit);
+    const QVector<RegisterWrite> items = *writes;
+    return startOperation(index, error, false,
+                          [items](Session &s, const ServoInfo &info) { s.write(info, items); });
+}
+
+bool BusClient::changeId(int index, int newId, QString *error)
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return false;
+    }
+    const QVector<int> inUse = idsInUse();
+    if (inUse.contains(newId) && newId != servo(index).info.id) {
+        if (error)
+            *error = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
+        return false;
+    }
+    return startOperation(index, error, false, [newId, inUse](Session &s, const ServoInfo &info) {
+        s.changeId(info, newId, inUse);
+    });
+}
+
+bool BusClient::changeBaud(int index, qint32 newBaud, QString *error)
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return false;
+    }
+    return startOperation(index, error, false, [newBaud](Session &s, const ServoInfo &info) {
+        s.changeBaud(info, newBaud);
+    });
+}
+
+bool BusClient::calibrateMiddle(int index, QString *error)
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return false;
+    }
+    if (middleCalibration(servo(index).info) == MiddleCalibration::Unsupported) {
+        if (error)
+            *error = Tr::tr("This servo has no middle calibration (SCS servos have no offset "
+                            "register).");
+        return false;
+    }
+    return startOperation(index, error, false,
+                          [](Session &s, const ServoInfo &info) { s.calibrateMiddle(info); });
+}
+
+bool BusClient::factoryReset(int index, QString *error)
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return false;
+    }
+    return startOperation(index, error, false,
+                          [](Session &s, const ServoInfo &info) { s.factoryReset(info); });
+}
+
+bool BusClient::reboot(int index, QString *error)
+{
+    if (isBusy()) {
+        if (error)
+            *error = Tr::tr("Another operation is still running.");
+        return false;
+    }
+    return startOperation(index, error, false,
+                          [](Session &s, const ServoInfo &info) { s.reboot(info); });
+}
+
+bool BusClient::clearStatus(int index, QString *error)
+{
+    if (isBusy()) {
+        if (error)
+            *error = Tr::tr("Another operation is still running.");
+        return false;
+    }
+    return startOperation(index, error, false,
+                          [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
+}
+
+void BusClient::clearServos()
+{
+    if (m_servos.empty())
+        return;
+    m_servos.clear();
+    emit servosChanged();
+}
+
+} // namespace feetech

@@ -1,0 +1,110 @@
+// The GUI thread's handle on a Feetech bus: the session in its worker thread, the servos found,
+// and one parameter model per servo kept in step with what the servo reports.
+#pragma once
+
+#include "feetech/feetechsession.h"
+#include "link/linktypes.h"
+#include "link/sessionthread.h"
+#include "model/parametermodel.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace feetech {
+
+struct Servo
+{
+    ServoInfo info;
+    std::unique_ptr<model::ParameterModel> parameters;
+    std::optional<quint8> statusByte; // of its last reply
+    bool read = false; // its table has been read at least once
+};
+
+class BusClient : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit BusClient(const SessionTiming &timing = {}, QObject *parent = nullptr);
+    ~BusClient() override;
+
+    const seriallink::ConnectionStatus &status() const { return m_status; }
+    const seriallink::LinkCounters &counters() const { return m_counters; }
+    bool isConnected() const { return m_status.state == seriallink::ConnectionState::Connected; }
+    bool isScanning() const { return m_scanning; }
+    bool isBusy() const;
+
+    void connectTo(const QString &portName, qint32 baud = 1000000,
+                   seriallink::EchoMode echo = seriallink::EchoMode::Auto);
+    void disconnectFrom();
+
+    // Forgets the servos found before, then looks for servos as `options` say.
+    void scan(const ScanOptions &options);
+    void cancelScan();
+
+    int servoCount() const { return int(m_servos.size()); }
+    const Servo &servo(int index) const { return *m_servos.at(std::size_t(index)); }
+    model::ParameterModel *parameters(int index) const;
+    int indexOf(quint8 id, qint32 baud) const; // -1 when not known
+    QVector<int> idsInUse() const; // at every baud rate scanned
+
+    // Why changes cannot be made to servo `index` now (empty when they can).
+    QString writeBlocker(int index) const;
+
+    void readServo(int index);
+    // Present values and other RAM registers, in the background; skipped while busy.
+    void refreshRam(int index);
+    // Writes the servo's edits (except ID and baud rate: see changeId / changeBaud) and reads
+    // them back. False and *error when nothing was sent.
+    bool apply(int index, QString *error = nullptr);
+    bool changeId(int index, int newId, QString *error = nullptr);
+    bool changeBaud(int index, qint32 newBaud, QString *error = nullptr);
+    bool calibrateMiddle(int index, QString *error = nullptr);
+    bool factoryReset(int index, QString *error = nullptr);
+    bool reboot(int index, QString *error = nullptr);
+    bool clearStatus(int index, QString *error = nullptr);
+
+signals:
+    void statusChanged(const seriallink::ConnectionStatus &status);
+    void countersChanged(const seriallink::LinkCounters &counters);
+    void packetLogged(const seriallink::PacketLogEntry &entry);
+    void scanProgress(int done, int total, qint32 baud);
+    void scanFinished(bool completed, const QString &message);
+    void servosChanged(); // the list itself: added, removed, or moved to another ID or baud
+    void servoUpdated(int index); // new values or status for this servo
+    void progress(int done, int total);
+    void operationFinished(const feetech::OperationResult &result);
+    void busyChanged(bool busy);
+
+private:
+    void onServoFound(const ServoInfo &info);
+    void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
+                      ReadSource source, quint8 statusByte);
+    void onOperationFinished(const OperationResult &result);
+    bool startOperation(int index, QString *error, bool background,
+                        const std::function<void(Session &, const ServoInfo &)> &work);
+    void clearServos();
+
+    seriallink::SessionThread<Session> m_worker;
+    std::vector<std::unique_ptr<Servo>> m_servos;
+    seriallink::ConnectionStatus m_status;
+    seriallink::LinkCounters m_counters;
+    bool m_scanning = false;
+    // The session runs operations in the order they were asked for: the servo each one works
+    // on (by its address before it ran), and whether it is a background refresh.
+    struct Pending
+    {
+        quint8 id = 0;
+        qint32 baud = 0;
+        bool background = false;
+    };
+    std::deque<Pending> m_pending;
+    QElapsedTimer m_clock;
+};
+
+} // namespace feetech

@@ -1,0 +1,253 @@
+// The Feetech bus session: scan, identify, table reads, safe writes and the guided flows.
+#pragma once
+
+#include "feetech/feetechpacket.h"
+#include "feetech/registertable.h"
+#include "link/linktypes.h"
+#include "link/requestengine.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace seriallink {
+class SerialTransport;
+}
+
+namespace feetech {
+
+// What a servo says about itself in addresses 0-8 (all single bytes, so byte order plays no
+// part in reading them).
+struct ServoInfo
+{
+    quint8 id = 0;
+    qint32 baud = 0;
+    quint8 firmwareMajor = 0;
+    quint8 firmwareMinor = 0;
+    quint8 byteOrderFlag = 0; // address 2: 0 little-endian, 1 big-endian
+    quint8 modelMajor = 0;
+    quint8 modelMinor = 0;
+    quint8 baudCode = 0; // address 6
+    quint8 responseLevel = 1; // address 8: 0 = only READ and PING answer
+    ModelInfo model; // no family: no trusted table, the servo gets the raw view
+
+    quint16 modelNumber() const;
+    QString firmware() const; // "3.10"
+    bool hasTable() const { return model.family.has_value(); }
+    // The family's table, or the raw view for an unknown model.
+    const RegisterTable &table() const;
+    bool repliesToWrites() const { return responseLevel != 0; }
+};
+
+// Reads addresses 0-8 as an identity (nothing when the bytes are too few).
+std::optional<ServoInfo> servoInfoFromIdentity(quint8 id, qint32 baud, QByteArrayView bytes);
+
+enum class MiddleCalibration { Unsupported, TorqueEnable128, Instruction };
+// By family and firmware (spec §2.2, §10): 0x0B on STS from 3.10 and on HLS, torque enable 128
+// on older STS and on SMS; SCS has no offset register.
+MiddleCalibration middleCalibration(const ServoInfo &servo);
+
+struct ScanOptions
+{
+    int firstId = 0;
+    int lastId = kMaxServoId;
+    QVector<qint32> bauds {1000000};
+    // A broadcast PING first: a baud rate where no byte at all comes back holds no servo and is
+    // skipped. Off for a thorough scan of every ID at every rate.
+    bool probeFirst = true;
+};
+
+// Where a block of register bytes came from.
+enum class ReadSource { Read, Refresh, ReadBack };
+
+struct RegisterWrite
+{
+    int address = 0;
+    QByteArray bytes; // already encoded in the family's byte order
+    bool eeprom = false;
+};
+
+enum class Operation {
+    Scan,
+    Ping,
+    Read,
+    Write,
+    ChangeId,
+    ChangeBaud,
+    CalibrateMiddle,
+    FactoryReset,
+    Reboot,
+    ClearStatus
+};
+
+struct OperationResult
+{
+    Operation operation = Operation::Read;
+    bool ok = false;
+    QString message; // for the user; says what went wrong when !ok
+    ServoInfo servo; // as the servo is reached after the operation (new ID or baud)
+    std::chrono::microseconds latency {0}; // Ping: the measured answer time
+};
+
+struct SessionTiming
+{
+    seriallink::EngineTiming engine {std::chrono::milliseconds(20), 2, std::chrono::milliseconds(1),
+                                     false};
+    // Scan: what a missing ID may cost before any answer has been measured on this port.
+    std::chrono::microseconds initialScanAllowance {20000};
+    // The broadcast probe decides whether a whole baud rate is skipped: it waits generously.
+    std::chrono::microseconds probeAllowance {50000};
+    // Once answers are measured: this many times the slowest one, plus the longest return
+    // delay a servo can be set to (254 × 2 µs), within these bounds.
+    double scanLatencyFactor = 3.0;
+    std::chrono::microseconds minimumScanAllowance {1000};
+    std::chrono::microseconds maximumScanAllowance {60000};
+    // After a reboot: how long to keep asking before the servo counts as gone.
+    std::chrono::milliseconds rebootGiveUp {4000};
+    std::chrono::milliseconds rebootPollInterval {100};
+    std::chrono::milliseconds reconnectInterval {500};
+};
+
+// Lives in a link worker thread (or the CLI's main thread); driven only by signals and timers.
+// Operations run one at a time in the order they are asked for; a scan can be cancelled.
+class Session : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit Session(const SessionTiming &timing = {}, QObject *parent = nullptr);
+    ~Session() override;
+
+    const seriallink::ConnectionStatus &status() const { return m_status; }
+    const seriallink::LinkCounters &counters() const;
+    bool isBusy() const { return m_running || !m_queue.empty(); }
+    // How quickly servos answer on this port: the median of the last answers (none before the
+    // first), from the end of the request to the first byte of the reply.
+    std::optional<std::chrono::microseconds> measuredLatency() const;
+    std::chrono::microseconds scanAllowance() const;
+
+    // Slots, called through QMetaObject::invokeMethod from other threads.
+    void open(const QString &portName, qint32 baud, seriallink::EchoMode echo);
+    void close();
+
+    void scan(const feetech::ScanOptions &options);
+    void cancelScan();
+    void ping(quint8 id, qint32 baud);
+    // Every block of the servo's table (the raw view for an unknown model), or only `blocks`.
+    // A Refresh is a background read: it runs only when nothing else does.
+    void read(const feetech::ServoInfo &servo, const QVector<feetech::Block> &blocks,
+              feetech::ReadSource source);
+    // EEPROM writes go unlock → write → lock; then every written register is read back.
+    // ID and baud changes are refused here: they have their own flows.
+    void write(const feetech::ServoInfo &servo, const QVector<feetech::RegisterWrite> &writes);
+    void changeId(const feetech::ServoInfo &servo, int newId, const QVector<int> &idsInUse);
+    void changeBaud(const feetech::ServoInfo &servo, qint32 newBaud);
+    void calibrateMiddle(const feetech::ServoInfo &servo);
+    void factoryReset(const feetech::ServoInfo &servo);
+    void reboot(const feetech::ServoInfo &servo);
+    void clearStatus(const feetech::ServoInfo &servo);
+
+signals:
+    void statusChanged(const seriallink::ConnectionStatus &status);
+    void scanProgress(int done, int total, qint32 baud);
+    void servoFound(const feetech::ServoInfo &servo);
+    void scanFinished(bool completed, const QString &message);
+    // Bytes of one block as the servo holds them, with the status byte of its reply.
+    void memoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
+                    feetech::ReadSource source, quint8 statusByte);
+    void progress(int done, int total);
+    void operationFinished(const feetech::OperationResult &result);
+    void packetLogged(const seriallink::PacketLogEntry &entry);
+    void countersChanged(const seriallink::LinkCounters &counters);
+
+private:
+    using Done = std::function<void(bool ok, const QString &message)>;
+    using Step = std::function<void(Done next)>;
+    struct Exchange
+    {
+        QByteArray request;
+        std::optional<quint8> replyId; // none: no reply expected
+        std::optional<quint8> alternateReplyId; // an ID change may answer from either ID
+        int replyDataSize = 0;
+        bool listenOnly = false; // wait the whole timeout and accept nothing (broadcast probe)
+        seriallink::Transaction::Priority priority = seriallink::Transaction::Priority::Command;
+        std::optional<std::chrono::microseconds> replyTimeout;
+        std::optional<int> retryCount;
+    };
+    using ExchangeDone = std::function<void(const seriallink::TransactionResult &result,
+                                            const std::optional<Packet> &reply)>;
+
+    void setStatus(seriallink::ConnectionState state, const QString &message = {});
+    void onPortFailed(const QString &message, bool lost);
+    void tryReopen();
+    void enqueue(Operation operation, std::function<void()> start);
+    void finishOperation(const OperationResult &result);
+    void startNextOperation();
+    void runSteps(std::vector<Step> steps, Done done);
+
+    void exchange(const Exchange &exchange, ExchangeDone done);
+    Step stepSetBaud(qint32 baud);
+    Step stepWrite(quint8 id, int address, const QByteArray &bytes, bool expectReply,
+                   const QString &what);
+    Step stepInstruction(quint8 id, const QByteArray &request, bool expectReply,
+                         const QString &what);
+    Step stepLock(std::shared_ptr<ServoInfo> servo, bool locked);
+    Step stepRead(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source);
+    Step stepIdentify(std::shared_ptr<ServoInfo> servo); // fills in what addresses 0-8 say
+    // mustAnswer: fails when the ID is silent; otherwise fails when it answers (ID in use).
+    Step stepPing(quint8 id, bool mustAnswer, int retries);
+    static Step markDone(std::shared_ptr<bool> flag); // sets the flag when the run gets there
+    void searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> rates, Done done);
+    void waitForReboot(const ServoInfo &servo, std::shared_ptr<QElapsedTimer> clock);
+    QString servoName(const ServoInfo &servo) const;
+    void noteLatency(std::chrono::microseconds latency);
+
+    void scanNext();
+    void scanBaud(int baudIndex);
+    void probe(int baudIndex, int round);
+    void scanId(int baudIndex, int id);
+    void endScan(bool completed, const QString &message);
+
+    SessionTiming m_timing;
+    FrameFormat m_format;
+    seriallink::SerialTransport *m_transport = nullptr;
+    seriallink::RequestEngine *m_engine = nullptr;
+    seriallink::ConnectionStatus m_status;
+    seriallink::EchoMode m_echo = seriallink::EchoMode::Auto;
+    QTimer *m_reopenTimer = nullptr;
+    std::deque<std::chrono::microseconds> m_latencies;
+    struct Queued
+    {
+        Operation operation = Operation::Read;
+        std::function<void()> start;
+    };
+    std::deque<Queued> m_queue;
+    bool m_running = false;
+    Operation m_currentOperation = Operation::Read;
+    quint64 m_generation = 0; // callbacks from before a close are ignored
+
+    struct ScanState
+    {
+        ScanOptions options;
+        int baudIndex = 0;
+        int done = 0;
+        int total = 0;
+        int found = 0;
+        bool cancelled = false;
+    };
+    std::optional<ScanState> m_scan;
+};
+
+} // namespace feetech
+
+Q_DECLARE_METATYPE(feetech::ServoInfo)
+Q_DECLARE_METATYPE(feetech::ScanOptions)
+Q_DECLARE_METATYPE(feetech::ReadSource)
+Q_DECLARE_METATYPE(feetech::OperationResult)
+Q_DECLARE_METATYPE(feetech::RegisterWrite)

@@ -1,0 +1,213 @@
+// Feetech registers as parameter definitions; decoding read blocks and encoding checked writes.
+#include "feetech/servoparameters.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace feetech {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechParameters)
+};
+
+QString registerLabel(const Register &reg)
+{
+    // Labels come from the register tables; a translation can be supplied under this context.
+    return QCoreApplication::translate("FeetechRegister", reg.label.toUtf8().constData());
+}
+
+QString groupFor(const Register &reg, const QVector<SettingsGroup> &groups)
+{
+    for (const SettingsGroup &group : groups) {
+        if (group.keys.contains(reg.key))
+            return group.title;
+    }
+    return reg.storage == Storage::Eeprom ? Tr::tr("Other EEPROM") : Tr::tr("Other RAM");
+}
+
+model::Definition definitionFor(const Register &reg, const QVector<SettingsGroup> &groups)
+{
+    model::Definition definition;
+    definition.key = reg.key;
+    definition.label = registerLabel(reg);
+    definition.group = groupFor(reg, groups);
+    definition.unit = reg.unit;
+    definition.scale = reg.scale;
+    definition.minimum = reg.minimum;
+    definition.maximum = reg.maximum;
+    definition.access = reg.writable() ? model::Access::ReadWrite : model::Access::ReadOnly;
+    definition.storage =
+        reg.storage == Storage::Eeprom ? model::Storage::Eeprom : model::Storage::Ram;
+    for (const Choice &choice : reg.choices)
+        definition.choices.append({choice.value, choice.label});
+    definition.note = reg.note;
+    return definition;
+}
+
+} // namespace
+
+QVector<SettingsGroup> settingsGroups()
+{
+    return {
+        {Tr::tr("Identity and link"),
+         {QStringLiteral("id"), QStringLiteral("baud_rate"), QStringLiteral("return_delay"),
+          QStringLiteral("response_level"), QStringLiteral("secondary_id")}},
+        {Tr::tr("Travel and mode"),
+         {QStringLiteral("min_angle_limit"), QStringLiteral("max_angle_limit"),
+          QStringLiteral("position_offset"), QStringLiteral("mode"),
+          QStringLiteral("angular_resolution")}},
+        {Tr::tr("Control loop"),
+         {QStringLiteral("p_gain"), QStringLiteral("d_gain"), QStringLiteral("i_gain"),
+          QStringLiteral("speed_p_gain"), QStringLiteral("speed_i_gain"),
+          QStringLiteral("current_p_gain"), QStringLiteral("current_i_gain"),
+          QStringLiteral("cw_dead_zone"), QStringLiteral("ccw_dead_zone"),
+          QStringLiteral("min_startup_force")}},
+        {Tr::tr("Limits and protection"),
+         {QStringLiteral("max_temperature"), QStringLiteral("max_voltage"),
+          QStringLiteral("min_voltage"), QStringLiteral("max_torque"),
+          QStringLiteral("protection_current"), QStringLiteral("holding_torque"),
+          QStringLiteral("protection_time"), QStringLiteral("overload_torque"),
+          QStringLiteral("overcurrent_protection_time"), QStringLiteral("unload_conditions"),
+          QStringLiteral("led_alarm_conditions")}},
+    };
+}
+
+QVector<model::Definition> modelDefinitions(const RegisterTable &table)
+{
+    const QVector<SettingsGroup> groups = settingsGroups();
+    QVector<model::Definition> definitions;
+    definitions.reserve(table.registers().size());
+    for (const Register &reg : table.registers())
+        definitions.append(definitionFor(reg, groups));
+    return definitions;
+}
+
+QVector<model::Definition> profileDefinitions(const RegisterTable &table)
+{
+    const QVector<SettingsGroup> groups = settingsGroups();
+    QVector<model::Definition> definitions;
+    for (const Register &reg : table.registers()) {
+        if (reg.storage == Storage::Eeprom && reg.writable() && reg.key != u"id"
+            && reg.key != u"baud_rate")
+            definitions.append(definitionFor(reg, groups));
+    }
+    return definitions;
+}
+
+QVector<DecodedRegister> decodeRegisters(const RegisterTable &table, int address,
+                                         QByteArrayView bytes)
+{
+    QVector<DecodedRegister> decoded;
+    const int end = address + int(bytes.size());
+    for (const Register &reg : table.registers()) {
+        if (reg.address < address || reg.end() > end)
+            continue;
+        const QByteArrayView slice = bytes.sliced(reg.address - address, reg.size);
+        DecodedRegister item;
+        item.reg = &reg;
+        item.raw = decodeRaw(slice, table.byteOrder());
+        item.value = decodeValue(slice, table.format(reg));
+        decoded.append(item);
+    }
+    return decoded;
+}
+
+std::optional<QVector<RegisterWrite>>
+encodeWrites(const RegisterTable &table, const QVector<model::WriteItem> &items, QString *error)
+{
+    QVector<RegisterWrite> writes;
+    for (const model::WriteItem &item : items) {
+        const Register *reg = table.find(item.key);
+        if (!reg || !reg->writable()) {
+            if (error)
+                *error = Tr::tr("%1 is not a writable register of %2.")
+                             .arg(item.key, familyName(table.family()));
+            return std::nullopt;
+        }
+        if (item.value < reg->minimum || item.value > reg->maximum) {
+            if (error)
+                *error = Tr::tr("%1 = %2 is out of range (%3 to %4).")
+                             .arg(reg->key)
+                             .arg(item.value)
+                             .arg(reg->minimum)
+                             .arg(reg->maximum);
+            return std::nullopt;
+        }
+        const auto bytes = encodeValue(qint32(item.value), table.format(*reg));
+        if (!bytes) {
+            if (error)
+                *error = Tr::tr("%1 = %2 does not fit the register.").arg(reg->key).arg(item.value);
+            return std::nullopt;
+        }
+        writes.append({reg->address, *bytes, reg->storage == Storage::Eeprom});
+    }
+    return writes;
+}
+
+std::optional<qint32> parseValue(const Register &reg, const QString &text, QString *error)
+{
+    const QString trimmed = text.trimmed();
+    bool ok = false;
+    qint64 value = trimmed.toLongLong(&ok);
+    if (reg.key == u"baud_rate" && ok) {
+        // The baud rate is given in bits per second, not as its code.
+        const std::optional<int> code = baudCode(qint32(value));
+        if (!code) {
+            if (error)
+                *error = Tr::tr("baud_rate: %1 bps is not a Feetech baud rate.").arg(trimmed);
+            return std::nullopt;
+        }
+        value = *code;
+    } else if (!ok) {
+        for (const Choice &choice : reg.choices) {
+            if (choice.label.compare(trimmed, Qt::CaseInsensitive) == 0) {
+                value = choice.value;
+                ok = true;
+            }
+        }
+    }
+    if (!ok) {
+        if (error)
+            *error = Tr::tr("%1: \"%2\" is not a whole number.").arg(reg.key, trimmed);
+        return std::nullopt;
+    }
+    if (value < reg.minimum || value > reg.maximum) {
+        if (error)
+            *error = Tr::tr("%1 = %2 is out of range (%3 to %4).")
+                         .arg(reg.key)
+                         .arg(value)
+                         .arg(reg.minimum)
+                         .arg(reg.maximum);
+        return std::nullopt;
+    }
+    return qint32(value);
+}
+
+QString bitNames(const Register &reg, qint32 value)
+{
+    QStringList names;
+    for (const BitName &bit : reg.bits) {
+        if (value & (1 << bit.bit))
+            names.append(bit.label);
+    }
+    return names.isEmpty() ? Tr::tr("none") : names.join(QStringLiteral(", "));
+}
+
+QString displayValue(const Register &reg, qint32 value)
+{
+    for (const Choice &choice : reg.choices) {
+        if (choice.value == value)
+            return choice.label;
+    }
+    if (!reg.bits.isEmpty())
+        return bitNames(reg, value);
+    const double real = double(value) * reg.scale;
+    QString number = reg.scale == 1.0 ? QString::number(value) : QString::number(real, 'g', 10);
+    return reg.unit.isEmpty() ? number : number + u' ' + reg.unit;
+}
+
+} // namespace feetech

@@ -1,0 +1,351 @@
+// End-to-end tests of the Feetech session against a simulated mixed bus on a pty.
+#include "feetech/feetechsession.h"
+#include "feetech/servoparameters.h"
+#include "sim/virtualfeetechservo.h"
+#include "simclient.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using feetech::OperationResult;
+using feetech::ReadSource;
+using feetech::ServoInfo;
+using feetech::Session;
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr qint32 k115k = 115200;
+
+// STS3215 ×2, SCS15 (big-endian), HLS at 1 Mbps; an SMS at 115200.
+sim::SimulatorOptions mixedBus(const QTemporaryDir &dir)
+{
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.linkPath = dir.filePath(QStringLiteral("bus"));
+    options.logPath = dir.filePath(QStringLiteral("bus.log"));
+    options.servos = {{1, QStringLiteral("STS3215"), k1M},
+                      {2, QStringLiteral("STS3215"), k1M},
+                      {3, QStringLiteral("SCS15"), k1M},
+                      {4, QStringLiteral("HLS"), k1M},
+                      {5, QStringLiteral("SMS"), k115k}};
+    return options;
+}
+
+// The session's values for one servo, decoded as the GUI and CLI decode them.
+struct Memory
+{
+    QHash<QString, qint32> values;
+    quint8 status = 0;
+};
+
+} // namespace
+
+class TestFeetechSession : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimulatorThread> m_simulator;
+    std::unique_ptr<Session> m_session;
+    QVector<ServoInfo> m_found;
+
+    void startBus(const sim::SimulatorOptions &options)
+    {
+        m_simulator = std::make_unique<sim::SimulatorThread>();
+        QString error;
+        QVERIFY2(m_simulator->start(options, &error), qPrintable(error));
+        m_session = std::make_unique<Session>();
+        connect(m_session.get(), &Session::servoFound, this,
+                [this](const ServoInfo &servo) { m_found.append(servo); });
+        m_session->open(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
+        QCOMPARE(m_session->status().state, seriallink::ConnectionState::Connected);
+    }
+
+    bool scan(const feetech::ScanOptions &options)
+    {
+        m_found.clear();
+        QSignalSpy finished(m_session.get(), &Session::scanFinished);
+        m_session->scan(options);
+        return (!finished.isEmpty() || finished.wait(30000)) && finished.first().at(0).toBool();
+    }
+
+    OperationResult run(const std::function<void()> &start)
+    {
+        QSignalSpy finished(m_session.get(), &Session::operationFinished);
+        start();
+        // A refusal can come at once, before anything is sent.
+        if (finished.isEmpty() && !finished.wait(10000))
+            return {};
+        return finished.first().at(0).value<OperationResult>();
+    }
+
+    Memory readAll(const ServoInfo &servo)
+    {
+        Memory memory;
+        auto connection = connect(m_session.get(), &Session::memoryRead, this,
+                                  [&](quint8 id, qint32, int address, const QByteArray &bytes,
+                                      ReadSource, quint8 status) {
+                                      if (id != servo.id || address < 0)
+                                          return;
+                                      memory.status = status;
+                                      for (const auto &item :
+                                           feetech::decodeRegisters(servo.table(), address, bytes))
+                                          memory.values.insert(item.reg->key, item.value);
+                                  });
+        const OperationResult result = run([&] { m_session->read(servo, {}, ReadSource::Read); });
+        disconnect(connection);
+        if (!result.ok)
+            memory.values.clear();
+        return memory;
+    }
+
+    std::optional<ServoInfo> found(quint8 id) const
+    {
+        for (const ServoInfo &servo : m_found) {
+            if (servo.id == id)
+                return servo;
+        }
+        return std::nullopt;
+    }
+
+    QStringList framesReceived() const
+    {
+        return testsupport::logLinesStartingWith(m_dir.filePath(QStringLiteral("bus.log")),
+                                                 QStringLiteral("in "));
+    }
+
+private slots:
+    void init()
+    {
+        m_found.clear();
+        startBus(mixedBus(m_dir));
+    }
+
+    void cleanup()
+    {
+        m_session.reset();
+        m_simulator.reset();
+        QFile::remove(m_dir.filePath(QStringLiteral("bus.log")));
+    }
+
+    void scanFindsEveryServoAtItsBaud()
+    {
+        feetech::ScanOptions options;
+        options.bauds = feetech::baudRates();
+        QVERIFY(scan(options));
+        QCOMPARE(m_found.size(), 5);
+        const struct
+        {
+            quint8 id;
+            qint32 baud;
+            const char *model;
+            feetech::Family family;
+            quint16 modelNumber;
+        } expected[] = {{1, k1M, "STS3215", feetech::Family::Sts, 777},
+                        {2, k1M, "STS3215", feetech::Family::Sts, 777},
+                        {3, k1M, "SCS15", feetech::Family::Scs, 0x050F},
+                        {4, k1M, "HLS", feetech::Family::Hls, 0},
+                        {5, k115k, "SMS", feetech::Family::Sms, 0}};
+        for (const auto &servo : expected) {
+            const auto info = found(servo.id);
+            QVERIFY2(info, qPrintable(QStringLiteral("servo %1 not found").arg(servo.id)));
+            QCOMPARE(info->baud, servo.baud);
+            QVERIFY(info->model.family);
+            QCOMPARE(*info->model.family, servo.family);
+            if (servo.modelNumber)
+                QCOMPARE(info->modelNumber(), servo.modelNumber);
+            if (QByteArray(servo.model) != "HLS" && QByteArray(servo.model) != "SMS")
+                QCOMPARE(info->model.name, QString::fromLatin1(servo.model));
+        }
+        // The adaptive timeout learned this link's answer time.
+        QVERIFY(m_session->measuredLatency().has_value());
+        QVERIFY(m_session->scanAllowance() < std::chrono::milliseconds(20));
+    }
+
+    void scanSkipsSilentBaudRates()
+    {
+        feetech::ScanOptions options;
+        options.bauds = {500000};
+        QVERIFY(scan(options));
+        QVERIFY(m_found.isEmpty());
+        // Only the broadcast probe went out at a rate where nothing answers.
+        QCOMPARE(framesReceived().size(), 1);
+    }
+
+    void cancelStopsTheScan()
+    {
+        feetech::ScanOptions options;
+        options.probeFirst = false;
+        options.bauds = {250000};
+        QSignalSpy finished(m_session.get(), &Session::scanFinished);
+        QSignalSpy progress(m_session.get(), &Session::scanProgress);
+        m_session->scan(options);
+        QVERIFY(progress.wait(5000));
+        QTRY_VERIFY(progress.size() > 3);
+        m_session->cancelScan();
+        QVERIFY(finished.wait(5000));
+        QCOMPARE(finished.first().at(0).toBool(), false);
+        QVERIFY(progress.last().at(0).toInt() < 254);
+    }
+
+    void tableReadsDecodeSignedAndBigEndianValues()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 5;
+        options.bauds = {k1M};
+        QVERIFY(scan(options));
+        m_simulator->call([](sim::Simulator &simulator) {
+            sim::VirtualFeetechBus *bus = simulator.feetechBus();
+            bus->findServo(1)->setValue(u"position_offset", -100);
+            bus->findServo(1)->setValue(u"goal_speed", -250);
+            bus->findServo(3)->setValue(u"max_angle_limit", 1000); // 0x03E8, high byte first
+            bus->findServo(3)->setValue(u"goal_position", 300);
+        });
+        const Memory sts = readAll(*found(1));
+        QCOMPARE(sts.values.value(QStringLiteral("position_offset")), -100);
+        QCOMPARE(sts.values.value(QStringLiteral("goal_speed")), -250);
+        QCOMPARE(sts.values.value(QStringLiteral("model_major")), 9);
+        const Memory scs = readAll(*found(3));
+        QCOMPARE(scs.values.value(QStringLiteral("max_angle_limit")), 1000);
+        QCOMPARE(scs.values.value(QStringLiteral("goal_position")), 300);
+        // Three READs for the STS table (its contiguous blocks), not one per register.
+        const int reads = framesReceived().filter(QStringLiteral("FF FF 01 04 02")).size();
+        QCOMPARE(reads, int(found(1)->table().blocks().size()) + 1); // + the scan's identity
+    }
+
+    void eepromChangeSurvivesPowerCycle()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        QVERIFY(scan(options));
+        const ServoInfo servo = *found(1);
+        QString error;
+        const auto writes =
+            feetech::encodeWrites(servo.table(), {{QStringLiteral("max_temperature"), 65}}, &error);
+        QVERIFY2(writes, qPrintable(error));
+        const OperationResult result = run([&] { m_session->write(servo, *writes); });
+        QVERIFY2(result.ok, qPrintable(result.message));
+        // unlock (55 = 0), write, lock (55 = 1), read back: in that order.
+        const QStringList frames = framesReceived();
+        const int unlock =
+            frames.indexOf(QRegularExpression(QStringLiteral(".*FF FF 01 04 03 37 00 .*")));
+        const int write =
+            frames.indexOf(QRegularExpression(QStringLiteral(".*FF FF 01 04 03 0D 41 .*")));
+        const int lock =
+            frames.indexOf(QRegularExpression(QStringLiteral(".*FF FF 01 04 03 37 01 .*")));
+        QVERIFY(unlock >= 0 && unlock < write && write < lock);
+        m_simulator->call([](sim::Simulator &simulator) { simulator.powerCycle(); });
+        QCOMPARE(readAll(servo).values.value(QStringLiteral("max_temperature")), 65);
+    }
+
+    void changeToOccupiedIdIsRefused()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 5;
+        QVERIFY(scan(options));
+        const ServoInfo servo = *found(1);
+        const int before = framesReceived().size();
+        // Known from the scan: refused before anything is sent.
+        OperationResult result = run([&] { m_session->changeId(servo, 2, {1, 2, 3, 4}); });
+        QVERIFY(!result.ok);
+        QCOMPARE(framesReceived().size(), before);
+        // Not known, but a servo answers there: refused after the PING, nothing written.
+        result = run([&] { m_session->changeId(servo, 3, {}); });
+        QVERIFY(!result.ok);
+        QVERIFY(result.message.contains(QLatin1String("3")));
+        const QStringList after = framesReceived().mid(before);
+        QVERIFY(!after.isEmpty());
+        for (const QString &frame : after)
+            QVERIFY2(!frame.contains(QLatin1String(" 03 "))
+                         || frame.contains(QLatin1String("FF FF 03 02 01")),
+                     qPrintable(frame));
+        QCOMPARE(readAll(servo).values.value(QStringLiteral("id")), 1);
+    }
+
+    void changeIdMovesTheServo()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        QVERIFY(scan(options));
+        const OperationResult result = run([&] { m_session->changeId(*found(2), 9, {1, 2}); });
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QCOMPARE(result.servo.id, quint8(9));
+        QVERIFY(scan(options));
+        QVERIFY(!found(2));
+        options.firstId = 9;
+        options.lastId = 9;
+        QVERIFY(scan(options));
+        QVERIFY(found(9));
+    }
+
+    void baudChangeIsFollowed()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        QVERIFY(scan(options));
+        const OperationResult result = run([&] { m_session->changeBaud(*found(2), 500000); });
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QCOMPARE(result.servo.baud, 500000);
+        QCOMPARE(readAll(result.servo).values.value(QStringLiteral("baud_rate")), 1);
+        // It stays there after a power cycle: the change went to EEPROM and was locked.
+        m_simulator->call([](sim::Simulator &simulator) { simulator.powerCycle(); });
+        const OperationResult ping = run([&] { m_session->ping(2, 500000); });
+        QVERIFY2(ping.ok, qPrintable(ping.message));
+    }
+
+    void unknownModelGetsRawView()
+    {
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(1)->setValue(u"model_major", 77);
+        });
+        feetech::ScanOptions options;
+        options.lastId = 1;
+        QVERIFY(scan(options));
+        const ServoInfo servo = *found(1);
+        QVERIFY(!servo.hasTable());
+        QVERIFY(servo.table().isRaw());
+        const Memory memory = readAll(servo);
+        QCOMPARE(memory.values.size(), feetech::RegisterTable::kRawViewSize);
+        QCOMPARE(memory.values.value(QStringLiteral("byte_003")), 77);
+        // Nothing is written to a servo nobody knows.
+        const OperationResult result = run([&] {
+            m_session->write(servo, {{40, QByteArray(1, char(1)), false}});
+        });
+        QVERIFY(!result.ok);
+    }
+
+    void calibrateMiddleByFirmware()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 4;
+        QVERIFY(scan(options));
+        QCOMPARE(feetech::middleCalibration(*found(1)), feetech::MiddleCalibration::Instruction);
+        QCOMPARE(feetech::middleCalibration(*found(3)), feetech::MiddleCalibration::Unsupported);
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(1)->setPhysicalPosition(2548);
+        });
+        const OperationResult result = run([&] { m_session->calibrateMiddle(*found(1)); });
+        QVERIFY2(result.ok, qPrintable(result.message));
+        const Memory memory = readAll(*found(1));
+        QVERIFY(qAbs(memory.values.value(QStringLiteral("present_position")) - 2048) <= 2);
+        QVERIFY(!run([&] { m_session->calibrateMiddle(*found(3)); }).ok);
+    }
+
+    void rebootAndClearStatus()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 1;
+        QVERIFY(scan(options));
+        OperationResult result = run([&] { m_session->reboot(*found(1)); });
+        QVERIFY2(result.ok, qPrintable(result.message));
+        result = run([&] { m_session->clearStatus(*found(1)); });
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QVERIFY(framesReceived().filter(QStringLiteral("FF FF 01 02 0A")).size() == 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFeetechSession)
+#include "tst_feetechsession.moc"
