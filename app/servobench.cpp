@@ -27,17 +27,27 @@ int main(int argc, char *argv[])
     parser.addVersionOption();
     const QCommandLineOption demo(
         QStringLiteral("demo"),
-        QApplication::translate("main", "Start simulated servos and connect to them."));
+        QApplication::translate("main",
+                                "Start the simulated servos and connect to the PTK "
+                                "servo (the Feetech bus is in the port list)."));
+    const QCommandLineOption demoFeetech(
+        QStringLiteral("demo-feetech"),
+        QApplication::translate("main",
+                                "Start the simulated servos, connect to the Feetech bus "
+                                "and scan it."));
     const QCommandLineOption port(QStringList {QStringLiteral("port")},
                                   QApplication::translate("main", "Connect to PORT at start."),
                                   QStringLiteral("PORT"));
     parser.addOption(demo);
+    parser.addOption(demoFeetech);
     parser.addOption(port);
     parser.process(app);
 
     MainWindow window;
     window.show();
-    if (parser.isSet(demo))
+    if (parser.isSet(demoFeetech))
+        window.startFeetechDemo();
+    else if (parser.isSet(demo))
         window.startDemo();
     else if (parser.isSet(port))
         window.connectToPort(parser.value(port));

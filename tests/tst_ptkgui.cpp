@@ -8,7 +8,7 @@
 #include "ptk/ptkclient.h"
 #include "ptk/ptkframe.h"
 #include "ptk/ptkparameters.h"
-#include "ptkpage.h"
+#include "parameterpage.h"
 #include "sim/simulator.h"
 #include "sim/virtualptkservo.h"
 #include "util/hex.h"
@@ -60,7 +60,7 @@ private slots:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         window.connectToPort(simulator.linkPath());
-        PtkPage *page = window.ptkPage();
+        ParameterPage *page = window.ptkPage();
         QTRY_COMPARE(window.ptkClient()->status().state, seriallink::ConnectionState::Connected);
         QTRY_COMPARE(page->deviceLabel(QStringLiteral("deadband"))->text(), QStringLiteral("15"));
         QTRY_VERIFY(page->editor(QStringLiteral("soft_start"))->isEnabled());

@@ -17,6 +17,7 @@ constexpr int kPortRefreshMs = 1000;
 } // namespace
 
 const QString ConnectionBar::kSimulatedPtkPort = QStringLiteral("simulated:ptk");
+const QString ConnectionBar::kSimulatedFeetechPort = QStringLiteral("simulated:feetech");
 
 ConnectionBar::ConnectionBar(QWidget *parent)
     : QToolBar(tr("Connection"), parent)
@@ -33,6 +34,12 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setToolTip(tr("The serial port of the USB programmer, or a simulated servo"));
     addWidget(m_port);
+    connect(m_port, &QComboBox::activated, this, [this] {
+        if (port() == kSimulatedPtkPort)
+            setProtocol(Protocol::Ptk);
+        else if (port() == kSimulatedFeetechPort)
+            setProtocol(Protocol::Feetech);
+    });
 
     addSeparator();
     addWidget(new QLabel(tr("Baud "), this));
@@ -42,15 +49,25 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_baud->setValidator(new QIntValidator(1200, 4000000, m_baud));
     for (const int rate : {115200, 57600, 38400, 19200, 9600, 1000000, 500000, 250000, 128000})
         m_baud->addItem(QString::number(rate));
-    m_baud->setToolTip(tr("PTK servos talk at 115200 baud"));
+    m_baud->setToolTip(tr("PTK servos talk at 115200 baud. On a Feetech bus this is the rate "
+                          "the port opens at; a scan visits the rates it is asked to."));
     addWidget(m_baud);
 
     addSeparator();
     addWidget(new QLabel(tr("Protocol "), this));
     m_protocol = new QComboBox(this);
     m_protocol->setObjectName(QStringLiteral("protocolCombo"));
-    m_protocol->addItem(tr("PTK RC servo"));
+    m_protocol->addItem(tr("PTK RC servo"), int(Protocol::Ptk));
+    m_protocol->addItem(tr("Feetech bus"), int(Protocol::Feetech));
+    m_protocol->setToolTip(tr("PTK: one RC servo on a USB programmer. Feetech: SCS, STS, SMS "
+                              "and HLS servos on a serial bus."));
     addWidget(m_protocol);
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
+        const QString rate =
+            protocol() == Protocol::Ptk ? QStringLiteral("115200") : QStringLiteral("1000000");
+        m_baud->setCurrentIndex(m_baud->findText(rate));
+        emit protocolChanged(protocol());
+    });
 
     addSeparator();
     addWidget(new QLabel(tr("Echo "), this));
@@ -103,6 +120,16 @@ qint32 ConnectionBar::baud() const
     return m_baud->currentText().toInt();
 }
 
+ConnectionBar::Protocol ConnectionBar::protocol() const
+{
+    return Protocol(m_protocol->currentData().toInt());
+}
+
+void ConnectionBar::setProtocol(Protocol protocol)
+{
+    m_protocol->setCurrentIndex(m_protocol->findData(int(protocol)));
+}
+
 seriallink::EchoMode ConnectionBar::echoMode() const
 {
     return seriallink::EchoMode(m_echo->currentData().toInt());
@@ -139,6 +166,7 @@ void ConnectionBar::refreshPorts()
         m_port->addItem(text, ports.at(i));
     }
     m_port->addItem(tr("Simulated PTK servo"), kSimulatedPtkPort);
+    m_port->addItem(tr("Simulated Feetech bus"), kSimulatedFeetechPort);
     if (!chosen.isEmpty())
         setPort(chosen);
 }

@@ -14,8 +14,11 @@ class ConnectionBar : public QToolBar
     Q_OBJECT
 
 public:
-    // The port list's entry for the in-process simulated servo.
+    // The port list's entries for the in-process simulated servos.
     static const QString kSimulatedPtkPort;
+    static const QString kSimulatedFeetechPort;
+
+    enum class Protocol { Ptk, Feetech };
 
     explicit ConnectionBar(QWidget *parent = nullptr);
 
@@ -23,6 +26,8 @@ public:
     void setPort(const QString &port);
     qint32 baud() const;
     seriallink::EchoMode echoMode() const;
+    Protocol protocol() const;
+    void setProtocol(Protocol protocol); // also offers that protocol's usual baud rate
 
     // Connected (or trying to be): the button offers Disconnect and the settings are locked.
     void setSessionActive(bool active);
@@ -33,6 +38,7 @@ public:
 signals:
     void connectRequested();
     void disconnectRequested();
+    void protocolChanged(ConnectionBar::Protocol protocol);
 
 private:
     QComboBox *m_port = nullptr;

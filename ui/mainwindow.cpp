@@ -2,12 +2,14 @@
 #include "mainwindow.h"
 
 #include "connectionbar.h"
+#include "feetech/busclient.h"
+#include "feetechworkspace.h"
 #include "link/packetlogmodel.h"
 #include "packetlogdock.h"
+#include "parameterpage.h"
 #include "profile/profile.h"
-#include "profilediffdialog.h"
+#include "profileactions.h"
 #include "ptk/ptkclient.h"
-#include "ptkpage.h"
 #include "sim/demoservos.h"
 
 #include <QAction>
@@ -19,7 +21,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QStandardPaths>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -51,6 +53,7 @@ QString stateColour(seriallink::ConnectionState state)
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
     , m_ptk(std::make_unique<ptk::Client>())
+    , m_feetech(std::make_unique<feetech::BusClient>())
 {
     setWindowTitle(tr("ServoBench"));
     setObjectName(QStringLiteral("mainWindow"));
@@ -75,9 +78,24 @@ MainWindow::MainWindow(QWidget *parent)
     m_problem->hide();
     layout->addWidget(m_problem);
 
-    m_ptkPage = new PtkPage(m_ptk->model(), central);
-    layout->addWidget(m_ptkPage);
+    m_pages = new QStackedWidget(central);
+    ParameterPage::Options ptkOptions;
+    ptkOptions.objectName = QStringLiteral("ptkPage");
+    m_ptkPage = new ParameterPage(m_ptk->model(), ptkOptions, m_pages);
+    m_pages->addWidget(m_ptkPage);
+    m_feetechWorkspace = new FeetechWorkspace(m_feetech.get(), m_pages);
+    m_pages->addWidget(m_feetechWorkspace);
+    layout->addWidget(m_pages);
     setCentralWidget(central);
+    connect(m_connectionBar, &ConnectionBar::protocolChanged, this,
+            [this](ConnectionBar::Protocol protocol) {
+                showProtocol(protocol == ConnectionBar::Protocol::Feetech);
+            });
+    connect(m_feetechWorkspace, &FeetechWorkspace::problem, this, &MainWindow::showProblem);
+    connect(m_feetechWorkspace, &FeetechWorkspace::message, this, [this](const QString &text) {
+        m_problem->hide();
+        statusBar()->showMessage(text, kStatusMessageMs);
+    });
 
     m_packetLog = new PacketLogDock(this);
     addDockWidget(Qt::BottomDockWidgetArea, m_packetLog);
@@ -99,7 +117,13 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_ptk.get(), &ptk::Client::statusChanged, this, &MainWindow::onStatusChanged);
     connect(m_ptk.get(), &ptk::Client::countersChanged, this, &MainWindow::onCountersChanged);
     connect(m_ptk.get(), &ptk::Client::packetLogged, m_packetLog, &PacketLogDock::append);
-    connect(m_ptk.get(), &ptk::Client::applyProgress, m_ptkPage, &PtkPage::setProgress);
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
+            &MainWindow::onStatusChanged);
+    connect(m_feetech.get(), &feetech::BusClient::countersChanged, this,
+            &MainWindow::onCountersChanged);
+    connect(m_feetech.get(), &feetech::BusClient::packetLogged, m_packetLog,
+            &PacketLogDock::append);
+    connect(m_ptk.get(), &ptk::Client::applyProgress, m_ptkPage, &ParameterPage::setProgress);
     connect(m_ptk.get(), &ptk::Client::applyFinished, this, &MainWindow::onApplyFinished);
     connect(m_ptk.get(), &ptk::Client::readFinished, this, [this](bool ok, const QString &why) {
         if (ok)
@@ -107,13 +131,15 @@ MainWindow::MainWindow(QWidget *parent)
         else
             showProblem(tr("Read failed: %1").arg(why));
     });
-    connect(m_ptkPage, &PtkPage::readRequested, this, [this] {
+    connect(m_ptkPage, &ParameterPage::readRequested, this, [this] {
         m_problem->hide();
         m_ptk->readAll();
     });
-    connect(m_ptkPage, &PtkPage::applyRequested, this, &MainWindow::apply);
-    connect(m_ptkPage, &PtkPage::saveProfileRequested, this, &MainWindow::chooseProfileToSave);
-    connect(m_ptkPage, &PtkPage::loadProfileRequested, this, &MainWindow::chooseProfileToLoad);
+    connect(m_ptkPage, &ParameterPage::applyRequested, this, &MainWindow::apply);
+    connect(m_ptkPage, &ParameterPage::saveProfileRequested, this,
+            &MainWindow::chooseProfileToSave);
+    connect(m_ptkPage, &ParameterPage::loadProfileRequested, this,
+            &MainWindow::chooseProfileToLoad);
 
     m_rateTimer = new QTimer(this);
     m_rateTimer->setInterval(kRateRefreshMs);
@@ -143,11 +169,21 @@ void MainWindow::createMenus()
     polling->setChecked(true);
     polling->setToolTip(tr("Keep reading the eight queries so the values stay live"));
     connect(polling, &QAction::toggled, this, [this](bool on) { m_ptk->setPolling(on); });
+    m_ptkActions.append(polling);
     QAction *fast = link->addAction(tr("&Fast polling (queries back to back)"));
     fast->setObjectName(QStringLiteral("fastPollingAction"));
     fast->setCheckable(true);
     connect(fast, &QAction::toggled, this, [this](bool on) {
         m_ptk->setPollInterval(int(ptk::SessionTiming().pollInterval.count()), on);
+    });
+    m_ptkActions.append(fast);
+    link->addSeparator();
+    QAction *scan = link->addAction(tr("&Scan the Feetech bus…"));
+    scan->setObjectName(QStringLiteral("scanAction"));
+    scan->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
+    connect(scan, &QAction::triggered, this, [this] {
+        m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
+        m_feetechWorkspace->openScanDialog();
     });
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
@@ -175,6 +211,33 @@ void MainWindow::startDemo()
     connectRequested();
 }
 
+void MainWindow::startFeetechDemo()
+{
+    m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
+    m_connectionBar->setPort(ConnectionBar::kSimulatedFeetechPort);
+    connectRequested();
+    // Scan as soon as the port is open, so the tree fills by itself.
+    auto *once = new QObject(this);
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, once,
+            [this, once](const seriallink::ConnectionStatus &status) {
+                if (status.state != seriallink::ConnectionState::Connected)
+                    return;
+                feetech::ScanOptions options;
+                m_feetechWorkspace->startScan(options);
+                once->deleteLater();
+            });
+}
+
+void MainWindow::showProtocol(bool feetech)
+{
+    m_feetechActive = feetech;
+    m_pages->setCurrentWidget(feetech ? static_cast<QWidget *>(m_feetechWorkspace)
+                                      : static_cast<QWidget *>(m_ptkPage));
+    for (QAction *action : std::as_const(m_ptkActions))
+        action->setEnabled(!feetech);
+    m_pollRate->setVisible(!feetech);
+}
+
 void MainWindow::connectToPort(const QString &port)
 {
     m_connectionBar->setPort(port);
@@ -190,16 +253,19 @@ void MainWindow::connectRequested()
         showProblem(tr("Choose a serial port first."));
         return;
     }
-    if (port == ConnectionBar::kSimulatedPtkPort) {
+    if (port == ConnectionBar::kSimulatedPtkPort || port == ConnectionBar::kSimulatedFeetechPort) {
+        const bool feetechBus = port == ConnectionBar::kSimulatedFeetechPort;
+        m_connectionBar->setProtocol(feetechBus ? ConnectionBar::Protocol::Feetech
+                                                : ConnectionBar::Protocol::Ptk);
         if (!m_demo)
             m_demo = std::make_unique<sim::DemoServos>();
         QString error;
-        port = m_demo->ptkPort(&error);
+        port = feetechBus ? m_demo->feetechPort(&error) : m_demo->ptkPort(&error);
         if (port.isEmpty()) {
-            showProblem(tr("The simulated servo could not start: %1").arg(error));
+            showProblem(tr("The simulated servos could not start: %1").arg(error));
             return;
         }
-        m_portShown = tr("simulated PTK servo");
+        m_portShown = feetechBus ? tr("simulated Feetech bus") : tr("simulated PTK servo");
     }
     const qint32 baud = m_connectionBar->baud();
     if (baud <= 0) {
@@ -207,12 +273,20 @@ void MainWindow::connectRequested()
         return;
     }
     m_connectionBar->setSessionActive(true);
-    m_ptk->connectTo(port, baud, m_connectionBar->echoMode());
+    if (m_connectionBar->protocol() == ConnectionBar::Protocol::Feetech) {
+        m_feetechWorkspace->setPortName(m_portShown);
+        m_feetech->connectTo(port, baud, m_connectionBar->echoMode());
+    } else {
+        m_ptk->connectTo(port, baud, m_connectionBar->echoMode());
+    }
 }
 
 void MainWindow::disconnectRequested()
 {
-    m_ptk->disconnectFrom();
+    if (m_feetechActive)
+        m_feetech->disconnectFrom();
+    else
+        m_ptk->disconnectFrom();
 }
 
 void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
@@ -227,7 +301,8 @@ void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
         text = tr("Connecting to %1…").arg(m_portShown);
         break;
     case ConnectionState::Connected:
-        text = tr("Connected: %1 at %2 baud").arg(m_portShown).arg(status.baud);
+        text = m_feetechActive ? tr("Open: %1").arg(m_portShown)
+                               : tr("Connected: %1 at %2 baud").arg(m_portShown).arg(status.baud);
         break;
     case ConnectionState::NoReply:
         text = tr("No reply on %1").arg(m_portShown);
@@ -308,10 +383,11 @@ void MainWindow::showProblem(const QString &message)
 
 void MainWindow::chooseProfileToSave()
 {
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save profile"),
-                                                      folder + QStringLiteral("/ptk-servo.json"),
-                                                      tr("ServoBench profiles (*.json)"));
+    if (m_feetechActive) {
+        m_feetechWorkspace->chooseProfileToSave();
+        return;
+    }
+    const QString path = profileactions::chooseSavePath(this, QStringLiteral("ptk-servo.json"));
     if (!path.isEmpty())
         saveProfile(path);
 }
@@ -319,13 +395,9 @@ void MainWindow::chooseProfileToSave()
 bool MainWindow::saveProfile(const QString &path)
 {
     // What the form shows: the servo's values with any edits not yet applied.
-    const profile::Profile saved = profile::fromModel(*m_ptk->model(), kPtkFamily, {}, true);
-    if (saved.values.size() != m_ptk->model()->definitions().size()) {
-        showProblem(tr("Read the servo before saving a profile: not every value is known."));
-        return false;
-    }
     QString error;
-    if (!profile::save(path, saved, m_ptk->model()->definitions(), &error)) {
+    if (!profileactions::save(path, *m_ptk->model(), kPtkFamily, {}, m_ptk->model()->definitions(),
+                              &error)) {
         showProblem(error);
         return false;
     }
@@ -335,9 +407,11 @@ bool MainWindow::saveProfile(const QString &path)
 
 void MainWindow::chooseProfileToLoad()
 {
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load profile"), folder,
-                                                      tr("ServoBench profiles (*.json)"));
+    if (m_feetechActive) {
+        m_feetechWorkspace->chooseProfileToLoad();
+        return;
+    }
+    const QString path = profileactions::chooseLoadPath(this);
     if (!path.isEmpty())
         loadProfile(path);
 }
@@ -349,32 +423,33 @@ void MainWindow::loadProfile(const QString &path)
         return;
     }
     QString error;
-    const auto loaded = profile::load(path, kPtkFamily, m_ptk->model()->definitions(), &error);
-    if (!loaded) {
-        showProblem(tr("The profile was not loaded: %1").arg(error));
-        return;
-    }
-    const QVector<profile::DiffRow> rows = profile::diff(*loaded, *m_ptk->model());
-    if (rows.isEmpty()) {
+    switch (profileactions::loadAsEdits(this, path, kPtkFamily, m_ptk->model()->definitions(),
+                                        *m_ptk->model(), &error)) {
+    case profileactions::LoadOutcome::Failed:
+        showProblem(error);
+        break;
+    case profileactions::LoadOutcome::AlreadyEqual:
         statusBar()->showMessage(tr("The servo already holds every value of this profile"),
                                  kStatusMessageMs);
-        return;
+        break;
+    case profileactions::LoadOutcome::Cancelled:
+        break;
+    case profileactions::LoadOutcome::Loaded:
+        statusBar()->showMessage(tr("Profile loaded as edits: review them, then Apply"),
+                                 kStatusMessageMs);
+        break;
     }
-    ProfileDiffDialog dialog(QDir::toNativeSeparators(path), rows, *m_ptk->model(), this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    for (const profile::DiffRow &row : rows)
-        m_ptk->model()->edit(row.key, row.file);
-    statusBar()->showMessage(tr("Profile loaded as edits: review them, then Apply"),
-                             kStatusMessageMs);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (m_ptk->model()->hasEdits()) {
+    bool edits = m_ptk->model()->hasEdits();
+    for (int i = 0; i < m_feetech->servoCount(); ++i)
+        edits = edits || m_feetech->parameters(i)->hasEdits();
+    if (edits) {
         const auto answer = QMessageBox::question(
             this, tr("Unapplied changes"),
-            tr("Some changes have not been written to the servo. Quit anyway?"),
+            tr("Some changes have not been written to the servos. Quit anyway?"),
             QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
         if (answer != QMessageBox::Discard) {
             event->ignore();

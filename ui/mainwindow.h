@@ -8,13 +8,18 @@
 #include <memory>
 
 class ConnectionBar;
+class FeetechWorkspace;
+class QStackedWidget;
 class PacketLogDock;
-class PtkPage;
+class ParameterPage;
 class QLabel;
 class QTimer;
 
 namespace ptk {
 class Client;
+}
+namespace feetech {
+class BusClient;
 }
 namespace sim {
 class DemoServos;
@@ -28,13 +33,17 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    // Connects to the in-process simulated servo (servobench --demo).
+    // Connects to the in-process simulated PTK servo (servobench --demo).
     void startDemo();
+    // Connects to the in-process simulated Feetech bus and scans it (--demo-feetech).
+    void startFeetechDemo();
     void connectToPort(const QString &port);
 
     ptk::Client *ptkClient() const { return m_ptk.get(); }
+    feetech::BusClient *feetechClient() const { return m_feetech.get(); }
+    FeetechWorkspace *feetechWorkspace() const { return m_feetechWorkspace; }
     ConnectionBar *connectionBar() const { return m_connectionBar; }
-    PtkPage *ptkPage() const { return m_ptkPage; }
+    ParameterPage *ptkPage() const { return m_ptkPage; }
     PacketLogDock *packetLog() const { return m_packetLog; }
 
     // Loads a profile into the form as edits after showing what it changes.
@@ -56,12 +65,18 @@ private:
     void chooseProfileToSave();
     void chooseProfileToLoad();
     void showProblem(const QString &message);
+    void showProtocol(bool feetech);
     void updatePollRate();
 
     std::unique_ptr<sim::DemoServos> m_demo;
     std::unique_ptr<ptk::Client> m_ptk;
+    std::unique_ptr<feetech::BusClient> m_feetech;
     ConnectionBar *m_connectionBar = nullptr;
-    PtkPage *m_ptkPage = nullptr;
+    ParameterPage *m_ptkPage = nullptr;
+    FeetechWorkspace *m_feetechWorkspace = nullptr;
+    QStackedWidget *m_pages = nullptr;
+    QList<QAction *> m_ptkActions; // Link menu entries that only mean something for PTK
+    bool m_feetechActive = false;
     PacketLogDock *m_packetLog = nullptr;
     QLabel *m_problem = nullptr; // a banner above the page: why the last action failed
     QLabel *m_connectionState = nullptr;

@@ -179,19 +179,101 @@ void BusClient::onOperationFinished(const OperationResult &result)
             entry.info = result.servo;
             emit servosChanged();
         }
+        if (result.ok && result.operation == Operation::ChangeId)
+            parameters.revert(QStringLiteral("id"));
+        if (result.ok && result.operation == Operation::ChangeBaud)
+            parameters.revert(QStringLiteral("baud_rate"));
+        const bool flow = result.operation == Operation::ChangeId
+            || result.operation == Operation::ChangeBaud
+            || result.operation == Operation::FactoryReset
+            || result.operation == Operation::CalibrateMiddle;
         if (result.ok
-            && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
-                || result.operation == Operation::FactoryReset
-                || result.operation == Operation::CalibrateMiddle)) {
-            // What the flow changed on the servo shows everywhere at once.
-            parameters.revertAll();
-            readServo(indexOf(entry.info.id, entry.info.baud));
-        }
+            && (result.operation == Operation::FactoryReset
+                || result.operation == Operation::CalibrateMiddle))
+            parameters.revertAll(); // the flow changed the servo under any edit
+        if (result.ok && flow)
+            readServo(indexOf(entry.info.id, entry.info.baud)); // what the flow changed shows
     }
+    if (!target.background)
+        runFollowUp(result);
     if (!target.background)
         emit busyChanged(isBusy());
     if (!target.background || !result.ok)
         emit operationFinished(result);
+}
+
+void BusClient::runFollowUp(const OperationResult &result)
+{
+    if (m_followUps.empty())
+        return;
+    if (!result.ok) {
+        m_followUps.clear(); // a later step must not act on a servo that is not where we think
+        return;
+    }
+    const auto next = std::move(m_followUps.front());
+    m_followUps.pop_front();
+    QString error;
+    if (!next(indexOf(result.servo.id, result.servo.baud), &error)) {
+        m_followUps.clear();
+        emit operationFinished({Operation::Write, false, error, result.servo, {}});
+    }
+}
+
+bool BusClient::applyAll(int index, QString *error)
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return false;
+    }
+    model::ParameterModel &parameters = *this->parameters(index);
+    const auto idEdit = parameters.pendingValue(QStringLiteral("id"));
+    const auto baudEdit = parameters.pendingValue(QStringLiteral("baud_rate"));
+    std::deque<std::function<bool(int, QString *)>> steps;
+    bool registers = false;
+    for (const model::Definition &definition : parameters.definitions()) {
+        if (parameters.pendingValue(definition.key) && definition.key != u"id"
+            && definition.key != u"baud_rate")
+            registers = true;
+    }
+    if (registers)
+        steps.push_back([this](int at, QString *why) { return apply(at, why); });
+    if (idEdit) {
+        const int newId = int(*idEdit);
+        steps.push_back([this, newId](int at, QString *why) {
+            const QVector<int> inUse = idsInUse();
+            if (at < 0 || inUse.contains(newId)) {
+                if (why)
+                    *why = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
+                return false;
+            }
+            return startOperation(at, why, false, [newId, inUse](Session &s, const ServoInfo &i) {
+                s.changeId(i, newId, inUse);
+            });
+        });
+    }
+    if (baudEdit) {
+        const qint32 newBaud = baudForCode(int(*baudEdit));
+        steps.push_back([this, newBaud](int at, QString *why) {
+            return startOperation(at, why, false, [newBaud](Session &s, const ServoInfo &i) {
+                s.changeBaud(i, newBaud);
+            });
+        });
+    }
+    if (steps.empty()) {
+        if (error)
+            *error = Tr::tr("Nothing to write.");
+        return false;
+    }
+    const auto first = std::move(steps.front());
+    steps.pop_front();
+    m_followUps = std::move(steps);
+    if (!first(index, error)) {
+        m_followUps.clear();
+        return false;
+    }
+    return true;
 }
 
 bool BusClient::startOperation(int index, QString *error, bool background,

@@ -62,6 +62,9 @@ public:
     // Writes the servo's edits (except ID and baud rate: see changeId / changeBaud) and reads
     // them back. False and *error when nothing was sent.
     bool apply(int index, QString *error = nullptr);
+    // Everything pending: the register edits, then an ID edit through changeId, then a baud
+    // edit through changeBaud, each only once the one before has succeeded.
+    bool applyAll(int index, QString *error = nullptr);
     bool changeId(int index, int newId, QString *error = nullptr);
     bool changeBaud(int index, qint32 newBaud, QString *error = nullptr);
     bool calibrateMiddle(int index, QString *error = nullptr);
@@ -89,6 +92,7 @@ private:
     bool startOperation(int index, QString *error, bool background,
                         const std::function<void(Session &, const ServoInfo &)> &work);
     void clearServos();
+    void runFollowUp(const OperationResult &result);
 
     seriallink::SessionThread<Session> m_worker;
     std::vector<std::unique_ptr<Servo>> m_servos;
@@ -104,6 +108,8 @@ private:
         bool background = false;
     };
     std::deque<Pending> m_pending;
+    // Steps of an applyAll still to come, each given the servo's index as it is then.
+    std::deque<std::function<bool(int index, QString *error)>> m_followUps;
     QElapsedTimer m_clock;
 };
 

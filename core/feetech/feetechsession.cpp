@@ -29,8 +29,10 @@ constexpr quint8 kTorqueCalibrate = 128;
 
 QString describe(const QByteArray &frame, const QByteArray &request)
 {
-    // Replies name their servo, so they read well next to the request that asked.
-    const auto frames = cli::decodeStream(cli::Protocol::Feetech, request + frame);
+    // A reply reads best next to the request that asked for it (a READ's data then gets its
+    // address); the request itself is described alone.
+    const QByteArray stream = frame == request ? frame : request + frame;
+    const auto frames = cli::decodeStream(cli::Protocol::Feetech, stream);
     return frames.isEmpty() ? QString() : frames.last().summary;
 }
 

@@ -3,7 +3,9 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace feetech {
 
@@ -154,8 +156,11 @@ std::optional<qint32> parseValue(const Register &reg, const QString &text, QStri
     bool ok = false;
     qint64 value = trimmed.toLongLong(&ok);
     if (reg.key == u"baud_rate" && ok) {
-        // The baud rate is given in bits per second, not as its code.
-        const std::optional<int> code = baudCode(qint32(value));
+        // The baud rate is given in bits per second, not as its code. Checked before narrowing:
+        // 4295967296 must not wrap round to 1000000.
+        const std::optional<int> code = value > 0 && value <= std::numeric_limits<qint32>::max()
+            ? baudCode(qint32(value))
+            : std::nullopt;
         if (!code) {
             if (error)
                 *error = Tr::tr("baud_rate: %1 bps is not a Feetech baud rate.").arg(trimmed);
@@ -189,10 +194,15 @@ std::optional<qint32> parseValue(const Register &reg, const QString &text, QStri
 
 QString bitNames(const Register &reg, qint32 value)
 {
+    // Every bit set is listed, named or not: an undocumented status bit (STS bit 4, "angle" in
+    // the ST3215 sheet) is still an alarm and must not read as "none".
     QStringList names;
-    for (const BitName &bit : reg.bits) {
-        if (value & (1 << bit.bit))
-            names.append(bit.label);
+    for (int bit = 0; bit < reg.size * 8; ++bit) {
+        if (!(value & (1 << bit)))
+            continue;
+        const auto named = std::find_if(reg.bits.begin(), reg.bits.end(),
+                                        [bit](const BitName &b) { return b.bit == bit; });
+        names.append(named != reg.bits.end() ? named->label : Tr::tr("bit %1").arg(bit));
     }
     return names.isEmpty() ? Tr::tr("none") : names.join(QStringLiteral(", "));
 }

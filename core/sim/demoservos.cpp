@@ -10,6 +10,8 @@ DemoServos::~DemoServos()
 {
     if (m_ptk)
         m_ptk->stop();
+    if (m_feetech)
+        m_feetech->stop();
 }
 
 bool DemoServos::ensureFolder(QString *error)
@@ -44,6 +46,30 @@ QString DemoServos::ptkPort(QString *error)
         return QString();
     m_ptk = std::move(simulator);
     return m_ptk->linkPath();
+}
+
+QString DemoServos::feetechPort(QString *error)
+{
+    if (m_feetech)
+        return m_feetech->linkPath();
+    if (!ensureFolder(error))
+        return QString();
+    SimulatorOptions options;
+    options.kind = SimulatorOptions::Kind::Feetech;
+    options.linkPath = m_folder->filePath(QStringLiteral("feetech-bus"));
+    // A robot arm's bus: three STS3215 joints, an SCS15 gripper and an HLS wrist, all at the
+    // STS default rate. The EEPROM lives in the demo folder for as long as the program runs.
+    options.servos = {{1, QStringLiteral("STS3215"), 1000000},
+                      {2, QStringLiteral("STS3215"), 1000000},
+                      {3, QStringLiteral("STS3215"), 1000000},
+                      {4, QStringLiteral("SCS15"), 1000000},
+                      {5, QStringLiteral("HLS"), 1000000}};
+    options.statePath = m_folder->filePath(QStringLiteral("feetech-bus.json"));
+    auto simulator = std::make_unique<SimulatorThread>();
+    if (!simulator->start(options, error))
+        return QString();
+    m_feetech = std::move(simulator);
+    return m_feetech->linkPath();
 }
 
 } // namespace sim

@@ -21,12 +21,15 @@ public:
 
     // The port of the simulated PTK servo (empty and *error when it cannot start).
     QString ptkPort(QString *error);
+    // The port of the simulated Feetech bus: three STS3215, an SCS15 and an HLS at 1 Mbps.
+    QString feetechPort(QString *error);
 
 private:
     bool ensureFolder(QString *error);
 
     std::unique_ptr<QTemporaryDir> m_folder;
     std::unique_ptr<SimulatorThread> m_ptk;
+    std::unique_ptr<SimulatorThread> m_feetech;
 };
 
 } // namespace sim

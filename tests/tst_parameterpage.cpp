@@ -1,7 +1,7 @@
 // Tests the PTK page: device values beside edits, edits reach the model, polls never overwrite.
 #include "model/parametermodel.h"
 #include "ptk/ptkparameters.h"
-#include "ptkpage.h"
+#include "parameterpage.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -39,7 +39,7 @@ void typeInto(QAbstractSpinBox *spin, const QString &text)
 
 } // namespace
 
-class TestPtkPage : public QObject
+class TestParameterPage : public QObject
 {
     Q_OBJECT
 
@@ -48,7 +48,7 @@ private slots:
     {
         m_parameters = std::make_unique<model::ParameterModel>();
         m_parameters->setDefinitions(ptk::modelDefinitions());
-        m_page = std::make_unique<PtkPage>(m_parameters.get());
+        m_page = std::make_unique<ParameterPage>(m_parameters.get());
     }
 
     void cleanup()
@@ -180,8 +180,8 @@ private slots:
     {
         auto *apply = m_page->findChild<QPushButton *>(QStringLiteral("applyButton"));
         auto *read = m_page->findChild<QPushButton *>(QStringLiteral("readButton"));
-        QSignalSpy applied(m_page.get(), &PtkPage::applyRequested);
-        QSignalSpy readAsked(m_page.get(), &PtkPage::readRequested);
+        QSignalSpy applied(m_page.get(), &ParameterPage::applyRequested);
+        QSignalSpy readAsked(m_page.get(), &ParameterPage::readRequested);
         readSampleServo(*m_parameters);
         QVERIFY(!apply->isEnabled());
         QVERIFY(!read->isEnabled());
@@ -203,8 +203,8 @@ private slots:
 
     void profileButtonsAskTheWindow()
     {
-        QSignalSpy save(m_page.get(), &PtkPage::saveProfileRequested);
-        QSignalSpy load(m_page.get(), &PtkPage::loadProfileRequested);
+        QSignalSpy save(m_page.get(), &ParameterPage::saveProfileRequested);
+        QSignalSpy load(m_page.get(), &ParameterPage::loadProfileRequested);
         m_page->findChild<QPushButton *>(QStringLiteral("saveProfileButton"))->click();
         m_page->findChild<QPushButton *>(QStringLiteral("loadProfileButton"))->click();
         QCOMPARE(save.size(), 1);
@@ -269,8 +269,8 @@ private slots:
 
 private:
     std::unique_ptr<model::ParameterModel> m_parameters;
-    std::unique_ptr<PtkPage> m_page;
+    std::unique_ptr<ParameterPage> m_page;
 };
 
-QTEST_MAIN(TestPtkPage)
-#include "tst_ptkpage.moc"
+QTEST_MAIN(TestParameterPage)
+#include "tst_parameterpage.moc"

@@ -1,8 +1,10 @@
-// The PTK page: the thirteen parameters grouped as a form, device value beside each edit.
+// A parameter form: grouped rows of device value, editor, unit and state, bound to a parameter
+// model.
 #pragma once
 
 #include <QHash>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 #include <QWidget>
 
@@ -19,14 +21,26 @@ struct Definition;
 // Binds editors to a model::ParameterModel by hand (no QDataWidgetMapper, which would overwrite
 // what the user is typing): edits go to the model as they are typed, and device updates reach
 // an editor only while the user is not typing in it.
-class PtkPage : public QWidget
+class ParameterPage : public QWidget
 {
     Q_OBJECT
 
 public:
-    // The caller sets the model's definitions (ptk::modelDefinitions()); the form follows
-    // them, and rebuilds itself if they are set again.
-    explicit PtkPage(model::ParameterModel *model, QWidget *parent = nullptr);
+    struct Options
+    {
+        QString objectName = QStringLiteral("parameterPage");
+        QString intro; // a line above the form; empty: the default explanation
+        QStringList keys; // the parameters to show; empty: all of them
+        int columns = 2; // of group boxes, side by side
+    };
+
+    // The form follows the model's definitions, and rebuilds itself if they are set again.
+    explicit ParameterPage(model::ParameterModel *model, QWidget *parent = nullptr);
+    ParameterPage(model::ParameterModel *model, const Options &options, QWidget *parent = nullptr);
+
+    // Shows another model's parameters (another servo); null leaves the form empty.
+    void setModel(model::ParameterModel *model);
+    model::ParameterModel *parameterModel() const { return m_model; }
 
     // The servo answers: Read and Apply may be used.
     void setLinkReady(bool ready);
@@ -59,6 +73,7 @@ private:
         QLabel *device = nullptr;
         QWidget *editor = nullptr;
         QLabel *unit = nullptr;
+        QLabel *storage = nullptr; // "EEPROM" where the value survives power-off
         QLabel *state = nullptr;
         bool typing = false; // the user typed since the editor last showed a model value
     };
@@ -77,6 +92,7 @@ private:
     const Row *findRow(const QString &key) const;
 
     model::ParameterModel *m_model = nullptr;
+    Options m_options;
     QWidget *m_form = nullptr; // the group boxes, rebuilt with the definitions
     QVBoxLayout *m_formLayout = nullptr;
     QVector<Row> m_rows;

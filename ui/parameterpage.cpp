@@ -1,5 +1,5 @@
-// The PTK page: grouped parameter form bound by hand to the parameter model, and its buttons.
-#include "ptkpage.h"
+// Parameter form: grouped rows bound by hand to the parameter model, and its buttons.
+#include "parameterpage.h"
 
 #include "model/parametermodel.h"
 
@@ -27,7 +27,15 @@ using model::State;
 
 namespace {
 
-enum GridColumn { LabelColumn, DeviceColumn, EditorColumn, UnitColumn, StateColumn, GridColumns };
+enum GridColumn {
+    LabelColumn,
+    DeviceColumn,
+    EditorColumn,
+    UnitColumn,
+    StorageColumn,
+    StateColumn,
+    GridColumns
+};
 
 int toInt(qint64 value)
 {
@@ -111,19 +119,22 @@ void setHighlighted(QWidget *editor, bool highlighted)
 
 } // namespace
 
-PtkPage::PtkPage(model::ParameterModel *model, QWidget *parent)
+ParameterPage::ParameterPage(model::ParameterModel *model, QWidget *parent)
+    : ParameterPage(model, Options(), parent)
+{ }
+
+ParameterPage::ParameterPage(model::ParameterModel *model, const Options &options, QWidget *parent)
     : QWidget(parent)
-    , m_model(model)
+    , m_options(options)
 {
-    Q_ASSERT(model);
-    setObjectName(QStringLiteral("ptkPage"));
+    setObjectName(options.objectName);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
 
     auto *scroll = new QScrollArea(this);
-    scroll->setObjectName(QStringLiteral("ptkScrollArea"));
+    scroll->setObjectName(options.objectName + QStringLiteral("ScrollArea"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     auto *scrolled = new QWidget(scroll);
@@ -189,18 +200,29 @@ PtkPage::PtkPage(model::ParameterModel *model, QWidget *parent)
     buttons->addWidget(m_revert);
     buttons->addWidget(m_apply);
 
-    connect(m_read, &QPushButton::clicked, this, &PtkPage::readRequested);
-    connect(m_apply, &QPushButton::clicked, this, &PtkPage::applyRequested);
-    connect(m_revert, &QPushButton::clicked, this, &PtkPage::revertAll);
-    connect(m_saveProfile, &QPushButton::clicked, this, &PtkPage::saveProfileRequested);
-    connect(m_loadProfile, &QPushButton::clicked, this, &PtkPage::loadProfileRequested);
+    connect(m_read, &QPushButton::clicked, this, &ParameterPage::readRequested);
+    connect(m_apply, &QPushButton::clicked, this, &ParameterPage::applyRequested);
+    connect(m_revert, &QPushButton::clicked, this, &ParameterPage::revertAll);
+    connect(m_saveProfile, &QPushButton::clicked, this, &ParameterPage::saveProfileRequested);
+    connect(m_loadProfile, &QPushButton::clicked, this, &ParameterPage::loadProfileRequested);
 
-    connect(m_model, &ParameterModel::parameterChanged, this, &PtkPage::refreshRow);
-    connect(m_model, &QAbstractItemModel::modelReset, this, &PtkPage::rebuild);
+    setModel(model);
+}
+
+void ParameterPage::setModel(model::ParameterModel *model)
+{
+    if (m_model)
+        disconnect(m_model, nullptr, this, nullptr);
+    m_model = model;
+    if (m_model) {
+        connect(m_model, &ParameterModel::parameterChanged, this, &ParameterPage::refreshRow);
+        connect(m_model, &QAbstractItemModel::modelReset, this, &ParameterPage::rebuild);
+        connect(m_model, &QObject::destroyed, this, [this] { setModel(nullptr); });
+    }
     rebuild();
 }
 
-void PtkPage::rebuild()
+void ParameterPage::rebuild()
 {
     m_rows.clear();
     m_rowIndex.clear();
@@ -209,19 +231,29 @@ void PtkPage::rebuild()
         delete item;
     }
 
-    auto *intro = new QLabel(tr("<b>Device</b> is what the servo reports. Edits are written "
-                                "only when you press <b>Apply</b>, then read back and verified."),
+    if (!m_model) {
+        updateButtons();
+        return;
+    }
+    auto *intro = new QLabel(m_options.intro.isEmpty()
+                                 ? tr("<b>Device</b> is what the servo reports. Edits are written "
+                                      "only when you press <b>Apply</b>, then read back and "
+                                      "verified.")
+                                 : m_options.intro,
                              m_form);
-    intro->setObjectName(QStringLiteral("ptkIntro"));
+    intro->setObjectName(QStringLiteral("pageIntro"));
     intro->setWordWrap(true);
     intro->setForegroundRole(QPalette::PlaceholderText);
     m_formLayout->addWidget(intro);
 
-    // Groups in the order the definitions first name them.
+    // Groups in the order the shown definitions first name them.
     const QVector<Definition> &definitions = m_model->definitions();
+    const auto shown = [this](const Definition &definition) {
+        return m_options.keys.isEmpty() || m_options.keys.contains(definition.key);
+    };
     QStringList groups;
     for (const Definition &definition : definitions) {
-        if (!groups.contains(definition.group))
+        if (shown(definition) && !groups.contains(definition.group))
             groups.append(definition.group);
     }
 
@@ -235,7 +267,8 @@ void PtkPage::rebuild()
     int columnRows[2] = {0, 0};
     for (QVBoxLayout *column : columnLayouts) {
         column->setSpacing(12);
-        groupColumns->addLayout(column, 1);
+        // A second column that gets no groups takes no room.
+        groupColumns->addLayout(column, column == columnLayouts[0] || m_options.columns > 1);
     }
     m_formLayout->addWidget(groupArea);
 
@@ -260,7 +293,7 @@ void PtkPage::rebuild()
         int gridRow = 1;
         for (int modelRow = 0; modelRow < definitions.size(); ++modelRow) {
             const Definition &definition = definitions.at(modelRow);
-            if (definition.group != group)
+            if (definition.group != group || !shown(definition))
                 continue;
             Row row;
             row.key = definition.key;
@@ -275,6 +308,17 @@ void PtkPage::rebuild()
             row.device->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
             row.device->setTextInteractionFlags(Qt::TextSelectableByMouse);
             row.unit = new QLabel(definition.unit, box);
+            if (definition.storage == model::Storage::Eeprom) {
+                row.storage = new QLabel(tr("EEPROM"), box);
+                row.storage->setObjectName(QStringLiteral("storage_") + definition.key);
+                row.storage->setForegroundRole(QPalette::PlaceholderText);
+                QFont small = row.storage->font();
+                small.setPointSizeF(small.pointSizeF() * 0.85);
+                row.storage->setFont(small);
+                row.storage->setToolTip(tr("Kept in the servo's EEPROM: written with the lock "
+                                           "opened and closed again, and kept after power-off"));
+                grid->addWidget(row.storage, gridRow, StorageColumn);
+            }
             row.state = new QLabel(box);
             row.state->setObjectName(QStringLiteral("state_") + definition.key);
             grid->addWidget(row.label, gridRow, LabelColumn);
@@ -287,7 +331,7 @@ void PtkPage::rebuild()
             m_rows.append(row);
         }
         grid->setColumnStretch(GridColumns, 1);
-        const int column = columnRows[1] < columnRows[0] ? 1 : 0;
+        const int column = m_options.columns > 1 && columnRows[1] < columnRows[0] ? 1 : 0;
         columnLayouts[column]->addWidget(box);
         columnRows[column] += gridRow;
     }
@@ -334,14 +378,14 @@ void PtkPage::rebuild()
         formWidth = std::max(formWidth, grid->minimumSize().width());
     }
     // Room for the longest state text and its neighbours to breathe.
-    m_form->setMaximumWidth(std::max(2 * formWidth + 16 + 60, 640));
+    m_form->setMaximumWidth(std::max(std::max(m_options.columns, 1) * formWidth + 16 + 60, 640));
 
     for (Row &row : m_rows)
         updateRow(row);
     updateButtons();
 }
 
-QWidget *PtkPage::createEditor(const model::Definition &definition)
+QWidget *ParameterPage::createEditor(const model::Definition &definition)
 {
     const QString key = definition.key;
     QWidget *editor = nullptr;
@@ -395,7 +439,7 @@ QWidget *PtkPage::createEditor(const model::Definition &definition)
     return editor;
 }
 
-bool PtkPage::eventFilter(QObject *watched, QEvent *event)
+bool ParameterPage::eventFilter(QObject *watched, QEvent *event)
 {
     if (event->type() == QEvent::Wheel) {
         auto *widget = qobject_cast<QWidget *>(watched);
@@ -408,8 +452,10 @@ bool PtkPage::eventFilter(QObject *watched, QEvent *event)
     return QWidget::eventFilter(watched, event);
 }
 
-void PtkPage::editorChanged(const QString &key)
+void ParameterPage::editorChanged(const QString &key)
 {
+    if (!m_model)
+        return;
     Row *row = findRow(key);
     const Definition *definition = m_model->definition(key);
     if (!row || !definition)
@@ -436,7 +482,7 @@ void PtkPage::editorChanged(const QString &key)
     }
 }
 
-void PtkPage::editorFinished(const QString &key)
+void ParameterPage::editorFinished(const QString &key)
 {
     Row *row = findRow(key);
     if (!row || !row->typing)
@@ -450,15 +496,17 @@ void PtkPage::editorFinished(const QString &key)
     updateRow(*row);
 }
 
-void PtkPage::refreshRow(const QString &key)
+void ParameterPage::refreshRow(const QString &key)
 {
     if (Row *row = findRow(key))
         updateRow(*row);
     updateButtons();
 }
 
-void PtkPage::updateRow(Row &row)
+void ParameterPage::updateRow(Row &row)
 {
+    if (!m_model)
+        return;
     const Definition *definition = m_model->definition(row.key);
     if (!definition)
         return;
@@ -519,7 +567,7 @@ void PtkPage::updateRow(Row &row)
         showUnread(row);
 }
 
-void PtkPage::showUnread(Row &row)
+void ParameterPage::showUnread(Row &row)
 {
     // A number in an unread editor would look like the servo's value; show a dash instead.
     const QSignalBlocker blocker(row.editor);
@@ -534,9 +582,11 @@ void PtkPage::showUnread(Row &row)
     }
 }
 
-void PtkPage::showValue(Row &row, qint64 raw)
+void ParameterPage::showValue(Row &row, qint64 raw)
 {
-    const Definition *definition = m_model->definition(row.key);
+    const Definition *definition = m_model ? m_model->definition(row.key) : nullptr;
+    if (!definition)
+        return;
     const QSignalBlocker blocker(row.editor); // showing a value is not an edit
     if (auto *combo = qobject_cast<QComboBox *>(row.editor)) {
         combo->setCurrentIndex(combo->findData(QVariant::fromValue<qlonglong>(raw)));
@@ -549,31 +599,33 @@ void PtkPage::showValue(Row &row, qint64 raw)
     }
 }
 
-void PtkPage::updateButtons()
+void ParameterPage::updateButtons()
 {
-    const bool edits = m_model->hasEdits();
-    m_read->setEnabled(m_linkReady && !m_busy);
-    m_apply->setEnabled(m_linkReady && edits && !m_busy);
+    const bool present = m_model != nullptr;
+    const bool edits = present && m_model->hasEdits();
+    m_read->setEnabled(present && m_linkReady && !m_busy);
+    m_apply->setEnabled(present && m_linkReady && edits && !m_busy);
     m_revert->setEnabled(edits && !m_busy);
-    m_saveProfile->setEnabled(!m_busy);
-    m_loadProfile->setEnabled(!m_busy);
+    m_saveProfile->setEnabled(present && !m_busy);
+    m_loadProfile->setEnabled(present && !m_busy);
 }
 
-void PtkPage::revertAll()
+void ParameterPage::revertAll()
 {
     // An explicit Revert wins over a half-typed value.
     for (Row &row : m_rows)
         row.typing = false;
-    m_model->revertAll();
+    if (m_model)
+        m_model->revertAll();
 }
 
-void PtkPage::setLinkReady(bool ready)
+void ParameterPage::setLinkReady(bool ready)
 {
     m_linkReady = ready;
     updateButtons();
 }
 
-void PtkPage::setBusy(bool busy, const QString &what)
+void ParameterPage::setBusy(bool busy, const QString &what)
 {
     m_busy = busy;
     m_busyLabel->setText(what);
@@ -586,37 +638,37 @@ void PtkPage::setBusy(bool busy, const QString &what)
     updateButtons();
 }
 
-void PtkPage::setProgress(int done, int total)
+void ParameterPage::setProgress(int done, int total)
 {
     m_progress->setRange(0, std::max(total, 0));
     m_progress->setValue(std::clamp(done, 0, std::max(total, 0)));
 }
 
-QWidget *PtkPage::editor(const QString &key) const
+QWidget *ParameterPage::editor(const QString &key) const
 {
     const Row *row = findRow(key);
     return row ? row->editor : nullptr;
 }
 
-QLabel *PtkPage::deviceLabel(const QString &key) const
+QLabel *ParameterPage::deviceLabel(const QString &key) const
 {
     const Row *row = findRow(key);
     return row ? row->device : nullptr;
 }
 
-QLabel *PtkPage::stateLabel(const QString &key) const
+QLabel *ParameterPage::stateLabel(const QString &key) const
 {
     const Row *row = findRow(key);
     return row ? row->state : nullptr;
 }
 
-PtkPage::Row *PtkPage::findRow(const QString &key)
+ParameterPage::Row *ParameterPage::findRow(const QString &key)
 {
     const int index = m_rowIndex.value(key, -1);
     return index < 0 ? nullptr : &m_rows[index];
 }
 
-const PtkPage::Row *PtkPage::findRow(const QString &key) const
+const ParameterPage::Row *ParameterPage::findRow(const QString &key) const
 {
     const int index = m_rowIndex.value(key, -1);
     return index < 0 ? nullptr : &m_rows.at(index);

@@ -1,0 +1,690 @@
+// Feetech workspace: the servo tree, the Settings and Memory table pages, and the guided flows.
+#include "feetechworkspace.h"
+
+#include "feetech/busclient.h"
+#include "feetech/servoparameters.h"
+#include "parameterpage.h"
+#include "profileactions.h"
+#include "registertablemodel.h"
+#include "scandialog.h"
+
+#include <QCheckBox>
+#include <QDateTime>
+#include <QDir>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSortFilterProxyModel>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QTableView>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace {
+
+// RAM rows of the shown servo are read again this often while the table is on screen.
+constexpr int kLiveRefreshMs = 250;
+
+enum TreeColumn { ServoColumn, ModelColumn, FamilyColumn, FirmwareColumn, TreeColumns };
+constexpr int kIdRole = Qt::UserRole + 1;
+constexpr int kBaudRole = Qt::UserRole + 2;
+
+QString baudText(qint32 baud)
+{
+    return baud % 1000000 == 0 ? FeetechWorkspace::tr("%1 Mbps").arg(baud / 1000000)
+                               : FeetechWorkspace::tr("%L1 bps").arg(baud);
+}
+
+QStringList settingsKeys()
+{
+    QStringList keys;
+    for (const feetech::SettingsGroup &group : feetech::settingsGroups())
+        keys += group.keys;
+    return keys;
+}
+
+QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
+                          QWidget *parent)
+{
+    auto *button = new QPushButton(text, parent);
+    button->setObjectName(QLatin1String(name));
+    button->setToolTip(tip);
+    button->setAutoDefault(false);
+    return button;
+}
+
+} // namespace
+
+FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
+    : QWidget(parent)
+    , m_client(client)
+{
+    setObjectName(QStringLiteral("feetechWorkspace"));
+    m_scanOptions.bauds = {1000000};
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto *splitter = new QSplitter(Qt::Horizontal, this);
+    layout->addWidget(splitter);
+
+    // ---- left: scan controls and the servo tree
+    auto *left = new QWidget(splitter);
+    auto *leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 6, 0);
+    auto *scanRow = new QHBoxLayout;
+    m_scan = actionButton(tr("Scan…"), "scanButton",
+                          tr("Look for servos on the bus: choose IDs and baud rates"), left);
+    m_cancelScan = actionButton(tr("Cancel"), "cancelScanButton", tr("Stop the scan"), left);
+    m_cancelScan->hide();
+    scanRow->addWidget(m_scan);
+    scanRow->addWidget(m_cancelScan);
+    scanRow->addStretch(1);
+    leftLayout->addLayout(scanRow);
+    m_scanProgress = new QProgressBar(left);
+    m_scanProgress->setObjectName(QStringLiteral("scanProgress"));
+    m_scanProgress->setFormat(tr("%v of %m IDs"));
+    m_scanProgress->hide();
+    leftLayout->addWidget(m_scanProgress);
+    m_scanState = new QLabel(tr("Connect, then scan to find the servos."), left);
+    m_scanState->setObjectName(QStringLiteral("scanState"));
+    m_scanState->setWordWrap(true);
+    m_scanState->setForegroundRole(QPalette::PlaceholderText);
+    leftLayout->addWidget(m_scanState);
+    m_tree = new QTreeWidget(left);
+    m_tree->setObjectName(QStringLiteral("servoTree"));
+    m_tree->setColumnCount(TreeColumns);
+    m_tree->setHeaderLabels({tr("Servo"), tr("Model"), tr("Family"), tr("Firmware")});
+    m_tree->setRootIsDecorated(true);
+    m_tree->setUniformRowHeights(true);
+    m_tree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    leftLayout->addWidget(m_tree, 1);
+    splitter->addWidget(left);
+
+    // ---- right: the selected servo
+    auto *right = new QWidget(splitter);
+    auto *rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(6, 0, 0, 0);
+    m_header = new QLabel(right);
+    m_header->setObjectName(QStringLiteral("servoHeader"));
+    m_header->setWordWrap(true);
+    m_header->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    rightLayout->addWidget(m_header);
+
+    auto *actions = new QHBoxLayout;
+    m_changeId = actionButton(tr("Change ID…"), "changeIdButton",
+                              tr("Give the servo another ID; an ID in use is refused"), right);
+    m_changeBaud =
+        actionButton(tr("Change baud rate…"), "changeBaudButton",
+                     tr("Move the servo to another baud rate and follow it there"), right);
+    m_calibrate = actionButton(tr("Calibrate middle…"), "calibrateButton",
+                               tr("Make the horn's present position the middle (2048)"), right);
+    m_factoryReset = actionButton(tr("Factory reset…"), "factoryResetButton",
+                                  tr("Restore factory values (the ID is kept), after saving a "
+                                     "backup profile"),
+                                  right);
+    m_reboot =
+        actionButton(tr("Reboot"), "rebootButton",
+                     tr("Torque off, restart the servo and wait until it answers again"), right);
+    m_clearStatus = actionButton(tr("Clear status"), "clearStatusButton",
+                                 tr("Reset the servo's error status (instruction 0x0A)"), right);
+    for (QPushButton *button :
+         {m_changeId, m_changeBaud, m_calibrate, m_factoryReset, m_reboot, m_clearStatus})
+        actions->addWidget(button);
+    actions->addStretch(1);
+    rightLayout->addLayout(actions);
+
+    m_tabs = new QTabWidget(right);
+    m_tabs->setObjectName(QStringLiteral("servoTabs"));
+    ParameterPage::Options settingsOptions;
+    settingsOptions.objectName = QStringLiteral("feetechSettingsPage");
+    settingsOptions.keys = settingsKeys();
+    settingsOptions.columns = 1; // beside the servo tree there is room for one
+    settingsOptions.intro =
+        tr("The settings changed most, in real units. <b>EEPROM</b> values are written with the "
+           "lock opened and closed again and survive power-off. Changing the ID or the baud rate "
+           "asks first, then follows the servo.");
+    m_settings = new ParameterPage(nullptr, settingsOptions, m_tabs);
+    m_tabs->addTab(m_settings, tr("Settings"));
+
+    auto *memory = new QWidget(m_tabs);
+    memory->setObjectName(QStringLiteral("memoryTablePage"));
+    auto *memoryLayout = new QVBoxLayout(memory);
+    auto *memoryTop = new QHBoxLayout;
+    m_filterEdit = new QLineEdit(memory);
+    m_filterEdit->setObjectName(QStringLiteral("registerFilter"));
+    m_filterEdit->setPlaceholderText(tr("Filter registers"));
+    m_filterEdit->setClearButtonEnabled(true);
+    m_live = new QCheckBox(tr("Refresh RAM live"), memory);
+    m_live->setObjectName(QStringLiteral("liveCheck"));
+    m_live->setChecked(true);
+    m_live->setToolTip(tr("Read the RAM registers (present position, load, voltage…) "
+                          "several times a second while this table is shown"));
+    memoryTop->addWidget(m_filterEdit, 1);
+    memoryTop->addWidget(m_live);
+    memoryLayout->addLayout(memoryTop);
+    m_registers = new RegisterTableModel(this);
+    m_filter = new QSortFilterProxyModel(this);
+    m_filter->setSourceModel(m_registers);
+    m_filter->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    m_filter->setFilterKeyColumn(-1);
+    m_table = new QTableView(memory);
+    m_table->setObjectName(QStringLiteral("memoryTable"));
+    m_table->setModel(m_filter);
+    m_table->setAlternatingRowColors(true);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                             | QAbstractItemView::AnyKeyPressed);
+    m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
+    m_table->horizontalHeader()->setStretchLastSection(false);
+    m_table->horizontalHeader()->setSectionResizeMode(RegisterTableModel::LabelColumn,
+                                                      QHeaderView::Stretch);
+    memoryLayout->addWidget(m_table, 1);
+    auto *memoryButtons = new QHBoxLayout;
+    m_tableRead =
+        actionButton(tr("Read"), "tableReadButton", tr("Read every register of the servo"), memory);
+    m_tableRevert = actionButton(tr("Revert"), "tableRevertButton", tr("Drop every edit"), memory);
+    m_tableApply = actionButton(tr("Apply"), "tableApplyButton",
+                                tr("Write the edited registers, then read them back"), memory);
+    QFont bold = m_tableApply->font();
+    bold.setBold(true);
+    m_tableApply->setFont(bold);
+    memoryButtons->addStretch(1);
+    memoryButtons->addWidget(m_tableRead);
+    memoryButtons->addWidget(m_tableRevert);
+    memoryButtons->addWidget(m_tableApply);
+    memoryLayout->addLayout(memoryButtons);
+    m_tabs->addTab(memory, tr("Memory table"));
+    rightLayout->addWidget(m_tabs, 1);
+    splitter->addWidget(right);
+    splitter->setStretchFactor(0, 0);
+    splitter->setStretchFactor(1, 1);
+    splitter->setSizes({330, 850});
+
+    m_liveTimer = new QTimer(this);
+    m_liveTimer->setInterval(kLiveRefreshMs);
+    connect(m_liveTimer, &QTimer::timeout, this, &FeetechWorkspace::refreshLive);
+    m_liveTimer->start();
+
+    connect(m_scan, &QPushButton::clicked, this, &FeetechWorkspace::openScanDialog);
+    connect(m_cancelScan, &QPushButton::clicked, m_client, &feetech::BusClient::cancelScan);
+    connect(m_tree, &QTreeWidget::itemSelectionChanged, this,
+            &FeetechWorkspace::onSelectionChanged);
+    connect(m_changeId, &QPushButton::clicked, this, &FeetechWorkspace::changeId);
+    connect(m_changeBaud, &QPushButton::clicked, this, &FeetechWorkspace::changeBaud);
+    connect(m_calibrate, &QPushButton::clicked, this, &FeetechWorkspace::calibrateMiddle);
+    connect(m_factoryReset, &QPushButton::clicked, this, &FeetechWorkspace::factoryReset);
+    connect(m_reboot, &QPushButton::clicked, this,
+            [this] { run(&feetech::BusClient::reboot, tr("Restarting the servo…")); });
+    connect(m_clearStatus, &QPushButton::clicked, this,
+            [this] { run(&feetech::BusClient::clearStatus, tr("Clearing the status…")); });
+    connect(m_filterEdit, &QLineEdit::textChanged, m_filter,
+            &QSortFilterProxyModel::setFilterFixedString);
+    connect(m_registers, &RegisterTableModel::editRefused, this, &FeetechWorkspace::problem);
+
+    const auto readCurrent = [this] {
+        if (currentIndex() >= 0)
+            m_client->readServo(currentIndex());
+    };
+    connect(m_settings, &ParameterPage::readRequested, this, readCurrent);
+    connect(m_tableRead, &QPushButton::clicked, this, readCurrent);
+    connect(m_settings, &ParameterPage::applyRequested, this, &FeetechWorkspace::apply);
+    connect(m_tableApply, &QPushButton::clicked, this, &FeetechWorkspace::apply);
+    connect(m_tableRevert, &QPushButton::clicked, this, [this] {
+        if (auto *parameters = m_client->parameters(currentIndex()))
+            parameters->revertAll();
+    });
+    connect(m_settings, &ParameterPage::saveProfileRequested, this,
+            &FeetechWorkspace::chooseProfileToSave);
+    connect(m_settings, &ParameterPage::loadProfileRequested, this,
+            &FeetechWorkspace::chooseProfileToLoad);
+
+    connect(m_client, &feetech::BusClient::servosChanged, this, &FeetechWorkspace::rebuildTree);
+    connect(m_client, &feetech::BusClient::servoUpdated, this, [this](int index) {
+        if (index == currentIndex())
+            updateHeader();
+        updateActions();
+    });
+    connect(m_client, &feetech::BusClient::statusChanged, this, [this] { updateActions(); });
+    connect(m_client, &feetech::BusClient::busyChanged, this, [this](bool busy) {
+        if (!busy || !m_client->isScanning())
+            m_settings->setBusy(busy && !m_client->isScanning(), tr("Working…"));
+        updateActions();
+    });
+    connect(m_client, &feetech::BusClient::progress, m_settings, &ParameterPage::setProgress);
+    connect(m_client, &feetech::BusClient::operationFinished, this,
+            &FeetechWorkspace::onOperationFinished);
+    connect(m_client, &feetech::BusClient::scanProgress, this,
+            [this](int done, int total, qint32 baud) {
+                m_scanProgress->setRange(0, std::max(total, 1));
+                m_scanProgress->setValue(done);
+                m_scanState->setText(tr("Scanning at %1…").arg(baudText(baud)));
+            });
+    connect(m_client, &feetech::BusClient::scanFinished, this,
+            [this](bool completed, const QString &text) {
+                m_scanProgress->hide();
+                m_cancelScan->hide();
+                m_scan->show();
+                m_scanState->setText(text);
+                if (!completed)
+                    emit problem(text);
+                if (!m_current && m_client->servoCount() > 0)
+                    selectServo(m_client->servo(0).info.id, m_client->servo(0).info.baud);
+                updateActions();
+            });
+    rebuildTree();
+    showServo();
+}
+
+int FeetechWorkspace::currentIndex() const
+{
+    return m_current ? m_client->indexOf(m_current->first, m_current->second) : -1;
+}
+
+void FeetechWorkspace::setPortName(const QString &name)
+{
+    m_portName = name;
+    rebuildTree();
+}
+
+void FeetechWorkspace::selectServo(quint8 id, qint32 baud)
+{
+    m_current = std::make_pair(id, baud);
+    rebuildTree();
+    showServo();
+}
+
+void FeetechWorkspace::openScanDialog()
+{
+    ScanDialog dialog(m_scanOptions, this);
+    if (dialog.exec() == QDialog::Accepted)
+        startScan(dialog.options());
+}
+
+void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
+{
+    if (!m_client->isConnected()) {
+        emit problem(tr("Connect to the bus before scanning."));
+        return;
+    }
+    m_scanOptions = options;
+    m_current.reset();
+    m_scan->hide();
+    m_cancelScan->show();
+    m_scanProgress->setValue(0);
+    m_scanProgress->show();
+    m_client->scan(options);
+    showServo();
+}
+
+void FeetechWorkspace::rebuildTree()
+{
+    const QSignalBlocker quiet(m_tree);
+    m_tree->clear();
+    if (m_client->servoCount() == 0) {
+        updateActions();
+        return;
+    }
+    auto *port = new QTreeWidgetItem(m_tree, {m_portName.isEmpty() ? tr("Bus") : m_portName});
+    QTreeWidgetItem *baudItem = nullptr;
+    qint32 baud = 0;
+    QTreeWidgetItem *selected = nullptr;
+    for (int i = 0; i < m_client->servoCount(); ++i) {
+        const feetech::ServoInfo &info = m_client->servo(i).info;
+        if (!baudItem || info.baud != baud) {
+            baud = info.baud;
+            baudItem = new QTreeWidgetItem(port, {baudText(baud)});
+        }
+        const QString family =
+            info.model.family ? feetech::familyName(*info.model.family) : tr("unknown");
+        auto *item = new QTreeWidgetItem(
+            baudItem, {tr("ID %1").arg(info.id), info.model.name, family, info.firmware()});
+        item->setData(ServoColumn, kIdRole, info.id);
+        item->setData(ServoColumn, kBaudRole, info.baud);
+        item->setToolTip(ModelColumn,
+                         tr("Model number %1 (major %2, minor %3)")
+                             .arg(info.modelNumber())
+                             .arg(info.modelMajor)
+                             .arg(info.modelMinor));
+        if (!info.hasTable())
+            item->setToolTip(FamilyColumn,
+                             tr("No register table is known for this model: its "
+                                "memory is shown as raw bytes, read-only."));
+        if (m_current && m_current->first == info.id && m_current->second == info.baud)
+            selected = item;
+    }
+    m_tree->expandAll();
+    if (selected)
+        selected->setSelected(true);
+    updateActions();
+}
+
+void FeetechWorkspace::onSelectionChanged()
+{
+    const QList<QTreeWidgetItem *> items = m_tree->selectedItems();
+    if (items.isEmpty() || !items.first()->data(ServoColumn, kIdRole).isValid())
+        return;
+    const QTreeWidgetItem *item = items.first();
+    m_current = std::make_pair(quint8(item->data(ServoColumn, kIdRole).toUInt()),
+                               qint32(item->data(ServoColumn, kBaudRole).toInt()));
+    showServo();
+}
+
+void FeetechWorkspace::showServo()
+{
+    const int index = currentIndex();
+    model::ParameterModel *parameters = m_client->parameters(index);
+    if (m_settings->parameterModel() != parameters)
+        m_settings->setModel(parameters);
+    m_registers->setServo(index >= 0 ? &m_client->servo(index).info.table() : nullptr, parameters);
+    m_table->resizeColumnsToContents();
+    if (index >= 0 && !m_client->servo(index).read && !m_client->isBusy())
+        m_client->readServo(index);
+    updateHeader();
+    updateActions();
+}
+
+QString FeetechWorkspace::servoTitle() const
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return {};
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    return tr("servo %1 (%2)").arg(info.id).arg(info.model.name);
+}
+
+void FeetechWorkspace::updateHeader()
+{
+    const int index = currentIndex();
+    if (index < 0) {
+        m_header->setText(m_client->servoCount() > 0
+                              ? tr("Choose a servo in the tree.")
+                              : tr("No servo yet: connect to the bus and scan."));
+        return;
+    }
+    const feetech::Servo &servo = m_client->servo(index);
+    const feetech::ServoInfo &info = servo.info;
+    const QString family =
+        info.model.family ? feetech::familyName(*info.model.family) : tr("unknown family");
+    QString status = tr("status not read yet");
+    if (servo.statusByte) {
+        const QStringList bits = feetech::statusBitNames(*servo.statusByte);
+        status = bits.isEmpty() ? tr("status OK")
+                                : tr("<span style='color:#b3261e'>status: %1</span>")
+                                      .arg(bits.join(QStringLiteral(", ")).toHtmlEscaped());
+    }
+    QString text = tr("<b>ID %1 · %2</b> &nbsp; model %3 · %4 family · firmware %5 · %6 · %7")
+                       .arg(info.id)
+                       .arg(info.model.name.toHtmlEscaped())
+                       .arg(info.modelNumber())
+                       .arg(family)
+                       .arg(info.firmware())
+                       .arg(baudText(info.baud))
+                       .arg(status);
+    if (!info.hasTable())
+        text += QStringLiteral("<br>")
+            + tr("No register table is known for this model, so nothing is guessed: the Memory "
+                 "table shows its raw bytes, read-only.");
+    m_header->setText(text);
+}
+
+void FeetechWorkspace::updateActions()
+{
+    const int index = currentIndex();
+    const bool connected = m_client->isConnected();
+    const bool idle = !m_client->isBusy();
+    const bool known = index >= 0 && m_client->servo(index).info.hasTable();
+    const bool ready = connected && idle && index >= 0;
+    m_scan->setEnabled(connected && idle);
+    m_changeId->setEnabled(ready && known);
+    m_changeBaud->setEnabled(ready && known);
+    const bool calibration = known
+        && feetech::middleCalibration(m_client->servo(index).info)
+            != feetech::MiddleCalibration::Unsupported;
+    m_calibrate->setEnabled(ready && calibration);
+    m_calibrate->setToolTip(calibration || !known
+                                ? tr("Make the horn's present position the middle (2048)")
+                                : tr("SCS servos have no offset register: not available"));
+    m_factoryReset->setEnabled(ready && known);
+    m_reboot->setEnabled(ready);
+    m_clearStatus->setEnabled(ready);
+    m_settings->setLinkReady(ready && known);
+    model::ParameterModel *parameters = m_client->parameters(index);
+    const bool edits = parameters && parameters->hasEdits();
+    m_tableRead->setEnabled(ready);
+    m_tableApply->setEnabled(ready && known && edits);
+    m_tableRevert->setEnabled(idle && edits);
+    m_registers->setEditable(connected && idle && known);
+}
+
+void FeetechWorkspace::refreshLive()
+{
+    const int index = currentIndex();
+    if (index < 0 || !m_live->isChecked() || !isVisible() || m_tabs->currentIndex() != 1
+        || !m_client->isConnected() || m_client->isBusy() || !m_client->servo(index).read)
+        return;
+    m_client->refreshRam(index);
+}
+
+void FeetechWorkspace::apply()
+{
+    const int index = currentIndex();
+    model::ParameterModel *parameters = m_client->parameters(index);
+    if (!parameters)
+        return;
+    const auto newId = parameters->pendingValue(QStringLiteral("id"));
+    const auto newBaud = parameters->pendingValue(QStringLiteral("baud_rate"));
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    if (newId || newBaud) {
+        QStringList changes;
+        if (newId)
+            changes.append(tr("its ID from %1 to %2").arg(info.id).arg(*newId));
+        if (newBaud)
+            changes.append(
+                tr("its baud rate from %1 to %2")
+                    .arg(baudText(info.baud), baudText(feetech::baudForCode(int(*newBaud)))));
+        const auto answer = QMessageBox::question(
+            this, tr("Change how the servo is reached?"),
+            tr("This changes %1.<br><br>ServoBench writes it to EEPROM with the lock opened "
+               "and closed again, then finds the servo at its new address and confirms it "
+               "there. Other programs and robot code must use the new address afterwards.")
+                .arg(changes.join(tr(" and "))),
+            QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Ok)
+            return;
+    }
+    QString error;
+    if (!m_client->applyAll(index, &error))
+        emit problem(tr("Nothing was written: %1").arg(error));
+}
+
+void FeetechWorkspace::run(bool (feetech::BusClient::*operation)(int, QString *),
+                           const QString &what)
+{
+    QString error;
+    if (!(m_client->*operation)(currentIndex(), &error))
+        emit problem(error);
+    else
+        emit message(what);
+}
+
+void FeetechWorkspace::changeId()
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return;
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    QStringList used;
+    for (const int id : m_client->idsInUse())
+        used.append(QString::number(id));
+    bool ok = false;
+    const int newId = QInputDialog::getInt(
+        this, tr("Change ID"),
+        tr("New ID for %1 (IDs found on this bus: %2).\nAn ID in use is refused.")
+            .arg(servoTitle(), used.join(QStringLiteral(", "))),
+        info.id, 0, feetech::kMaxServoId, 1, &ok);
+    if (!ok || newId == info.id)
+        return;
+    if (m_client->idsInUse().contains(newId)) {
+        emit problem(tr("ID %1 is already in use on this bus; nothing was written.").arg(newId));
+        return;
+    }
+    QString error;
+    if (!m_client->changeId(index, newId, &error))
+        emit problem(error);
+}
+
+void FeetechWorkspace::changeBaud()
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return;
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    QStringList rates;
+    for (const qint32 rate : feetech::baudRates())
+        rates.append(QString::number(rate));
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(
+        this, tr("Change baud rate"),
+        tr("New baud rate for %1 (now %2). ServoBench follows the servo to the new rate and "
+           "confirms it there.")
+            .arg(servoTitle(), baudText(info.baud)),
+        rates, int(rates.indexOf(QString::number(info.baud))), false, &ok);
+    if (!ok || chosen.toInt() == info.baud)
+        return;
+    QString error;
+    if (!m_client->changeBaud(index, chosen.toInt(), &error))
+        emit problem(error);
+}
+
+void FeetechWorkspace::calibrateMiddle()
+{
+    const auto answer = QMessageBox::question(
+        this, tr("Calibrate middle"),
+        tr("The horn's present position becomes the middle (2048) of %1. Turn the horn to "
+           "where the middle should be first; the new offset is stored in EEPROM.")
+            .arg(servoTitle()),
+        QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer == QMessageBox::Ok)
+        run(&feetech::BusClient::calibrateMiddle, tr("Calibrating the middle…"));
+}
+
+void FeetechWorkspace::factoryReset()
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return;
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    // A backup first, always: a factory reset cannot be undone any other way.
+    const QString suggested =
+        QStringLiteral("servo-%1-backup-%2.json")
+            .arg(info.id)
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss")));
+    QMessageBox::information(this, tr("Factory reset"),
+                             tr("First save a backup profile of %1; the reset only starts once "
+                                "it is saved.")
+                                 .arg(servoTitle()));
+    const QString path = profileactions::chooseSavePath(this, suggested);
+    if (path.isEmpty())
+        return;
+    if (!saveProfile(path))
+        return;
+    const auto answer = QMessageBox::warning(
+        this, tr("Factory reset"),
+        tr("Backup saved to %1.<br><br>Restore the factory values of %2? Everything but the ID "
+           "returns to what the servo left the factory with, possibly including its baud "
+           "rate; ServoBench looks for it at every rate afterwards.")
+            .arg(QDir::toNativeSeparators(path).toHtmlEscaped(), servoTitle()),
+        QMessageBox::Reset | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer == QMessageBox::Reset)
+        run(&feetech::BusClient::factoryReset, tr("Restoring factory values…"));
+}
+
+void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &result)
+{
+    using feetech::Operation;
+    if (result.ok && m_current
+        && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
+            || result.operation == Operation::FactoryReset))
+        m_current = std::make_pair(result.servo.id, result.servo.baud);
+    if (result.ok)
+        emit message(result.message);
+    else
+        emit problem(result.message);
+    rebuildTree();
+    showServo();
+}
+
+void FeetechWorkspace::chooseProfileToSave()
+{
+    const int index = currentIndex();
+    if (index < 0) {
+        emit problem(tr("Choose a servo first."));
+        return;
+    }
+    const QString path = profileactions::chooseSavePath(
+        this, QStringLiteral("servo-%1.json").arg(m_client->servo(index).info.id));
+    if (!path.isEmpty() && saveProfile(path))
+        emit message(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
+}
+
+bool FeetechWorkspace::saveProfile(const QString &path)
+{
+    const int index = currentIndex();
+    if (index < 0 || !m_client->servo(index).info.hasTable()) {
+        emit problem(tr("Only a servo of a known model can be saved as a profile."));
+        return false;
+    }
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    QString error;
+    if (!profileactions::save(path, *m_client->parameters(index),
+                              feetech::familyKey(*info.model.family), info.model.name,
+                              feetech::profileDefinitions(info.table()), &error)) {
+        emit problem(error);
+        return false;
+    }
+    return true;
+}
+
+void FeetechWorkspace::chooseProfileToLoad()
+{
+    const QString path = profileactions::chooseLoadPath(this);
+    if (!path.isEmpty())
+        loadProfile(path);
+}
+
+void FeetechWorkspace::loadProfile(const QString &path)
+{
+    const int index = currentIndex();
+    if (index < 0 || !m_client->servo(index).info.hasTable()) {
+        emit problem(tr("Choose a servo of a known model first."));
+        return;
+    }
+    if (m_client->isBusy()) {
+        emit problem(tr("Wait for the running operation to finish before loading a profile."));
+        return;
+    }
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    QString error;
+    switch (profileactions::loadAsEdits(this, path, feetech::familyKey(*info.model.family),
+                                        feetech::profileDefinitions(info.table()),
+                                        *m_client->parameters(index), &error)) {
+    case profileactions::LoadOutcome::Failed:
+        emit problem(error);
+        break;
+    case profileactions::LoadOutcome::AlreadyEqual:
+        emit message(tr("The servo already holds every value of this profile"));
+        break;
+    case profileactions::LoadOutcome::Cancelled:
+        break;
+    case profileactions::LoadOutcome::Loaded:
+        emit message(tr("Profile loaded as edits: review them, then Apply"));
+        break;
+    }
+}

@@ -1,0 +1,78 @@
+// Profile actions: file dialogs, save with a completeness check, load through the diff dialog.
+#include "profileactions.h"
+
+#include "profile/profile.h"
+#include "profilediffdialog.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QStandardPaths>
+
+namespace profileactions {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(ProfileActions)
+};
+
+QString documents()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+}
+
+} // namespace
+
+QString chooseSavePath(QWidget *parent, const QString &suggestedName)
+{
+    return QFileDialog::getSaveFileName(parent, Tr::tr("Save profile"),
+                                        documents() + u'/' + suggestedName,
+                                        Tr::tr("ServoBench profiles (*.json)"));
+}
+
+QString chooseLoadPath(QWidget *parent)
+{
+    return QFileDialog::getOpenFileName(parent, Tr::tr("Load profile"), documents(),
+                                        Tr::tr("ServoBench profiles (*.json)"));
+}
+
+bool save(const QString &path, const model::ParameterModel &parameters, const QString &family,
+          const QString &modelName, const QVector<model::Definition> &definitions, QString *error)
+{
+    const profile::Profile saved = profile::fromModel(parameters, family, modelName, true);
+    for (const model::Definition &definition : definitions) {
+        if (!saved.value(definition.key)) {
+            if (error)
+                *error = Tr::tr("Read the servo before saving a profile: not every value is "
+                                "known.");
+            return false;
+        }
+    }
+    return profile::save(path, saved, definitions, error);
+}
+
+LoadOutcome loadAsEdits(QWidget *parent, const QString &path, const QString &family,
+                        const QVector<model::Definition> &definitions,
+                        model::ParameterModel &parameters, QString *error)
+{
+    QString why;
+    const auto loaded = profile::load(path, family, definitions, &why);
+    if (!loaded) {
+        if (error)
+            *error = Tr::tr("The profile was not loaded: %1").arg(why);
+        return LoadOutcome::Failed;
+    }
+    const QVector<profile::DiffRow> rows = profile::diff(*loaded, parameters);
+    if (rows.isEmpty())
+        return LoadOutcome::AlreadyEqual;
+    ProfileDiffDialog dialog(QDir::toNativeSeparators(path), rows, parameters, parent);
+    if (dialog.exec() != QDialog::Accepted)
+        return LoadOutcome::Cancelled;
+    for (const profile::DiffRow &row : rows)
+        parameters.edit(row.key, row.file);
+    return LoadOutcome::Loaded;
+}
+
+} // namespace profileactions

@@ -1,0 +1,28 @@
+// Saving a servo's settings to a profile file and loading one back as edits, for every page.
+#pragma once
+
+#include "model/parametermodel.h"
+
+#include <QString>
+#include <QVector>
+
+class QWidget;
+
+namespace profileactions {
+
+// File dialogs in the user's documents folder; empty when cancelled.
+QString chooseSavePath(QWidget *parent, const QString &suggestedName);
+QString chooseLoadPath(QWidget *parent);
+
+// Saves what `parameters` holds (edits included) for `definitions`. Refuses while any of them
+// has not been read. False and *error (for the user) on failure.
+bool save(const QString &path, const model::ParameterModel &parameters, const QString &family,
+          const QString &modelName, const QVector<model::Definition> &definitions, QString *error);
+
+enum class LoadOutcome { Failed, AlreadyEqual, Cancelled, Loaded };
+// Validates the whole file, shows what it would change, and on OK turns those rows into edits.
+LoadOutcome loadAsEdits(QWidget *parent, const QString &path, const QString &family,
+                        const QVector<model::Definition> &definitions,
+                        model::ParameterModel &parameters, QString *error);
+
+} // namespace profileactions
