@@ -3,6 +3,7 @@
 
 #include "cli/arguments.h"
 #include "cli/decoder.h"
+#include "cli/feetechcommands.h"
 #include "cli/ptkcommands.h"
 #include "feetech/feetechpacket.h"
 #include "ptk/ptkparameters.h"
@@ -38,6 +39,20 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  ptk write NAME=VALUE...                change parameters (full sequence, verified)\n"
     "  ptk save FILE | ptk load FILE          save the servo to a profile / program one\n"
     "  ptk monitor [--duration S] [--csv]     poll continuously, one row per full refresh\n"
+    "  feetech scan [--baud N|all] [--ids A-B] [--thorough]\n"
+    "                                         find the servos on the bus (IDs 0-253)\n"
+    "  feetech ping --id N                    check that a servo answers; its model\n"
+    "  feetech read --id N                    read every register of a servo\n"
+    "  feetech get --id N KEY...              read some registers\n"
+    "  feetech set --id N KEY=VALUE...        write registers (register units), verified\n"
+    "  feetech save --id N FILE               save the servo's EEPROM settings to a profile\n"
+    "  feetech load --id N FILE               write the values of a profile that differ\n"
+    "  feetech set-id --id N NEW              give the servo a new ID (refused if taken)\n"
+    "  feetech set-baud --id N BAUD           move the servo to another baud rate (bps)\n"
+    "  feetech calibrate-middle --id N        make the present position the middle\n"
+    "  feetech factory-reset --id N [--backup FILE]\n"
+    "                                         save a backup profile, then restore factory values\n"
+    "  feetech reboot --id N                  restart the servo and wait for it\n"
     "  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each\n"
     "  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)\n"
     "  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values\n"
@@ -45,7 +60,8 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "      INSTRUCTION: ping read write reg-write action sync-write sync-read\n"
     "                   recovery reboot reset calibrate\n"
     "\n"
-    "options: --port PATH (device commands), --baud N (PTK: 115200),\n"
+    "options: --port PATH (device commands), --baud N (PTK: 115200; Feetech: the servo's\n"
+    "         rate, 1000000),\n"
     "         --echo auto|on|off (single-wire adapter echo; default auto)\n"
     "\n"
     "exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)\n");
@@ -66,9 +82,9 @@ public:
                 {QStringLiteral("port"), QStringLiteral("baud"), QStringLiteral("family"),
                  QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
                  QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
-                 QStringLiteral("duration")},
+                 QStringLiteral("duration"), QStringLiteral("backup")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
-                 QStringLiteral("help"), QStringLiteral("version")});
+                 QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);
@@ -90,6 +106,8 @@ public:
                 return packet(args, rest);
             if (command == QLatin1String("ptk"))
                 return runPtkCommand(args, rest, {m_out, m_err, m_json});
+            if (command == QLatin1String("feetech"))
+                return runFeetechCommand(args, rest, {m_out, m_err, m_json});
             throw UsageError {Tr::tr("unknown command \"%1\" (try servoctl --help)").arg(command)};
         } catch (const UsageError &error) {
             m_err << "servoctl: " << error.message << '\n';

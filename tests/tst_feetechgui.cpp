@@ -1,0 +1,206 @@
+// GUI tests of the Feetech workspace against a simulated bus: scan, tree, memory-table edits.
+#include "connectionbar.h"
+#include "feetech/busclient.h"
+#include "feetechworkspace.h"
+#include "mainwindow.h"
+#include "parameterpage.h"
+#include "registertablemodel.h"
+#include "sim/virtualfeetechservo.h"
+#include "simclient.h"
+
+#include <QAbstractItemView>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QtTest>
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+
+sim::SimulatorOptions busOptions(const QTemporaryDir &dir)
+{
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.linkPath = dir.filePath(QStringLiteral("bus"));
+    options.logPath = dir.filePath(QStringLiteral("bus.log"));
+    options.servos = {{1, QStringLiteral("STS3215"), k1M},
+                      {2, QStringLiteral("STS3215"), k1M},
+                      {3, QStringLiteral("SCS15"), k1M}};
+    return options;
+}
+
+// Presses the default button of the next message box that opens (a confirmation).
+void acceptNextMessageBox()
+{
+    QTimer::singleShot(0, [] {
+        QTRY_VERIFY(qobject_cast<QMessageBox *>(QApplication::activeModalWidget()));
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        box->button(QMessageBox::Ok)->click();
+    });
+}
+
+} // namespace
+
+class TestFeetechGui : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimulatorThread> m_simulator;
+    std::unique_ptr<MainWindow> m_window;
+
+    FeetechWorkspace *workspace() const { return m_window->feetechWorkspace(); }
+    feetech::BusClient *client() const { return m_window->feetechClient(); }
+
+    qint32 simulatorValue(quint8 id, const QString &key)
+    {
+        qint32 value = -1;
+        m_simulator->call([&](sim::Simulator &simulator) {
+            value = simulator.feetechBus()->findServo(id)->value(key);
+        });
+        return value;
+    }
+
+    void connectAndScan()
+    {
+        m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
+        m_window->connectToPort(m_simulator->linkPath());
+        QTRY_VERIFY(client()->isConnected());
+        feetech::ScanOptions options;
+        options.lastId = 10;
+        QSignalSpy finished(client(), &feetech::BusClient::scanFinished);
+        workspace()->startScan(options);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(client()->servoCount(), 3);
+        // The first servo is shown and read by itself.
+        QTRY_VERIFY(workspace()->currentIndex() >= 0
+                    && client()->servo(workspace()->currentIndex()).read);
+    }
+
+    QModelIndex valueIndex(const QString &key) const
+    {
+        QAbstractItemModel *model = workspace()->memoryTable()->model();
+        for (int row = 0; row < model->rowCount(); ++row) {
+            const QModelIndex index = model->index(row, RegisterTableModel::ValueColumn);
+            if (index.data(RegisterTableModel::KeyRole).toString() == key)
+                return index;
+        }
+        return {};
+    }
+
+private slots:
+    void init()
+    {
+        m_simulator = std::make_unique<sim::SimulatorThread>();
+        QString error;
+        QVERIFY2(m_simulator->start(busOptions(m_dir), &error), qPrintable(error));
+        m_window = std::make_unique<MainWindow>();
+        m_window->show();
+    }
+
+    void cleanup()
+    {
+        m_window.reset();
+        m_simulator.reset();
+    }
+
+    void scanFillsTheTreeByPortAndBaud()
+    {
+        connectAndScan();
+        QTreeWidget *tree = workspace()->servoTree();
+        QCOMPARE(tree->topLevelItemCount(), 1); // the port
+        QTreeWidgetItem *baud = tree->topLevelItem(0)->child(0);
+        QVERIFY(baud->text(0).contains(QLatin1String("1 Mbps")));
+        QCOMPARE(baud->childCount(), 3);
+        QCOMPARE(baud->child(0)->text(0), QStringLiteral("ID 1"));
+        QCOMPARE(baud->child(0)->text(1), QStringLiteral("STS3215"));
+        QCOMPARE(baud->child(2)->text(1), QStringLiteral("SCS15"));
+        QCOMPARE(baud->child(2)->text(2), QStringLiteral("SCS"));
+        // SCS has no offset register: no middle calibration offered.
+        tree->setCurrentItem(baud->child(2));
+        QTRY_VERIFY(client()->servo(workspace()->currentIndex()).info.id == 3);
+        QTRY_VERIFY(
+            !m_window->findChild<QPushButton *>(QStringLiteral("calibrateButton"))->isEnabled());
+    }
+
+    void memoryTableEditIsAppliedAndVerified()
+    {
+        connectAndScan();
+        workspace()->tabs()->setCurrentIndex(1);
+        QTableView *table = workspace()->memoryTable();
+        const QModelIndex cell = valueIndex(QStringLiteral("max_temperature"));
+        QVERIFY(cell.isValid());
+        QTRY_VERIFY(cell.flags() & Qt::ItemIsEditable);
+        // Typed into the cell as a person would.
+        table->setCurrentIndex(cell);
+        table->edit(cell);
+        auto *editor = table->findChild<QLineEdit *>();
+        QVERIFY(editor);
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("66"));
+        QTest::keyClick(editor, Qt::Key_Return); // the delegate commits on its next turn
+        QTRY_COMPARE(valueIndex(QStringLiteral("max_temperature")).data().toString(),
+                     QStringLiteral("66 °C"));
+        QVERIFY(valueIndex(QStringLiteral("max_temperature"))
+                    .data(RegisterTableModel::PendingRole)
+                    .toBool());
+        auto *apply = m_window->findChild<QPushButton *>(QStringLiteral("tableApplyButton"));
+        QTRY_VERIFY(apply->isEnabled());
+        apply->click();
+        model::ParameterModel *parameters = client()->parameters(workspace()->currentIndex());
+        QTRY_COMPARE(parameters->state(QStringLiteral("max_temperature")), model::State::Verified);
+        QCOMPARE(simulatorValue(1, QStringLiteral("max_temperature")), 66);
+        // Written to EEPROM with the lock closed again: it survives a power cycle.
+        m_simulator->call([](sim::Simulator &simulator) { simulator.powerCycle(); });
+        QCOMPARE(simulatorValue(1, QStringLiteral("max_temperature")), 66);
+    }
+
+    void settingsIdChangeAsksThenFollowsTheServo()
+    {
+        connectAndScan();
+        ParameterPage *settings = workspace()->settingsPage();
+        auto *idEditor = qobject_cast<QSpinBox *>(settings->editor(QStringLiteral("id")));
+        QVERIFY(idEditor);
+        QTRY_VERIFY(idEditor->isEnabled());
+        idEditor->setValue(7);
+        acceptNextMessageBox();
+        settings->findChild<QPushButton *>(QStringLiteral("applyButton"))->click();
+        QTRY_VERIFY_WITH_TIMEOUT(client()->indexOf(7, k1M) >= 0, 10000);
+        QCOMPARE(client()->indexOf(1, k1M), -1);
+        QTRY_COMPARE(client()->servo(workspace()->currentIndex()).info.id, quint8(7));
+        QCOMPARE(simulatorValue(7, QStringLiteral("id")), 7);
+        // The tree shows it under its new ID.
+        QTreeWidgetItem *baud = workspace()->servoTree()->topLevelItem(0)->child(0);
+        QStringList ids;
+        for (int i = 0; i < baud->childCount(); ++i)
+            ids.append(baud->child(i)->text(0));
+        QVERIFY(ids.contains(QStringLiteral("ID 7")));
+    }
+
+    void unknownModelIsReadOnlyRawBytes()
+    {
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(2)->setValue(u"model_major", 77);
+        });
+        connectAndScan();
+        workspace()->selectServo(2, k1M);
+        QTRY_VERIFY(client()->servo(workspace()->currentIndex()).read);
+        workspace()->tabs()->setCurrentIndex(1);
+        const QModelIndex byte = valueIndex(QStringLiteral("byte_003"));
+        QVERIFY(byte.isValid());
+        QCOMPARE(byte.data().toString(), QStringLiteral("77"));
+        QVERIFY(!(byte.flags() & Qt::ItemIsEditable));
+        QVERIFY(!m_window->findChild<QPushButton *>(QStringLiteral("changeIdButton"))->isEnabled());
+    }
+};
+
+QTEST_MAIN(TestFeetechGui)
+#include "tst_feetechgui.moc"

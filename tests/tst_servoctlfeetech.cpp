@@ -1,0 +1,500 @@
+// servoctl feetech against a simulated mixed bus over a pty: output, JSON, exit codes, and that
+// refused commands write nothing.
+#include "servoctlrun.h"
+#include "simclient.h"
+
+#include "feetech/servoparameters.h"
+#include "profile/profile.h"
+#include "sim/simulator.h"
+#include "sim/virtualfeetechservo.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest>
+
+using testsupport::runServoctl;
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr qint32 k115k = 115200;
+constexpr quint8 kWrite = 0x03;
+constexpr quint8 kRecovery = 0x06;
+
+QJsonObject objectOf(const QString &json)
+{
+    return QJsonDocument::fromJson(json.toUtf8()).object();
+}
+
+QJsonObject byId(const QJsonArray &servos, int id)
+{
+    for (const QJsonValue &servo : servos) {
+        if (servo[QStringLiteral("id")].toInt() == id)
+            return servo.toObject();
+    }
+    return {};
+}
+
+QJsonObject registerNamed(const QJsonObject &read, const QString &key)
+{
+    for (const QJsonValue &reg : read.value(QStringLiteral("registers")).toArray()) {
+        if (reg[QStringLiteral("key")].toString() == key)
+            return reg.toObject();
+    }
+    return {};
+}
+
+} // namespace
+
+class TestServoctlFeetech : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    sim::SimulatorThread m_simulator;
+    QString m_logPath;
+
+    // `arguments` after "servoctl --port LINK feetech".
+    QStringList feetech(const QStringList &arguments) const
+    {
+        return QStringList {QStringLiteral("--port"), m_simulator.linkPath(),
+                            QStringLiteral("feetech")}
+        + arguments;
+    }
+
+    testsupport::ServoctlResult run(const QString &line) const
+    {
+        return runServoctl(feetech(line.split(u' ', Qt::SkipEmptyParts)));
+    }
+
+    QStringList framesReceived() const
+    {
+        return testsupport::logLinesStartingWith(m_logPath, QStringLiteral("in "));
+    }
+
+    // The instruction byte of every frame the bus received.
+    QVector<quint8> instructionsReceived() const
+    {
+        QVector<quint8> instructions;
+        for (const QString &line : framesReceived()) {
+            const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
+            const auto frame = util::parseHex(hex);
+            if (frame && frame->size() > 4)
+                instructions.append(quint8(frame->at(4)));
+        }
+        return instructions;
+    }
+
+    int writesReceived() const { return int(instructionsReceived().count(kWrite)); }
+
+    qint32 servoValue(quint8 id, const QString &key)
+    {
+        qint32 value = 0;
+        m_simulator.call(
+            [&](sim::Simulator &s) { value = s.feetechBus()->findServo(id)->value(key); });
+        return value;
+    }
+
+    void setServoValue(quint8 id, const QString &key, qint32 value)
+    {
+        m_simulator.call(
+            [&](sim::Simulator &s) { s.feetechBus()->findServo(id)->setValue(key, value); });
+    }
+
+private slots:
+    void init()
+    {
+        QVERIFY(m_dir.isValid());
+        static int run = 0;
+        sim::SimulatorOptions options;
+        options.kind = sim::SimulatorOptions::Kind::Feetech;
+        options.linkPath = m_dir.filePath(QStringLiteral("bus%1").arg(++run));
+        m_logPath = options.linkPath + QStringLiteral(".log");
+        options.logPath = m_logPath;
+        options.echo = run % 2 == 0; // every other test through a single-wire adapter
+        options.servos = {{1, QStringLiteral("STS3215"), k1M},
+                          {2, QStringLiteral("STS3215"), k1M},
+                          {3, QStringLiteral("SCS15"), k1M},
+                          {5, QStringLiteral("SMS"), k115k}};
+        QString error;
+        QVERIFY2(m_simulator.start(options, &error), qPrintable(error));
+    }
+
+    void cleanup() { m_simulator.stop(); }
+
+    void scanJsonListsTheServosAtTheBaudWithTheirIdentity()
+    {
+        const auto result = run(QStringLiteral("--json scan --ids 0-10"));
+        QCOMPARE(result.exitCode, 0);
+        const QJsonArray servos = QJsonDocument::fromJson(result.out.toUtf8()).array();
+        QCOMPARE(servos.size(), 3);
+        const QJsonObject sts = byId(servos, 1);
+        QCOMPARE(sts.value(QStringLiteral("baud")).toInt(), k1M);
+        QCOMPARE(sts.value(QStringLiteral("model")).toString(), QStringLiteral("STS3215"));
+        QCOMPARE(sts.value(QStringLiteral("model_number")).toInt(), 777);
+        QCOMPARE(sts.value(QStringLiteral("family")).toString(), QStringLiteral("sts"));
+        QCOMPARE(sts.value(QStringLiteral("firmware")).toString(), QStringLiteral("3.10"));
+        QVERIFY(!byId(servos, 2).isEmpty());
+        const QJsonObject scs = byId(servos, 3);
+        QCOMPARE(scs.value(QStringLiteral("model")).toString(), QStringLiteral("SCS15"));
+        QCOMPARE(scs.value(QStringLiteral("model_number")).toInt(), 0x050F);
+        QCOMPARE(scs.value(QStringLiteral("family")).toString(), QStringLiteral("scs"));
+        QVERIFY(byId(servos, 5).isEmpty()); // at 115200, not scanned
+    }
+
+    void scanTextCoversEveryIdByDefault()
+    {
+        const auto result = run(QStringLiteral("scan"));
+        QCOMPARE(result.exitCode, 0);
+        const QStringList lines = result.out.trimmed().split(u'\n');
+        QCOMPARE(lines.size(), 1 + 3); // header and one row per servo
+        QVERIFY(lines.at(1).contains(QStringLiteral("STS3215")));
+        QVERIFY(lines.at(3).contains(QStringLiteral("SCS15")));
+        // Every unicast ID was asked at 1 Mbps.
+        QVERIFY(framesReceived().filter(QStringLiteral("FF FF FD 02 01")).size() == 1);
+    }
+
+    void scanOfAllBaudRatesFindsTheSmsAt115200()
+    {
+        const auto result = run(QStringLiteral("--json --baud all scan --ids 0-10"));
+        QCOMPARE(result.exitCode, 0);
+        const QJsonArray servos = QJsonDocument::fromJson(result.out.toUtf8()).array();
+        QCOMPARE(servos.size(), 4);
+        const QJsonObject sms = byId(servos, 5);
+        QCOMPARE(sms.value(QStringLiteral("baud")).toInt(), k115k);
+        QCOMPARE(sms.value(QStringLiteral("family")).toString(), QStringLiteral("sms"));
+    }
+
+    void aScanThatFindsNothingExitsOne()
+    {
+        const auto result = run(QStringLiteral("--json scan --ids 20-30"));
+        QCOMPARE(result.exitCode, 1);
+        QCOMPARE(QJsonDocument::fromJson(result.out.toUtf8()).array().size(), 0);
+        QVERIFY(!result.err.isEmpty());
+    }
+
+    void readJsonDecodesSignedAndBigEndianValues()
+    {
+        setServoValue(1, QStringLiteral("position_offset"), -100);
+        setServoValue(3, QStringLiteral("max_angle_limit"), 1000);
+        auto result = run(QStringLiteral("--json read --id 1"));
+        QCOMPARE(result.exitCode, 0);
+        QJsonObject read = objectOf(result.out);
+        QCOMPARE(read.value(QStringLiteral("servo"))[QStringLiteral("id")].toInt(), 1);
+        QCOMPARE(read.value(QStringLiteral("servo"))[QStringLiteral("family")].toString(),
+                 QStringLiteral("sts"));
+        QCOMPARE(read.value(QStringLiteral("registers")).toArray().size(),
+                 feetech::RegisterTable::forFamily(feetech::Family::Sts).registers().size());
+        const QJsonObject offset = registerNamed(read, QStringLiteral("position_offset"));
+        QCOMPARE(offset.value(QStringLiteral("address")).toInt(), 31);
+        QCOMPARE(offset.value(QStringLiteral("size")).toInt(), 2);
+        QCOMPARE(offset.value(QStringLiteral("value")).toInt(), -100);
+        QCOMPARE(offset.value(QStringLiteral("raw")).toInt(), 0x800 | 100); // sign bit 11
+
+        result = run(QStringLiteral("--json read --id 3"));
+        QCOMPARE(result.exitCode, 0);
+        read = objectOf(result.out);
+        const QJsonObject limit = registerNamed(read, QStringLiteral("max_angle_limit"));
+        QCOMPARE(limit.value(QStringLiteral("value")).toInt(), 1000);
+        QCOMPARE(limit.value(QStringLiteral("raw")).toInt(), 1000);
+    }
+
+    void readTextIsATableWithUnits()
+    {
+        setServoValue(1, QStringLiteral("position_offset"), -100);
+        const auto result = run(QStringLiteral("read --id 1"));
+        QCOMPARE(result.exitCode, 0);
+        QVERIFY(result.out.startsWith(QStringLiteral("servo 1 at 1000000 bps: STS3215")));
+        QVERIFY2(result.out.contains(QRegularExpression(
+                     QStringLiteral("\n  31  position_offset {15}  -100  -100 step\n"))),
+                 qPrintable(result.out));
+        QVERIFY(result.out.contains(QRegularExpression(QStringLiteral("\n  13  max_temperature"))));
+    }
+
+    void getPrintsTheNamedRegisters()
+    {
+        setServoValue(1, QStringLiteral("position_offset"), -100);
+        const auto result =
+            run(QStringLiteral("--json get --id 1 max_temperature position_offset"));
+        QCOMPARE(result.exitCode, 0);
+        const QJsonObject values = objectOf(result.out);
+        QCOMPARE(values.size(), 2);
+        QCOMPARE(values.value(QStringLiteral("max_temperature")).toInt(),
+                 servoValue(1, QStringLiteral("max_temperature")));
+        QCOMPARE(values.value(QStringLiteral("position_offset")).toInt(), -100);
+    }
+
+    void setWritesVerifiesAndTheServoHoldsIt()
+    {
+        auto result = run(QStringLiteral("set --id 1 max_temperature=65 position_offset=-20"));
+        QCOMPARE(result.exitCode, 0);
+        QCOMPARE(servoValue(1, QStringLiteral("max_temperature")), 65);
+        QCOMPARE(servoValue(1, QStringLiteral("position_offset")), -20);
+        // Big-endian SCS, and the JSON report.
+        result = run(QStringLiteral("--json set --id 3 max_angle_limit=900"));
+        QCOMPARE(result.exitCode, 0);
+        const QJsonObject report = objectOf(result.out);
+        QCOMPARE(report.value(QStringLiteral("verified")), QJsonValue(true));
+        QCOMPARE(report.value(QStringLiteral("values"))[QStringLiteral("max_angle_limit")].toInt(),
+                 900);
+        QCOMPARE(servoValue(3, QStringLiteral("max_angle_limit")), 900);
+        // Survives a power cycle: the EEPROM was unlocked and locked around the write.
+        m_simulator.call([](sim::Simulator &s) { s.powerCycle(); });
+        QCOMPARE(servoValue(1, QStringLiteral("max_temperature")), 65);
+    }
+
+    void badKeysAndValuesExitTwoWithoutWriting_data()
+    {
+        QTest::addColumn<QString>("line");
+        QTest::newRow("unknown key") << QStringLiteral("set --id 1 max_temprature=65");
+        QTest::newRow("out of range") << QStringLiteral("set --id 1 max_temperature=101");
+        QTest::newRow("signed out of range") << QStringLiteral("set --id 1 position_offset=-3000");
+        QTest::newRow("one bad among good")
+            << QStringLiteral("set --id 1 max_temperature=60 p_gain=255");
+        QTest::newRow("key of another family") << QStringLiteral("set --id 3 position_offset=1");
+        QTest::newRow("not a number") << QStringLiteral("set --id 1 max_temperature=hot");
+        QTest::newRow("read-only") << QStringLiteral("set --id 1 present_position=5");
+        QTest::newRow("id") << QStringLiteral("set --id 1 id=7");
+        QTest::newRow("baud rate") << QStringLiteral("set --id 1 baud_rate=115200");
+        QTest::newRow("no assignment") << QStringLiteral("set --id 1");
+        QTest::newRow("not an assignment") << QStringLiteral("set --id 1 max_temperature");
+        QTest::newRow("missing id") << QStringLiteral("set max_temperature=60");
+        QTest::newRow("unknown get key") << QStringLiteral("get --id 1 colour");
+        QTest::newRow("unknown command") << QStringLiteral("flash --id 1");
+        QTest::newRow("monitor is not here yet") << QStringLiteral("monitor --id 1");
+        QTest::newRow("option not taken") << QStringLiteral("read --id 1 --ids 1-3");
+        QTest::newRow("not a baud rate") << QStringLiteral("ping --id 1 --baud 9600");
+        QTest::newRow("new id out of range") << QStringLiteral("set-id --id 1 254");
+        QTest::newRow("new baud not feetech") << QStringLiteral("set-baud --id 1 9600");
+        QTest::newRow("scan of two ranges") << QStringLiteral("scan --ids 1-3,7-9");
+        QTest::newRow("missing profile") << QStringLiteral("load --id 1 /nonexistent/p.json");
+        QTest::newRow("backup folder missing")
+            << QStringLiteral("factory-reset --id 1 --backup /nonexistent/b.json");
+    }
+
+    void badKeysAndValuesExitTwoWithoutWriting()
+    {
+        QFETCH(QString, line);
+        const auto result = run(line);
+        QCOMPARE(result.exitCode, 2);
+        QVERIFY(result.out.isEmpty());
+        QCOMPARE(result.err.count(u'\n'), 1);
+        QCOMPARE(writesReceived(), 0);
+        // At most the identification (PING and READ of 0-8) went out.
+        for (const quint8 instruction : instructionsReceived())
+            QVERIFY2(instruction == 0x01 || instruction == 0x02, qPrintable(line));
+    }
+
+    void setIdToAnOccupiedIdIsRefused()
+    {
+        const auto result = run(QStringLiteral("set-id --id 1 2"));
+        QCOMPARE(result.exitCode, 1);
+        QVERIFY(result.err.contains(QStringLiteral("2")));
+        QCOMPARE(writesReceived(), 0);
+        QCOMPARE(servoValue(1, QStringLiteral("id")), 1);
+    }
+
+    void setIdToAFreeIdMovesTheServo()
+    {
+        const auto result = run(QStringLiteral("--json set-id --id 2 9"));
+        QCOMPARE(result.exitCode, 0);
+        QCOMPARE(objectOf(result.out).value(QStringLiteral("servo"))[QStringLiteral("id")].toInt(),
+                 9);
+        QCOMPARE(run(QStringLiteral("ping --id 9")).exitCode, 0);
+        QCOMPARE(run(QStringLiteral("ping --id 2")).exitCode, 1);
+    }
+
+    void setBaudIsFollowedToTheNewRate()
+    {
+        const auto result = run(QStringLiteral("--json set-baud --id 2 500000"));
+        QCOMPARE(result.exitCode, 0);
+        QCOMPARE(
+            objectOf(result.out).value(QStringLiteral("servo"))[QStringLiteral("baud")].toInt(),
+            500000);
+        QCOMPARE(run(QStringLiteral("ping --id 2 --baud 500000")).exitCode, 0);
+        QCOMPARE(run(QStringLiteral("ping --id 2")).exitCode, 1);
+    }
+
+    void aSavedProfileLoadsBackOntoTheServo()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("servo1.json"));
+        QCOMPARE(run(QStringLiteral("save --id 1 ") + path).exitCode, 0);
+        QString error;
+        const auto saved = profile::load(
+            path, QStringLiteral("sts"),
+            feetech::profileDefinitions(feetech::RegisterTable::forFamily(feetech::Family::Sts)),
+            &error);
+        QVERIFY2(saved, qPrintable(error));
+        QCOMPARE(saved->model, QStringLiteral("STS3215"));
+        QCOMPARE(*saved->value(QStringLiteral("max_temperature")),
+                 qint64(servoValue(1, QStringLiteral("max_temperature"))));
+        QVERIFY(!saved->value(QStringLiteral("id")));
+        QVERIFY(!saved->value(QStringLiteral("baud_rate")));
+
+        const qint32 temperature = servoValue(1, QStringLiteral("max_temperature"));
+        const qint32 gain = servoValue(1, QStringLiteral("p_gain"));
+        QCOMPARE(run(QStringLiteral("set --id 1 max_temperature=61 p_gain=9 position_offset=-7"))
+                     .exitCode,
+                 0);
+        const int writesBefore = writesReceived();
+        const auto loaded = run(QStringLiteral("--json load --id 1 ") + path);
+        QCOMPARE(loaded.exitCode, 0);
+        QCOMPARE(objectOf(loaded.out).value(QStringLiteral("changed")).toInt(), 3);
+        QCOMPARE(servoValue(1, QStringLiteral("max_temperature")), temperature);
+        QCOMPARE(servoValue(1, QStringLiteral("p_gain")), gain);
+        QCOMPARE(servoValue(1, QStringLiteral("position_offset")), 0);
+        // Unlock, three values, lock: only what differed was written.
+        QCOMPARE(writesReceived() - writesBefore, 5);
+
+        // Loading it again changes nothing and writes nothing.
+        const int writesAfter = writesReceived();
+        QCOMPARE(run(QStringLiteral("load --id 1 ") + path).exitCode, 0);
+        QCOMPARE(writesReceived(), writesAfter);
+    }
+
+    void aProfileOfAnotherFamilyIsRefusedWithoutWriting()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("scs.json"));
+        QCOMPARE(run(QStringLiteral("save --id 3 ") + path).exitCode, 0);
+        const auto result = run(QStringLiteral("load --id 1 ") + path);
+        QCOMPARE(result.exitCode, 2);
+        QVERIFY(result.err.contains(QStringLiteral("scs")));
+        QCOMPARE(writesReceived(), 0);
+    }
+
+    void anInvalidProfileIsRefusedBeforeAnythingIsSent()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("bad.json"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format":"servobench-profile","version":1,"family":"sts",
+                      "parameters":{"max_temperature":20,"p_gain":9999}})");
+        file.close();
+        const auto result = run(QStringLiteral("load --id 1 ") + path);
+        QCOMPARE(result.exitCode, 2);
+        QVERIFY(result.err.contains(QStringLiteral("p_gain")));
+        QCOMPARE(framesReceived().size(), 0);
+    }
+
+    void factoryResetSavesABackupFirst()
+    {
+        QCOMPARE(run(QStringLiteral("set --id 1 max_temperature=65")).exitCode, 0);
+        const QString backup = m_dir.filePath(QStringLiteral("backup1.json"));
+        const auto result = run(QStringLiteral("--json factory-reset --id 1 --backup ") + backup);
+        QCOMPARE(result.exitCode, 0);
+        QCOMPARE(objectOf(result.out).value(QStringLiteral("backup")).toString(), backup);
+        // The backup holds the values from before the reset; the servo has factory values.
+        const auto saved = profile::load(
+            backup, QStringLiteral("sts"),
+            feetech::profileDefinitions(feetech::RegisterTable::forFamily(feetech::Family::Sts)));
+        QVERIFY(saved);
+        QCOMPARE(*saved->value(QStringLiteral("max_temperature")), qint64(65));
+        QCOMPARE(servoValue(1, QStringLiteral("max_temperature")), 70);
+        QCOMPARE(instructionsReceived().count(kRecovery), 1);
+    }
+
+    void factoryResetNamesItsBackupInTheCurrentFolder()
+    {
+        const QString folder = m_dir.filePath(QStringLiteral("cwd"));
+        QVERIFY(QDir().mkpath(folder));
+        const QString previous = QDir::currentPath();
+        QVERIFY(QDir::setCurrent(folder));
+        const auto result = run(QStringLiteral("factory-reset --id 2"));
+        QVERIFY(QDir::setCurrent(previous));
+        QCOMPARE(result.exitCode, 0);
+        const QStringList backups =
+            QDir(folder).entryList({QStringLiteral("servo-2-backup-*.json")}, QDir::Files);
+        QCOMPARE(backups.size(), 1);
+        QVERIFY(QRegularExpression(QStringLiteral("^servo-2-backup-\\d{8}-\\d{6}\\.json$"))
+                    .match(backups.first())
+                    .hasMatch());
+        QVERIFY(result.out.contains(backups.first()));
+    }
+
+    void factoryResetWithoutABackupSendsNothing()
+    {
+        // A folder where the file should be: the backup cannot be written.
+        const auto result = run(QStringLiteral("factory-reset --id 1 --backup ") + m_dir.path());
+        QCOMPARE(result.exitCode, 1);
+        QVERIFY(result.err.contains(QStringLiteral("backup")));
+        QCOMPARE(instructionsReceived().count(kRecovery), 0);
+        QCOMPARE(writesReceived(), 0);
+    }
+
+    void calibrateMiddleWhereTheServoSupportsIt()
+    {
+        m_simulator.call(
+            [](sim::Simulator &s) { s.feetechBus()->findServo(1)->setPhysicalPosition(2548); });
+        auto result = run(QStringLiteral("--json calibrate-middle --id 1"));
+        QCOMPARE(result.exitCode, 0);
+        QVERIFY(objectOf(result.out).contains(QStringLiteral("position_offset")));
+        QVERIFY(qAbs(servoValue(1, QStringLiteral("present_position")) - 2048) <= 2);
+        result = run(QStringLiteral("calibrate-middle --id 3")); // SCS: no offset register
+        QCOMPARE(result.exitCode, 1);
+    }
+
+    void rebootWaitsForTheServo()
+    {
+        const auto result = run(QStringLiteral("reboot --id 1"));
+        QCOMPARE(result.exitCode, 0);
+        QCOMPARE(instructionsReceived().count(quint8(0x08)), 1);
+    }
+
+    void anUnknownModelIsReadRawAndNeverWritten()
+    {
+        setServoValue(1, QStringLiteral("model_major"), 77);
+        auto result = run(QStringLiteral("--json read --id 1"));
+        QCOMPARE(result.exitCode, 0);
+        const QJsonObject read = objectOf(result.out);
+        QVERIFY(read.value(QStringLiteral("servo"))[QStringLiteral("family")].isNull());
+        QCOMPARE(read.value(QStringLiteral("registers")).toArray().size(),
+                 feetech::RegisterTable::kRawViewSize);
+        QCOMPARE(registerNamed(read, QStringLiteral("byte_003")).value(QStringLiteral("value")),
+                 QJsonValue(77));
+        result = run(QStringLiteral("set --id 1 max_temperature=60"));
+        QCOMPARE(result.exitCode, 1);
+        QCOMPARE(writesReceived(), 0);
+    }
+
+    void pingOfAMissingIdExitsOne()
+    {
+        const auto result = run(QStringLiteral("ping --id 7"));
+        QCOMPARE(result.exitCode, 1);
+        QVERIFY(result.err.contains(QStringLiteral("7")));
+        QVERIFY(result.out.isEmpty());
+    }
+
+    void pingJsonReportsTheServoAndItsLatency()
+    {
+        const auto result = run(QStringLiteral("--json --baud 115200 ping --id 5"));
+        QCOMPARE(result.exitCode, 0);
+        const QJsonObject ping = objectOf(result.out);
+        QCOMPARE(ping.value(QStringLiteral("servo"))[QStringLiteral("family")].toString(),
+                 QStringLiteral("sms"));
+        QVERIFY(ping.value(QStringLiteral("latency_us")).toInteger() > 0);
+    }
+
+    void traceShowsEveryFrameOnStderr()
+    {
+        const auto result = run(QStringLiteral("--trace ping --id 1"));
+        QCOMPARE(result.exitCode, 0);
+        QVERIFY2(result.err.contains(QStringLiteral("-> FF FF 01 02 01 FB")),
+                 qPrintable(result.err));
+        QVERIFY(result.err.contains(QStringLiteral("<- FF FF 01 02 00 FC")));
+    }
+
+    void aMissingPortExitsOne()
+    {
+        const auto result =
+            runServoctl({QStringLiteral("--port"), m_dir.filePath(QStringLiteral("absent")),
+                         QStringLiteral("feetech"), QStringLiteral("ping"), QStringLiteral("--id"),
+                         QStringLiteral("1")});
+        QCOMPARE(result.exitCode, 1);
+        QVERIFY(result.err.contains(QStringLiteral("does not exist")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestServoctlFeetech)
+#include "tst_servoctlfeetech.moc"
