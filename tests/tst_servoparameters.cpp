@@ -605,6 +605,7 @@ private slots:
         }
         QVERIFY(!keys.contains(QStringLiteral("id")));
         QVERIFY(!keys.contains(QStringLiteral("baud_rate")));
+        QVERIFY(!keys.contains(QStringLiteral("secondary_id"))); // HLS: also an address
         // Read-only EEPROM and RAM registers stay out.
         QVERIFY(!keys.contains(QStringLiteral("firmware_major")));
         QVERIFY(!keys.contains(QStringLiteral("model_minor")));
@@ -617,7 +618,8 @@ private slots:
         int expected = 0;
         for (const feetech::Register &source : table.registers()) {
             if (source.storage == feetech::Storage::Eeprom && source.writable()
-                && source.key != u"id" && source.key != u"baud_rate")
+                && source.key != u"id" && source.key != u"baud_rate"
+                && source.key != u"secondary_id")
                 QCOMPARE(keys.value(expected++), source.key);
         }
         QCOMPARE(keys.size(), expected);

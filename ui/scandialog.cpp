@@ -66,7 +66,7 @@ ScanDialog::ScanDialog(const feetech::ScanOptions &initial, QWidget *parent)
 
     m_probe = new QCheckBox(tr("Skip baud rates where nothing answers a broadcast PING"), this);
     m_probe->setObjectName(QStringLiteral("probeCheck"));
-    m_probe->setChecked(initial.probeFirst);
+    m_probe->setChecked(initial.skipSilentRates);
     m_probe->setToolTip(tr("Every servo answers a broadcast PING. When no byte at all comes back "
                            "at a rate, no servo listens there and its IDs need not be asked one "
                            "by one. Turn off to ask every ID regardless."));
@@ -101,7 +101,7 @@ feetech::ScanOptions ScanDialog::options() const
         if (box->isChecked())
             options.bauds.append(box->property("baud").toInt());
     }
-    options.probeFirst = m_probe->isChecked();
+    options.skipSilentRates = m_probe->isChecked();
     return options;
 }
 

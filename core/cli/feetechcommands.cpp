@@ -241,13 +241,10 @@ public:
                              });
         QMetaObject::Connection reading;
         if (memory) {
-            reading =
-                QObject::connect(m_session.get(), &feetech::Session::memoryRead, &loop,
-                                 [memory](quint8, qint32, int address, const QByteArray &bytes,
-                                          feetech::ReadSource, quint8) {
-                                     if (address >= 0) // a PING's status byte comes with address -1
-                                         memory->insert(address, bytes);
-                                 });
+            reading = QObject::connect(m_session.get(), &feetech::Session::memoryRead, &loop,
+                                       [memory](quint8, qint32, int address,
+                                                const QByteArray &bytes, feetech::ReadSource,
+                                                quint8) { memory->insert(address, bytes); });
         }
         // Started from inside the loop: a refusal is emitted before start() returns.
         QTimer::singleShot(0, &loop, start);
@@ -471,7 +468,7 @@ private:
             options.firstId = ids.first();
             options.lastId = ids.last();
         }
-        options.probeFirst = !m_args.flag(QStringLiteral("thorough"));
+        options.skipSilentRates = !m_args.flag(QStringLiteral("thorough"));
 
         FeetechDevice device(m_args, m_output);
         if (!device.open(options.bauds.first()))

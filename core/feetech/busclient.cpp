@@ -41,6 +41,13 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         emit scanFinished(completed, m);
     });
     connect(session, &Session::memoryRead, this, &BusClient::onMemoryRead);
+    connect(session, &Session::statusSeen, this, [this](quint8 id, qint32 baud, quint8 status) {
+        const int index = indexOf(id, baud);
+        if (index < 0)
+            return;
+        m_servos.at(std::size_t(index))->statusByte = status;
+        emit servoUpdated(index);
+    });
     connect(session, &Session::progress, this, &BusClient::progress);
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
 }
@@ -142,11 +149,9 @@ void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArr
         return;
     Servo &entry = *m_servos.at(std::size_t(index));
     entry.statusByte = statusByte;
-    if (address >= 0) {
-        const qint64 now = m_clock.elapsed() + 1; // 0 means "never read"
-        for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes))
-            entry.parameters->setDeviceValue(item.reg->key, item.value, now);
-    }
+    const qint64 now = m_clock.elapsed() + 1; // 0 means "never read"
+    for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes))
+        entry.parameters->setDeviceValue(item.reg->key, item.value, now);
     emit servoUpdated(index);
 }
 

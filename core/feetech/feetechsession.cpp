@@ -361,6 +361,7 @@ void Session::exchange(const Exchange &request, ExchangeDone done)
     transaction.priority = request.priority;
     transaction.replyTimeout = request.replyTimeout;
     transaction.retryCount = request.retryCount;
+    transaction.silenceExpected = request.silenceExpected;
     if (request.listenOnly) {
         transaction.acceptsReply = [](const QByteArray &) {
             return false;
@@ -590,10 +591,6 @@ void Session::scanBaud(int baudIndex)
             endScan(false, message);
             return;
         }
-        if (!m_scan->options.probeFirst) {
-            scanId(baudIndex, m_scan->options.firstId);
-            return;
-        }
         probe(baudIndex, 0);
     });
 }
@@ -607,35 +604,36 @@ void Session::probe(int baudIndex, int round)
     Exchange ask;
     ask.request = feetech::ping(kBroadcastId);
     ask.listenOnly = true;
+    ask.silenceExpected = true;
     ask.replyTimeout = std::max(m_timing.probeAllowance, scanAllowance());
     ask.retryCount = 0;
-    exchange(
-        ask,
-        [this, baudIndex, round](const seriallink::TransactionResult &result,
-                                 const std::optional<Packet> &) {
-            if (!m_scan)
-                return;
-            if (result.failure == seriallink::Failure::LinkDown) {
-                endScan(false, failureText(result));
-                return;
-            }
-            if (result.bytesHeard > 0) {
-                noteLatency(result.latency);
-                if (round == 0)
-                    probe(baudIndex, 1);
-                else
-                    scanId(baudIndex, m_scan->options.firstId);
-                return;
-            }
-            if (round > 0) {
-                scanId(baudIndex, m_scan->options.firstId); // heard the first time: scan anyway
-                return;
-            }
-            const int ids = m_scan->options.lastId - m_scan->options.firstId + 1;
-            m_scan->done += ids;
-            emit scanProgress(m_scan->done, m_scan->total, m_scan->options.bauds.at(baudIndex));
-            scanBaud(baudIndex + 1);
-        });
+    exchange(ask,
+             [this, baudIndex, round](const seriallink::TransactionResult &result,
+                                      const std::optional<Packet> &) {
+                 if (!m_scan)
+                     return;
+                 if (result.failure == seriallink::Failure::LinkDown) {
+                     endScan(false, failureText(result));
+                     return;
+                 }
+                 if (result.bytesHeard > 0) {
+                     noteLatency(result.latency);
+                     if (round == 0)
+                         probe(baudIndex, 1);
+                     else
+                         scanId(baudIndex, m_scan->options.firstId);
+                     return;
+                 }
+                 if (round > 0 || !m_scan->options.skipSilentRates) {
+                     scanId(baudIndex, m_scan->options.firstId); // heard once, or a thorough scan
+                     return;
+                 }
+                 const int ids = m_scan->options.lastId - m_scan->options.firstId + 1;
+                 m_scan->done += ids;
+                 emit scanProgress(m_scan->done, m_scan->total,
+                                   m_scan->options.bauds.at(baudIndex));
+                 scanBaud(baudIndex + 1);
+             });
 }
 
 void Session::scanId(int baudIndex, int id)
@@ -650,6 +648,7 @@ void Session::scanId(int baudIndex, int id)
     Exchange ask;
     ask.request = feetech::ping(quint8(id));
     ask.replyId = quint8(id);
+    ask.silenceExpected = true;
     ask.replyTimeout = scanAllowance();
     ask.retryCount = 0;
     exchange(ask,
@@ -724,8 +723,7 @@ void Session::ping(quint8 id, qint32 baud)
                                                       .arg(result.servo.id)
                                                       .arg(failureText(answer));
                          if (reply)
-                             emit memoryRead(result.servo.id, result.servo.baud, -1, {},
-                                             ReadSource::Read, reply->code);
+                             emit statusSeen(result.servo.id, result.servo.baud, reply->code);
                          finishOperation(result);
                      });
         });

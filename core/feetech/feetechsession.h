@@ -58,9 +58,10 @@ struct ScanOptions
     int firstId = 0;
     int lastId = kMaxServoId;
     QVector<qint32> bauds {1000000};
-    // A broadcast PING first: a baud rate where no byte at all comes back holds no servo and is
-    // skipped. Off for a thorough scan of every ID at every rate.
-    bool probeFirst = true;
+    // Every rate starts with a broadcast PING, whose answers (collided or not) measure how fast
+    // the line answers. When no byte at all comes back, no servo listens at that rate: it is
+    // skipped unless this is off (a thorough scan asks every ID regardless).
+    bool skipSilentRates = true;
 };
 
 // Where a block of register bytes came from.
@@ -161,6 +162,8 @@ signals:
     // Bytes of one block as the servo holds them, with the status byte of its reply.
     void memoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                     feetech::ReadSource source, quint8 statusByte);
+    // The status byte of a reply that carried no data (a PING).
+    void statusSeen(quint8 id, qint32 baud, quint8 statusByte);
     void progress(int done, int total);
     void operationFinished(const feetech::OperationResult &result);
     void packetLogged(const seriallink::PacketLogEntry &entry);
@@ -176,6 +179,7 @@ private:
         std::optional<quint8> alternateReplyId; // an ID change may answer from either ID
         int replyDataSize = 0;
         bool listenOnly = false; // wait the whole timeout and accept nothing (broadcast probe)
+        bool silenceExpected = false; // scans: no answer is an answer, not a link problem
         seriallink::Transaction::Priority priority = seriallink::Transaction::Priority::Command;
         std::optional<std::chrono::microseconds> replyTimeout;
         std::optional<int> retryCount;

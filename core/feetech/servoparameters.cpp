@@ -94,7 +94,7 @@ QVector<model::Definition> profileDefinitions(const RegisterTable &table)
     QVector<model::Definition> definitions;
     for (const Register &reg : table.registers()) {
         if (reg.storage == Storage::Eeprom && reg.writable() && reg.key != u"id"
-            && reg.key != u"baud_rate")
+            && reg.key != u"baud_rate" && reg.key != u"secondary_id")
             definitions.append(definitionFor(reg, groups));
     }
     return definitions;

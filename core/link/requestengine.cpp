@@ -242,7 +242,8 @@ void RequestEngine::onReceived(const QByteArray &bytes)
         }
         case StreamItem::Kind::BadChecksum:
             heard(int(item->bytes.size()));
-            ++m_counters.checksumErrors;
+            if (!m_current->silenceExpected)
+                ++m_counters.checksumErrors;
             log(Direction::In, item->bytes, Tr::tr("bad checksum"));
             break;
         case StreamItem::Kind::Garbage:
@@ -264,7 +265,9 @@ void RequestEngine::onTimeout(quint64 generation)
         finish(Failure::None);
         return;
     }
-    ++m_counters.timeouts;
+    const bool counted = !m_current->silenceExpected;
+    if (counted)
+        ++m_counters.timeouts;
     if (m_timing.settleAfterTimeout)
         m_quietUntilMs = m_clock.elapsed()
             + std::chrono::duration_cast<std::chrono::milliseconds>(replyTimeout()).count();
@@ -275,7 +278,8 @@ void RequestEngine::onTimeout(quint64 generation)
         send();
         return;
     }
-    ++m_counters.failures;
+    if (counted)
+        ++m_counters.failures;
     finish(Failure::Timeout);
 }
 

@@ -63,6 +63,9 @@ struct Transaction
     // Overrides of the engine's timing for this transaction (a scan waits less than a write).
     std::optional<std::chrono::microseconds> replyTimeout;
     std::optional<int> retryCount;
+    // A scan asks where most IDs are empty and several servos may answer at once: its
+    // timeouts and garbled answers say nothing about the link, so the counters skip them.
+    bool silenceExpected = false;
     std::function<void(const TransactionResult &)> done;
 };
 
