@@ -269,21 +269,21 @@ int main(int argc, char *argv[])
 
     // 2. Every ID at every rate, with and without the broadcast probe.
     QJsonObject allBauds;
-    for (const bool probeFirst : {true, false}) {
+    for (const bool skipSilentRates : {true, false}) {
         feetech::ScanOptions everyRate;
         everyRate.bauds = feetech::baudRates();
-        everyRate.probeFirst = probeFirst;
+        everyRate.skipSilentRates = skipSilentRates;
         QVector<ScanRun> baudRuns;
-        for (int i = 0; i < (probeFirst ? kAllBaudRepeats : kThoroughRepeats); ++i)
+        for (int i = 0; i < (skipSilentRates ? kAllBaudRepeats : kThoroughRepeats); ++i)
             baudRuns.append(bench.scan(everyRate));
         double bound = 0;
         for (const qint32 baud : everyRate.bauds) {
             const int servos = servosAt.count(baud) ? servosAt.at(baud) : 0;
             // The session probes twice where something answers, once where nothing does.
-            bound += scanWireMs(baud, servos, probeFirst ? (servos > 0 ? 2 : 1) : 0);
+            bound += scanWireMs(baud, servos, skipSilentRates ? (servos > 0 ? 2 : 1) : 0);
         }
         const int missing = kIdCount * int(everyRate.bauds.size()) - servoCount;
-        allBauds.insert(probeFirst ? QStringLiteral("probe_first")
+        allBauds.insert(skipSilentRates ? QStringLiteral("probe_first")
                                    : QStringLiteral("thorough_no_probe"),
                         summarise(baudRuns, bound, missing));
     }
