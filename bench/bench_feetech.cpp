@@ -279,12 +279,16 @@ int main(int argc, char *argv[])
         double bound = 0;
         for (const qint32 baud : everyRate.bauds) {
             const int servos = servosAt.count(baud) ? servosAt.at(baud) : 0;
-            // The session probes twice where something answers, once where nothing does.
-            bound += scanWireMs(baud, servos, skipSilentRates ? (servos > 0 ? 2 : 1) : 0);
+            // The session probes twice where something answers, once where nothing does; a
+            // thorough scan still probes (to measure the line) but asks every ID regardless.
+            const int probes = servos > 0 ? 2 : 1;
+            bound += skipSilentRates ? scanWireMs(baud, servos, probes)
+                                     : scanWireMs(baud, servos, 0)
+                    + wireMs(qint64(probes) * (servos > 0 ? 2 : 1) * kPingSize, baud);
         }
         const int missing = kIdCount * int(everyRate.bauds.size()) - servoCount;
         allBauds.insert(skipSilentRates ? QStringLiteral("probe_first")
-                                   : QStringLiteral("thorough_no_probe"),
+                                        : QStringLiteral("thorough_every_id"),
                         summarise(baudRuns, bound, missing));
     }
     allBauds.insert(QStringLiteral("servos_present"),

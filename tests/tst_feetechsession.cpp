@@ -169,6 +169,21 @@ private slots:
         QCOMPARE(m_session->counters().failures, 0);
     }
 
+    void scanFindsServosThatAnswerLate()
+    {
+        // Replies up to 6 ms late: the wait follows the measured answers, and an answer that
+        // still comes too late names its servo, which is asked again with time to spare.
+        sim::SimulatorOptions options = mixedBus(m_dir);
+        options.faults.delayMs = 6;
+        options.seed = 7;
+        cleanup();
+        startBus(options);
+        feetech::ScanOptions scanOptions;
+        scanOptions.lastId = 20;
+        QVERIFY(scan(scanOptions));
+        QVERIFY(found(1) && found(2) && found(3) && found(4));
+    }
+
     void scanSkipsSilentBaudRates()
     {
         feetech::ScanOptions options;

@@ -27,6 +27,8 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace {
 
 // RAM rows of the shown servo are read again this often while the table is on screen.
@@ -102,7 +104,8 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_tree->setHeaderLabels({tr("Servo"), tr("Model"), tr("Family"), tr("Firmware")});
     m_tree->setRootIsDecorated(true);
     m_tree->setUniformRowHeights(true);
-    m_tree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_tree->header()->setStretchLastSection(false);
+    m_tree->setIndentation(m_tree->fontMetrics().horizontalAdvance(u'm') * 3 / 2);
     leftLayout->addWidget(m_tree, 1);
     splitter->addWidget(left);
 
@@ -205,7 +208,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     splitter->addWidget(right);
     splitter->setStretchFactor(0, 0);
     splitter->setStretchFactor(1, 1);
-    splitter->setSizes({330, 850});
+    splitter->setSizes({345, 835});
 
     m_liveTimer = new QTimer(this);
     m_liveTimer->setInterval(kLiveRefreshMs);
@@ -298,6 +301,15 @@ void FeetechWorkspace::selectServo(quint8 id, qint32 baud)
     m_current = std::make_pair(id, baud);
     rebuildTree();
     showServo();
+    readIfNew();
+}
+
+void FeetechWorkspace::readIfNew()
+{
+    // Once, when a servo is chosen: a servo that cannot be read must not be asked forever.
+    const int index = currentIndex();
+    if (index >= 0 && !m_client->servo(index).read && !m_client->isBusy())
+        m_client->readServo(index);
 }
 
 void FeetechWorkspace::openScanDialog()
@@ -360,6 +372,8 @@ void FeetechWorkspace::rebuildTree()
             selected = item;
     }
     m_tree->expandAll();
+    for (int column = 0; column < TreeColumns; ++column)
+        m_tree->resizeColumnToContents(column);
     if (selected)
         selected->setSelected(true);
     updateActions();
@@ -374,18 +388,36 @@ void FeetechWorkspace::onSelectionChanged()
     m_current = std::make_pair(quint8(item->data(ServoColumn, kIdRole).toUInt()),
                                qint32(item->data(ServoColumn, kBaudRole).toInt()));
     showServo();
+    readIfNew();
 }
 
 void FeetechWorkspace::showServo()
 {
     const int index = currentIndex();
     model::ParameterModel *parameters = m_client->parameters(index);
-    if (m_settings->parameterModel() != parameters)
+    if (m_settings->parameterModel() != parameters) {
+        if (m_settings->parameterModel())
+            disconnect(m_settings->parameterModel(), nullptr, this, nullptr);
         m_settings->setModel(parameters);
+        if (parameters) // Apply and Revert under the table follow the edits
+            connect(parameters, &model::ParameterModel::parameterChanged, this,
+                    &FeetechWorkspace::updateActions);
+    }
     m_registers->setServo(index >= 0 ? &m_client->servo(index).info.table() : nullptr, parameters);
     m_table->resizeColumnsToContents();
-    if (index >= 0 && !m_client->servo(index).read && !m_client->isBusy())
-        m_client->readServo(index);
+    // Bit lists can be long: the value column keeps a reading width (the tooltip and a wider
+    // window show the rest) so the register names keep theirs.
+    m_table->setColumnWidth(RegisterTableModel::ValueColumn,
+                            std::min(m_table->columnWidth(RegisterTableModel::ValueColumn),
+                                     m_table->fontMetrics().horizontalAdvance(u'm') * 15));
+    int stateWidth = 0;
+    for (const model::State state :
+         {model::State::Edited, model::State::Writing, model::State::Verified,
+          model::State::Mismatch, model::State::Failed})
+        stateWidth = std::max(
+            stateWidth,
+            m_table->fontMetrics().horizontalAdvance(model::ParameterModel::stateName(state)));
+    m_table->setColumnWidth(RegisterTableModel::StateColumn, stateWidth + 16);
     updateHeader();
     updateActions();
 }
@@ -593,7 +625,7 @@ void FeetechWorkspace::factoryReset()
     const QString path = profileactions::chooseSavePath(this, suggested);
     if (path.isEmpty())
         return;
-    if (!saveProfile(path))
+    if (!saveProfile(path, false)) // what the servo holds, not what is being edited
         return;
     const auto answer = QMessageBox::warning(
         this, tr("Factory reset"),
@@ -634,7 +666,7 @@ void FeetechWorkspace::chooseProfileToSave()
         emit message(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
 }
 
-bool FeetechWorkspace::saveProfile(const QString &path)
+bool FeetechWorkspace::saveProfile(const QString &path, bool withEdits)
 {
     const int index = currentIndex();
     if (index < 0 || !m_client->servo(index).info.hasTable()) {
@@ -645,7 +677,7 @@ bool FeetechWorkspace::saveProfile(const QString &path)
     QString error;
     if (!profileactions::save(path, *m_client->parameters(index),
                               feetech::familyKey(*info.model.family), info.model.name,
-                              feetech::profileDefinitions(info.table()), &error)) {
+                              feetech::profileDefinitions(info.table()), withEdits, &error)) {
         emit problem(error);
         return false;
     }

@@ -41,7 +41,7 @@ public:
     void apply(); // with a confirmation when the ID or baud rate would change
     void chooseProfileToSave();
     void chooseProfileToLoad();
-    bool saveProfile(const QString &path);
+    bool saveProfile(const QString &path, bool withEdits = true);
     void loadProfile(const QString &path);
 
     QTreeWidget *servoTree() const { return m_tree; }
@@ -57,6 +57,7 @@ private:
     void rebuildTree();
     void onSelectionChanged();
     void showServo();
+    void readIfNew();
     void updateHeader();
     void updateActions();
     void onOperationFinished(const feetech::OperationResult &result);

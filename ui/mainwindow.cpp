@@ -182,6 +182,11 @@ void MainWindow::createMenus()
     scan->setObjectName(QStringLiteral("scanAction"));
     scan->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
     connect(scan, &QAction::triggered, this, [this] {
+        if (!m_feetechActive
+            && m_ptk->status().state != seriallink::ConnectionState::Disconnected) {
+            showProblem(tr("Disconnect from the PTK servo before scanning a Feetech bus."));
+            return;
+        }
         m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
         m_feetechWorkspace->openScanDialog();
     });
@@ -220,6 +225,10 @@ void MainWindow::startFeetechDemo()
     auto *once = new QObject(this);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, once,
             [this, once](const seriallink::ConnectionStatus &status) {
+                if (status.state == seriallink::ConnectionState::Disconnected) {
+                    once->deleteLater(); // the demo never connected: no scan later
+                    return;
+                }
                 if (status.state != seriallink::ConnectionState::Connected)
                     return;
                 feetech::ScanOptions options;
@@ -397,7 +406,7 @@ bool MainWindow::saveProfile(const QString &path)
     // What the form shows: the servo's values with any edits not yet applied.
     QString error;
     if (!profileactions::save(path, *m_ptk->model(), kPtkFamily, {}, m_ptk->model()->definitions(),
-                              &error)) {
+                              true, &error)) {
         showProblem(error);
         return false;
     }

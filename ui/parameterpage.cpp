@@ -277,7 +277,7 @@ void ParameterPage::rebuild()
         auto *box = new QGroupBox(group, groupArea);
         box->setObjectName(QStringLiteral("group_") + group);
         auto *grid = new QGridLayout(box);
-        grid->setHorizontalSpacing(14);
+        grid->setHorizontalSpacing(12);
         grid->setVerticalSpacing(6);
         grids.append(grid);
 

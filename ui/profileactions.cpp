@@ -39,9 +39,10 @@ QString chooseLoadPath(QWidget *parent)
 }
 
 bool save(const QString &path, const model::ParameterModel &parameters, const QString &family,
-          const QString &modelName, const QVector<model::Definition> &definitions, QString *error)
+          const QString &modelName, const QVector<model::Definition> &definitions, bool withEdits,
+          QString *error)
 {
-    const profile::Profile saved = profile::fromModel(parameters, family, modelName, true);
+    const profile::Profile saved = profile::fromModel(parameters, family, modelName, withEdits);
     for (const model::Definition &definition : definitions) {
         if (!saved.value(definition.key)) {
             if (error)

@@ -14,10 +14,12 @@ namespace profileactions {
 QString chooseSavePath(QWidget *parent, const QString &suggestedName);
 QString chooseLoadPath(QWidget *parent);
 
-// Saves what `parameters` holds (edits included) for `definitions`. Refuses while any of them
-// has not been read. False and *error (for the user) on failure.
+// Saves what `parameters` holds for `definitions`: with `withEdits` the form as shown, edits
+// included; without, only what the servo holds (a backup). Refuses while any of them has not
+// been read. False and *error (for the user) on failure.
 bool save(const QString &path, const model::ParameterModel &parameters, const QString &family,
-          const QString &modelName, const QVector<model::Definition> &definitions, QString *error);
+          const QString &modelName, const QVector<model::Definition> &definitions, bool withEdits,
+          QString *error);
 
 enum class LoadOutcome { Failed, AlreadyEqual, Cancelled, Loaded };
 // Validates the whole file, shows what it would change, and on OK turns those rows into edits.

@@ -47,6 +47,8 @@ RegisterTableModel::RegisterTableModel(QObject *parent)
 void RegisterTableModel::setServo(const feetech::RegisterTable *table,
                                   model::ParameterModel *parameters)
 {
+    if (table == m_table && parameters == m_parameters)
+        return; // the same servo: keep whatever cell is being edited
     beginResetModel();
     if (m_parameters)
         disconnect(m_parameters, nullptr, this, nullptr);

@@ -26,6 +26,9 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     Session *session = m_worker.session();
     connect(session, &Session::statusChanged, this, [this](const auto &status) {
         m_status = status;
+        if (status.state == seriallink::ConnectionState::Disconnected
+            || status.state == seriallink::ConnectionState::Lost)
+            forgetWork(); // a backstop: the session reports what it dropped
         emit statusChanged(status);
     });
     connect(session, &Session::countersChanged, this, [this](const auto &counters) {
@@ -142,7 +145,7 @@ void BusClient::onServoFound(const ServoInfo &info)
 }
 
 void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
-                             ReadSource, quint8 statusByte)
+                             ReadSource source, quint8 statusByte)
 {
     const int index = indexOf(id, baud);
     if (index < 0)
@@ -150,8 +153,14 @@ void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArr
     Servo &entry = *m_servos.at(std::size_t(index));
     entry.statusByte = statusByte;
     const qint64 now = m_clock.elapsed() + 1; // 0 means "never read"
-    for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes))
+    for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes)) {
+        // A background refresh may have been read before the write went out: only the
+        // read-back settles what is being written.
+        if (source == ReadSource::Refresh
+            && entry.parameters->state(item.reg->key) == model::State::Writing)
+            continue;
         entry.parameters->setDeviceValue(item.reg->key, item.value, now);
+    }
     emit servoUpdated(index);
 }
 
@@ -192,10 +201,12 @@ void BusClient::onOperationFinished(const OperationResult &result)
             || result.operation == Operation::ChangeBaud
             || result.operation == Operation::FactoryReset
             || result.operation == Operation::CalibrateMiddle;
-        if (result.ok
-            && (result.operation == Operation::FactoryReset
-                || result.operation == Operation::CalibrateMiddle))
-            parameters.revertAll(); // the flow changed the servo under any edit
+        if (result.ok && result.operation == Operation::FactoryReset)
+            parameters.revertAll(); // the flow changed the servo under every edit
+        if (result.ok && result.operation == Operation::CalibrateMiddle) {
+            parameters.revert(QStringLiteral("position_offset"));
+            parameters.revert(QStringLiteral("torque_enable"));
+        }
         if (result.ok && flow)
             readServo(indexOf(entry.info.id, entry.info.baud)); // what the flow changed shows
     }
@@ -203,8 +214,25 @@ void BusClient::onOperationFinished(const OperationResult &result)
         runFollowUp(result);
     if (!target.background)
         emit busyChanged(isBusy());
-    if (!target.background || !result.ok)
+    if (!target.background) // a failed refresh is retried by the next one
         emit operationFinished(result);
+}
+
+void BusClient::forgetWork()
+{
+    const bool wasBusy = isBusy();
+    m_pending.clear();
+    m_followUps.clear();
+    m_scanning = false;
+    for (const auto &entry : m_servos) {
+        model::ParameterModel &parameters = *entry->parameters;
+        for (const model::Definition &definition : parameters.definitions()) {
+            if (parameters.state(definition.key) == model::State::Writing)
+                parameters.markFailed(definition.key);
+        }
+    }
+    if (wasBusy)
+        emit busyChanged(false);
 }
 
 void BusClient::runFollowUp(const OperationResult &result)
@@ -316,11 +344,16 @@ void BusClient::refreshRam(int index)
     const ServoInfo &info = servo(index).info;
     if (!info.hasTable())
         return;
+    // The RAM registers in runs without gaps; a table block may begin in EEPROM and go on
+    // into RAM (torque enable, goal position...).
     QVector<Block> ram;
-    for (const Block &block : info.table().blocks()) {
-        const Register *first = info.table().at(block.address);
-        if (first && first->storage == Storage::Ram)
-            ram.append(block);
+    for (const Register &reg : info.table().registers()) {
+        if (reg.storage != Storage::Ram)
+            continue;
+        if (!ram.isEmpty() && ram.last().address + ram.last().size == reg.address)
+            ram.last().size += reg.size;
+        else
+            ram.append({reg.address, reg.size});
     }
     startOperation(index, nullptr, true, [ram](Session &s, const ServoInfo &target) {
         s.read(target, ram, ReadSource::Refresh);

@@ -92,6 +92,7 @@ private:
     bool startOperation(int index, QString *error, bool background,
                         const std::function<void(Session &, const ServoInfo &)> &work);
     void clearServos();
+    void forgetWork(); // the link went down: nothing is running any more
     void runFollowUp(const OperationResult &result);
 
     seriallink::SessionThread<Session> m_worker;

@@ -254,40 +254,46 @@ void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode ec
     setStatus(seriallink::ConnectionState::Connected);
 }
 
-void Session::close()
+void Session::endAll(const QString &message, seriallink::Failure failure)
 {
     ++m_generation;
-    m_reopenTimer->stop();
     const bool wasScanning = m_scan.has_value();
     const bool wasRunning = m_running;
-    m_queue.clear();
+    const Operation running = m_currentOperation;
+    std::deque<Queued> dropped;
+    dropped.swap(m_queue);
     m_scan.reset();
     m_running = false;
-    m_engine->cancelAll(seriallink::Failure::Cancelled);
+    m_engine->cancelAll(failure);
     m_transport->close();
-    // Whoever waits for an operation hears that it ended, so nothing stays busy.
+    // Whoever waits for an operation hears that it ended, queued ones included, so nothing
+    // stays busy.
     if (wasScanning)
-        emit scanFinished(false, Tr::tr("Disconnected during the scan."));
+        emit scanFinished(false, message);
     else if (wasRunning)
-        emit operationFinished({m_currentOperation, false, Tr::tr("Disconnected."), {}, {}});
+        emit operationFinished({running, false, message, {}, {}});
+    for (const Queued &operation : dropped) {
+        if (operation.operation == Operation::Scan)
+            emit scanFinished(false, message);
+        else
+            emit operationFinished({operation.operation, false, message, {}, {}});
+    }
+}
+
+void Session::close()
+{
+    m_reopenTimer->stop();
+    endAll(Tr::tr("Disconnected."), seriallink::Failure::Cancelled);
     if (m_status.state != seriallink::ConnectionState::Disconnected)
         setStatus(seriallink::ConnectionState::Disconnected);
 }
 
 void Session::onPortFailed(const QString &message, bool lost)
 {
-    ++m_generation;
-    const bool wasScanning = m_scan.has_value();
-    const bool wasRunning = m_running;
-    m_queue.clear();
-    m_scan.reset();
-    m_running = false;
-    m_engine->cancelAll(seriallink::Failure::LinkDown);
-    m_transport->close();
-    if (wasScanning)
-        emit scanFinished(false, message);
-    else if (wasRunning)
-        emit operationFinished({m_currentOperation, false, message, {}, {}});
+    // Queued: by now the user may have closed the port, or opened another one.
+    if (!m_transport->isOpen() && m_status.state != seriallink::ConnectionState::Connected)
+        return;
+    endAll(message, seriallink::Failure::LinkDown);
     if (lost) {
         setStatus(seriallink::ConnectionState::Lost,
                   Tr::tr("%1 Reconnecting when it comes back.").arg(message));
@@ -327,7 +333,13 @@ void Session::startNextOperation()
     m_running = true;
     m_currentOperation = next.operation;
     if (!m_transport->isOpen()) {
-        finishOperation({next.operation, false, Tr::tr("Not connected."), {}, {}});
+        if (next.operation == Operation::Scan) {
+            m_running = false;
+            emit scanFinished(false, Tr::tr("Not connected."));
+            QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
+        } else {
+            finishOperation({next.operation, false, Tr::tr("Not connected."), {}, {}});
+        }
         return;
     }
     next.start();
@@ -373,12 +385,17 @@ void Session::exchange(const Exchange &request, ExchangeDone done)
         const std::optional<quint8> alternate = request.alternateReplyId;
         const int size = request.replyDataSize;
         // Our own frame coming back (an echo the engine did not expect) is never the answer.
-        transaction.acceptsReply = [sent, id, alternate, size](const QByteArray &frame) {
+        const auto other = request.otherFrame;
+        transaction.acceptsReply = [sent, id, alternate, size, other](const QByteArray &frame) {
             if (frame == sent)
                 return false;
             const auto packet = decodePacket(frame);
-            return packet && (packet->id == id || (alternate && packet->id == *alternate))
+            const bool answer = packet
+                && (packet->id == id || (alternate && packet->id == *alternate))
                 && packet->parameters.size() == size;
+            if (packet && !answer && other)
+                other(*packet);
+            return answer;
         };
         transaction.expectedReplySize = kMinimumPacketSize + size;
     }
@@ -530,6 +547,19 @@ Session::Step Session::stepPing(quint8 id, bool mustAnswer, int retries)
     };
 }
 
+void Session::relock(std::vector<std::shared_ptr<ServoInfo>> places, std::function<void()> done)
+{
+    if (places.empty()) {
+        done();
+        return;
+    }
+    const std::shared_ptr<ServoInfo> place = places.front();
+    places.erase(places.begin());
+    // Best effort: a place where nothing answers is simply passed.
+    runSteps({stepSetBaud(place->baud), stepLock(place, true)},
+             [this, places, done](bool, const QString &) { relock(places, done); });
+}
+
 Session::Step Session::markDone(std::shared_ptr<bool> flag)
 {
     return [flag](Done next) {
@@ -582,6 +612,8 @@ void Session::scanBaud(int baudIndex)
     }
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
     m_scan->baudIndex = baudIndex;
+    m_scan->foundIds.clear(); // the same ID at another rate is another servo
+    m_scan->recheck.clear();
     if (!feetech::baudCode(baud) && baud != m_transport->baudRate()) {
         endScan(false, Tr::tr("%1 is not a Feetech baud rate.").arg(baudText(baud)));
         return;
@@ -640,26 +672,18 @@ void Session::scanId(int baudIndex, int id)
 {
     if (!m_scan)
         return;
-    if (m_scan->cancelled || id > m_scan->options.lastId) {
-        scanBaud(m_scan->cancelled ? baudIndex : baudIndex + 1);
+    if (m_scan->cancelled) {
+        scanBaud(baudIndex);
+        return;
+    }
+    if (id > m_scan->options.lastId) {
+        recheck(baudIndex);
         return;
     }
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
-    Exchange ask;
-    ask.request = feetech::ping(quint8(id));
-    ask.replyId = quint8(id);
-    ask.silenceExpected = true;
-    ask.replyTimeout = scanAllowance();
-    ask.retryCount = 0;
-    exchange(ask,
+    scanPing(id, scanAllowance(), 0,
              [this, baudIndex, id, baud](const seriallink::TransactionResult &result,
                                          const std::optional<Packet> &reply) {
-                 if (!m_scan)
-                     return;
-                 if (result.failure == seriallink::Failure::LinkDown) {
-                     endScan(false, failureText(result));
-                     return;
-                 }
                  const auto advance = [this, baudIndex, id, baud] {
                      if (!m_scan)
                          return;
@@ -668,25 +692,84 @@ void Session::scanId(int baudIndex, int id)
                      scanId(baudIndex, id + 1);
                  };
                  if (!reply) {
+                     // Something came, but not a clean answer: worth a second, patient look.
+                     if (result.bytesHeard > 0 && !m_scan->recheck.contains(id))
+                         m_scan->recheck.append(id);
                      advance();
                      return;
                  }
-                 auto servo = std::make_shared<ServoInfo>();
-                 servo->id = quint8(id);
-                 servo->baud = baud;
-                 stepIdentify(servo)([this, servo, advance](bool ok, const QString &) {
-                     if (!m_scan)
-                         return;
-                     if (!ok) {
-                         // It answers PING but not READ: show it, with nothing guessed about it.
-                         servo->model.name = Tr::tr("unknown (identity unreadable)");
-                         servo->model.family.reset();
-                     }
-                     ++m_scan->found;
-                     emit servoFound(*servo);
-                     advance();
-                 });
+                 identifyFound(quint8(id), baud, advance);
              });
+}
+
+void Session::scanPing(int id, std::optional<std::chrono::microseconds> timeout, int retries,
+                       ExchangeDone then)
+{
+    Exchange ask;
+    ask.request = feetech::ping(quint8(id));
+    ask.replyId = quint8(id);
+    ask.silenceExpected = true;
+    ask.replyTimeout = timeout;
+    ask.retryCount = retries;
+    // A servo that answered after its wait ended shows up now, named: ask it again later.
+    ask.otherFrame = [this, id](const Packet &packet) {
+        if (m_scan && packet.id < id && !m_scan->foundIds.contains(packet.id)
+            && !m_scan->recheck.contains(packet.id))
+            m_scan->recheck.append(packet.id);
+    };
+    exchange(ask,
+             [this, then](const seriallink::TransactionResult &result,
+                          const std::optional<Packet> &reply) {
+                 if (!m_scan)
+                     return;
+                 if (result.failure == seriallink::Failure::LinkDown)
+                     endScan(false, failureText(result));
+                 else
+                     then(result, reply);
+             });
+}
+
+void Session::recheck(int baudIndex)
+{
+    if (!m_scan)
+        return;
+    if (m_scan->recheck.isEmpty() || m_scan->cancelled) {
+        m_scan->recheck.clear();
+        scanBaud(m_scan->cancelled ? baudIndex : baudIndex + 1);
+        return;
+    }
+    const int id = m_scan->recheck.takeFirst();
+    const qint32 baud = m_scan->options.bauds.at(baudIndex);
+    // The engine's own, generous reply timeout this time, and one retry.
+    scanPing(id, std::nullopt, 1,
+             [this, baudIndex, id, baud](const seriallink::TransactionResult &,
+                                         const std::optional<Packet> &reply) {
+                 if (!reply)
+                     recheck(baudIndex);
+                 else
+                     identifyFound(quint8(id), baud, [this, baudIndex] { recheck(baudIndex); });
+             });
+}
+
+void Session::identifyFound(quint8 id, qint32 baud, std::function<void()> then)
+{
+    auto servo = std::make_shared<ServoInfo>();
+    servo->id = id;
+    servo->baud = baud;
+    stepIdentify(servo)([this, servo, then](bool ok, const QString &) {
+        if (!m_scan)
+            return;
+        if (!ok) {
+            // It answers PING but not READ: show it, with nothing guessed about it.
+            servo->model.name = Tr::tr("unknown (identity unreadable)");
+            servo->model.family.reset();
+        }
+        ++m_scan->found;
+        m_scan->foundIds.append(servo->id);
+        m_scan->recheck.removeAll(servo->id);
+        emit servoFound(*servo);
+        then();
+    });
 }
 
 void Session::endScan(bool completed, const QString &message)
@@ -780,6 +863,25 @@ void Session::write(const ServoInfo &servo, const QVector<RegisterWrite> &writes
                 }
             }
         }
+        const Register *lockRegister = registerAt(servo, u"lock");
+        const Register *torque = registerAt(servo, u"torque_enable");
+        for (const RegisterWrite &item : writes) {
+            const bool opensLock = lockRegister && item.address == lockRegister->address;
+            const bool calibrates = torque && item.address == torque->address
+                && !item.bytes.isEmpty() && quint8(item.bytes.at(0)) == kTorqueCalibrate;
+            if (opensLock || calibrates) {
+                finishOperation({Operation::Write,
+                                 false,
+                                 opensLock ? Tr::tr("The EEPROM lock is opened and closed by "
+                                                    "ServoBench around each EEPROM write; it "
+                                                    "is not written by hand.")
+                                           : Tr::tr("Torque enable 128 recalibrates the middle; "
+                                                    "use Calibrate middle."),
+                                 servo,
+                                 {}});
+                return;
+            }
+        }
         auto target = std::make_shared<ServoInfo>(servo);
         const bool eeprom = std::any_of(writes.begin(), writes.end(),
                                         [](const RegisterWrite &w) { return w.eeprom; });
@@ -848,8 +950,9 @@ void Session::changeId(const ServoInfo &servo, int newId, const QVector<int> &id
         moved->id = quint8(newId);
         const quint8 oldId = servo.id;
         auto unlocked = std::make_shared<bool>(false);
+        // From the moment the unlock is sent the EEPROM may be open, even if its reply is lost.
         std::vector<Step> steps {stepSetBaud(servo.baud), stepPing(quint8(newId), false, 1),
-                                 stepLock(target, false), markDone(unlocked)};
+                                 markDone(unlocked), stepLock(target, false)};
         // The reply may come from the old ID or the new one (spec §13), or not at all.
         steps.push_back([this, oldId, newId, address = idRegister->address](Done next) {
             Exchange ask;
@@ -884,14 +987,17 @@ void Session::changeId(const ServoInfo &servo, int newId, const QVector<int> &id
                          finishOperation(result);
                          return;
                      }
-                     // Where is it now? If it still answers at the old ID, lock the EEPROM there.
-                     runSteps({stepPing(target->id, true, 1), stepLock(target, true)},
-                              [this, result](bool stillThere, const QString &) mutable {
-                                  if (stillThere)
-                                      result.message +=
-                                          u' ' + Tr::tr("The servo still has its old ID.");
-                                  finishOperation(result);
-                              });
+                     // Wherever it is now, its EEPROM is locked again: at the new ID (ignored
+                     // when nothing answers there), then at the old one.
+                     relock({moved}, [this, result, target]() mutable {
+                         runSteps({stepPing(target->id, true, 1), stepLock(target, true)},
+                                  [this, result](bool stillThere, const QString &) mutable {
+                                      if (stillThere)
+                                          result.message +=
+                                              u' ' + Tr::tr("The servo still has its old ID.");
+                                      finishOperation(result);
+                                  });
+                     });
                  });
     });
 }
@@ -919,8 +1025,11 @@ void Session::changeBaud(const ServoInfo &servo, qint32 newBaud)
         auto moved = std::make_shared<ServoInfo>(servo);
         moved->baud = newBaud;
         auto unlocked = std::make_shared<bool>(false);
-        std::vector<Step> steps {stepSetBaud(servo.baud), stepLock(target, false),
-                                 markDone(unlocked)};
+        // No servo may already answer with this ID at the new rate: both would then answer
+        // every request there.
+        std::vector<Step> steps {stepSetBaud(newBaud), stepPing(servo.id, false, 1),
+                                 stepSetBaud(servo.baud), markDone(unlocked),
+                                 stepLock(target, false)};
         steps.push_back([this, servo, code, address = baudRegister->address](Done next) {
             Exchange ask;
             ask.request = feetech::write(servo.id, quint8(address), QByteArray(1, char(*code)));
@@ -948,37 +1057,39 @@ void Session::changeBaud(const ServoInfo &servo, qint32 newBaud)
             else
                 next(true, {});
         });
-        runSteps(
-            std::move(steps),
-            [this, result, moved, target, newBaud, unlocked](bool ok,
-                                                             const QString &message) mutable {
-                if (ok) {
-                    result.ok = true;
-                    result.servo = *moved;
-                    result.message = Tr::tr("Servo %1 now runs at %2 and answers there.")
-                                         .arg(moved->id)
-                                         .arg(baudText(newBaud));
-                    finishOperation(result);
-                    return;
-                }
-                result.message = message;
-                if (!*unlocked) {
-                    finishOperation(result);
-                    return;
-                }
-                // Follow it back: maybe it never took the new rate.
-                runSteps(
-                    {stepSetBaud(target->baud), stepPing(target->id, true, 1),
-                     stepLock(target, true)},
-                    [this, result, target](bool stillThere, const QString &) mutable {
-                        result.message += u' '
-                            + (stillThere
-                                   ? Tr::tr("It still answers at %1.").arg(baudText(target->baud))
-                                   : Tr::tr("It answers at neither rate; scan all baud rates "
-                                            "to find it."));
-                        finishOperation(result);
-                    });
-            });
+        runSteps(std::move(steps),
+                 [this, result, moved, target, newBaud, unlocked](bool ok,
+                                                                  const QString &message) mutable {
+                     if (ok) {
+                         result.ok = true;
+                         result.servo = *moved;
+                         result.message = Tr::tr("Servo %1 now runs at %2 and answers there.")
+                                              .arg(moved->id)
+                                              .arg(baudText(newBaud));
+                         finishOperation(result);
+                         return;
+                     }
+                     result.message = message;
+                     if (!*unlocked) {
+                         finishOperation(result);
+                         return;
+                     }
+                     // Lock it at the new rate in case it got there, then follow it back: maybe it
+                     // never took the new rate.
+                     relock({moved}, [this, result, target]() mutable {
+                         runSteps({stepSetBaud(target->baud), stepPing(target->id, true, 1),
+                                   stepLock(target, true)},
+                                  [this, result, target](bool stillThere, const QString &) mutable {
+                                      result.message += u' '
+                                          + (stillThere
+                                                 ? Tr::tr("It still answers at %1.")
+                                                       .arg(baudText(target->baud))
+                                                 : Tr::tr("It answers at neither rate; scan all "
+                                                          "baud rates to find it."));
+                                      finishOperation(result);
+                                  });
+                     });
+                 });
     });
 }
 
@@ -1008,12 +1119,17 @@ void Session::calibrateMiddle(const ServoInfo &servo)
                                       servo.repliesToWrites(), Tr::tr("Middle calibration")));
         steps.push_back(stepLock(target, true));
         steps.push_back(stepRead(target, offset->address, offset->size, ReadSource::ReadBack));
-        runSteps(std::move(steps), [this, servo](bool ok, const QString &message) {
-            finishOperation({Operation::CalibrateMiddle,
-                             ok,
-                             ok ? Tr::tr("The present position is now the middle.") : message,
-                             servo,
-                             {}});
+        runSteps(std::move(steps), [this, servo, target](bool ok, const QString &message) {
+            const OperationResult result {Operation::CalibrateMiddle,
+                                          ok,
+                                          ok ? Tr::tr("The present position is now the middle.")
+                                             : message,
+                                          servo,
+                                          {}};
+            if (ok)
+                finishOperation(result);
+            else
+                relock({target}, [this, result] { finishOperation(result); });
         });
     });
 }
@@ -1047,14 +1163,19 @@ void Session::factoryReset(const ServoInfo &servo)
         steps.push_back(stepIdentify(target));
         steps.push_back(stepLock(target, true));
         runSteps(std::move(steps), [this, target](bool ok, const QString &message) {
-            finishOperation({Operation::FactoryReset,
-                             ok,
-                             ok ? Tr::tr("Factory values restored; servo %1 answers at %2.")
-                                      .arg(target->id)
-                                      .arg(baudText(target->baud))
-                                : message,
-                             *target,
-                             {}});
+            const OperationResult result {
+                Operation::FactoryReset,
+                ok,
+                ok ? Tr::tr("Factory values restored; servo %1 answers at %2.")
+                         .arg(target->id)
+                         .arg(baudText(target->baud))
+                   : message,
+                *target,
+                {}};
+            if (ok)
+                finishOperation(result);
+            else
+                relock({target}, [this, result] { finishOperation(result); });
         });
     });
 }

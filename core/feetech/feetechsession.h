@@ -107,7 +107,7 @@ struct SessionTiming
     // Once answers are measured: this many times the slowest one, plus the longest return
     // delay a servo can be set to (254 × 2 µs), within these bounds.
     double scanLatencyFactor = 3.0;
-    std::chrono::microseconds minimumScanAllowance {1000};
+    std::chrono::microseconds minimumScanAllowance {1500};
     std::chrono::microseconds maximumScanAllowance {60000};
     // After a reboot: how long to keep asking before the servo counts as gone.
     std::chrono::milliseconds rebootGiveUp {4000};
@@ -180,6 +180,8 @@ private:
         int replyDataSize = 0;
         bool listenOnly = false; // wait the whole timeout and accept nothing (broadcast probe)
         bool silenceExpected = false; // scans: no answer is an answer, not a link problem
+        // Called with every well-formed frame that is not the answer (a late one, say).
+        std::function<void(const Packet &)> otherFrame;
         seriallink::Transaction::Priority priority = seriallink::Transaction::Priority::Command;
         std::optional<std::chrono::microseconds> replyTimeout;
         std::optional<int> retryCount;
@@ -188,6 +190,8 @@ private:
                                             const std::optional<Packet> &reply)>;
 
     void setStatus(seriallink::ConnectionState state, const QString &message = {});
+    // Ends the running operation and every queued one with `message`, and closes the port.
+    void endAll(const QString &message, seriallink::Failure failure);
     void onPortFailed(const QString &message, bool lost);
     void tryReopen();
     void enqueue(Operation operation, std::function<void()> start);
@@ -207,6 +211,8 @@ private:
     // mustAnswer: fails when the ID is silent; otherwise fails when it answers (ID in use).
     Step stepPing(quint8 id, bool mustAnswer, int retries);
     static Step markDone(std::shared_ptr<bool> flag); // sets the flag when the run gets there
+    // Locks the EEPROM at each place (ID and baud) in turn, whether or not anything answers.
+    void relock(std::vector<std::shared_ptr<ServoInfo>> places, std::function<void()> done);
     void searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> rates, Done done);
     void waitForReboot(const ServoInfo &servo, std::shared_ptr<QElapsedTimer> clock);
     QString servoName(const ServoInfo &servo) const;
@@ -216,6 +222,11 @@ private:
     void scanBaud(int baudIndex);
     void probe(int baudIndex, int round);
     void scanId(int baudIndex, int id);
+    void recheck(int baudIndex);
+    // A scan's PING; the scan ends when the link does, otherwise `then` hears the answer.
+    void scanPing(int id, std::optional<std::chrono::microseconds> timeout, int retries,
+                  ExchangeDone then);
+    void identifyFound(quint8 id, qint32 baud, std::function<void()> then);
     void endScan(bool completed, const QString &message);
 
     SessionTiming m_timing;
@@ -244,6 +255,10 @@ private:
         int total = 0;
         int found = 0;
         bool cancelled = false;
+        // IDs that answered too late or garbled during the sweep of this rate: asked once more,
+        // with time to spare, before the scan moves on.
+        QVector<int> recheck;
+        QVector<int> foundIds;
     };
     std::optional<ScanState> m_scan;
 };
