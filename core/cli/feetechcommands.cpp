@@ -153,15 +153,7 @@ public:
         if (!args.has(QStringLiteral("port")))
             throw UsageError {Tr::tr("feetech commands need --port PATH (see servoctl ports)")};
         m_port = args.value(QStringLiteral("port"));
-        const QString echo = args.value(QStringLiteral("echo"));
-        if (echo.isEmpty() || echo == QLatin1String("auto"))
-            m_echo = seriallink::EchoMode::Auto;
-        else if (echo == QLatin1String("on"))
-            m_echo = seriallink::EchoMode::On;
-        else if (echo == QLatin1String("off"))
-            m_echo = seriallink::EchoMode::Off;
-        else
-            throw UsageError {Tr::tr("--echo must be auto, on or off")};
+        m_echo = echoModeOption(args);
         m_trace = args.flag(QStringLiteral("trace"));
     }
 
@@ -290,16 +282,8 @@ public:
 private:
     void trace(const seriallink::PacketLogEntry &entry)
     {
-        if (!m_trace)
-            return;
-        static const char *const kDirections[] = {"->", "<-", "echo", "stray"};
-        m_output.err << kDirections[int(entry.direction)] << ' ' << util::toHex(entry.bytes);
-        if (!entry.summary.isEmpty())
-            m_output.err << "  " << entry.summary;
-        if (!entry.error.isEmpty())
-            m_output.err << "  [" << entry.error << ']';
-        m_output.err << '\n';
-        m_output.err.flush();
+        if (m_trace)
+            printTrace(m_output, entry);
     }
 
     const Output &m_output;

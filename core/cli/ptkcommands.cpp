@@ -84,15 +84,7 @@ public:
         m_baud = args.has(QStringLiteral("baud"))
             ? qint32(integerOption(args, QStringLiteral("baud"), 1200, 4000000))
             : 115200;
-        const QString echo = args.value(QStringLiteral("echo"));
-        if (echo.isEmpty() || echo == QLatin1String("auto"))
-            m_echo = seriallink::EchoMode::Auto;
-        else if (echo == QLatin1String("on"))
-            m_echo = seriallink::EchoMode::On;
-        else if (echo == QLatin1String("off"))
-            m_echo = seriallink::EchoMode::Off;
-        else
-            throw UsageError {Tr::tr("--echo must be auto, on or off")};
+        m_echo = echoModeOption(args);
         m_trace = args.flag(QStringLiteral("trace"));
     }
 
@@ -183,16 +175,8 @@ private:
 
     void trace(const seriallink::PacketLogEntry &entry)
     {
-        if (!m_trace)
-            return;
-        static const char *const kDirections[] = {"->", "<-", "echo", "stray"};
-        m_output.err << kDirections[int(entry.direction)] << ' ' << util::toHex(entry.bytes);
-        if (!entry.summary.isEmpty())
-            m_output.err << "  " << entry.summary;
-        if (!entry.error.isEmpty())
-            m_output.err << "  [" << entry.error << ']';
-        m_output.err << '\n';
-        m_output.err.flush();
+        if (m_trace)
+            printTrace(m_output, entry);
     }
 
     const Output &m_output;
@@ -469,6 +453,30 @@ ptk::ParameterSet parsePtkAssignments(const QStringList &assignments)
     if (!values)
         throw UsageError {error};
     return *values;
+}
+
+seriallink::EchoMode echoModeOption(const Arguments &args)
+{
+    const QString echo = args.value(QStringLiteral("echo"));
+    if (echo.isEmpty() || echo == QLatin1String("auto"))
+        return seriallink::EchoMode::Auto;
+    if (echo == QLatin1String("on"))
+        return seriallink::EchoMode::On;
+    if (echo == QLatin1String("off"))
+        return seriallink::EchoMode::Off;
+    throw UsageError {Tr::tr("--echo must be auto, on or off")};
+}
+
+void printTrace(const Output &output, const seriallink::PacketLogEntry &entry)
+{
+    static const char *const kDirections[] = {"->", "<-", "echo", "stray"};
+    output.err << kDirections[int(entry.direction)] << ' ' << util::toHex(entry.bytes);
+    if (!entry.summary.isEmpty())
+        output.err << "  " << entry.summary;
+    if (!entry.error.isEmpty())
+        output.err << "  [" << entry.error << ']';
+    output.err << '\n';
+    output.err.flush();
 }
 
 } // namespace cli

@@ -2,6 +2,8 @@
 #pragma once
 
 #include "cli/arguments.h"
+#include "link/linktypes.h"
+#include "link/requestengine.h"
 #include "ptk/ptkparameters.h"
 
 #include <QTextStream>
@@ -14,6 +16,11 @@ struct Output
     QTextStream &err;
     bool json = false;
 };
+
+// --echo auto|on|off (auto when absent); a UsageError for anything else.
+seriallink::EchoMode echoModeOption(const Arguments &args);
+// One --trace line on stderr: direction, hex, meaning and any error.
+void printTrace(const Output &output, const seriallink::PacketLogEntry &entry);
 
 // `rest` is what follows "ptk". Usage errors are thrown as UsageError before anything is sent.
 int runPtkCommand(const Arguments &args, const QStringList &rest, const Output &output);
