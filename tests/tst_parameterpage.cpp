@@ -1,7 +1,7 @@
 // Tests the PTK page: device values beside edits, edits reach the model, polls never overwrite.
 #include "model/parametermodel.h"
-#include "ptk/ptkparameters.h"
 #include "parameterpage.h"
+#include "ptk/ptkparameters.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -413,8 +413,11 @@ private:
         ServoInfo servo;
         std::chrono::microseconds latency {0};
     };
-    std::optional<Target> identifyServo(quint8 id, qint32 baud, QString *error)
+    // The servo --id at --baud (usage errors are thrown before the port is opened).
+    std::optional<Target> identifyServo(const QString &what, QString *error)
     {
+        const quint8 id = servoId(what);
+        const qint32 baud = busBaud();
         Target target;
         target.device = std::make_unique<FeetechDevice>(m_args, m_output);
         if (!target.device->open(baud)) {
@@ -503,10 +506,8 @@ private:
     {
         allowOptions(what, {QStringLiteral("id")});
         expectOperands(what, operands, 0, {});
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        const auto target = identifyServo(id, baud, &error);
+        const auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const double latencyMs = double(target->latency.count()) / 1000.0;
@@ -529,10 +530,8 @@ private:
     {
         allowOptions(what, {QStringLiteral("id")});
         expectOperands(what, operands, 0, {});
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        const auto target = identifyServo(id, baud, &error);
+        const auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const ServoInfo &servo = target->servo;
@@ -580,10 +579,8 @@ private:
             if (key.isEmpty() || key.contains(u'='))
                 throw UsageError {Tr::tr("%1: \"%2\" is not a register key").arg(what, key)};
         }
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        const auto target = identifyServo(id, baud, &error);
+        const auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const ServoInfo &servo = target->servo;
@@ -704,10 +701,8 @@ private:
             }
             assignments.append(assignment);
         }
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const ServoInfo &servo = target->servo;
@@ -789,10 +784,8 @@ private:
         expectOperands(what, operands, 1, Tr::tr("one FILE"));
         const QString path = operands.first();
         checkFolder(path);
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const ServoInfo &servo = target->servo;
@@ -849,10 +842,8 @@ private:
         expectOperands(what, operands, 1, Tr::tr("one FILE"));
         const QString path = operands.first();
         checkProfileFile(path);
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const ServoInfo &servo = target->servo;
@@ -958,15 +949,14 @@ private:
             throw UsageError {Tr::tr("%1: \"%2\" is not an ID (0 to %3)")
                                   .arg(what, operands.first())
                                   .arg(feetech::kMaxServoId)};
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
-        if (*newId == id)
-            return alreadyDone(target->servo,
-                               Tr::tr("servo %1 already has ID %1; nothing written").arg(id));
+        if (*newId == target->servo.id)
+            return alreadyDone(
+                target->servo,
+                Tr::tr("servo %1 already has ID %1; nothing written").arg(target->servo.id));
         // No list of IDs in use: the session's PING of the new ID refuses an occupied one.
         return report(*target, [&target, newId] {
             target->device->session().changeId(target->servo, int(*newId), {});
@@ -978,17 +968,16 @@ private:
         allowOptions(what, {QStringLiteral("id")});
         expectOperands(what, operands, 1, Tr::tr("the new BAUD rate in bits per second"));
         const qint32 newBaud = parseBaud(what, operands.first());
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const ServoInfo &servo = target->servo;
-        if (newBaud == baud)
-            return alreadyDone(
-                servo,
-                Tr::tr("servo %1 already runs at %2; nothing written").arg(id).arg(baudText(baud)));
+        if (newBaud == servo.baud)
+            return alreadyDone(servo,
+                               Tr::tr("servo %1 already runs at %2; nothing written")
+                                   .arg(servo.id)
+                                   .arg(baudText(servo.baud)));
         if (const feetech::Register *reg = servo.table().find(u"baud_rate")) {
             if (servo.hasTable() && *feetech::baudCode(newBaud) > reg->maximum)
                 throw UsageError {Tr::tr("%1 servos do not support %2")
@@ -1003,10 +992,8 @@ private:
     {
         allowOptions(what, {QStringLiteral("id")});
         expectOperands(what, operands, 0, {});
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const feetech::RegisterTable &table = target->servo.table();
@@ -1025,7 +1012,6 @@ private:
         allowOptions(what, {QStringLiteral("id"), QStringLiteral("backup")});
         expectOperands(what, operands, 0, {});
         const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString backup = m_args.value(QStringLiteral("backup"));
         if (m_args.has(QStringLiteral("backup"))) {
             if (backup.isEmpty())
@@ -1038,7 +1024,7 @@ private:
                     .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss"))));
         }
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         const ServoInfo &servo = target->servo;
@@ -1072,10 +1058,8 @@ private:
     {
         allowOptions(what, {QStringLiteral("id")});
         expectOperands(what, operands, 0, {});
-        const quint8 id = servoId(what);
-        const qint32 baud = busBaud();
         QString error;
-        auto target = identifyServo(id, baud, &error);
+        auto target = identifyServo(what, &error);
         if (!target)
             return fail(error);
         return report(*target, [&target] { target->device->session().reboot(target->servo); });

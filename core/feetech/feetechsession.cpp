@@ -174,9 +174,6 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_engine(new seriallink::RequestEngine(*m_transport, m_format, describe, this))
     , m_reopenTimer(new QTimer(this))
 {
-    qRegisterMetaType<seriallink::PacketLogEntry>();
-    qRegisterMetaType<seriallink::LinkCounters>();
-    qRegisterMetaType<seriallink::ConnectionStatus>();
     qRegisterMetaType<feetech::ServoInfo>();
     qRegisterMetaType<feetech::ScanOptions>();
     qRegisterMetaType<feetech::ReadSource>();
@@ -558,6 +555,28 @@ void Session::relock(std::vector<std::shared_ptr<ServoInfo>> places, std::functi
     // Best effort: a place where nothing answers is simply passed.
     runSteps({stepSetBaud(place->baud), stepLock(place, true)},
              [this, places, done](bool, const QString &) { relock(places, done); });
+}
+
+Session::Step Session::stepAddressWrite(quint8 id, int address, quint8 value,
+                                        std::optional<quint8> alternateReplyId)
+{
+    return [this, id, address, value, alternateReplyId](Done next) {
+        Exchange ask;
+        ask.request = feetech::write(id, quint8(address), QByteArray(1, char(value)));
+        ask.replyId = id;
+        ask.alternateReplyId = alternateReplyId;
+        ask.retryCount = 0; // a second write would go to an address that may have changed
+        exchange(ask,
+                 [next](const seriallink::TransactionResult &r, const std::optional<Packet> &) {
+                     // No answer is not a failure: the servo may already listen elsewhere. Whether
+                     // the write took is decided by finding it at the new address.
+                     if (r.failure == seriallink::Failure::LinkDown
+                         || r.failure == seriallink::Failure::Cancelled)
+                         next(false, failureText(r));
+                     else
+                         next(true, {});
+                 });
+    };
 }
 
 Session::Step Session::markDone(std::shared_ptr<bool> flag)
@@ -954,21 +973,7 @@ void Session::changeId(const ServoInfo &servo, int newId, const QVector<int> &id
         std::vector<Step> steps {stepSetBaud(servo.baud), stepPing(quint8(newId), false, 1),
                                  markDone(unlocked), stepLock(target, false)};
         // The reply may come from the old ID or the new one (spec §13), or not at all.
-        steps.push_back([this, oldId, newId, address = idRegister->address](Done next) {
-            Exchange ask;
-            ask.request = feetech::write(oldId, quint8(address), QByteArray(1, char(newId)));
-            ask.replyId = oldId;
-            ask.alternateReplyId = quint8(newId);
-            ask.retryCount = 0;
-            exchange(ask,
-                     [next](const seriallink::TransactionResult &r, const std::optional<Packet> &) {
-                         if (r.failure == seriallink::Failure::LinkDown
-                             || r.failure == seriallink::Failure::Cancelled)
-                             next(false, failureText(r));
-                         else
-                             next(true, {});
-                     });
-        });
+        steps.push_back(stepAddressWrite(oldId, idRegister->address, quint8(newId), quint8(newId)));
         steps.push_back(stepLock(moved, true));
         steps.push_back(stepIdentify(moved));
         runSteps(std::move(steps),
@@ -1030,21 +1035,8 @@ void Session::changeBaud(const ServoInfo &servo, qint32 newBaud)
         std::vector<Step> steps {stepSetBaud(newBaud), stepPing(servo.id, false, 1),
                                  stepSetBaud(servo.baud), markDone(unlocked),
                                  stepLock(target, false)};
-        steps.push_back([this, servo, code, address = baudRegister->address](Done next) {
-            Exchange ask;
-            ask.request = feetech::write(servo.id, quint8(address), QByteArray(1, char(*code)));
-            ask.replyId = servo.id;
-            ask.retryCount = 0;
-            // The answer may already come at the new rate and be lost: not a failure.
-            exchange(ask,
-                     [next](const seriallink::TransactionResult &r, const std::optional<Packet> &) {
-                         if (r.failure == seriallink::Failure::LinkDown
-                             || r.failure == seriallink::Failure::Cancelled)
-                             next(false, failureText(r));
-                         else
-                             next(true, {});
-                     });
-        });
+        // The answer may already come at the new rate and be lost.
+        steps.push_back(stepAddressWrite(servo.id, baudRegister->address, quint8(*code), {}));
         steps.push_back(stepSetBaud(newBaud));
         steps.push_back(stepLock(moved, true));
         steps.push_back(stepIdentify(moved));

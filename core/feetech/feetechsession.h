@@ -210,6 +210,10 @@ private:
     Step stepIdentify(std::shared_ptr<ServoInfo> servo); // fills in what addresses 0-8 say
     // mustAnswer: fails when the ID is silent; otherwise fails when it answers (ID in use).
     Step stepPing(quint8 id, bool mustAnswer, int retries);
+    // A write of the ID or baud register: its reply may come from the new address or not at
+    // all, so only a closed link fails it.
+    Step stepAddressWrite(quint8 id, int address, quint8 value,
+                          std::optional<quint8> alternateReplyId);
     static Step markDone(std::shared_ptr<bool> flag); // sets the flag when the run gets there
     // Locks the EEPROM at each place (ID and baud) in turn, whether or not anything answers.
     void relock(std::vector<std::shared_ptr<ServoInfo>> places, std::function<void()> done);

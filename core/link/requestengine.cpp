@@ -34,6 +34,10 @@ RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, De
     , m_framer(format)
     , m_describer(std::move(describer))
 {
+    // The link's value types cross from a session's worker thread to the GUI in queued signals.
+    qRegisterMetaType<PacketLogEntry>();
+    qRegisterMetaType<LinkCounters>();
+    qRegisterMetaType<ConnectionStatus>();
     connect(&m_transport, &Transport::received, this, &RequestEngine::onReceived);
     connect(&m_transport, &Transport::bytesWritten, this, &RequestEngine::onBytesWritten);
     m_clock.start();
@@ -271,8 +275,13 @@ void RequestEngine::onTimeout(quint64 generation)
     if (m_timing.settleAfterTimeout)
         m_quietUntilMs = m_clock.elapsed()
             + std::chrono::duration_cast<std::chrono::milliseconds>(replyTimeout()).count();
-    log(Direction::In, {},
-        Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(retryCount() + 1));
+    const QString noReply =
+        Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(retryCount() + 1);
+    // A scan's empty ID is an answer, not an error: logged as a note, not in red.
+    if (counted)
+        log(Direction::In, {}, noReply);
+    else
+        log(Direction::In, {}, {}, noReply);
     if (m_attempts <= retryCount() && m_transport.isOpen()) {
         ++m_counters.retries;
         send();
@@ -301,13 +310,15 @@ void RequestEngine::finish(Failure failure, const QByteArray &reply)
     scheduleNext();
 }
 
-void RequestEngine::log(Direction direction, const QByteArray &bytes, const QString &error)
+void RequestEngine::log(Direction direction, const QByteArray &bytes, const QString &error,
+                        const QString &note)
 {
     PacketLogEntry entry;
     entry.timestampMs = QDateTime::currentMSecsSinceEpoch();
     entry.direction = direction;
     entry.bytes = bytes;
     entry.error = error;
+    entry.summary = note;
     if (!bytes.isEmpty() && m_describer && direction != Direction::Stray)
         entry.summary = m_describer(bytes, m_current ? m_current->request : QByteArray());
     emit packetLogged(entry);

@@ -119,7 +119,8 @@ private:
     void onReceived(const QByteArray &bytes);
     void onTimeout(quint64 generation);
     void finish(Failure failure, const QByteArray &reply = {});
-    void log(Direction direction, const QByteArray &bytes, const QString &error = {});
+    void log(Direction direction, const QByteArray &bytes, const QString &error = {},
+             const QString &note = {});
     void publishCounters();
     void heard(int bytes);
     bool echoExpected() const;

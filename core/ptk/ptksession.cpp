@@ -60,9 +60,6 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_pollTimer(new QTimer(this))
     , m_reopenTimer(new QTimer(this))
 {
-    qRegisterMetaType<seriallink::PacketLogEntry>();
-    qRegisterMetaType<seriallink::LinkCounters>();
-    qRegisterMetaType<seriallink::ConnectionStatus>();
     qRegisterMetaType<ptk::ParameterSet>();
     qRegisterMetaType<ptk::ReadSource>();
     m_engine->setTiming(m_timing.engine);
