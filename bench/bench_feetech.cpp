@@ -1,5 +1,6 @@
 // Runs the Feetech session against the simulated bus on a pty and prints JSON figures: scan time
 // at one and at every baud rate, and full table reads, each next to its wire-time lower bound.
+#include "benchsupport.h"
 #include "feetech/feetechpacket.h"
 #include "feetech/feetechsession.h"
 #include "feetech/registertable.h"
@@ -37,33 +38,8 @@ constexpr int kPingSize = 6; // request and reply
 constexpr int kReadRequestSize = 8;
 constexpr int kIdentityReplySize = 6 + 9; // addresses 0-8
 
-double wireMs(qint64 bytes, qint32 baud)
-{
-    return double(bytes) * 10e3 / baud; // 8N1: ten bit times a byte
-}
-
-// Runs the event loop until finish() is called or the time is up; never busy-waits.
-class Waiter
-{
-public:
-    void finish()
-    {
-        m_done = true;
-        m_loop.quit();
-    }
-    bool wait(int timeoutMs)
-    {
-        if (!m_done) {
-            QTimer::singleShot(timeoutMs, &m_loop, &QEventLoop::quit);
-            m_loop.exec();
-        }
-        return m_done;
-    }
-
-private:
-    QEventLoop m_loop;
-    bool m_done = false;
-};
+using bench::Waiter;
+using bench::wireMs;
 
 struct ScanRun
 {

@@ -1,5 +1,6 @@
 // Runs the PTK session against the simulated servo at 115200 baud and prints JSON figures: poll
 // interval against PTK's 50 ms, fast-mode sweep time against the wire limit, CPU per second.
+#include "benchsupport.h"
 #include "ptk/ptkframe.h"
 #include "ptk/ptkparameters.h"
 #include "ptk/ptksession.h"
@@ -23,12 +24,7 @@ constexpr qint32 kBaud = 115200;
 constexpr int kPolledSeconds = 6;
 constexpr int kFastSeconds = 3;
 
-double threadCpuMs()
-{
-    timespec now {};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
-}
+using bench::threadCpuMs;
 
 QJsonObject spread(QVector<double> samples, const QString &unit)
 {

@@ -263,7 +263,13 @@ private slots:
         QTest::newRow("missing id") << QStringLiteral("set max_temperature=60");
         QTest::newRow("unknown get key") << QStringLiteral("get --id 1 colour");
         QTest::newRow("unknown command") << QStringLiteral("flash --id 1");
-        QTest::newRow("monitor is not here yet") << QStringLiteral("monitor --id 1");
+        QTest::newRow("monitor without ids") << QStringLiteral("monitor --id 1");
+        QTest::newRow("monitor rate too high") << QStringLiteral("monitor --ids 1 --rate 5000");
+        QTest::newRow("monitor rate not a number") << QStringLiteral("monitor --ids 1 --rate fast");
+        QTest::newRow("monitor id twice") << QStringLiteral("monitor --ids 1,2,1");
+        QTest::newRow("monitor zero duration") << QStringLiteral("monitor --ids 1 --duration 0");
+        QTest::newRow("monitor csv and json") << QStringLiteral("monitor --ids 1 --csv --json");
+        QTest::newRow("rate elsewhere") << QStringLiteral("read --id 1 --rate 5");
         QTest::newRow("option not taken") << QStringLiteral("read --id 1 --ids 1-3");
         QTest::newRow("not a baud rate") << QStringLiteral("ping --id 1 --baud 9600");
         QTest::newRow("new id out of range") << QStringLiteral("set-id --id 1 254");
@@ -483,6 +489,67 @@ private slots:
         QVERIFY2(result.err.contains(QStringLiteral("-> FF FF 01 02 01 FB")),
                  qPrintable(result.err));
         QVERIFY(result.err.contains(QStringLiteral("<- FF FF 01 02 00 FC")));
+    }
+
+    void monitorCsvParsesBackWithSamplesOfEveryServo()
+    {
+        setServoValue(2, QStringLiteral("torque_enable"), 1);
+        setServoValue(2, QStringLiteral("goal_position"), 2500);
+        const auto result =
+            run(QStringLiteral("monitor --ids 1-3 --rate 100 --duration 0.6 --csv"));
+        QCOMPARE(result.exitCode, 0);
+        QString error;
+        const auto samples = feetech::parseTelemetryCsv(result.out, &error);
+        QVERIFY2(samples, qPrintable(error));
+        QHash<int, QVector<feetech::CsvSample>> byServo;
+        for (const feetech::CsvSample &sample : *samples)
+            byServo[sample.id].append(sample);
+        QCOMPARE(byServo.keys().size(), 3);
+        for (const int id : {1, 2, 3}) {
+            QVERIFY(byServo.value(id).size() >= 5);
+            QVERIFY(byServo.value(id).first().values.at(int(feetech::Quantity::Voltage)));
+        }
+        // Servo 2 was on its way to 2500.
+        const auto &moving = byServo.value(2);
+        QVERIFY(*moving.last().values.at(int(feetech::Quantity::Position))
+                > *moving.first().values.at(int(feetech::Quantity::Position)));
+        QVERIFY(moving.last().timeSeconds > moving.first().timeSeconds);
+        // SYNC READ for the STS pair, one READ of the feedback block for the SCS.
+        const QVector<quint8> instructions = instructionsReceived();
+        QVERIFY(instructions.count(0x82) >= 5);
+        QVERIFY(result.err.contains(QLatin1String("samples")));
+    }
+
+    void monitorJsonLinesCarryTheDecodedFields()
+    {
+        const auto result = run(QStringLiteral("monitor --ids 1,3 --duration 0.3"));
+        QCOMPARE(result.exitCode, 0);
+        const auto json =
+            runServoctl(QStringList {QStringLiteral("--json")}
+                        + feetech(QStringLiteral("monitor --ids 1,3 --duration 0.3").split(u' ')));
+        QCOMPARE(json.exitCode, 0);
+        const QStringList lines = json.out.split(u'\n', Qt::SkipEmptyParts);
+        QVERIFY(lines.size() >= 4);
+        QSet<int> ids;
+        for (const QString &line : lines) {
+            const QJsonObject row = objectOf(line);
+            ids.insert(row.value(QStringLiteral("id")).toInt());
+            QVERIFY(row.contains(QStringLiteral("time_s")));
+            QVERIFY(row.value(QStringLiteral("position")).isDouble());
+            QCOMPARE(row.value(QStringLiteral("status_bits")).toString(), QStringLiteral("none"));
+            // The SCS reports no current in mA: null, never a made-up number.
+            if (row.value(QStringLiteral("id")).toInt() == 3)
+                QVERIFY(row.value(QStringLiteral("current")).isNull());
+        }
+        QCOMPARE(ids, (QSet<int> {1, 3}));
+    }
+
+    void monitorOfAMissingServoExitsOneBeforeStreaming()
+    {
+        const auto result = run(QStringLiteral("monitor --ids 1,9 --duration 0.3 --csv"));
+        QCOMPARE(result.exitCode, 1);
+        QVERIFY(result.err.contains(QLatin1String("9")));
+        QVERIFY(!instructionsReceived().contains(0x82));
     }
 
     void aMissingPortExitsOne()

@@ -1,8 +1,11 @@
 // Feetech workspace: the servo tree, the Settings and Memory table pages, and the guided flows.
 #include "feetechworkspace.h"
 
+#include "controlpage.h"
 #include "feetech/busclient.h"
 #include "feetech/servoparameters.h"
+#include "jointtable.h"
+#include "monitorpage.h"
 #include "parameterpage.h"
 #include "profileactions.h"
 #include "registertablemodel.h"
@@ -37,12 +40,6 @@ constexpr int kLiveRefreshMs = 250;
 enum TreeColumn { ServoColumn, ModelColumn, FamilyColumn, FirmwareColumn, TreeColumns };
 constexpr int kIdRole = Qt::UserRole + 1;
 constexpr int kBaudRole = Qt::UserRole + 2;
-
-QString baudText(qint32 baud)
-{
-    return baud % 1000000 == 0 ? FeetechWorkspace::tr("%1 Mbps").arg(baud / 1000000)
-                               : FeetechWorkspace::tr("%L1 bps").arg(baud);
-}
 
 QStringList settingsKeys()
 {
@@ -107,6 +104,23 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_tree->header()->setStretchLastSection(false);
     m_tree->setIndentation(m_tree->fontMetrics().horizontalAdvance(u'm') * 3 / 2);
     leftLayout->addWidget(m_tree, 1);
+    // The emergency stop stays in sight whatever page is open; Esc does the same everywhere.
+    m_allTorqueOff = actionButton(tr("All torque off  (Esc)"), "allTorqueOffButton",
+                                  tr("Switch the torque of every servo on the bus off at once, "
+                                     "ahead of anything else (also: Esc, from any page)"),
+                                  left);
+    m_allTorqueOff->setMinimumHeight(m_allTorqueOff->sizeHint().height() * 2);
+    QFont stopFont = m_allTorqueOff->font();
+    stopFont.setBold(true);
+    stopFont.setPointSizeF(stopFont.pointSizeF() * 1.2);
+    m_allTorqueOff->setFont(stopFont);
+    m_allTorqueOff->setStyleSheet(
+        QStringLiteral("QPushButton { background-color: #c62828; color: white; border: 1px solid "
+                       "#8e0000; border-radius: 4px; padding: 4px 12px; }"
+                       "QPushButton:hover { background-color: #d84343; }"
+                       "QPushButton:pressed { background-color: #8e0000; }"
+                       "QPushButton:disabled { background-color: #d9a3a3; color: #f5eaea; }"));
+    leftLayout->addWidget(m_allTorqueOff);
     splitter->addWidget(left);
 
     // ---- right: the selected servo
@@ -204,6 +218,12 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     memoryButtons->addWidget(m_tableApply);
     memoryLayout->addLayout(memoryButtons);
     m_tabs->addTab(memory, tr("Memory table"));
+    m_control = new ControlPage(m_client, m_tabs);
+    m_tabs->addTab(m_control, tr("Control"));
+    m_monitor = new MonitorPage(m_client, m_tabs);
+    m_tabs->addTab(m_monitor, tr("Monitor"));
+    m_joints = new JointTable(m_client, m_tabs);
+    m_tabs->addTab(m_joints, tr("Joints"));
     rightLayout->addWidget(m_tabs, 1);
     splitter->addWidget(right);
     splitter->setStretchFactor(0, 0);
@@ -217,6 +237,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
 
     connect(m_scan, &QPushButton::clicked, this, &FeetechWorkspace::openScanDialog);
     connect(m_cancelScan, &QPushButton::clicked, m_client, &feetech::BusClient::cancelScan);
+    connect(m_allTorqueOff, &QPushButton::clicked, m_client, &feetech::BusClient::allTorqueOff);
     connect(m_tree, &QTreeWidget::itemSelectionChanged, this,
             &FeetechWorkspace::onSelectionChanged);
     connect(m_changeId, &QPushButton::clicked, this, &FeetechWorkspace::changeId);
@@ -267,7 +288,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
             [this](int done, int total, qint32 baud) {
                 m_scanProgress->setRange(0, std::max(total, 1));
                 m_scanProgress->setValue(done);
-                m_scanState->setText(tr("Scanning at %1…").arg(baudText(baud)));
+                m_scanState->setText(tr("Scanning at %1…").arg(feetech::baudText(baud)));
             });
     connect(m_client, &feetech::BusClient::scanFinished, this,
             [this](bool completed, const QString &text) {
@@ -351,7 +372,7 @@ void FeetechWorkspace::rebuildTree()
         const feetech::ServoInfo &info = m_client->servo(i).info;
         if (!baudItem || info.baud != baud) {
             baud = info.baud;
-            baudItem = new QTreeWidgetItem(port, {baudText(baud)});
+            baudItem = new QTreeWidgetItem(port, {feetech::baudText(baud)});
         }
         const QString family =
             info.model.family ? feetech::familyName(*info.model.family) : tr("unknown");
@@ -394,6 +415,8 @@ void FeetechWorkspace::onSelectionChanged()
 void FeetechWorkspace::showServo()
 {
     const int index = currentIndex();
+    if (m_control->servo() != index)
+        m_control->setServo(index);
     model::ParameterModel *parameters = m_client->parameters(index);
     if (m_settings->parameterModel() != parameters) {
         if (m_settings->parameterModel())
@@ -457,7 +480,7 @@ void FeetechWorkspace::updateHeader()
                        .arg(info.modelNumber())
                        .arg(family)
                        .arg(info.firmware())
-                       .arg(baudText(info.baud))
+                       .arg(feetech::baudText(info.baud))
                        .arg(status);
     if (!info.hasTable())
         text += QStringLiteral("<br>")
@@ -474,6 +497,7 @@ void FeetechWorkspace::updateActions()
     const bool known = index >= 0 && m_client->servo(index).info.hasTable();
     const bool ready = connected && idle && index >= 0;
     m_scan->setEnabled(connected && idle);
+    m_allTorqueOff->setEnabled(connected); // never held back by work in progress
     m_changeId->setEnabled(ready && known);
     m_changeBaud->setEnabled(ready && known);
     const bool calibration = known
@@ -518,9 +542,9 @@ void FeetechWorkspace::apply()
         if (newId)
             changes.append(tr("its ID from %1 to %2").arg(info.id).arg(*newId));
         if (newBaud)
-            changes.append(
-                tr("its baud rate from %1 to %2")
-                    .arg(baudText(info.baud), baudText(feetech::baudForCode(int(*newBaud)))));
+            changes.append(tr("its baud rate from %1 to %2")
+                               .arg(feetech::baudText(info.baud),
+                                    feetech::baudText(feetech::baudForCode(int(*newBaud)))));
         const auto answer = QMessageBox::question(
             this, tr("Change how the servo is reached?"),
             tr("This changes %1.<br><br>ServoBench writes it to EEPROM with the lock opened "
@@ -586,7 +610,7 @@ void FeetechWorkspace::changeBaud()
         this, tr("Change baud rate"),
         tr("New baud rate for %1 (now %2). ServoBench follows the servo to the new rate and "
            "confirms it there.")
-            .arg(servoTitle(), baudText(info.baud)),
+            .arg(servoTitle(), feetech::baudText(info.baud)),
         rates, int(rates.indexOf(QString::number(info.baud))), false, &ok);
     if (!ok || chosen.toInt() == info.baud)
         return;
@@ -641,6 +665,13 @@ void FeetechWorkspace::factoryReset()
 void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &result)
 {
     using feetech::Operation;
+    if (result.control) {
+        // Goal and torque writes come many a second: the pages show them; only a failure is
+        // worth the status bar, and the servo list has not changed.
+        if (!result.ok)
+            emit problem(result.message);
+        return;
+    }
     if (result.ok && m_current
         && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
             || result.operation == Operation::FactoryReset))

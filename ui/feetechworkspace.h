@@ -7,6 +7,9 @@
 
 #include <optional>
 
+class ControlPage;
+class JointTable;
+class MonitorPage;
 class ParameterPage;
 class QCheckBox;
 class QLabel;
@@ -48,6 +51,10 @@ public:
     ParameterPage *settingsPage() const { return m_settings; }
     QTableView *memoryTable() const { return m_table; }
     QTabWidget *tabs() const { return m_tabs; }
+    MonitorPage *monitorPage() const { return m_monitor; }
+    ControlPage *controlPage() const { return m_control; }
+    JointTable *jointTable() const { return m_joints; }
+    QPushButton *allTorqueOffButton() const { return m_allTorqueOff; }
 
 signals:
     void problem(const QString &message);
@@ -75,6 +82,10 @@ private:
     QString m_portName;
 
     QTreeWidget *m_tree = nullptr;
+    QPushButton *m_allTorqueOff = nullptr;
+    MonitorPage *m_monitor = nullptr;
+    ControlPage *m_control = nullptr;
+    JointTable *m_joints = nullptr;
     QPushButton *m_scan = nullptr;
     QPushButton *m_cancelScan = nullptr;
     QProgressBar *m_scanProgress = nullptr;

@@ -101,6 +101,8 @@ MainWindow::MainWindow(QWidget *parent)
     addDockWidget(Qt::BottomDockWidgetArea, m_packetLog);
 
     createMenus();
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
+            [this] { updateTorqueOffAction(); });
 
     m_connectionState = new QLabel(tr("Not connected"), this);
     m_connectionState->setObjectName(QStringLiteral("connectionState"));
@@ -148,7 +150,12 @@ MainWindow::MainWindow(QWidget *parent)
     updatePollRate();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The pages talk to the clients until they are gone, and the clients are members: the
+    // pages go first (QWidget would delete them only after the members).
+    delete m_pages;
+}
 
 void MainWindow::createMenus()
 {
@@ -189,6 +196,21 @@ void MainWindow::createMenus()
         }
         m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
         m_feetechWorkspace->openScanDialog();
+    });
+
+    // The emergency stop of the Feetech bus. Esc reaches it from every page of the window; a
+    // dialog that is open keeps Esc for itself (and a modal one blocks the bus work anyway).
+    m_allTorqueOff = link->addAction(tr("All &torque off"));
+    m_allTorqueOff->setObjectName(QStringLiteral("allTorqueOffAction"));
+    m_allTorqueOff->setShortcut(QKeySequence(Qt::Key_Escape));
+    m_allTorqueOff->setShortcutContext(Qt::WindowShortcut);
+    m_allTorqueOff->setToolTip(tr("Switch the torque of every servo on the Feetech bus off"));
+    m_allTorqueOff->setEnabled(false);
+    connect(m_allTorqueOff, &QAction::triggered, this, [this] {
+        if (!m_feetechActive || !m_feetech->isConnected())
+            return;
+        statusBar()->showMessage(tr("Torque off: sent to every servo…"));
+        m_feetech->allTorqueOff();
     });
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
@@ -245,6 +267,12 @@ void MainWindow::showProtocol(bool feetech)
     for (QAction *action : std::as_const(m_ptkActions))
         action->setEnabled(!feetech);
     m_pollRate->setVisible(!feetech);
+    updateTorqueOffAction();
+}
+
+void MainWindow::updateTorqueOffAction()
+{
+    m_allTorqueOff->setEnabled(m_feetechActive && m_feetech->isConnected());
 }
 
 void MainWindow::connectToPort(const QString &port)

@@ -12,6 +12,7 @@ class FeetechWorkspace;
 class QStackedWidget;
 class PacketLogDock;
 class ParameterPage;
+class QAction;
 class QLabel;
 class QTimer;
 
@@ -66,6 +67,7 @@ private:
     void chooseProfileToLoad();
     void showProblem(const QString &message);
     void showProtocol(bool feetech);
+    void updateTorqueOffAction(); // enabled while a Feetech bus is connected
     void updatePollRate();
 
     std::unique_ptr<sim::DemoServos> m_demo;
@@ -74,6 +76,7 @@ private:
     ConnectionBar *m_connectionBar = nullptr;
     ParameterPage *m_ptkPage = nullptr;
     FeetechWorkspace *m_feetechWorkspace = nullptr;
+    QAction *m_allTorqueOff = nullptr; // Esc: torque off on the whole Feetech bus
     QStackedWidget *m_pages = nullptr;
     QList<QAction *> m_ptkActions; // Link menu entries that only mean something for PTK
     bool m_feetechActive = false;

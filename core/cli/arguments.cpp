@@ -72,6 +72,17 @@ QByteArray hexOption(const Arguments &args, const QString &name)
     return *bytes;
 }
 
+std::optional<double> durationOption(const Arguments &args)
+{
+    if (!args.has(QStringLiteral("duration")))
+        return std::nullopt;
+    bool ok = false;
+    const double duration = args.value(QStringLiteral("duration")).toDouble(&ok);
+    if (!ok || !(duration > 0))
+        throw UsageError {Tr::tr("--duration must be a number of seconds above 0")};
+    return duration;
+}
+
 QVector<quint8> idList(const QString &text, int maximumId)
 {
     QVector<quint8> ids;

@@ -7,6 +7,8 @@
 #include <QStringList>
 #include <QVector>
 
+#include <optional>
+
 namespace cli {
 
 // A usage error: the message is printed as one line and servoctl exits 2.
@@ -37,6 +39,8 @@ private:
 
 qint64 integerOption(const Arguments &args, const QString &name, qint64 minimum, qint64 maximum);
 QByteArray hexOption(const Arguments &args, const QString &name);
+// --duration S: seconds above 0, or nothing when the option is absent.
+std::optional<double> durationOption(const Arguments &args);
 // "1,2,5-7" -> 1 2 5 6 7
 QVector<quint8> idList(const QString &text, int maximumId);
 

@@ -202,6 +202,8 @@ public:
             throw UsageError {Tr::tr("ptk needs a command: read, write, save, load or monitor")};
         const QString command = rest.first();
         const QStringList operands = rest.mid(1);
+        if (m_args.has(QStringLiteral("rate")))
+            throw UsageError {Tr::tr("ptk takes no --rate: the servo is polled every 50 ms")};
         if (command != QLatin1String("monitor")) {
             if (m_args.has(QStringLiteral("duration")))
                 throw UsageError {Tr::tr("only ptk monitor takes --duration")};
@@ -359,13 +361,7 @@ private:
     {
         if (!operands.isEmpty())
             throw UsageError {Tr::tr("ptk monitor takes no arguments")};
-        std::optional<double> duration;
-        if (m_args.has(QStringLiteral("duration"))) {
-            bool ok = false;
-            duration = m_args.value(QStringLiteral("duration")).toDouble(&ok);
-            if (!ok || *duration <= 0)
-                throw UsageError {Tr::tr("--duration must be a number of seconds above 0")};
-        }
+        const std::optional<double> duration = durationOption(m_args);
         const bool csv = m_args.flag(QStringLiteral("csv"));
         if (csv && m_output.json)
             throw UsageError {Tr::tr("choose --csv or --json, not both")};

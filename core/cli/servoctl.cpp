@@ -53,6 +53,9 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech factory-reset --id N [--backup FILE]\n"
     "                                         save a backup profile, then restore factory values\n"
     "  feetech reboot --id N                  restart the servo and wait for it\n"
+    "  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]\n"
+    "                                         stream position, speed, load, voltage,\n"
+    "                                         temperature and current (SYNC READ)\n"
     "  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each\n"
     "  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)\n"
     "  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values\n"
@@ -82,7 +85,7 @@ public:
                 {QStringLiteral("port"), QStringLiteral("baud"), QStringLiteral("family"),
                  QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
                  QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
-                 QStringLiteral("duration"), QStringLiteral("backup")},
+                 QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version")});
             m_json = args.flag(QStringLiteral("json"));

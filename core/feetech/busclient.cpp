@@ -4,6 +4,7 @@
 #include "feetech/servoparameters.h"
 
 #include <QCoreApplication>
+#include <QHash>
 
 #include <algorithm>
 
@@ -52,6 +53,17 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         emit servoUpdated(index);
     });
     connect(session, &Session::progress, this, &BusClient::progress);
+    connect(session, &Session::telemetry, this, &BusClient::onTelemetry);
+    connect(session, &Session::telemetryStats, this, [this](const TelemetryStats &stats) {
+        if (stats.stream != m_stream)
+            return; // a stream replaced or stopped since
+        m_telemetryStats = stats;
+        emit telemetryStatsChanged(stats);
+        if (!stats.running && m_monitoring) { // stopped, or the link went down
+            m_monitoring = false;
+            emit monitoringChanged(false);
+        }
+    });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
 }
 
@@ -60,7 +72,7 @@ BusClient::~BusClient() = default;
 bool BusClient::isBusy() const
 {
     return m_scanning || std::any_of(m_pending.begin(), m_pending.end(), [](const Pending &p) {
-               return !p.background;
+               return p.kind == Work::Foreground;
            });
 }
 
@@ -168,6 +180,11 @@ void BusClient::onOperationFinished(const OperationResult &result)
 {
     if (result.operation == Operation::Scan)
         return; // a scan ends through scanFinished
+    if (result.operation == Operation::TorqueOff) {
+        // It overtook everything queued, so it has no place in m_pending.
+        emit operationFinished(result);
+        return;
+    }
     Pending target;
     if (!m_pending.empty()) {
         target = m_pending.front();
@@ -177,7 +194,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
     if (index >= 0) {
         Servo &entry = *m_servos.at(std::size_t(index));
         model::ParameterModel &parameters = *entry.parameters;
-        if (result.operation == Operation::Read && result.ok && !target.background)
+        if (result.operation == Operation::Read && result.ok && target.kind != Work::Background)
             entry.read = true;
         if (result.operation == Operation::Write && !result.ok) {
             // What was on its way and never came back verified keeps its edit, as Failed.
@@ -210,12 +227,15 @@ void BusClient::onOperationFinished(const OperationResult &result)
         if (result.ok && flow)
             readServo(indexOf(entry.info.id, entry.info.baud)); // what the flow changed shows
     }
-    if (!target.background)
+    if (target.kind == Work::Foreground) {
         runFollowUp(result);
-    if (!target.background)
         emit busyChanged(isBusy());
-    if (!target.background) // a failed refresh is retried by the next one
-        emit operationFinished(result);
+    }
+    if (target.kind != Work::Background) { // a failed refresh is retried by the next one
+        OperationResult reported = result;
+        reported.control = target.kind == Work::Control;
+        emit operationFinished(reported);
+    }
 }
 
 void BusClient::forgetWork()
@@ -281,17 +301,17 @@ bool BusClient::applyAll(int index, QString *error)
                     *why = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
                 return false;
             }
-            return startOperation(at, why, false, [newId, inUse](Session &s, const ServoInfo &i) {
-                s.changeId(i, newId, inUse);
-            });
+            return startOperation(
+                at, why, Work::Foreground,
+                [newId, inUse](Session &s, const ServoInfo &i) { s.changeId(i, newId, inUse); });
         });
     }
     if (baudEdit) {
         const qint32 newBaud = baudForCode(int(*baudEdit));
         steps.push_back([this, newBaud](int at, QString *why) {
-            return startOperation(at, why, false, [newBaud](Session &s, const ServoInfo &i) {
-                s.changeBaud(i, newBaud);
-            });
+            return startOperation(
+                at, why, Work::Foreground,
+                [newBaud](Session &s, const ServoInfo &i) { s.changeBaud(i, newBaud); });
         });
     }
     if (steps.empty()) {
@@ -309,7 +329,7 @@ bool BusClient::applyAll(int index, QString *error)
     return true;
 }
 
-bool BusClient::startOperation(int index, QString *error, bool background,
+bool BusClient::startOperation(int index, QString *error, Work kind,
                                const std::function<void(Session &, const ServoInfo &)> &work)
 {
     if (index < 0 || index >= servoCount()) {
@@ -324,8 +344,8 @@ bool BusClient::startOperation(int index, QString *error, bool background,
     }
     const ServoInfo info = servo(index).info;
     const bool wasBusy = isBusy();
-    m_pending.push_back({info.id, info.baud, background});
-    if (!background && !wasBusy)
+    m_pending.push_back({info.id, info.baud, kind});
+    if (kind == Work::Foreground && !wasBusy)
         emit busyChanged(true);
     m_worker.run([work, info](Session &s) { work(s, info); });
     return true;
@@ -333,7 +353,7 @@ bool BusClient::startOperation(int index, QString *error, bool background,
 
 void BusClient::readServo(int index)
 {
-    startOperation(index, nullptr, false,
+    startOperation(index, nullptr, Work::Foreground,
                    [](Session &s, const ServoInfo &info) { s.read(info, {}, ReadSource::Read); });
 }
 
@@ -355,7 +375,7 @@ void BusClient::refreshRam(int index)
         else
             ram.append({reg.address, reg.size});
     }
-    startOperation(index, nullptr, true, [ram](Session &s, const ServoInfo &target) {
+    startOperation(index, nullptr, Work::Background, [ram](Session &s, const ServoInfo &target) {
         s.read(target, ram, ReadSource::Refresh);
     });
 }
@@ -396,7 +416,7 @@ bool BusClient::apply(int index, QString *error)
     if (baudEdit)
         parameters.edit(QStringLiteral("baud_rate"), *baudEdit);
     const QVector<RegisterWrite> items = *writes;
-    return startOperation(index, error, false,
+    return startOperation(index, error, Work::Foreground,
                           [items](Session &s, const ServoInfo &info) { s.write(info, items); });
 }
 
@@ -414,9 +434,9 @@ bool BusClient::changeId(int index, int newId, QString *error)
             *error = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
         return false;
     }
-    return startOperation(index, error, false, [newId, inUse](Session &s, const ServoInfo &info) {
-        s.changeId(info, newId, inUse);
-    });
+    return startOperation(
+        index, error, Work::Foreground,
+        [newId, inUse](Session &s, const ServoInfo &info) { s.changeId(info, newId, inUse); });
 }
 
 bool BusClient::changeBaud(int index, qint32 newBaud, QString *error)
@@ -427,9 +447,9 @@ bool BusClient::changeBaud(int index, qint32 newBaud, QString *error)
             *error = blocker;
         return false;
     }
-    return startOperation(index, error, false, [newBaud](Session &s, const ServoInfo &info) {
-        s.changeBaud(info, newBaud);
-    });
+    return startOperation(
+        index, error, Work::Foreground,
+        [newBaud](Session &s, const ServoInfo &info) { s.changeBaud(info, newBaud); });
 }
 
 bool BusClient::calibrateMiddle(int index, QString *error)
@@ -446,7 +466,7 @@ bool BusClient::calibrateMiddle(int index, QString *error)
                             "register).");
         return false;
     }
-    return startOperation(index, error, false,
+    return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.calibrateMiddle(info); });
 }
 
@@ -458,7 +478,7 @@ bool BusClient::factoryReset(int index, QString *error)
             *error = blocker;
         return false;
     }
-    return startOperation(index, error, false,
+    return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.factoryReset(info); });
 }
 
@@ -469,7 +489,7 @@ bool BusClient::reboot(int index, QString *error)
             *error = Tr::tr("Another operation is still running.");
         return false;
     }
-    return startOperation(index, error, false,
+    return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.reboot(info); });
 }
 
@@ -480,8 +500,164 @@ bool BusClient::clearStatus(int index, QString *error)
             *error = Tr::tr("Another operation is still running.");
         return false;
     }
-    return startOperation(index, error, false,
+    return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
+}
+
+// ---- live monitoring and control
+
+bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString *error)
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!isConnected())
+        return refuse(Tr::tr("The bus is not connected."));
+    if (indexes.isEmpty())
+        return refuse(Tr::tr("Choose at least one servo to monitor."));
+    if (rateHz < 0)
+        return refuse(Tr::tr("The rate cannot be negative."));
+    TelemetryOptions options;
+    options.rateHz = rateHz;
+    for (const int index : indexes) {
+        if (index < 0 || index >= servoCount())
+            return refuse(Tr::tr("No servo is selected."));
+        const ServoInfo &info = servo(index).info;
+        if (!info.hasTable())
+            return refuse(Tr::tr("Servo %1 is of an unknown model: its feedback cannot be "
+                                 "decoded.")
+                              .arg(info.id));
+        options.servos.append(info);
+    }
+    options.stream = ++m_stream;
+    m_monitorOptions = options;
+    m_worker.run([options](Session &s) { s.startTelemetry(options); });
+    if (!m_monitoring) {
+        m_monitoring = true;
+        emit monitoringChanged(true);
+    }
+    return true;
+}
+
+void BusClient::stopMonitor()
+{
+    ++m_stream;
+    m_worker.run([](Session &s) { s.stopTelemetry(); });
+    if (m_monitoring) {
+        m_monitoring = false;
+        emit monitoringChanged(false);
+    }
+}
+
+bool BusClient::isMonitored(int index) const
+{
+    if (!m_monitoring || index < 0 || index >= servoCount())
+        return false;
+    const ServoInfo &info = servo(index).info;
+    return std::any_of(
+        m_monitorOptions.servos.begin(), m_monitorOptions.servos.end(),
+        [&info](const ServoInfo &s) { return s.id == info.id && s.baud == info.baud; });
+}
+
+std::optional<FeedbackSample> BusClient::latestSample(int index) const
+{
+    if (index < 0 || index >= servoCount())
+        return std::nullopt;
+    return servo(index).latest;
+}
+
+void BusClient::onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream)
+{
+    if (!m_monitoring || stream != m_stream)
+        return; // the last batch of a stream already stopped or replaced
+    for (const FeedbackSample &sample : samples) {
+        const int index = indexOf(sample.id, sample.baud);
+        if (index >= 0)
+            m_servos.at(std::size_t(index))->latest = sample;
+    }
+    emit telemetryReceived(samples);
+}
+
+bool BusClient::writeValues(int index, const QVector<model::WriteItem> &values, QString *error)
+{
+    if (!isConnected() || index < 0 || index >= servoCount() || !servo(index).info.hasTable()) {
+        // The same reasons as for any write, except a busy bus: control writes queue up.
+        const QString blocker = writeBlocker(index);
+        if (error)
+            *error = blocker.isEmpty() ? Tr::tr("No servo is selected.") : blocker;
+        return false;
+    }
+    if (values.isEmpty()) {
+        if (error)
+            *error = Tr::tr("Nothing to write.");
+        return false;
+    }
+    const auto writes = encodeWrites(servo(index).info.table(), values, error);
+    if (!writes)
+        return false;
+    const QVector<RegisterWrite> items = *writes;
+    return startOperation(index, error, Work::Control,
+                          [items](Session &s, const ServoInfo &info) { s.write(info, items); });
+}
+
+void BusClient::allTorqueOff()
+{
+    emit allTorqueOffRequested();
+    QVector<qint32> bauds;
+    QVector<ServoInfo> servos;
+    for (const auto &entry : m_servos) {
+        if (!bauds.contains(entry->info.baud))
+            bauds.append(entry->info.baud);
+        servos.append(entry->info);
+    }
+    if (bauds.isEmpty() && m_status.baud > 0)
+        bauds.append(m_status.baud); // nothing scanned yet: the rate the port is at
+    m_worker.run([bauds, servos](Session &s) { s.torqueOffAll(bauds, servos); });
+}
+
+bool BusClient::moveAll(const QVector<Goal> &goals, QString *error)
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!isConnected())
+        return refuse(Tr::tr("The bus is not connected."));
+    if (goals.isEmpty())
+        return refuse(Tr::tr("Nothing to move."));
+    // One SYNC WRITE per baud rate, servos in the order given.
+    QVector<qint32> bauds;
+    QHash<qint32, QVector<SyncWriteEntry>> entries;
+    for (const Goal &goal : goals) {
+        if (goal.index < 0 || goal.index >= servoCount())
+            return refuse(Tr::tr("No servo is selected."));
+        const ServoInfo &info = servo(goal.index).info;
+        if (!info.hasTable())
+            return refuse(
+                Tr::tr("Servo %1 is of an unknown model; nothing is written to it.").arg(info.id));
+        QString why;
+        const auto encoded =
+            encodeWrites(info.table(), {{QStringLiteral("goal_position"), goal.position}}, &why);
+        if (!encoded || encoded->size() != 1)
+            return refuse(Tr::tr("Servo %1: %2").arg(info.id).arg(why));
+        if (!bauds.contains(info.baud))
+            bauds.append(info.baud);
+        entries[info.baud].append({info.id, encoded->first().bytes});
+    }
+    const Register *goal =
+        servo(goals.first().index).info.table().find(QStringLiteral("goal_position"));
+    const int address = goal ? goal->address : 42;
+    for (const qint32 baud : std::as_const(bauds)) {
+        const QVector<SyncWriteEntry> group = entries.value(baud);
+        m_pending.push_back({0, baud, Work::Control});
+        m_worker.run([baud, address, group](Session &s) {
+            s.syncWrite(baud, address, int(group.first().data.size()), group);
+        });
+    }
+    return true;
 }
 
 void BusClient::clearServos()

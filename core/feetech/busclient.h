@@ -3,6 +3,7 @@
 #pragma once
 
 #include "feetech/feetechsession.h"
+#include "feetech/telemetry.h"
 #include "link/linktypes.h"
 #include "link/sessionthread.h"
 #include "model/parametermodel.h"
@@ -23,6 +24,7 @@ struct Servo
     std::unique_ptr<model::ParameterModel> parameters;
     std::optional<quint8> statusByte; // of its last reply
     bool read = false; // its table has been read at least once
+    std::optional<FeedbackSample> latest; // the newest telemetry sample
 };
 
 class BusClient : public QObject
@@ -72,6 +74,38 @@ public:
     bool reboot(int index, QString *error = nullptr);
     bool clearStatus(int index, QString *error = nullptr);
 
+    // ---- live monitoring and control
+
+    // Streams the feedback block of the servos `indexes` at `rateHz` samples per second each
+    // (0: as fast as the bus allows) until stopMonitor; replaces a stream already running.
+    // False and *error when nothing was started.
+    bool startMonitor(const QVector<int> &indexes, double rateHz, QString *error = nullptr);
+    void stopMonitor();
+    bool isMonitoring() const { return m_monitoring; }
+    const TelemetryOptions &monitorOptions() const { return m_monitorOptions; }
+    bool isMonitored(int index) const;
+    // The newest sample of servo `index` (nothing before the first).
+    std::optional<FeedbackSample> latestSample(int index) const;
+    const TelemetryStats &telemetryStats() const { return m_telemetryStats; }
+
+    // Control writes: register values by key, in register units, written and read back (EEPROM
+    // ones unlocked and locked again). Unlike apply() they do not wait for an idle bus and
+    // leave the servo's pending edits alone; the model shows what the read-back says.
+    // False and *error (naming the register) when a value is unknown or out of range.
+    bool writeValues(int index, const QVector<model::WriteItem> &values, QString *error = nullptr);
+    // Torque enable 0 on every servo of the bus: a broadcast WRITE at each baud rate the scan
+    // found servos at, ahead of anything queued (a running scan is cancelled), then a read-back
+    // from each servo found. Emits allTorqueOffRequested at once.
+    void allTorqueOff();
+    struct Goal
+    {
+        int index = 0;
+        qint32 position = 0; // register units (steps)
+    };
+    // One SYNC WRITE of goal positions per baud rate; false and *error when a position is out
+    // of its servo's range or a servo is unknown (nothing sent).
+    bool moveAll(const QVector<Goal> &goals, QString *error = nullptr);
+
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void countersChanged(const seriallink::LinkCounters &counters);
@@ -83,14 +117,26 @@ signals:
     void progress(int done, int total);
     void operationFinished(const feetech::OperationResult &result);
     void busyChanged(bool busy);
+    // Samples of monitored servos, in batches (at most about 50 a second).
+    void telemetryReceived(const QVector<feetech::FeedbackSample> &samples);
+    void telemetryStatsChanged(const feetech::TelemetryStats &stats);
+    void monitoringChanged(bool monitoring);
+    // Whatever moves servos (sweeps, step tests) stops on this.
+    void allTorqueOffRequested();
 
 private:
     void onServoFound(const ServoInfo &info);
     void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
-    bool startOperation(int index, QString *error, bool background,
+    enum class Work {
+        Foreground, // the bus is busy until it ends
+        Background, // a refresh: skipped when busy, its failure not reported
+        Control // a control write: reported, but it does not make the bus busy
+    };
+    bool startOperation(int index, QString *error, Work kind,
                         const std::function<void(Session &, const ServoInfo &)> &work);
+    void onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream);
     void clearServos();
     void forgetWork(); // the link went down: nothing is running any more
     void runFollowUp(const OperationResult &result);
@@ -106,12 +152,16 @@ private:
     {
         quint8 id = 0;
         qint32 baud = 0;
-        bool background = false;
+        Work kind = Work::Foreground;
     };
     std::deque<Pending> m_pending;
     // Steps of an applyAll still to come, each given the servo's index as it is then.
     std::deque<std::function<bool(int index, QString *error)>> m_followUps;
     QElapsedTimer m_clock;
+    bool m_monitoring = false;
+    quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped
+    TelemetryOptions m_monitorOptions;
+    TelemetryStats m_telemetryStats;
 };
 
 } // namespace feetech

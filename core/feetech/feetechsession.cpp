@@ -21,8 +21,6 @@ struct Tr
 
 constexpr int kIdentityAddress = 0;
 constexpr int kIdentitySize = 9; // addresses 0-8: firmware, END, model, ID, baud, delay, level
-// The longest return delay a servo can be set to: 254 × 2 µs.
-constexpr std::chrono::microseconds kLongestReturnDelay {508};
 constexpr quint8 kTorqueOff = 0;
 constexpr std::size_t kLatencyWindow = 8;
 constexpr quint8 kTorqueCalibrate = 128;
@@ -34,12 +32,6 @@ QString describe(const QByteArray &frame, const QByteArray &request)
     const QByteArray stream = frame == request ? frame : request + frame;
     const auto frames = cli::decodeStream(cli::Protocol::Feetech, stream);
     return frames.isEmpty() ? QString() : frames.last().summary;
-}
-
-QString baudText(qint32 baud)
-{
-    return baud >= 1000000 && baud % 1000000 == 0 ? Tr::tr("%1 Mbps").arg(baud / 1000000)
-                                                  : Tr::tr("%1 bps").arg(baud);
 }
 
 QString failureText(const seriallink::TransactionResult &result)
@@ -260,6 +252,7 @@ void Session::endAll(const QString &message, seriallink::Failure failure)
     std::deque<Queued> dropped;
     dropped.swap(m_queue);
     m_scan.reset();
+    stopTelemetry();
     m_running = false;
     m_engine->cancelAll(failure);
     m_transport->close();
@@ -322,6 +315,20 @@ void Session::enqueue(Operation operation, std::function<void()> start)
 }
 
 void Session::startNextOperation()
+{
+    if (m_running)
+        return;
+    // Telemetry and operations take turns: a running cycle ends first, and a cycle that is
+    // due goes before the next operation, unless that is the torque-off emergency.
+    if (m_telemetry && m_telemetry->inCycle)
+        return;
+    const bool emergency = !m_queue.empty() && m_queue.front().operation == Operation::TorqueOff;
+    if (!emergency && startTelemetryCycleIfDue())
+        return;
+    startQueuedOperation();
+}
+
+void Session::startQueuedOperation()
 {
     if (m_running || m_queue.empty())
         return;

@@ -3,6 +3,7 @@
 
 #include "feetech/feetechpacket.h"
 #include "feetech/registertable.h"
+#include "feetech/telemetry.h"
 #include "link/linktypes.h"
 #include "link/requestengine.h"
 
@@ -21,6 +22,9 @@ class SerialTransport;
 }
 
 namespace feetech {
+
+// The longest return delay a servo can be set to: 254 × 2 µs (register 7).
+constexpr std::chrono::microseconds kLongestReturnDelay {508};
 
 // What a servo says about itself in addresses 0-8 (all single bytes, so byte order plays no
 // part in reading them).
@@ -47,6 +51,21 @@ struct ServoInfo
 
 // Reads addresses 0-8 as an identity (nothing when the bytes are too few).
 std::optional<ServoInfo> servoInfoFromIdentity(quint8 id, qint32 baud, QByteArrayView bytes);
+
+struct TelemetryOptions
+{
+    QVector<ServoInfo> servos; // in the order their replies are asked for
+    double rateHz = 50.0; // samples per second per servo; 0: as fast as the bus allows
+    // A servo that misses this many cycles in a row is taken out of the cycle (so it cannot
+    // slow the others) and asked alone, once per missingProbeInterval, until it answers.
+    int missesBeforeMissing = 3;
+    std::chrono::milliseconds missingProbeInterval {1000};
+    // servoctl --trace: every frame in the packet log, not only the failures.
+    bool logEveryFrame = false;
+    // Names the stream in its samples and statistics, so a client that started a new one can
+    // tell late news of the old one apart.
+    quint64 stream = 0;
+};
 
 enum class MiddleCalibration { Unsupported, TorqueEnable128, Instruction };
 // By family and firmware (spec §2.2, §10): 0x0B on STS from 3.10 and on HLS, torque enable 128
@@ -84,7 +103,9 @@ enum class Operation {
     CalibrateMiddle,
     FactoryReset,
     Reboot,
-    ClearStatus
+    ClearStatus,
+    TorqueOff, // every servo of the bus, ahead of the queue
+    SyncWrite
 };
 
 struct OperationResult
@@ -94,6 +115,9 @@ struct OperationResult
     QString message; // for the user; says what went wrong when !ok
     ServoInfo servo; // as the servo is reached after the operation (new ID or baud)
     std::chrono::microseconds latency {0}; // Ping: the measured answer time
+    // Set by BusClient: a control write (torque, goal, a move of all servos), which pages
+    // report in place rather than as a change of the servo list.
+    bool control = false;
 };
 
 struct SessionTiming
@@ -109,6 +133,13 @@ struct SessionTiming
     double scanLatencyFactor = 3.0;
     std::chrono::microseconds minimumScanAllowance {1500};
     std::chrono::microseconds maximumScanAllowance {60000};
+    // Telemetry waits like a scan (the measured answer time, plus a return delay for every
+    // servo of a SYNC READ), but never less than this: a sample that comes late would
+    // otherwise be taken for the next cycle's.
+    std::chrono::microseconds minimumTelemetryAllowance {3000};
+    // Samples reach the GUI in batches, at most this often.
+    std::chrono::milliseconds telemetryBatchInterval {20};
+    std::chrono::milliseconds telemetryStatsInterval {250};
     // After a reboot: how long to keep asking before the servo counts as gone.
     std::chrono::milliseconds rebootGiveUp {4000};
     std::chrono::milliseconds rebootPollInterval {100};
@@ -154,6 +185,18 @@ public:
     void reboot(const feetech::ServoInfo &servo);
     void clearStatus(const feetech::ServoInfo &servo);
 
+    // Telemetry: a cycle of SYNC READs (one READ per servo where the family has no SYNC READ)
+    // of the feedback block, at the options' rate, between operations, until stopTelemetry.
+    void startTelemetry(const feetech::TelemetryOptions &options);
+    void stopTelemetry();
+    bool isStreaming() const { return m_telemetry.has_value(); }
+    // Torque enable 0 by broadcast WRITE at each of `bauds`, then read back from `servos`.
+    // Runs before anything queued; a running scan is cancelled.
+    void torqueOffAll(const QVector<qint32> &bauds, const QVector<feetech::ServoInfo> &servos);
+    // One SYNC WRITE (no replies) at `baud`; every entry's data is `length` bytes.
+    void syncWrite(qint32 baud, int address, int length,
+                   const QVector<feetech::SyncWriteEntry> &entries);
+
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
@@ -168,6 +211,8 @@ signals:
     void operationFinished(const feetech::OperationResult &result);
     void packetLogged(const seriallink::PacketLogEntry &entry);
     void countersChanged(const seriallink::LinkCounters &counters);
+    void telemetry(const QVector<feetech::FeedbackSample> &samples, quint64 stream);
+    void telemetryStats(const feetech::TelemetryStats &stats);
 
 private:
     using Done = std::function<void(bool ok, const QString &message)>;
@@ -197,6 +242,7 @@ private:
     void enqueue(Operation operation, std::function<void()> start);
     void finishOperation(const OperationResult &result);
     void startNextOperation();
+    void startQueuedOperation(); // the next operation, whether or not a telemetry cycle is due
     void runSteps(std::vector<Step> steps, Done done);
 
     void exchange(const Exchange &exchange, ExchangeDone done);
@@ -233,6 +279,42 @@ private:
     void identifyFound(quint8 id, qint32 baud, std::function<void()> then);
     void endScan(bool completed, const QString &message);
 
+    // ---- telemetry (feetechtelemetry.cpp)
+    struct TelemetryServo
+    {
+        ServoInfo info;
+        ServoTelemetry stats;
+        int missesInARow = 0;
+        qint64 nextProbeUs = 0; // when a missing servo is asked again
+    };
+    struct TelemetryState
+    {
+        TelemetryOptions options;
+        std::vector<TelemetryServo> servos;
+        QTimer *timer = nullptr; // the cycle clock; none when running as fast as possible
+        bool due = false; // a cycle should start as soon as the bus is free
+        bool inCycle = false;
+        std::vector<std::function<void(std::function<void()>)>> steps; // of the running cycle
+        std::size_t nextStep = 0;
+        qint64 startedUs = 0;
+        TelemetryStats stats;
+        std::deque<std::pair<qint64, qint64>> history; // (time, samples) at each cycle's end
+    };
+    void telemetryTick();
+    bool startTelemetryCycleIfDue(); // true when a cycle started
+    void runTelemetryStep();
+    void endTelemetryCycle();
+    std::function<void(std::function<void()>)> telemetrySyncRead(qint32 baud,
+                                                                 QVector<int> servoIndexes);
+    std::function<void(std::function<void()>)> telemetryRead(int servoIndex, bool probe);
+    void noteTelemetryAnswer(int servoIndex, const Packet &reply, qint64 steadyUs);
+    void noteTelemetryMiss(int servoIndex);
+    std::chrono::microseconds telemetryAllowance(int servos) const;
+    void flushTelemetry();
+    void publishTelemetryStats();
+    void updateTelemetryStats();
+    void logNote(const QString &note, bool error = false);
+
     SessionTiming m_timing;
     FrameFormat m_format;
     seriallink::SerialTransport *m_transport = nullptr;
@@ -265,6 +347,12 @@ private:
         QVector<int> foundIds;
     };
     std::optional<ScanState> m_scan;
+
+    std::optional<TelemetryState> m_telemetry;
+    quint64 m_telemetryGeneration = 0; // a new stream or a stop: earlier answers are ignored
+    QVector<FeedbackSample> m_telemetryBatch;
+    QTimer *m_telemetryFlushTimer = nullptr;
+    QTimer *m_telemetryStatsTimer = nullptr;
 };
 
 } // namespace feetech
@@ -274,3 +362,5 @@ Q_DECLARE_METATYPE(feetech::ScanOptions)
 Q_DECLARE_METATYPE(feetech::ReadSource)
 Q_DECLARE_METATYPE(feetech::OperationResult)
 Q_DECLARE_METATYPE(feetech::RegisterWrite)
+Q_DECLARE_METATYPE(feetech::SyncWriteEntry)
+Q_DECLARE_METATYPE(feetech::TelemetryOptions)

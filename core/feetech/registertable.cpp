@@ -501,4 +501,10 @@ qint32 defaultBaud(Family family)
     return family == Family::Sms ? 115200 : 1000000;
 }
 
+QString baudText(qint32 baud)
+{
+    return baud >= 1000000 && baud % 1000000 == 0 ? Tr::tr("%1 Mbps").arg(baud / 1000000)
+                                                  : Tr::tr("%L1 bps").arg(baud);
+}
+
 } // namespace feetech

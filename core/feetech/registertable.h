@@ -127,6 +127,8 @@ QVector<qint32> baudRates();
 std::optional<int> baudCode(qint32 baud);
 qint32 baudForCode(int code); // 0 for a code outside 0-7
 qint32 defaultBaud(Family family); // SMS 115200, the others 1000000
+// A rate as people read it: "1 Mbps", "115,200 bps" (translated, in the user's locale).
+QString baudText(qint32 baud);
 
 // The model number as the servo's own byte order reads addresses 3-4 (STS3215 = 777).
 quint16 modelNumber(quint8 major, quint8 minor, ByteOrder order);

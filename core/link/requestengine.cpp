@@ -25,6 +25,13 @@ constexpr std::chrono::milliseconds kCounterPublishInterval {100};
 // How long a frame may take to leave the program before the port counts as stuck.
 constexpr std::chrono::milliseconds kWriteStallTimeout {500};
 
+TransactionResult failedWith(Failure failure)
+{
+    TransactionResult result;
+    result.failure = failure;
+    return result;
+}
+
 } // namespace
 
 RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, Describer describer,
@@ -82,7 +89,7 @@ void RequestEngine::cancelAll(Failure failure)
     }
     for (Transaction &transaction : ended) {
         if (transaction.done)
-            transaction.done({failure, {}, 0});
+            transaction.done(failedWith(failure));
     }
 }
 
@@ -92,7 +99,7 @@ void RequestEngine::cancelPolls()
     ended.swap(m_polls);
     for (Transaction &transaction : ended) {
         if (transaction.done)
-            transaction.done({Failure::Cancelled, {}, 0});
+            transaction.done(failedWith(Failure::Cancelled));
     }
 }
 
@@ -162,8 +169,10 @@ void RequestEngine::send()
     m_firstHeardUs = -1;
     m_echoConsumed = false;
     m_sawFrame = false;
+    m_collected.clear();
     ++m_counters.framesSent;
-    log(Direction::Out, m_current->request);
+    if (!m_current->logFailuresOnly)
+        log(Direction::Out, m_current->request);
     m_transport.write(m_current->request);
     publishCounters();
     // A port that never confirms the write must not hang the queue.
@@ -190,7 +199,7 @@ void RequestEngine::onBytesWritten(qint64 count)
     m_writtenAtUs = m_clock.nsecsElapsed() / 1000;
     m_replyWireTime = wireTime(echoSize);
     std::chrono::microseconds wait;
-    if (!m_current->acceptsReply)
+    if (!m_current->expectsReply())
         wait = wireTime(requestSize + echoSize) + m_timing.writeSettle;
     else
         wait = wireTime(requestSize + echoSize + m_current->expectedReplySize) + replyTimeout();
@@ -227,7 +236,8 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 m_echoConsumed = true;
                 m_echoSeen = Decision::Yes;
                 m_counters.echoBytes += item->bytes.size();
-                log(Direction::Echo, item->bytes);
+                if (!m_current->logFailuresOnly)
+                    log(Direction::Echo, item->bytes);
                 break;
             }
             if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown && !m_sawFrame)
@@ -236,9 +246,23 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             heard(int(item->bytes.size()));
             if (m_current->acceptsReply && m_current->acceptsReply(item->bytes)) {
                 ++m_counters.repliesOk;
-                log(Direction::In, item->bytes);
+                if (!m_current->logFailuresOnly)
+                    log(Direction::In, item->bytes);
                 finish(Failure::None, item->bytes);
                 return;
+            }
+            const auto answer = m_current->collectsReplies ? m_current->collectsReplies(item->bytes)
+                                                           : Transaction::Answer::NotMine;
+            if (answer != Transaction::Answer::NotMine) {
+                ++m_counters.repliesOk;
+                if (!m_current->logFailuresOnly)
+                    log(Direction::In, item->bytes);
+                m_collected.append(item->bytes);
+                if (answer == Transaction::Answer::Complete) {
+                    finish(Failure::None, item->bytes);
+                    return;
+                }
+                break;
             }
             m_counters.discardedBytes += item->bytes.size();
             log(Direction::In, item->bytes, Tr::tr("unexpected frame, ignored"));
@@ -265,7 +289,7 @@ void RequestEngine::onTimeout(quint64 generation)
 {
     if (generation != m_generation || m_state == State::Idle || !m_current)
         return; // a timer of an exchange that has already ended
-    if (m_state == State::AwaitingReply && !m_current->acceptsReply) {
+    if (m_state == State::AwaitingReply && !m_current->expectsReply()) {
         finish(Failure::None);
         return;
     }
@@ -295,7 +319,10 @@ void RequestEngine::onTimeout(quint64 generation)
 void RequestEngine::finish(Failure failure, const QByteArray &reply)
 {
     std::unique_ptr<Transaction> done = std::move(m_current);
-    TransactionResult result {failure, reply, m_attempts};
+    TransactionResult result = failedWith(failure);
+    result.reply = reply;
+    result.attempts = m_attempts;
+    result.frames.swap(m_collected);
     // Bytes that form no frame yet (two servos answering at once) were heard all the same.
     result.bytesHeard = m_bytesHeard + int(m_framer.pendingBytes());
     if (m_firstHeardUs >= 0)

@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
+#include <QVector>
 
 #include <chrono>
 #include <deque>
@@ -48,6 +49,9 @@ struct TransactionResult
     // once) still tells how quickly the line answers.
     std::chrono::microseconds latency {0};
     int bytesHeard = 0; // bytes other than the echo that arrived for this request
+    // Requests answered by several frames (SYNC READ): every accepted frame, in order of arrival,
+    // also those that came before a timeout.
+    QVector<QByteArray> frames;
     bool ok() const { return failure == Failure::None; }
 };
 
@@ -59,13 +63,22 @@ struct Transaction
     Priority priority = Priority::Command;
     // Whether a received frame is this request's answer; no function: nothing is expected back.
     std::function<bool(const QByteArray &frame)> acceptsReply;
-    int expectedReplySize = 0; // for the wire-time part of the timeout
+    // For a request several servos answer in turn (SYNC READ), instead of acceptsReply: says of
+    // each frame whether it is not an answer, one of the answers, or the last one needed. The
+    // transaction ends on the last one, or at the timeout with the answers that came.
+    enum class Answer { NotMine, More, Complete };
+    std::function<Answer(const QByteArray &frame)> collectsReplies;
+    int expectedReplySize = 0; // for the wire-time part of the timeout (all answers together)
     // Overrides of the engine's timing for this transaction (a scan waits less than a write).
     std::optional<std::chrono::microseconds> replyTimeout;
     std::optional<int> retryCount;
     // A scan asks where most IDs are empty and several servos may answer at once: its
     // timeouts and garbled answers say nothing about the link, so the counters skip them.
     bool silenceExpected = false;
+    // Frames that went well are counted but not put in the packet log (a telemetry stream of
+    // hundreds of frames a second would bury everything else); failures are always logged.
+    bool logFailuresOnly = false;
+    bool expectsReply() const { return bool(acceptsReply) || bool(collectsReplies); }
     std::function<void(const TransactionResult &)> done;
 };
 
@@ -149,6 +162,7 @@ private:
     std::chrono::microseconds m_replyWireTime {0};
     bool m_echoConsumed = false;
     bool m_sawFrame = false;
+    QVector<QByteArray> m_collected; // answers so far of a request several servos answer
     QElapsedTimer m_clock;
     qint64 m_quietUntilMs = 0; // no request goes out before this: a late reply may be on its way
     quint64 m_generation = 0; // stale timer firings carry an old generation and are ignored

@@ -4,6 +4,8 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 
+#include <poll.h>
+
 namespace seriallink {
 
 Q_LOGGING_CATEGORY(lcLink, "servobench.link", QtWarningMsg)
@@ -80,10 +82,28 @@ void SerialTransport::onError(QSerialPort::SerialPortError error)
 {
     if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError)
         return;
+    if (error == QSerialPort::ReadError && !isHungUp()) {
+        // QSerialPort calls a read that finds nothing an error, with whatever errno was left
+        // from before. That happens when input it was told about was flushed first (a late
+        // reply discarded before the next request): the port is fine.
+        qCDebug(lcLink) << "read found nothing; not an error" << m_port->errorString();
+        m_port->clearError();
+        return;
+    }
     const QString message = portErrorMessage(error, m_port->portName(), m_port->errorString());
     qCDebug(lcLink) << "port error" << error << message;
     m_port->clearError();
     emit failed(message, isLostError(error));
+}
+
+bool SerialTransport::isHungUp() const
+{
+    if (!m_port->isOpen())
+        return true;
+    pollfd descriptor {int(m_port->handle()), POLLIN, 0};
+    if (::poll(&descriptor, 1, 0) < 0)
+        return true;
+    return (descriptor.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
 }
 
 bool isLostError(QSerialPort::SerialPortError error)

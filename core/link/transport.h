@@ -50,6 +50,9 @@ public:
 
 private:
     void onError(QSerialPort::SerialPortError error);
+    // The device is gone or closed on the far side (a pty whose other end closed, an adapter
+    // unplugged): a read error then means the link is lost.
+    bool isHungUp() const;
 
     QSerialPort *m_port = nullptr;
 };

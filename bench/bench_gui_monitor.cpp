@@ -1,0 +1,161 @@
+// Measures the GUI process while its Monitor page plots six servos at 50 Hz: CPU per second of
+// the whole process and of the GUI thread, and resident memory early and late in the run.
+// The simulated servos run in a separate servosim process, so their work is not counted.
+#include "benchsupport.h"
+#include "feetech/busclient.h"
+#include "monitorpage.h"
+#include "telemetryplot.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QScopeGuard>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include <cstdio>
+
+namespace {
+
+constexpr int kServos = 6;
+constexpr double kRateHz = 50.0;
+constexpr int kWarmUpSeconds = 3;
+constexpr int kMeasureSeconds = 10;
+constexpr int kSecondHalfSeconds = 20; // how long the run goes on before memory is read again
+
+double residentMegabytes()
+{
+    QFile status(QStringLiteral("/proc/self/status"));
+    if (!status.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray &line : status.readAll().split('\n')) {
+        if (line.startsWith("VmRSS:"))
+            return line.mid(6).trimmed().split(' ').first().toDouble() / 1024.0;
+    }
+    return -1;
+}
+
+int fail(const QString &message)
+{
+    std::fprintf(stderr, "bench_gui_monitor: %s\n", qPrintable(message));
+    return 1;
+}
+
+struct Window
+{
+    double seconds = 0;
+    double processCpuMs = 0;
+    double guiThreadCpuMs = 0;
+};
+
+Window measure(int seconds)
+{
+    Window window;
+    const double process = bench::processCpuMs();
+    const double gui = bench::threadCpuMs();
+    QElapsedTimer clock;
+    clock.start();
+    bench::Waiter().wait(seconds * 1000);
+    window.seconds = double(clock.nsecsElapsed()) / 1e9;
+    window.processCpuMs = bench::processCpuMs() - process;
+    window.guiThreadCpuMs = bench::threadCpuMs() - gui;
+    return window;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QApplication app(argc, argv);
+    const QString servosim =
+        QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("../app/servosim"));
+    if (!QFileInfo(servosim).isExecutable())
+        return fail(QStringLiteral("servosim not found at %1").arg(servosim));
+    QTemporaryDir dir;
+    const QString link = dir.filePath(QStringLiteral("bus"));
+    QStringList arguments {QStringLiteral("feetech"), QStringLiteral("--link"), link};
+    for (int id = 1; id <= kServos; ++id)
+        arguments << QStringLiteral("--servo") << QStringLiteral("%1:STS3215").arg(id);
+    QProcess simulator;
+    simulator.start(servosim, arguments);
+    if (!simulator.waitForStarted())
+        return fail(QStringLiteral("servosim did not start"));
+    const auto stopSimulator = qScopeGuard([&simulator] {
+        simulator.terminate();
+        simulator.waitForFinished(3000);
+    });
+    bench::Waiter linkReady;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        if (QFileInfo::exists(link))
+            linkReady.finish();
+    });
+    poll.start(20);
+    if (!linkReady.wait(10000))
+        return fail(QStringLiteral("servosim made no link"));
+    poll.stop();
+
+    feetech::BusClient client;
+    MonitorPage page(&client);
+    page.resize(1180, 820);
+    page.show();
+    bench::Waiter connected;
+    QObject::connect(&client, &feetech::BusClient::statusChanged, [&](const auto &status) {
+        if (status.state == seriallink::ConnectionState::Connected)
+            connected.finish();
+    });
+    client.connectTo(link, 1000000, seriallink::EchoMode::Off);
+    if (!connected.wait(5000))
+        return fail(QStringLiteral("could not open %1").arg(link));
+    bench::Waiter scanned;
+    QObject::connect(&client, &feetech::BusClient::scanFinished, [&scanned] { scanned.finish(); });
+    feetech::ScanOptions scan;
+    scan.lastId = kServos;
+    client.scan(scan);
+    if (!scanned.wait(30000) || client.servoCount() != kServos)
+        return fail(QStringLiteral("found %1 of %2 servos").arg(client.servoCount()).arg(kServos));
+
+    QVector<int> all;
+    for (int i = 0; i < kServos; ++i)
+        all.append(i);
+    page.setSelectedServos(all);
+    page.setRate(kRateHz);
+    QString error;
+    if (!page.start(&error))
+        return fail(error);
+    measure(kWarmUpSeconds);
+    const double memoryEarly = residentMegabytes();
+    const Window window = measure(kMeasureSeconds);
+    measure(kSecondHalfSeconds);
+    const double memoryLate = residentMegabytes();
+    const feetech::TelemetryStats stats = client.telemetryStats();
+    page.stop();
+
+    QJsonArray quantities;
+    for (const feetech::Quantity quantity : page.quantities())
+        quantities.append(feetech::quantityKey(quantity));
+    const QJsonObject report {
+        {QStringLiteral("platform"), QGuiApplication::platformName()},
+        {QStringLiteral("servos"), kServos},
+        {QStringLiteral("rate_hz"), kRateHz},
+        {QStringLiteral("quantities"), quantities},
+        {QStringLiteral("plotted_series"), page.plot()->seriesCount()},
+        {QStringLiteral("samples_per_s"), stats.samplesPerSecond},
+        {QStringLiteral("seconds_measured"), window.seconds},
+        {QStringLiteral("process_cpu_percent_of_one_core"),
+         window.processCpuMs / window.seconds / 10.0},
+        {QStringLiteral("gui_thread_cpu_percent_of_one_core"),
+         window.guiThreadCpuMs / window.seconds / 10.0},
+        {QStringLiteral("resident_mb_after_3_s"), memoryEarly},
+        {QStringLiteral("resident_mb_after_33_s"), memoryLate},
+        {QStringLiteral("buffered_points"), page.plot()->bufferedPoints()},
+    };
+    std::printf("%s", QJsonDocument(report).toJson(QJsonDocument::Indented).constData());
+    return 0;
+}

@@ -1,0 +1,140 @@
+// Runs Feetech telemetry against 6 simulated STS3215 at 1 Mbps on a pty and prints JSON figures:
+// samples per second as fast as the bus allows and at set rates, next to the wire limit.
+#include "benchsupport.h"
+#include "feetech/feetechsession.h"
+#include "feetech/telemetry.h"
+#include "sim/simulator.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include <cstdio>
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr int kServos = 6;
+constexpr int kRunSeconds = 5;
+constexpr int kSyncReadRequestSize = 8; // header, ID, length, instruction, address, size, checksum
+constexpr int kStatusOverhead = 6; // header, ID, length, error, checksum
+// The vendor tool: one servo, about 30 Hz, on its GUI thread (issue 6).
+constexpr double kVendorSamplesPerSecond = 30.0;
+
+struct Run
+{
+    double rateHz = 0;
+    double seconds = 0;
+    qint64 samples = 0;
+    qint64 cycles = 0;
+    qint64 missed = 0;
+    double cpuMs = 0; // of the thread the session runs in
+};
+
+Run stream(feetech::Session &session, const QVector<feetech::ServoInfo> &servos, double rateHz)
+{
+    Run run;
+    run.rateHz = rateHz;
+    feetech::TelemetryStats last;
+    qint64 samples = 0;
+    const auto gotSamples = QObject::connect(
+        &session, &feetech::Session::telemetry,
+        [&samples](const QVector<feetech::FeedbackSample> &batch) { samples += batch.size(); });
+    const auto gotStats = QObject::connect(&session, &feetech::Session::telemetryStats,
+                                           [&last](const feetech::TelemetryStats &s) { last = s; });
+    feetech::TelemetryOptions options;
+    options.servos = servos;
+    options.rateHz = rateHz;
+    const double cpuBefore = bench::threadCpuMs();
+    QElapsedTimer clock;
+    clock.start();
+    session.startTelemetry(options);
+    bench::Waiter().wait(kRunSeconds * 1000);
+    session.stopTelemetry();
+    run.seconds = double(clock.nsecsElapsed()) / 1e9;
+    run.cpuMs = bench::threadCpuMs() - cpuBefore;
+    run.samples = samples;
+    run.cycles = last.cycles;
+    run.missed = last.missed;
+    QObject::disconnect(gotSamples);
+    QObject::disconnect(gotStats);
+    return run;
+}
+
+QJsonObject describe(const Run &run, double wireLimitCyclesPerSecond)
+{
+    const double samplesPerSecond = double(run.samples) / run.seconds;
+    QJsonObject figures {
+        {QStringLiteral("rate_hz"),
+         run.rateHz > 0 ? QJsonValue(run.rateHz) : QJsonValue(QStringLiteral("max"))},
+        {QStringLiteral("seconds"), run.seconds},
+        {QStringLiteral("samples_per_s"), samplesPerSecond},
+        {QStringLiteral("cycles_per_s"), double(run.cycles) / run.seconds},
+        {QStringLiteral("missed"), run.missed},
+        {QStringLiteral("session_cpu_ms_per_s"), run.cpuMs / run.seconds},
+    };
+    if (run.rateHz <= 0)
+        figures.insert(QStringLiteral("share_of_wire_limit"),
+                       double(run.cycles) / run.seconds / wireLimitCyclesPerSecond);
+    return figures;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QTemporaryDir dir;
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.linkPath = dir.filePath(QStringLiteral("bus"));
+    for (int id = 1; id <= kServos; ++id)
+        options.servos.append({quint8(id), QStringLiteral("STS3215"), k1M});
+    sim::SimulatorThread simulator;
+    QString error;
+    if (!simulator.start(options, &error)) {
+        std::fprintf(stderr, "bench_monitor: %s\n", qPrintable(error));
+        return 1;
+    }
+    feetech::Session session;
+    session.open(simulator.linkPath(), k1M, seriallink::EchoMode::Off);
+    QVector<feetech::ServoInfo> servos;
+    const auto found =
+        QObject::connect(&session, &feetech::Session::servoFound,
+                         [&servos](const feetech::ServoInfo &s) { servos.append(s); });
+    bench::Waiter scanned;
+    QObject::connect(&session, &feetech::Session::scanFinished, [&scanned] { scanned.finish(); });
+    feetech::ScanOptions scan;
+    scan.lastId = kServos;
+    session.scan(scan);
+    scanned.wait(30000);
+    QObject::disconnect(found);
+    if (servos.size() != kServos) {
+        std::fprintf(stderr, "bench_monitor: found %d of %d servos\n", int(servos.size()), kServos);
+        return 1;
+    }
+
+    // One cycle: the SYNC READ request (plus one ID byte per servo) and every servo's answer.
+    const qint64 cycleBytes = kSyncReadRequestSize + kServos
+        + qint64(kServos) * (kStatusOverhead + feetech::kFeedbackSize);
+    const double cycleWireMs = bench::wireMs(cycleBytes, k1M);
+    const double wireCyclesPerSecond = 1000.0 / cycleWireMs;
+
+    QJsonArray runs;
+    for (const double rate : {0.0, 100.0, 50.0})
+        runs.append(describe(stream(session, servos, rate), wireCyclesPerSecond));
+    const QJsonObject report {
+        {QStringLiteral("servos"), kServos},
+        {QStringLiteral("baud"), k1M},
+        {QStringLiteral("cycle_bytes"), cycleBytes},
+        {QStringLiteral("cycle_wire_ms"), cycleWireMs},
+        {QStringLiteral("wire_limit_samples_per_s"), wireCyclesPerSecond * kServos},
+        {QStringLiteral("vendor_tool_samples_per_s"), kVendorSamplesPerSecond},
+        {QStringLiteral("runs"), runs},
+    };
+    std::printf("%s", QJsonDocument(report).toJson(QJsonDocument::Indented).constData());
+    return 0;
+}

@@ -1,0 +1,386 @@
+// End-to-end tests of Feetech telemetry and bus-wide control against a simulated bus on a pty.
+#include "feetech/busclient.h"
+#include "feetech/feetechsession.h"
+#include "sim/virtualfeetechservo.h"
+#include "simclient.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using feetech::FeedbackSample;
+using feetech::OperationResult;
+using feetech::ServoInfo;
+using feetech::Session;
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr qint32 k500k = 500000;
+
+// STS3215 ×2, SCS15, HLS at 1 Mbps; an STS3215 at 500 kbps.
+sim::SimulatorOptions monitorBus(const QTemporaryDir &dir)
+{
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.linkPath = dir.filePath(QStringLiteral("bus"));
+    options.logPath = dir.filePath(QStringLiteral("bus.log"));
+    options.servos = {{1, QStringLiteral("STS3215"), k1M},
+                      {2, QStringLiteral("STS3215"), k1M},
+                      {3, QStringLiteral("SCS15"), k1M},
+                      {4, QStringLiteral("HLS"), k1M},
+                      {6, QStringLiteral("STS3215"), k500k}};
+    return options;
+}
+
+} // namespace
+
+class TestFeetechMonitor : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimulatorThread> m_simulator;
+    std::unique_ptr<Session> m_session;
+    QVector<ServoInfo> m_found;
+    QVector<FeedbackSample> m_samples;
+    feetech::TelemetryStats m_stats;
+
+    ServoInfo found(quint8 id) const
+    {
+        for (const ServoInfo &servo : m_found) {
+            if (servo.id == id)
+                return servo;
+        }
+        return {};
+    }
+
+    int samplesOf(quint8 id) const
+    {
+        return int(std::count_if(m_samples.begin(), m_samples.end(),
+                                 [id](const FeedbackSample &s) { return s.id == id; }));
+    }
+
+    // The frames the simulated servos heard, decoded.
+    QVector<feetech::Packet> packetsReceived() const
+    {
+        QVector<feetech::Packet> packets;
+        const auto lines = testsupport::logLinesStartingWith(
+            m_dir.filePath(QStringLiteral("bus.log")), QStringLiteral("in "));
+        for (const QString &line : lines) {
+            const auto bytes = util::parseHex(line.mid(3).section(QStringLiteral("  #"), 0, 0));
+            if (!bytes)
+                continue;
+            if (const auto packet = feetech::decodePacket(*bytes))
+                packets.append(*packet);
+        }
+        return packets;
+    }
+
+    // Runs the event loop until `condition` holds. QTest::qWait sleeps between its rounds of
+    // events, which would cap a fast telemetry stream at about 100 cycles a second.
+    static bool runUntil(const std::function<bool()> &condition, int timeoutMs)
+    {
+        QEventLoop loop;
+        QTimer check;
+        QObject::connect(&check, &QTimer::timeout, &loop, [&] {
+            if (condition())
+                loop.quit();
+        });
+        check.start(5);
+        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+        if (!condition())
+            loop.exec();
+        return condition();
+    }
+
+    OperationResult run(const std::function<void()> &start)
+    {
+        QSignalSpy finished(m_session.get(), &Session::operationFinished);
+        start();
+        if (finished.isEmpty() && !finished.wait(10000))
+            return {};
+        return finished.first().at(0).value<OperationResult>();
+    }
+
+    qint32 simulated(quint8 id, QStringView key)
+    {
+        qint32 value = -1;
+        const QString name = key.toString();
+        m_simulator->call([&](sim::Simulator &simulator) {
+            if (auto *servo = simulator.feetechBus()->findServo(id))
+                value = servo->value(name);
+        });
+        return value;
+    }
+
+private slots:
+    void init()
+    {
+        m_found.clear();
+        m_samples.clear();
+        m_simulator = std::make_unique<sim::SimulatorThread>();
+        QString error;
+        QVERIFY2(m_simulator->start(monitorBus(m_dir), &error), qPrintable(error));
+        m_session = std::make_unique<Session>();
+        connect(m_session.get(), &Session::servoFound, this,
+                [this](const ServoInfo &servo) { m_found.append(servo); });
+        connect(m_session.get(), &Session::telemetry, this,
+                [this](const QVector<FeedbackSample> &batch) { m_samples += batch; });
+        connect(m_session.get(), &Session::telemetryStats, this,
+                [this](const feetech::TelemetryStats &stats) { m_stats = stats; });
+        m_session->open(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
+        QSignalSpy finished(m_session.get(), &Session::scanFinished);
+        feetech::ScanOptions options;
+        options.bauds = {k1M, k500k};
+        options.lastId = 10;
+        m_session->scan(options);
+        QVERIFY(!finished.isEmpty() || finished.wait(30000));
+        QCOMPARE(m_found.size(), 5);
+    }
+
+    void cleanup()
+    {
+        m_session.reset();
+        m_simulator.reset();
+        QFile::remove(m_dir.filePath(QStringLiteral("bus.log")));
+    }
+
+    void samplesArriveForEverySelectedServo()
+    {
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(2)->setValue(u"goal_position", 3000);
+            simulator.feetechBus()->findServo(2)->setValue(u"torque_enable", 1);
+        });
+        feetech::TelemetryOptions options;
+        options.servos = {found(1), found(2), found(3), found(4), found(6)};
+        options.rateHz = 100;
+        m_session->startTelemetry(options);
+        QTRY_VERIFY_WITH_TIMEOUT(samplesOf(1) >= 20 && samplesOf(2) >= 20 && samplesOf(3) >= 20
+                                     && samplesOf(4) >= 20 && samplesOf(6) >= 20,
+                                 10000);
+        m_session->stopTelemetry();
+        // Decoded in real units, with the servo's own clock order.
+        const auto sts = std::find_if(m_samples.begin(), m_samples.end(),
+                                      [](const FeedbackSample &s) { return s.id == 1; });
+        QVERIFY(sts->value(feetech::Quantity::Voltage).has_value());
+        QVERIFY(*sts->value(feetech::Quantity::Voltage) > 5.0);
+        QVERIFY(sts->value(feetech::Quantity::Current).has_value());
+        const auto scs = std::find_if(m_samples.begin(), m_samples.end(),
+                                      [](const FeedbackSample &s) { return s.id == 3; });
+        QVERIFY(scs->value(feetech::Quantity::Position).has_value());
+        QVERIFY(!scs->value(feetech::Quantity::Current).has_value()); // no documented scale
+        for (int i = 1; i < m_samples.size(); ++i)
+            QVERIFY(m_samples.at(i).steadyUs >= m_samples.at(i - 1).steadyUs);
+        // Servo 2 was moving toward 3000: its positions rise.
+        QVector<double> positions;
+        for (const FeedbackSample &sample : std::as_const(m_samples)) {
+            if (sample.id == 2)
+                positions.append(*sample.value(feetech::Quantity::Position));
+        }
+        QVERIFY(positions.last() > positions.first());
+        QCOMPARE(m_stats.running, false);
+        QVERIFY(m_stats.cycles >= 20);
+        QCOMPARE(m_stats.missed, 0);
+    }
+
+    void syncReadForStsAndSingleReadsForScs()
+    {
+        feetech::TelemetryOptions options;
+        options.servos = {found(1), found(2), found(3), found(4)};
+        options.rateHz = 50;
+        m_session->startTelemetry(options);
+        QTRY_VERIFY_WITH_TIMEOUT(samplesOf(3) >= 5 && samplesOf(1) >= 5, 10000);
+        m_session->stopTelemetry();
+        int syncReads = 0;
+        int scsReads = 0;
+        for (const feetech::Packet &packet : packetsReceived()) {
+            if (packet.code == quint8(feetech::Instruction::SyncRead)) {
+                ++syncReads;
+                // Address 56, 15 bytes, the SYNC READ families only, in the order asked.
+                QCOMPARE(packet.id, feetech::kBroadcastId);
+                QCOMPARE(packet.parameters, QByteArray::fromHex("380f010204"));
+            }
+            if (packet.code == quint8(feetech::Instruction::Read) && packet.id == 3
+                && packet.parameters == QByteArray::fromHex("380f"))
+                ++scsReads;
+            QVERIFY(!(packet.code == quint8(feetech::Instruction::Read)
+                      && (packet.id == 1 || packet.id == 2)
+                      && packet.parameters == QByteArray::fromHex("380f")));
+        }
+        QVERIFY(syncReads >= 5);
+        QVERIFY(scsReads >= 5);
+    }
+
+    void missingServoIsReportedWithoutStallingTheOthers()
+    {
+        // Servo 9 was "found" and then unplugged: it is asked, and never answers.
+        ServoInfo gone = found(2);
+        gone.id = 9;
+        feetech::TelemetryOptions options;
+        options.servos = {found(1), gone, found(3)};
+        options.rateHz = 0; // as fast as the bus allows
+        options.missingProbeInterval = std::chrono::milliseconds(200);
+        QSignalSpy notes(m_session.get(), &Session::packetLogged);
+        m_session->startTelemetry(options);
+        QVERIFY(runUntil(
+            [this] { return m_stats.servos.size() == 3 && m_stats.servos.at(1).missing; }, 10000));
+        const int before = samplesOf(1);
+        // The others go on at full speed while the missing one is asked now and then.
+        QVERIFY(runUntil([this] { return m_stats.servos.at(1).missed >= 6; }, 10000));
+        m_session->stopTelemetry();
+        QCOMPARE(samplesOf(9), 0); // nothing invented
+        // 3 misses put it out of the cycle; each later miss is one probe, 200 ms apart, while
+        // the others answer every cycle.
+        QVERIFY2(samplesOf(1) - before >= 50 * (m_stats.servos.at(1).missed - 3),
+                 qPrintable(QStringLiteral("%1 samples, %2 missed")
+                                .arg(samplesOf(1) - before)
+                                .arg(m_stats.servos.at(1).missed)));
+        QVERIFY(qAbs(samplesOf(3) - samplesOf(1)) <= 1); // the SCS servo is read as often
+        const bool reported = std::any_of(notes.begin(), notes.end(), [](const QVariantList &a) {
+            return a.first().value<seriallink::PacketLogEntry>().error.contains(
+                QLatin1String("stopped answering"));
+        });
+        QVERIFY(reported);
+    }
+
+    void servoBackOnTheBusRejoinsTheCycle()
+    {
+        feetech::TelemetryOptions options;
+        options.servos = {found(1), found(2)};
+        options.rateHz = 100;
+        options.missingProbeInterval = std::chrono::milliseconds(100);
+        m_session->startTelemetry(options);
+        QTRY_VERIFY_WITH_TIMEOUT(samplesOf(2) >= 5, 10000);
+        // Servo 2 goes silent (its ID moves away), then comes back.
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(2)->setValue(u"id", 20);
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(m_stats.servos.size() == 2 && m_stats.servos.at(1).missing, 10000);
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(20)->setValue(u"id", 2);
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(!m_stats.servos.at(1).missing, 10000);
+        const int back = samplesOf(2);
+        QTRY_VERIFY_WITH_TIMEOUT(samplesOf(2) >= back + 10, 10000);
+        m_session->stopTelemetry();
+    }
+
+    void allTorqueOffSendsTorqueEnableZeroToEveryServo()
+    {
+        m_simulator->call([](sim::Simulator &simulator) {
+            auto *bus = simulator.feetechBus();
+            for (int i = 0; i < bus->servoCount(); ++i)
+                bus->servo(i).setValue(u"torque_enable", 1);
+        });
+        // While monitoring and with work queued: torque off goes first.
+        feetech::TelemetryOptions options;
+        options.servos = {found(1), found(3)};
+        options.rateHz = 0;
+        m_session->startTelemetry(options);
+        QSignalSpy finished(m_session.get(), &Session::operationFinished);
+        m_session->read(found(1), {}, feetech::ReadSource::Read);
+        m_session->torqueOffAll({k1M, k500k}, m_found);
+        QTRY_VERIFY_WITH_TIMEOUT(finished.size() >= 2, 10000);
+        const auto first = finished.at(0).at(0).value<OperationResult>();
+        QCOMPARE(first.operation, feetech::Operation::TorqueOff);
+        QVERIFY2(first.ok, qPrintable(first.message));
+        QVERIFY(first.message.contains(QLatin1String("5 servo")));
+        m_session->stopTelemetry();
+        for (const quint8 id : {1, 2, 3, 4, 6})
+            QCOMPARE(simulated(id, u"torque_enable"), 0);
+        // One broadcast WRITE of address 40 = 0 at each rate.
+        int broadcasts = 0;
+        for (const feetech::Packet &packet : packetsReceived()) {
+            if (packet.id == feetech::kBroadcastId
+                && packet.code == quint8(feetech::Instruction::Write)
+                && packet.parameters == QByteArray::fromHex("2800"))
+                ++broadcasts;
+        }
+        QCOMPARE(broadcasts, 2);
+    }
+
+    void syncWriteMovesEveryServoInOneFrame()
+    {
+        for (const quint8 id : {1, 2})
+            QVERIFY(run([&] {
+                        m_session->write(found(id), {{40, QByteArray(1, char(1)), false}});
+                    }).ok);
+        const OperationResult result = run([&] {
+            m_session->syncWrite(
+                k1M, 42, 2, {{1, QByteArray::fromHex("e803")}, {2, QByteArray::fromHex("d007")}});
+        });
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QTRY_COMPARE_WITH_TIMEOUT(simulated(1, u"present_position"), 1000, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(simulated(2, u"present_position"), 2000, 10000);
+    }
+
+    void busClientKeepsStreamingAcrossRestartsAndAtFullSpeed()
+    {
+        m_session.reset(); // the pty takes one opener: the client's worker thread now
+        feetech::BusClient client;
+        QSignalSpy connected(&client, &feetech::BusClient::statusChanged);
+        client.connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
+        QTRY_VERIFY_WITH_TIMEOUT(client.isConnected(), 5000);
+        QSignalSpy scanned(&client, &feetech::BusClient::scanFinished);
+        feetech::ScanOptions options;
+        options.lastId = 4;
+        client.scan(options);
+        QVERIFY(!scanned.isEmpty() || scanned.wait(20000));
+        QCOMPARE(client.servoCount(), 4);
+        QHash<int, int> samples;
+        connect(&client, &feetech::BusClient::telemetryReceived, this,
+                [&samples](const QVector<FeedbackSample> &batch) {
+                    for (const FeedbackSample &sample : batch)
+                        ++samples[sample.id];
+                });
+        QVERIFY(client.startMonitor({0, 1, 2, 3}, 50));
+        QTRY_VERIFY_WITH_TIMEOUT(samples.value(1) >= 5, 10000);
+        // A new selection replaces the stream; the old one's last news must not stop it.
+        QVERIFY(client.startMonitor({0, 2}, 0));
+        client.stopMonitor();
+        QVERIFY(client.startMonitor({0, 2}, 0));
+        samples.clear();
+        QVERIFY(
+            runUntil([&] { return samples.value(1) >= 3000 && samples.value(3) >= 3000; }, 30000));
+        QVERIFY(client.isMonitoring());
+        QVERIFY(client.isConnected());
+        QCOMPARE(samples.value(2), 0); // no longer selected
+        QCOMPARE(client.telemetryStats().servos.size(), 2);
+        QCOMPARE(client.latestSample(0)->id, quint8(1));
+        client.stopMonitor();
+        QVERIFY(!client.isMonitoring());
+    }
+
+    void csvRowsParseBack()
+    {
+        FeedbackSample sample;
+        sample.id = 7;
+        sample.steadyUs = 1'500'000;
+        sample.values.at(int(feetech::Quantity::Position)) = 2048;
+        sample.values.at(int(feetech::Quantity::Voltage)) = 7.4;
+        sample.servoStatus = 0x24;
+        sample.moving = true;
+        const QString text = feetech::telemetryCsvHeader() + QLatin1Char('\n')
+            + feetech::telemetryCsvRow(sample, 500'000) + QLatin1Char('\n');
+        QString error;
+        const auto parsed = feetech::parseTelemetryCsv(text, &error);
+        QVERIFY2(parsed, qPrintable(error));
+        QCOMPARE(parsed->size(), 1);
+        QCOMPARE(parsed->first().timeSeconds, 1.0);
+        QCOMPARE(parsed->first().id, 7);
+        QCOMPARE(*parsed->first().values.at(int(feetech::Quantity::Position)), 2048.0);
+        QCOMPARE(*parsed->first().values.at(int(feetech::Quantity::Voltage)), 7.4);
+        QVERIFY(!parsed->first().values.at(int(feetech::Quantity::Current)));
+        QCOMPARE(parsed->first().servoStatus, 0x24);
+        QVERIFY(parsed->first().moving);
+        QVERIFY(!feetech::parseTelemetryCsv(QStringLiteral("a,b\n1,2\n"), &error));
+        QVERIFY(!feetech::parseTelemetryCsv(
+            feetech::telemetryCsvHeader() + QStringLiteral("\n1,2,3\n"), &error));
+        QVERIFY(error.contains(QLatin1String("Line 2")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFeetechMonitor)
+#include "tst_feetechmonitor.moc"

@@ -1,0 +1,444 @@
+// GUI tests of the joint table against a simulated bus: rows, ranges, torque, Move all as one
+// SYNC WRITE, live positions and pose files.
+#include "feetech/busclient.h"
+#include "feetech/pose.h"
+#include "jointtable.h"
+#include "sim/virtualfeetechbus.h"
+#include "sim/virtualfeetechservo.h"
+#include "simclient.h"
+
+#include <QLabel>
+#include <QMap>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cstdlib>
+#include <memory>
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr quint8 kSyncWrite = 0x83;
+constexpr int kGoalAddress = 42;
+
+sim::SimulatorOptions busOptions(const QTemporaryDir &dir)
+{
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.linkPath = dir.filePath(QStringLiteral("bus"));
+    options.logPath = dir.filePath(QStringLiteral("bus.log"));
+    options.servos = {{1, QStringLiteral("STS3215"), k1M},
+                      {2, QStringLiteral("STS3215"), k1M},
+                      {3, QStringLiteral("STS3215"), k1M},
+                      {4, QStringLiteral("SCS15"), k1M}};
+    return options;
+}
+
+// One SYNC WRITE as the simulator received it: FF FF FE LEN 83 ADDR L (ID D1..DL)... CHK.
+struct SyncWrite
+{
+    int address = 0;
+    int length = 0;
+    QMap<int, QByteArray> data; // by servo ID
+};
+
+std::optional<SyncWrite> decodeSyncWrite(const QByteArray &frame)
+{
+    if (frame.size() < 8 || quint8(frame.at(2)) != 0xFE || quint8(frame.at(4)) != kSyncWrite)
+        return std::nullopt;
+    SyncWrite write;
+    write.address = quint8(frame.at(5));
+    write.length = quint8(frame.at(6));
+    const int entries = (quint8(frame.at(3)) - 4) / (write.length + 1);
+    for (int i = 0; i < entries; ++i) {
+        const int at = 7 + i * (write.length + 1);
+        write.data.insert(quint8(frame.at(at)), frame.mid(at + 1, write.length));
+    }
+    return write;
+}
+
+// Every SYNC WRITE frame the simulator received, in order.
+QVector<QByteArray> syncWritesReceived(const QString &logPath)
+{
+    QVector<QByteArray> frames;
+    for (const QString &line : testsupport::logLinesStartingWith(logPath, QStringLiteral("in "))) {
+        const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
+        const auto frame = util::parseHex(hex);
+        if (frame && frame->size() > 4 && quint8(frame->at(4)) == kSyncWrite)
+            frames.append(*frame);
+    }
+    return frames;
+}
+
+// A two-byte goal in the family's byte order: SCS big-endian, the others little-endian.
+qint32 goalValue(const QByteArray &bytes, bool bigEndian)
+{
+    const int first = quint8(bytes.at(0));
+    const int second = quint8(bytes.at(1));
+    return bigEndian ? (first << 8) | second : first | (second << 8);
+}
+
+} // namespace
+
+class TestJointTable : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimulatorThread> m_simulator;
+    std::unique_ptr<feetech::BusClient> m_client;
+    std::unique_ptr<JointTable> m_joints;
+
+    QString logPath() const { return m_dir.filePath(QStringLiteral("bus.log")); }
+
+    qint32 simulatorValue(quint8 id, const QString &key)
+    {
+        qint32 value = -1;
+        m_simulator->call([&](sim::Simulator &simulator) {
+            value = simulator.feetechBus()->findServo(id)->value(key);
+        });
+        return value;
+    }
+
+    template<typename T>
+    T *child(const char *name) const
+    {
+        return m_joints->findChild<T *>(QLatin1String(name));
+    }
+
+    void connectAndScan()
+    {
+        m_client->connectTo(m_simulator->linkPath(), k1M);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        feetech::ScanOptions options;
+        options.lastId = 10;
+        QSignalSpy finished(m_client.get(), &feetech::BusClient::scanFinished);
+        m_client->scan(options);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(m_joints->rowCount(), 4);
+    }
+
+    // Reads every servo through the table's own button, as a user without the monitor would.
+    void readAll()
+    {
+        auto *read = child<QPushButton>("readPositionsButton");
+        QVERIFY(read->isVisible());
+        QVERIFY(read->isEnabled());
+        // Operations finish in the order they were asked for: once the four reads are done,
+        // everything queued before them has been sent too.
+        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        read->click();
+        QTRY_VERIFY_WITH_TIMEOUT(finished.count() >= m_joints->rowCount(), 10000);
+        for (int index = 0; index < m_client->servoCount(); ++index)
+            QVERIFY(m_client->servo(index).read);
+        for (int row = 0; row < m_joints->rowCount(); ++row)
+            QVERIFY(m_joints->position(row).has_value());
+    }
+
+    void switchTorqueOnEverywhere()
+    {
+        // Ticked in the table, as a user would.
+        for (int row = 0; row < m_joints->rowCount(); ++row)
+            m_joints->table()->item(row, JointTable::TorqueColumn)->setCheckState(Qt::Checked);
+        for (int row = 0; row < m_joints->rowCount(); ++row) {
+            QTRY_COMPARE_WITH_TIMEOUT(
+                m_joints->table()->item(row, JointTable::TorqueColumn)->text(),
+                QStringLiteral("On"), 10000);
+            QCOMPARE(simulatorValue(quint8(row + 1), QStringLiteral("torque_enable")), 1);
+        }
+    }
+
+private slots:
+    void init()
+    {
+        m_simulator = std::make_unique<sim::SimulatorThread>();
+        QString error;
+        QVERIFY2(m_simulator->start(busOptions(m_dir), &error), qPrintable(error));
+        m_client = std::make_unique<feetech::BusClient>();
+        m_joints = std::make_unique<JointTable>(m_client.get());
+        m_joints->resize(1180, 820);
+        m_joints->show();
+    }
+
+    void cleanup()
+    {
+        m_joints.reset();
+        m_client.reset();
+        m_simulator.reset();
+    }
+
+    void scanGivesOneRowPerServo()
+    {
+        QCOMPARE(m_joints->rowCount(), 0);
+        QVERIFY(!child<QPushButton>("moveAllButton")->isEnabled());
+        connectAndScan();
+        QTableWidget *table = m_joints->table();
+        for (int row = 0; row < 4; ++row) {
+            QCOMPARE(table->item(row, JointTable::IdColumn)->text(), QString::number(row + 1));
+            QCOMPARE(table->item(row, JointTable::BaudColumn)->text(), QStringLiteral("1 Mbps"));
+            QCOMPARE(m_joints->rowOf(quint8(row + 1), k1M), row);
+            QVERIFY(!m_joints->target(row));
+        }
+        QCOMPARE(table->item(0, JointTable::ModelColumn)->text(), QStringLiteral("STS3215"));
+        QCOMPARE(table->item(3, JointTable::ModelColumn)->text(), QStringLiteral("SCS15"));
+        // Without the monitor the table says its positions are not live and offers a read.
+        QVERIFY(child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));
+        QVERIFY(child<QPushButton>("readPositionsButton")->isVisible());
+    }
+
+    void targetRangeComesFromTheAngleLimitsOnceRead()
+    {
+        connectAndScan();
+        // Not read yet: the goal register's range.
+        QCOMPARE(m_joints->targetRange(0)->minimum, -30719);
+        QCOMPARE(m_joints->targetRange(0)->maximum, 30719);
+        QVERIFY(!m_joints->targetRange(0)->fromAngleLimits);
+        QCOMPARE(m_joints->targetRange(3)->maximum, 1023);
+        readAll();
+        QTRY_VERIFY(m_joints->targetRange(0)->fromAngleLimits);
+        QCOMPARE(m_joints->targetRange(0)->minimum, 0);
+        QCOMPARE(m_joints->targetRange(0)->maximum, 4095);
+        QCOMPARE(m_joints->targetRange(3)->minimum, 20);
+        QCOMPARE(m_joints->targetRange(3)->maximum, 1003);
+        QCOMPARE(m_joints->table()->item(3, JointTable::RangeColumn)->text(),
+                 QStringLiteral("20 to 1003"));
+
+        // Both limits 0 (multi-turn mode) bound nothing: back to the register's range.
+        m_client->parameters(1)->setDeviceValue(QStringLiteral("max_angle_limit"), 0);
+        m_client->parameters(1)->setDeviceValue(QStringLiteral("min_angle_limit"), 0);
+        QCOMPARE(m_joints->targetRange(1)->maximum, 30719);
+        QVERIFY(!m_joints->targetRange(1)->fromAngleLimits);
+
+        // The editor only goes as far as the servo may be sent.
+        QTableWidget *table = m_joints->table();
+        const QModelIndex cell = table->model()->index(3, JointTable::TargetColumn);
+        table->setCurrentIndex(cell);
+        table->edit(cell);
+        auto *editor = table->findChild<QSpinBox *>(QStringLiteral("targetEditor"));
+        QVERIFY(editor);
+        QCOMPARE(editor->minimum(), 20);
+        QCOMPARE(editor->maximum(), 1003);
+        editor->setValue(640);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTRY_COMPARE(m_joints->target(3), std::optional<qint32>(640));
+    }
+
+    void moveAllSendsOneSyncWriteWithEveryTarget()
+    {
+        connectAndScan();
+        readAll();
+        switchTorqueOnEverywhere();
+        const QVector<qint32> targets = {1000, 2500, 3000, 700};
+        for (int row = 0; row < 4; ++row)
+            m_joints->setTarget(row, targets.at(row));
+        QVERIFY(syncWritesReceived(logPath()).isEmpty());
+
+        auto *move = child<QPushButton>("moveAllButton");
+        QVERIFY(move->isEnabled());
+        move->click();
+        QVERIFY2(m_joints->message().contains(QStringLiteral("one SYNC WRITE")),
+                 qPrintable(m_joints->message()));
+        QTRY_COMPARE_WITH_TIMEOUT(syncWritesReceived(logPath()).size(), 1, 5000);
+
+        // Every servo's ID and target in the one frame, each in its family's byte order. All
+        // four servos listen at 1 Mbps only, so the moves below also show the rate was right.
+        const auto write = decodeSyncWrite(syncWritesReceived(logPath()).first());
+        QVERIFY(write);
+        QCOMPARE(write->address, kGoalAddress);
+        QCOMPARE(write->length, 2);
+        QCOMPARE(write->data.keys(), QList<int>({1, 2, 3, 4}));
+        for (int id = 1; id <= 4; ++id)
+            QCOMPARE(goalValue(write->data.value(id), id == 4), targets.at(id - 1));
+
+        // The simulated horns travel to their targets.
+        for (int id = 1; id <= 4; ++id) {
+            QCOMPARE(simulatorValue(quint8(id), QStringLiteral("goal_position")),
+                     targets.at(id - 1));
+            QTRY_VERIFY_WITH_TIMEOUT(
+                std::abs(simulatorValue(quint8(id), QStringLiteral("present_position"))
+                         - targets.at(id - 1))
+                    <= 2,
+                10000);
+        }
+        QCOMPARE(syncWritesReceived(logPath()).size(), 1);
+
+        // Read again, the table shows where they are now.
+        readAll();
+        for (int row = 0; row < 4; ++row)
+            QTRY_VERIFY_WITH_TIMEOUT(std::abs(*m_joints->position(row) - targets.at(row)) <= 2,
+                                     10000);
+    }
+
+    void targetOutOfRangeSendsNothing()
+    {
+        connectAndScan();
+        readAll();
+        QCOMPARE(m_joints->capturePositions(), 4);
+        for (int row = 0; row < 4; ++row)
+            QCOMPARE(m_joints->target(row), m_joints->position(row));
+        const qint32 goalBefore = simulatorValue(4, QStringLiteral("goal_position"));
+
+        // Inside the SCS register's range (0-1023) but beyond the servo's angle limit.
+        m_joints->setTarget(3, 1010);
+        QCOMPARE(m_joints->table()->item(3, JointTable::TargetColumn)->data(Qt::DisplayRole),
+                 QVariant(1010));
+        QString error;
+        QVERIFY(!m_joints->moveAll(&error));
+        QVERIFY2(error.contains(QStringLiteral("ID 4 (SCS15)")), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("20 to 1003")), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("Nothing was sent")), qPrintable(error));
+
+        // The button says the same where the user sees it.
+        child<QPushButton>("moveAllButton")->click();
+        QCOMPARE(m_joints->message(), error);
+
+        m_joints->setTarget(3, 500);
+        m_joints->setTarget(0, 5000);
+        QVERIFY(!m_joints->moveAll(&error));
+        QVERIFY2(error.contains(QStringLiteral("0 to 4095")), qPrintable(error));
+
+        // A round trip through the bus proves nothing was queued before it.
+        readAll();
+        QVERIFY(syncWritesReceived(logPath()).isEmpty());
+        QCOMPARE(simulatorValue(4, QStringLiteral("goal_position")), goalBefore);
+    }
+
+    void moveAllRefusesMissingTargetsAndAClosedBus()
+    {
+        connectAndScan();
+        m_joints->setTarget(0, 100);
+        QString error;
+        QVERIFY(!m_joints->moveAll(&error));
+        QVERIFY2(error.contains(QStringLiteral("ID 2 (STS3215) has no target")), qPrintable(error));
+
+        for (int row = 1; row < 4; ++row)
+            m_joints->setTarget(row, 100);
+        m_client->disconnectFrom();
+        QTRY_VERIFY(!m_client->isConnected());
+        QVERIFY(!m_joints->moveAll(&error));
+        QVERIFY2(error.contains(QStringLiteral("not connected")), qPrintable(error));
+        QVERIFY(!child<QPushButton>("moveAllButton")->isEnabled());
+        QVERIFY(syncWritesReceived(logPath()).isEmpty());
+    }
+
+    void savedPoseLoadsBackTheTargets()
+    {
+        connectAndScan();
+        const QVector<qint32> targets = {1111, 2222, 3333, 444};
+        for (int row = 0; row < 4; ++row)
+            m_joints->setTarget(row, targets.at(row));
+        const QString path = m_dir.filePath(QStringLiteral("arm.json"));
+        QString error;
+        QVERIFY2(m_joints->savePose(path, &error), qPrintable(error));
+
+        const std::optional<feetech::Pose> saved = feetech::loadPose(path, &error);
+        QVERIFY2(saved, qPrintable(error));
+        QCOMPARE(saved->servos.size(), 4);
+        QCOMPARE(saved->find(4, k1M)->position, 444);
+
+        for (int row = 0; row < 4; ++row)
+            m_joints->setTarget(row, 10);
+        const auto match = m_joints->loadPose(path, &error);
+        QVERIFY2(match, qPrintable(error));
+        QCOMPARE(match->filled, 4);
+        QVERIFY(match->notOnBus.isEmpty());
+        QVERIFY(match->rowsWithoutEntry.isEmpty());
+        for (int row = 0; row < 4; ++row)
+            QCOMPARE(m_joints->target(row), std::optional<qint32>(targets.at(row)));
+        QVERIFY(child<QLabel>("poseLabel")->text().contains(QStringLiteral("arm")));
+        // Loading fills targets only: moving is a separate click.
+        QVERIFY(m_joints->message().contains(QStringLiteral("Nothing moves")));
+        readAll();
+        QVERIFY(syncWritesReceived(logPath()).isEmpty());
+    }
+
+    void poseNamingAnAbsentServoIsReported()
+    {
+        connectAndScan();
+        m_joints->setTarget(2, 2000);
+        feetech::Pose pose;
+        pose.name = QStringLiteral("partial");
+        pose.servos = {{1, k1M, 1500}, {9, k1M, 100}, {2, 500000, 300}};
+        const QString path = m_dir.filePath(QStringLiteral("partial.json"));
+        QVERIFY(feetech::savePose(path, pose));
+
+        QString error;
+        const auto match = m_joints->loadPose(path, &error);
+        QVERIFY2(match, qPrintable(error));
+        QCOMPARE(match->filled, 1);
+        QCOMPARE(match->notOnBus.size(), 2);
+        QCOMPARE(match->notOnBus.at(0).id, quint8(9));
+        QCOMPARE(match->notOnBus.at(1).baud, 500000);
+        QCOMPARE(match->rowsWithoutEntry, QVector<int>({1, 2, 3}));
+        QCOMPARE(m_joints->target(0), std::optional<qint32>(1500));
+        QCOMPARE(m_joints->target(2), std::optional<qint32>(2000)); // left as it was
+        QVERIFY(!m_joints->target(1));
+        const QString message = m_joints->message();
+        QVERIFY2(message.contains(QStringLiteral("Not on the bus: ID 9 at 1 Mbps")),
+                 qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("ID 2 at 500,000 bps"))
+                     || message.contains(QStringLiteral("ID 2 at 500000 bps")),
+                 qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("ID 4 (SCS15)")), qPrintable(message));
+    }
+
+    void invalidPoseFileChangesNoTarget()
+    {
+        connectAndScan();
+        m_joints->setTarget(0, 1234);
+        const QString path = m_dir.filePath(QStringLiteral("broken.json"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "servobench-pose", "version": 1, "servos": [)"
+                   R"({"id": 1, "baud": 1000000, "position": 10.5}]})");
+        file.close();
+        QString error;
+        QVERIFY(!m_joints->loadPose(path, &error));
+        QVERIFY2(error.contains(QStringLiteral("not an integer")), qPrintable(error));
+        QCOMPARE(m_joints->target(0), std::optional<qint32>(1234));
+    }
+
+    void positionsAreLiveWhileTheMonitorRuns()
+    {
+        connectAndScan();
+        QString error;
+        QVERIFY2(m_client->startMonitor({0, 1, 2, 3}, 50, &error), qPrintable(error));
+        for (int row = 0; row < 4; ++row)
+            QTRY_VERIFY_WITH_TIMEOUT(m_joints->isPositionLive(row), 10000);
+        QVERIFY(!child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));
+        QVERIFY(!child<QPushButton>("readPositionsButton")->isVisible());
+
+        // Turned by hand (torque is off): the table follows without any read.
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(2)->setPhysicalPosition(1500);
+        });
+        QTRY_COMPARE_WITH_TIMEOUT(m_joints->position(1), std::optional<qint32>(1500), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_joints->table()->item(1, JointTable::PositionColumn)->text(),
+                                  QStringLiteral("1500"), 10000);
+
+        // A servo that stops answering is no longer live, though its last sample stays.
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(3)->setValue(u"baud_rate", 1); // 500 kbps
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(!m_joints->isPositionLive(2), 10000);
+        QVERIFY(m_joints->position(2).has_value());
+        QVERIFY(m_joints->isPositionLive(1));
+        QVERIFY(child<QLabel>("liveHint")->text().contains(QStringLiteral("in grey")));
+
+        m_client->stopMonitor();
+        QVERIFY(!m_joints->isPositionLive(1));
+        QVERIFY(child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));
+        // The last sample stays the best known position until something newer is read.
+        QCOMPARE(m_joints->position(1), std::optional<qint32>(1500));
+        QCOMPARE(m_joints->capturePositions(), 4);
+        QCOMPARE(m_joints->target(1), std::optional<qint32>(1500));
+    }
+};
+
+QTEST_MAIN(TestJointTable)
+#include "tst_jointtable.moc"

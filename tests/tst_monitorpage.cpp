@@ -1,0 +1,506 @@
+// GUI tests of the Monitor page: bounded plot memory under a long synthetic stream, CSV
+// recordings that parse back, PNG export, and live monitoring of a simulated bus.
+#include "feetech/busclient.h"
+#include "monitorpage.h"
+#include "sim/virtualfeetechbus.h"
+#include "sim/virtualfeetechservo.h"
+#include "simclient.h"
+#include "telemetryplot.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QImage>
+#include <QLabel>
+#include <QLineSeries>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QValueAxis>
+#include <QtTest>
+
+#include <memory>
+
+using feetech::FeedbackSample;
+using feetech::Quantity;
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr int kServos = 6;
+constexpr int kRateHz = 100;
+constexpr qint64 kPeriodUs = 1000000 / kRateHz;
+
+// A plausible sample of servo `id` at `us`, every quantity reported.
+FeedbackSample makeSample(quint8 id, qint64 us, double position)
+{
+    FeedbackSample sample;
+    sample.id = id;
+    sample.baud = k1M;
+    sample.steadyUs = us;
+    sample.values = {position, 120.0, 8.5, 12.1, 35.0, 40.0};
+    return sample;
+}
+
+// `seconds` of samples for `servos` servos at kRateHz, fed to the page in the stream's batches
+// of 20 ms, starting at `startUs`; returns the time after the last one.
+qint64 feed(MonitorPage &page, qint64 startUs, int seconds, int servos = kServos)
+{
+    constexpr int kCyclesPerBatch = kRateHz / 50;
+    const int cycles = seconds * kRateHz;
+    QVector<FeedbackSample> batch;
+    for (int cycle = 0; cycle < cycles; ++cycle) {
+        const qint64 us = startUs + cycle * kPeriodUs;
+        for (int id = 1; id <= servos; ++id)
+            batch.append(makeSample(quint8(id), us, 2048 + 1000 * std::sin(cycle / 50.0 + id)));
+        if ((cycle + 1) % kCyclesPerBatch == 0) {
+            page.addSamples(batch);
+            batch.clear();
+        }
+    }
+    page.addSamples(batch);
+    return startUs + cycles * kPeriodUs;
+}
+
+sim::SimulatorOptions busOptions(const QTemporaryDir &dir)
+{
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.linkPath = dir.filePath(QStringLiteral("bus"));
+    options.logPath = dir.filePath(QStringLiteral("bus.log"));
+    options.servos = {{1, QStringLiteral("STS3215"), k1M},
+                      {2, QStringLiteral("STS3215"), k1M},
+                      {3, QStringLiteral("STS3215"), k1M},
+                      {4, QStringLiteral("SCS15"), k1M}};
+    return options;
+}
+
+std::optional<QVector<feetech::CsvSample>> readCsv(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
+        *error = file.errorString();
+        return std::nullopt;
+    }
+    return feetech::parseTelemetryCsv(QString::fromUtf8(file.readAll()), error);
+}
+
+} // namespace
+
+class TestMonitorPage : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimulatorThread> m_simulator;
+    std::unique_ptr<feetech::BusClient> m_client;
+    std::unique_ptr<MonitorPage> m_page;
+
+    void startSimulatorAndScan()
+    {
+        m_simulator = std::make_unique<sim::SimulatorThread>();
+        QString error;
+        QVERIFY2(m_simulator->start(busOptions(m_dir), &error), qPrintable(error));
+        m_client->connectTo(m_simulator->linkPath(), k1M);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        feetech::ScanOptions options;
+        options.lastId = 6;
+        QSignalSpy finished(m_client.get(), &feetech::BusClient::scanFinished);
+        m_client->scan(options);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(m_client->servoCount(), 4);
+    }
+
+    int readoutRow(quint8 id) const
+    {
+        QTableWidget *table = m_page->readouts();
+        for (int row = 0; row < table->rowCount(); ++row) {
+            if (table->item(row, MonitorPage::ServoColumn)->text()
+                == QStringLiteral("ID %1").arg(id))
+                return row;
+        }
+        return -1;
+    }
+
+    QString readout(quint8 id, int column) const
+    {
+        const int row = readoutRow(id);
+        return row < 0 ? QString() : m_page->readouts()->item(row, column)->text();
+    }
+
+private slots:
+    void init()
+    {
+        m_client = std::make_unique<feetech::BusClient>();
+        m_page = std::make_unique<MonitorPage>(m_client.get());
+        m_page->resize(1180, 820);
+        m_page->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_page.get()));
+    }
+
+    void cleanup()
+    {
+        m_page.reset();
+        m_client.reset();
+        m_simulator.reset();
+    }
+
+    void defaultsArePositionSpeedAndLoadAtFiftyHertz()
+    {
+        QCOMPARE(m_page->quantities(),
+                 (QVector<Quantity> {Quantity::Position, Quantity::Speed, Quantity::Load}));
+        QCOMPARE(m_page->rate(), 50.0);
+        QCOMPARE(m_page->plot()->windowSeconds(), 10.0);
+        // Not connected: nothing to start, and starting says why.
+        QVERIFY(
+            !m_page->findChild<QPushButton *>(QStringLiteral("monitorStartButton"))->isEnabled());
+        QString error;
+        QVERIFY(!m_page->start(&error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(
+            m_page->findChild<QLabel *>(QStringLiteral("monitorMessage"))->text().contains(error));
+    }
+
+    void tenMinutesAtOneHundredHertzForSixServosStayBounded()
+    {
+        m_page->setQuantities(
+            {std::begin(feetech::kAllQuantities), std::end(feetech::kAllQuantities)});
+        TelemetryPlot *plot = m_page->plot();
+        QCOMPARE(plot->seriesCount(), 0);
+        const qint64 origin = 1000000000;
+        qint64 now = origin;
+        for (int minute = 0; minute < 10; ++minute) {
+            now = feed(*m_page, now, 60);
+            plot->refresh();
+        }
+        QCOMPARE(plot->seriesCount(), kServos * feetech::kQuantityCount);
+        // The window (10 s) plus a second of slack at 100 Hz, and within the hard bounds.
+        const int perSeries = int((plot->windowSeconds() + 1.0) * kRateHz) + 1;
+        QVERIFY(perSeries <= plot->maxPointsPerSeries());
+        QVERIFY(plot->maxPointsPerSeries() <= TelemetryPlot::kHardPointCap);
+        for (int id = 1; id <= kServos; ++id) {
+            for (const Quantity quantity : feetech::kAllQuantities) {
+                const int count = plot->bufferedPointCount(quint8(id), quantity);
+                QVERIFY2(count <= perSeries, qPrintable(QString::number(count)));
+                // Still holds the whole window: nothing in view was dropped.
+                QVERIFY(count >= int(plot->windowSeconds()) * kRateHz);
+            }
+        }
+        QVERIFY(plot->bufferedPoints() <= qint64(perSeries) * kServos * feetech::kQuantityCount);
+
+        // Paused, the view keeps what it shows, but never more than the per-series cap.
+        m_page->setWindowSeconds(5);
+        QCOMPARE(plot->maxPointsPerSeries(), 5 * int(TelemetryPlot::kMaxRateHz));
+        plot->setPaused(true);
+        now = feed(*m_page, now, 60);
+        for (int id = 1; id <= kServos; ++id) {
+            QVERIFY(plot->bufferedPointCount(quint8(id), Quantity::Position)
+                    <= plot->maxPointsPerSeries());
+        }
+        QVERIFY(plot->bufferedPointCount(1, Quantity::Position) > 6 * kRateHz);
+        // Live again, the surplus goes.
+        plot->setPaused(false);
+        QVERIFY(plot->bufferedPointCount(1, Quantity::Position) <= 6 * kRateHz + 1);
+        QVERIFY(plot->bufferedPoints()
+                <= qint64(6 * kRateHz + 1) * kServos * feetech::kQuantityCount);
+    }
+
+    void longWindowIsDecimatedAndKeepsPeaks()
+    {
+        m_page->setQuantities({Quantity::Position});
+        m_page->setWindowSeconds(120);
+        TelemetryPlot *plot = m_page->plot();
+        QChartView *view = plot->chartView(Quantity::Position);
+        QVERIFY(view);
+        QTRY_VERIFY(view->chart()->plotArea().width() > 100); // laid out
+        qint64 now = 5000000;
+        now = feed(*m_page, now, 60, 2);
+        // One short spike far above the rest (which stay within 1048..3048).
+        FeedbackSample spike = makeSample(1, now, 4000);
+        m_page->addSamples({spike});
+        now = feed(*m_page, now + kPeriodUs, 60, 2);
+        plot->refresh();
+        QCOMPARE(plot->bufferedPointCount(1, Quantity::Position), 120 * kRateHz + 1);
+        const int pixels = int(view->chart()->plotArea().width());
+        QVERIFY(pixels > 100);
+        const int shown = plot->shownPointCount(1, Quantity::Position);
+        QVERIFY2(shown <= 2 * pixels + 2,
+                 qPrintable(QStringLiteral("%1 > 2 × %2").arg(shown).arg(pixels)));
+        QVERIFY(shown < 120 * kRateHz);
+        auto *series = qobject_cast<QLineSeries *>(view->chart()->series().first());
+        QVERIFY(series);
+        QCOMPARE(series->count(), shown);
+        const QList<QPointF> points = series->points();
+        QVERIFY(std::any_of(points.begin(), points.end(),
+                            [](const QPointF &point) { return point.y() == 4000.0; }));
+        // The value axis follows the data in view, the spike included.
+        auto *axis = qobject_cast<QValueAxis *>(view->chart()->axes(Qt::Vertical).first());
+        QVERIFY(axis->max() >= 4000.0);
+        QVERIFY(axis->min() <= 1048.0 && axis->min() > 0.0); // yet not much lower
+    }
+
+    void zoomFreezesTheViewAndResetReturnsToLive()
+    {
+        TelemetryPlot *plot = m_page->plot();
+        QSignalSpy zoomed(plot, &TelemetryPlot::zoomedChanged);
+        qint64 now = feed(*m_page, 0, 20, 2);
+        plot->refresh();
+        QCOMPARE(plot->viewTo(), 20.0 - 0.01);
+        plot->setTimeRange(12.0, 14.0);
+        QVERIFY(plot->isZoomed());
+        QVERIFY(plot->isPaused());
+        QCOMPARE(zoomed.count(), 1);
+        auto *reset = m_page->findChild<QPushButton *>(QStringLiteral("monitorResetZoomButton"));
+        QVERIFY(reset->isEnabled());
+        now = feed(*m_page, now, 5, 2);
+        plot->refresh();
+        QCOMPARE(plot->viewFrom(), 12.0); // frozen while new samples come
+        reset->click();
+        QVERIFY(!plot->isZoomed());
+        QVERIFY(!plot->isPaused());
+        QCOMPARE(plot->viewTo(), 25.0 - 0.01); // the newest sample
+        QCOMPARE(plot->viewFrom(), plot->viewTo() - plot->windowSeconds());
+        QVERIFY(!reset->isEnabled());
+
+        // Pause freezes the view while samples are still buffered; Resume jumps to live.
+        auto *pause = m_page->findChild<QPushButton *>(QStringLiteral("monitorPauseButton"));
+        pause->click();
+        QVERIFY(plot->isPaused());
+        QCOMPARE(pause->text(), QStringLiteral("Resume"));
+        const int buffered = plot->bufferedPointCount(1, Quantity::Position);
+        feed(*m_page, now, 2, 2);
+        plot->refresh();
+        QCOMPARE(plot->viewTo(), 25.0 - 0.01);
+        QCOMPARE(plot->bufferedPointCount(1, Quantity::Position), buffered + 2 * kRateHz);
+        pause->click();
+        QVERIFY(!plot->isPaused());
+        QCOMPARE(pause->text(), QStringLiteral("Pause"));
+        QCOMPARE(plot->viewTo(), 27.0 - 0.01);
+    }
+
+    void dragAndWheelZoomTheTimeAxisOfEveryChart()
+    {
+        TelemetryPlot *plot = m_page->plot();
+        QChartView *position = plot->chartView(Quantity::Position);
+        QChartView *speed = plot->chartView(Quantity::Speed);
+        QTRY_VERIFY(position->chart()->plotArea().width() > 100); // laid out
+        feed(*m_page, 0, 20, 2);
+        plot->refresh();
+        const double from = plot->viewFrom();
+        const double span = plot->viewTo() - plot->viewFrom();
+        // Dragged across the middle half of the position chart.
+        const QRectF area = position->chart()->plotArea();
+        const QPoint start = position->mapFromScene(
+            position->chart()->mapToScene(area.left() + area.width() / 4, area.center().y()));
+        const QPoint end = position->mapFromScene(
+            position->chart()->mapToScene(area.left() + area.width() * 3 / 4, area.center().y()));
+        QTest::mousePress(position->viewport(), Qt::LeftButton, {}, start);
+        QTest::mouseMove(position->viewport(), end);
+        QTest::mouseRelease(position->viewport(), Qt::LeftButton, {}, end);
+        QVERIFY(plot->isZoomed());
+        QVERIFY(plot->isPaused());
+        QVERIFY(qAbs(plot->viewFrom() - (from + span / 4)) < span / 50);
+        QVERIFY(qAbs(plot->viewTo() - (from + span * 3 / 4)) < span / 50);
+        // The other chart follows the shared time axis.
+        auto *speedAxis = qobject_cast<QValueAxis *>(speed->chart()->axes(Qt::Horizontal).first());
+        QTRY_COMPARE(speedAxis->min(), plot->viewFrom());
+        QCOMPARE(speedAxis->max(), plot->viewTo());
+
+        // One wheel notch up zooms in around the pointer.
+        const double zoomedSpan = plot->viewTo() - plot->viewFrom();
+        const QPointF centre = QPointF(position->mapFromScene(
+            position->chart()->mapToScene(area.center().x(), area.center().y())));
+        QWheelEvent wheel(centre, position->viewport()->mapToGlobal(centre), {}, {0, 120},
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(position->viewport(), &wheel);
+        QVERIFY(qAbs((plot->viewTo() - plot->viewFrom()) - zoomedSpan * 0.8) < 1e-6);
+
+        plot->resetZoom();
+        QVERIFY(!plot->isZoomed());
+        QCOMPARE(plot->viewTo(), 20.0 - 0.01);
+    }
+
+    void recordingParsesBackWithTheSameIdsTimesAndValues()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("recording.csv"));
+        QString error;
+        QVERIFY2(m_page->startRecording(path, &error), qPrintable(error));
+        QVERIFY(m_page->isRecording());
+        const qint64 start = m_page->recordingStartUs();
+        // Taken before recording started: not part of it.
+        m_page->addSamples({makeSample(1, start - 5000, 1)});
+        QVector<FeedbackSample> written;
+        for (int i = 0; i < 50; ++i) {
+            QVector<FeedbackSample> batch;
+            for (quint8 id = 1; id <= 3; ++id) {
+                FeedbackSample sample = makeSample(id, start + i * 10000 + id * 100, 2048 + i);
+                sample.values[int(Quantity::Speed)] = -120.5 + i;
+                sample.values[int(Quantity::Voltage)] = 11.9;
+                if (id == 3)
+                    sample.values[int(Quantity::Current)].reset(); // not reported
+                sample.servoStatus = id == 2 ? 0x24 : 0;
+                sample.moving = i % 2 == 1;
+                batch.append(sample);
+            }
+            m_page->addSamples(batch);
+            written += batch;
+        }
+        QCOMPARE(m_page->recordedRows(), qint64(written.size()));
+        m_page->stopRecording();
+        QVERIFY(!m_page->isRecording());
+
+        const auto rows = readCsv(path, &error);
+        QVERIFY2(rows, qPrintable(error));
+        QCOMPARE(rows->size(), written.size());
+        for (int i = 0; i < written.size(); ++i) {
+            const FeedbackSample &sample = written.at(i);
+            const feetech::CsvSample &row = rows->at(i);
+            QCOMPARE(row.id, int(sample.id));
+            QVERIFY(qAbs(row.timeSeconds - double(sample.steadyUs - start) / 1e6) < 1e-6);
+            for (int q = 0; q < feetech::kQuantityCount; ++q)
+                QCOMPARE(row.values.at(q), sample.values.at(q));
+            QCOMPARE(row.servoStatus, int(sample.servoStatus));
+            QCOMPARE(row.moving, sample.moving);
+        }
+    }
+
+    void recordingToAnUnwritablePlaceSaysWhy()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("no/such/folder/recording.csv"));
+        QString error;
+        QVERIFY(!m_page->startRecording(path, &error));
+        QVERIFY(!m_page->isRecording());
+        QVERIFY(error.contains(QDir::toNativeSeparators(path)));
+        QVERIFY(m_page->findChild<QLabel *>(QStringLiteral("monitorMessage"))->isVisible());
+    }
+
+    void exportPngWritesALoadableImage()
+    {
+        feed(*m_page, 0, 3, 3);
+        const QString path = m_dir.filePath(QStringLiteral("plot.png"));
+        QString error;
+        QVERIFY2(m_page->exportPng(path, &error), qPrintable(error));
+        const QImage image(path);
+        QVERIFY(!image.isNull());
+        QVERIFY(image.width() > 0 && image.height() > 0);
+        // All three charts, stacked.
+        QCOMPARE(image.size(), m_page->plot()->size() * m_page->plot()->devicePixelRatioF());
+
+        QVERIFY(!m_page->exportPng(m_dir.filePath(QStringLiteral("missing/plot.png")), &error));
+        QVERIFY(!error.isEmpty());
+        m_page->setQuantities({});
+        QVERIFY(!m_page->exportPng(path, &error));
+        QVERIFY(error.contains(QStringLiteral("quantity")));
+    }
+
+    void monitoringTheSimulatedBusFillsReadoutsAndPlot()
+    {
+        startSimulatorAndScan();
+        QListWidget *list = m_page->servoList();
+        QCOMPARE(list->count(), 4);
+        QCOMPARE(list->item(0)->text(), QStringLiteral("ID 1 · STS3215 · 1 Mbps"));
+        QCOMPARE(list->item(3)->text(), QStringLiteral("ID 4 · SCS15 · 1 Mbps"));
+        QCOMPARE(m_page->selectedServos(), (QVector<int> {0, 1, 2, 3})); // all ticked
+
+        m_page->setRate(100);
+        QString error;
+        QVERIFY2(m_page->start(&error), qPrintable(error));
+        QVERIFY(m_page->isRunning());
+        QCOMPARE(m_client->monitorOptions().rateHz, 100.0);
+        for (quint8 id = 1; id <= 4; ++id) {
+            QTRY_COMPARE_WITH_TIMEOUT(readout(id, MonitorPage::StateColumn), QStringLiteral("OK"),
+                                      10000);
+            QTRY_VERIFY_WITH_TIMEOUT(m_page->plot()->bufferedPointCount(id, Quantity::Position) > 0,
+                                     10000);
+            QVERIFY(readout(id, MonitorPage::PositionColumn) != QStringLiteral("—"));
+            QVERIFY(readout(id, MonitorPage::VoltageColumn) != QStringLiteral("—"));
+        }
+        QCOMPARE(readout(1, MonitorPage::StatusColumn), QStringLiteral("none"));
+        QCOMPARE(readout(1, MonitorPage::MovingColumn), QStringLiteral("no"));
+        // SCS current has no documented scale: not shown rather than made up.
+        QCOMPARE(readout(4, MonitorPage::CurrentColumn), QStringLiteral("—"));
+        QTRY_VERIFY_WITH_TIMEOUT(readout(1, MonitorPage::RateColumn).toInt() > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_page->plot()->shownPointCount(1, Quantity::Position) > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_page->findChild<QLabel *>(QStringLiteral("monitorStatus"))
+                                     ->text()
+                                     .contains(QStringLiteral("samples/s")),
+                                 10000);
+        QCOMPARE(m_page->plot()->seriesCount(), 4 * 3);
+
+        // Unticking a servo restarts the stream without it.
+        list->item(1)->setCheckState(Qt::Unchecked);
+        QVERIFY(m_page->isRunning());
+        QCOMPARE(m_client->monitorOptions().servos.size(), 3);
+        QVERIFY(!m_client->isMonitored(1));
+        QCOMPARE(readoutRow(2), -1);
+        QCOMPARE(m_page->plot()->seriesCount(), 3 * 3);
+        QSignalSpy received(m_client.get(), &feetech::BusClient::telemetryReceived);
+        QTRY_VERIFY_WITH_TIMEOUT(received.count() >= 5, 10000);
+
+        // Recorded while streaming, ended by Stop.
+        const QString path = m_dir.filePath(QStringLiteral("live.csv"));
+        QVERIFY2(m_page->startRecording(path, &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(m_page->recordedRows() >= 30, 10000);
+        m_page->stop();
+        QVERIFY(!m_page->isRunning());
+        QVERIFY(!m_page->isRecording());
+        const auto rows = readCsv(path, &error);
+        QVERIFY2(rows, qPrintable(error));
+        QVERIFY(rows->size() >= 30);
+        QSet<int> ids;
+        for (const feetech::CsvSample &row : *rows) {
+            ids.insert(row.id);
+            QVERIFY(row.timeSeconds >= 0.0);
+            QVERIFY(row.values.at(int(Quantity::Position)).has_value());
+        }
+        QCOMPARE(ids, (QSet<int> {1, 3, 4}));
+    }
+
+    void servoThatStopsAnsweringIsFlagged()
+    {
+        startSimulatorAndScan();
+        m_page->setSelectedServos({0, 1, 2});
+        QString error;
+        QVERIFY2(m_page->start(&error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorPage::StateColumn), QStringLiteral("OK"),
+                                  10000);
+        // Servo 2 goes silent: its ID moves away.
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(2)->setValue(u"id", 20);
+        });
+        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorPage::StateColumn),
+                                  QStringLiteral("Not answering"), 10000);
+        const int row = readoutRow(2);
+        QCOMPARE(m_page->readouts()->item(row, MonitorPage::StateColumn)->foreground().color(),
+                 QColor(0xc0, 0x1c, 0x1c));
+        QVERIFY(readout(2, MonitorPage::MissedColumn).toInt() >= 3);
+        // The others go on.
+        QCOMPARE(readout(1, MonitorPage::StateColumn), QStringLiteral("OK"));
+        const int before = m_page->plot()->bufferedPointCount(3, Quantity::Position);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_page->plot()->bufferedPointCount(3, Quantity::Position) > before + 10, 10000);
+    }
+
+    void disconnectEndsTheRecording()
+    {
+        startSimulatorAndScan();
+        QString error;
+        QVERIFY2(m_page->start(&error), qPrintable(error));
+        QVERIFY2(m_page->startRecording(m_dir.filePath(QStringLiteral("cut.csv")), &error),
+                 qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(m_page->recordedRows() > 0, 10000);
+        QSignalSpy recording(m_page.get(), &MonitorPage::recordingChanged);
+        m_client->disconnectFrom();
+        QTRY_VERIFY_WITH_TIMEOUT(!m_page->isRecording(), 10000);
+        QCOMPARE(recording.count(), 1);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_page->isRunning(), 10000);
+        QString parseError;
+        QVERIFY2(readCsv(m_dir.filePath(QStringLiteral("cut.csv")), &parseError),
+                 qPrintable(parseError));
+    }
+};
+
+QTEST_MAIN(TestMonitorPage)
+#include "tst_monitorpage.moc"

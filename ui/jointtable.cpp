@@ -1,0 +1,969 @@
+// Joint table: rows kept in step with the bus client, a range-limited target editor, Move all
+// as SYNC WRITE, torque switches and pose files.
+#include "jointtable.h"
+
+#include "feetech/busclient.h"
+#include "feetech/servoparameters.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHash>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSet>
+#include <QSpinBox>
+#include <QStyledItemDelegate>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace {
+
+const QString kTorqueKey = QStringLiteral("torque_enable");
+const QString kGoalKey = QStringLiteral("goal_position");
+const QString kMinAngleKey = QStringLiteral("min_angle_limit");
+const QString kMaxAngleKey = QStringLiteral("max_angle_limit");
+const QString kPresentKey = QStringLiteral("present_position");
+const QString kMovingKey = QStringLiteral("moving");
+const QString kModeKey = QStringLiteral("mode");
+
+// Roles of the target cell, read by its editor.
+constexpr int kMinimumRole = Qt::UserRole + 1;
+constexpr int kMaximumRole = Qt::UserRole + 2;
+constexpr int kSuggestionRole = Qt::UserRole + 3; // where the editor starts without a target
+
+constexpr int kTorqueOff = 0;
+constexpr int kTorqueOn = 1;
+constexpr int kTorqueDamping = 2;
+
+quint64 servoKey(quint8 id, qint32 baud)
+{
+    return (quint64(quint32(baud)) << 8) | id;
+}
+
+bool isDark(const QPalette &palette)
+{
+    return palette.color(QPalette::Window).lightness() < 128;
+}
+
+QColor errorColor(bool dark)
+{
+    return dark ? QColor(255, 120, 110) : QColor(190, 30, 30);
+}
+
+QColor goodColor(bool dark)
+{
+    return dark ? QColor(110, 210, 120) : QColor(30, 120, 45);
+}
+
+QColor warningColor(bool dark)
+{
+    return dark ? QColor(255, 196, 84) : QColor(168, 98, 0);
+}
+
+QColor accentColor(bool dark)
+{
+    return dark ? QColor(120, 170, 255) : QColor(25, 90, 190);
+}
+
+QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
+                          QWidget *parent)
+{
+    auto *button = new QPushButton(text, parent);
+    button->setObjectName(QLatin1String(name));
+    button->setToolTip(tip);
+    button->setAutoDefault(false);
+    return button;
+}
+
+// Types targets in a spin box that only goes as far as the servo may be sent; a cell without a
+// target shows a dash rather than a number nobody chose.
+class TargetDelegate : public QStyledItemDelegate
+{
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+
+    QWidget *createEditor(QWidget *parent, const QStyleOptionViewItem &,
+                          const QModelIndex &index) const override
+    {
+        auto *editor = new QSpinBox(parent);
+        editor->setObjectName(QStringLiteral("targetEditor"));
+        editor->setFrame(false);
+        editor->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        editor->setRange(index.data(kMinimumRole).toInt(), index.data(kMaximumRole).toInt());
+        return editor;
+    }
+
+    void setEditorData(QWidget *widget, const QModelIndex &index) const override
+    {
+        auto *editor = static_cast<QSpinBox *>(widget);
+        const QVariant target = index.data(Qt::EditRole);
+        editor->setValue(target.isValid() ? target.toInt() : index.data(kSuggestionRole).toInt());
+        editor->selectAll();
+    }
+
+    void setModelData(QWidget *widget, QAbstractItemModel *model,
+                      const QModelIndex &index) const override
+    {
+        auto *editor = static_cast<QSpinBox *>(widget);
+        editor->interpretText();
+        model->setData(index, editor->value(), Qt::EditRole);
+    }
+
+    void updateEditorGeometry(QWidget *editor, const QStyleOptionViewItem &option,
+                              const QModelIndex &) const override
+    {
+        editor->setGeometry(option.rect);
+    }
+
+protected:
+    void initStyleOption(QStyleOptionViewItem *option, const QModelIndex &index) const override
+    {
+        QStyledItemDelegate::initStyleOption(option, index);
+        if (!index.data(Qt::EditRole).isValid()) {
+            option->text = QStringLiteral("—");
+            option->displayAlignment = Qt::AlignCenter;
+        }
+    }
+};
+
+} // namespace
+
+JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
+    : QWidget(parent)
+    , m_client(client)
+{
+    setObjectName(QStringLiteral("jointTable"));
+    m_lastFolder = QDir::homePath();
+    auto *layout = new QVBoxLayout(this);
+
+    // ---- where the positions come from
+    auto *hintRow = new QHBoxLayout;
+    m_hint = new QLabel(this);
+    m_hint->setObjectName(QStringLiteral("liveHint"));
+    m_hint->setWordWrap(true);
+    hintRow->addWidget(m_hint, 1);
+    m_read =
+        actionButton(tr("Read positions"), "readPositionsButton",
+                     tr("Read every servo's registers now: positions, limits and torque"), this);
+    hintRow->addWidget(m_read);
+    // The row keeps its height when the button goes away with the monitor running.
+    m_hint->setMinimumHeight(m_read->sizeHint().height());
+    layout->addLayout(hintRow);
+
+    // ---- the table
+    m_table = new QTableWidget(0, ColumnCount, this);
+    m_table->setObjectName(QStringLiteral("jointTableView"));
+    m_table->setHorizontalHeaderLabels({tr("ID"), tr("Model"), tr("Baud rate"),
+                                        tr("Position (steps)"), tr("Target (steps)"),
+                                        tr("Target range"), tr("Torque"), tr("Motion")});
+    const auto headerTip = [this](int column, const QString &tip) {
+        m_table->horizontalHeaderItem(column)->setToolTip(tip);
+    };
+    headerTip(PositionColumn,
+              tr("Present position: live while the monitor watches the servo, otherwise the "
+                 "last value read (grey)"));
+    headerTip(TargetColumn,
+              tr("Where Move all sends the servo: double-click or type to change it"));
+    headerTip(RangeColumn,
+              tr("The servo's angle limits, or the goal register's range when the limits are "
+                 "unknown or both 0"));
+    headerTip(TorqueColumn, tr("Tick to switch torque on, untick to switch it off"));
+    headerTip(MovingColumn, tr("Whether the servo reports that it is moving"));
+    m_table->setItemDelegateForColumn(TargetColumn, new TargetDelegate(m_table));
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                             | QAbstractItemView::AnyKeyPressed);
+    m_table->setAlternatingRowColors(true);
+    m_table->verticalHeader()->hide();
+    m_table->setWordWrap(false);
+    QHeaderView *header = m_table->horizontalHeader();
+    header->setHighlightSections(false);
+    header->setSectionResizeMode(QHeaderView::Interactive);
+    header->setStretchLastSection(true);
+    const int widths[ColumnCount] = {70, 170, 100, 140, 140, 170, 150, 100};
+    for (int column = 0; column < ColumnCount; ++column)
+        m_table->setColumnWidth(column, widths[column]);
+    layout->addWidget(m_table, 1);
+
+    // ---- actions
+    auto *actions = new QHBoxLayout;
+    m_capture = actionButton(tr("Targets from present positions"), "captureButton",
+                             tr("Copy every servo's present position into its target"), this);
+    m_load =
+        actionButton(tr("Load pose…"), "loadPoseButton",
+                     tr("Fill the targets from a pose file; nothing moves until Move all"), this);
+    m_save = actionButton(tr("Save pose…"), "savePoseButton", tr("Save the targets as a pose file"),
+                          this);
+    m_poseLabel = new QLabel(this);
+    m_poseLabel->setObjectName(QStringLiteral("poseLabel"));
+    m_poseLabel->setForegroundRole(QPalette::PlaceholderText);
+    m_moveAll = actionButton(tr("Move all"), "moveAllButton",
+                             tr("Send every target at once: one SYNC WRITE per baud rate"), this);
+    m_moveAll->setMinimumWidth(140);
+    QFont bold = m_moveAll->font();
+    bold.setBold(true);
+    m_moveAll->setFont(bold);
+    actions->addWidget(m_capture);
+    actions->addWidget(m_load);
+    actions->addWidget(m_save);
+    actions->addSpacing(12);
+    actions->addWidget(m_poseLabel);
+    actions->addStretch(1);
+    actions->addWidget(m_moveAll);
+    layout->addLayout(actions);
+
+    m_message = new QLabel(this);
+    m_message->setObjectName(QStringLiteral("jointMessage"));
+    m_message->setWordWrap(true);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_message);
+
+    connect(m_read, &QPushButton::clicked, this, &JointTable::onReadClicked);
+    connect(m_capture, &QPushButton::clicked, this, &JointTable::onCaptureClicked);
+    connect(m_load, &QPushButton::clicked, this, &JointTable::onLoadClicked);
+    connect(m_save, &QPushButton::clicked, this, &JointTable::onSaveClicked);
+    connect(m_moveAll, &QPushButton::clicked, this, &JointTable::onMoveAllClicked);
+    connect(m_table, &QTableWidget::itemChanged, this, &JointTable::onItemChanged);
+
+    connect(m_client, &feetech::BusClient::servosChanged, this, &JointTable::rebuild);
+    connect(m_client, &feetech::BusClient::servoUpdated, this, [this](int index) {
+        if (index < 0 || index >= m_client->servoCount())
+            return;
+        const feetech::ServoInfo &info = m_client->servo(index).info;
+        const int row = rowOf(info.id, info.baud);
+        if (row < 0)
+            return;
+        const qint64 readMs = m_client->parameters(index)->lastReadMs(kPresentKey);
+        if (readMs != m_rows[row].modelReadMs) {
+            m_rows[row].modelReadMs = readMs;
+            m_rows[row].sampleNewer = false;
+        }
+        refreshRow(row);
+    });
+    connect(m_client, &feetech::BusClient::telemetryReceived, this, &JointTable::onTelemetry);
+    connect(m_client, &feetech::BusClient::monitoringChanged, this, [this] {
+        for (int row = 0; row < rowCount(); ++row)
+            refreshPosition(row);
+        refreshHint();
+    });
+    connect(m_client, &feetech::BusClient::telemetryStatsChanged, this, [this] {
+        for (int row = 0; row < rowCount(); ++row)
+            refreshPosition(row);
+        refreshHint();
+    });
+    connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
+        refreshHint();
+        refreshButtons();
+    });
+    connect(m_client, &feetech::BusClient::operationFinished, this,
+            &JointTable::onOperationFinished);
+
+    rebuild();
+    setMessage(tr("Targets only move servos when you press Move all."), Tone::Info);
+}
+
+int JointTable::rowOf(quint8 id, qint32 baud) const
+{
+    for (int row = 0; row < rowCount(); ++row) {
+        if (m_rows.at(row).id == id && m_rows.at(row).baud == baud)
+            return row;
+    }
+    return -1;
+}
+
+int JointTable::servoIndex(int row) const
+{
+    if (row < 0 || row >= rowCount())
+        return -1;
+    return m_client->indexOf(m_rows.at(row).id, m_rows.at(row).baud);
+}
+
+std::optional<qint64> JointTable::deviceValue(int row, const QString &key) const
+{
+    const int index = servoIndex(row);
+    if (index < 0)
+        return std::nullopt;
+    return m_client->parameters(index)->deviceValue(key);
+}
+
+bool JointTable::isPositionLive(int row) const
+{
+    const int index = servoIndex(row);
+    if (index < 0 || !m_client->isMonitored(index) || !m_client->latestSample(index))
+        return false;
+    // A servo the stream has given up on keeps its last sample, which is no longer live.
+    const Row &entry = m_rows.at(row);
+    for (const feetech::ServoTelemetry &servo : m_client->telemetryStats().servos) {
+        if (servo.id == entry.id && servo.baud == entry.baud)
+            return !servo.missing;
+    }
+    return true;
+}
+
+std::optional<feetech::FeedbackSample> JointTable::sampleSource(int row) const
+{
+    const int index = servoIndex(row);
+    if (index < 0)
+        return std::nullopt;
+    std::optional<feetech::FeedbackSample> sample = m_client->latestSample(index);
+    if (!sample)
+        return std::nullopt;
+    // A read after the last sample is the newer news, unless the monitor is still streaming.
+    if (isPositionLive(row) || m_rows.at(row).sampleNewer || !deviceValue(row, kPresentKey))
+        return sample;
+    return std::nullopt;
+}
+
+std::optional<qint32> JointTable::position(int row) const
+{
+    if (const auto sample = sampleSource(row)) {
+        if (const auto value = sample->value(feetech::Quantity::Position))
+            return qint32(std::lround(*value));
+    }
+    if (const auto value = deviceValue(row, kPresentKey))
+        return qint32(*value);
+    return std::nullopt;
+}
+
+std::optional<bool> JointTable::moving(int row) const
+{
+    if (const auto sample = sampleSource(row))
+        return sample->moving;
+    if (const auto value = deviceValue(row, kMovingKey))
+        return *value != 0;
+    return std::nullopt;
+}
+
+std::optional<JointTable::TargetRange> JointTable::targetRange(int row) const
+{
+    const int index = servoIndex(row);
+    if (index < 0)
+        return std::nullopt;
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    if (!info.hasTable())
+        return std::nullopt;
+    const feetech::Register *goal = info.table().find(kGoalKey);
+    if (!goal)
+        return std::nullopt;
+    // Both limits 0 selects multi-turn or motor mode: the limits then bound nothing.
+    const auto minimum = deviceValue(row, kMinAngleKey);
+    const auto maximum = deviceValue(row, kMaxAngleKey);
+    if (minimum && maximum && (*minimum != 0 || *maximum != 0) && *minimum <= *maximum)
+        return TargetRange {qint32(*minimum), qint32(*maximum), true};
+    return TargetRange {goal->minimum, goal->maximum, false};
+}
+
+void JointTable::setTarget(int row, qint32 target)
+{
+    if (row < 0 || row >= rowCount())
+        return;
+    m_rows[row].target = target;
+    refreshTarget(row);
+    refreshButtons();
+}
+
+std::optional<qint32> JointTable::target(int row) const
+{
+    if (row < 0 || row >= rowCount())
+        return std::nullopt;
+    return m_rows.at(row).target;
+}
+
+QString JointTable::message() const
+{
+    return m_message->text();
+}
+
+QString JointTable::servoName(int row) const
+{
+    const int index = servoIndex(row);
+    if (index < 0)
+        return tr("ID %1").arg(m_rows.at(row).id);
+    return tr("ID %1 (%2)").arg(m_rows.at(row).id).arg(m_client->servo(index).info.model.name);
+}
+
+void JointTable::setMessage(const QString &text, Tone tone)
+{
+    m_message->setText(text);
+    const bool dark = isDark(palette());
+    QPalette colours = m_message->palette();
+    switch (tone) {
+    case Tone::Info:
+        m_message->setPalette(QPalette());
+        return;
+    case Tone::Success:
+        colours.setColor(QPalette::WindowText, goodColor(dark));
+        break;
+    case Tone::Warning:
+        colours.setColor(QPalette::WindowText, warningColor(dark));
+        break;
+    case Tone::Error:
+        colours.setColor(QPalette::WindowText, errorColor(dark));
+        break;
+    }
+    m_message->setPalette(colours);
+}
+
+// ---- rows
+
+void JointTable::rebuild()
+{
+    // Targets belong to servos, not to row numbers: they survive a new scan of the same bus.
+    QHash<quint64, qint32> targets;
+    for (const Row &row : std::as_const(m_rows)) {
+        if (row.target)
+            targets.insert(servoKey(row.id, row.baud), *row.target);
+    }
+    m_rows.clear();
+    const QSignalBlocker blocker(m_table);
+    m_table->setRowCount(0);
+    for (int index = 0; index < m_client->servoCount(); ++index) {
+        const feetech::ServoInfo &info = m_client->servo(index).info;
+        Row row;
+        row.id = info.id;
+        row.baud = info.baud;
+        const quint64 key = servoKey(info.id, info.baud);
+        if (targets.contains(key))
+            row.target = targets.value(key);
+        row.modelReadMs = m_client->parameters(index)->lastReadMs(kPresentKey);
+        m_rows.append(row);
+    }
+    m_table->setRowCount(rowCount());
+    for (int row = 0; row < rowCount(); ++row) {
+        for (int column = 0; column < ColumnCount; ++column) {
+            auto *item = new QTableWidgetItem;
+            item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+            if (column == PositionColumn || column == TargetColumn)
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            m_table->setItem(row, column, item);
+        }
+        refreshRow(row);
+    }
+    refreshHint();
+    refreshButtons();
+}
+
+void JointTable::refreshRow(int row)
+{
+    if (row < 0 || row >= rowCount())
+        return;
+    const int index = servoIndex(row);
+    if (index < 0)
+        return;
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    const bool dark = isDark(palette());
+    m_updating = true;
+
+    QTableWidgetItem *id = m_table->item(row, IdColumn);
+    id->setText(QString::number(info.id));
+    QTableWidgetItem *model = m_table->item(row, ModelColumn);
+    model->setText(info.model.name);
+    model->setToolTip(info.hasTable()
+                          ? tr("%1 family, firmware %2")
+                                .arg(feetech::familyName(*info.model.family), info.firmware())
+                          : tr("Unknown model: it cannot be moved from here"));
+    m_table->item(row, BaudColumn)->setText(feetech::baudText(info.baud));
+
+    // Torque: what the servo reports, or what was just asked of it until the read-back.
+    QTableWidgetItem *torque = m_table->item(row, TorqueColumn);
+    Row &state = m_rows[row];
+    const auto device = deviceValue(row, kTorqueKey);
+    if (state.torqueRequested && device && *device == *state.torqueRequested)
+        state.torqueRequested.reset();
+    const bool switchable = info.hasTable() && info.table().find(kTorqueKey);
+    torque->setFlags(switchable ? Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable
+                                : Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+    QString torqueText;
+    Qt::CheckState check = Qt::Unchecked;
+    QColor torqueColour;
+    if (state.torqueRequested) {
+        torqueText =
+            *state.torqueRequested == kTorqueOn ? tr("Switching on…") : tr("Switching off…");
+        check = *state.torqueRequested == kTorqueOn ? Qt::Checked : Qt::Unchecked;
+    } else if (!device) {
+        torqueText = tr("Unknown");
+    } else if (*device == kTorqueOff) {
+        torqueText = tr("Off");
+    } else if (*device == kTorqueOn) {
+        torqueText = tr("On");
+        check = Qt::Checked;
+        torqueColour = goodColor(dark);
+    } else if (*device == kTorqueDamping) {
+        torqueText = tr("Damping");
+        check = Qt::PartiallyChecked;
+        torqueColour = warningColor(dark);
+    } else if (const feetech::Register *reg = info.table().find(kTorqueKey)) {
+        torqueText = feetech::displayValue(*reg, qint32(*device));
+    }
+    torque->setText(torqueText);
+    if (switchable)
+        torque->setCheckState(check);
+    torque->setData(Qt::ForegroundRole,
+                    torqueColour.isValid() ? QVariant(torqueColour) : QVariant());
+    m_updating = false;
+
+    refreshPosition(row);
+    refreshTarget(row);
+}
+
+void JointTable::refreshPosition(int row)
+{
+    if (row < 0 || row >= rowCount() || servoIndex(row) < 0)
+        return;
+    const bool dark = isDark(palette());
+    m_updating = true;
+    QTableWidgetItem *item = m_table->item(row, PositionColumn);
+    const std::optional<qint32> value = position(row);
+    const bool live = isPositionLive(row);
+    item->setText(value ? QString::number(*value) : QStringLiteral("—"));
+    QFont font = m_table->font();
+    font.setItalic(!live);
+    item->setFont(font);
+    item->setData(Qt::ForegroundRole,
+                  live ? QVariant() : QVariant(palette().color(QPalette::PlaceholderText)));
+    item->setToolTip(live        ? tr("Live, from the monitor")
+                         : value ? tr("Last value read: it may be stale")
+                                 : tr("Not read yet"));
+
+    QTableWidgetItem *motion = m_table->item(row, MovingColumn);
+    const std::optional<bool> isMoving = moving(row);
+    motion->setText(!isMoving ? QStringLiteral("—") : *isMoving ? tr("Moving") : tr("Still"));
+    QFont motionFont = m_table->font();
+    motionFont.setBold(isMoving.value_or(false));
+    motionFont.setItalic(!live); // as stale as the position it goes with
+    motion->setFont(motionFont);
+    motion->setData(Qt::ForegroundRole,
+                    !live ? QVariant(palette().color(QPalette::PlaceholderText))
+                        : isMoving.value_or(false) ? QVariant(accentColor(dark))
+                                                   : QVariant());
+    m_updating = false;
+
+    // An editor opened without a target starts at the present position.
+    const QSignalBlocker blocker(m_table);
+    QTableWidgetItem *target = m_table->item(row, TargetColumn);
+    if (value)
+        target->setData(kSuggestionRole, *value);
+}
+
+void JointTable::refreshTarget(int row)
+{
+    if (row < 0 || row >= rowCount() || servoIndex(row) < 0)
+        return;
+    const bool dark = isDark(palette());
+    const std::optional<TargetRange> range = targetRange(row);
+    const std::optional<qint32> target = m_rows.at(row).target;
+    m_updating = true;
+    QTableWidgetItem *rangeItem = m_table->item(row, RangeColumn);
+    QTableWidgetItem *item = m_table->item(row, TargetColumn);
+    if (!range) {
+        rangeItem->setText(QStringLiteral("—"));
+        rangeItem->setToolTip(tr("Unknown model: no goal register"));
+        item->setFlags(Qt::ItemIsSelectable);
+    } else {
+        rangeItem->setText(tr("%1 to %2").arg(range->minimum).arg(range->maximum));
+        rangeItem->setToolTip(range->fromAngleLimits
+                                  ? tr("From the servo's angle limits")
+                                  : tr("The goal register's range: the angle limits are not "
+                                       "read yet or both 0"));
+        item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable);
+        item->setData(kMinimumRole, range->minimum);
+        item->setData(kMaximumRole, range->maximum);
+        if (!item->data(kSuggestionRole).isValid())
+            item->setData(kSuggestionRole, (range->minimum + range->maximum) / 2);
+    }
+    item->setData(Qt::EditRole, target ? QVariant(*target) : QVariant());
+    const bool outside = target && range && !range->contains(*target);
+    item->setData(Qt::ForegroundRole, outside ? QVariant(errorColor(dark)) : QVariant());
+    item->setToolTip(outside ? tr("Outside the range %1 to %2: Move all will refuse it")
+                                   .arg(range->minimum)
+                                   .arg(range->maximum)
+                         : target ? QString()
+                                  : tr("No target yet: type one, load a pose or take the "
+                                       "present position"));
+    m_updating = false;
+}
+
+void JointTable::refreshHint()
+{
+    int live = 0;
+    for (int row = 0; row < rowCount(); ++row) {
+        if (isPositionLive(row))
+            ++live;
+    }
+    QString text;
+    bool offerRead = true;
+    if (rowCount() == 0) {
+        text = tr("Scan the bus to list its servos here.");
+        offerRead = false;
+    } else if (!m_client->isMonitoring()) {
+        text = tr("<b>Live positions:</b> the monitor is not running, so positions are the last "
+                  "values read (grey) and may be stale. Start the monitor to see live positions, "
+                  "or read them now.");
+    } else if (live < rowCount()) {
+        text = tr("<b>Live positions</b> from the monitor; servos it does not watch show the "
+                  "last value read, in grey.");
+    } else {
+        text = tr("<b>Live positions</b> from the monitor.");
+        offerRead = false;
+    }
+    // Called for every telemetry batch: only a change is worth a new layout.
+    if (m_hint->text() != text)
+        m_hint->setText(text);
+    if (m_read->isVisibleTo(this) != offerRead)
+        m_read->setVisible(offerRead);
+}
+
+void JointTable::refreshButtons()
+{
+    const bool connected = m_client->isConnected();
+    const bool rows = rowCount() > 0;
+    bool anyTarget = false;
+    for (const Row &row : std::as_const(m_rows))
+        anyTarget = anyTarget || row.target.has_value();
+    m_read->setEnabled(connected && rows);
+    m_capture->setEnabled(rows);
+    m_load->setEnabled(rows);
+    m_save->setEnabled(anyTarget);
+    m_moveAll->setEnabled(connected && anyTarget);
+    m_poseLabel->setText(m_poseName.isEmpty() ? QString() : tr("Pose: %1").arg(m_poseName));
+}
+
+void JointTable::onTelemetry(const QVector<feetech::FeedbackSample> &samples)
+{
+    QSet<int> rows;
+    for (const feetech::FeedbackSample &sample : samples) {
+        const int row = rowOf(sample.id, sample.baud);
+        if (row >= 0)
+            rows.insert(row);
+    }
+    for (const int row : std::as_const(rows)) {
+        m_rows[row].sampleNewer = true;
+        refreshPosition(row);
+    }
+    refreshHint(); // the first sample of a servo makes its position live
+}
+
+void JointTable::onOperationFinished(const feetech::OperationResult &result)
+{
+    if (result.operation == feetech::Operation::SyncWrite && m_movesInFlight > 0) {
+        --m_movesInFlight;
+        if (!result.ok)
+            setMessage(tr("Move all failed: %1").arg(result.message), Tone::Error);
+        return;
+    }
+    if (result.operation != feetech::Operation::Write)
+        return;
+    const int row = rowOf(result.servo.id, result.servo.baud);
+    if (row < 0 || !m_rows.at(row).torqueRequested)
+        return;
+    const int requested = *m_rows.at(row).torqueRequested;
+    m_rows[row].torqueRequested.reset();
+    if (!result.ok)
+        setMessage(
+            tr("%1: torque was not switched %2: %3")
+                .arg(servoName(row), requested == kTorqueOn ? tr("on") : tr("off"), result.message),
+            Tone::Error);
+    refreshRow(row);
+}
+
+void JointTable::onItemChanged(QTableWidgetItem *item)
+{
+    if (m_updating)
+        return;
+    const int row = item->row();
+    if (row < 0 || row >= rowCount())
+        return;
+    if (item->column() == TargetColumn) {
+        const QVariant value = item->data(Qt::EditRole);
+        if (value.isValid())
+            setTarget(row, value.toInt());
+        return;
+    }
+    if (item->column() == TorqueColumn) {
+        // A damping servo (partly ticked) ticked again means "on".
+        const bool on = item->checkState() != Qt::Unchecked;
+        QString error;
+        if (!setTorque(row, on, &error)) {
+            setMessage(error, Tone::Error);
+            refreshRow(row); // the tick goes back to what the servo reports
+        }
+    }
+}
+
+// ---- actions
+
+bool JointTable::setTorque(int row, bool on, QString *error)
+{
+    const int index = servoIndex(row);
+    if (index < 0) {
+        if (error)
+            *error = tr("That servo is no longer on the bus.");
+        return false;
+    }
+    const int value = on ? kTorqueOn : kTorqueOff;
+    QString why;
+    if (!m_client->writeValues(index, {{kTorqueKey, value}}, &why)) {
+        if (error)
+            *error = tr("%1: torque not switched %2: %3")
+                         .arg(servoName(row), on ? tr("on") : tr("off"), why);
+        return false;
+    }
+    m_rows[row].torqueRequested = value;
+    refreshRow(row);
+    return true;
+}
+
+int JointTable::capturePositions()
+{
+    int filled = 0;
+    QStringList missing;
+    for (int row = 0; row < rowCount(); ++row) {
+        if (!targetRange(row))
+            continue; // a servo that cannot be moved needs no target
+        if (const std::optional<qint32> value = position(row)) {
+            setTarget(row, *value);
+            ++filled;
+        } else {
+            missing.append(servoName(row));
+        }
+    }
+    if (missing.isEmpty())
+        setMessage(tr("Targets set to the present positions of %1 servos.").arg(filled),
+                   Tone::Success);
+    else
+        setMessage(tr("Targets set for %1 servos. No position is known yet for %2: read the "
+                      "positions first.")
+                       .arg(filled)
+                       .arg(missing.join(tr(", "))),
+                   Tone::Warning);
+    return filled;
+}
+
+bool JointTable::moveAll(QString *error)
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!m_client->isConnected())
+        return refuse(tr("The bus is not connected: nothing was sent."));
+    if (rowCount() == 0)
+        return refuse(tr("No servos: scan the bus first."));
+
+    QVector<feetech::BusClient::Goal> goals;
+    QSet<qint32> bauds;
+    QStringList skipped;
+    QStringList torqueOff;
+    QStringList ids;
+    for (int row = 0; row < rowCount(); ++row) {
+        const int index = servoIndex(row);
+        const std::optional<TargetRange> range = targetRange(row);
+        if (index < 0 || !range) {
+            skipped.append(servoName(row));
+            continue;
+        }
+        const std::optional<qint32> target = m_rows.at(row).target;
+        if (!target)
+            return refuse(tr("%1 has no target: type one, load a pose or use “Targets from "
+                             "present positions”. Nothing was sent.")
+                              .arg(servoName(row)));
+        if (!range->contains(*target))
+            return refuse(tr("%1: the target %2 is outside its range %3 to %4. Nothing was "
+                             "sent.")
+                              .arg(servoName(row))
+                              .arg(*target)
+                              .arg(range->minimum)
+                              .arg(range->maximum));
+        // In wheel, PWM or step mode the goal register means something else (or nothing).
+        if (const auto mode = deviceValue(row, kModeKey); mode && *mode != 0) {
+            const feetech::Register *reg = m_client->servo(index).info.table().find(kModeKey);
+            return refuse(tr("%1 is in %2 mode; a goal position only moves a servo in position "
+                             "mode. Nothing was sent.")
+                              .arg(servoName(row),
+                                   reg ? feetech::displayValue(*reg, qint32(*mode))
+                                       : QString::number(*mode)));
+        }
+        if (deviceValue(row, kTorqueKey) == std::optional<qint64>(kTorqueOff))
+            torqueOff.append(servoName(row));
+        goals.append({index, *target});
+        bauds.insert(m_rows.at(row).baud);
+        ids.append(QString::number(m_rows.at(row).id));
+    }
+    if (goals.isEmpty())
+        return refuse(tr("No servo here can be moved: their models are unknown."));
+    QString why;
+    if (!m_client->moveAll(goals, &why))
+        return refuse(tr("Nothing was sent: %1").arg(why));
+    m_movesInFlight += int(bauds.size());
+
+    QStringList report;
+    report.append(bauds.size() == 1
+                      ? tr("Targets sent to IDs %1 in one SYNC WRITE.").arg(ids.join(tr(", ")))
+                      : tr("Targets sent to IDs %1 in %2 SYNC WRITEs, one per baud rate.")
+                            .arg(ids.join(tr(", ")))
+                            .arg(bauds.size()));
+    if (!torqueOff.isEmpty())
+        report.append(tr("Torque is off on %1: it will not move until torque is on.")
+                          .arg(torqueOff.join(tr(", "))));
+    if (!skipped.isEmpty())
+        report.append(tr("Not moved (unknown model): %1.").arg(skipped.join(tr(", "))));
+    setMessage(report.join(u' '),
+               torqueOff.isEmpty() && skipped.isEmpty() ? Tone::Success : Tone::Warning);
+    return true;
+}
+
+bool JointTable::readPositions(QString *error)
+{
+    if (!m_client->isConnected()) {
+        if (error)
+            *error = tr("The bus is not connected.");
+        return false;
+    }
+    if (rowCount() == 0) {
+        if (error)
+            *error = tr("No servos: scan the bus first.");
+        return false;
+    }
+    for (int row = 0; row < rowCount(); ++row) {
+        const int index = servoIndex(row);
+        if (index >= 0)
+            m_client->readServo(index);
+    }
+    setMessage(tr("Reading %1 servos…").arg(rowCount()), Tone::Info);
+    return true;
+}
+
+bool JointTable::savePose(const QString &path, QString *error)
+{
+    feetech::Pose pose;
+    pose.name = m_poseName.isEmpty() ? QFileInfo(path).baseName() : m_poseName;
+    for (const Row &row : std::as_const(m_rows)) {
+        if (row.target)
+            pose.servos.append({row.id, row.baud, *row.target});
+    }
+    if (pose.servos.isEmpty()) {
+        if (error)
+            *error = tr("No targets to save: set some first.");
+        return false;
+    }
+    if (!feetech::savePose(path, pose, error))
+        return false;
+    m_poseName = pose.name;
+    refreshButtons();
+    setMessage(tr("Saved the pose “%1” with %2 targets to %3.")
+                   .arg(pose.name)
+                   .arg(pose.servos.size())
+                   .arg(QDir::toNativeSeparators(path)),
+               Tone::Success);
+    return true;
+}
+
+std::optional<JointTable::PoseMatch> JointTable::loadPose(const QString &path, QString *error)
+{
+    const std::optional<feetech::Pose> pose = feetech::loadPose(path, error);
+    if (!pose)
+        return std::nullopt;
+    PoseMatch match;
+    match.name = pose->name.isEmpty() ? QFileInfo(path).baseName() : pose->name;
+    for (const feetech::PoseEntry &entry : pose->servos) {
+        if (rowOf(entry.id, entry.baud) < 0)
+            match.notOnBus.append(entry);
+    }
+    for (int row = 0; row < rowCount(); ++row) {
+        const feetech::PoseEntry *entry = pose->find(m_rows.at(row).id, m_rows.at(row).baud);
+        if (!entry) {
+            match.rowsWithoutEntry.append(row);
+            continue;
+        }
+        setTarget(row, entry->position);
+        ++match.filled;
+        const std::optional<TargetRange> range = targetRange(row);
+        if (range && !range->contains(entry->position))
+            match.rowsOutOfRange.append(row);
+    }
+    m_poseName = match.name;
+    refreshButtons();
+
+    QStringList report;
+    report.append(tr("Loaded the pose “%1”: %2 targets filled. Nothing moves until you press "
+                     "Move all.")
+                      .arg(match.name)
+                      .arg(match.filled));
+    if (!match.notOnBus.isEmpty()) {
+        QStringList names;
+        for (const feetech::PoseEntry &entry : std::as_const(match.notOnBus))
+            names.append(tr("ID %1 at %2").arg(entry.id).arg(feetech::baudText(entry.baud)));
+        report.append(tr("Not on the bus: %1.").arg(names.join(tr(", "))));
+    }
+    if (!match.rowsWithoutEntry.isEmpty()) {
+        QStringList names;
+        for (const int row : std::as_const(match.rowsWithoutEntry))
+            names.append(servoName(row));
+        report.append(tr("Not in the pose (targets unchanged): %1.").arg(names.join(tr(", "))));
+    }
+    if (!match.rowsOutOfRange.isEmpty()) {
+        QStringList names;
+        for (const int row : std::as_const(match.rowsOutOfRange))
+            names.append(servoName(row));
+        report.append(tr("Outside their range (shown in red): %1.").arg(names.join(tr(", "))));
+    }
+    const bool clean = match.notOnBus.isEmpty() && match.rowsWithoutEntry.isEmpty()
+        && match.rowsOutOfRange.isEmpty();
+    setMessage(report.join(u' '), clean ? Tone::Success : Tone::Warning);
+    return match;
+}
+
+void JointTable::onMoveAllClicked()
+{
+    QString error;
+    if (!moveAll(&error))
+        setMessage(error, Tone::Error);
+}
+
+void JointTable::onCaptureClicked()
+{
+    capturePositions();
+}
+
+void JointTable::onReadClicked()
+{
+    QString error;
+    if (!readPositions(&error))
+        setMessage(error, Tone::Error);
+}
+
+void JointTable::onSaveClicked()
+{
+    const QString suggestion =
+        QDir(m_lastFolder)
+            .filePath(m_poseName.isEmpty() ? tr("pose.json") : QString(m_poseName + u".json"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save pose"), suggestion,
+                                                tr("ServoBench poses (*.json);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    m_lastFolder = QFileInfo(path).absolutePath();
+    QString error;
+    if (!savePose(path, &error))
+        setMessage(error, Tone::Error);
+}
+
+void JointTable::onLoadClicked()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Load pose"), m_lastFolder, tr("ServoBench poses (*.json);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    m_lastFolder = QFileInfo(path).absolutePath();
+    QString error;
+    if (!loadPose(path, &error))
+        setMessage(error, Tone::Error);
+}
