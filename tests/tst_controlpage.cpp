@@ -1,10 +1,8 @@
 // GUI tests of the Control page against a simulated bus (STS3215 ×2 + SCS15 at 1 Mbps): torque,
 // goals, the throttled slider, operating mode, step and sweep tests, and All torque off.
 #include "controlpage.h"
-#include "feetech/busclient.h"
 #include "feetech/motiontest.h"
-#include "sim/virtualfeetechservo.h"
-#include "simclient.h"
+#include "feetechbus.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -26,18 +24,6 @@ constexpr int kGoalAddress = 42;
 constexpr int kTorqueAddress = 40;
 constexpr quint8 kWrite = 0x03;
 
-sim::SimulatorOptions busOptions(const QTemporaryDir &dir)
-{
-    sim::SimulatorOptions options;
-    options.kind = sim::SimulatorOptions::Kind::Feetech;
-    options.linkPath = dir.filePath(QStringLiteral("bus"));
-    options.logPath = dir.filePath(QStringLiteral("bus.log"));
-    options.servos = {{1, QStringLiteral("STS3215"), k1M},
-                      {2, QStringLiteral("STS3215"), k1M},
-                      {3, QStringLiteral("SCS15"), k1M}};
-    return options;
-}
-
 // Short waits so the tests run in seconds; the behaviour does not depend on them.
 feetech::MotionTiming quickTiming()
 {
@@ -50,26 +36,13 @@ feetech::MotionTiming quickTiming()
 
 } // namespace
 
-class TestControlPage : public QObject
+class TestControlPage : public testsupport::FeetechBusTest
 {
     Q_OBJECT
 
 private:
-    QTemporaryDir m_dir;
-    std::unique_ptr<sim::SimulatorThread> m_simulator;
     std::unique_ptr<feetech::BusClient> m_client;
     std::unique_ptr<ControlPage> m_page;
-
-    QString logPath() const { return m_dir.filePath(QStringLiteral("bus.log")); }
-
-    qint32 simulatorValue(quint8 id, const QString &key)
-    {
-        qint32 value = -1;
-        m_simulator->call([&](sim::Simulator &simulator) {
-            value = simulator.feetechBus()->findServo(id)->value(key);
-        });
-        return value;
-    }
 
     void setSimulatorValue(quint8 id, const QString &key, qint32 value)
     {
@@ -82,13 +55,9 @@ private:
     QList<QByteArray> writesReceived(quint8 id) const
     {
         QList<QByteArray> frames;
-        for (const QString &line :
-             testsupport::logLinesStartingWith(logPath(), QStringLiteral("in "))) {
-            const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
-            const auto bytes = util::parseHex(hex);
-            if (bytes && bytes->size() > 6 && quint8(bytes->at(2)) == id
-                && quint8(bytes->at(4)) == kWrite)
-                frames.append(*bytes);
+        for (const QByteArray &bytes : testsupport::feetechFramesReceived(logPath())) {
+            if (bytes.size() > 6 && quint8(bytes.at(2)) == id && quint8(bytes.at(4)) == kWrite)
+                frames.append(bytes);
         }
         return frames;
     }
@@ -133,17 +102,8 @@ private:
     // Connects, scans IDs 1-5 and shows servo `id` on the page, read in full.
     int showServo(quint8 id)
     {
-        m_client->connectTo(m_simulator->linkPath(), k1M);
-        [&] {
-            QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
-        }();
-        if (QTest::currentTestFailed())
-            return -1;
-        feetech::ScanOptions options;
-        options.lastId = 5;
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::scanFinished);
-        m_client->scan(options);
-        if (!finished.wait(20000) || m_client->servoCount() != 3)
+        if (!testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 5)
+            || m_client->servoCount() != 3)
             return -1;
         const int index = m_client->indexOf(id, k1M);
         m_client->readServo(index);
@@ -161,9 +121,9 @@ private:
 private slots:
     void init()
     {
-        m_simulator = std::make_unique<sim::SimulatorThread>();
         QString error;
-        QVERIFY2(m_simulator->start(busOptions(m_dir), &error), qPrintable(error));
+        const auto servos = testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS15"});
+        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
         m_client = std::make_unique<feetech::BusClient>();
         m_page = std::make_unique<ControlPage>(m_client.get());
         m_page->setMotionTiming(quickTiming());

@@ -1,12 +1,10 @@
 // GUI tests of the Feetech workspace against a simulated bus: scan, tree, memory-table edits.
 #include "connectionbar.h"
-#include "feetech/busclient.h"
+#include "feetechbus.h"
 #include "feetechworkspace.h"
 #include "mainwindow.h"
 #include "parameterpage.h"
 #include "registertablemodel.h"
-#include "sim/virtualfeetechservo.h"
-#include "simclient.h"
 
 #include <QAbstractItemView>
 #include <QLineEdit>
@@ -24,18 +22,6 @@ namespace {
 
 constexpr qint32 k1M = 1000000;
 
-sim::SimulatorOptions busOptions(const QTemporaryDir &dir)
-{
-    sim::SimulatorOptions options;
-    options.kind = sim::SimulatorOptions::Kind::Feetech;
-    options.linkPath = dir.filePath(QStringLiteral("bus"));
-    options.logPath = dir.filePath(QStringLiteral("bus.log"));
-    options.servos = {{1, QStringLiteral("STS3215"), k1M},
-                      {2, QStringLiteral("STS3215"), k1M},
-                      {3, QStringLiteral("SCS15"), k1M}};
-    return options;
-}
-
 // Presses the default button of the next message box that opens (a confirmation).
 void acceptNextMessageBox()
 {
@@ -48,26 +34,15 @@ void acceptNextMessageBox()
 
 } // namespace
 
-class TestFeetechGui : public QObject
+class TestFeetechGui : public testsupport::FeetechBusTest
 {
     Q_OBJECT
 
 private:
-    QTemporaryDir m_dir;
-    std::unique_ptr<sim::SimulatorThread> m_simulator;
     std::unique_ptr<MainWindow> m_window;
 
     FeetechWorkspace *workspace() const { return m_window->feetechWorkspace(); }
     feetech::BusClient *client() const { return m_window->feetechClient(); }
-
-    qint32 simulatorValue(quint8 id, const QString &key)
-    {
-        qint32 value = -1;
-        m_simulator->call([&](sim::Simulator &simulator) {
-            value = simulator.feetechBus()->findServo(id)->value(key);
-        });
-        return value;
-    }
 
     void connectAndScan()
     {
@@ -99,9 +74,9 @@ private:
 private slots:
     void init()
     {
-        m_simulator = std::make_unique<sim::SimulatorThread>();
         QString error;
-        QVERIFY2(m_simulator->start(busOptions(m_dir), &error), qPrintable(error));
+        const auto servos = testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS15"});
+        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
         m_window = std::make_unique<MainWindow>();
         m_window->show();
     }

@@ -1,8 +1,7 @@
 // End-to-end tests of the Feetech session against a simulated mixed bus on a pty.
 #include "feetech/feetechsession.h"
 #include "feetech/servoparameters.h"
-#include "sim/virtualfeetechservo.h"
-#include "simclient.h"
+#include "feetechbus.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -19,18 +18,11 @@ constexpr qint32 k1M = 1000000;
 constexpr qint32 k115k = 115200;
 
 // STS3215 ×2, SCS15 (big-endian), HLS at 1 Mbps; an SMS at 115200.
-sim::SimulatorOptions mixedBus(const QTemporaryDir &dir)
+QVector<sim::FeetechServoSpec> mixedServos()
 {
-    sim::SimulatorOptions options;
-    options.kind = sim::SimulatorOptions::Kind::Feetech;
-    options.linkPath = dir.filePath(QStringLiteral("bus"));
-    options.logPath = dir.filePath(QStringLiteral("bus.log"));
-    options.servos = {{1, QStringLiteral("STS3215"), k1M},
-                      {2, QStringLiteral("STS3215"), k1M},
-                      {3, QStringLiteral("SCS15"), k1M},
-                      {4, QStringLiteral("HLS"), k1M},
-                      {5, QStringLiteral("SMS"), k115k}};
-    return options;
+    auto servos = testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS15", u"HLS"});
+    servos.append({5, QStringLiteral("SMS"), k115k});
+    return servos;
 }
 
 // The session's values for one servo, decoded as the GUI and CLI decode them.
@@ -42,25 +34,15 @@ struct Memory
 
 } // namespace
 
-class TestFeetechSession : public QObject
+class TestFeetechSession : public testsupport::FeetechSessionTest
 {
     Q_OBJECT
 
 private:
-    QTemporaryDir m_dir;
-    std::unique_ptr<sim::SimulatorThread> m_simulator;
-    std::unique_ptr<Session> m_session;
-    QVector<ServoInfo> m_found;
-
     void startBus(const sim::SimulatorOptions &options)
     {
-        m_simulator = std::make_unique<sim::SimulatorThread>();
         QString error;
-        QVERIFY2(m_simulator->start(options, &error), qPrintable(error));
-        m_session = std::make_unique<Session>();
-        connect(m_session.get(), &Session::servoFound, this,
-                [this](const ServoInfo &servo) { m_found.append(servo); });
-        m_session->open(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
+        QVERIFY2(startSession(options, &error), qPrintable(error));
         QCOMPARE(m_session->status().state, seriallink::ConnectionState::Connected);
     }
 
@@ -70,16 +52,6 @@ private:
         QSignalSpy finished(m_session.get(), &Session::scanFinished);
         m_session->scan(options);
         return (!finished.isEmpty() || finished.wait(30000)) && finished.first().at(0).toBool();
-    }
-
-    OperationResult run(const std::function<void()> &start)
-    {
-        QSignalSpy finished(m_session.get(), &Session::operationFinished);
-        start();
-        // A refusal can come at once, before anything is sent.
-        if (finished.isEmpty() && !finished.wait(10000))
-            return {};
-        return finished.first().at(0).value<OperationResult>();
     }
 
     Memory readAll(const ServoInfo &servo)
@@ -113,23 +85,17 @@ private:
 
     QStringList framesReceived() const
     {
-        return testsupport::logLinesStartingWith(m_dir.filePath(QStringLiteral("bus.log")),
-                                                 QStringLiteral("in "));
+        return testsupport::logLinesStartingWith(logPath(), QStringLiteral("in "));
     }
 
 private slots:
     void init()
     {
         m_found.clear();
-        startBus(mixedBus(m_dir));
+        startBus(busOptions(mixedServos()));
     }
 
-    void cleanup()
-    {
-        m_session.reset();
-        m_simulator.reset();
-        QFile::remove(m_dir.filePath(QStringLiteral("bus.log")));
-    }
+    void cleanup() { stopSession(); }
 
     void scanFindsEveryServoAtItsBaud()
     {
@@ -173,7 +139,7 @@ private slots:
     {
         // Replies up to 6 ms late: the wait follows the measured answers, and an answer that
         // still comes too late names its servo, which is asked again with time to spare.
-        sim::SimulatorOptions options = mixedBus(m_dir);
+        sim::SimulatorOptions options = busOptions(mixedServos());
         options.faults.delayMs = 6;
         options.seed = 7;
         cleanup();

@@ -1,11 +1,8 @@
 // GUI tests of the joint table against a simulated bus: rows, ranges, torque, Move all as one
 // SYNC WRITE, live positions and pose files.
-#include "feetech/busclient.h"
 #include "feetech/pose.h"
+#include "feetechbus.h"
 #include "jointtable.h"
-#include "sim/virtualfeetechbus.h"
-#include "sim/virtualfeetechservo.h"
-#include "simclient.h"
 
 #include <QLabel>
 #include <QMap>
@@ -24,19 +21,6 @@ namespace {
 constexpr qint32 k1M = 1000000;
 constexpr quint8 kSyncWrite = 0x83;
 constexpr int kGoalAddress = 42;
-
-sim::SimulatorOptions busOptions(const QTemporaryDir &dir)
-{
-    sim::SimulatorOptions options;
-    options.kind = sim::SimulatorOptions::Kind::Feetech;
-    options.linkPath = dir.filePath(QStringLiteral("bus"));
-    options.logPath = dir.filePath(QStringLiteral("bus.log"));
-    options.servos = {{1, QStringLiteral("STS3215"), k1M},
-                      {2, QStringLiteral("STS3215"), k1M},
-                      {3, QStringLiteral("STS3215"), k1M},
-                      {4, QStringLiteral("SCS15"), k1M}};
-    return options;
-}
 
 // One SYNC WRITE as the simulator received it: FF FF FE LEN 83 ADDR L (ID D1..DL)... CHK.
 struct SyncWrite
@@ -65,11 +49,9 @@ std::optional<SyncWrite> decodeSyncWrite(const QByteArray &frame)
 QVector<QByteArray> syncWritesReceived(const QString &logPath)
 {
     QVector<QByteArray> frames;
-    for (const QString &line : testsupport::logLinesStartingWith(logPath, QStringLiteral("in "))) {
-        const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
-        const auto frame = util::parseHex(hex);
-        if (frame && frame->size() > 4 && quint8(frame->at(4)) == kSyncWrite)
-            frames.append(*frame);
+    for (const QByteArray &frame : testsupport::feetechFramesReceived(logPath)) {
+        if (frame.size() > 4 && quint8(frame.at(4)) == kSyncWrite)
+            frames.append(frame);
     }
     return frames;
 }
@@ -84,26 +66,13 @@ qint32 goalValue(const QByteArray &bytes, bool bigEndian)
 
 } // namespace
 
-class TestJointTable : public QObject
+class TestJointTable : public testsupport::FeetechBusTest
 {
     Q_OBJECT
 
 private:
-    QTemporaryDir m_dir;
-    std::unique_ptr<sim::SimulatorThread> m_simulator;
     std::unique_ptr<feetech::BusClient> m_client;
     std::unique_ptr<JointTable> m_joints;
-
-    QString logPath() const { return m_dir.filePath(QStringLiteral("bus.log")); }
-
-    qint32 simulatorValue(quint8 id, const QString &key)
-    {
-        qint32 value = -1;
-        m_simulator->call([&](sim::Simulator &simulator) {
-            value = simulator.feetechBus()->findServo(id)->value(key);
-        });
-        return value;
-    }
 
     template<typename T>
     T *child(const char *name) const
@@ -113,13 +82,7 @@ private:
 
     void connectAndScan()
     {
-        m_client->connectTo(m_simulator->linkPath(), k1M);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
-        feetech::ScanOptions options;
-        options.lastId = 10;
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::scanFinished);
-        m_client->scan(options);
-        QVERIFY(finished.wait(20000));
+        QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 10));
         QCOMPARE(m_joints->rowCount(), 4);
     }
 
@@ -156,9 +119,10 @@ private:
 private slots:
     void init()
     {
-        m_simulator = std::make_unique<sim::SimulatorThread>();
         QString error;
-        QVERIFY2(m_simulator->start(busOptions(m_dir), &error), qPrintable(error));
+        const auto servos =
+            testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"STS3215", u"SCS15"});
+        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
         m_client = std::make_unique<feetech::BusClient>();
         m_joints = std::make_unique<JointTable>(m_client.get());
         m_joints->resize(1180, 820);

@@ -1,10 +1,7 @@
 // GUI tests of the Monitor page: bounded plot memory under a long synthetic stream, CSV
 // recordings that parse back, PNG export, and live monitoring of a simulated bus.
-#include "feetech/busclient.h"
+#include "feetechbus.h"
 #include "monitorpage.h"
-#include "sim/virtualfeetechbus.h"
-#include "sim/virtualfeetechservo.h"
-#include "simclient.h"
 #include "telemetryplot.h"
 
 #include <QChart>
@@ -63,19 +60,6 @@ qint64 feed(MonitorPage &page, qint64 startUs, int seconds, int servos = kServos
     return startUs + cycles * kPeriodUs;
 }
 
-sim::SimulatorOptions busOptions(const QTemporaryDir &dir)
-{
-    sim::SimulatorOptions options;
-    options.kind = sim::SimulatorOptions::Kind::Feetech;
-    options.linkPath = dir.filePath(QStringLiteral("bus"));
-    options.logPath = dir.filePath(QStringLiteral("bus.log"));
-    options.servos = {{1, QStringLiteral("STS3215"), k1M},
-                      {2, QStringLiteral("STS3215"), k1M},
-                      {3, QStringLiteral("STS3215"), k1M},
-                      {4, QStringLiteral("SCS15"), k1M}};
-    return options;
-}
-
 std::optional<QVector<feetech::CsvSample>> readCsv(const QString &path, QString *error)
 {
     QFile file(path);
@@ -88,28 +72,21 @@ std::optional<QVector<feetech::CsvSample>> readCsv(const QString &path, QString 
 
 } // namespace
 
-class TestMonitorPage : public QObject
+class TestMonitorPage : public testsupport::FeetechBusTest
 {
     Q_OBJECT
 
 private:
-    QTemporaryDir m_dir;
-    std::unique_ptr<sim::SimulatorThread> m_simulator;
     std::unique_ptr<feetech::BusClient> m_client;
     std::unique_ptr<MonitorPage> m_page;
 
     void startSimulatorAndScan()
     {
-        m_simulator = std::make_unique<sim::SimulatorThread>();
         QString error;
-        QVERIFY2(m_simulator->start(busOptions(m_dir), &error), qPrintable(error));
-        m_client->connectTo(m_simulator->linkPath(), k1M);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
-        feetech::ScanOptions options;
-        options.lastId = 6;
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::scanFinished);
-        m_client->scan(options);
-        QVERIFY(finished.wait(20000));
+        const auto servos =
+            testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"STS3215", u"SCS15"});
+        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
+        QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 6));
         QCOMPARE(m_client->servoCount(), 4);
     }
 

@@ -3,7 +3,10 @@
 #include "controlpage.h"
 
 #include "feetech/busclient.h"
+#include "feetech/goalrange.h"
+#include "feetech/registerkeys.h"
 #include "feetech/servoparameters.h"
+#include "widgethelpers.h"
 
 #include <QButtonGroup>
 #include <QChart>
@@ -33,14 +36,10 @@
 #include <iterator>
 #include <limits>
 
-namespace {
+using namespace feetech::registerkeys;
+using widgethelpers::actionButton;
 
-const QString kTorqueKey = QStringLiteral("torque_enable");
-const QString kGoalKey = QStringLiteral("goal_position");
-const QString kSpeedKey = QStringLiteral("goal_speed");
-const QString kAccelerationKey = QStringLiteral("acceleration");
-const QString kModeKey = QStringLiteral("mode");
-const QString kPresentKey = QStringLiteral("present_position");
+namespace {
 
 constexpr int kTorqueOff = 0;
 constexpr int kTorqueOn = 1;
@@ -100,16 +99,6 @@ bool allowsDamping(const feetech::Register *reg)
         return std::any_of(reg->choices.cbegin(), reg->choices.cend(),
                            [](const feetech::Choice &c) { return c.value == kTorqueDamping; });
     return reg->minimum <= kTorqueDamping && reg->maximum >= kTorqueDamping;
-}
-
-QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
-                          QWidget *parent)
-{
-    auto *button = new QPushButton(text, parent);
-    button->setObjectName(QLatin1String(name));
-    button->setToolTip(tip);
-    button->setAutoDefault(false);
-    return button;
 }
 
 QSpinBox *spinBox(const char *name, QWidget *parent)
@@ -300,7 +289,7 @@ QGroupBox *ControlPage::buildModeGroup()
 
     connect(m_mode, &QComboBox::activated, this, [this] {
         const auto device = m_index >= 0 && m_client->parameters(m_index)
-            ? m_client->parameters(m_index)->deviceValue(kModeKey)
+            ? m_client->parameters(m_index)->deviceValue(kMode)
             : std::nullopt;
         m_modeEdited = !device || m_mode->currentData().toLongLong() != *device;
         updateEnabled();
@@ -616,7 +605,7 @@ void ControlPage::configureForServo()
     const feetech::RegisterTable &table = m_client->servo(m_index).info.table();
     const model::ParameterModel *parameters = m_client->parameters(m_index);
 
-    const bool damping = allowsDamping(table.find(kTorqueKey));
+    const bool damping = allowsDamping(table.find(kTorqueEnable));
     m_torqueDamping->setToolTip(
         damping ? tr("Damping: the horn can be turned by hand against a resistance (torque "
                      "enable 2).")
@@ -625,7 +614,7 @@ void ControlPage::configureForServo()
     {
         const QSignalBlocker blocker(m_mode);
         m_mode->clear();
-        if (const feetech::Register *mode = table.find(kModeKey)) {
+        if (const feetech::Register *mode = table.find(kMode)) {
             for (const feetech::Choice &choice : mode->choices)
                 m_mode->addItem(choice.label, choice.value);
             m_modeNote->setText(tr("Stored in EEPROM: the servo keeps it when powered off."));
@@ -636,8 +625,8 @@ void ControlPage::configureForServo()
         }
     }
 
-    const feetech::Register *speed = table.find(kSpeedKey);
-    const feetech::Register *acceleration = table.find(kAccelerationKey);
+    const feetech::Register *speed = table.find(kGoalSpeed);
+    const feetech::Register *acceleration = table.find(kAcceleration);
     for (QSpinBox *spin : {m_speed, m_testSpeed})
         setRegisterRange(spin, speed, true);
     for (QSpinBox *spin : {m_acceleration, m_testAcceleration})
@@ -648,11 +637,11 @@ void ControlPage::configureForServo()
     m_testAcceleration->setSuffix(acceleration ? QLatin1Char(' ') + unitText(acceleration)
                                                : QString());
     // What the servo is set to, or a gentle third of its range (0 would mean flat out).
-    const auto deviceSpeed = parameters->deviceValue(kSpeedKey);
+    const auto deviceSpeed = parameters->deviceValue(kGoalSpeed);
     const int speedValue = deviceSpeed && *deviceSpeed > 0
         ? toInt(*deviceSpeed)
         : (speed ? std::max(speed->maximum / 3, 1) : 0);
-    const auto deviceAcceleration = parameters->deviceValue(kAccelerationKey);
+    const auto deviceAcceleration = parameters->deviceValue(kAcceleration);
     const int accelerationValue = deviceAcceleration && *deviceAcceleration > 0
         ? toInt(*deviceAcceleration)
         : (acceleration ? std::max(acceleration->maximum / 5, 1) : 0);
@@ -717,7 +706,7 @@ void ControlPage::syncFromDevice()
     if (!ready())
         return;
     const model::ParameterModel *parameters = m_client->parameters(m_index);
-    const auto torque = parameters->deviceValue(kTorqueKey);
+    const auto torque = parameters->deviceValue(kTorqueEnable);
     QAbstractButton *checked = torque ? m_torqueButtons->button(int(*torque)) : nullptr;
     if (checked) {
         checked->setChecked(true);
@@ -739,7 +728,7 @@ void ControlPage::syncFromDevice()
         m_torqueState->setText(tr("Torque enable is %1.").arg(*torque));
 
     if (!m_modeEdited) {
-        const auto mode = parameters->deviceValue(kModeKey);
+        const auto mode = parameters->deviceValue(kMode);
         const QSignalBlocker blocker(m_mode);
         m_mode->setCurrentIndex(mode ? m_mode->findData(qint32(*mode)) : -1);
     }
@@ -747,9 +736,9 @@ void ControlPage::syncFromDevice()
     // The goal starts where the horn is, so Move or a touch of the slider cannot jump it to a
     // stale goal register.
     if (!m_goalInitialised) {
-        auto start = parameters->deviceValue(kPresentKey);
+        auto start = parameters->deviceValue(kPresentPosition);
         if (!start)
-            start = parameters->deviceValue(kGoalKey);
+            start = parameters->deviceValue(kGoalPosition);
         if (start) {
             m_goalInitialised = true;
             const int here = std::clamp(toInt(*start), m_goal->minimum(), m_goal->maximum());
@@ -793,10 +782,10 @@ void ControlPage::updatePresent()
         // Whichever came last: a telemetry sample, or a read of the register (the stream may
         // have stopped since its last sample, or never have carried this servo).
         const model::ParameterModel *parameters = m_client->parameters(m_index);
-        const qint64 readMs = parameters->lastReadMs(kPresentKey);
+        const qint64 readMs = parameters->lastReadMs(kPresentPosition);
         if (readMs != m_presentReadMs) {
             m_presentReadMs = readMs;
-            if (const auto value = parameters->deviceValue(kPresentKey))
+            if (const auto value = parameters->deviceValue(kPresentPosition))
                 m_presentPosition = double(*value);
         }
         if (!m_presentPosition && m_client->isMonitored(m_index)) {
@@ -837,30 +826,30 @@ void ControlPage::updateEnabled()
         m_hint->show();
     }
 
-    const bool torque = has(kTorqueKey);
+    const bool torque = has(kTorqueEnable);
     m_torqueOff->setEnabled(torque);
     m_torqueOn->setEnabled(torque);
-    m_torqueDamping->setEnabled(torque && allowsDamping(table->find(kTorqueKey)));
+    m_torqueDamping->setEnabled(torque && allowsDamping(table->find(kTorqueEnable)));
 
-    const bool goal = has(kGoalKey) && !here;
+    const bool goal = has(kGoalPosition) && !here;
     for (QWidget *widget : {static_cast<QWidget *>(m_slider), static_cast<QWidget *>(m_goal),
                             static_cast<QWidget *>(m_move)})
         widget->setEnabled(goal);
-    m_speed->setEnabled(goal && has(kSpeedKey));
-    m_acceleration->setEnabled(goal && has(kAccelerationKey));
+    m_speed->setEnabled(goal && has(kGoalSpeed));
+    m_acceleration->setEnabled(goal && has(kAcceleration));
 
-    const bool mode = has(kModeKey) && !here;
+    const bool mode = has(kMode) && !here;
     m_mode->setEnabled(mode);
     m_modeApply->setEnabled(mode && m_modeEdited && m_mode->currentIndex() >= 0);
 
-    const bool canTest = has(kGoalKey) && !running;
+    const bool canTest = has(kGoalPosition) && !running;
     for (QWidget *widget :
          {static_cast<QWidget *>(m_from), static_cast<QWidget *>(m_to),
           static_cast<QWidget *>(m_recordSeconds), static_cast<QWidget *>(m_legs),
           static_cast<QWidget *>(m_stepButton), static_cast<QWidget *>(m_sweepButton)})
         widget->setEnabled(canTest);
-    m_testSpeed->setEnabled(canTest && has(kSpeedKey));
-    m_testAcceleration->setEnabled(canTest && has(kAccelerationKey));
+    m_testSpeed->setEnabled(canTest && has(kGoalSpeed));
+    m_testAcceleration->setEnabled(canTest && has(kAcceleration));
     m_stopButton->setEnabled(running); // whichever servo is shown
 }
 
@@ -890,7 +879,7 @@ void ControlPage::setTorque(int value)
         m_test->cancel();
         m_stopRequested = false;
     }
-    if (!write(WriteKind::Torque, {{kTorqueKey, value}}))
+    if (!write(WriteKind::Torque, {{kTorqueEnable, value}}))
         syncFromDevice(); // the buttons go back to what the servo has
 }
 
@@ -937,11 +926,11 @@ bool ControlPage::moveTo(qint32 position, QString *error)
 
     const feetech::RegisterTable &table = m_client->servo(m_index).info.table();
     QVector<model::WriteItem> values;
-    if (table.find(kAccelerationKey))
-        values.append({kAccelerationKey, m_acceleration->value()});
-    if (table.find(kSpeedKey))
-        values.append({kSpeedKey, m_speed->value()});
-    values.append({kGoalKey, position});
+    if (table.find(kAcceleration))
+        values.append({kAcceleration, m_acceleration->value()});
+    if (table.find(kGoalSpeed))
+        values.append({kGoalSpeed, m_speed->value()});
+    values.append({kGoalPosition, position});
     if (!write(WriteKind::Goal, values)) {
         if (error)
             *error = statusText();
@@ -950,7 +939,8 @@ bool ControlPage::moveTo(qint32 position, QString *error)
     const bool torqueWritePending =
         std::any_of(m_writes.begin(), m_writes.end(),
                     [](const PendingWrite &w) { return w.kind == WriteKind::Torque; });
-    if (!torqueWritePending && m_client->parameters(m_index)->deviceValue(kTorqueKey) == kTorqueOff)
+    if (!torqueWritePending
+        && m_client->parameters(m_index)->deviceValue(kTorqueEnable) == kTorqueOff)
         setStatus(tr("Torque is off: %1 keeps the goal but does not move until torque is on.")
                       .arg(servoName()),
                   Severity::Warning);
@@ -973,7 +963,7 @@ void ControlPage::changeMode()
     if (!ready() || m_mode->currentIndex() < 0)
         return;
     const qint64 value = m_mode->currentData().toLongLong();
-    const auto device = m_client->parameters(m_index)->deviceValue(kModeKey);
+    const auto device = m_client->parameters(m_index)->deviceValue(kMode);
     if (device && *device == value) {
         m_modeEdited = false;
         updateEnabled();
@@ -996,7 +986,7 @@ void ControlPage::changeMode()
             return;
     }
     setStatus({}, Severity::Info);
-    write(WriteKind::Mode, {{kModeKey, value}});
+    write(WriteKind::Mode, {{kMode, value}});
 }
 
 void ControlPage::onOperationFinished(const feetech::OperationResult &result)
@@ -1102,7 +1092,7 @@ void ControlPage::onTestRunning(bool running)
     } else if (ready() && m_test->plan().index == m_index) {
         // The goal controls take over from where the test left the goal, so a touch of the
         // slider does not jump the horn back to an old one.
-        if (const auto goal = m_client->parameters(m_index)->deviceValue(kGoalKey)) {
+        if (const auto goal = m_client->parameters(m_index)->deviceValue(kGoalPosition)) {
             const QSignalBlocker spinBlocker(m_goal);
             const QSignalBlocker sliderBlocker(m_slider);
             m_goal->setValue(toInt(*goal));

@@ -10,6 +10,7 @@
 #include "profileactions.h"
 #include "registertablemodel.h"
 #include "scandialog.h"
+#include "widgethelpers.h"
 
 #include <QCheckBox>
 #include <QDateTime>
@@ -32,6 +33,8 @@
 
 #include <algorithm>
 
+using widgethelpers::actionButton;
+
 namespace {
 
 // RAM rows of the shown servo are read again this often while the table is on screen.
@@ -47,16 +50,6 @@ QStringList settingsKeys()
     for (const feetech::SettingsGroup &group : feetech::settingsGroups())
         keys += group.keys;
     return keys;
-}
-
-QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
-                          QWidget *parent)
-{
-    auto *button = new QPushButton(text, parent);
-    button->setObjectName(QLatin1String(name));
-    button->setToolTip(tip);
-    button->setAutoDefault(false);
-    return button;
 }
 
 } // namespace

@@ -3,7 +3,9 @@
 #include "jointtable.h"
 
 #include "feetech/busclient.h"
+#include "feetech/registerkeys.h"
 #include "feetech/servoparameters.h"
+#include "widgethelpers.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -21,15 +23,10 @@
 
 #include <cmath>
 
-namespace {
+using namespace feetech::registerkeys;
+using widgethelpers::actionButton;
 
-const QString kTorqueKey = QStringLiteral("torque_enable");
-const QString kGoalKey = QStringLiteral("goal_position");
-const QString kMinAngleKey = QStringLiteral("min_angle_limit");
-const QString kMaxAngleKey = QStringLiteral("max_angle_limit");
-const QString kPresentKey = QStringLiteral("present_position");
-const QString kMovingKey = QStringLiteral("moving");
-const QString kModeKey = QStringLiteral("mode");
+namespace {
 
 // Roles of the target cell, read by its editor.
 constexpr int kMinimumRole = Qt::UserRole + 1;
@@ -68,16 +65,6 @@ QColor warningColor(bool dark)
 QColor accentColor(bool dark)
 {
     return dark ? QColor(120, 170, 255) : QColor(25, 90, 190);
-}
-
-QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
-                          QWidget *parent)
-{
-    auto *button = new QPushButton(text, parent);
-    button->setObjectName(QLatin1String(name));
-    button->setToolTip(tip);
-    button->setAutoDefault(false);
-    return button;
 }
 
 // Types targets in a spin box that only goes as far as the servo may be sent; a cell without a
@@ -239,7 +226,7 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
         const int row = rowOf(info.id, info.baud);
         if (row < 0)
             return;
-        const qint64 readMs = m_client->parameters(index)->lastReadMs(kPresentKey);
+        const qint64 readMs = m_client->parameters(index)->lastReadMs(kPresentPosition);
         if (readMs != m_rows[row].modelReadMs) {
             m_rows[row].modelReadMs = readMs;
             m_rows[row].sampleNewer = false;
@@ -315,7 +302,7 @@ std::optional<feetech::FeedbackSample> JointTable::sampleSource(int row) const
     if (!sample)
         return std::nullopt;
     // A read after the last sample is the newer news, unless the monitor is still streaming.
-    if (isPositionLive(row) || m_rows.at(row).sampleNewer || !deviceValue(row, kPresentKey))
+    if (isPositionLive(row) || m_rows.at(row).sampleNewer || !deviceValue(row, kPresentPosition))
         return sample;
     return std::nullopt;
 }
@@ -326,7 +313,7 @@ std::optional<qint32> JointTable::position(int row) const
         if (const auto value = sample->value(feetech::Quantity::Position))
             return qint32(std::lround(*value));
     }
-    if (const auto value = deviceValue(row, kPresentKey))
+    if (const auto value = deviceValue(row, kPresentPosition))
         return qint32(*value);
     return std::nullopt;
 }
@@ -335,28 +322,17 @@ std::optional<bool> JointTable::moving(int row) const
 {
     if (const auto sample = sampleSource(row))
         return sample->moving;
-    if (const auto value = deviceValue(row, kMovingKey))
+    if (const auto value = deviceValue(row, kMoving))
         return *value != 0;
     return std::nullopt;
 }
 
-std::optional<JointTable::TargetRange> JointTable::targetRange(int row) const
+std::optional<feetech::PositionRange> JointTable::targetRange(int row) const
 {
     const int index = servoIndex(row);
     if (index < 0)
         return std::nullopt;
-    const feetech::ServoInfo &info = m_client->servo(index).info;
-    if (!info.hasTable())
-        return std::nullopt;
-    const feetech::Register *goal = info.table().find(kGoalKey);
-    if (!goal)
-        return std::nullopt;
-    // Both limits 0 selects multi-turn or motor mode: the limits then bound nothing.
-    const auto minimum = deviceValue(row, kMinAngleKey);
-    const auto maximum = deviceValue(row, kMaxAngleKey);
-    if (minimum && maximum && (*minimum != 0 || *maximum != 0) && *minimum <= *maximum)
-        return TargetRange {qint32(*minimum), qint32(*maximum), true};
-    return TargetRange {goal->minimum, goal->maximum, false};
+    return feetech::goalRange(*m_client, index);
 }
 
 void JointTable::setTarget(int row, qint32 target)
@@ -431,7 +407,7 @@ void JointTable::rebuild()
         const quint64 key = servoKey(info.id, info.baud);
         if (targets.contains(key))
             row.target = targets.value(key);
-        row.modelReadMs = m_client->parameters(index)->lastReadMs(kPresentKey);
+        row.modelReadMs = m_client->parameters(index)->lastReadMs(kPresentPosition);
         m_rows.append(row);
     }
     m_table->setRowCount(rowCount());
@@ -473,10 +449,10 @@ void JointTable::refreshRow(int row)
     // Torque: what the servo reports, or what was just asked of it until the read-back.
     QTableWidgetItem *torque = m_table->item(row, TorqueColumn);
     Row &state = m_rows[row];
-    const auto device = deviceValue(row, kTorqueKey);
+    const auto device = deviceValue(row, kTorqueEnable);
     if (state.torqueRequested && device && *device == *state.torqueRequested)
         state.torqueRequested.reset();
-    const bool switchable = info.hasTable() && info.table().find(kTorqueKey);
+    const bool switchable = info.hasTable() && info.table().find(kTorqueEnable);
     torque->setFlags(switchable ? Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable
                                 : Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     QString torqueText;
@@ -498,7 +474,7 @@ void JointTable::refreshRow(int row)
         torqueText = tr("Damping");
         check = Qt::PartiallyChecked;
         torqueColour = warningColor(dark);
-    } else if (const feetech::Register *reg = info.table().find(kTorqueKey)) {
+    } else if (const feetech::Register *reg = info.table().find(kTorqueEnable)) {
         torqueText = feetech::displayValue(*reg, qint32(*device));
     }
     torque->setText(torqueText);
@@ -556,7 +532,7 @@ void JointTable::refreshTarget(int row)
     if (row < 0 || row >= rowCount() || servoIndex(row) < 0)
         return;
     const bool dark = isDark(palette());
-    const std::optional<TargetRange> range = targetRange(row);
+    const std::optional<feetech::PositionRange> range = targetRange(row);
     const std::optional<qint32> target = m_rows.at(row).target;
     m_updating = true;
     QTableWidgetItem *rangeItem = m_table->item(row, RangeColumn);
@@ -708,7 +684,7 @@ bool JointTable::setTorque(int row, bool on, QString *error)
     }
     const int value = on ? kTorqueOn : kTorqueOff;
     QString why;
-    if (!m_client->writeValues(index, {{kTorqueKey, value}}, &why)) {
+    if (!m_client->writeValues(index, {{kTorqueEnable, value}}, &why)) {
         if (error)
             *error = tr("%1: torque not switched %2: %3")
                          .arg(servoName(row), on ? tr("on") : tr("off"), why);
@@ -764,7 +740,7 @@ bool JointTable::moveAll(QString *error)
     QStringList ids;
     for (int row = 0; row < rowCount(); ++row) {
         const int index = servoIndex(row);
-        const std::optional<TargetRange> range = targetRange(row);
+        const std::optional<feetech::PositionRange> range = targetRange(row);
         if (index < 0 || !range) {
             skipped.append(servoName(row));
             continue;
@@ -782,15 +758,15 @@ bool JointTable::moveAll(QString *error)
                               .arg(range->minimum)
                               .arg(range->maximum));
         // In wheel, PWM or step mode the goal register means something else (or nothing).
-        if (const auto mode = deviceValue(row, kModeKey); mode && *mode != 0) {
-            const feetech::Register *reg = m_client->servo(index).info.table().find(kModeKey);
+        if (const auto mode = deviceValue(row, kMode); mode && *mode != 0) {
+            const feetech::Register *reg = m_client->servo(index).info.table().find(kMode);
             return refuse(tr("%1 is in %2 mode; a goal position only moves a servo in position "
                              "mode. Nothing was sent.")
                               .arg(servoName(row),
                                    reg ? feetech::displayValue(*reg, qint32(*mode))
                                        : QString::number(*mode)));
         }
-        if (deviceValue(row, kTorqueKey) == std::optional<qint64>(kTorqueOff))
+        if (deviceValue(row, kTorqueEnable) == std::optional<qint64>(kTorqueOff))
             torqueOff.append(servoName(row));
         goals.append({index, *target});
         bauds.insert(m_rows.at(row).baud);
@@ -884,7 +860,7 @@ std::optional<JointTable::PoseMatch> JointTable::loadPose(const QString &path, Q
         }
         setTarget(row, entry->position);
         ++match.filled;
-        const std::optional<TargetRange> range = targetRange(row);
+        const std::optional<feetech::PositionRange> range = targetRange(row);
         if (range && !range->contains(entry->position))
             match.rowsOutOfRange.append(row);
     }

@@ -2,6 +2,7 @@
 // torque state; all targets moved at once, and poses saved and loaded.
 #pragma once
 
+#include "feetech/goalrange.h"
 #include "feetech/pose.h"
 
 #include <QVector>
@@ -37,16 +38,6 @@ public:
         ColumnCount
     };
 
-    // Where a servo may be sent, in register units (steps).
-    struct TargetRange
-    {
-        qint32 minimum = 0;
-        qint32 maximum = 0;
-        bool fromAngleLimits = false; // else the goal register's own range
-
-        bool contains(qint32 value) const { return value >= minimum && value <= maximum; }
-    };
-
     // How a loaded pose met the servos on the bus.
     struct PoseMatch
     {
@@ -68,8 +59,9 @@ public:
     // else the last value read (nothing before the first read).
     std::optional<qint32> position(int row) const;
     bool isPositionLive(int row) const;
-    // Nothing for a servo of unknown model, which cannot be moved.
-    std::optional<TargetRange> targetRange(int row) const;
+    // Where the row's servo may be sent (feetech::goalRange); nothing for a servo of unknown
+    // model, which cannot be moved.
+    std::optional<feetech::PositionRange> targetRange(int row) const;
 
     // Targets are kept as set, even out of range: such a target is shown in red and Move all
     // refuses it, saying why.

@@ -4,6 +4,7 @@
 
 #include "feetech/busclient.h"
 #include "telemetryplot.h"
+#include "widgethelpers.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -29,6 +30,8 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+
+using widgethelpers::actionButton;
 
 namespace {
 
@@ -56,15 +59,6 @@ int decimals(feetech::Quantity quantity)
     default:
         return 0;
     }
-}
-
-QPushButton *makeButton(const QString &text, const char *name, const QString &tip, QWidget *parent)
-{
-    auto *button = new QPushButton(text, parent);
-    button->setObjectName(QLatin1String(name));
-    button->setToolTip(tip);
-    button->setAutoDefault(false);
-    return button;
 }
 
 } // namespace
@@ -131,8 +125,8 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     connect(m_rateCombo, &QComboBox::activated, this, &MonitorPage::onRateChosen);
     streamLayout->addRow(tr("Rate:"), m_rateCombo);
     m_startButton =
-        makeButton(tr("Start"), "monitorStartButton",
-                   tr("Start or stop streaming the ticked servos' feedback"), streamGroup);
+        actionButton(tr("Start"), "monitorStartButton",
+                     tr("Start or stop streaming the ticked servos' feedback"), streamGroup);
     QFont bold = m_startButton->font();
     bold.setBold(true);
     m_startButton->setFont(bold);
@@ -151,20 +145,20 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     connect(m_windowCombo, &QComboBox::activated, this, &MonitorPage::onWindowChosen);
     viewLayout->addRow(tr("Window:"), m_windowCombo);
     m_pauseButton =
-        makeButton(tr("Pause"), "monitorPauseButton",
-                   tr("Freeze the plot; samples are still received and recorded"), viewGroup);
+        actionButton(tr("Pause"), "monitorPauseButton",
+                     tr("Freeze the plot; samples are still received and recorded"), viewGroup);
     m_pauseButton->setIcon(style()->standardIcon(QStyle::SP_MediaPause));
     connect(m_pauseButton, &QPushButton::clicked, this, &MonitorPage::togglePause);
-    m_resetZoomButton = makeButton(tr("Reset zoom"), "monitorResetZoomButton",
-                                   tr("Back to the live view over the whole window"), viewGroup);
+    m_resetZoomButton = actionButton(tr("Reset zoom"), "monitorResetZoomButton",
+                                     tr("Back to the live view over the whole window"), viewGroup);
     connect(m_resetZoomButton, &QPushButton::clicked, this, [this] { m_plot->resetZoom(); });
     auto *viewButtons = new QHBoxLayout;
     viewButtons->addWidget(m_pauseButton);
     viewButtons->addWidget(m_resetZoomButton);
     viewLayout->addRow(viewButtons);
     m_exportButton =
-        makeButton(tr("Export PNG…"), "monitorExportButton",
-                   tr("Save the charts as they are shown as one PNG image"), viewGroup);
+        actionButton(tr("Export PNG…"), "monitorExportButton",
+                     tr("Save the charts as they are shown as one PNG image"), viewGroup);
     connect(m_exportButton, &QPushButton::clicked, this, &MonitorPage::chooseExportFile);
     viewLayout->addRow(m_exportButton);
     controlsLayout->addWidget(viewGroup);
@@ -172,8 +166,8 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     auto *recordGroup = new QGroupBox(tr("Recording"), controls);
     auto *recordLayout = new QVBoxLayout(recordGroup);
     m_recordButton =
-        makeButton(tr("Record CSV…"), "monitorRecordButton",
-                   tr("Write every sample of the ticked servos to a CSV file"), recordGroup);
+        actionButton(tr("Record CSV…"), "monitorRecordButton",
+                     tr("Write every sample of the ticked servos to a CSV file"), recordGroup);
     connect(m_recordButton, &QPushButton::clicked, this, &MonitorPage::toggleRecording);
     recordLayout->addWidget(m_recordButton);
     m_recordingLabel = new QLabel(recordGroup);

@@ -6,7 +6,6 @@
 #include "feetech/feetechsession.h"
 #include "feetech/servoparameters.h"
 #include "profile/profile.h"
-#include "sim/unixsignals.h"
 #include "util/hex.h"
 
 #include <QDateTime>
@@ -22,7 +21,6 @@
 #include <QTimer>
 
 #include <algorithm>
-#include <csignal>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -265,16 +263,9 @@ public:
                                  m_error = message;
                                  loop.quit();
                              });
-        // Ctrl-C ends the scan cleanly, so what was found so far is still reported.
-        sim::UnixSignalWatcher signalWatcher;
-        signalWatcher.watch(SIGINT);
-        signalWatcher.watch(SIGTERM);
-        QObject::connect(&signalWatcher, &sim::UnixSignalWatcher::received, &loop,
-                         [this] { m_session->cancelScan(); });
         QTimer::singleShot(0, &loop, [this, options] { m_session->scan(options); });
-        loop.exec();
-        std::signal(SIGINT, SIG_DFL);
-        std::signal(SIGTERM, SIG_DFL);
+        // Ctrl-C ends the scan cleanly, so what was found so far is still reported.
+        runUntilInterrupted(loop, std::nullopt, [this] { m_session->cancelScan(); });
         QObject::disconnect(finding);
         QObject::disconnect(finished);
         return completed;
@@ -1143,17 +1134,8 @@ private:
                              if (status.state != seriallink::ConnectionState::Connected)
                                  loop.quit(); // unplugged: nothing more will come
                          });
-        sim::UnixSignalWatcher signalWatcher;
-        signalWatcher.watch(SIGINT);
-        signalWatcher.watch(SIGTERM);
-        QObject::connect(&signalWatcher, &sim::UnixSignalWatcher::received, &loop,
-                         &QEventLoop::quit);
-        if (duration)
-            QTimer::singleShot(qint64(*duration * 1000), &loop, &QEventLoop::quit);
         QTimer::singleShot(0, &loop, [&session, options] { session.startTelemetry(options); });
-        loop.exec();
-        std::signal(SIGINT, SIG_DFL);
-        std::signal(SIGTERM, SIG_DFL);
+        runUntilInterrupted(loop, duration);
         const bool linkLost = session.status().state != seriallink::ConnectionState::Connected;
         session.stopTelemetry(); // flushes the last samples through the connection above
         m_output.err << Tr::tr("servoctl: %1 samples in %2 s (%3 per second); %4 missed")

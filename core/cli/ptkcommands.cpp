@@ -392,14 +392,7 @@ private:
                              ++rows;
                              printRow(double(clock.elapsed()) / 1000.0, sweep, csv);
                          });
-        sim::UnixSignalWatcher signalWatcher;
-        signalWatcher.watch(SIGINT);
-        signalWatcher.watch(SIGTERM);
-        QObject::connect(&signalWatcher, &sim::UnixSignalWatcher::received, &loop,
-                         &QEventLoop::quit);
-        if (duration)
-            QTimer::singleShot(int(*duration * 1000), &loop, &QEventLoop::quit);
-        loop.exec();
+        runUntilInterrupted(loop, duration);
         if (rows == 0) {
             const QString message = device.session().status().message;
             return fail(message.isEmpty() ? Tr::tr("the servo did not answer") : message);
@@ -461,6 +454,25 @@ seriallink::EchoMode echoModeOption(const Arguments &args)
     if (echo == QLatin1String("off"))
         return seriallink::EchoMode::Off;
     throw UsageError {Tr::tr("--echo must be auto, on or off")};
+}
+
+void runUntilInterrupted(QEventLoop &loop, std::optional<double> seconds,
+                         const std::function<void()> &onSignal)
+{
+    sim::UnixSignalWatcher signalWatcher;
+    signalWatcher.watch(SIGINT);
+    signalWatcher.watch(SIGTERM);
+    QObject::connect(&signalWatcher, &sim::UnixSignalWatcher::received, &loop, [&loop, &onSignal] {
+        if (onSignal)
+            onSignal();
+        else
+            loop.quit();
+    });
+    if (seconds)
+        QTimer::singleShot(qint64(*seconds * 1000), &loop, &QEventLoop::quit);
+    loop.exec();
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
 }
 
 void printTrace(const Output &output, const seriallink::PacketLogEntry &entry)

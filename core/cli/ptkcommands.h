@@ -6,7 +6,11 @@
 #include "link/requestengine.h"
 #include "ptk/ptkparameters.h"
 
+#include <QEventLoop>
 #include <QTextStream>
+
+#include <functional>
+#include <optional>
 
 namespace cli {
 
@@ -21,6 +25,11 @@ struct Output
 seriallink::EchoMode echoModeOption(const Arguments &args);
 // One --trace line on stderr: direction, hex, meaning and any error.
 void printTrace(const Output &output, const seriallink::PacketLogEntry &entry);
+
+// Runs `loop` until it quits, or for `seconds` when given. Ctrl-C and SIGTERM call `onSignal`
+// (which quits the loop when not given); their default handling is back afterwards.
+void runUntilInterrupted(QEventLoop &loop, std::optional<double> seconds = std::nullopt,
+                         const std::function<void()> &onSignal = {});
 
 // `rest` is what follows "ptk". Usage errors are thrown as UsageError before anything is sent.
 int runPtkCommand(const Arguments &args, const QStringList &rest, const Output &output);

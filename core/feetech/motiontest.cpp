@@ -2,6 +2,8 @@
 #include "feetech/motiontest.h"
 
 #include "feetech/busclient.h"
+#include "feetech/goalrange.h"
+#include "feetech/registerkeys.h"
 
 #include <QLocale>
 #include <QTimer>
@@ -11,15 +13,9 @@
 
 namespace feetech {
 
-namespace {
+using namespace registerkeys;
 
-const QString kTorqueEnable = QStringLiteral("torque_enable");
-const QString kGoalPosition = QStringLiteral("goal_position");
-const QString kGoalSpeed = QStringLiteral("goal_speed");
-const QString kAcceleration = QStringLiteral("acceleration");
-const QString kMode = QStringLiteral("mode");
-const QString kMinAngle = QStringLiteral("min_angle_limit");
-const QString kMaxAngle = QStringLiteral("max_angle_limit");
+namespace {
 
 constexpr qint32 kPositionMode = 0; // register 33: every family's mode 0 holds a position
 constexpr double kMicroseconds = 1e6;
@@ -30,25 +26,6 @@ std::chrono::milliseconds millisecondsOf(double seconds)
 }
 
 } // namespace
-
-std::optional<PositionRange> goalRange(const BusClient &client, int index)
-{
-    if (index < 0 || index >= client.servoCount() || !client.servo(index).info.hasTable())
-        return std::nullopt;
-    const Register *goal = client.servo(index).info.table().find(kGoalPosition);
-    if (!goal)
-        return std::nullopt;
-    PositionRange range {goal->minimum, goal->maximum, false};
-    const model::ParameterModel *parameters = client.parameters(index);
-    const auto low = parameters->deviceValue(kMinAngle);
-    const auto high = parameters->deviceValue(kMaxAngle);
-    if (low && high && !(*low == 0 && *high == 0) && *low <= *high) {
-        range.minimum = qint32(std::max<qint64>(*low, goal->minimum));
-        range.maximum = qint32(std::min<qint64>(*high, goal->maximum));
-        range.fromAngleLimits = true;
-    }
-    return range;
-}
 
 int SweepSummary::reachedCount() const
 {

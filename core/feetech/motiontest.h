@@ -25,20 +25,6 @@ namespace feetech {
 class BusClient;
 struct OperationResult;
 
-// The goal positions a servo accepts, in steps: its angle limits (min_angle_limit,
-// max_angle_limit) as the servo reported them, or the goal_position register's range when they
-// are not known yet or are both 0, which means multi-turn / wheel: no limit.
-struct PositionRange
-{
-    qint32 minimum = 0;
-    qint32 maximum = 0;
-    bool fromAngleLimits = false;
-
-    bool contains(qint64 position) const { return position >= minimum && position <= maximum; }
-};
-// Nothing for an unknown servo or a table without goal_position.
-std::optional<PositionRange> goalRange(const BusClient &client, int index);
-
 // Timing and thresholds of the tests; tests inject short ones.
 struct MotionTiming
 {

@@ -3,16 +3,13 @@
 
 #include "feetech/feetechpacket.h"
 #include "feetech/registertable.h"
+#include "util/jsonfile.h"
 
 #include <QCoreApplication>
-#include <QDir>
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QJsonParseError>
 #include <QJsonValue>
-#include <QSaveFile>
 #include <QSet>
 
 #include <algorithm>
@@ -28,23 +25,6 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Pose)
 };
-
-constexpr char kFormatKey[] = "format";
-constexpr char kVersionKey[] = "version";
-constexpr char kNameKey[] = "name";
-constexpr char kServosKey[] = "servos";
-constexpr char kIdKey[] = "id";
-constexpr char kBaudKey[] = "baud";
-constexpr char kPositionKey[] = "position";
-
-// A pose of 254 servos is a few kilobytes: anything far larger is a wrongly picked file (a log,
-// a firmware image) and is not read whole just to be refused.
-constexpr qint64 kMaxFileBytes = 1024 * 1024;
-
-QString displayName(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
 
 // A whole JSON number, or nothing (strings, booleans, fractions, absurd magnitudes).
 std::optional<qint64> wholeNumber(const QJsonValue &value)
@@ -70,21 +50,10 @@ QString jsonText(const QJsonValue &value)
     return value.isArray() ? QStringLiteral("[…]") : QStringLiteral("{…}");
 }
 
-bool onlyKnownKeys(const QJsonObject &object, std::initializer_list<const char *> known,
-                   QString *unknown)
-{
-    for (auto it = object.constBegin(); it != object.constEnd(); ++it) {
-        const QString key = it.key();
-        const bool found = std::any_of(known.begin(), known.end(), [&](const char *entry) {
-            return key == QLatin1String(entry);
-        });
-        if (!found) {
-            *unknown = key;
-            return false;
-        }
-    }
-    return true;
-}
+// The entries of one element of "servos".
+constexpr char kIdKey[] = "id";
+constexpr char kBaudKey[] = "baud";
+constexpr char kPositionKey[] = "position";
 
 // One element of "servos"; nothing and *why when it is not a valid entry.
 std::optional<PoseEntry> parseEntry(const QJsonValue &value, QString *why)
@@ -95,7 +64,7 @@ std::optional<PoseEntry> parseEntry(const QJsonValue &value, QString *why)
     }
     const QJsonObject object = value.toObject();
     QString unknown;
-    if (!onlyKnownKeys(object, {kIdKey, kBaudKey, kPositionKey}, &unknown)) {
+    if (!util::onlyKnownKeys(object, {kIdKey, kBaudKey, kPositionKey}, &unknown)) {
         *why = Tr::tr("unknown entry \"%1\"").arg(unknown);
         return std::nullopt;
     }
@@ -144,6 +113,24 @@ std::optional<PoseEntry> parseEntry(const QJsonValue &value, QString *why)
     return entry;
 }
 
+// The top-level entries of a pose besides its format and version.
+constexpr char kNameKey[] = "name";
+constexpr char kServosKey[] = "servos";
+
+// How a pose file names itself, and what it may hold at the top.
+util::JsonFormat poseFormat()
+{
+    util::JsonFormat format;
+    format.marker = kPoseFormatMarker;
+    format.version = kPoseFormatVersion;
+    format.keys = {kNameKey, kServosKey};
+    format.notAnObject = Tr::tr("not a ServoBench pose (the document is not a JSON object)");
+    format.wrongMarker = Tr::tr("not a ServoBench pose (\"%1\" is not \"%2\")");
+    format.newerVersion = Tr::tr("the pose has format version %1 and was written by a newer "
+                                 "ServoBench; this version reads format version %2 and older");
+    return format;
+}
+
 } // namespace
 
 const PoseEntry *Pose::find(quint8 id, qint32 baud) const
@@ -165,8 +152,8 @@ QByteArray poseToJson(const Pose &pose)
         servos.append(object);
     }
     QJsonObject root;
-    root.insert(QLatin1String(kFormatKey), QLatin1String(kPoseFormatMarker));
-    root.insert(QLatin1String(kVersionKey), kPoseFormatVersion);
+    root.insert(QLatin1String(util::kFormatKey), QLatin1String(kPoseFormatMarker));
+    root.insert(QLatin1String(util::kVersionKey), kPoseFormatVersion);
     if (!pose.name.isEmpty())
         root.insert(QLatin1String(kNameKey), pose.name);
     root.insert(QLatin1String(kServosKey), servos);
@@ -175,49 +162,22 @@ QByteArray poseToJson(const Pose &pose)
 
 std::optional<Pose> poseFromJson(const QByteArray &json, QString *error)
 {
+    const std::optional<QJsonObject> root = util::parseVersionedObject(json, poseFormat(), error);
+    if (!root)
+        return std::nullopt;
     const auto fail = [&](const QString &why) -> std::optional<Pose> {
         if (error)
             *error = why;
         return std::nullopt;
     };
 
-    QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError)
-        return fail(Tr::tr("not valid JSON: %1 at offset %2")
-                        .arg(parseError.errorString())
-                        .arg(parseError.offset));
-    if (!document.isObject())
-        return fail(Tr::tr("not a ServoBench pose (the document is not a JSON object)"));
-    const QJsonObject root = document.object();
-
-    // The marker and version first: a profile or a newer pose must be named as such, not as a
-    // list of unexpected entries.
-    if (root.value(QLatin1String(kFormatKey)).toString() != QLatin1String(kPoseFormatMarker))
-        return fail(Tr::tr("not a ServoBench pose (\"%1\" is not \"%2\")")
-                        .arg(QLatin1String(kFormatKey), QLatin1String(kPoseFormatMarker)));
-    const std::optional<qint64> version = wholeNumber(root.value(QLatin1String(kVersionKey)));
-    if (!version)
-        return fail(Tr::tr("the format version is missing or not a whole number"));
-    if (*version > kPoseFormatVersion)
-        return fail(Tr::tr("the pose has format version %1 and was written by a newer "
-                           "ServoBench; this version reads format version %2 and older")
-                        .arg(*version)
-                        .arg(kPoseFormatVersion));
-    if (*version < 1)
-        return fail(Tr::tr("unknown format version %1").arg(*version));
-
-    QString unknown;
-    if (!onlyKnownKeys(root, {kFormatKey, kVersionKey, kNameKey, kServosKey}, &unknown))
-        return fail(Tr::tr("unknown entry \"%1\"").arg(unknown));
-
     Pose pose;
-    const QJsonValue name = root.value(QLatin1String(kNameKey));
+    const QJsonValue name = root->value(QLatin1String(kNameKey));
     if (!name.isUndefined() && !name.isString())
         return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kNameKey)));
     pose.name = name.toString();
 
-    const QJsonValue servosValue = root.value(QLatin1String(kServosKey));
+    const QJsonValue servosValue = root->value(QLatin1String(kServosKey));
     if (!servosValue.isArray())
         return fail(Tr::tr("the pose has no \"%1\" list").arg(QLatin1String(kServosKey)));
     const QJsonArray servos = servosValue.toArray();
@@ -242,50 +202,24 @@ std::optional<Pose> poseFromJson(const QByteArray &json, QString *error)
 
 bool savePose(const QString &path, const Pose &pose, QString *error)
 {
-    const auto fail = [&](const QString &why) {
-        if (error)
-            *error = Tr::tr("%1 was not saved: %2").arg(displayName(path), why);
-        return false;
-    };
     const QByteArray json = poseToJson(pose);
-    // Write nothing loadPose would refuse, so every saved pose loads again.
     QString why;
-    const std::optional<Pose> check = poseFromJson(json, &why);
-    if (!check)
-        return fail(why);
-
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return fail(file.errorString());
-    if (file.write(json) != json.size()) {
-        const QString reason = file.errorString();
-        file.cancelWriting();
-        return fail(reason);
-    }
-    if (!file.commit())
-        return fail(file.errorString());
-    return true;
+    // Write nothing loadPose would refuse, so every saved pose loads again.
+    const bool saved = poseFromJson(json, &why) && util::writeFileAtomically(path, json, &why);
+    if (!saved && error)
+        *error = util::notSavedError(path, why);
+    return saved;
 }
 
 std::optional<Pose> loadPose(const QString &path, QString *error)
 {
-    const auto fail = [&](const QString &why) -> std::optional<Pose> {
-        if (error)
-            *error = Tr::tr("%1: %2").arg(displayName(path), why);
-        return std::nullopt;
-    };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(file.errorString());
-    if (file.size() > kMaxFileBytes)
-        return fail(Tr::tr("too large to be a pose"));
-    const QByteArray json = file.readAll();
-    if (file.error() != QFileDevice::NoError)
-        return fail(file.errorString());
     QString why;
-    std::optional<Pose> pose = poseFromJson(json, &why);
-    if (!pose)
-        return fail(why);
+    std::optional<Pose> pose;
+    if (const auto json =
+            util::readFile(path, util::kMaxJsonFileBytes, Tr::tr("too large to be a pose"), &why))
+        pose = poseFromJson(*json, &why);
+    if (!pose && error)
+        *error = util::fileError(path, why);
     return pose;
 }
 

@@ -289,6 +289,12 @@ void RequestEngine::onTimeout(quint64 generation)
 {
     if (generation != m_generation || m_state == State::Idle || !m_current)
         return; // a timer of an exchange that has already ended
+    if (m_state == State::AwaitingReply && m_current->expectsReply()) {
+        // The answer may be waiting unread; if it completes the exchange, this timer is stale.
+        m_transport.deliverPendingInput();
+        if (generation != m_generation || m_state == State::Idle || !m_current)
+            return;
+    }
     if (m_state == State::AwaitingReply && !m_current->expectsReply()) {
         finish(Failure::None);
         return;

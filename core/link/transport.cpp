@@ -73,9 +73,18 @@ void SerialTransport::write(const QByteArray &bytes)
 
 QByteArray SerialTransport::discardInput()
 {
-    QByteArray stray = m_port->readAll();
-    m_port->clear(QSerialPort::Input);
-    return stray;
+    // No tcflush here: input the port has already announced would then be gone when its read
+    // notification comes, and QSerialPort reports that empty read as a device error (with a
+    // stale errno, often as "the device went away"). Bytes still in the kernel arrive with the
+    // next read and are discarded there as input that answers nothing.
+    return m_port->readAll();
+}
+
+void SerialTransport::deliverPendingInput()
+{
+    // A zero wait only looks: it reads what the port holds and emits readyRead at once.
+    if (m_port->isOpen())
+        m_port->waitForReadyRead(0);
 }
 
 void SerialTransport::onError(QSerialPort::SerialPortError error)

@@ -21,6 +21,10 @@ public:
     // Takes whatever input is waiting, delivered or not, so that nothing received before a new
     // request can be taken for its answer. Returns the bytes it could still see.
     virtual QByteArray discardInput() = 0;
+    // Delivers (through received) input that has arrived but not been announced yet. A timeout
+    // asks first: on a busy machine the timer can fire before the read of a reply that is
+    // already there.
+    virtual void deliverPendingInput() { }
 
 signals:
     void received(const QByteArray &bytes);
@@ -47,6 +51,7 @@ public:
     qint32 baudRate() const override { return m_port->baudRate(); }
     void write(const QByteArray &bytes) override;
     QByteArray discardInput() override;
+    void deliverPendingInput() override;
 
 private:
     void onError(QSerialPort::SerialPortError error);

@@ -1,19 +1,15 @@
 // JSON parameter profiles: writing in user units, strict validation on reading, the device diff.
 #include "profile/profile.h"
 
+#include "util/jsonfile.h"
+
 #include <QCoreApplication>
-#include <QDir>
-#include <QFile>
 #include <QHash>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QJsonParseError>
 #include <QJsonValue>
-#include <QSaveFile>
 
-#include <algorithm>
 #include <cmath>
-#include <iterator>
 
 namespace profile {
 
@@ -25,26 +21,15 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(Profile)
 };
 
-constexpr char kFormatKey[] = "format";
-constexpr char kVersionKey[] = "version";
 constexpr char kFamilyKey[] = "family";
 constexpr char kModelKey[] = "model";
 constexpr char kSavedKey[] = "saved";
 constexpr char kNoteKey[] = "note";
 constexpr char kParametersKey[] = "parameters";
 
-// Profiles are a few kilobytes; refusing anything far larger keeps a wrongly picked file (a log,
-// a firmware image) from being read whole just to be rejected.
-constexpr qint64 kMaxFileBytes = 1024 * 1024;
-
 // How far user value / scale may sit from a whole raw value and still count as one: decimal
 // scales such as 0.1 V do not divide exactly in binary floating point.
 constexpr double kRawTolerance = 1e-6;
-
-QString displayName(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
 
 // On/off parameters travel as JSON booleans so a hand-edited profile reads naturally.
 bool isSwitch(const model::Definition &definition)
@@ -144,6 +129,18 @@ bool optionalText(const QJsonObject &root, const char *key, QString *text)
     return true;
 }
 
+// How a profile file names itself, and what it may hold at the top.
+util::JsonFormat profileFormat()
+{
+    return {kFormatMarker,
+            kFormatVersion,
+            {kFamilyKey, kModelKey, kSavedKey, kNoteKey, kParametersKey},
+            Tr::tr("not a ServoBench profile (the document is not a JSON object)"),
+            Tr::tr("not a ServoBench profile (\"%1\" is not \"%2\")"),
+            Tr::tr("the profile has format version %1 and was written by a newer ServoBench; "
+                   "this version reads format version %2 and older")};
+}
+
 } // namespace
 
 std::optional<qint64> Profile::value(const QString &key) const
@@ -164,8 +161,8 @@ QByteArray toJson(const Profile &profile, const QVector<model::Definition> &defi
             parameters.insert(entry.key, jsonValue(*definition, entry.raw));
     }
     QJsonObject root;
-    root.insert(QLatin1String(kFormatKey), QLatin1String(kFormatMarker));
-    root.insert(QLatin1String(kVersionKey), kFormatVersion);
+    root.insert(QLatin1String(util::kFormatKey), QLatin1String(kFormatMarker));
+    root.insert(QLatin1String(util::kVersionKey), kFormatVersion);
     root.insert(QLatin1String(kFamilyKey), profile.family);
     root.insert(QLatin1String(kModelKey), profile.model);
     // UTC, so the time means the same wherever the file is opened.
@@ -182,7 +179,7 @@ bool save(const QString &path, const Profile &profile,
 {
     const auto fail = [&](const QString &why) {
         if (error)
-            *error = Tr::tr("%1 was not saved: %2").arg(displayName(path), why);
+            *error = util::notSavedError(path, why);
         return false;
     };
     // toJson would drop such a value without a word; the user must hear that it cannot be saved.
@@ -204,17 +201,8 @@ bool save(const QString &path, const Profile &profile,
                             .arg(entry.key)
                             .arg(entry.raw));
     }
-
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return fail(file.errorString());
-    if (file.write(json) != json.size()) {
-        const QString reason = file.errorString();
-        file.cancelWriting();
-        return fail(reason);
-    }
-    if (!file.commit())
-        return fail(file.errorString());
+    if (!util::writeFileAtomically(path, json, &why))
+        return fail(why);
     return true;
 }
 
@@ -226,44 +214,11 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
             *error = why;
         return std::nullopt;
     };
-
-    QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError)
-        return fail(Tr::tr("not valid JSON: %1 at offset %2")
-                        .arg(parseError.errorString())
-                        .arg(parseError.offset));
-    if (!document.isObject())
-        return fail(Tr::tr("not a ServoBench profile (the document is not a JSON object)"));
-    const QJsonObject root = document.object();
-
-    // The marker and the version come before anything else: a file that is no profile, or one
-    // from a newer format, should be named as such, not as a list of unexpected entries.
-    if (root.value(QLatin1String(kFormatKey)).toString() != QLatin1String(kFormatMarker))
-        return fail(Tr::tr("not a ServoBench profile (\"%1\" is not \"%2\")")
-                        .arg(QLatin1String(kFormatKey), QLatin1String(kFormatMarker)));
-    const QJsonValue versionValue = root.value(QLatin1String(kVersionKey));
-    const double version = versionValue.toDouble();
-    if (!versionValue.isDouble() || !std::isfinite(version) || version != std::floor(version))
-        return fail(Tr::tr("the format version is missing or not a whole number"));
-    if (version > kFormatVersion)
-        return fail(Tr::tr("the profile has format version %1 and was written by a newer "
-                           "ServoBench; this version reads format version %2 and older")
-                        .arg(QString::number(version, 'g', 15))
-                        .arg(kFormatVersion));
-    if (version < 1)
-        return fail(Tr::tr("unknown format version %1").arg(QString::number(version, 'g', 15)));
-
-    static const char *const knownEntries[] = {kFormatKey, kVersionKey, kFamilyKey,    kModelKey,
-                                               kSavedKey,  kNoteKey,    kParametersKey};
-    for (auto it = root.constBegin(); it != root.constEnd(); ++it) {
-        const QString key = it.key();
-        const bool known =
-            std::any_of(std::begin(knownEntries), std::end(knownEntries),
-                        [&](const char *entry) { return key == QLatin1String(entry); });
-        if (!known)
-            return fail(Tr::tr("unknown entry \"%1\"").arg(key));
-    }
+    const std::optional<QJsonObject> parsed =
+        util::parseVersionedObject(json, profileFormat(), error);
+    if (!parsed)
+        return std::nullopt;
+    const QJsonObject &root = *parsed;
 
     Profile profile;
     const QJsonValue family = root.value(QLatin1String(kFamilyKey));
@@ -321,23 +276,13 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
 std::optional<Profile> load(const QString &path, const QString &expectedFamily,
                             const QVector<model::Definition> &definitions, QString *error)
 {
-    const auto fail = [&](const QString &why) -> std::optional<Profile> {
-        if (error)
-            *error = Tr::tr("%1: %2").arg(displayName(path), why);
-        return std::nullopt;
-    };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(file.errorString());
-    if (file.size() > kMaxFileBytes)
-        return fail(Tr::tr("too large to be a profile"));
-    const QByteArray json = file.readAll();
-    if (file.error() != QFileDevice::NoError)
-        return fail(file.errorString());
     QString why;
-    std::optional<Profile> profile = parse(json, expectedFamily, definitions, &why);
-    if (!profile)
-        return fail(why);
+    std::optional<Profile> profile;
+    if (const auto json = util::readFile(path, util::kMaxJsonFileBytes,
+                                         Tr::tr("too large to be a profile"), &why))
+        profile = parse(*json, expectedFamily, definitions, &why);
+    if (!profile && error)
+        *error = util::fileError(path, why);
     return profile;
 }
 

@@ -1,0 +1,32 @@
+// The allowed goal range of a servo, from its register table and the angle limits it reported.
+#include "feetech/goalrange.h"
+
+#include "feetech/busclient.h"
+#include "feetech/registerkeys.h"
+
+#include <algorithm>
+
+namespace feetech {
+
+std::optional<PositionRange> goalRange(const BusClient &client, int index)
+{
+    if (index < 0 || index >= client.servoCount() || !client.servo(index).info.hasTable())
+        return std::nullopt;
+    const Register *goal = client.servo(index).info.table().find(registerkeys::kGoalPosition);
+    if (!goal)
+        return std::nullopt;
+    PositionRange range {goal->minimum, goal->maximum, false};
+    const model::ParameterModel *parameters = client.parameters(index);
+    const auto low = parameters->deviceValue(registerkeys::kMinAngleLimit);
+    const auto high = parameters->deviceValue(registerkeys::kMaxAngleLimit);
+    // Both limits 0 selects multi-turn or motor mode: the limits then bound nothing. Limits are
+    // kept inside the register's range, so a misread limit cannot widen what may be written.
+    if (low && high && !(*low == 0 && *high == 0) && *low <= *high) {
+        range.minimum = qint32(std::max<qint64>(*low, goal->minimum));
+        range.maximum = qint32(std::min<qint64>(*high, goal->maximum));
+        range.fromAngleLimits = true;
+    }
+    return range;
+}
+
+} // namespace feetech

@@ -1,0 +1,56 @@
+// Versioned JSON files (profiles, poses): size-limited reading, format checks, atomic saving.
+#pragma once
+
+#include <QByteArray>
+#include <QJsonObject>
+#include <QString>
+#include <QVector>
+
+#include <optional>
+
+namespace util {
+
+// The entries every versioned ServoBench file carries.
+inline constexpr char kFormatKey[] = "format";
+inline constexpr char kVersionKey[] = "version";
+
+// ServoBench files are a few kilobytes: anything far larger is a wrongly picked file (a log, a
+// firmware image) and is not read whole just to be refused.
+inline constexpr qint64 kMaxJsonFileBytes = 1024 * 1024;
+
+// What sets one kind of file apart. The sentences name the kind ("not a ServoBench pose"), so
+// the caller translates them in its own context.
+struct JsonFormat
+{
+    const char *marker = nullptr; // the value of "format"
+    int version = 0; // the newest format version this build reads
+    QVector<const char *> keys; // the entries the root may have besides format and version
+    QString notAnObject; // the document is valid JSON but not an object
+    QString wrongMarker; // %1: the format key, %2: the marker
+    QString newerVersion; // %1: the file's version, %2: `version`
+};
+
+// The whole file, or nothing and *why: the file system's words, or `tooLarge` when the file is
+// larger than maxBytes.
+std::optional<QByteArray> readFile(const QString &path, qint64 maxBytes, const QString &tooLarge,
+                                   QString *why);
+
+// Writes atomically (QSaveFile): the whole new file or the old one untouched. False and *why
+// (the file system's words) when it could not.
+bool writeFileAtomically(const QString &path, const QByteArray &data, QString *why);
+
+// The document's root object once it is valid JSON, carries format.marker, a whole version from
+// 1 to format.version and no other entry than those and format.keys; otherwise nothing and
+// *error (when given) says why.
+std::optional<QJsonObject> parseVersionedObject(const QByteArray &json, const JsonFormat &format,
+                                                QString *error = nullptr);
+
+// Whether every key of `object` is among `known`; if not, *unknown is the first that is not.
+bool onlyKnownKeys(const QJsonObject &object, const QVector<const char *> &known, QString *unknown);
+
+// Error messages naming the file as the platform writes paths: "<file>: <why>" and
+// "<file> was not saved: <why>".
+QString fileError(const QString &path, const QString &why);
+QString notSavedError(const QString &path, const QString &why);
+
+} // namespace util

@@ -1,0 +1,16 @@
+// Small widget factories shared by the pages, so their buttons look and behave alike.
+#pragma once
+
+#include <QString>
+
+class QPushButton;
+class QWidget;
+
+namespace widgethelpers {
+
+// A push button with an object name (for tests and style sheets) and a tool tip. It is never an
+// auto-default button: Return in a spin box or line edit of the page must not press it.
+QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
+                          QWidget *parent);
+
+} // namespace widgethelpers
