@@ -308,6 +308,28 @@ private slots:
         QVERIFY(!client.isMonitoring());
     }
 
+    void writesQueuedBeforeTorqueOffAreNotSent()
+    {
+        QSignalSpy finished(m_session.get(), &Session::operationFinished);
+        m_session->read(found(1), {}, feetech::ReadSource::Read); // keeps the bus busy
+        m_session->write(found(1), {{40, QByteArray(1, char(1)), false}}); // torque on, queued
+        m_session->torqueOffAll({k1M, k500k}, m_found);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, 10000);
+        QCOMPARE(finished.at(1).at(0).value<OperationResult>().operation,
+                 feetech::Operation::TorqueOff);
+        const auto write = finished.at(2).at(0).value<OperationResult>();
+        QCOMPARE(write.operation, feetech::Operation::Write);
+        QVERIFY(!write.ok);
+        QVERIFY(write.message.contains(QLatin1String("torque off")));
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        // Writes asked for afterwards go out as usual.
+        const OperationResult later = run([&] {
+            m_session->write(found(1), {{40, QByteArray(1, char(1)), false}});
+        });
+        QVERIFY2(later.ok, qPrintable(later.message));
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 1);
+    }
+
     void csvRowsParseBack()
     {
         FeedbackSample sample;

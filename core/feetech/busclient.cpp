@@ -196,7 +196,8 @@ void BusClient::onOperationFinished(const OperationResult &result)
         model::ParameterModel &parameters = *entry.parameters;
         if (result.operation == Operation::Read && result.ok && target.kind != Work::Background)
             entry.read = true;
-        if (result.operation == Operation::Write && !result.ok) {
+        // A control write never marks anything Writing: its failure leaves an apply alone.
+        if (result.operation == Operation::Write && !result.ok && target.kind != Work::Control) {
             // What was on its way and never came back verified keeps its edit, as Failed.
             for (const model::Definition &definition : parameters.definitions()) {
                 if (parameters.state(definition.key) == model::State::Writing)

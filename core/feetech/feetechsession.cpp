@@ -862,7 +862,10 @@ void Session::read(const ServoInfo &servo, const QVector<Block> &blocks, ReadSou
 
 void Session::write(const ServoInfo &servo, const QVector<RegisterWrite> &writes)
 {
-    enqueue(Operation::Write, [this, servo, writes] {
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::Write, [this, servo, writes, epoch] {
+        if (refusedAfterTorqueOff(Operation::Write, epoch))
+            return;
         const Register *id = registerAt(servo, u"id");
         const Register *baud = registerAt(servo, u"baud_rate");
         if (!servo.hasTable()) {

@@ -314,6 +314,8 @@ private:
     void publishTelemetryStats();
     void updateTelemetryStats();
     void logNote(const QString &note, bool error = false);
+    // Ends a write queued before the last torque off without sending it; true when it did.
+    bool refusedAfterTorqueOff(Operation operation, quint64 epoch);
 
     SessionTiming m_timing;
     FrameFormat m_format;
@@ -349,6 +351,7 @@ private:
     std::optional<ScanState> m_scan;
 
     std::optional<TelemetryState> m_telemetry;
+    quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
     quint64 m_telemetryGeneration = 0; // a new stream or a stop: earlier answers are ignored
     QVector<FeedbackSample> m_telemetryBatch;
     QTimer *m_telemetryFlushTimer = nullptr;

@@ -8,6 +8,7 @@
 #include <QDateTime>
 
 #include <algorithm>
+#include <limits>
 
 namespace feetech {
 
@@ -150,6 +151,22 @@ bool Session::startTelemetryCycleIfDue()
             state.steps.push_back(telemetryRead(index, false));
         for (const int index : std::as_const(probes))
             state.steps.push_back(telemetryRead(index, true));
+    }
+    if (state.steps.empty()) {
+        // Every servo is missing and none is due to be asked: no cycle, and no busy loop.
+        state.inCycle = false;
+        if (!state.timer) {
+            qint64 nextProbe = std::numeric_limits<qint64>::max();
+            for (const TelemetryServo &servo : state.servos)
+                nextProbe = std::min(nextProbe, servo.nextProbeUs);
+            const quint64 stream = m_telemetryGeneration;
+            const int waitMs = int(std::clamp<qint64>((nextProbe - now + 999) / 1000, 1, 60000));
+            QTimer::singleShot(waitMs, this, [this, stream] {
+                if (m_telemetry && stream == m_telemetryGeneration)
+                    telemetryTick();
+            });
+        }
+        return false;
     }
     runTelemetryStep();
     return true;
@@ -397,10 +414,23 @@ void Session::logNote(const QString &note, bool error)
 
 // ---- control
 
+bool Session::refusedAfterTorqueOff(Operation operation, quint64 epoch)
+{
+    if (epoch == m_torqueOffEpoch)
+        return false;
+    finishOperation({operation,
+                     false,
+                     Tr::tr("Not sent: all torque off was asked for after this write."),
+                     {},
+                     {}});
+    return true;
+}
+
 void Session::torqueOffAll(const QVector<qint32> &bauds, const QVector<ServoInfo> &servos)
 {
     if (m_scan)
         m_scan->cancelled = true; // nothing may hold torque off back for seconds
+    ++m_torqueOffEpoch; // writes asked for before this must not power the servos again
     const auto start = [this, bauds, servos] {
         // Every step goes on whatever failed before it: one silent servo or an odd rate must
         // not keep the others powered.
@@ -470,7 +500,10 @@ void Session::torqueOffAll(const QVector<qint32> &bauds, const QVector<ServoInfo
 void Session::syncWrite(qint32 baud, int address, int length,
                         const QVector<SyncWriteEntry> &entries)
 {
-    enqueue(Operation::SyncWrite, [this, baud, address, length, entries] {
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::SyncWrite, [this, baud, address, length, entries, epoch] {
+        if (refusedAfterTorqueOff(Operation::SyncWrite, epoch))
+            return;
         const auto frame = feetech::syncWrite(quint8(address), quint8(length), entries);
         if (!frame) {
             finishOperation({Operation::SyncWrite,

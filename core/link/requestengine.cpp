@@ -146,6 +146,9 @@ void RequestEngine::send()
         return;
     }
     // Whatever is still waiting belongs to an earlier exchange; it must not answer this one.
+    // Input the port has not announced yet is taken in first (and dropped as stray while
+    // nothing waits), or it would arrive after the request and pass for its answer.
+    m_transport.deliverPendingInput();
     QByteArray stray = m_transport.discardInput();
     if (m_framer.pendingBytes() > 0) {
         m_framer.discardPending();
@@ -254,7 +257,8 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             const auto answer = m_current->collectsReplies ? m_current->collectsReplies(item->bytes)
                                                            : Transaction::Answer::NotMine;
             if (answer != Transaction::Answer::NotMine) {
-                ++m_counters.repliesOk;
+                if (m_collected.isEmpty())
+                    ++m_counters.repliesOk; // one answered request, however many frames
                 if (!m_current->logFailuresOnly)
                     log(Direction::In, item->bytes);
                 m_collected.append(item->bytes);
@@ -297,6 +301,14 @@ void RequestEngine::onTimeout(quint64 generation)
     }
     if (m_state == State::AwaitingReply && !m_current->expectsReply()) {
         finish(Failure::None);
+        return;
+    }
+    if (m_state == State::AwaitingReply && !m_collected.isEmpty()) {
+        // Several servos were asked and some answered: the caller sees who did not.
+        log(Direction::In, {}, {},
+            Tr::tr("%n answer(s) in time; the others are missing", nullptr,
+                   int(m_collected.size())));
+        finish(Failure::Timeout);
         return;
     }
     const bool counted = !m_current->silenceExpected;
