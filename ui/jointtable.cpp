@@ -173,9 +173,11 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     header->setHighlightSections(false);
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setStretchLastSection(true);
-    const int widths[ColumnCount] = {70, 170, 100, 140, 140, 170, 150, 100};
+    // In character widths, so every column fits beside the servo tree at any font size.
+    const int ems[ColumnCount] = {4, 8, 7, 10, 9, 10, 9, 6};
+    const int em = m_table->fontMetrics().horizontalAdvance(u'm');
     for (int column = 0; column < ColumnCount; ++column)
-        m_table->setColumnWidth(column, widths[column]);
+        m_table->setColumnWidth(column, ems[column] * em);
     layout->addWidget(m_table, 1);
 
     // ---- actions
