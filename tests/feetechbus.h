@@ -114,6 +114,15 @@ protected:
         return value;
     }
 
+    // Sets register `key` of simulated servo `id` as if the servo itself had changed it.
+    void setSimulatorValue(quint8 id, QStringView key, qint32 value)
+    {
+        m_simulator->call([&](sim::Simulator &simulator) {
+            if (sim::VirtualFeetechServo *servo = simulator.feetechBus()->findServo(id))
+                servo->setValue(key, value);
+        });
+    }
+
     QTemporaryDir m_dir;
     std::unique_ptr<sim::SimulatorThread> m_simulator;
 };

@@ -2,6 +2,7 @@
 #include "connectionbar.h"
 #include "feetechbus.h"
 #include "feetechworkspace.h"
+#include "jointtable.h"
 #include "mainwindow.h"
 #include "parameterpage.h"
 #include "registertablemodel.h"
@@ -104,6 +105,27 @@ private slots:
         QTRY_VERIFY(client()->servo(workspace()->currentIndex()).info.id == 3);
         QTRY_VERIFY(
             !m_window->findChild<QPushButton *>(QStringLiteral("calibrateButton"))->isEnabled());
+    }
+
+    void escapeSwitchesEveryServosTorqueOffFromAnyTab()
+    {
+        connectAndScan();
+        for (const quint8 id : {1, 2, 3})
+            setSimulatorValue(id, u"torque_enable", 1);
+        QTabWidget *tabs = workspace()->tabs();
+        tabs->setCurrentWidget(workspace()->jointTable());
+        QSignalSpy finished(client(), &feetech::BusClient::operationFinished);
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
+        QTRY_VERIFY_WITH_TIMEOUT(!finished.isEmpty(), 10000);
+        const auto result = finished.first().first().value<feetech::OperationResult>();
+        QCOMPARE(result.operation, feetech::Operation::TorqueOff);
+        QVERIFY2(result.ok, qPrintable(result.message));
+        for (const quint8 id : {1, 2, 3})
+            QCOMPARE(simulatorValue(id, u"torque_enable"), 0);
+        // The red button does the same.
+        setSimulatorValue(2, u"torque_enable", 1);
+        workspace()->allTorqueOffButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(simulatorValue(2, u"torque_enable"), 0, 10000);
     }
 
     void memoryTableEditIsAppliedAndVerified()
