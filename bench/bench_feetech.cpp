@@ -209,11 +209,7 @@ int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
     QTemporaryDir dir;
-    sim::SimulatorOptions options;
-    options.kind = sim::SimulatorOptions::Kind::Feetech;
-    options.linkPath = dir.filePath(QStringLiteral("bus"));
-    for (int id = 1; id <= kStsCount; ++id)
-        options.servos.append({quint8(id), QStringLiteral("STS3215"), k1M});
+    sim::SimulatorOptions options = bench::stsBusOptions(dir, kStsCount, k1M);
     options.servos.append({kSmsId, QStringLiteral("SMS"), k115k});
     sim::SimulatorThread simulator;
     QString error;

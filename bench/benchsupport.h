@@ -1,7 +1,10 @@
 // Shared pieces of the benchmark programs: waiting on the event loop and wire-time arithmetic.
 #pragma once
 
+#include "sim/simulator.h"
+
 #include <QEventLoop>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include <ctime>
@@ -11,6 +14,17 @@ namespace bench {
 inline double wireMs(qint64 bytes, qint32 baud)
 {
     return double(bytes) * 10e3 / baud; // 8N1: ten bit times a byte
+}
+
+// A simulated Feetech bus in `dir` with STS3215 servos at IDs 1..count, all at `baud`.
+inline sim::SimulatorOptions stsBusOptions(const QTemporaryDir &dir, int count, qint32 baud)
+{
+    sim::SimulatorOptions options;
+    options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.linkPath = dir.filePath(QStringLiteral("bus"));
+    for (int id = 1; id <= count; ++id)
+        options.servos.append({quint8(id), QStringLiteral("STS3215"), baud});
+    return options;
 }
 
 // Runs the event loop until finish() is called or the time is up; never busy-waits.
