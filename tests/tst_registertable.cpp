@@ -55,6 +55,7 @@ QByteArray modelsJson(const QJsonArray &models,
 {
     const QJsonObject root {
         {QStringLiteral("format"), 1},
+        {QStringLiteral("baud_rates"), QJsonArray {1000000, 500000, 115200}},
         {QStringLiteral("families_by_major"), majors},
         {QStringLiteral("models"), models},
     };

@@ -4,6 +4,7 @@
 #include "simclient.h"
 
 #include "feetech/servoparameters.h"
+#include "feetech/telemetry.h"
 #include "profile/profile.h"
 #include "sim/simulator.h"
 #include "sim/virtualfeetechservo.h"

@@ -2,6 +2,7 @@
 #include "feetech/busclient.h"
 
 #include "feetech/servoparameters.h"
+#include "link/linksession.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -25,18 +26,16 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
 {
     m_clock.start();
     Session *session = m_worker.session();
-    connect(session, &Session::statusChanged, this, [this](const auto &status) {
-        m_status = status;
+    // First, so the client has settled before the main window hears of a change.
+    connect(&m_link, &seriallink::LinkMirror::statusChanged, this, [this](const auto &status) {
         if (status.state == seriallink::ConnectionState::Disconnected
             || status.state == seriallink::ConnectionState::Lost)
             forgetWork(); // a backstop: the session reports what it dropped
         emit statusChanged(status);
     });
-    connect(session, &Session::countersChanged, this, [this](const auto &counters) {
-        m_counters = counters;
-        emit countersChanged(counters);
-    });
-    connect(session, &Session::packetLogged, this, &BusClient::packetLogged);
+    m_link.follow(&session->link());
+    connect(&m_link, &seriallink::LinkMirror::countersChanged, this, &BusClient::countersChanged);
+    connect(&m_link, &seriallink::LinkMirror::packetLogged, this, &BusClient::packetLogged);
     connect(session, &Session::scanProgress, this, &BusClient::scanProgress);
     connect(session, &Session::servoFound, this, &BusClient::onServoFound);
     connect(session, &Session::scanFinished, this, [this](bool completed, const QString &m) {
@@ -613,8 +612,8 @@ void BusClient::allTorqueOff()
             bauds.append(entry->info.baud);
         servos.append(entry->info);
     }
-    if (bauds.isEmpty() && m_status.baud > 0)
-        bauds.append(m_status.baud); // nothing scanned yet: the rate the port is at
+    if (bauds.isEmpty() && status().baud > 0)
+        bauds.append(status().baud); // nothing scanned yet: the rate the port is at
     m_worker.run([bauds, servos](Session &s) { s.torqueOffAll(bauds, servos); });
 }
 

@@ -4,6 +4,7 @@
 
 #include "feetech/feetechsession.h"
 #include "feetech/telemetry.h"
+#include "link/linkmirror.h"
 #include "link/linktypes.h"
 #include "link/sessionthread.h"
 #include "model/parametermodel.h"
@@ -35,9 +36,11 @@ public:
     explicit BusClient(const SessionTiming &timing = {}, QObject *parent = nullptr);
     ~BusClient() override;
 
-    const seriallink::ConnectionStatus &status() const { return m_status; }
-    const seriallink::LinkCounters &counters() const { return m_counters; }
-    bool isConnected() const { return m_status.state == seriallink::ConnectionState::Connected; }
+    // The link's state, counters and packet log, on this thread.
+    seriallink::LinkMirror *link() { return &m_link; }
+    const seriallink::ConnectionStatus &status() const { return m_link.status(); }
+    const seriallink::LinkCounters &counters() const { return m_link.counters(); }
+    bool isConnected() const { return m_link.isConnected(); }
     bool isScanning() const { return m_scanning; }
     bool isBusy() const;
 
@@ -142,9 +145,8 @@ private:
     void runFollowUp(const OperationResult &result);
 
     seriallink::SessionThread<Session> m_worker;
+    seriallink::LinkMirror m_link;
     std::vector<std::unique_ptr<Servo>> m_servos;
-    seriallink::ConnectionStatus m_status;
-    seriallink::LinkCounters m_counters;
     bool m_scanning = false;
     // The session runs operations in the order they were asked for: the servo each one works
     // on (by its address before it ran), and whether it is a background refresh.

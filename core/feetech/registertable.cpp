@@ -293,6 +293,13 @@ std::optional<RegisterTable> RegisterTable::fromJson(const QByteArray &json, con
             return finish();
         }
     }
+    QString factsError;
+    const auto facts = parseTableFacts(*root, table.m_registers, &factsError);
+    if (!facts) {
+        problems.fail(factsError);
+        return finish();
+    }
+    table.m_facts = *facts;
     return table;
 }
 
@@ -357,6 +364,13 @@ std::optional<ModelTable> ModelTable::fromJson(const QByteArray &json, const QSt
         return finish();
 
     ModelTable table;
+    QString ratesError;
+    const auto rates = parseBaudRates(*root, &ratesError);
+    if (!rates) {
+        problems.fail(ratesError);
+        return finish();
+    }
+    table.m_baudRates = *rates;
     const QJsonObject majors = root->value(QLatin1String("families_by_major")).toObject();
     for (auto it = majors.begin(); it != majors.end(); ++it) {
         bool ok = false;
@@ -473,32 +487,27 @@ const RegisterTable &RegisterTable::rawView()
     return table;
 }
 
-namespace {
-constexpr qint32 kBaudRates[] = {1000000, 500000, 250000, 128000, 115200, 76800, 57600, 38400};
-} // namespace
-
 QVector<qint32> baudRates()
 {
-    return QVector<qint32>(std::begin(kBaudRates), std::end(kBaudRates));
+    return ModelTable::builtIn().baudRates();
 }
 
 std::optional<int> baudCode(qint32 baud)
 {
-    for (int code = 0; code < int(std::size(kBaudRates)); ++code) {
-        if (kBaudRates[code] == baud)
-            return code;
-    }
-    return std::nullopt;
+    const int code = int(baudRates().indexOf(baud));
+    return code >= 0 ? std::optional<int>(code) : std::nullopt;
 }
 
 qint32 baudForCode(int code)
 {
-    return code >= 0 && code < int(std::size(kBaudRates)) ? kBaudRates[code] : 0;
+    const QVector<qint32> &rates = ModelTable::builtIn().baudRates();
+    return code >= 0 && code < rates.size() ? rates.at(code) : 0;
 }
 
 qint32 defaultBaud(Family family)
 {
-    return family == Family::Sms ? 115200 : 1000000;
+    const Register *baud = RegisterTable::forFamily(family).find(u"baud_rate");
+    return baudForCode(baud && baud->defaultValue ? *baud->defaultValue : 0);
 }
 
 QString baudText(qint32 baud)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "feetech/feetechvalue.h"
+#include "feetech/tablefacts.h"
 
 #include <QString>
 #include <QStringView>
@@ -86,12 +87,20 @@ public:
     const Register *at(int address) const; // the register starting at this address
     ValueFormat format(const Register &reg) const { return {reg.size, m_byteOrder, reg.signBit}; }
     QVector<Block> blocks() const;
+    // The value torque_enable takes for `mode`; none where the family lacks it.
+    std::optional<qint32> torqueValue(TorqueMode mode) const
+    {
+        return m_facts.torqueValues[std::size_t(mode)];
+    }
+    // Present position through present current: what one telemetry read fetches.
+    Block feedbackBlock() const { return {m_facts.feedbackAddress, m_facts.feedbackSize}; }
 
 private:
     Family m_family = Family::Sts;
     QString m_title;
     ByteOrder m_byteOrder = ByteOrder::Little;
     QVector<Register> m_registers; // ascending addresses, no overlaps
+    TableFacts m_facts;
     bool m_raw = false;
 };
 
@@ -116,17 +125,20 @@ public:
     std::optional<ModelInfo>
     findByName(QStringView name) const; // case-insensitive; aliases split by /
     const QVector<ModelInfo> &models() const { return m_models; }
+    // The rate of each baud code of address 6, code 0 first.
+    const QVector<qint32> &baudRates() const { return m_baudRates; }
 
 private:
     QVector<ModelInfo> m_models;
+    QVector<qint32> m_baudRates;
     QVector<std::pair<int, Family>> m_familiesByMajor;
 };
 
-// Baud-rate codes 0-7 of address 6 (spec §6), fastest first.
+// Baud-rate codes 0-7 of address 6 (spec §6), fastest first, as the model table lists them.
 QVector<qint32> baudRates();
 std::optional<int> baudCode(qint32 baud);
 qint32 baudForCode(int code); // 0 for a code outside 0-7
-qint32 defaultBaud(Family family); // SMS 115200, the others 1000000
+qint32 defaultBaud(Family family); // the factory rate its table gives (SMS 115200, others 1 Mbps)
 // A rate as people read it: "1 Mbps", "115,200 bps" (translated, in the user's locale).
 QString baudText(qint32 baud);
 

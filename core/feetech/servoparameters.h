@@ -1,7 +1,7 @@
 // A Feetech register table as parameter-model definitions, and register values to and from bytes.
 #pragma once
 
-#include "feetech/feetechsession.h"
+#include "feetech/bustypes.h"
 #include "feetech/registertable.h"
 #include "model/parametermodel.h"
 

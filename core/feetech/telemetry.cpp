@@ -1,7 +1,7 @@
 // Telemetry samples: feedback block decoding, quantity names and units, and the CSV form.
 #include "feetech/telemetry.h"
 
-#include "feetech/feetechsession.h"
+#include "feetech/bustypes.h"
 #include "feetech/servoparameters.h"
 
 #include <QCoreApplication>
@@ -103,14 +103,16 @@ std::optional<FeedbackSample> decodeFeedback(const RegisterTable &table, quint8 
                                              qint64 steadyUs, QByteArrayView bytes,
                                              quint8 replyStatus)
 {
-    if (bytes.size() < kFeedbackSize)
+    const Block block = table.feedbackBlock();
+    if (block.size == 0 || bytes.size() < block.size)
         return std::nullopt;
     FeedbackSample sample;
     sample.id = id;
     sample.baud = baud;
     sample.steadyUs = steadyUs;
     sample.replyStatus = replyStatus;
-    for (const DecodedRegister &item : decodeRegisters(table, kFeedbackAddress, bytes)) {
+    for (const DecodedRegister &item :
+         decodeRegisters(table, block.address, bytes.first(block.size))) {
         const QString &key = item.reg->key;
         if (key == u"status") {
             sample.servoStatus = quint8(item.value);

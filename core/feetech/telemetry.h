@@ -18,10 +18,6 @@ namespace feetech {
 
 struct ServoInfo;
 
-// The SDKs' "FeedBack" block: present position (56) through present current (69-70).
-constexpr int kFeedbackAddress = 56;
-constexpr int kFeedbackSize = 15;
-
 // What a sample measures, each in one unit for every family (see quantityUnit).
 enum class Quantity { Position, Speed, Load, Voltage, Temperature, Current };
 constexpr int kQuantityCount = 6;
@@ -51,7 +47,7 @@ struct FeedbackSample
     std::optional<double> value(Quantity quantity) const { return values.at(int(quantity)); }
 };
 
-// The feedback block of one servo, as read at kFeedbackAddress; nothing when `bytes` is short.
+// The feedback block of one servo (the table's feedbackBlock()); nothing when `bytes` is short.
 std::optional<FeedbackSample> decodeFeedback(const RegisterTable &table, quint8 id, qint32 baud,
                                              qint64 steadyUs, QByteArrayView bytes,
                                              quint8 replyStatus);

@@ -1,6 +1,8 @@
 // PTK client: the worker thread's lifetime, queued calls into the session, and model updates.
 #include "ptk/ptkclient.h"
 
+#include "link/linksession.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 
@@ -13,84 +15,66 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(PtkClient)
 };
 
-// Shutdown waits this long for the worker; a serial close never takes longer in practice.
-constexpr unsigned long kThreadStopTimeoutMs = 3000;
 constexpr qint64 kRateWindowMs = 2000;
 
 } // namespace
 
 Client::Client(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
+    , m_worker(QStringLiteral("ptk-link"), timing)
 {
     m_model.setDefinitions(modelDefinitions());
     m_clock.start();
-    m_thread.setObjectName(QStringLiteral("ptk-link"));
-    m_thread.start();
-    // The session, its QSerialPort and its timers are created inside the worker thread.
-    auto *anchor = new QObject;
-    anchor->moveToThread(&m_thread);
-    QMetaObject::invokeMethod(
-        anchor, [this, timing] { m_session = new Session(timing); }, Qt::BlockingQueuedConnection);
-    anchor->deleteLater();
-
-    connect(m_session, &Session::statusChanged, this, [this](const auto &status) {
-        m_status = status;
-        if (status.state != seriallink::ConnectionState::Connected)
-            m_answerTimesMs.clear();
-        // The session reports a read or Apply the link cut short; this is only a backstop.
-        if (status.state == seriallink::ConnectionState::Disconnected
-            || status.state == seriallink::ConnectionState::Lost) {
-            m_reading = false;
-            if (m_applying)
-                onApplyFinished(false, status.message);
-        }
-        emit statusChanged(status);
-    });
-    connect(m_session, &Session::countersChanged, this, [this](const auto &counters) {
-        m_counters = counters;
-        emit countersChanged(counters);
-    });
-    connect(m_session, &Session::packetLogged, this, &Client::packetLogged);
-    connect(m_session, &Session::valuesRead, this, &Client::onValuesRead);
-    connect(m_session, &Session::readFinished, this, [this](bool ok, const QString &message) {
+    Session *session = m_worker.session();
+    // First, so the client has settled before the main window hears of a change.
+    connect(&m_link, &seriallink::LinkMirror::statusChanged, this, &Client::onStatusChanged);
+    m_link.follow(&session->link());
+    connect(&m_link, &seriallink::LinkMirror::countersChanged, this, &Client::countersChanged);
+    connect(&m_link, &seriallink::LinkMirror::packetLogged, this, &Client::packetLogged);
+    connect(session, &Session::valuesRead, this, &Client::onValuesRead);
+    connect(session, &Session::readFinished, this, [this](bool ok, const QString &message) {
         m_reading = false;
         emit readFinished(ok, message);
     });
-    connect(m_session, &Session::applyProgress, this, &Client::applyProgress);
-    connect(m_session, &Session::applyFinished, this, &Client::onApplyFinished);
+    connect(session, &Session::applyProgress, this, &Client::applyProgress);
+    connect(session, &Session::applyFinished, this, &Client::onApplyFinished);
 }
 
-Client::~Client()
+Client::~Client() = default;
+
+void Client::onStatusChanged(const seriallink::ConnectionStatus &status)
 {
-    Session *session = m_session;
-    QMetaObject::invokeMethod(
-        session, [session] { delete session; }, Qt::BlockingQueuedConnection);
-    m_thread.quit();
-    m_thread.wait(kThreadStopTimeoutMs);
+    if (status.state != seriallink::ConnectionState::Connected)
+        m_answerTimesMs.clear();
+    // The session reports a read or Apply the link cut short; this is only a backstop.
+    if (status.state == seriallink::ConnectionState::Disconnected
+        || status.state == seriallink::ConnectionState::Lost) {
+        m_reading = false;
+        if (m_applying)
+            onApplyFinished(false, status.message);
+    }
+    emit statusChanged(status);
 }
 
 void Client::connectTo(const QString &portName, qint32 baud, seriallink::EchoMode echo)
 {
-    Session *session = m_session;
-    inWorker([session, portName, baud, echo] { session->open(portName, baud, echo); });
+    m_worker.run([portName, baud, echo](Session &session) { session.open(portName, baud, echo); });
 }
 
 void Client::disconnectFrom()
 {
-    Session *session = m_session;
-    inWorker([session] { session->close(); });
+    m_worker.run([](Session &session) { session.close(); });
 }
 
 void Client::setPolling(bool enabled)
 {
-    Session *session = m_session;
-    inWorker([session, enabled] { session->setPolling(enabled); });
+    m_worker.run([enabled](Session &session) { session.setPolling(enabled); });
 }
 
 void Client::setPollInterval(int milliseconds, bool fast)
 {
-    Session *session = m_session;
-    inWorker([session, milliseconds, fast] { session->setPollInterval(milliseconds, fast); });
+    m_worker.run(
+        [milliseconds, fast](Session &session) { session.setPollInterval(milliseconds, fast); });
 }
 
 void Client::readAll()
@@ -98,13 +82,12 @@ void Client::readAll()
     if (isBusy())
         return; // the running read or Apply will bring fresh values anyway
     m_reading = true;
-    Session *session = m_session;
-    inWorker([session] { session->readAll(); });
+    m_worker.run([](Session &session) { session.readAll(); });
 }
 
 QString Client::applyBlocker() const
 {
-    if (m_status.state != seriallink::ConnectionState::Connected)
+    if (!isConnected())
         return Tr::tr("The servo is not connected.");
     if (isBusy())
         return Tr::tr("A read or write is already running.");
@@ -135,8 +118,7 @@ bool Client::apply(QString *error)
     }
     m_model.takeWritePlan();
     m_applying = true;
-    Session *session = m_session;
-    inWorker([session, values] { session->apply(values); });
+    m_worker.run([values](Session &session) { session.apply(values); });
     return true;
 }
 

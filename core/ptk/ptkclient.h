@@ -2,14 +2,15 @@
 // parameter model in step with what the servo reports.
 #pragma once
 
+#include "link/linkmirror.h"
 #include "link/linktypes.h"
 #include "link/requestengine.h"
+#include "link/sessionthread.h"
 #include "model/parametermodel.h"
 #include "ptk/ptksession.h"
 
 #include <QElapsedTimer>
 #include <QObject>
-#include <QThread>
 
 #include <deque>
 
@@ -24,9 +25,11 @@ public:
     ~Client() override; // quits the worker thread with a bounded wait
 
     model::ParameterModel *model() { return &m_model; }
-    const seriallink::ConnectionStatus &status() const { return m_status; }
-    const seriallink::LinkCounters &counters() const { return m_counters; }
-    bool isConnected() const { return m_status.state == seriallink::ConnectionState::Connected; }
+    // The link's state, counters and packet log, on this thread.
+    seriallink::LinkMirror *link() { return &m_link; }
+    const seriallink::ConnectionStatus &status() const { return m_link.status(); }
+    const seriallink::LinkCounters &counters() const { return m_link.counters(); }
+    bool isConnected() const { return m_link.isConnected(); }
     bool isBusy() const { return m_applying || m_reading; }
 
     void connectTo(const QString &portName, qint32 baud = 115200,
@@ -58,17 +61,11 @@ signals:
 private:
     void onValuesRead(const ptk::ParameterSet &values, ptk::ReadSource source);
     void onApplyFinished(bool ok, const QString &message);
-    template<typename Work>
-    void inWorker(Work work)
-    {
-        QMetaObject::invokeMethod(m_session, std::move(work), Qt::QueuedConnection);
-    }
+    void onStatusChanged(const seriallink::ConnectionStatus &status);
 
-    QThread m_thread;
-    Session *m_session = nullptr; // lives in m_thread
+    seriallink::SessionThread<Session> m_worker;
+    seriallink::LinkMirror m_link;
     model::ParameterModel m_model;
-    seriallink::ConnectionStatus m_status;
-    seriallink::LinkCounters m_counters;
     bool m_applying = false;
     bool m_reading = false;
     QElapsedTimer m_clock;

@@ -2,7 +2,7 @@
 #include "ptk/ptksession.h"
 
 #include "cli/decoder.h"
-#include "link/transport.h"
+#include "link/linksession.h"
 
 #include <QCoreApplication>
 
@@ -55,22 +55,27 @@ QString parameterNames(const FrameLayout &layout)
 Session::Session(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
     , m_timing(timing)
-    , m_transport(new seriallink::SerialTransport(this))
-    , m_engine(new seriallink::RequestEngine(*m_transport, m_format, describe, this))
+    , m_link(new seriallink::LinkSession(m_format, describe, this))
+    , m_engine(&m_link->engine())
     , m_pollTimer(new QTimer(this))
-    , m_reopenTimer(new QTimer(this))
 {
     qRegisterMetaType<ptk::ParameterSet>();
     qRegisterMetaType<ptk::ReadSource>();
     m_engine->setTiming(m_timing.engine);
-    connect(m_engine, &seriallink::RequestEngine::packetLogged, this, &Session::packetLogged);
-    connect(m_engine, &seriallink::RequestEngine::countersChanged, this, &Session::countersChanged);
-    // Queued: a port error can be raised inside a call the engine is making to the port.
-    connect(m_transport, &seriallink::Transport::failed, this, &Session::onPortFailed,
-            Qt::QueuedConnection);
+    m_link->setReconnectInterval(m_timing.reconnectInterval);
+    m_link->setLinkDownHook([this](const QString &message, seriallink::Failure failure) {
+        onLinkDown(message, failure);
+    });
+    // The servo has to answer before the link counts as connected again.
+    m_link->setReconnectedHook([this] {
+        m_link->setState(seriallink::ConnectionState::Connecting);
+        resumePolling();
+    });
+    connect(m_link, &seriallink::LinkSession::statusChanged, this, &Session::statusChanged);
+    connect(m_link, &seriallink::LinkSession::packetLogged, this, &Session::packetLogged);
+    connect(m_link, &seriallink::LinkSession::countersChanged, this, &Session::countersChanged);
     m_pollTimer->setTimerType(Qt::PreciseTimer);
     connect(m_pollTimer, &QTimer::timeout, this, &Session::pollNext);
-    connect(m_reopenTimer, &QTimer::timeout, this, &Session::tryReopen);
 }
 
 Session::~Session()
@@ -80,46 +85,41 @@ Session::~Session()
 
 const seriallink::LinkCounters &Session::counters() const
 {
-    return m_engine->counters();
+    return m_link->counters();
+}
+
+const seriallink::ConnectionStatus &Session::status() const
+{
+    return m_link->status();
 }
 
 void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode echo)
 {
-    close();
-    m_status.portName = portName;
-    m_status.baud = baud;
-    m_echo = echo;
-    setStatus(seriallink::ConnectionState::Connecting);
-    QString error;
-    if (!m_transport->open(portName, baud, &error)) {
-        setStatus(seriallink::ConnectionState::Disconnected, error);
-        return;
-    }
-    m_engine->resetCounters();
-    m_engine->setEchoMode(echo);
-    resumePolling();
+    if (m_link->open(portName, baud, echo))
+        resumePolling();
 }
 
 void Session::close()
 {
-    ++m_openGeneration;
+    m_link->close();
+}
+
+void Session::onLinkDown(const QString &message, seriallink::Failure failure)
+{
     const bool wasApplying = isApplying();
     const bool wasReading = m_phase == Phase::Reading;
     m_pollTimer->stop();
-    m_reopenTimer->stop();
-    m_engine->cancelAll(seriallink::Failure::Cancelled);
-    m_transport->close();
     m_phase = Phase::Idle;
     m_pollInFlight = false;
     // Whoever waits for a read or an Apply hears that it ended, so nothing stays busy.
+    const bool closed = failure == seriallink::Failure::Cancelled;
     if (wasApplying)
         emit applyFinished(false,
-                           Tr::tr("Disconnected during Apply; the servo may hold only "
-                                  "part of the new values."));
+                           closed ? Tr::tr("Disconnected during Apply; the servo may hold only "
+                                           "part of the new values.")
+                                  : Tr::tr("The link went down during Apply: %1").arg(message));
     if (wasReading)
-        emit readFinished(false, Tr::tr("Disconnected during the read."));
-    if (m_status.state != seriallink::ConnectionState::Disconnected)
-        setStatus(seriallink::ConnectionState::Disconnected);
+        emit readFinished(false, closed ? Tr::tr("Disconnected during the read.") : message);
 }
 
 void Session::setPolling(bool enabled)
@@ -129,7 +129,7 @@ void Session::setPolling(bool enabled)
         m_pollTimer->stop();
         m_phase = Phase::Idle; // before the cancelled polls' callbacks run
         m_engine->cancelPolls();
-    } else if (m_phase == Phase::Idle && enabled && m_transport->isOpen()) {
+    } else if (m_phase == Phase::Idle && enabled && m_link->isOpen()) {
         resumePolling();
     }
 }
@@ -148,7 +148,7 @@ void Session::resumePolling()
     m_pollTimer->stop();
     if (m_phase != Phase::Polling) {
         // Without polling, one query still tells whether a servo is there.
-        if (m_status.state == seriallink::ConnectionState::Connecting && m_transport->isOpen())
+        if (status().state == seriallink::ConnectionState::Connecting && m_link->isOpen())
             submitQuery(0, seriallink::Transaction::Priority::Command, [](bool) {});
         return;
     }
@@ -159,14 +159,14 @@ void Session::resumePolling()
 
 void Session::pollNext()
 {
-    if (m_phase != Phase::Polling || m_pollInFlight || !m_transport->isOpen())
+    if (m_phase != Phase::Polling || m_pollInFlight || !m_link->isOpen())
         return;
     m_pollInFlight = true;
     const int index = m_nextPoll;
     m_nextPoll = (m_nextPoll + 1) % kQueryCount;
-    const quint64 generation = m_openGeneration;
+    const quint64 generation = m_link->generation();
     submitQuery(index, seriallink::Transaction::Priority::Poll, [this, generation](bool) {
-        if (generation != m_openGeneration)
+        if (generation != m_link->generation())
             return;
         m_pollInFlight = false;
         if (m_timing.fastPolling)
@@ -191,10 +191,10 @@ void Session::submitQuery(int index, seriallink::Transaction::Priority priority,
         return reply && isPlausibleReply(layout, *reply);
     };
     transaction.expectedReplySize = kReplySize;
-    const quint64 generation = m_openGeneration;
+    const quint64 generation = m_link->generation();
     transaction.done = [this, &layout, source, generation,
                         then = std::move(then)](const seriallink::TransactionResult &result) {
-        if (generation != m_openGeneration)
+        if (generation != m_link->generation())
             return;
         if (result.failure == seriallink::Failure::Cancelled
             || result.failure == seriallink::Failure::LinkDown) {
@@ -215,7 +215,7 @@ void Session::submitQuery(int index, seriallink::Transaction::Priority priority,
 
 void Session::readAll()
 {
-    if (!m_transport->isOpen()) {
+    if (!m_link->isOpen()) {
         emit readFinished(false, Tr::tr("Not connected."));
         return;
     }
@@ -252,12 +252,12 @@ void Session::sweepStep(int index, Phase phase, QVector<QString> failed)
         return;
     }
     const FrameLayout &layout = queryLayouts().at(std::size_t(index));
-    const quint64 generation = m_openGeneration;
+    const quint64 generation = m_link->generation();
     submitQuery(index, seriallink::Transaction::Priority::Command,
                 [this, index, phase, failed, generation, &layout](bool ok) mutable {
-                    if (generation != m_openGeneration)
+                    if (generation != m_link->generation())
                         return;
-                    if (!m_transport->isOpen()) {
+                    if (!m_link->isOpen()) {
                         // The port went away mid-sweep; onPortFailed has said so.
                         if (phase == Phase::ReadingBack)
                             emit applyFinished(false,
@@ -277,7 +277,7 @@ void Session::sweepStep(int index, Phase phase, QVector<QString> failed)
 
 void Session::apply(const ParameterSet &values)
 {
-    if (!m_transport->isOpen()) {
+    if (!m_link->isOpen()) {
         emit applyFinished(false, Tr::tr("Not connected."));
         return;
     }
@@ -320,9 +320,9 @@ void Session::writeStep(int index)
     seriallink::Transaction transaction;
     transaction.request = encodeRequest(m_writes.at(index));
     transaction.priority = seriallink::Transaction::Priority::Command;
-    const quint64 generation = m_openGeneration;
+    const quint64 generation = m_link->generation();
     transaction.done = [this, index, generation](const seriallink::TransactionResult &result) {
-        if (generation != m_openGeneration)
+        if (generation != m_link->generation())
             return;
         if (!result.ok()) {
             const char *name = writeLayouts().at(std::size_t(index)).name;
@@ -336,7 +336,7 @@ void Session::writeStep(int index)
         emit applyProgress(index + 1, kWriteCount + kQueryCount);
         // The servo never acknowledges a write; PTK's own software leaves it this long.
         QTimer::singleShot(m_timing.writeGap, this, [this, index, generation] {
-            if (generation == m_openGeneration && m_phase == Phase::Writing)
+            if (generation == m_link->generation() && m_phase == Phase::Writing)
                 writeStep(index + 1);
         });
     };
@@ -346,53 +346,12 @@ void Session::writeStep(int index)
 void Session::noteAnswer(bool ok)
 {
     using seriallink::ConnectionState;
-    if (ok && m_status.state != ConnectionState::Connected)
-        setStatus(ConnectionState::Connected);
-    else if (!ok && m_status.state != ConnectionState::NoReply)
-        setStatus(ConnectionState::NoReply,
-                  Tr::tr("The port is open but the servo does not answer. Check that it is "
-                         "powered and plugged into the programmer."));
-}
-
-void Session::setStatus(seriallink::ConnectionState state, const QString &message)
-{
-    m_status.state = state;
-    m_status.message = message;
-    emit statusChanged(m_status);
-}
-
-void Session::onPortFailed(const QString &message, bool lost)
-{
-    ++m_openGeneration;
-    const bool wasApplying = isApplying();
-    const bool wasReading = m_phase == Phase::Reading;
-    m_pollTimer->stop();
-    m_engine->cancelAll(seriallink::Failure::LinkDown);
-    m_transport->close();
-    m_phase = Phase::Idle;
-    m_pollInFlight = false;
-    if (wasApplying)
-        emit applyFinished(false, Tr::tr("The link went down during Apply: %1").arg(message));
-    if (wasReading)
-        emit readFinished(false, message);
-    if (lost) {
-        setStatus(seriallink::ConnectionState::Lost,
-                  Tr::tr("%1 Reconnecting when it comes back.").arg(message));
-        m_reopenTimer->start(m_timing.reconnectInterval);
-    } else {
-        setStatus(seriallink::ConnectionState::Disconnected, message);
-    }
-}
-
-void Session::tryReopen()
-{
-    if (!m_transport->open(m_status.portName, m_status.baud, nullptr))
-        return;
-    m_reopenTimer->stop();
-    ++m_openGeneration;
-    m_engine->setEchoMode(m_echo);
-    setStatus(seriallink::ConnectionState::Connecting);
-    resumePolling();
+    if (ok && status().state != ConnectionState::Connected)
+        m_link->setState(ConnectionState::Connected);
+    else if (!ok && status().state != ConnectionState::NoReply)
+        m_link->setState(ConnectionState::NoReply,
+                         Tr::tr("The port is open but the servo does not answer. Check that it is "
+                                "powered and plugged into the programmer."));
 }
 
 } // namespace ptk

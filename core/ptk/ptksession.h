@@ -13,7 +13,7 @@
 #include <chrono>
 
 namespace seriallink {
-class SerialTransport;
+class LinkSession;
 }
 
 namespace ptk {
@@ -45,7 +45,8 @@ public:
 
     const SessionTiming &timing() const { return m_timing; }
     const seriallink::LinkCounters &counters() const;
-    const seriallink::ConnectionStatus &status() const { return m_status; }
+    const seriallink::ConnectionStatus &status() const;
+    seriallink::LinkSession &link() { return *m_link; }
     bool isApplying() const { return m_phase == Phase::Writing || m_phase == Phase::ReadingBack; }
 
     // Slots, called through QMetaObject::invokeMethod from other threads.
@@ -70,9 +71,7 @@ signals:
 private:
     enum class Phase { Idle, Polling, Reading, Writing, ReadingBack };
 
-    void setStatus(seriallink::ConnectionState state, const QString &message = {});
-    void onPortFailed(const QString &message, bool lost);
-    void tryReopen();
+    void onLinkDown(const QString &message, seriallink::Failure failure);
     void pollNext();
     void submitQuery(int index, seriallink::Transaction::Priority priority,
                      std::function<void(bool ok)> then);
@@ -84,18 +83,14 @@ private:
 
     SessionTiming m_timing;
     ptk::FrameFormat m_format;
-    seriallink::SerialTransport *m_transport = nullptr;
-    seriallink::RequestEngine *m_engine = nullptr;
-    seriallink::ConnectionStatus m_status;
-    seriallink::EchoMode m_echo = seriallink::EchoMode::Auto;
+    seriallink::LinkSession *m_link = nullptr;
+    seriallink::RequestEngine *m_engine = nullptr; // the link's
     QTimer *m_pollTimer = nullptr;
-    QTimer *m_reopenTimer = nullptr;
     Phase m_phase = Phase::Idle;
     bool m_pollingEnabled = true;
     bool m_pollInFlight = false;
     int m_nextPoll = 0;
     QVector<Request> m_writes;
-    quint64 m_openGeneration = 0; // callbacks from before a close are ignored
 };
 
 } // namespace ptk

@@ -1,0 +1,395 @@
+// Feetech bus steps: exchanges with a decoded answer, locked writes, reads, pings, relocking.
+#include "feetech/busexchange.h"
+
+#include "link/linksession.h"
+#include "link/transport.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+
+#include <algorithm>
+
+namespace feetech {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
+};
+
+constexpr std::size_t kLatencyWindow = 8;
+
+// Runs asynchronous steps one after the other; the first failure ends the run.
+class StepRunner : public std::enable_shared_from_this<StepRunner>
+{
+public:
+    using Done = std::function<void(bool ok, const QString &message)>;
+    using Step = std::function<void(Done next)>;
+
+    StepRunner(std::vector<Step> steps, Done done)
+        : m_steps(std::move(steps))
+        , m_done(std::move(done))
+    { }
+
+    void run()
+    {
+        if (m_index == m_steps.size()) {
+            finish(true, {});
+            return;
+        }
+        auto self = shared_from_this();
+        Step &step = m_steps[m_index++];
+        step([self](bool ok, const QString &message) {
+            if (!ok)
+                self->finish(false, message);
+            else
+                self->run();
+        });
+    }
+
+private:
+    void finish(bool ok, const QString &message)
+    {
+        Done done = std::move(m_done);
+        m_done = nullptr;
+        if (done)
+            done(ok, message);
+    }
+
+    std::vector<Step> m_steps;
+    std::size_t m_index = 0;
+    Done m_done;
+};
+
+} // namespace
+
+QString failureText(const seriallink::TransactionResult &result)
+{
+    switch (result.failure) {
+    case seriallink::Failure::None:
+        return {};
+    case seriallink::Failure::Timeout:
+        return Tr::tr("no reply after %n attempt(s)", nullptr, result.attempts);
+    case seriallink::Failure::LinkDown:
+        return Tr::tr("the port is closed");
+    case seriallink::Failure::Cancelled:
+        return Tr::tr("cancelled");
+    }
+    return {};
+}
+
+const Register *registerAt(const ServoInfo &servo, QStringView key)
+{
+    return servo.hasTable() ? servo.table().find(key) : nullptr;
+}
+
+QString servoName(const ServoInfo &servo)
+{
+    return Tr::tr("servo %1 at %2").arg(servo.id).arg(baudText(servo.baud));
+}
+
+BusExchange::BusExchange(seriallink::LinkSession &link, const SessionTiming &timing,
+                         QObject *parent)
+    : QObject(parent)
+    , m_link(link)
+    , m_timing(timing)
+{ }
+
+std::optional<std::chrono::microseconds> BusExchange::measuredLatency() const
+{
+    if (m_latencies.empty())
+        return std::nullopt;
+    // The median of the recent answers: one slow outlier (a busy OS, the first exchange on a
+    // fresh port) must not slow a whole scan down.
+    std::vector<std::chrono::microseconds> sorted(m_latencies.begin(), m_latencies.end());
+    std::sort(sorted.begin(), sorted.end());
+    return sorted.at((sorted.size() - 1) / 2);
+}
+
+std::chrono::microseconds BusExchange::scanAllowance() const
+{
+    const auto latency = measuredLatency();
+    if (!latency)
+        return m_timing.initialScanAllowance;
+    const auto scaled =
+        std::chrono::microseconds(qint64(double(latency->count()) * m_timing.scanLatencyFactor));
+    return std::clamp(scaled + kLongestReturnDelay, m_timing.minimumScanAllowance,
+                      m_timing.maximumScanAllowance);
+}
+
+void BusExchange::noteLatency(std::chrono::microseconds latency)
+{
+    m_latencies.push_back(latency);
+    while (m_latencies.size() > kLatencyWindow)
+        m_latencies.pop_front();
+}
+
+void BusExchange::runSteps(std::vector<Step> steps, StepDone done)
+{
+    const quint64 generation = m_link.generation();
+    auto runner = std::make_shared<StepRunner>(
+        std::move(steps), [this, generation, done = std::move(done)](bool ok, const QString &m) {
+            if (generation == m_link.generation()) // not after a close or a lost port
+                done(ok, m);
+        });
+    runner->run();
+}
+
+void BusExchange::exchange(const Exchange &request, ExchangeDone done)
+{
+    seriallink::Transaction transaction;
+    transaction.request = request.request;
+    transaction.priority = request.priority;
+    transaction.replyTimeout = request.replyTimeout;
+    transaction.retryCount = request.retryCount;
+    transaction.silenceExpected = request.silenceExpected;
+    if (request.listenOnly) {
+        transaction.acceptsReply = [](const QByteArray &) {
+            return false;
+        };
+        transaction.expectedReplySize = kMinimumPacketSize;
+    }
+    // The frame the engine accepts is decoded here, once, and that packet is what `done` gets.
+    auto accepted = std::make_shared<std::optional<Packet>>();
+    if (!request.listenOnly && request.replyId) {
+        const QByteArray sent = request.request;
+        const quint8 id = *request.replyId;
+        const std::optional<quint8> alternate = request.alternateReplyId;
+        const int size = request.replyDataSize;
+        // Our own frame coming back (an echo the engine did not expect) is never the answer.
+        const auto other = request.otherFrame;
+        transaction.acceptsReply = [sent, id, alternate, size, other,
+                                    accepted](const QByteArray &frame) {
+            if (frame == sent)
+                return false;
+            auto packet = decodePacket(frame);
+            const bool answer = packet
+                && (packet->id == id || (alternate && packet->id == *alternate))
+                && packet->parameters.size() == size;
+            if (packet && !answer && other)
+                other(*packet);
+            if (answer)
+                *accepted = std::move(packet);
+            return answer;
+        };
+        transaction.expectedReplySize = kMinimumPacketSize + size;
+    }
+    const quint64 generation = m_link.generation();
+    transaction.done = [this, generation, accepted,
+                        done = std::move(done)](const seriallink::TransactionResult &result) {
+        if (generation != m_link.generation())
+            return;
+        std::optional<Packet> packet;
+        if (result.ok() && !result.reply.isEmpty())
+            packet = std::move(*accepted);
+        if (packet)
+            noteLatency(result.latency);
+        done(result, packet);
+    };
+    m_link.engine().submit(std::move(transaction));
+}
+
+Step BusExchange::setBaud(qint32 baud)
+{
+    return [this, baud](StepDone next) {
+        if (!m_link.setBaudRate(baud)) {
+            next(false, Tr::tr("The port cannot be set to %1.").arg(baudText(baud)));
+            return;
+        }
+        next(true, {});
+    };
+}
+
+Step BusExchange::write(quint8 id, int address, const QByteArray &bytes, bool expectReply,
+                        const QString &what)
+{
+    return instruction(id, feetech::write(id, quint8(address), bytes), expectReply, what);
+}
+
+Step BusExchange::instruction(quint8 id, const QByteArray &request, bool expectReply,
+                              const QString &what)
+{
+    return [this, id, request, expectReply, what](StepDone next) {
+        Exchange ask;
+        ask.request = request;
+        if (expectReply)
+            ask.replyId = id;
+        exchange(ask,
+                 [what, next](const seriallink::TransactionResult &result,
+                              const std::optional<Packet> &) {
+                     if (!result.ok())
+                         next(false, Tr::tr("%1: %2").arg(what, failureText(result)));
+                     else
+                         next(true, {});
+                 });
+    };
+}
+
+Step BusExchange::lock(std::shared_ptr<ServoInfo> servo, bool locked)
+{
+    return [this, servo, locked](StepDone next) {
+        const Register *lock = registerAt(*servo, u"lock");
+        if (!lock) {
+            next(false, Tr::tr("The servo's model has no known EEPROM lock register."));
+            return;
+        }
+        const QString what = locked ? Tr::tr("Locking the EEPROM") : Tr::tr("Unlocking the EEPROM");
+        write(servo->id, lock->address, QByteArray(1, char(locked ? 1 : 0)),
+              servo->repliesToWrites(), what)(next);
+    };
+}
+
+Step BusExchange::read(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source)
+{
+    return [this, servo, address, size, source](StepDone next) {
+        Exchange ask;
+        ask.request = feetech::read(servo->id, quint8(address), quint8(size));
+        ask.replyId = servo->id;
+        ask.replyDataSize = size;
+        if (source == ReadSource::Refresh)
+            ask.priority = seriallink::Transaction::Priority::Poll;
+        exchange(
+            ask,
+            [this, servo, address, size, source, next](const seriallink::TransactionResult &result,
+                                                       const std::optional<Packet> &reply) {
+                if (!reply) {
+                    next(false,
+                         Tr::tr("Reading %1 bytes at address %2: %3")
+                             .arg(size)
+                             .arg(address)
+                             .arg(failureText(result)));
+                    return;
+                }
+                emit memoryRead(servo->id, servo->baud, address, reply->parameters, source,
+                                reply->code);
+                next(true, {});
+            });
+    };
+}
+
+Step BusExchange::identify(std::shared_ptr<ServoInfo> servo)
+{
+    return [this, servo](StepDone next) {
+        Exchange ask;
+        ask.request = feetech::read(servo->id, kIdentityAddress, kIdentitySize);
+        ask.replyId = servo->id;
+        ask.replyDataSize = kIdentitySize;
+        exchange(ask,
+                 [servo, next](const seriallink::TransactionResult &result,
+                               const std::optional<Packet> &reply) {
+                     const auto info = reply
+                         ? servoInfoFromIdentity(servo->id, servo->baud, reply->parameters)
+                         : std::nullopt;
+                     if (!info) {
+                         next(false,
+                              Tr::tr("Reading the identity of servo %1: %2")
+                                  .arg(servo->id)
+                                  .arg(failureText(result)));
+                         return;
+                     }
+                     *servo = *info;
+                     next(true, {});
+                 });
+    };
+}
+
+Step BusExchange::ping(quint8 id, bool mustAnswer, int retries)
+{
+    return [this, id, mustAnswer, retries](StepDone next) {
+        Exchange ask;
+        ask.request = feetech::ping(id);
+        ask.replyId = id;
+        ask.retryCount = retries;
+        exchange(ask,
+                 [id, mustAnswer, next](const seriallink::TransactionResult &result,
+                                        const std::optional<Packet> &reply) {
+                     if (result.failure == seriallink::Failure::LinkDown
+                         || result.failure == seriallink::Failure::Cancelled)
+                         next(false, failureText(result));
+                     else if (mustAnswer && !reply)
+                         next(false, Tr::tr("Servo %1 does not answer.").arg(id));
+                     else if (!mustAnswer && reply)
+                         next(false, Tr::tr("ID %1 is already in use on this bus.").arg(id));
+                     else
+                         next(true, {});
+                 });
+    };
+}
+
+void BusExchange::relock(std::vector<std::shared_ptr<ServoInfo>> places, std::function<void()> done)
+{
+    if (places.empty()) {
+        done();
+        return;
+    }
+    const std::shared_ptr<ServoInfo> place = places.front();
+    places.erase(places.begin());
+    // Best effort: a place where nothing answers is simply passed.
+    runSteps({setBaud(place->baud), lock(place, true)},
+             [this, places, done](bool, const QString &) { relock(places, done); });
+}
+
+Step BusExchange::addressWrite(quint8 id, int address, quint8 value,
+                               std::optional<quint8> alternateReplyId)
+{
+    return [this, id, address, value, alternateReplyId](StepDone next) {
+        Exchange ask;
+        ask.request = feetech::write(id, quint8(address), QByteArray(1, char(value)));
+        ask.replyId = id;
+        ask.alternateReplyId = alternateReplyId;
+        ask.retryCount = 0; // a second write would go to an address that may have changed
+        exchange(ask,
+                 [next](const seriallink::TransactionResult &r, const std::optional<Packet> &) {
+                     // No answer is not a failure: the servo may already listen elsewhere. Whether
+                     // the write took is decided by finding it at the new address.
+                     if (r.failure == seriallink::Failure::LinkDown
+                         || r.failure == seriallink::Failure::Cancelled)
+                         next(false, failureText(r));
+                     else
+                         next(true, {});
+                 });
+    };
+}
+
+Step BusExchange::markDone(std::shared_ptr<bool> flag)
+{
+    return [flag](StepDone next) {
+        *flag = true;
+        next(true, {});
+    };
+}
+
+void BusExchange::searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> rates,
+                              StepDone done)
+{
+    if (rates.isEmpty()) {
+        done(false,
+             Tr::tr("Servo %1 answers at no baud rate; scan the bus to find it.").arg(servo->id));
+        return;
+    }
+    const qint32 rate = rates.takeFirst();
+    runSteps({setBaud(rate), ping(servo->id, true, 1)},
+             [this, servo, rates, rate, done](bool found, const QString &) {
+                 if (found) {
+                     servo->baud = rate;
+                     done(true, {});
+                 } else {
+                     searchBauds(servo, rates, done);
+                 }
+             });
+}
+
+void BusExchange::logNote(const QString &note, bool error)
+{
+    seriallink::PacketLogEntry entry;
+    entry.timestampMs = QDateTime::currentMSecsSinceEpoch();
+    entry.direction = seriallink::Direction::In;
+    if (error)
+        entry.error = note;
+    else
+        entry.summary = note;
+    emit noteLogged(entry);
+}
+
+} // namespace feetech

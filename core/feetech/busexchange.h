@@ -1,0 +1,112 @@
+// The steps every Feetech operation is made of: one exchange, a baud change, a locked write...
+#pragma once
+
+#include "feetech/bustypes.h"
+#include "link/requestengine.h"
+
+#include <QObject>
+
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace seriallink {
+class LinkSession;
+}
+
+namespace feetech {
+
+// One asynchronous step of an operation; it calls `next` once, with what went wrong if not ok.
+using StepDone = std::function<void(bool ok, const QString &message)>;
+using Step = std::function<void(StepDone next)>;
+
+// One request and what counts as its answer.
+struct Exchange
+{
+    QByteArray request;
+    std::optional<quint8> replyId; // none: no reply expected
+    std::optional<quint8> alternateReplyId; // an ID change may answer from either ID
+    int replyDataSize = 0;
+    bool listenOnly = false; // wait the whole timeout and accept nothing (broadcast probe)
+    bool silenceExpected = false; // scans: no answer is an answer, not a link problem
+    // Called with every well-formed frame that is not the answer (a late one, say).
+    std::function<void(const Packet &)> otherFrame;
+    seriallink::Transaction::Priority priority = seriallink::Transaction::Priority::Command;
+    std::optional<std::chrono::microseconds> replyTimeout;
+    std::optional<int> retryCount;
+};
+// The reply arrives decoded: the frame the engine accepted is decoded once, on acceptance.
+using ExchangeDone = std::function<void(const seriallink::TransactionResult &result,
+                                        const std::optional<Packet> &reply)>;
+
+// Why a transaction failed, in words for the user.
+QString failureText(const seriallink::TransactionResult &result);
+// The register `key` of the servo's table; none for an unknown model or a family without it.
+const Register *registerAt(const ServoInfo &servo, QStringView key);
+// "servo 3 at 1 Mbps"
+QString servoName(const ServoInfo &servo);
+
+// The scan, the guided flows, the telemetry cycle and the session all build their work from
+// these steps over one link. Lives in the session's thread.
+class BusExchange : public QObject
+{
+    Q_OBJECT
+
+public:
+    BusExchange(seriallink::LinkSession &link, const SessionTiming &timing,
+                QObject *parent = nullptr);
+
+    seriallink::LinkSession &link() { return m_link; }
+    const SessionTiming &timing() const { return m_timing; }
+
+    // How quickly servos answer on this port: the median of the last answers (none before the
+    // first), from the end of the request to the first byte of the reply.
+    std::optional<std::chrono::microseconds> measuredLatency() const;
+    void noteLatency(std::chrono::microseconds latency);
+    void forgetLatencies() { m_latencies.clear(); }
+    // What a missing ID may cost a scan.
+    std::chrono::microseconds scanAllowance() const;
+
+    void exchange(const Exchange &exchange, ExchangeDone done);
+    // Runs the steps in turn; the first failure ends the run. Nothing is called back once the
+    // link has ended or started again in between.
+    void runSteps(std::vector<Step> steps, StepDone done);
+
+    Step setBaud(qint32 baud);
+    Step write(quint8 id, int address, const QByteArray &bytes, bool expectReply,
+               const QString &what);
+    Step instruction(quint8 id, const QByteArray &request, bool expectReply, const QString &what);
+    Step lock(std::shared_ptr<ServoInfo> servo, bool locked);
+    // Emits memoryRead with what the servo holds.
+    Step read(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source);
+    Step identify(std::shared_ptr<ServoInfo> servo); // fills in what addresses 0-8 say
+    // mustAnswer: fails when the ID is silent; otherwise fails when it answers (ID in use).
+    Step ping(quint8 id, bool mustAnswer, int retries);
+    // A write of the ID or baud register: its reply may come from the new address or not at
+    // all, so only a closed link fails it.
+    Step addressWrite(quint8 id, int address, quint8 value, std::optional<quint8> alternateReplyId);
+    static Step markDone(std::shared_ptr<bool> flag); // sets the flag when the run gets there
+    // Locks the EEPROM at each place (ID and baud) in turn, whether or not anything answers.
+    void relock(std::vector<std::shared_ptr<ServoInfo>> places, std::function<void()> done);
+    // Looks for the servo's ID at each rate in turn; on success servo->baud is where it answered.
+    void searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> rates, StepDone done);
+
+    // A line of the packet log that is no frame: a servo that stopped answering, say.
+    void logNote(const QString &note, bool error = false);
+
+signals:
+    // Bytes of one block as the servo holds them, with the status byte of its reply.
+    void memoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
+                    feetech::ReadSource source, quint8 statusByte);
+    void noteLogged(const seriallink::PacketLogEntry &entry);
+
+private:
+    seriallink::LinkSession &m_link;
+    SessionTiming m_timing;
+    std::deque<std::chrono::microseconds> m_latencies;
+};
+
+} // namespace feetech
