@@ -111,6 +111,21 @@ private slots:
         QCOMPARE(parameters.state(QStringLiteral("gain")), State::Verified);
     }
 
+    void keysKeptOutOfTheWritePlanStayEdits()
+    {
+        model::ParameterModel parameters;
+        parameters.setDefinitions(definitions());
+        parameters.setDeviceValue(QStringLiteral("gain"), 29);
+        QVERIFY(parameters.edit(QStringLiteral("gain"), 20));
+        QVERIFY(parameters.editScaled(QStringLiteral("min_pulse_us"), 600));
+        const auto plan = parameters.takeWritePlan({QStringLiteral("min_pulse_us")});
+        QCOMPARE(plan.size(), 1);
+        QCOMPARE(plan[0].key, QStringLiteral("gain"));
+        QCOMPARE(parameters.state(QStringLiteral("gain")), State::Writing);
+        QCOMPARE(parameters.state(QStringLiteral("min_pulse_us")), State::Edited);
+        QCOMPARE(parameters.pendingValue(QStringLiteral("min_pulse_us")).value_or(-1), 2400);
+    }
+
     void aFailedWriteKeepsTheEditToTryAgain()
     {
         model::ParameterModel parameters;

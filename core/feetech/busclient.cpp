@@ -187,7 +187,11 @@ void BusClient::onOperationFinished(const OperationResult &result)
     Pending target;
     if (!m_pending.empty()) {
         target = m_pending.front();
-        m_pending.pop_front();
+        // A step of an apply chain: the operation goes on, with the servo where it left it.
+        if (result.final)
+            m_pending.pop_front();
+        else
+            m_pending.front() = {result.servo.id, result.servo.baud, target.kind};
     }
     const int index = indexOf(target.id, target.baud);
     if (index >= 0) {
@@ -224,13 +228,11 @@ void BusClient::onOperationFinished(const OperationResult &result)
             parameters.revert(QStringLiteral("position_offset"));
             parameters.revert(QStringLiteral("torque_enable"));
         }
-        if (result.ok && flow)
-            readServo(indexOf(entry.info.id, entry.info.baud)); // what the flow changed shows
+        if (result.ok && flow && result.final) // what the flow changed shows
+            readServo(indexOf(entry.info.id, entry.info.baud));
     }
-    if (target.kind == Work::Foreground) {
-        runFollowUp(result);
+    if (target.kind == Work::Foreground)
         emit busyChanged(isBusy());
-    }
     if (target.kind != Work::Background) { // a failed refresh is retried by the next one
         OperationResult reported = result;
         reported.control = target.kind == Work::Control;
@@ -242,7 +244,6 @@ void BusClient::forgetWork()
 {
     const bool wasBusy = isBusy();
     m_pending.clear();
-    m_followUps.clear();
     m_scanning = false;
     for (const auto &entry : m_servos) {
         model::ParameterModel &parameters = *entry->parameters;
@@ -255,24 +256,17 @@ void BusClient::forgetWork()
         emit busyChanged(false);
 }
 
-void BusClient::runFollowUp(const OperationResult &result)
+bool BusClient::applyAll(int index, QString *error)
 {
-    if (m_followUps.empty())
-        return;
-    if (!result.ok) {
-        m_followUps.clear(); // a later step must not act on a servo that is not where we think
-        return;
-    }
-    const auto next = std::move(m_followUps.front());
-    m_followUps.pop_front();
-    QString error;
-    if (!next(indexOf(result.servo.id, result.servo.baud), &error)) {
-        m_followUps.clear();
-        emit operationFinished({Operation::Write, false, error, result.servo, {}});
-    }
+    return startApply(index, error, true);
 }
 
-bool BusClient::applyAll(int index, QString *error)
+bool BusClient::apply(int index, QString *error)
+{
+    return startApply(index, error, false);
+}
+
+bool BusClient::startApply(int index, QString *error, bool withAddress)
 {
     const QString blocker = writeBlocker(index);
     if (!blocker.isEmpty()) {
@@ -281,52 +275,25 @@ bool BusClient::applyAll(int index, QString *error)
         return false;
     }
     model::ParameterModel &parameters = *this->parameters(index);
-    const auto idEdit = parameters.pendingValue(QStringLiteral("id"));
-    const auto baudEdit = parameters.pendingValue(QStringLiteral("baud_rate"));
-    std::deque<std::function<bool(int, QString *)>> steps;
-    bool registers = false;
-    for (const model::Definition &definition : parameters.definitions()) {
-        if (parameters.pendingValue(definition.key) && definition.key != u"id"
-            && definition.key != u"baud_rate")
-            registers = true;
+    auto plan = planApply(servo(index).info, parameters, idsInUse(), error);
+    if (plan && !withAddress) {
+        // The ID and baud rate have their own flows; they stay pending here.
+        plan->newId.reset();
+        plan->newBaud.reset();
+        if (plan->isEmpty()) {
+            if (error)
+                *error = Tr::tr("Nothing to write.");
+            plan.reset();
+        }
     }
-    if (registers)
-        steps.push_back([this](int at, QString *why) { return apply(at, why); });
-    if (idEdit) {
-        const int newId = int(*idEdit);
-        steps.push_back([this, newId](int at, QString *why) {
-            const QVector<int> inUse = idsInUse();
-            if (at < 0 || inUse.contains(newId)) {
-                if (why)
-                    *why = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
-                return false;
-            }
-            return startOperation(
-                at, why, Work::Foreground,
-                [newId, inUse](Session &s, const ServoInfo &i) { s.changeId(i, newId, inUse); });
-        });
-    }
-    if (baudEdit) {
-        const qint32 newBaud = baudForCode(int(*baudEdit));
-        steps.push_back([this, newBaud](int at, QString *why) {
-            return startOperation(
-                at, why, Work::Foreground,
-                [newBaud](Session &s, const ServoInfo &i) { s.changeBaud(i, newBaud); });
-        });
-    }
-    if (steps.empty()) {
-        if (error)
-            *error = Tr::tr("Nothing to write.");
+    if (!plan)
         return false;
-    }
-    const auto first = std::move(steps.front());
-    steps.pop_front();
-    m_followUps = std::move(steps);
-    if (!first(index, error)) {
-        m_followUps.clear();
-        return false;
-    }
-    return true;
+    // Exactly the planned registers are Writing; an ID or baud edit stays an edit until its
+    // flow has moved the servo.
+    parameters.takeWritePlan({QStringLiteral("id"), QStringLiteral("baud_rate")});
+    return startOperation(
+        index, error, Work::Foreground,
+        [plan = *plan](Session &s, const ServoInfo &info) { s.apply(info, plan); });
 }
 
 bool BusClient::startOperation(int index, QString *error, Work kind,
@@ -378,46 +345,6 @@ void BusClient::refreshRam(int index)
     startOperation(index, nullptr, Work::Background, [ram](Session &s, const ServoInfo &target) {
         s.read(target, ram, ReadSource::Refresh);
     });
-}
-
-bool BusClient::apply(int index, QString *error)
-{
-    const QString blocker = writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
-        return false;
-    }
-    model::ParameterModel &parameters = *this->parameters(index);
-    const RegisterTable &table = servo(index).info.table();
-    // The ID and baud rate have their own flows; they stay pending here.
-    QVector<model::WriteItem> plan;
-    for (const model::Definition &definition : parameters.definitions()) {
-        const auto pending = parameters.pendingValue(definition.key);
-        if (pending && definition.key != u"id" && definition.key != u"baud_rate")
-            plan.append({definition.key, *pending});
-    }
-    if (plan.isEmpty()) {
-        if (error)
-            *error = Tr::tr("Nothing to write.");
-        return false;
-    }
-    const auto writes = encodeWrites(table, plan, error);
-    if (!writes)
-        return false;
-    // Marks exactly the planned keys Writing: the ID and baud edits are put back as edits.
-    const auto idEdit = parameters.pendingValue(QStringLiteral("id"));
-    const auto baudEdit = parameters.pendingValue(QStringLiteral("baud_rate"));
-    parameters.revert(QStringLiteral("id"));
-    parameters.revert(QStringLiteral("baud_rate"));
-    parameters.takeWritePlan();
-    if (idEdit)
-        parameters.edit(QStringLiteral("id"), *idEdit);
-    if (baudEdit)
-        parameters.edit(QStringLiteral("baud_rate"), *baudEdit);
-    const QVector<RegisterWrite> items = *writes;
-    return startOperation(index, error, Work::Foreground,
-                          [items](Session &s, const ServoInfo &info) { s.write(info, items); });
 }
 
 bool BusClient::changeId(int index, int newId, QString *error)

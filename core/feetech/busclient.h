@@ -142,7 +142,8 @@ private:
     void onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream);
     void clearServos();
     void forgetWork(); // the link went down: nothing is running any more
-    void runFollowUp(const OperationResult &result);
+    // The pending edits as planApply plans them; with `withAddress` the ID and baud too.
+    bool startApply(int index, QString *error, bool withAddress);
 
     seriallink::SessionThread<Session> m_worker;
     seriallink::LinkMirror m_link;
@@ -157,8 +158,6 @@ private:
         Work kind = Work::Foreground;
     };
     std::deque<Pending> m_pending;
-    // Steps of an applyAll still to come, each given the servo's index as it is then.
-    std::deque<std::function<bool(int index, QString *error)>> m_followUps;
     QElapsedTimer m_clock;
     bool m_monitoring = false;
     quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped

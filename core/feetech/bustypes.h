@@ -115,6 +115,8 @@ struct OperationResult
     // Set by BusClient: a control write (torque, goal, a move of all servos), which pages
     // report in place rather than as a change of the servo list.
     bool control = false;
+    // False for a step of an apply chain that more steps follow (the operation goes on).
+    bool final = true;
 };
 
 struct SessionTiming

@@ -39,7 +39,9 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_scan(new BusScan(*m_bus, this))
     , m_flows(new GuidedFlows(*m_bus, this))
     , m_telemetry(new TelemetryCycle(*m_bus, this))
+    , m_apply(new ApplyFlow(*m_bus, *m_flows, this))
 {
+    qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::ServoInfo>();
     qRegisterMetaType<feetech::ScanOptions>();
     qRegisterMetaType<feetech::ReadSource>();
@@ -62,6 +64,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     connect(m_scan, &BusScan::servoFound, this, &Session::servoFound);
     connect(m_scan, &BusScan::finished, this, &Session::onScanFinished);
     connect(m_telemetry, &TelemetryCycle::telemetry, this, &Session::telemetry);
+    connect(m_apply, &ApplyFlow::progress, this, &Session::progress);
     connect(m_telemetry, &TelemetryCycle::statsChanged, this, &Session::telemetryStats);
     m_telemetry->setBusBusy([this] { return m_running; });
     m_telemetry->setCycleEnded([this] {
@@ -310,97 +313,21 @@ void Session::write(const ServoInfo &servo, const QVector<RegisterWrite> &writes
 {
     const quint64 epoch = m_torqueOffEpoch;
     enqueue(Operation::Write, [this, servo, writes, epoch] {
+        if (!refusedAfterTorqueOff(Operation::Write, epoch))
+            m_apply->write(servo, writes, finisher());
+    });
+}
+
+void Session::apply(const ServoInfo &servo, const ApplyPlan &plan)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::Write, [this, servo, plan, epoch] {
         if (refusedAfterTorqueOff(Operation::Write, epoch))
             return;
-        const Register *id = registerAt(servo, u"id");
-        const Register *baud = registerAt(servo, u"baud_rate");
-        if (!servo.hasTable()) {
-            finishOperation({Operation::Write,
-                             false,
-                             Tr::tr("Servo %1 is of an unknown model; its memory is shown "
-                                    "read-only and nothing is written to it.")
-                                 .arg(servo.id),
-                             servo,
-                             {}});
-            return;
-        }
-        for (const RegisterWrite &item : writes) {
-            const int end = item.address + int(item.bytes.size());
-            for (const Register *guarded : {id, baud}) {
-                if (guarded && item.address < guarded->end() && guarded->address < end) {
-                    finishOperation({Operation::Write,
-                                     false,
-                                     Tr::tr("The ID and the baud rate change how the servo is "
-                                            "reached; use Change ID or Change baud rate."),
-                                     servo,
-                                     {}});
-                    return;
-                }
-            }
-        }
-        const Register *lockRegister = registerAt(servo, u"lock");
-        const Register *torque = registerAt(servo, u"torque_enable");
-        for (const RegisterWrite &item : writes) {
-            const bool opensLock = lockRegister && item.address == lockRegister->address;
-            const bool calibrates = torque && item.address == torque->address
-                && !item.bytes.isEmpty()
-                && servo.table().torqueValue(TorqueMode::CalibrateMiddle)
-                    == qint32(quint8(item.bytes.at(0)));
-            if (opensLock || calibrates) {
-                finishOperation({Operation::Write,
-                                 false,
-                                 opensLock ? Tr::tr("The EEPROM lock is opened and closed by "
-                                                    "ServoBench around each EEPROM write; it "
-                                                    "is not written by hand.")
-                                           : Tr::tr("Torque enable 128 recalibrates the middle; "
-                                                    "use Calibrate middle."),
-                                 servo,
-                                 {}});
-                return;
-            }
-        }
-        auto target = std::make_shared<ServoInfo>(servo);
-        const bool eeprom = std::any_of(writes.begin(), writes.end(),
-                                        [](const RegisterWrite &w) { return w.eeprom; });
-        const int total = int(writes.size()) * 2 + (eeprom ? 2 : 0);
-        auto done = std::make_shared<int>(0);
-        const auto counted = [this, done, total](Step step) -> Step {
-            return [this, done, total, step = std::move(step)](StepDone next) {
-                step([this, done, total, next](bool ok, const QString &message) {
-                    emit progress(++*done, total);
-                    next(ok, message);
-                });
-            };
-        };
-        std::vector<Step> steps {m_bus->setBaud(servo.baud)};
-        if (eeprom)
-            steps.push_back(counted(m_bus->lock(target, false)));
-        for (const RegisterWrite &item : writes)
-            steps.push_back(
-                counted(m_bus->write(servo.id, item.address, item.bytes, servo.repliesToWrites(),
-                                     Tr::tr("Writing address %1").arg(item.address))));
-        if (eeprom)
-            steps.push_back(counted(m_bus->lock(target, true)));
-        for (const RegisterWrite &item : writes)
-            steps.push_back(counted(
-                m_bus->read(target, item.address, int(item.bytes.size()), ReadSource::ReadBack)));
-        emit progress(0, total);
-        m_bus->runSteps(
-            std::move(steps), [this, servo, target, eeprom](bool ok, const QString &message) {
-                if (ok || !eeprom) {
-                    finishOperation({Operation::Write,
-                                     ok,
-                                     ok ? Tr::tr("Written and read back.") : message,
-                                     servo,
-                                     {}});
-                    return;
-                }
-                // Never leave the EEPROM open: lock it again, whatever failed.
-                m_bus->runSteps({m_bus->lock(target, true)},
-                                [this, servo, message](bool, const QString &) {
-                                    finishOperation({Operation::Write, false, message, servo, {}});
-                                });
-            });
+        // Each step's result is reported as it comes; the last one ends the operation.
+        m_apply->apply(
+            servo, plan, [this](const OperationResult &step) { emit operationFinished(step); },
+            finisher());
     });
 }
 

@@ -1,6 +1,7 @@
 // The Feetech bus session: one link, and the operations on it run one at a time in order.
 #pragma once
 
+#include "feetech/applyflow.h"
 #include "feetech/busexchange.h"
 #include "feetech/busscan.h"
 #include "feetech/bustypes.h"
@@ -56,6 +57,10 @@ public:
     // EEPROM writes go unlock → write → lock; then every written register is read back.
     // ID and baud changes are refused here: they have their own flows.
     void write(const feetech::ServoInfo &servo, const QVector<feetech::RegisterWrite> &writes);
+    // Everything pending, planned by planApply: the registers, then the ID, then the baud rate,
+    // each only once the one before succeeded. Every step reports its own result; all but the
+    // last have `final` unset.
+    void apply(const feetech::ServoInfo &servo, const feetech::ApplyPlan &plan);
     void changeId(const feetech::ServoInfo &servo, int newId, const QVector<int> &idsInUse);
     void changeBaud(const feetech::ServoInfo &servo, qint32 newBaud);
     void calibrateMiddle(const feetech::ServoInfo &servo);
@@ -112,6 +117,7 @@ private:
     BusScan *m_scan = nullptr;
     GuidedFlows *m_flows = nullptr;
     TelemetryCycle *m_telemetry = nullptr;
+    ApplyFlow *m_apply = nullptr;
     struct Queued
     {
         Operation operation = Operation::Read;

@@ -132,12 +132,12 @@ bool ParameterModel::hasEdits() const
     return false;
 }
 
-QVector<WriteItem> ParameterModel::takeWritePlan()
+QVector<WriteItem> ParameterModel::takeWritePlan(const QStringList &except)
 {
     QVector<WriteItem> plan;
     for (int row = 0; row < m_entries.size(); ++row) {
         Entry &entry = m_entries[row];
-        if (!entry.pending)
+        if (!entry.pending || except.contains(m_definitions.at(row).key))
             continue;
         plan.append({m_definitions.at(row).key, *entry.pending});
         entry.written = entry.pending;

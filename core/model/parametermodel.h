@@ -84,8 +84,9 @@ public:
     void revertAll();
     bool hasEdits() const;
 
-    // The edits to write, in definition order; marks them Writing.
-    QVector<WriteItem> takeWritePlan();
+    // The edits to write, in definition order; marks them Writing. Edits of the keys in
+    // `except` stay edits (a Feetech ID or baud rate, written by a flow of its own later).
+    QVector<WriteItem> takeWritePlan(const QStringList &except = {});
     // The write of `key` could not be sent (link failure, refused): the edit stays, Failed.
     void markFailed(const QString &key);
 

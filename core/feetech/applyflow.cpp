@@ -1,0 +1,190 @@
+// Apply flow: the plan from a servo's pending edits, locked register writes, and the chain.
+#include "feetech/applyflow.h"
+
+#include "feetech/servoparameters.h"
+#include "model/parametermodel.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <memory>
+
+namespace feetech {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
+};
+
+const QString kIdKey = QStringLiteral("id");
+const QString kBaudKey = QStringLiteral("baud_rate");
+
+} // namespace
+
+std::optional<ApplyPlan> planApply(const ServoInfo &servo, const model::ParameterModel &parameters,
+                                   const QVector<int> &idsInUse, QString *error)
+{
+    ApplyPlan plan;
+    QVector<model::WriteItem> items;
+    for (const model::Definition &definition : parameters.definitions()) {
+        const auto pending = parameters.pendingValue(definition.key);
+        if (!pending)
+            continue;
+        if (definition.key == kIdKey)
+            plan.newId = int(*pending);
+        else if (definition.key == kBaudKey)
+            plan.newBaud = baudForCode(int(*pending));
+        else
+            items.append({definition.key, *pending});
+    }
+    if (items.isEmpty() && !plan.newId && !plan.newBaud) {
+        if (error)
+            *error = Tr::tr("Nothing to write.");
+        return std::nullopt;
+    }
+    if (plan.newId && idsInUse.contains(*plan.newId) && *plan.newId != servo.id) {
+        if (error)
+            *error = Tr::tr("ID %1 is already in use on this bus.").arg(*plan.newId);
+        return std::nullopt;
+    }
+    const auto writes = encodeWrites(servo.table(), items, error);
+    if (!writes)
+        return std::nullopt;
+    plan.writes = *writes;
+    for (const model::WriteItem &item : std::as_const(items))
+        plan.writtenKeys.append(item.key);
+    plan.idsInUse = idsInUse;
+    return plan;
+}
+
+ApplyFlow::ApplyFlow(BusExchange &bus, GuidedFlows &flows, QObject *parent)
+    : QObject(parent)
+    , m_bus(bus)
+    , m_flows(flows)
+{ }
+
+QString ApplyFlow::refusal(const ServoInfo &servo, const QVector<RegisterWrite> &writes) const
+{
+    if (!servo.hasTable())
+        return Tr::tr("Servo %1 is of an unknown model; its memory is shown read-only and nothing "
+                      "is written to it.")
+            .arg(servo.id);
+    const Register *lockRegister = registerAt(servo, u"lock");
+    const Register *torque = registerAt(servo, u"torque_enable");
+    for (const RegisterWrite &item : writes) {
+        const int end = item.address + int(item.bytes.size());
+        for (const Register *guarded : {registerAt(servo, kIdKey), registerAt(servo, kBaudKey)}) {
+            if (guarded && item.address < guarded->end() && guarded->address < end)
+                return Tr::tr("The ID and the baud rate change how the servo is reached; use "
+                              "Change ID or Change baud rate.");
+        }
+        if (lockRegister && item.address == lockRegister->address)
+            return Tr::tr("The EEPROM lock is opened and closed by ServoBench around each EEPROM "
+                          "write; it is not written by hand.");
+        const bool calibrates = torque && item.address == torque->address && !item.bytes.isEmpty()
+            && servo.table().torqueValue(TorqueMode::CalibrateMiddle)
+                == qint32(quint8(item.bytes.at(0)));
+        if (calibrates)
+            return Tr::tr("Torque enable 128 recalibrates the middle; use Calibrate middle.");
+    }
+    return {};
+}
+
+void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writes,
+                      GuidedFlows::Finish finish)
+{
+    const QString refused = refusal(servo, writes);
+    if (!refused.isEmpty()) {
+        finish({Operation::Write, false, refused, servo, {}});
+        return;
+    }
+    auto target = std::make_shared<ServoInfo>(servo);
+    const bool eeprom =
+        std::any_of(writes.begin(), writes.end(), [](const RegisterWrite &w) { return w.eeprom; });
+    const int total = int(writes.size()) * 2 + (eeprom ? 2 : 0);
+    auto done = std::make_shared<int>(0);
+    const auto counted = [this, done, total](Step step) -> Step {
+        return [this, done, total, step = std::move(step)](StepDone next) {
+            step([this, done, total, next](bool ok, const QString &message) {
+                emit progress(++*done, total);
+                next(ok, message);
+            });
+        };
+    };
+    std::vector<Step> steps {m_bus.setBaud(servo.baud)};
+    if (eeprom)
+        steps.push_back(counted(m_bus.lock(target, false)));
+    for (const RegisterWrite &item : writes)
+        steps.push_back(
+            counted(m_bus.write(servo.id, item.address, item.bytes, servo.repliesToWrites(),
+                                Tr::tr("Writing address %1").arg(item.address))));
+    if (eeprom)
+        steps.push_back(counted(m_bus.lock(target, true)));
+    for (const RegisterWrite &item : writes)
+        steps.push_back(counted(
+            m_bus.read(target, item.address, int(item.bytes.size()), ReadSource::ReadBack)));
+    emit progress(0, total);
+    m_bus.runSteps(std::move(steps),
+                   [this, finish, servo, target, eeprom](bool ok, const QString &message) {
+                       if (ok || !eeprom) {
+                           finish({Operation::Write,
+                                   ok,
+                                   ok ? Tr::tr("Written and read back.") : message,
+                                   servo,
+                                   {}});
+                           return;
+                       }
+                       // Never leave the EEPROM open: lock it again, whatever failed.
+                       m_bus.runSteps({m_bus.lock(target, true)},
+                                      [finish, servo, message](bool, const QString &) {
+                                          finish({Operation::Write, false, message, servo, {}});
+                                      });
+                   });
+}
+
+void ApplyFlow::apply(const ServoInfo &servo, const ApplyPlan &plan, GuidedFlows::Finish stepDone,
+                      GuidedFlows::Finish finish)
+{
+    auto steps = std::make_shared<std::vector<PlanStep>>();
+    if (!plan.writes.isEmpty())
+        steps->push_back([this, writes = plan.writes](const ServoInfo &at, GuidedFlows::Finish f) {
+            write(at, writes, std::move(f));
+        });
+    if (plan.newId)
+        steps->push_back([this, id = *plan.newId, inUse = plan.idsInUse](const ServoInfo &at,
+                                                                         GuidedFlows::Finish f) {
+            m_flows.changeId(at, id, inUse, std::move(f));
+        });
+    if (plan.newBaud)
+        steps->push_back([this, baud = *plan.newBaud](const ServoInfo &at, GuidedFlows::Finish f) {
+            m_flows.changeBaud(at, baud, std::move(f));
+        });
+    if (steps->empty()) {
+        finish({Operation::Write, false, Tr::tr("Nothing to write."), servo, {}});
+        return;
+    }
+    runChain(servo, steps, 0, std::move(stepDone), std::move(finish));
+}
+
+void ApplyFlow::runChain(const ServoInfo &servo, std::shared_ptr<std::vector<PlanStep>> steps,
+                         std::size_t index, GuidedFlows::Finish stepDone,
+                         GuidedFlows::Finish finish)
+{
+    steps->at(index)(servo, [this, steps, index, stepDone, finish](const OperationResult &result) {
+        // A later step must not act on a servo that is not where we think it is.
+        if (!result.ok || index + 1 == steps->size()) {
+            OperationResult last = result;
+            last.final = true;
+            finish(last);
+            return;
+        }
+        OperationResult step = result;
+        step.final = false;
+        stepDone(step);
+        runChain(result.servo, steps, index + 1, stepDone, finish);
+    });
+}
+
+} // namespace feetech

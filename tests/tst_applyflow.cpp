@@ -1,0 +1,81 @@
+// Tests the apply plan: which edits become register writes, and the ID and baud rate after them.
+#include "feetech/applyflow.h"
+#include "feetech/servoparameters.h"
+#include "model/parametermodel.h"
+
+#include <QtTest>
+
+using namespace feetech;
+
+namespace {
+
+ServoInfo sts3215(quint8 id)
+{
+    ServoInfo servo;
+    servo.id = id;
+    servo.baud = 1000000;
+    servo.model = ModelTable::builtIn().identify(9, 3);
+    return servo;
+}
+
+std::unique_ptr<model::ParameterModel> parametersOf(const ServoInfo &servo)
+{
+    auto parameters = std::make_unique<model::ParameterModel>();
+    parameters->setDefinitions(modelDefinitions(servo.table()));
+    for (const model::Definition &definition : parameters->definitions())
+        parameters->setDeviceValue(definition.key, definition.minimum);
+    return parameters;
+}
+
+} // namespace
+
+class TestApplyFlow : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void registersAreWrittenFirstAndTheIdAndBaudRateLast()
+    {
+        const ServoInfo servo = sts3215(3);
+        auto parameters = parametersOf(servo);
+        QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 65));
+        QVERIFY(parameters->edit(QStringLiteral("id"), 7));
+        QVERIFY(parameters->edit(QStringLiteral("baud_rate"), 4)); // code 4: 115200
+        QString error;
+        const auto plan = planApply(servo, *parameters, {3, 5}, &error);
+        QVERIFY2(plan.has_value(), qPrintable(error));
+        QCOMPARE(plan->writtenKeys, QStringList {QStringLiteral("max_temperature")});
+        QCOMPARE(plan->writes.size(), 1);
+        QCOMPARE(plan->writes.first().address, servo.table().find(u"max_temperature")->address);
+        QVERIFY(plan->writes.first().eeprom);
+        QCOMPARE(plan->newId, std::optional<int>(7));
+        QCOMPARE(plan->newBaud, std::optional<qint32>(115200));
+        QCOMPARE(plan->idsInUse, (QVector<int> {3, 5}));
+        // Planning leaves the model alone: the edits are still there to take.
+        QVERIFY(parameters->pendingValue(QStringLiteral("id")).has_value());
+        QCOMPARE(parameters->state(QStringLiteral("max_temperature")), model::State::Edited);
+    }
+
+    void anIdInUseIsRefusedBeforeAnythingIsPlanned()
+    {
+        const ServoInfo servo = sts3215(3);
+        auto parameters = parametersOf(servo);
+        QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 65));
+        QVERIFY(parameters->edit(QStringLiteral("id"), 5));
+        QString error;
+        QVERIFY(!planApply(servo, *parameters, {3, 5}, &error).has_value());
+        QVERIFY2(error.contains(QStringLiteral("ID 5 is already in use")), qPrintable(error));
+    }
+
+    void nothingPendingIsNothingToWrite()
+    {
+        const ServoInfo servo = sts3215(1);
+        auto parameters = parametersOf(servo);
+        QString error;
+        QVERIFY(!planApply(servo, *parameters, {1}, &error).has_value());
+        QCOMPARE(error, QStringLiteral("Nothing to write."));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestApplyFlow)
+#include "tst_applyflow.moc"
