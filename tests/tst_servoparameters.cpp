@@ -376,6 +376,30 @@ private slots:
         QVERIFY2(error.contains(QStringLiteral("baud_rate")), qPrintable(error));
     }
 
+    void parseValueInRealUnitsScalesByTheRegisterAndReadsTheLocale()
+    {
+        const feetech::Register &voltage = reg(sts(), "max_voltage"); // 0.1 V per step
+        QString error;
+        const auto real = feetech::ValueUnits::Real;
+        QCOMPARE(feetech::parseValue(voltage, QStringLiteral("8.4"), &error, real),
+                 std::optional<qint32>(84));
+        QLocale::setDefault(QLocale(QLocale::German));
+        QCOMPARE(feetech::parseValue(voltage, QStringLiteral("8,4"), &error, real),
+                 std::optional<qint32>(84));
+        QLocale::setDefault(QLocale::c());
+        // The same text in register units is a whole number of steps, or nothing.
+        QCOMPARE(feetech::parseValue(voltage, QStringLiteral("84"), &error),
+                 std::optional<qint32>(84));
+        QVERIFY(!feetech::parseValue(voltage, QStringLiteral("8.4"), &error));
+        // Labels and the baud rate in bps are read the same way in both.
+        QCOMPARE(
+            feetech::parseValue(reg(sts(), "baud_rate"), QStringLiteral("115200"), &error, real),
+            std::optional<qint32>(4));
+        QVERIFY(!feetech::parseValue(voltage, QStringLiteral("high"), &error, real));
+        QVERIFY2(error.contains(QStringLiteral("not a number")), qPrintable(error));
+        QVERIFY(!feetech::parseValue(voltage, QStringLiteral("1e30"), &error, real));
+    }
+
     void parseValueAcceptsChoiceLabelsIgnoringCase()
     {
         QCOMPARE(parsed(reg(sts(), "mode"), QStringLiteral("Step")), 3);

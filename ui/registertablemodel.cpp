@@ -195,22 +195,12 @@ bool RegisterTableModel::setData(const QModelIndex &index, const QVariant &value
     const QString text = value.toString().trimmed();
     if (text.isEmpty())
         return false;
-    std::optional<qint64> raw;
-    for (const feetech::Choice &choice : reg->choices) {
-        if (choice.label.compare(text, Qt::CaseInsensitive) == 0)
-            raw = choice.value;
-    }
-    if (!raw) {
-        bool ok = false;
-        const double real = QLocale().toDouble(text, &ok);
-        const double number = ok ? real : text.toDouble(&ok);
-        if (!ok) {
-            emit editRefused(tr("%1: \"%2\" is not a number.").arg(reg->key, text));
-            return false;
-        }
-        raw = qint64(std::llround(number / reg->scale));
-    }
     QString error;
+    const auto raw = feetech::parseValue(*reg, text, &error, feetech::ValueUnits::Real);
+    if (!raw) {
+        emit editRefused(error);
+        return false;
+    }
     if (!m_parameters->edit(reg->key, *raw, &error)) {
         emit editRefused(error);
         return false;

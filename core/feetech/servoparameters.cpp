@@ -2,6 +2,7 @@
 #include "feetech/servoparameters.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 
 #include <algorithm>
 #include <cmath>
@@ -150,36 +151,47 @@ encodeWrites(const RegisterTable &table, const QVector<model::WriteItem> &items,
     return writes;
 }
 
-std::optional<qint32> parseValue(const Register &reg, const QString &text, QString *error)
+std::optional<qint32> parseValue(const Register &reg, const QString &text, QString *error,
+                                 ValueUnits units)
 {
     const QString trimmed = text.trimmed();
-    bool ok = false;
-    qint64 value = trimmed.toLongLong(&ok);
-    if (reg.key == u"baud_rate" && ok) {
+    std::optional<qint64> parsed;
+    for (const Choice &choice : reg.choices) {
+        if (choice.label.compare(trimmed, Qt::CaseInsensitive) == 0)
+            parsed = choice.value;
+    }
+    bool whole = false;
+    const qint64 number = trimmed.toLongLong(&whole);
+    if (!parsed && whole && reg.key == u"baud_rate") {
         // The baud rate is given in bits per second, not as its code. Checked before narrowing:
         // 4295967296 must not wrap round to 1000000.
-        const std::optional<int> code = value > 0 && value <= std::numeric_limits<qint32>::max()
-            ? baudCode(qint32(value))
+        const std::optional<int> code = number > 0 && number <= std::numeric_limits<qint32>::max()
+            ? baudCode(qint32(number))
             : std::nullopt;
         if (!code) {
             if (error)
                 *error = Tr::tr("baud_rate: %1 bps is not a Feetech baud rate.").arg(trimmed);
             return std::nullopt;
         }
-        value = *code;
-    } else if (!ok) {
-        for (const Choice &choice : reg.choices) {
-            if (choice.label.compare(trimmed, Qt::CaseInsensitive) == 0) {
-                value = choice.value;
-                ok = true;
-            }
-        }
+        parsed = *code;
+    } else if (!parsed && units == ValueUnits::Register && whole) {
+        parsed = number;
+    } else if (!parsed && units == ValueUnits::Real) {
+        bool ok = false;
+        const double local = QLocale().toDouble(trimmed, &ok);
+        const double real = ok ? local : trimmed.toDouble(&ok);
+        const double raw = real / reg.scale;
+        if (ok && std::isfinite(raw) && std::abs(raw) < double(std::numeric_limits<qint32>::max()))
+            parsed = qint64(std::llround(raw));
     }
-    if (!ok) {
+    if (!parsed) {
         if (error)
-            *error = Tr::tr("%1: \"%2\" is not a whole number.").arg(reg.key, trimmed);
+            *error = units == ValueUnits::Real
+                ? Tr::tr("%1: \"%2\" is not a number.").arg(reg.key, trimmed)
+                : Tr::tr("%1: \"%2\" is not a whole number.").arg(reg.key, trimmed);
         return std::nullopt;
     }
+    const qint64 value = *parsed;
     if (value < reg.minimum || value > reg.maximum) {
         if (error)
             *error = Tr::tr("%1 = %2 is out of range (%3 to %4).")

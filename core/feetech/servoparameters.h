@@ -44,9 +44,15 @@ QVector<DecodedRegister> decodeRegisters(const RegisterTable &table, int address
 std::optional<QVector<RegisterWrite>>
 encodeWrites(const RegisterTable &table, const QVector<model::WriteItem> &items, QString *error);
 
-// A value typed by a person ("-100", "1000000" for the baud rate in bps, a choice's label) in
-// register units; nothing and *error when it is not valid for the register.
-std::optional<qint32> parseValue(const Register &reg, const QString &text, QString *error);
+// How a person gave a value: in register units (the command line: "74" for 7.4 V), or in the
+// register's real unit in the user's locale (the memory table: "7,4" or "7.4").
+enum class ValueUnits { Register, Real };
+
+// A value typed by a person (a number in `units`, "1000000" for the baud rate in bps, a
+// choice's label) in register units; nothing and *error when it is not valid for the register.
+// The GUI and the command line both read values with this one function.
+std::optional<qint32> parseValue(const Register &reg, const QString &text, QString *error,
+                                 ValueUnits units = ValueUnits::Register);
 
 // The names of the bits set in a bit-field register ("voltage, temperature"), or "none".
 QString bitNames(const Register &reg, qint32 value);
