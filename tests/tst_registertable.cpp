@@ -211,6 +211,89 @@ private slots:
         QCOMPARE(blockBytes, covered);
     }
 
+    void ramBlocksCoverEveryRamRegisterAndNothingElse_data() { addFamilyRows(); }
+
+    void ramBlocksCoverEveryRamRegisterAndNothingElse()
+    {
+        QFETCH(Family, family);
+        const RegisterTable &table = RegisterTable::forFamily(family);
+        QSet<int> inBlocks;
+        for (const feetech::Block &block : table.ramBlocks()) {
+            for (int address = block.address; address < block.address + block.size; ++address) {
+                QVERIFY(!inBlocks.contains(address));
+                inBlocks.insert(address);
+            }
+        }
+        QSet<int> ram;
+        for (const feetech::Register &reg : table.registers()) {
+            for (int address = reg.address; address < reg.end(); ++address) {
+                if (reg.storage == feetech::Storage::Ram)
+                    ram.insert(address);
+            }
+        }
+        QCOMPARE(inBlocks, ram);
+    }
+
+    void tablesGiveTheirTorqueValuesAndFeedbackBlock()
+    {
+        const RegisterTable &sts = RegisterTable::forFamily(Family::Sts);
+        QCOMPARE(sts.torqueValue(feetech::TorqueMode::Off), std::optional<qint32>(0));
+        QCOMPARE(sts.torqueValue(feetech::TorqueMode::CalibrateMiddle), std::optional<qint32>(128));
+        QVERIFY(!RegisterTable::forFamily(Family::Scs)
+                     .torqueValue(feetech::TorqueMode::CalibrateMiddle)
+                     .has_value());
+        QVERIFY(!RegisterTable::forFamily(Family::Sms)
+                     .torqueValue(feetech::TorqueMode::Damping)
+                     .has_value());
+        for (const Family family : feetech::kAllFamilies) {
+            const feetech::Block block = RegisterTable::forFamily(family).feedbackBlock();
+            QCOMPARE(block.address, 56);
+            QCOMPARE(block.size, 15);
+        }
+        QCOMPARE(feetech::baudRates().size(), 8);
+        QCOMPARE(feetech::baudForCode(4), 115200);
+        QCOMPARE(feetech::defaultBaud(Family::Sms), 115200);
+        QCOMPARE(feetech::defaultBaud(Family::Hls), 1000000);
+    }
+
+    void tableFactsThatContradictTheRegistersAreRefused()
+    {
+        QJsonArray registers {
+            with(registerObject(40, 1, QStringLiteral("torque_enable"), 0, 1),
+                 QStringLiteral("choices"),
+                 QJsonArray {QJsonObject {{QStringLiteral("value"), 0},
+                                          {QStringLiteral("label"), QStringLiteral("Off")}},
+                             QJsonObject {{QStringLiteral("value"), 1},
+                                          {QStringLiteral("label"), QStringLiteral("On")}}}),
+        };
+        QJsonObject root = QJsonDocument::fromJson(tableJson(registers)).object();
+        QString error;
+        // Torque enable without its values.
+        QVERIFY(!RegisterTable::fromJson(QJsonDocument(root).toJson(), kSource, &error));
+        QVERIFY2(error.contains(QStringLiteral("torque_enable_values")), qPrintable(error));
+        // A value that is not one of its choices.
+        root.insert(QStringLiteral("torque_enable_values"),
+                    QJsonObject {{QStringLiteral("off"), 0},
+                                 {QStringLiteral("on"), 1},
+                                 {QStringLiteral("damping"), 2}});
+        QVERIFY(!RegisterTable::fromJson(QJsonDocument(root).toJson(), kSource, &error));
+        QVERIFY2(error.startsWith(kSource) && error.contains(QStringLiteral("damping")),
+                 qPrintable(error));
+        root.insert(QStringLiteral("torque_enable_values"),
+                    QJsonObject {{QStringLiteral("off"), 0}, {QStringLiteral("on"), 1}});
+        QVERIFY2(RegisterTable::fromJson(QJsonDocument(root).toJson(), kSource, &error),
+                 qPrintable(error));
+        // The model table's baud codes: a rate listed twice.
+        QVERIFY(!ModelTable::fromJson(
+            QJsonDocument(
+                QJsonObject {{QStringLiteral("format"), 1},
+                             {QStringLiteral("baud_rates"), QJsonArray {1000000, 1000000}},
+                             {QStringLiteral("models"), QJsonArray {}}})
+                .toJson(),
+            kSource, &error));
+        QVERIFY2(error.contains(QStringLiteral("baud_rates")), qPrintable(error));
+    }
+
     void stsTableReadsInThreeBlocks()
     {
         // Checked by hand against registers-sts.json: 0-49 (up to torque limit at 48), 55-70

@@ -331,17 +331,7 @@ void BusClient::refreshRam(int index)
     const ServoInfo &info = servo(index).info;
     if (!info.hasTable())
         return;
-    // The RAM registers in runs without gaps; a table block may begin in EEPROM and go on
-    // into RAM (torque enable, goal position...).
-    QVector<Block> ram;
-    for (const Register &reg : info.table().registers()) {
-        if (reg.storage != Storage::Ram)
-            continue;
-        if (!ram.isEmpty() && ram.last().address + ram.last().size == reg.address)
-            ram.last().size += reg.size;
-        else
-            ram.append({reg.address, reg.size});
-    }
+    const QVector<Block> ram = info.table().ramBlocks();
     startOperation(index, nullptr, Work::Background, [ram](Session &s, const ServoInfo &target) {
         s.read(target, ram, ReadSource::Refresh);
     });

@@ -467,6 +467,20 @@ quint16 modelNumber(quint8 major, quint8 minor, ByteOrder order)
     return decodeRaw(bytes, order);
 }
 
+QVector<Block> RegisterTable::ramBlocks() const
+{
+    QVector<Block> ram;
+    for (const Register &reg : m_registers) {
+        if (reg.storage != Storage::Ram)
+            continue;
+        if (!ram.isEmpty() && ram.last().address + ram.last().size == reg.address)
+            ram.last().size += reg.size;
+        else
+            ram.append({reg.address, reg.size});
+    }
+    return ram;
+}
+
 const RegisterTable &RegisterTable::rawView()
 {
     static const RegisterTable table = [] {

@@ -87,6 +87,9 @@ public:
     const Register *at(int address) const; // the register starting at this address
     ValueFormat format(const Register &reg) const { return {reg.size, m_byteOrder, reg.signBit}; }
     QVector<Block> blocks() const;
+    // The RAM registers in runs without gaps (a block of blocks() may begin in EEPROM and go
+    // on into RAM): what a background refresh reads.
+    QVector<Block> ramBlocks() const;
     // The value torque_enable takes for `mode`; none where the family lacks it.
     std::optional<qint32> torqueValue(TorqueMode mode) const
     {
