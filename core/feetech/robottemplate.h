@@ -1,0 +1,52 @@
+// Robot templates: an arm's joints (name, ID, model, full turn) and the settings set-up applies.
+#pragma once
+
+#include "feetech/feetechpacket.h"
+#include "feetech/registertable.h"
+
+#include <QByteArray>
+#include <QMap>
+#include <QString>
+#include <QVector>
+
+#include <optional>
+
+namespace feetech {
+
+struct RobotJoint
+{
+    QString name; // snake_case, as LeRobot names its motors: "shoulder_pan"
+    int id = 1;
+    QString model; // as the model table names it: "STS3215"
+    bool fullTurn = false; // turns without end stops (a wrist roll): calibrated 0-4095
+    // Register values (register units, by key) written and verified at set-up: the template's
+    // common settings with the joint's own on top.
+    QMap<QString, qint32> settings;
+};
+
+struct RobotTemplate
+{
+    QString name; // "SO-101 follower arm"
+    qint32 baud = 1000000; // every joint's rate after set-up
+    QVector<RobotJoint> joints;
+
+    const RobotJoint *joint(QStringView name) const;
+};
+
+// Parses and validates a template: format, names, unique IDs, known models with a register
+// table, and every setting a writable register of that model within its range (the ID, the baud
+// rate, the lock and torque enable are set by the flows, never by a template). On failure
+// nothing, and *error naming `source` and the joint and field at fault.
+std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const QString &source,
+                                                   QString *error);
+// The file format robotTemplateFromJson reads; common settings are written out per joint.
+QByteArray robotTemplateToJson(const RobotTemplate &robot);
+
+// The templates compiled into the application (SO-100 and SO-101 follower and leader arms).
+const QVector<RobotTemplate> &builtInRobotTemplates();
+// A template from a file a user saved; nothing and *error (naming the file) when unreadable.
+std::optional<RobotTemplate> loadRobotTemplate(const QString &path, QString *error);
+// Saves atomically; false and *error (naming the file) when it could not.
+bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, QString *error);
+
+} // namespace feetech

@@ -1,0 +1,206 @@
+// Tests robot templates: the built-in arms, the checks that name the field at fault, saving.
+#include "feetech/robottemplate.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using feetech::RobotTemplate;
+
+namespace {
+
+const QString kSource = QStringLiteral("arm.json");
+
+QJsonObject joint(const QString &name, int id, const QJsonObject &settings = {})
+{
+    QJsonObject object {{QStringLiteral("name"), name},
+                        {QStringLiteral("id"), id},
+                        {QStringLiteral("model"), QStringLiteral("STS3215")}};
+    if (!settings.isEmpty())
+        object.insert(QStringLiteral("settings"), settings);
+    return object;
+}
+
+QJsonObject armObject(const QJsonArray &joints)
+{
+    return {{QStringLiteral("format"), QStringLiteral("servobench-robot")},
+            {QStringLiteral("version"), 1},
+            {QStringLiteral("name"), QStringLiteral("Test arm")},
+            {QStringLiteral("settings"), QJsonObject {{QStringLiteral("return_delay"), 0}}},
+            {QStringLiteral("joints"), joints}};
+}
+
+QByteArray json(const QJsonObject &object)
+{
+    return QJsonDocument(object).toJson();
+}
+
+} // namespace
+
+class TestRobotTemplate : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void theFourLeRobotArmsAreBuiltIn()
+    {
+        const auto &templates = feetech::builtInRobotTemplates();
+        QStringList names;
+        for (const RobotTemplate &robot : templates)
+            names.append(robot.name);
+        QCOMPARE(names,
+                 (QStringList {
+                     QStringLiteral("SO-100 follower arm"), QStringLiteral("SO-100 leader arm"),
+                     QStringLiteral("SO-101 follower arm"), QStringLiteral("SO-101 leader arm")}));
+        const QStringList joints {QStringLiteral("shoulder_pan"), QStringLiteral("shoulder_lift"),
+                                  QStringLiteral("elbow_flex"),   QStringLiteral("wrist_flex"),
+                                  QStringLiteral("wrist_roll"),   QStringLiteral("gripper")};
+        for (const RobotTemplate &robot : templates) {
+            QCOMPARE(robot.baud, 1000000);
+            QCOMPARE(robot.joints.size(), 6);
+            for (int i = 0; i < 6; ++i) {
+                QCOMPARE(robot.joints.at(i).name, joints.at(i));
+                QCOMPARE(robot.joints.at(i).id, i + 1);
+                QCOMPARE(robot.joints.at(i).model, QStringLiteral("STS3215"));
+                QCOMPARE(robot.joints.at(i).fullTurn, joints.at(i) == u"wrist_roll");
+                QCOMPARE(robot.joints.at(i).settings.value(QStringLiteral("return_delay"), -1), 0);
+                QCOMPARE(robot.joints.at(i).settings.value(QStringLiteral("acceleration"), -1),
+                         254);
+            }
+        }
+    }
+
+    void followersGetLeRobotsGainsAndAGentlerGripper()
+    {
+        const RobotTemplate &follower = feetech::builtInRobotTemplates().at(2);
+        const feetech::RobotJoint *elbow = follower.joint(u"elbow_flex");
+        QVERIFY(elbow);
+        QCOMPARE(elbow->settings.value(QStringLiteral("p_gain")), 16);
+        QCOMPARE(elbow->settings.value(QStringLiteral("i_gain")), 0);
+        QCOMPARE(elbow->settings.value(QStringLiteral("d_gain")), 32);
+        QVERIFY(!elbow->settings.contains(QStringLiteral("max_torque")));
+        const feetech::RobotJoint *gripper = follower.joint(u"gripper");
+        QCOMPARE(gripper->settings.value(QStringLiteral("max_torque")), 500);
+        QCOMPARE(gripper->settings.value(QStringLiteral("protection_current")), 250);
+        QCOMPARE(gripper->settings.value(QStringLiteral("overload_torque")), 25);
+        // A leader arm is moved by hand: no gains of its own.
+        const RobotTemplate &leader = feetech::builtInRobotTemplates().at(3);
+        QVERIFY(!leader.joint(u"elbow_flex")->settings.contains(QStringLiteral("p_gain")));
+    }
+
+    void aJointsOwnSettingsGoOnTopOfTheCommonOnes()
+    {
+        QString error;
+        const auto robot = feetech::robotTemplateFromJson(
+            json(
+                armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("return_delay"), 10}}),
+                           joint(QStringLiteral("arm"), 2)})),
+            kSource, &error);
+        QVERIFY2(robot, qPrintable(error));
+        QCOMPARE(robot->joints.at(0).settings.value(QStringLiteral("return_delay")), 10);
+        QCOMPARE(robot->joints.at(1).settings.value(QStringLiteral("return_delay")), 0);
+    }
+
+    void aTemplateSavedAndLoadedIsTheSame()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("mine.json"));
+        RobotTemplate robot = feetech::builtInRobotTemplates().at(2);
+        robot.name = QStringLiteral("My arm");
+        robot.joints[5].id = 9;
+        QString error;
+        QVERIFY2(feetech::saveRobotTemplate(robot, path, &error), qPrintable(error));
+        const auto loaded = feetech::loadRobotTemplate(path, &error);
+        QVERIFY2(loaded, qPrintable(error));
+        QCOMPARE(loaded->name, robot.name);
+        QCOMPARE(loaded->joints.size(), 6);
+        for (int i = 0; i < 6; ++i) {
+            QCOMPARE(loaded->joints.at(i).id, robot.joints.at(i).id);
+            QCOMPARE(loaded->joints.at(i).fullTurn, robot.joints.at(i).fullTurn);
+            QCOMPARE(loaded->joints.at(i).settings, robot.joints.at(i).settings);
+        }
+    }
+
+    void aTemplateThatCannotBeSavedSaysWhereAndWhy()
+    {
+        QString error;
+        QVERIFY(!feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(),
+                                            QStringLiteral("/proc/no-such-dir/arm.json"), &error));
+        QVERIFY2(error.contains(QStringLiteral("arm.json")), qPrintable(error));
+        QVERIFY(!feetech::loadRobotTemplate(QStringLiteral("/no/such/arm.json"), &error));
+        QVERIFY2(error.contains(QStringLiteral("arm.json")), qPrintable(error));
+    }
+
+    void aBadTemplateIsRefusedNamingTheJointAndField_data()
+    {
+        QTest::addColumn<QByteArray>("document");
+        QTest::addColumn<QString>("mention");
+        const QJsonArray two {joint(QStringLiteral("base"), 1), joint(QStringLiteral("arm"), 2)};
+        QTest::newRow("not JSON") << QByteArray("{\"format\": ") << QStringLiteral("JSON");
+        QJsonObject wrong = armObject(two);
+        wrong.insert(QStringLiteral("format"), QStringLiteral("servobench-pose"));
+        QTest::newRow("another file kind") << json(wrong) << QStringLiteral("servobench-robot");
+        QJsonObject unnamed = armObject(two);
+        unnamed.insert(QStringLiteral("name"), QStringLiteral("  "));
+        QTest::newRow("no name") << json(unnamed) << QStringLiteral("\"name\"");
+        QJsonObject baud = armObject(two);
+        baud.insert(QStringLiteral("baud"), 123456);
+        QTest::newRow("no Feetech rate") << json(baud) << QStringLiteral("\"baud\"");
+        QTest::newRow("no joints") << json(armObject({})) << QStringLiteral("joints");
+        QTest::newRow("same ID twice")
+            << json(armObject({joint(QStringLiteral("base"), 1), joint(QStringLiteral("arm"), 1)}))
+            << QStringLiteral("joint 2 (arm): ID 1 is already base's");
+        QTest::newRow("same name twice")
+            << json(armObject({joint(QStringLiteral("base"), 1), joint(QStringLiteral("base"), 2)}))
+            << QStringLiteral("\"base\" is used twice");
+        QJsonObject unknownModel = joint(QStringLiteral("arm"), 2);
+        unknownModel.insert(QStringLiteral("model"), QStringLiteral("XL330"));
+        QTest::newRow("unknown model")
+            << json(armObject({joint(QStringLiteral("base"), 1), unknownModel}))
+            << QStringLiteral("joint 2 (arm): \"model\": \"XL330\"");
+        QTest::newRow("ID out of range") << json(armObject({joint(QStringLiteral("base"), 254)}))
+                                         << QStringLiteral("joint 1 (base): \"id\"");
+        QTest::newRow("bad joint name") << json(armObject({joint(QStringLiteral("2nd joint"), 1)}))
+                                        << QStringLiteral("joint 1");
+        QTest::newRow("setting out of range")
+            << json(
+                   armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("p_gain"), 300}})}))
+            << QStringLiteral(
+                   "joint 1 (base): settings: \"p_gain\" = 300 is out of range (0 to 254)");
+        QTest::newRow("register it has not")
+            << json(armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("gain"), 3}})}))
+            << QStringLiteral("\"gain\" is no writable register");
+        QTest::newRow("read-only register")
+            << json(armObject(
+                   {joint(QStringLiteral("base"), 1, {{QStringLiteral("present_position"), 3}})}))
+            << QStringLiteral("\"present_position\" is no writable register");
+        QTest::newRow("the ID by the back door")
+            << json(armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("id"), 3}})}))
+            << QStringLiteral("\"id\" is set by its own flow");
+        QTest::newRow("the lock by the back door")
+            << json(armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("lock"), 0}})}))
+            << QStringLiteral("\"lock\" is set by its own flow");
+        QTest::newRow("a setting that is no number")
+            << json(armObject({joint(QStringLiteral("base"), 1,
+                                     {{QStringLiteral("p_gain"), QStringLiteral("16")}})}))
+            << QStringLiteral("\"p_gain\" must be a whole number");
+        QJsonObject extra = joint(QStringLiteral("base"), 1);
+        extra.insert(QStringLiteral("colour"), QStringLiteral("red"));
+        QTest::newRow("unknown entry") << json(armObject({extra})) << QStringLiteral("\"colour\"");
+    }
+
+    void aBadTemplateIsRefusedNamingTheJointAndField()
+    {
+        QFETCH(QByteArray, document);
+        QFETCH(QString, mention);
+        QString error;
+        QVERIFY(!feetech::robotTemplateFromJson(document, kSource, &error));
+        QVERIFY2(error.startsWith(kSource + QStringLiteral(": ")), qPrintable(error));
+        QVERIFY2(error.contains(mention), qPrintable(error));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRobotTemplate)
+#include "tst_robottemplate.moc"
