@@ -1,7 +1,7 @@
 // Feetech bus session: adaptive scan, identification, block reads, locked EEPROM writes, flows.
 #include "feetech/feetechsession.h"
 
-#include "cli/decoder.h"
+#include "feetech/feetechdescription.h"
 #include "link/transport.h"
 
 #include <QCoreApplication>
@@ -24,15 +24,6 @@ constexpr int kIdentitySize = 9; // addresses 0-8: firmware, END, model, ID, bau
 constexpr quint8 kTorqueOff = 0;
 constexpr std::size_t kLatencyWindow = 8;
 constexpr quint8 kTorqueCalibrate = 128;
-
-QString describe(const QByteArray &frame, const QByteArray &request)
-{
-    // A reply reads best next to the request that asked for it (a READ's data then gets its
-    // address); the request itself is described alone.
-    const QByteArray stream = frame == request ? frame : request + frame;
-    const auto frames = cli::decodeStream(cli::Protocol::Feetech, stream);
-    return frames.isEmpty() ? QString() : frames.last().summary;
-}
 
 QString failureText(const seriallink::TransactionResult &result)
 {
@@ -163,7 +154,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
     , m_timing(timing)
     , m_transport(new seriallink::SerialTransport(this))
-    , m_engine(new seriallink::RequestEngine(*m_transport, m_format, describe, this))
+    , m_engine(new seriallink::RequestEngine(*m_transport, m_format, describeFrame, this))
     , m_reopenTimer(new QTimer(this))
 {
     qRegisterMetaType<feetech::ServoInfo>();
