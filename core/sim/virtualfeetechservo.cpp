@@ -1,6 +1,8 @@
 // Simulated Feetech servo (spec/feetech-protocol.md §2, §5-§10): registers, instructions, physics.
 #include "sim/virtualfeetechservo.h"
 
+#include "sim/simulatordata.h"
+
 #include <QtGlobal>
 
 #include <algorithm>
@@ -22,39 +24,6 @@ constexpr qint32 kMiddlePosition = 2048;
 constexpr int kSmsMinimumReturnDelay = 50; // values below behave as 50 (100 µs), spec §5.2
 constexpr double kStoppedSpeed = 0.5; // step/s: below this the horn counts as standing still
 
-// Factory values the simulator uses where a family table leaves the default open, so that a
-// fresh servo is not in alarm (max temperature 0) or powerless (max torque 0).
-std::optional<qint32> fallbackDefault(Family family, QStringView key)
-{
-    struct Fallback
-    {
-        const char16_t *key;
-        qint32 value;
-    };
-    static const Fallback kCommon[] = {
-        {u"max_temperature", 70},
-        {u"max_torque", 1000},
-        {u"holding_torque", 20},
-        {u"protection_time", 200},
-        {u"overload_torque", 80},
-        {u"overcurrent_protection_time", 200},
-        {u"cw_dead_zone", 1},
-        {u"ccw_dead_zone", 1},
-        {u"angular_resolution", 1},
-        {u"protection_current", 500},
-        {u"p_gain", 32},
-        {u"d_gain", 32},
-    };
-    // SCS documents min voltage 4.0 V but no max: 9.0 V keeps a 7.4 V supply in range.
-    if (family == Family::Scs && key == QStringView(u"max_voltage"))
-        return 90;
-    for (const Fallback &fallback : kCommon) {
-        if (key == QStringView(fallback.key))
-            return fallback.value;
-    }
-    return std::nullopt;
-}
-
 double wrap4096(double position)
 {
     double wrapped = std::fmod(position, double(kPositionSteps4096));
@@ -74,35 +43,6 @@ int sign(double value)
 }
 
 } // namespace
-
-int VirtualFeetechServo::firmwareMajor(Family family)
-{
-    switch (family) {
-    case Family::Scs:
-        return 1;
-    case Family::Sts:
-    case Family::Hls:
-        return 3;
-    case Family::Sms:
-        return 2;
-    }
-    return 0;
-}
-
-int VirtualFeetechServo::firmwareMinor(Family family)
-{
-    switch (family) {
-    case Family::Scs:
-        return 0;
-    case Family::Sts:
-        return 10;
-    case Family::Hls:
-        return 45;
-    case Family::Sms:
-        return 54;
-    }
-    return 0;
-}
 
 std::optional<int> VirtualFeetechServo::baudCode(qint32 baud)
 {
@@ -170,10 +110,11 @@ VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8
     m_keys.presentCurrent = find(u"present_current");
 
     // Factory state: table defaults, then identity.
+    const SimulatorData &data = SimulatorData::builtIn();
     for (const Register &reg : m_table->registers())
-        put(&reg, reg.defaultValue.value_or(fallbackDefault(family(), reg.key).value_or(0)));
-    put(find(u"firmware_major"), firmwareMajor(family()));
-    put(find(u"firmware_minor"), firmwareMinor(family()));
+        put(&reg, reg.defaultValue.value_or(data.fallbackDefault(family(), reg.key).value_or(0)));
+    put(find(u"firmware_major"), data.firmware(family()).major);
+    put(find(u"firmware_minor"), data.firmware(family()).minor);
     put(find(u"byte_order"), m_table->byteOrder() == feetech::ByteOrder::Big ? 1 : 0);
     put(find(u"model_major"), model.major);
     put(find(u"model_minor"), model.minor);

@@ -45,12 +45,6 @@ public:
     static constexpr double kThermalRiseCelsiusPerAmp = 15.0; // steady state above ambient
     static constexpr double kThermalTimeConstantS = 120.0;
 
-    // Firmware versions the simulated servos report (spec §2.2 / §10 support rules):
-    // STS 3.10 (0x0B with and without position), HLS 3.45 (both forms), SMS 2.54 (torque
-    // enable 128, no 0x0B), SCS 1.0 (neither).
-    static int firmwareMajor(feetech::Family family);
-    static int firmwareMinor(feetech::Family family);
-
     // Baud-rate codes 0-7 of spec §6.
     static std::optional<int> baudCode(qint32 baud);
     static qint32 baudForCode(int code); // 0 for a code outside 0-7
