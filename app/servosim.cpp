@@ -1,6 +1,6 @@
 // servosim: simulated PTK servo or Feetech bus on a pseudo-terminal, for users and tests.
 #include "sim/simulator.h"
-#include "sim/unixsignals.h"
+#include "util/unixsignals.h"
 #include "version.h"
 
 #include <QCoreApplication>
@@ -34,11 +34,11 @@ int main(int argc, char *argv[])
         return 2;
     }
 
-    sim::UnixSignalWatcher watcher;
+    util::UnixSignalWatcher watcher;
     watcher.watch(SIGINT);
     watcher.watch(SIGTERM);
     watcher.watch(SIGHUP);
-    QObject::connect(&watcher, &sim::UnixSignalWatcher::received, &app, [&](int number) {
+    QObject::connect(&watcher, &util::UnixSignalWatcher::received, &app, [&](int number) {
         if (number == SIGHUP)
             simulator->powerCycle();
         else

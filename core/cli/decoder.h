@@ -1,9 +1,10 @@
-// Splits a captured byte stream into PTK or Feetech frames and explains each one.
+// `servoctl decode`: picks the protocol of a captured byte stream and prints its frames.
 #pragma once
+
+#include "link/framedescription.h"
 
 #include <QByteArray>
 #include <QJsonObject>
-#include <QString>
 #include <QVector>
 
 #include <optional>
@@ -12,22 +13,12 @@ namespace cli {
 
 enum class Protocol { Ptk, Feetech };
 
-struct DecodedFrame
-{
-    QString kind; // ptk: query, write, request, reply; feetech: instruction, status; or garbage
-    QByteArray bytes;
-    qint64 offset = 0;
-    bool checksumValid = true;
-    QString summary; // one line for people
-    QJsonObject fields; // the same, for --json
-};
+using DecodedFrame = seriallink::DecodedFrame;
 
 // PTK when the stream starts (after any garbage) with AF FA, Feetech with FF FF.
 std::optional<Protocol> guessProtocol(const QByteArray &stream);
 
-// Every frame, frame with a bad checksum and run of stray bytes, in stream order. PTK replies
-// are attributed to the query before them; Feetech frames from a servo the previous instruction
-// addressed are read as status packets.
+// Every frame of the stream explained by its protocol (ptk::decodeStream, feetech::decodeStream).
 QVector<DecodedFrame> decodeStream(Protocol protocol, const QByteArray &stream);
 
 QJsonObject toJson(const DecodedFrame &frame);

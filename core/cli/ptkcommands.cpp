@@ -4,8 +4,8 @@
 #include "cli/servoctl.h"
 #include "profile/profile.h"
 #include "ptk/ptksession.h"
-#include "sim/unixsignals.h"
 #include "util/hex.h"
+#include "util/unixsignals.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -459,10 +459,10 @@ seriallink::EchoMode echoModeOption(const Arguments &args)
 void runUntilInterrupted(QEventLoop &loop, std::optional<double> seconds,
                          const std::function<void()> &onSignal)
 {
-    sim::UnixSignalWatcher signalWatcher;
+    util::UnixSignalWatcher signalWatcher;
     signalWatcher.watch(SIGINT);
     signalWatcher.watch(SIGTERM);
-    QObject::connect(&signalWatcher, &sim::UnixSignalWatcher::received, &loop, [&loop, &onSignal] {
+    QObject::connect(&signalWatcher, &util::UnixSignalWatcher::received, &loop, [&loop, &onSignal] {
         if (onSignal)
             onSignal();
         else

@@ -1,7 +1,7 @@
 // Feetech bus session: the link, the operation queue, and each operation handed to its part.
 #include "feetech/feetechsession.h"
 
-#include "cli/decoder.h"
+#include "feetech/feetechdescription.h"
 #include "link/linksession.h"
 #include "link/transport.h"
 
@@ -20,21 +20,12 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
 
-QString describe(const QByteArray &frame, const QByteArray &request)
-{
-    // A reply reads best next to the request that asked for it (a READ's data then gets its
-    // address); the request itself is described alone.
-    const QByteArray stream = frame == request ? frame : request + frame;
-    const auto frames = cli::decodeStream(cli::Protocol::Feetech, stream);
-    return frames.isEmpty() ? QString() : frames.last().summary;
-}
-
 } // namespace
 
 Session::Session(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
     , m_timing(timing)
-    , m_link(new seriallink::LinkSession(m_format, describe, this))
+    , m_link(new seriallink::LinkSession(m_format, describeFrame, this))
     , m_bus(new BusExchange(*m_link, m_timing, this))
     , m_scan(new BusScan(*m_bus, this))
     , m_flows(new GuidedFlows(*m_bus, this))

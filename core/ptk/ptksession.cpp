@@ -1,8 +1,8 @@
 // PTK session: the poll loop, the Apply sequence with its gaps, read-back and reconnection.
 #include "ptk/ptksession.h"
 
-#include "cli/decoder.h"
 #include "link/linksession.h"
+#include "ptk/ptkdescription.h"
 
 #include <QCoreApplication>
 
@@ -17,14 +17,6 @@ struct Tr
 
 constexpr int kQueryCount = int(std::tuple_size_v<std::decay_t<decltype(queryLayouts())>>);
 constexpr int kWriteCount = int(std::tuple_size_v<std::decay_t<decltype(writeLayouts())>>);
-
-// Packet-log meaning of a PTK frame; a reply is read next to the query it answers.
-QString describe(const QByteArray &frame, const QByteArray &request)
-{
-    const bool isReply = frame.size() == kReplySize && request.size() == kRequestSize;
-    const auto frames = cli::decodeStream(cli::Protocol::Ptk, isReply ? request + frame : frame);
-    return frames.isEmpty() ? QString() : frames.last().summary;
-}
 
 // Replies carry no command byte, so a reply that cannot belong to this query is refused: a
 // word no parameter uses is zero, and on/off parameters are 0 or 1 (spec, read map).
@@ -55,7 +47,7 @@ QString parameterNames(const FrameLayout &layout)
 Session::Session(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
     , m_timing(timing)
-    , m_link(new seriallink::LinkSession(m_format, describe, this))
+    , m_link(new seriallink::LinkSession(m_format, describeFrame, this))
     , m_engine(&m_link->engine())
     , m_pollTimer(new QTimer(this))
 {

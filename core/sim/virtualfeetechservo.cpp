@@ -1,5 +1,7 @@
-// Simulated Feetech servo (spec/feetech-protocol.md §2, §5-§10): registers, instructions, physics.
+// Simulated Feetech servo (spec/feetech-protocol.md §2, §5-§10): registers and instructions.
 #include "sim/virtualfeetechservo.h"
+
+#include "sim/simulatordata.h"
 
 #include <QtGlobal>
 
@@ -16,93 +18,11 @@ using feetech::Storage;
 
 namespace {
 
-constexpr int kPositionSteps4096 = 4096;
-constexpr int kScsMaxPosition = 1023;
+constexpr int kPositionSteps4096 = ServoMotion::kFullCircleSteps;
 constexpr qint32 kMiddlePosition = 2048;
 constexpr int kSmsMinimumReturnDelay = 50; // values below behave as 50 (100 µs), spec §5.2
-constexpr double kStoppedSpeed = 0.5; // step/s: below this the horn counts as standing still
-
-// Factory values the simulator uses where a family table leaves the default open, so that a
-// fresh servo is not in alarm (max temperature 0) or powerless (max torque 0).
-std::optional<qint32> fallbackDefault(Family family, QStringView key)
-{
-    struct Fallback
-    {
-        const char16_t *key;
-        qint32 value;
-    };
-    static const Fallback kCommon[] = {
-        {u"max_temperature", 70},
-        {u"max_torque", 1000},
-        {u"holding_torque", 20},
-        {u"protection_time", 200},
-        {u"overload_torque", 80},
-        {u"overcurrent_protection_time", 200},
-        {u"cw_dead_zone", 1},
-        {u"ccw_dead_zone", 1},
-        {u"angular_resolution", 1},
-        {u"protection_current", 500},
-        {u"p_gain", 32},
-        {u"d_gain", 32},
-    };
-    // SCS documents min voltage 4.0 V but no max: 9.0 V keeps a 7.4 V supply in range.
-    if (family == Family::Scs && key == QStringView(u"max_voltage"))
-        return 90;
-    for (const Fallback &fallback : kCommon) {
-        if (key == QStringView(fallback.key))
-            return fallback.value;
-    }
-    return std::nullopt;
-}
-
-double wrap4096(double position)
-{
-    double wrapped = std::fmod(position, double(kPositionSteps4096));
-    if (wrapped < 0)
-        wrapped += kPositionSteps4096;
-    return wrapped;
-}
-
-int wrap4096(int position)
-{
-    return ((position % kPositionSteps4096) + kPositionSteps4096) % kPositionSteps4096;
-}
-
-int sign(double value)
-{
-    return value > 0 ? 1 : (value < 0 ? -1 : 0);
-}
 
 } // namespace
-
-int VirtualFeetechServo::firmwareMajor(Family family)
-{
-    switch (family) {
-    case Family::Scs:
-        return 1;
-    case Family::Sts:
-    case Family::Hls:
-        return 3;
-    case Family::Sms:
-        return 2;
-    }
-    return 0;
-}
-
-int VirtualFeetechServo::firmwareMinor(Family family)
-{
-    switch (family) {
-    case Family::Scs:
-        return 0;
-    case Family::Sts:
-        return 10;
-    case Family::Hls:
-        return 45;
-    case Family::Sms:
-        return 54;
-    }
-    return 0;
-}
 
 std::optional<int> VirtualFeetechServo::baudCode(qint32 baud)
 {
@@ -122,6 +42,8 @@ qint32 VirtualFeetechServo::defaultBaud(Family family)
 VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8 id, qint32 baud)
     : m_table(&feetech::RegisterTable::forFamily(model.family.value_or(Family::Sts)))
     , m_model(model)
+    , m_motion(model.family != Family::Scs,
+               model.family == Family::Hls ? kDefaultHlsSupplyVolts : kDefaultSupplyVolts)
 {
     Q_ASSERT(model.family);
     for (const Register &reg : m_table->registers()) {
@@ -170,10 +92,11 @@ VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8
     m_keys.presentCurrent = find(u"present_current");
 
     // Factory state: table defaults, then identity.
+    const SimulatorData &data = SimulatorData::builtIn();
     for (const Register &reg : m_table->registers())
-        put(&reg, reg.defaultValue.value_or(fallbackDefault(family(), reg.key).value_or(0)));
-    put(find(u"firmware_major"), firmwareMajor(family()));
-    put(find(u"firmware_minor"), firmwareMinor(family()));
+        put(&reg, reg.defaultValue.value_or(data.fallbackDefault(family(), reg.key).value_or(0)));
+    put(find(u"firmware_major"), data.firmware(family()).major);
+    put(find(u"firmware_minor"), data.firmware(family()).minor);
     put(find(u"byte_order"), m_table->byteOrder() == feetech::ByteOrder::Big ? 1 : 0);
     put(find(u"model_major"), model.major);
     put(find(u"model_minor"), model.minor);
@@ -187,9 +110,6 @@ VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8
         putRegisterBytes(reg, m_registers, target);
     }
     m_factory = m_image;
-
-    m_supplyVolts = family() == Family::Hls ? kDefaultHlsSupplyVolts : kDefaultSupplyVolts;
-    m_position = is4096() ? kMiddlePosition : (kScsMaxPosition + 1) / 2;
     powerCycle();
 }
 
@@ -310,12 +230,7 @@ void VirtualFeetechServo::powerCycle()
     for (const Register &reg : m_table->registers())
         putRegisterBytes(reg, reg.storage == Storage::Eeprom ? m_image : m_powerOnRam, m_registers);
     m_pending.reset();
-    m_velocity = 0.0;
-    m_appliedAcceleration = 0.0;
-    m_loadPermille = 0.0;
-    m_amps = kIdleAmps;
-    m_overloaded = false;
-    m_overloadSeconds = 0.0;
+    m_motion.stop();
 
     put(m_keys.lock, 1);
     put(m_keys.torqueEnable, 0);
@@ -418,8 +333,7 @@ std::optional<QByteArray> VirtualFeetechServo::execute(const feetech::Packet &pa
     case Instruction::Reset:
         // Clears the alarm latches; multi-turn counts are not simulated. Conditions that still
         // hold (voltage, temperature) show again at once.
-        m_overloaded = false;
-        m_overloadSeconds = 0.0;
+        m_motion.clearOverload();
         put(m_keys.status, 0);
         break;
     case Instruction::Calibrate:
@@ -478,8 +392,7 @@ void VirtualFeetechServo::applyWrite(int address, QByteArrayView data)
         if (!acceptable(*reg, value))
             continue;
         if (reg == m_keys.torqueEnable) {
-            m_overloaded = false; // re-arming torque clears an overload trip
-            m_overloadSeconds = 0.0;
+            m_motion.clearOverload(); // re-arming torque clears an overload trip
             if (value == 128) { // STS / SMS: current position becomes the middle, torque off
                 calibratePresentTo(kMiddlePosition);
                 put(m_keys.torqueEnable, 0);
@@ -548,261 +461,11 @@ void VirtualFeetechServo::calibratePresentTo(qint32 target)
         return;
     // LeRobot convention: present = physical − offset, so offset = physical − target, taken
     // as the shortest way round the 4096-step circle.
-    int offset = wrap4096(int(std::lround(m_position)) - target);
+    int offset = ServoMotion::wrapFullCircle(int(std::lround(m_motion.position())) - target);
     if (offset > kPositionSteps4096 / 2)
         offset -= kPositionSteps4096;
     offset = std::clamp(offset, m_keys.offset->minimum, m_keys.offset->maximum);
     store(m_keys.offset, offset);
-    refreshRegisters();
-}
-
-// ---- physics --------------------------------------------------------------------------------
-
-VirtualFeetechServo::Control VirtualFeetechServo::control() const
-{
-    if (family() == Family::Scs)
-        return get(m_keys.minAngle) == 0 && get(m_keys.maxAngle) == 0 ? Control::Pwm
-                                                                      : Control::Position;
-    switch (get(m_keys.mode)) {
-    case 1:
-        return Control::Wheel;
-    case 2:
-        return Control::Pwm;
-    case 3:
-        // HLS: PWM open loop; STS step mode is not simulated and behaves as position mode.
-        return family() == Family::Hls ? Control::Pwm : Control::Position;
-    default:
-        return Control::Position;
-    }
-}
-
-double VirtualFeetechServo::maxSpeed() const
-{
-    const double modelMax = is4096() ? kMaxSpeed4096 : kMaxSpeedScs;
-    const qint32 goal = std::abs(get(m_keys.goalSpeed));
-    return goal == 0 ? modelMax : std::min(double(goal), modelMax);
-}
-
-double VirtualFeetechServo::accelerationLimit() const
-{
-    const qint32 acceleration = get(m_keys.acceleration);
-    return acceleration == 0 ? kFastAcceleration : acceleration * kAccelerationUnit;
-}
-
-double VirtualFeetechServo::torqueCapPermille() const
-{
-    double cap = m_keys.torqueLimit ? get(m_keys.torqueLimit) : get(m_keys.maxTorque);
-    if (m_overloaded && m_keys.holdingTorque)
-        cap = std::min(cap, get(m_keys.holdingTorque) * 10.0);
-    return cap;
-}
-
-double VirtualFeetechServo::presentCoordinate() const
-{
-    if (!is4096())
-        return m_position;
-    return wrap4096(m_position - get(m_keys.offset));
-}
-
-double VirtualFeetechServo::clampedGoal() const
-{
-    double goal = get(m_keys.goalPosition);
-    const qint32 minimum = get(m_keys.minAngle);
-    const qint32 maximum = get(m_keys.maxAngle);
-    if (minimum != 0 || maximum != 0)
-        goal = std::clamp(goal, double(minimum), double(std::max(minimum, maximum)));
-    return std::clamp(goal, 0.0, double(is4096() ? kPositionSteps4096 - 1 : kScsMaxPosition));
-}
-
-void VirtualFeetechServo::step(double dt)
-{
-    const qint32 torque = get(m_keys.torqueEnable);
-    const double previous = m_velocity;
-    double limit = kFastAcceleration;
-
-    if (torque == 1) {
-        const double cap = torqueCapPermille();
-        const bool blocked = cap <= 0 || std::abs(m_externalLoad) >= cap;
-        const double vmax = maxSpeed();
-        const Control mode = control();
-        limit = mode == Control::Pwm ? kFastAcceleration : accelerationLimit();
-        const double maxChange = limit * dt;
-        if (mode == Control::Position) {
-            const double here = presentCoordinate();
-            const double target = clampedGoal();
-            const double distance = target - here;
-            const double desired =
-                sign(distance) * std::min(vmax, std::sqrt(2.0 * limit * std::abs(distance)));
-            m_velocity = blocked
-                ? 0.0
-                : m_velocity + std::clamp(desired - m_velocity, -maxChange, maxChange);
-            double next = here + m_velocity * dt;
-            // Reaching or passing the target ends the move there.
-            if (!blocked && (distance == 0.0 || (next - target) * sign(distance) >= 0.0)
-                && std::abs(distance) <= std::abs(m_velocity * dt) + 1e-9) {
-                next = target;
-                m_velocity = 0.0;
-            }
-            m_position = is4096() ? wrap4096(next + get(m_keys.offset)) : next;
-        } else {
-            double desired = 0.0;
-            if (mode == Control::Wheel) {
-                desired = std::clamp(double(get(m_keys.goalSpeed)), -vmax, vmax);
-            } else {
-                double duty;
-                if (family() == Family::Hls && get(m_keys.mode) == 2) {
-                    duty = get(m_keys.goalTime) / 2047.0; // constant current ≈ speed
-                } else {
-                    const quint16 raw = quint16(feetech::decodeRaw(
-                        QByteArrayView(m_registers).sliced(m_keys.goalTime->address, 2),
-                        m_table->byteOrder()));
-                    duty = feetech::fromSignMagnitude(raw & 0x7FF, 10) / 1000.0;
-                }
-                desired = std::clamp(duty, -1.0, 1.0) * (is4096() ? kMaxSpeed4096 : kMaxSpeedScs);
-            }
-            m_velocity = blocked
-                ? 0.0
-                : m_velocity + std::clamp(desired - m_velocity, -maxChange, maxChange);
-            m_position += m_velocity * dt;
-        }
-    } else if (torque == 2) {
-        m_velocity *= std::exp(-dt / kDampingTimeConstantS);
-        if (std::abs(m_velocity) < 1.0)
-            m_velocity = 0.0;
-        m_position += m_velocity * dt;
-    } else {
-        m_velocity = 0.0; // free: the horn stays where it is (nobody turns it)
-    }
-
-    if (is4096()) {
-        m_position = wrap4096(m_position);
-    } else if (m_position < 0.0 || m_position > kScsMaxPosition) {
-        m_position = std::clamp(m_position, 0.0, double(kScsMaxPosition));
-        m_velocity = 0.0; // end stop
-    }
-    m_appliedAcceleration = std::clamp((m_velocity - previous) / dt, -limit, limit);
-
-    // Load: what the motor has to push, capped at what it may push.
-    if (torque == 0) {
-        m_loadPermille = 0.0;
-    } else {
-        double load = kLoadPerAcceleration * m_appliedAcceleration + m_externalLoad;
-        if (std::abs(m_velocity) > kStoppedSpeed)
-            load += sign(m_velocity) * (kFrictionLoad + kViscousLoad * std::abs(m_velocity));
-        const double cap = torque == 1 ? std::min(1000.0, torqueCapPermille()) : 1000.0;
-        m_loadPermille = std::clamp(load, -cap, cap);
-    }
-    m_amps = kIdleAmps + std::abs(m_loadPermille) / 1000.0 * kStallAmps;
-
-    const double steady = m_ambient + kThermalRiseCelsiusPerAmp * m_amps;
-    m_temperature += (steady - m_temperature) * (1.0 - std::exp(-dt / kThermalTimeConstantS));
-
-    // Overload: |load| at or above the overload torque for the protection time trips it.
-    if (torque != 0 && m_keys.overloadTorque && m_keys.protectionTime) {
-        if (std::abs(m_loadPermille) >= get(m_keys.overloadTorque) * 10.0) {
-            m_overloadSeconds += dt;
-            if (m_overloadSeconds >= get(m_keys.protectionTime) * 0.01 - 1e-9)
-                m_overloaded = true;
-        } else {
-            m_overloadSeconds = 0.0;
-        }
-    } else {
-        m_overloadSeconds = 0.0;
-    }
-
-    // Overheating switches the torque off.
-    if (torque != 0 && m_keys.maxTemperature
-        && std::lround(m_temperature) >= get(m_keys.maxTemperature)) {
-        put(m_keys.torqueEnable, 0);
-        m_velocity = 0.0;
-    }
-}
-
-quint8 VirtualFeetechServo::statusBits() const
-{
-    quint8 bits = 0;
-    const qint32 maxVoltage = get(m_keys.maxVoltage);
-    const qint32 minVoltage = get(m_keys.minVoltage);
-    const qint32 voltage = get(m_keys.presentVoltage);
-    if ((maxVoltage != 0 || minVoltage != 0) && (voltage > maxVoltage || voltage < minVoltage))
-        bits |= 0x01;
-    if (m_keys.maxTemperature && get(m_keys.presentTemperature) >= get(m_keys.maxTemperature))
-        bits |= 0x04;
-    if (m_overloaded)
-        bits |= 0x20;
-    return bits;
-}
-
-void VirtualFeetechServo::refreshRegisters()
-{
-    const int physical = int(std::lround(m_position));
-    const int present = is4096() ? wrap4096(physical - get(m_keys.offset))
-                                 : std::clamp(physical, 0, kScsMaxPosition);
-    put(m_keys.presentPosition, present);
-    put(m_keys.presentSpeed, int(std::lround(m_velocity)));
-    put(m_keys.presentLoad, int(std::lround(m_loadPermille)));
-    put(m_keys.presentCurrent, int(std::lround(m_amps / kCurrentUnitAmps)));
-    put(m_keys.presentVoltage,
-        int(std::lround((m_supplyVolts - m_amps * kSupplyResistanceOhms) * 10.0)));
-    put(m_keys.presentTemperature, int(std::lround(m_temperature)));
-
-    const bool turning = std::abs(m_velocity) > kStoppedSpeed;
-    bool away = false; // more than the dead zone from the goal
-    if (get(m_keys.torqueEnable) == 1 && control() == Control::Position) {
-        const double deadZone = std::max(get(m_keys.cwDeadZone), get(m_keys.ccwDeadZone));
-        const double goal = clampedGoal();
-        away = std::abs(goal - presentCoordinate()) > deadZone;
-        put(m_keys.currentGoal, int(std::lround(goal)));
-    }
-    // HLS splits the flag: bit 0 above the speed threshold, bit 1 not yet at the target.
-    if (family() == Family::Hls)
-        put(m_keys.moving, (turning ? 1 : 0) | (away ? 2 : 0));
-    else
-        put(m_keys.moving, turning || away ? 1 : 0);
-    put(m_keys.status, statusBits());
-}
-
-void VirtualFeetechServo::advanceTo(qint64 nowUs)
-{
-    if (nowUs <= m_nowUs)
-        return;
-    qint64 at = std::max(m_nowUs, nowUs - kMaxCatchUpUs);
-    while (at < nowUs) {
-        const qint64 stepUs = std::min(kMaxStepUs, nowUs - at);
-        step(double(stepUs) / 1e6);
-        at += stepUs;
-    }
-    m_nowUs = nowUs;
-    refreshRegisters();
-}
-
-// ---- environment ----------------------------------------------------------------------------
-
-void VirtualFeetechServo::setSupplyVoltage(double volts)
-{
-    m_supplyVolts = volts;
-    refreshRegisters();
-}
-
-void VirtualFeetechServo::setAmbientTemperature(double celsius)
-{
-    m_ambient = celsius;
-}
-
-void VirtualFeetechServo::setExternalLoad(int permille)
-{
-    m_externalLoad = std::clamp(permille, -1000, 1000);
-}
-
-void VirtualFeetechServo::setTemperature(double celsius)
-{
-    m_temperature = celsius;
-    refreshRegisters();
-}
-
-void VirtualFeetechServo::setPhysicalPosition(double steps)
-{
-    m_position = is4096() ? wrap4096(steps) : std::clamp(steps, 0.0, double(kScsMaxPosition));
     refreshRegisters();
 }
 

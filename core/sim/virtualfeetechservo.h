@@ -1,9 +1,11 @@
-// One simulated Feetech serial-bus servo: register file, EEPROM lock, instructions and a simple
-// motion / load / thermal model. Pure logic: no I/O, no timers; time passes through advanceTo().
+// One simulated Feetech serial-bus servo: register file, EEPROM lock and instructions, driving
+// the motion / load / thermal model of sim/servomotion.h. Pure logic: no I/O, no timers; time
+// passes through advanceTo().
 #pragma once
 
 #include "feetech/feetechpacket.h"
 #include "feetech/registertable.h"
+#include "sim/servomotion.h"
 
 #include <QByteArray>
 #include <QString>
@@ -19,37 +21,16 @@ class VirtualFeetechServo
 public:
     static constexpr int kRegisterFileSize = 256;
 
-    // Environment defaults: a 2S LiPo (HLS: a 12 V supply) in a room.
+    // Supply defaults: a 2S LiPo (HLS: a 12 V supply).
     static constexpr double kDefaultSupplyVolts = 7.4;
     static constexpr double kDefaultHlsSupplyVolts = 12.0;
-    static constexpr double kDefaultAmbientCelsius = 25.0;
 
-    // Motion model (steps, seconds). Speed 0 and acceleration 0 mean "the model's maximum".
-    static constexpr double kMaxSpeed4096 = 3400.0; // STS / SMS / HLS, step/s
-    static constexpr double kMaxSpeedScs = 1000.0; // SCS, step/s
-    static constexpr double kFastAcceleration = 50000.0; // step/s² when register 41 is 0 (or SCS)
-    static constexpr double kAccelerationUnit = 100.0; // register 41 unit, step/s²
-    static constexpr double kDampingTimeConstantS = 0.05; // torque enable 2: speed decay
+    // Integration of the motion model (sim/servomotion.h).
     static constexpr qint64 kMaxStepUs = 1000; // integration sub-step
     static constexpr qint64 kMaxCatchUpUs =
         600'000'000; // longer gaps integrate only the last 10 min
-
-    // Load model (permille of full torque) and electrical / thermal model.
-    static constexpr double kLoadPerAcceleration = 0.004; // ‰ per step/s² applied
-    static constexpr double kFrictionLoad = 30.0; // ‰ while moving
-    static constexpr double kViscousLoad = 0.01; // ‰ per step/s while moving
-    static constexpr double kIdleAmps = 0.05;
-    static constexpr double kStallAmps = 3.0; // added at |load| = 1000 ‰
     static constexpr double kCurrentUnitAmps = 0.0065; // register 69 unit
-    static constexpr double kSupplyResistanceOhms = 0.2; // voltage sag with current
-    static constexpr double kThermalRiseCelsiusPerAmp = 15.0; // steady state above ambient
-    static constexpr double kThermalTimeConstantS = 120.0;
-
-    // Firmware versions the simulated servos report (spec §2.2 / §10 support rules):
-    // STS 3.10 (0x0B with and without position), HLS 3.45 (both forms), SMS 2.54 (torque
-    // enable 128, no 0x0B), SCS 1.0 (neither).
-    static int firmwareMajor(feetech::Family family);
-    static int firmwareMinor(feetech::Family family);
+    static constexpr double kAccelerationUnit = 100.0; // register 41 unit, step/s²
 
     // Baud-rate codes 0-7 of spec §6.
     static std::optional<int> baudCode(qint32 baud);
@@ -103,9 +84,9 @@ public:
     void setExternalLoad(int permille); // signed, ±1000; |load| ≥ torque limit blocks the horn
     void setTemperature(double celsius);
     void setPhysicalPosition(double steps); // turns the horn by hand
-    double supplyVoltage() const { return m_supplyVolts; }
-    double temperature() const { return m_temperature; }
-    double physicalPosition() const { return m_position; }
+    double supplyVoltage() const { return m_motion.supplyVoltage(); }
+    double temperature() const { return m_motion.temperature(); }
+    double physicalPosition() const { return m_motion.position(); }
 
     // Test hooks: decoded register units; setValue writes the live register, no lock semantics.
     qint32 value(QStringView key) const;
@@ -113,8 +94,6 @@ public:
     const QByteArray &registerFile() const { return m_registers; }
 
 private:
-    enum class Control { Position, Wheel, Pwm };
-
     struct Keys
     {
         const feetech::Register *id = nullptr;
@@ -176,13 +155,11 @@ private:
     void calibratePresentTo(qint32 target);
 
     bool is4096() const { return family() != feetech::Family::Scs; }
-    Control control() const;
-    double maxSpeed() const;
-    double accelerationLimit() const;
-    double torqueCapPermille() const;
-    double presentCoordinate() const; // physical position − offset, in the position range
+
+    // Between the registers and the motion model (virtualfeetechservomotion.cpp).
+    MotionControl control() const;
     double clampedGoal() const;
-    void step(double dt);
+    MotionCommand motionCommand() const; // what the registers ask of the motor now
     void refreshRegisters();
     quint8 statusBits() const;
 
@@ -199,19 +176,8 @@ private:
     quint64 m_eepromRevision = 0;
     std::optional<PendingWrite> m_pending;
 
-    // Physical state.
+    ServoMotion m_motion;
     qint64 m_nowUs = 0;
-    double m_position = 0.0; // horn, encoder steps
-    double m_velocity = 0.0; // step/s
-    double m_appliedAcceleration = 0.0; // step/s², last sub-step
-    double m_loadPermille = 0.0;
-    double m_amps = kIdleAmps;
-    double m_temperature = kDefaultAmbientCelsius;
-    double m_ambient = kDefaultAmbientCelsius;
-    double m_supplyVolts = kDefaultSupplyVolts;
-    int m_externalLoad = 0;
-    double m_overloadSeconds = 0.0;
-    bool m_overloaded = false;
 };
 
 } // namespace sim

@@ -1,5 +1,5 @@
-// Unix signal plumbing for servosim (self-pipe through a socket pair).
-#include "sim/unixsignals.h"
+// Unix signal plumbing for servosim and servoctl (self-pipe through a socket pair).
+#include "util/unixsignals.h"
 
 #include <QSocketNotifier>
 
@@ -7,7 +7,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-namespace sim {
+namespace util {
 
 namespace {
 
@@ -53,4 +53,4 @@ void UnixSignalWatcher::readSignals()
         emit received(int(byte));
 }
 
-} // namespace sim
+} // namespace util

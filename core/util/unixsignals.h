@@ -5,7 +5,7 @@
 
 class QSocketNotifier;
 
-namespace sim {
+namespace util {
 
 // Only async-signal-safe work happens in the handler: it writes the signal number to a socket
 // pair, which a QSocketNotifier reads on the event loop.
@@ -27,4 +27,4 @@ private:
     QSocketNotifier *m_notifier = nullptr;
 };
 
-} // namespace sim
+} // namespace util

@@ -1,0 +1,94 @@
+// servoctl feetech's commands as one object: each command group is defined in its own file
+// (feetech*commands.cpp, feetechmonitorcommand.cpp), the shared steps in feetechcommands.cpp.
+#pragma once
+
+#include "cli/feetechdevice.h"
+#include "cli/servoctl.h"
+#include "model/parametermodel.h"
+#include "profile/profile.h"
+
+#include <QJsonObject>
+#include <QStringList>
+#include <QVector>
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace cli {
+
+class FeetechCommand
+{
+public:
+    FeetechCommand(const Arguments &args, const Output &output)
+        : m_args(args)
+        , m_output(output)
+    { }
+
+    // `rest` is what follows "feetech": the command and its operands.
+    int run(const QStringList &rest);
+
+private:
+    // A device on --port with the servo at --id identified.
+    struct Target
+    {
+        std::unique_ptr<FeetechDevice> device;
+        ServoInfo servo;
+        std::chrono::microseconds latency {0};
+    };
+
+    // Shared steps (feetechcommands.cpp).
+    int fail(const QString &message);
+    void allowOptions(const QString &what, const QStringList &allowed) const;
+    static void expectOperands(const QString &what, const QStringList &operands, int count,
+                               const QString &names);
+    qint32 busBaud() const;
+    static qint32 parseBaud(const QString &what, const QString &text);
+    quint8 servoId(const QString &what) const;
+    static void checkFolder(const QString &path);
+    // The servo --id at --baud; nothing, once the failure is printed, when it cannot be reached.
+    std::optional<Target> identifyServo(const QString &what);
+    // The same, refusing a servo of a model no table describes with `unknownModel` (%1: its ID,
+    // %2: its model).
+    std::optional<Target> identifyKnownServo(const QString &what, const QString &unknownModel);
+    // The servo set and load write to.
+    std::optional<Target> identifyServoToWrite(const QString &what);
+    int program(Target &target, const QVector<model::WriteItem> &items,
+                const QJsonObject &extra = {});
+
+    // Finding servos and their registers (feetechregistercommands.cpp).
+    int scan(const QString &what, const QStringList &operands);
+    int ping(const QString &what, const QStringList &operands);
+    int read(const QString &what, const QStringList &operands);
+    int get(const QString &what, const QStringList &operands);
+    int set(const QString &what, const QStringList &operands);
+
+    // Profiles (feetechprofilecommands.cpp).
+    std::optional<profile::Profile> takeProfile(Target &target, QString *error);
+    QJsonObject profileJson(const profile::Profile &saved) const;
+    int save(const QString &what, const QStringList &operands);
+    static void checkProfileFile(const QString &path);
+    int load(const QString &what, const QStringList &operands);
+
+    // Guided flows (feetechflowcommands.cpp).
+    int report(Target &target, const std::function<void()> &start,
+               const std::function<void(QJsonObject &, const Memory &)> &more = {});
+    int alreadyDone(const ServoInfo &servo, const QString &message);
+    int setId(const QString &what, const QStringList &operands);
+    int setBaud(const QString &what, const QStringList &operands);
+    int calibrateMiddle(const QString &what, const QStringList &operands);
+    int factoryReset(const QString &what, const QStringList &operands);
+    int reboot(const QString &what, const QStringList &operands);
+
+    // Live feedback (feetechmonitorcommand.cpp).
+    int monitor(const QString &what, const QStringList &operands);
+    double monitorRate() const;
+    void printSample(const feetech::FeedbackSample &sample, qint64 startUs, bool csv,
+                     const QVector<ServoInfo> &servos);
+
+    const Arguments &m_args;
+    const Output &m_output;
+};
+
+} // namespace cli
