@@ -18,6 +18,16 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
 };
 
+// Whether `why` refuses the request (it is not empty); it goes to *error then.
+bool refused(const QString &why, QString *error)
+{
+    if (why.isEmpty())
+        return false;
+    if (error)
+        *error = why;
+    return true;
+}
+
 } // namespace
 
 BusClient::BusClient(const SessionTiming &timing, QObject *parent)
@@ -268,12 +278,8 @@ bool BusClient::apply(int index, QString *error)
 
 bool BusClient::startApply(int index, QString *error, bool withAddress)
 {
-    const QString blocker = writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
+    if (refused(writeBlocker(index), error))
         return false;
-    }
     model::ParameterModel &parameters = *this->parameters(index);
     auto plan = planApply(servo(index).info, parameters, idsInUse(), error);
     if (plan && !withAddress) {
@@ -339,12 +345,8 @@ void BusClient::refreshRam(int index)
 
 bool BusClient::changeId(int index, int newId, QString *error)
 {
-    const QString blocker = writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
+    if (refused(writeBlocker(index), error))
         return false;
-    }
     const QVector<int> inUse = idsInUse();
     if (inUse.contains(newId) && newId != servo(index).info.id) {
         if (error)
@@ -358,12 +360,8 @@ bool BusClient::changeId(int index, int newId, QString *error)
 
 bool BusClient::changeBaud(int index, qint32 newBaud, QString *error)
 {
-    const QString blocker = writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
+    if (refused(writeBlocker(index), error))
         return false;
-    }
     return startOperation(
         index, error, Work::Foreground,
         [newBaud](Session &s, const ServoInfo &info) { s.changeBaud(info, newBaud); });
@@ -371,12 +369,8 @@ bool BusClient::changeBaud(int index, qint32 newBaud, QString *error)
 
 bool BusClient::calibrateMiddle(int index, QString *error)
 {
-    const QString blocker = writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
+    if (refused(writeBlocker(index), error))
         return false;
-    }
     if (middleCalibration(servo(index).info) == MiddleCalibration::Unsupported) {
         if (error)
             *error = Tr::tr("This servo has no middle calibration (SCS servos have no offset "
@@ -389,34 +383,24 @@ bool BusClient::calibrateMiddle(int index, QString *error)
 
 bool BusClient::factoryReset(int index, QString *error)
 {
-    const QString blocker = writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
+    if (refused(writeBlocker(index), error))
         return false;
-    }
     return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.factoryReset(info); });
 }
 
 bool BusClient::reboot(int index, QString *error)
 {
-    if (isBusy()) {
-        if (error)
-            *error = Tr::tr("Another operation is still running.");
+    if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
         return false;
-    }
     return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.reboot(info); });
 }
 
 bool BusClient::clearStatus(int index, QString *error)
 {
-    if (isBusy()) {
-        if (error)
-            *error = Tr::tr("Another operation is still running.");
+    if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
         return false;
-    }
     return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
 }
