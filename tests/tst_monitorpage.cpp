@@ -1,8 +1,8 @@
 // GUI tests of the Monitor page: bounded plot memory under a long synthetic stream, CSV
 // recordings that parse back, PNG export, and live monitoring of a simulated bus.
 #include "feetechbus.h"
-#include "monitorpage.h"
-#include "telemetryplot.h"
+#include "feetechgui/monitorpage.h"
+#include "feetechgui/telemetryplot.h"
 
 #include <QChart>
 #include <QChartView>

@@ -1,14 +1,14 @@
 // ServoBench's main window: wires the PTK client to the page, the packet log and the status bar.
 #include "mainwindow.h"
 
-#include "connectionbar.h"
+#include "common/connectionbar.h"
+#include "common/packetlogdock.h"
+#include "common/parameterpage.h"
+#include "common/profileactions.h"
 #include "feetech/busclient.h"
-#include "feetechworkspace.h"
+#include "feetechgui/feetechworkspace.h"
 #include "link/packetlogmodel.h"
-#include "packetlogdock.h"
-#include "parameterpage.h"
 #include "profile/profile.h"
-#include "profileactions.h"
 #include "ptk/ptkclient.h"
 #include "sim/demoservos.h"
 

@@ -1,8 +1,8 @@
 // Profile actions: file dialogs, save with a completeness check, load through the diff dialog.
-#include "profileactions.h"
+#include "common/profileactions.h"
 
+#include "common/profilediffdialog.h"
 #include "profile/profile.h"
-#include "profilediffdialog.h"
 
 #include <QCoreApplication>
 #include <QDir>

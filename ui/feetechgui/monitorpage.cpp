@@ -1,15 +1,14 @@
 // The Monitor page: stream controls, the live plot, readouts refreshed on a timer rather than per
 // sample, and CSV recording through a buffered stream flushed twice a second.
-#include "monitorpage.h"
+#include "feetechgui/monitorpage.h"
 
+#include "common/widgethelpers.h"
 #include "feetech/busclient.h"
-#include "telemetryplot.h"
-#include "widgethelpers.h"
+#include "feetechgui/telemetryplot.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
-#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -25,7 +24,6 @@
 #include <QStandardPaths>
 #include <QStyle>
 #include <QTableWidget>
-#include <QTextStream>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -234,12 +232,11 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
         if (m_readoutsDirty || isRunning())
             updateReadouts(); // samples/s falls when a servo stops answering: recount
     });
-    m_flushTimer = new QTimer(this);
-    m_flushTimer->setInterval(kFlushIntervalMs);
-    connect(m_flushTimer, &QTimer::timeout, this, [this] {
-        flushRecording();
-        updateRecordingLabel();
-    });
+    m_recorder = new feetech::TelemetryRecorder(this);
+    m_recorder->setFlushInterval(kFlushIntervalMs);
+    connect(m_recorder, &feetech::TelemetryRecorder::flushed, this,
+            &MonitorPage::updateRecordingLabel);
+    connect(m_recorder, &feetech::TelemetryRecorder::failed, this, &MonitorPage::failRecording);
 
     if (m_client) {
         connect(m_client, &feetech::BusClient::servosChanged, this, &MonitorPage::rebuildServoList);
@@ -387,30 +384,23 @@ bool MonitorPage::isRunning() const
 bool MonitorPage::startRecording(const QString &path, QString *error)
 {
     stopRecording();
-    const auto fail = [this, error](const QString &why) {
+    // A header that could not be written goes through failRecording(), which says why; a file
+    // that could not be opened is said here.
+    bool reported = false;
+    const QMetaObject::Connection watch = connect(m_recorder, &feetech::TelemetryRecorder::failed,
+                                                  this, [&reported] { reported = true; });
+    QString why;
+    const bool opened = m_recorder->open(path, &why);
+    disconnect(watch);
+    if (!opened) {
+        if (reported)
+            why = m_message->text();
+        else
+            showMessage(why, true);
         if (error)
             *error = why;
-        showMessage(why, true);
-        return false;
-    };
-    if (path.isEmpty())
-        return fail(tr("No file name was given for the recording."));
-    auto file = std::make_unique<QFile>(path);
-    if (!file->open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        return fail(tr("Could not open %1 for writing: %2.")
-                        .arg(QDir::toNativeSeparators(path), file->errorString()));
-    }
-    m_file = std::move(file);
-    m_stream = std::make_unique<QTextStream>(m_file.get());
-    *m_stream << feetech::telemetryCsvHeader() << '\n';
-    m_recordedRows = 0;
-    m_recordStartUs = feetech::steadyMicroseconds();
-    if (!flushRecording()) {
-        if (error)
-            *error = m_message->text();
         return false;
     }
-    m_flushTimer->start();
     showMessage({}, false);
     updateRecordingLabel();
     updateControls();
@@ -420,21 +410,14 @@ bool MonitorPage::startRecording(const QString &path, QString *error)
 
 void MonitorPage::stopRecording()
 {
-    if (!m_file)
+    if (!isRecording())
         return;
-    m_flushTimer->stop();
-    const bool written = flushRecording(); // reports a failure itself
-    if (!m_file)
-        return; // the failure already closed it
-    m_stream.reset();
-    m_file->close();
-    const QString path = m_file->fileName();
-    m_file.reset();
-    if (written) {
-        m_recordingLabel->setText(tr("%Ln row(s) saved to %1.", nullptr, int(m_recordedRows))
-                                      .arg(QFileInfo(path).fileName()));
-        m_recordingLabel->setToolTip(QDir::toNativeSeparators(path));
-    }
+    if (!m_recorder->finish())
+        return; // failRecording() has said why and closed it
+    const QString path = m_recorder->fileName();
+    m_recordingLabel->setText(tr("%Ln row(s) saved to %1.", nullptr, int(recordedRows()))
+                                  .arg(QFileInfo(path).fileName()));
+    m_recordingLabel->setToolTip(QDir::toNativeSeparators(path));
     updateControls();
     emit recordingChanged(false);
 }
@@ -481,11 +464,7 @@ void MonitorPage::addSamples(const QVector<feetech::FeedbackSample> &samples)
         while (!latest.recent.empty() && latest.recent.front() <= sample.steadyUs - kRateSpanUs)
             latest.recent.pop_front();
         kept.append(sample);
-        // Samples taken before the recording started are not part of it.
-        if (m_stream && sample.steadyUs >= m_recordStartUs) {
-            *m_stream << feetech::telemetryCsvRow(sample, m_recordStartUs) << '\n';
-            ++m_recordedRows;
-        }
+        m_recorder->write(sample); // from its start on
     }
     if (kept.isEmpty())
         return;
@@ -784,31 +763,17 @@ void MonitorPage::updateRecordingLabel()
             m_recordingLabel->setText(tr("Not recording."));
         return;
     }
-    m_recordingLabel->setText(tr("Recording to %1: %Ln row(s).", nullptr, int(m_recordedRows))
-                                  .arg(QFileInfo(m_file->fileName()).fileName()));
-    m_recordingLabel->setToolTip(QDir::toNativeSeparators(m_file->fileName()));
-}
-
-bool MonitorPage::flushRecording()
-{
-    if (!m_stream)
-        return true;
-    m_stream->flush();
-    if (m_stream->status() != QTextStream::Ok || m_file->error() != QFileDevice::NoError) {
-        failRecording(m_file->errorString());
-        return false;
-    }
-    return true;
+    const QString path = m_recorder->fileName();
+    m_recordingLabel->setText(tr("Recording to %1: %Ln row(s).", nullptr, int(recordedRows()))
+                                  .arg(QFileInfo(path).fileName()));
+    m_recordingLabel->setToolTip(QDir::toNativeSeparators(path));
 }
 
 void MonitorPage::failRecording(const QString &why)
 {
-    const QString path = QDir::toNativeSeparators(m_file->fileName());
-    m_flushTimer->stop();
-    m_stream.reset();
-    m_file.reset();
+    const QString path = QDir::toNativeSeparators(m_recorder->fileName());
     const QString message =
-        tr("Recording to %1 failed after %Ln row(s): %2", nullptr, int(m_recordedRows))
+        tr("Recording to %1 failed after %Ln row(s): %2", nullptr, int(recordedRows()))
             .arg(path, why);
     m_recordingLabel->setText(tr("Recording failed."));
     showMessage(message, true);

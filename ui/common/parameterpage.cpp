@@ -1,6 +1,7 @@
 // Parameter form: grouped rows bound by hand to the parameter model, and its buttons.
-#include "parameterpage.h"
+#include "common/parameterpage.h"
 
+#include "common/palette.h"
 #include "model/parametermodel.h"
 
 #include <QComboBox>
@@ -62,24 +63,19 @@ QString userText(const Definition &definition, qint64 raw)
     return QString::number(double(raw) * definition.scale, 'g', 10); // as the model shows it
 }
 
-bool isDark(const QPalette &palette)
-{
-    return palette.color(QPalette::Window).lightness() < 128;
-}
-
 // State colours chosen to stay readable on light and dark palettes.
 QColor stateColor(State state, bool dark)
 {
     switch (state) {
     case State::Edited:
-        return dark ? QColor(255, 196, 84) : QColor(168, 98, 0);
+        return palette::toneColor(palette::Tone::Warning, dark);
     case State::Writing:
-        return dark ? QColor(120, 170, 255) : QColor(25, 90, 190);
+        return palette::toneColor(palette::Tone::Accent, dark);
     case State::Verified:
-        return dark ? QColor(110, 210, 120) : QColor(30, 120, 45);
+        return palette::toneColor(palette::Tone::Good, dark);
     case State::Mismatch:
     case State::Failed:
-        return dark ? QColor(255, 120, 110) : QColor(190, 30, 30);
+        return palette::toneColor(palette::Tone::Error, dark);
     case State::Clean:
         break;
     }
@@ -476,7 +472,7 @@ void ParameterPage::editorChanged(const QString &key)
     m_committing.clear();
     if (!accepted) {
         // The editors' ranges come from the definitions, so this is rare; say why in place.
-        setForeground(row->state, stateColor(State::Failed, isDark(palette())), true);
+        setForeground(row->state, stateColor(State::Failed, palette::isDark(palette())), true);
         row->state->setText(tr("Refused"));
         row->state->setToolTip(error);
     }
@@ -547,7 +543,7 @@ void ParameterPage::updateRow(Row &row)
     }
     row.state->setText(stateText);
     row.state->setToolTip(stateTip);
-    setForeground(row.state, stateColor(state, isDark(palette())),
+    setForeground(row.state, stateColor(state, palette::isDark(palette())),
                   state == State::Edited || state == State::Mismatch || state == State::Failed);
 
     const bool readable = device.has_value() || definition->access == model::Access::WriteOnly;

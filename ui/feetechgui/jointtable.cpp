@@ -1,11 +1,12 @@
 // Joint table: rows kept in step with the bus client, a range-limited target editor, Move all
 // as SYNC WRITE, torque switches and pose files.
-#include "jointtable.h"
+#include "feetechgui/jointtable.h"
 
+#include "common/palette.h"
+#include "common/widgethelpers.h"
 #include "feetech/busclient.h"
 #include "feetech/registerkeys.h"
 #include "feetech/servoparameters.h"
-#include "widgethelpers.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -40,31 +41,6 @@ constexpr int kTorqueDamping = 2;
 quint64 servoKey(quint8 id, qint32 baud)
 {
     return (quint64(quint32(baud)) << 8) | id;
-}
-
-bool isDark(const QPalette &palette)
-{
-    return palette.color(QPalette::Window).lightness() < 128;
-}
-
-QColor errorColor(bool dark)
-{
-    return dark ? QColor(255, 120, 110) : QColor(190, 30, 30);
-}
-
-QColor goodColor(bool dark)
-{
-    return dark ? QColor(110, 210, 120) : QColor(30, 120, 45);
-}
-
-QColor warningColor(bool dark)
-{
-    return dark ? QColor(255, 196, 84) : QColor(168, 98, 0);
-}
-
-QColor accentColor(bool dark)
-{
-    return dark ? QColor(120, 170, 255) : QColor(25, 90, 190);
 }
 
 // Types targets in a spin box that only goes as far as the servo may be sent; a cell without a
@@ -369,20 +345,20 @@ QString JointTable::servoName(int row) const
 void JointTable::setMessage(const QString &text, Tone tone)
 {
     m_message->setText(text);
-    const bool dark = isDark(palette());
+    const bool dark = palette::isDark(palette());
     QPalette colours = m_message->palette();
     switch (tone) {
     case Tone::Info:
         m_message->setPalette(QPalette());
         return;
     case Tone::Success:
-        colours.setColor(QPalette::WindowText, goodColor(dark));
+        colours.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Good, dark));
         break;
     case Tone::Warning:
-        colours.setColor(QPalette::WindowText, warningColor(dark));
+        colours.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Warning, dark));
         break;
     case Tone::Error:
-        colours.setColor(QPalette::WindowText, errorColor(dark));
+        colours.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Error, dark));
         break;
     }
     m_message->setPalette(colours);
@@ -435,7 +411,7 @@ void JointTable::refreshRow(int row)
     if (index < 0)
         return;
     const feetech::ServoInfo &info = m_client->servo(index).info;
-    const bool dark = isDark(palette());
+    const bool dark = palette::isDark(palette());
     m_updating = true;
 
     QTableWidgetItem *id = m_table->item(row, IdColumn);
@@ -471,11 +447,11 @@ void JointTable::refreshRow(int row)
     } else if (*device == kTorqueOn) {
         torqueText = tr("On");
         check = Qt::Checked;
-        torqueColour = goodColor(dark);
+        torqueColour = palette::toneColor(palette::Tone::Good, dark);
     } else if (*device == kTorqueDamping) {
         torqueText = tr("Damping");
         check = Qt::PartiallyChecked;
-        torqueColour = warningColor(dark);
+        torqueColour = palette::toneColor(palette::Tone::Warning, dark);
     } else if (const feetech::Register *reg = info.table().find(kTorqueEnable)) {
         torqueText = feetech::displayValue(*reg, qint32(*device));
     }
@@ -494,7 +470,7 @@ void JointTable::refreshPosition(int row)
 {
     if (row < 0 || row >= rowCount() || servoIndex(row) < 0)
         return;
-    const bool dark = isDark(palette());
+    const bool dark = palette::isDark(palette());
     m_updating = true;
     QTableWidgetItem *item = m_table->item(row, PositionColumn);
     const std::optional<qint32> value = position(row);
@@ -518,8 +494,9 @@ void JointTable::refreshPosition(int row)
     motion->setFont(motionFont);
     motion->setData(Qt::ForegroundRole,
                     !live ? QVariant(palette().color(QPalette::PlaceholderText))
-                        : isMoving.value_or(false) ? QVariant(accentColor(dark))
-                                                   : QVariant());
+                        : isMoving.value_or(false)
+                        ? QVariant(palette::toneColor(palette::Tone::Accent, dark))
+                        : QVariant());
     m_updating = false;
 
     // An editor opened without a target starts at the present position.
@@ -533,7 +510,7 @@ void JointTable::refreshTarget(int row)
 {
     if (row < 0 || row >= rowCount() || servoIndex(row) < 0)
         return;
-    const bool dark = isDark(palette());
+    const bool dark = palette::isDark(palette());
     const std::optional<feetech::PositionRange> range = targetRange(row);
     const std::optional<qint32> target = m_rows.at(row).target;
     m_updating = true;
@@ -557,7 +534,8 @@ void JointTable::refreshTarget(int row)
     }
     item->setData(Qt::EditRole, target ? QVariant(*target) : QVariant());
     const bool outside = target && range && !range->contains(*target);
-    item->setData(Qt::ForegroundRole, outside ? QVariant(errorColor(dark)) : QVariant());
+    item->setData(Qt::ForegroundRole,
+                  outside ? QVariant(palette::toneColor(palette::Tone::Error, dark)) : QVariant());
     item->setToolTip(outside ? tr("Outside the range %1 to %2: Move all will refuse it")
                                    .arg(range->minimum)
                                    .arg(range->maximum)

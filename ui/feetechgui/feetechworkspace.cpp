@@ -1,16 +1,16 @@
 // Feetech workspace: the servo tree, the Settings and Memory table pages, and the guided flows.
-#include "feetechworkspace.h"
+#include "feetechgui/feetechworkspace.h"
 
-#include "controlpage.h"
+#include "common/parameterpage.h"
+#include "common/profileactions.h"
+#include "common/widgethelpers.h"
 #include "feetech/busclient.h"
 #include "feetech/servoparameters.h"
-#include "jointtable.h"
-#include "monitorpage.h"
-#include "parameterpage.h"
-#include "profileactions.h"
-#include "registertablemodel.h"
-#include "scandialog.h"
-#include "widgethelpers.h"
+#include "feetechgui/controlpage.h"
+#include "feetechgui/jointtable.h"
+#include "feetechgui/monitorpage.h"
+#include "feetechgui/registertablemodel.h"
+#include "feetechgui/scandialog.h"
 
 #include <QCheckBox>
 #include <QDateTime>

@@ -5,6 +5,7 @@
 // telemetry.h names ServoInfo without defining it; feetechsession.h defines it.
 #include "feetech/feetechsession.h"
 #include "feetech/telemetry.h"
+#include "feetech/telemetryrecorder.h"
 
 #include <QHash>
 #include <QPointer>
@@ -12,16 +13,13 @@
 #include <QWidget>
 
 #include <deque>
-#include <memory>
 
 class QCheckBox;
 class QComboBox;
-class QFile;
 class QLabel;
 class QListWidget;
 class QPushButton;
 class QTableWidget;
-class QTextStream;
 class QTimer;
 class TelemetryPlot;
 
@@ -53,7 +51,7 @@ public:
     // Readouts refresh at most this often, however fast samples come.
     static constexpr int kReadoutIntervalMs = 100;
     // A recording reaches the disk at least this often.
-    static constexpr int kFlushIntervalMs = 500;
+    static constexpr int kFlushIntervalMs = feetech::TelemetryRecorder::kDefaultFlushIntervalMs;
 
     explicit MonitorPage(feetech::BusClient *client, QWidget *parent = nullptr);
     ~MonitorPage() override;
@@ -77,9 +75,9 @@ public:
     // Writes every sample of the selected servos taken from now on to `path` as CSV.
     bool startRecording(const QString &path, QString *error = nullptr);
     void stopRecording();
-    bool isRecording() const { return m_file != nullptr; }
-    qint64 recordedRows() const { return m_recordedRows; }
-    qint64 recordingStartUs() const { return m_recordStartUs; } // time 0 of the recording
+    bool isRecording() const { return m_recorder->isRecording(); }
+    qint64 recordedRows() const { return m_recorder->rowCount(); }
+    qint64 recordingStartUs() const { return m_recorder->startUs(); } // time 0 of the recording
 
     bool exportPng(const QString &path, QString *error = nullptr);
 
@@ -131,7 +129,6 @@ private:
     void updateControls();
     void updateStatusLine();
     void updateRecordingLabel();
-    bool flushRecording();
     void failRecording(const QString &why);
     void showMessage(const QString &text, bool isError);
     QVector<Key> checkedKeys() const;
@@ -155,7 +152,6 @@ private:
     QLabel *m_statusLine = nullptr;
     QTableWidget *m_readouts = nullptr;
     QTimer *m_readoutTimer = nullptr;
-    QTimer *m_flushTimer = nullptr;
 
     bool m_updatingList = false; // our own check-state changes are not the user's
     bool m_readoutsDirty = true;
@@ -163,8 +159,5 @@ private:
     QVector<Key> m_unlisted; // servos samples came for that the list does not name
     feetech::TelemetryStats m_stats;
 
-    std::unique_ptr<QFile> m_file;
-    std::unique_ptr<QTextStream> m_stream;
-    qint64 m_recordedRows = 0;
-    qint64 m_recordStartUs = 0;
+    feetech::TelemetryRecorder *m_recorder = nullptr;
 };

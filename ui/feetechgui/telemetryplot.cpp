@@ -1,6 +1,6 @@
 // The live telemetry plot: bounded buffers per series, min/max decimation to the pixels in view,
 // and a repaint timer, so that six servos at 100 Hz cost a few replace() calls a frame.
-#include "telemetryplot.h"
+#include "feetechgui/telemetryplot.h"
 
 #include <QChart>
 #include <QChartView>
