@@ -1,5 +1,5 @@
-// Joint table: rows kept in step with the bus client, a range-limited target editor, Move all
-// as SYNC WRITE, torque switches and pose files.
+// Joint table: rows kept in step with the bus client and the monitor; Move all, torque and
+// reads are in jointtableactions.cpp, poses in jointtableposes.cpp.
 #include "feetechgui/jointtable.h"
 
 #include "common/palette.h"
@@ -7,18 +7,15 @@
 #include "feetech/busclient.h"
 #include "feetech/registerkeys.h"
 #include "feetech/servoparameters.h"
+#include "feetechgui/targetdelegate.h"
 
 #include <QDir>
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHash>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QSet>
-#include <QSpinBox>
-#include <QStyledItemDelegate>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -29,70 +26,10 @@ using widgethelpers::actionButton;
 
 namespace {
 
-// Roles of the target cell, read by its editor.
-constexpr int kMinimumRole = Qt::UserRole + 1;
-constexpr int kMaximumRole = Qt::UserRole + 2;
-constexpr int kSuggestionRole = Qt::UserRole + 3; // where the editor starts without a target
-
-constexpr int kTorqueOff = 0;
-constexpr int kTorqueOn = 1;
-constexpr int kTorqueDamping = 2;
-
 quint64 servoKey(quint8 id, qint32 baud)
 {
     return (quint64(quint32(baud)) << 8) | id;
 }
-
-// Types targets in a spin box that only goes as far as the servo may be sent; a cell without a
-// target shows a dash rather than a number nobody chose.
-class TargetDelegate : public QStyledItemDelegate
-{
-public:
-    using QStyledItemDelegate::QStyledItemDelegate;
-
-    QWidget *createEditor(QWidget *parent, const QStyleOptionViewItem &,
-                          const QModelIndex &index) const override
-    {
-        auto *editor = new QSpinBox(parent);
-        editor->setObjectName(QStringLiteral("targetEditor"));
-        editor->setFrame(false);
-        editor->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        editor->setRange(index.data(kMinimumRole).toInt(), index.data(kMaximumRole).toInt());
-        return editor;
-    }
-
-    void setEditorData(QWidget *widget, const QModelIndex &index) const override
-    {
-        auto *editor = static_cast<QSpinBox *>(widget);
-        const QVariant target = index.data(Qt::EditRole);
-        editor->setValue(target.isValid() ? target.toInt() : index.data(kSuggestionRole).toInt());
-        editor->selectAll();
-    }
-
-    void setModelData(QWidget *widget, QAbstractItemModel *model,
-                      const QModelIndex &index) const override
-    {
-        auto *editor = static_cast<QSpinBox *>(widget);
-        editor->interpretText();
-        model->setData(index, editor->value(), Qt::EditRole);
-    }
-
-    void updateEditorGeometry(QWidget *editor, const QStyleOptionViewItem &option,
-                              const QModelIndex &) const override
-    {
-        editor->setGeometry(option.rect);
-    }
-
-protected:
-    void initStyleOption(QStyleOptionViewItem *option, const QModelIndex &index) const override
-    {
-        QStyledItemDelegate::initStyleOption(option, index);
-        if (!index.data(Qt::EditRole).isValid()) {
-            option->text = QStringLiteral("—");
-            option->displayAlignment = Qt::AlignCenter;
-        }
-    }
-};
 
 } // namespace
 
@@ -503,7 +440,7 @@ void JointTable::refreshPosition(int row)
     const QSignalBlocker blocker(m_table);
     QTableWidgetItem *target = m_table->item(row, TargetColumn);
     if (value)
-        target->setData(kSuggestionRole, *value);
+        target->setData(TargetDelegate::SuggestionRole, *value);
 }
 
 void JointTable::refreshTarget(int row)
@@ -527,10 +464,10 @@ void JointTable::refreshTarget(int row)
                                   : tr("The goal register's range: the angle limits are not "
                                        "read yet or both 0"));
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable);
-        item->setData(kMinimumRole, range->minimum);
-        item->setData(kMaximumRole, range->maximum);
-        if (!item->data(kSuggestionRole).isValid())
-            item->setData(kSuggestionRole, (range->minimum + range->maximum) / 2);
+        item->setData(TargetDelegate::MinimumRole, range->minimum);
+        item->setData(TargetDelegate::MaximumRole, range->maximum);
+        if (!item->data(TargetDelegate::SuggestionRole).isValid())
+            item->setData(TargetDelegate::SuggestionRole, (range->minimum + range->maximum) / 2);
     }
     item->setData(Qt::EditRole, target ? QVariant(*target) : QVariant());
     const bool outside = target && range && !range->contains(*target);
@@ -650,276 +587,4 @@ void JointTable::onItemChanged(QTableWidgetItem *item)
             refreshRow(row); // the tick goes back to what the servo reports
         }
     }
-}
-
-// ---- actions
-
-bool JointTable::setTorque(int row, bool on, QString *error)
-{
-    const int index = servoIndex(row);
-    if (index < 0) {
-        if (error)
-            *error = tr("That servo is no longer on the bus.");
-        return false;
-    }
-    const int value = on ? kTorqueOn : kTorqueOff;
-    QString why;
-    if (!m_client->writeValues(index, {{kTorqueEnable, value}}, &why)) {
-        if (error)
-            *error = tr("%1: torque not switched %2: %3")
-                         .arg(servoName(row), on ? tr("on") : tr("off"), why);
-        return false;
-    }
-    m_rows[row].torqueRequested = value;
-    refreshRow(row);
-    return true;
-}
-
-int JointTable::capturePositions()
-{
-    int filled = 0;
-    QStringList missing;
-    for (int row = 0; row < rowCount(); ++row) {
-        if (!targetRange(row))
-            continue; // a servo that cannot be moved needs no target
-        if (const std::optional<qint32> value = position(row)) {
-            setTarget(row, *value);
-            ++filled;
-        } else {
-            missing.append(servoName(row));
-        }
-    }
-    if (missing.isEmpty())
-        setMessage(tr("Targets set to the present positions of %1 servos.").arg(filled),
-                   Tone::Success);
-    else
-        setMessage(tr("Targets set for %1 servos. No position is known yet for %2: read the "
-                      "positions first.")
-                       .arg(filled)
-                       .arg(missing.join(tr(", "))),
-                   Tone::Warning);
-    return filled;
-}
-
-bool JointTable::moveAll(QString *error)
-{
-    const auto refuse = [error](const QString &why) {
-        if (error)
-            *error = why;
-        return false;
-    };
-    if (!m_client->isConnected())
-        return refuse(tr("The bus is not connected: nothing was sent."));
-    if (rowCount() == 0)
-        return refuse(tr("No servos: scan the bus first."));
-
-    QVector<feetech::BusClient::Goal> goals;
-    QSet<qint32> bauds;
-    QStringList skipped;
-    QStringList torqueOff;
-    QStringList ids;
-    for (int row = 0; row < rowCount(); ++row) {
-        const int index = servoIndex(row);
-        const std::optional<feetech::PositionRange> range = targetRange(row);
-        if (index < 0 || !range) {
-            skipped.append(servoName(row));
-            continue;
-        }
-        const std::optional<qint32> target = m_rows.at(row).target;
-        if (!target)
-            return refuse(tr("%1 has no target: type one, load a pose or use “Targets from "
-                             "present positions”. Nothing was sent.")
-                              .arg(servoName(row)));
-        if (!range->contains(*target))
-            return refuse(tr("%1: the target %2 is outside its range %3 to %4. Nothing was "
-                             "sent.")
-                              .arg(servoName(row))
-                              .arg(*target)
-                              .arg(range->minimum)
-                              .arg(range->maximum));
-        // In wheel, PWM or step mode the goal register means something else (or nothing).
-        if (const auto mode = deviceValue(row, kMode); mode && *mode != 0) {
-            const feetech::Register *reg = m_client->servo(index).info.table().find(kMode);
-            return refuse(tr("%1 is in %2 mode; a goal position only moves a servo in position "
-                             "mode. Nothing was sent.")
-                              .arg(servoName(row),
-                                   reg ? feetech::displayValue(*reg, qint32(*mode))
-                                       : QString::number(*mode)));
-        }
-        if (deviceValue(row, kTorqueEnable) == std::optional<qint64>(kTorqueOff))
-            torqueOff.append(servoName(row));
-        goals.append({index, *target});
-        bauds.insert(m_rows.at(row).baud);
-        ids.append(QString::number(m_rows.at(row).id));
-    }
-    if (goals.isEmpty())
-        return refuse(tr("No servo here can be moved: their models are unknown."));
-    QString why;
-    if (!m_client->moveAll(goals, &why))
-        return refuse(tr("Nothing was sent: %1").arg(why));
-    m_movesInFlight += int(bauds.size());
-
-    QStringList report;
-    report.append(bauds.size() == 1
-                      ? tr("Targets sent to IDs %1 in one SYNC WRITE.").arg(ids.join(tr(", ")))
-                      : tr("Targets sent to IDs %1 in %2 SYNC WRITEs, one per baud rate.")
-                            .arg(ids.join(tr(", ")))
-                            .arg(bauds.size()));
-    if (!torqueOff.isEmpty())
-        report.append(tr("Torque is off on %1: it will not move until torque is on.")
-                          .arg(torqueOff.join(tr(", "))));
-    if (!skipped.isEmpty())
-        report.append(tr("Not moved (unknown model): %1.").arg(skipped.join(tr(", "))));
-    setMessage(report.join(u' '),
-               torqueOff.isEmpty() && skipped.isEmpty() ? Tone::Success : Tone::Warning);
-    return true;
-}
-
-bool JointTable::readPositions(QString *error)
-{
-    if (!m_client->isConnected()) {
-        if (error)
-            *error = tr("The bus is not connected.");
-        return false;
-    }
-    if (rowCount() == 0) {
-        if (error)
-            *error = tr("No servos: scan the bus first.");
-        return false;
-    }
-    for (int row = 0; row < rowCount(); ++row) {
-        const int index = servoIndex(row);
-        if (index >= 0)
-            m_client->readServo(index);
-    }
-    setMessage(tr("Reading %1 servos…").arg(rowCount()), Tone::Info);
-    return true;
-}
-
-bool JointTable::savePose(const QString &path, QString *error)
-{
-    feetech::Pose pose;
-    pose.name = m_poseName.isEmpty() ? QFileInfo(path).baseName() : m_poseName;
-    for (const Row &row : std::as_const(m_rows)) {
-        if (row.target)
-            pose.servos.append({row.id, row.baud, *row.target});
-    }
-    if (pose.servos.isEmpty()) {
-        if (error)
-            *error = tr("No targets to save: set some first.");
-        return false;
-    }
-    if (!feetech::savePose(path, pose, error))
-        return false;
-    m_poseName = pose.name;
-    refreshButtons();
-    setMessage(tr("Saved the pose “%1” with %2 targets to %3.")
-                   .arg(pose.name)
-                   .arg(pose.servos.size())
-                   .arg(QDir::toNativeSeparators(path)),
-               Tone::Success);
-    return true;
-}
-
-std::optional<JointTable::PoseMatch> JointTable::loadPose(const QString &path, QString *error)
-{
-    const std::optional<feetech::Pose> pose = feetech::loadPose(path, error);
-    if (!pose)
-        return std::nullopt;
-    PoseMatch match;
-    match.name = pose->name.isEmpty() ? QFileInfo(path).baseName() : pose->name;
-    for (const feetech::PoseEntry &entry : pose->servos) {
-        if (rowOf(entry.id, entry.baud) < 0)
-            match.notOnBus.append(entry);
-    }
-    for (int row = 0; row < rowCount(); ++row) {
-        const feetech::PoseEntry *entry = pose->find(m_rows.at(row).id, m_rows.at(row).baud);
-        if (!entry) {
-            match.rowsWithoutEntry.append(row);
-            continue;
-        }
-        setTarget(row, entry->position);
-        ++match.filled;
-        const std::optional<feetech::PositionRange> range = targetRange(row);
-        if (range && !range->contains(entry->position))
-            match.rowsOutOfRange.append(row);
-    }
-    m_poseName = match.name;
-    refreshButtons();
-
-    QStringList report;
-    report.append(tr("Loaded the pose “%1”: %2 targets filled. Nothing moves until you press "
-                     "Move all.")
-                      .arg(match.name)
-                      .arg(match.filled));
-    if (!match.notOnBus.isEmpty()) {
-        QStringList names;
-        for (const feetech::PoseEntry &entry : std::as_const(match.notOnBus))
-            names.append(tr("ID %1 at %2").arg(entry.id).arg(feetech::baudText(entry.baud)));
-        report.append(tr("Not on the bus: %1.").arg(names.join(tr(", "))));
-    }
-    if (!match.rowsWithoutEntry.isEmpty()) {
-        QStringList names;
-        for (const int row : std::as_const(match.rowsWithoutEntry))
-            names.append(servoName(row));
-        report.append(tr("Not in the pose (targets unchanged): %1.").arg(names.join(tr(", "))));
-    }
-    if (!match.rowsOutOfRange.isEmpty()) {
-        QStringList names;
-        for (const int row : std::as_const(match.rowsOutOfRange))
-            names.append(servoName(row));
-        report.append(tr("Outside their range (shown in red): %1.").arg(names.join(tr(", "))));
-    }
-    const bool clean = match.notOnBus.isEmpty() && match.rowsWithoutEntry.isEmpty()
-        && match.rowsOutOfRange.isEmpty();
-    setMessage(report.join(u' '), clean ? Tone::Success : Tone::Warning);
-    return match;
-}
-
-void JointTable::onMoveAllClicked()
-{
-    QString error;
-    if (!moveAll(&error))
-        setMessage(error, Tone::Error);
-}
-
-void JointTable::onCaptureClicked()
-{
-    capturePositions();
-}
-
-void JointTable::onReadClicked()
-{
-    QString error;
-    if (!readPositions(&error))
-        setMessage(error, Tone::Error);
-}
-
-void JointTable::onSaveClicked()
-{
-    const QString suggestion =
-        QDir(m_lastFolder)
-            .filePath(m_poseName.isEmpty() ? tr("pose.json") : QString(m_poseName + u".json"));
-    QString path = QFileDialog::getSaveFileName(this, tr("Save pose"), suggestion,
-                                                tr("ServoBench poses (*.json);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".json");
-    m_lastFolder = QFileInfo(path).absolutePath();
-    QString error;
-    if (!savePose(path, &error))
-        setMessage(error, Tone::Error);
-}
-
-void JointTable::onLoadClicked()
-{
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Load pose"), m_lastFolder, tr("ServoBench poses (*.json);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    m_lastFolder = QFileInfo(path).absolutePath();
-    QString error;
-    if (!loadPose(path, &error))
-        setMessage(error, Tone::Error);
 }
