@@ -94,7 +94,7 @@ private:
     {
         QTableWidget *table = m_page->readouts();
         for (int row = 0; row < table->rowCount(); ++row) {
-            if (table->item(row, MonitorPage::ServoColumn)->text()
+            if (table->item(row, MonitorReadouts::ServoColumn)->text()
                 == QStringLiteral("ID %1").arg(id))
                 return row;
         }
@@ -387,18 +387,18 @@ private slots:
         QVERIFY(m_page->isRunning());
         QCOMPARE(m_client->monitorOptions().rateHz, 100.0);
         for (quint8 id = 1; id <= 4; ++id) {
-            QTRY_COMPARE_WITH_TIMEOUT(readout(id, MonitorPage::StateColumn), QStringLiteral("OK"),
-                                      10000);
+            QTRY_COMPARE_WITH_TIMEOUT(readout(id, MonitorReadouts::StateColumn),
+                                      QStringLiteral("OK"), 10000);
             QTRY_VERIFY_WITH_TIMEOUT(m_page->plot()->bufferedPointCount(id, Quantity::Position) > 0,
                                      10000);
-            QVERIFY(readout(id, MonitorPage::PositionColumn) != QStringLiteral("—"));
-            QVERIFY(readout(id, MonitorPage::VoltageColumn) != QStringLiteral("—"));
+            QVERIFY(readout(id, MonitorReadouts::PositionColumn) != QStringLiteral("—"));
+            QVERIFY(readout(id, MonitorReadouts::VoltageColumn) != QStringLiteral("—"));
         }
-        QCOMPARE(readout(1, MonitorPage::StatusColumn), QStringLiteral("none"));
-        QCOMPARE(readout(1, MonitorPage::MovingColumn), QStringLiteral("no"));
+        QCOMPARE(readout(1, MonitorReadouts::StatusColumn), QStringLiteral("none"));
+        QCOMPARE(readout(1, MonitorReadouts::MovingColumn), QStringLiteral("no"));
         // SCS current has no documented scale: not shown rather than made up.
-        QCOMPARE(readout(4, MonitorPage::CurrentColumn), QStringLiteral("—"));
-        QTRY_VERIFY_WITH_TIMEOUT(readout(1, MonitorPage::RateColumn).toInt() > 0, 10000);
+        QCOMPARE(readout(4, MonitorReadouts::CurrentColumn), QStringLiteral("—"));
+        QTRY_VERIFY_WITH_TIMEOUT(readout(1, MonitorReadouts::RateColumn).toInt() > 0, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(m_page->plot()->shownPointCount(1, Quantity::Position) > 0, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(m_page->findChild<QLabel *>(QStringLiteral("monitorStatus"))
                                      ->text()
@@ -441,20 +441,20 @@ private slots:
         m_page->setSelectedServos({0, 1, 2});
         QString error;
         QVERIFY2(m_page->start(&error), qPrintable(error));
-        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorPage::StateColumn), QStringLiteral("OK"),
+        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorReadouts::StateColumn), QStringLiteral("OK"),
                                   10000);
         // Servo 2 goes silent: its ID moves away.
         m_simulator->call([](sim::Simulator &simulator) {
             simulator.feetechBus()->findServo(2)->setValue(u"id", 20);
         });
-        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorPage::StateColumn),
+        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorReadouts::StateColumn),
                                   QStringLiteral("Not answering"), 10000);
         const int row = readoutRow(2);
-        QCOMPARE(m_page->readouts()->item(row, MonitorPage::StateColumn)->foreground().color(),
+        QCOMPARE(m_page->readouts()->item(row, MonitorReadouts::StateColumn)->foreground().color(),
                  QColor(0xc0, 0x1c, 0x1c));
-        QVERIFY(readout(2, MonitorPage::MissedColumn).toInt() >= 3);
+        QVERIFY(readout(2, MonitorReadouts::MissedColumn).toInt() >= 3);
         // The others go on.
-        QCOMPARE(readout(1, MonitorPage::StateColumn), QStringLiteral("OK"));
+        QCOMPARE(readout(1, MonitorReadouts::StateColumn), QStringLiteral("OK"));
         const int before = m_page->plot()->bufferedPointCount(3, Quantity::Position);
         QTRY_VERIFY_WITH_TIMEOUT(
             m_page->plot()->bufferedPointCount(3, Quantity::Position) > before + 10, 10000);

@@ -1,29 +1,23 @@
 // The Monitor page: stream controls, the live plot, readouts refreshed on a timer rather than per
-// sample, and CSV recording through a buffered stream flushed twice a second.
+// sample, and CSV recording through feetech::TelemetryRecorder.
 #include "feetechgui/monitorpage.h"
 
 #include "common/widgethelpers.h"
 #include "feetech/busclient.h"
+#include "feetechgui/monitorreadouts.h"
 #include "feetechgui/telemetryplot.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
-#include <QFileInfo>
-#include <QFormLayout>
-#include <QGridLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStyle>
-#include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -37,28 +31,6 @@ constexpr int kIdRole = Qt::UserRole + 1;
 constexpr int kBaudRole = Qt::UserRole + 2;
 constexpr int kIndexRole = Qt::UserRole + 3;
 
-constexpr double kRates[] = {1, 5, 10, 20, 50, 100, 200};
-constexpr double kDefaultRate = 50;
-constexpr int kWindows[] = {5, 10, 30, 60, 120};
-constexpr int kDefaultWindow = 10;
-constexpr int kControlsWidth = 250;
-// Per-servo samples per second are counted over this span.
-constexpr qint64 kRateSpanUs = 1000000;
-
-const QColor kProblemColour(0xc0, 0x1c, 0x1c);
-
-// Decimals worth showing for each quantity, in its unit.
-int decimals(feetech::Quantity quantity)
-{
-    switch (quantity) {
-    case feetech::Quantity::Load:
-    case feetech::Quantity::Voltage:
-        return 1;
-    default:
-        return 0;
-    }
-}
-
 } // namespace
 
 MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
@@ -69,118 +41,7 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
 
-    // ---- left: what to stream and how to show it, in a scroll area for short windows
-    auto *scroll = new QScrollArea(this);
-    scroll->setObjectName(QStringLiteral("monitorControls"));
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setFixedWidth(kControlsWidth);
-    auto *controls = new QWidget(scroll);
-    auto *controlsLayout = new QVBoxLayout(controls);
-    controlsLayout->setContentsMargins(0, 0, 6, 0);
-    scroll->setWidget(controls);
-    layout->addWidget(scroll);
-
-    auto *servoGroup = new QGroupBox(tr("Servos"), controls);
-    auto *servoLayout = new QVBoxLayout(servoGroup);
-    m_servoList = new QListWidget(servoGroup);
-    m_servoList->setObjectName(QStringLiteral("monitorServoList"));
-    m_servoList->setToolTip(tr("The servos to stream; ticking or unticking one while streaming "
-                               "restarts the stream"));
-    m_servoList->setMinimumHeight(m_servoList->fontMetrics().height() * 6);
-    connect(m_servoList, &QListWidget::itemChanged, this, &MonitorPage::onServoItemChanged);
-    servoLayout->addWidget(m_servoList);
-    controlsLayout->addWidget(servoGroup, 1);
-
-    auto *quantityGroup = new QGroupBox(tr("Plot"), controls);
-    auto *quantityLayout = new QGridLayout(quantityGroup);
-    for (int q = 0; q < feetech::kQuantityCount; ++q) {
-        const feetech::Quantity quantity = feetech::kAllQuantities[q];
-        auto *check = new QCheckBox(feetech::quantityName(quantity), quantityGroup);
-        check->setObjectName(QStringLiteral("plot_%1").arg(feetech::quantityKey(quantity)));
-        check->setToolTip(
-            tr("Plot the %1 in %2")
-                .arg(feetech::quantityName(quantity).toLower(), feetech::quantityUnit(quantity)));
-        check->setChecked(quantity == feetech::Quantity::Position
-                          || quantity == feetech::Quantity::Speed
-                          || quantity == feetech::Quantity::Load);
-        connect(check, &QCheckBox::toggled, this, &MonitorPage::onQuantityToggled);
-        quantityLayout->addWidget(check, q / 2, q % 2);
-        m_quantityChecks.append(check);
-    }
-    controlsLayout->addWidget(quantityGroup);
-
-    auto *streamGroup = new QGroupBox(tr("Stream"), controls);
-    auto *streamLayout = new QFormLayout(streamGroup);
-    m_rateCombo = new QComboBox(streamGroup);
-    m_rateCombo->setObjectName(QStringLiteral("monitorRateCombo"));
-    m_rateCombo->setToolTip(tr("Samples per second for each servo"));
-    for (const double rate : kRates)
-        m_rateCombo->addItem(tr("%1 Hz").arg(rate), rate);
-    m_rateCombo->addItem(tr("As fast as the bus allows"), 0.0);
-    m_rateCombo->setCurrentIndex(m_rateCombo->findData(kDefaultRate));
-    connect(m_rateCombo, &QComboBox::activated, this, &MonitorPage::onRateChosen);
-    streamLayout->addRow(tr("Rate:"), m_rateCombo);
-    m_startButton =
-        actionButton(tr("Start"), "monitorStartButton",
-                     tr("Start or stop streaming the ticked servos' feedback"), streamGroup);
-    QFont bold = m_startButton->font();
-    bold.setBold(true);
-    m_startButton->setFont(bold);
-    connect(m_startButton, &QPushButton::clicked, this, &MonitorPage::toggleStream);
-    streamLayout->addRow(m_startButton);
-    controlsLayout->addWidget(streamGroup);
-
-    auto *viewGroup = new QGroupBox(tr("View"), controls);
-    auto *viewLayout = new QFormLayout(viewGroup);
-    m_windowCombo = new QComboBox(viewGroup);
-    m_windowCombo->setObjectName(QStringLiteral("monitorWindowCombo"));
-    m_windowCombo->setToolTip(tr("How many seconds of history the plot shows"));
-    for (const int seconds : kWindows)
-        m_windowCombo->addItem(tr("%1 s").arg(seconds), seconds);
-    m_windowCombo->setCurrentIndex(m_windowCombo->findData(kDefaultWindow));
-    connect(m_windowCombo, &QComboBox::activated, this, &MonitorPage::onWindowChosen);
-    viewLayout->addRow(tr("Window:"), m_windowCombo);
-    m_pauseButton =
-        actionButton(tr("Pause"), "monitorPauseButton",
-                     tr("Freeze the plot; samples are still received and recorded"), viewGroup);
-    m_pauseButton->setIcon(style()->standardIcon(QStyle::SP_MediaPause));
-    connect(m_pauseButton, &QPushButton::clicked, this, &MonitorPage::togglePause);
-    m_resetZoomButton = actionButton(tr("Reset zoom"), "monitorResetZoomButton",
-                                     tr("Back to the live view over the whole window"), viewGroup);
-    connect(m_resetZoomButton, &QPushButton::clicked, this, [this] { m_plot->resetZoom(); });
-    auto *viewButtons = new QHBoxLayout;
-    viewButtons->addWidget(m_pauseButton);
-    viewButtons->addWidget(m_resetZoomButton);
-    viewLayout->addRow(viewButtons);
-    m_exportButton =
-        actionButton(tr("Export PNG…"), "monitorExportButton",
-                     tr("Save the charts as they are shown as one PNG image"), viewGroup);
-    connect(m_exportButton, &QPushButton::clicked, this, &MonitorPage::chooseExportFile);
-    viewLayout->addRow(m_exportButton);
-    controlsLayout->addWidget(viewGroup);
-
-    auto *recordGroup = new QGroupBox(tr("Recording"), controls);
-    auto *recordLayout = new QVBoxLayout(recordGroup);
-    m_recordButton =
-        actionButton(tr("Record CSV…"), "monitorRecordButton",
-                     tr("Write every sample of the ticked servos to a CSV file"), recordGroup);
-    connect(m_recordButton, &QPushButton::clicked, this, &MonitorPage::toggleRecording);
-    recordLayout->addWidget(m_recordButton);
-    m_recordingLabel = new QLabel(recordGroup);
-    m_recordingLabel->setObjectName(QStringLiteral("monitorRecordingLabel"));
-    m_recordingLabel->setWordWrap(true);
-    m_recordingLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    recordLayout->addWidget(m_recordingLabel);
-    controlsLayout->addWidget(recordGroup);
-
-    m_message = new QLabel(controls);
-    m_message->setObjectName(QStringLiteral("monitorMessage"));
-    m_message->setWordWrap(true);
-    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_message->hide();
-    controlsLayout->addWidget(m_message);
+    layout->addWidget(buildControls());
 
     // ---- right: plots over readouts, the stream's health below
     auto *right = new QWidget(this);
@@ -189,32 +50,12 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     auto *splitter = new QSplitter(Qt::Vertical, right);
     splitter->setChildrenCollapsible(false);
     m_plot = new TelemetryPlot(splitter);
-    m_plot->setWindowSeconds(kDefaultWindow);
+    m_plot->setWindowSeconds(kDefaultWindowSeconds);
     connect(m_plot, &TelemetryPlot::pausedChanged, this, &MonitorPage::updateControls);
     connect(m_plot, &TelemetryPlot::zoomedChanged, this, &MonitorPage::updateControls);
     splitter->addWidget(m_plot);
 
-    m_readouts = new QTableWidget(0, ReadoutColumns, splitter);
-    m_readouts->setObjectName(QStringLiteral("monitorReadouts"));
-    QStringList headers {tr("Servo")};
-    for (const feetech::Quantity quantity : feetech::kAllQuantities) {
-        headers.append(
-            tr("%1 (%2)").arg(feetech::quantityName(quantity), feetech::quantityUnit(quantity)));
-    }
-    headers << tr("Moving") << tr("Status") << tr("Samples/s") << tr("Missed") << tr("State");
-    m_readouts->setHorizontalHeaderLabels(headers);
-    m_readouts->horizontalHeaderItem(StatusColumn)
-        ->setToolTip(tr("The servo's protection bits that tripped (register 65)"));
-    m_readouts->horizontalHeaderItem(MissedColumn)
-        ->setToolTip(tr("Cycles in which the servo was asked and did not answer"));
-    m_readouts->verticalHeader()->hide();
-    m_readouts->verticalHeader()->setDefaultSectionSize(m_readouts->fontMetrics().height() + 6);
-    m_readouts->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_readouts->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_readouts->setAlternatingRowColors(true);
-    m_readouts->setWordWrap(false);
-    m_readouts->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_readouts->horizontalHeader()->setSectionResizeMode(StatusColumn, QHeaderView::Stretch);
+    m_readouts = new MonitorReadouts(m_client, splitter);
     splitter->addWidget(m_readouts);
     splitter->setStretchFactor(0, 4);
     splitter->setStretchFactor(1, 1);
@@ -347,7 +188,7 @@ bool MonitorPage::start(QString *error)
                 // A new run starts a new time line (its samples come later, queued); a
                 // restart keeps the present one going.
                 m_plot->clear();
-                m_latest.clear();
+                m_readouts->clearSamples();
                 m_unlisted.clear();
                 m_stats = {};
                 m_readoutsDirty = true;
@@ -379,47 +220,6 @@ void MonitorPage::stop()
 bool MonitorPage::isRunning() const
 {
     return m_client && m_client->isMonitoring();
-}
-
-bool MonitorPage::startRecording(const QString &path, QString *error)
-{
-    stopRecording();
-    // A header that could not be written goes through failRecording(), which says why; a file
-    // that could not be opened is said here.
-    bool reported = false;
-    const QMetaObject::Connection watch = connect(m_recorder, &feetech::TelemetryRecorder::failed,
-                                                  this, [&reported] { reported = true; });
-    QString why;
-    const bool opened = m_recorder->open(path, &why);
-    disconnect(watch);
-    if (!opened) {
-        if (reported)
-            why = m_message->text();
-        else
-            showMessage(why, true);
-        if (error)
-            *error = why;
-        return false;
-    }
-    showMessage({}, false);
-    updateRecordingLabel();
-    updateControls();
-    emit recordingChanged(true);
-    return true;
-}
-
-void MonitorPage::stopRecording()
-{
-    if (!isRecording())
-        return;
-    if (!m_recorder->finish())
-        return; // failRecording() has said why and closed it
-    const QString path = m_recorder->fileName();
-    m_recordingLabel->setText(tr("%Ln row(s) saved to %1.", nullptr, int(recordedRows()))
-                                  .arg(QFileInfo(path).fileName()));
-    m_recordingLabel->setToolTip(QDir::toNativeSeparators(path));
-    updateControls();
-    emit recordingChanged(false);
 }
 
 bool MonitorPage::exportPng(const QString &path, QString *error)
@@ -457,12 +257,7 @@ void MonitorPage::addSamples(const QVector<feetech::FeedbackSample> &samples)
             continue;
         if (entry == listed.constEnd() && !m_unlisted.contains(key))
             m_unlisted.append(key);
-        Latest &latest = m_latest[key];
-        if (sample.steadyUs >= latest.sample.steadyUs)
-            latest.sample = sample;
-        latest.recent.push_back(sample.steadyUs);
-        while (!latest.recent.empty() && latest.recent.front() <= sample.steadyUs - kRateSpanUs)
-            latest.recent.pop_front();
+        m_readouts->addSample(sample);
         kept.append(sample);
         m_recorder->write(sample); // from its start on
     }
@@ -475,81 +270,10 @@ void MonitorPage::addSamples(const QVector<feetech::FeedbackSample> &samples)
 void MonitorPage::updateReadouts()
 {
     m_readoutsDirty = false;
-    const QVector<Key> keys = readoutKeys();
-    if (m_readouts->rowCount() != keys.size())
-        m_readouts->setRowCount(int(keys.size()));
-    const qint64 now = feetech::steadyMicroseconds();
-    const QLocale locale;
-    const QString none = tr("—");
-    for (int row = 0; row < keys.size(); ++row) {
-        const Key &key = keys.at(row);
-        const auto latest = m_latest.find(key);
-        const feetech::FeedbackSample *sample =
-            latest != m_latest.end() && latest->sample.steadyUs != 0 ? &latest->sample : nullptr;
-        const feetech::ServoTelemetry *health = nullptr;
-        for (const feetech::ServoTelemetry &servo : std::as_const(m_stats.servos)) {
-            if (servo.id == key.id && servo.baud == key.baud)
-                health = &servo;
-        }
-
-        QStringList cells(ReadoutColumns);
-        cells[ServoColumn] = tr("ID %1").arg(key.id);
-        for (int q = 0; q < feetech::kQuantityCount; ++q) {
-            const auto value = sample ? sample->values.at(std::size_t(q)) : std::nullopt;
-            cells[PositionColumn + q] =
-                value ? locale.toString(*value, 'f', decimals(feetech::kAllQuantities[q])) : none;
-        }
-        cells[MovingColumn] = sample ? (sample->moving ? tr("yes") : tr("no")) : none;
-        cells[StatusColumn] = sample ? statusText(key, sample->servoStatus) : none;
-        if (latest != m_latest.end() && isRunning()) {
-            while (!latest->recent.empty() && latest->recent.front() <= now - kRateSpanUs)
-                latest->recent.pop_front();
-            cells[RateColumn] = locale.toString(qint64(latest->recent.size()));
-        } else {
-            cells[RateColumn] = none;
-        }
-        cells[MissedColumn] = health ? locale.toString(health->missed) : none;
-        bool missing = false;
-        if (health && health->missing) {
-            cells[StateColumn] = tr("Not answering");
-            missing = true;
-        } else if (!isRunning()) {
-            cells[StateColumn] = sample ? tr("Stopped") : none;
-        } else if (!sample) {
-            cells[StateColumn] = tr("Waiting");
-        } else {
-            cells[StateColumn] = tr("OK");
-        }
-
-        for (int column = 0; column < ReadoutColumns; ++column) {
-            QTableWidgetItem *item = m_readouts->item(row, column);
-            if (!item) {
-                item = new QTableWidgetItem;
-                const bool text = column == ServoColumn || column == StatusColumn
-                    || column == StateColumn || column == MovingColumn;
-                item->setTextAlignment(Qt::Alignment(text ? Qt::AlignLeft : Qt::AlignRight)
-                                       | Qt::AlignVCenter);
-                m_readouts->setItem(row, column, item);
-            }
-            if (item->text() != cells.at(column))
-                item->setText(cells.at(column));
-        }
-        // A tripped protection bit or a servo that stopped answering must catch the eye.
-        const bool tripped = sample && sample->servoStatus != 0;
-        QTableWidgetItem *status = m_readouts->item(row, StatusColumn);
-        status->setForeground(tripped ? QBrush(kProblemColour) : QBrush());
-        QTableWidgetItem *state = m_readouts->item(row, StateColumn);
-        state->setForeground(missing ? QBrush(kProblemColour) : QBrush());
-        QFont font = state->font();
-        font.setBold(missing);
-        state->setFont(font);
-        QTableWidgetItem *servo = m_readouts->item(row, ServoColumn);
-        servo->setForeground(m_plot->servoColor(key.id, key.baud).isValid()
-                                 ? QBrush(m_plot->servoColor(key.id, key.baud))
-                                 : QBrush());
-        servo->setBackground(missing ? QBrush(QColor(0xfd, 0xe2, 0xe2)) : QBrush());
-        servo->setToolTip(tr("ID %1 at %2").arg(key.id).arg(feetech::baudText(key.baud)));
-    }
+    QVector<MonitorReadouts::Row> rows;
+    for (const Key &key : readoutKeys())
+        rows.append({key, m_plot->servoColor(key.id, key.baud)});
+    m_readouts->refresh(rows, m_stats, isRunning());
     updateStatusLine();
 }
 
@@ -684,21 +408,6 @@ void MonitorPage::chooseExportFile()
         exportPng(path);
 }
 
-void MonitorPage::toggleRecording()
-{
-    if (isRecording()) {
-        stopRecording();
-        return;
-    }
-    const QString directory = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Record telemetry"),
-        QDir(directory).filePath(QStringLiteral("servobench-telemetry.csv")),
-        tr("CSV files (*.csv)"));
-    if (!path.isEmpty())
-        startRecording(path);
-}
-
 void MonitorPage::restartIfRunning()
 {
     if (!isRunning())
@@ -756,37 +465,12 @@ void MonitorPage::updateStatusLine()
         m_statusLine->setText(text);
 }
 
-void MonitorPage::updateRecordingLabel()
-{
-    if (!isRecording()) {
-        if (m_recordingLabel->text().isEmpty())
-            m_recordingLabel->setText(tr("Not recording."));
-        return;
-    }
-    const QString path = m_recorder->fileName();
-    m_recordingLabel->setText(tr("Recording to %1: %Ln row(s).", nullptr, int(recordedRows()))
-                                  .arg(QFileInfo(path).fileName()));
-    m_recordingLabel->setToolTip(QDir::toNativeSeparators(path));
-}
-
-void MonitorPage::failRecording(const QString &why)
-{
-    const QString path = QDir::toNativeSeparators(m_recorder->fileName());
-    const QString message =
-        tr("Recording to %1 failed after %Ln row(s): %2", nullptr, int(recordedRows()))
-            .arg(path, why);
-    m_recordingLabel->setText(tr("Recording failed."));
-    showMessage(message, true);
-    emit problem(message);
-    updateControls();
-    emit recordingChanged(false);
-}
-
 void MonitorPage::showMessage(const QString &text, bool isError)
 {
     m_message->setText(text);
-    m_message->setStyleSheet(isError ? QStringLiteral("color: %1;").arg(kProblemColour.name())
-                                     : QString());
+    m_message->setStyleSheet(
+        isError ? QStringLiteral("color: %1;").arg(MonitorReadouts::kProblemColour.name())
+                : QString());
     m_message->setVisible(!text.isEmpty());
 }
 
@@ -815,12 +499,4 @@ bool MonitorPage::isListed(const Key &key) const
 QVector<MonitorPage::Key> MonitorPage::readoutKeys() const
 {
     return checkedKeys() + m_unlisted;
-}
-
-QString MonitorPage::statusText(const Key &key, quint8 bits) const
-{
-    const int index = m_client ? m_client->indexOf(key.id, key.baud) : -1;
-    if (index >= 0)
-        return feetech::servoStatusText(m_client->servo(index).info.table(), bits);
-    return bits == 0 ? tr("none") : QStringLiteral("0x%1").arg(bits, 2, 16, QLatin1Char('0'));
 }

@@ -6,20 +6,18 @@
 #include "feetech/feetechsession.h"
 #include "feetech/telemetry.h"
 #include "feetech/telemetryrecorder.h"
+#include "feetechgui/monitorreadouts.h"
 
 #include <QHash>
 #include <QPointer>
 #include <QVector>
 #include <QWidget>
 
-#include <deque>
-
 class QCheckBox;
 class QComboBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
-class QTableWidget;
 class QTimer;
 class TelemetryPlot;
 
@@ -32,22 +30,8 @@ class MonitorPage : public QWidget
     Q_OBJECT
 
 public:
-    enum ReadoutColumn {
-        ServoColumn,
-        PositionColumn,
-        SpeedColumn,
-        LoadColumn,
-        VoltageColumn,
-        TemperatureColumn,
-        CurrentColumn,
-        MovingColumn,
-        StatusColumn,
-        RateColumn, // samples per second received
-        MissedColumn,
-        StateColumn, // waiting, receiving, not answering
-        ReadoutColumns
-    };
-
+    // The plot's history when the page opens.
+    static constexpr int kDefaultWindowSeconds = 10;
     // Readouts refresh at most this often, however fast samples come.
     static constexpr int kReadoutIntervalMs = 100;
     // A recording reaches the disk at least this often.
@@ -87,7 +71,7 @@ public:
     void updateReadouts(); // now rather than on the next tick
 
     TelemetryPlot *plot() const { return m_plot; }
-    QTableWidget *readouts() const { return m_readouts; }
+    MonitorReadouts *readouts() const { return m_readouts; }
     QListWidget *servoList() const { return m_servoList; }
 
 signals:
@@ -99,19 +83,9 @@ protected:
     void hideEvent(QHideEvent *event) override;
 
 private:
-    struct Key
-    {
-        quint8 id = 0;
-        qint32 baud = 0;
-        bool operator==(const Key &other) const { return id == other.id && baud == other.baud; }
-    };
-    friend size_t qHash(const Key &key, size_t seed) { return qHashMulti(seed, key.id, key.baud); }
-    struct Latest
-    {
-        feetech::FeedbackSample sample;
-        std::deque<qint64> recent; // steady times of the last second's samples
-    };
+    using Key = MonitorServoKey;
 
+    QWidget *buildControls();
     void rebuildServoList();
     void onServoItemChanged();
     void onQuantityToggled();
@@ -134,7 +108,6 @@ private:
     QVector<Key> checkedKeys() const;
     bool isListed(const Key &key) const;
     QVector<Key> readoutKeys() const;
-    QString statusText(const Key &key, quint8 bits) const;
 
     QPointer<feetech::BusClient> m_client;
     TelemetryPlot *m_plot = nullptr;
@@ -150,12 +123,11 @@ private:
     QLabel *m_recordingLabel = nullptr;
     QLabel *m_message = nullptr;
     QLabel *m_statusLine = nullptr;
-    QTableWidget *m_readouts = nullptr;
+    MonitorReadouts *m_readouts = nullptr;
     QTimer *m_readoutTimer = nullptr;
 
     bool m_updatingList = false; // our own check-state changes are not the user's
     bool m_readoutsDirty = true;
-    QHash<Key, Latest> m_latest;
     QVector<Key> m_unlisted; // servos samples came for that the list does not name
     feetech::TelemetryStats m_stats;
 
