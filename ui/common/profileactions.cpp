@@ -76,4 +76,18 @@ LoadOutcome loadAsEdits(QWidget *parent, const QString &path, const QString &fam
     return LoadOutcome::Loaded;
 }
 
+QString outcomeMessage(LoadOutcome outcome)
+{
+    switch (outcome) {
+    case LoadOutcome::AlreadyEqual:
+        return Tr::tr("The servo already holds every value of this profile");
+    case LoadOutcome::Loaded:
+        return Tr::tr("Profile loaded as edits: review them, then Apply");
+    case LoadOutcome::Failed:
+    case LoadOutcome::Cancelled:
+        break;
+    }
+    return {};
+}
+
 } // namespace profileactions

@@ -110,18 +110,10 @@ void PtkWorkspace::loadProfile(const QString &path)
         return;
     }
     QString error;
-    switch (profileactions::loadAsEdits(this, path, kPtkFamily, m_client->model()->definitions(),
-                                        *m_client->model(), &error)) {
-    case profileactions::LoadOutcome::Failed:
+    const profileactions::LoadOutcome outcome = profileactions::loadAsEdits(
+        this, path, kPtkFamily, m_client->model()->definitions(), *m_client->model(), &error);
+    if (outcome == profileactions::LoadOutcome::Failed)
         emit problem(error);
-        break;
-    case profileactions::LoadOutcome::AlreadyEqual:
-        emit message(tr("The servo already holds every value of this profile"));
-        break;
-    case profileactions::LoadOutcome::Cancelled:
-        break;
-    case profileactions::LoadOutcome::Loaded:
-        emit message(tr("Profile loaded as edits: review them, then Apply"));
-        break;
-    }
+    else if (const QString note = profileactions::outcomeMessage(outcome); !note.isEmpty())
+        emit message(note);
 }
