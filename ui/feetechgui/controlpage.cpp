@@ -99,7 +99,7 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     left->addWidget(buildModeGroup());
     left->addStretch(1);
     columns->addLayout(left, 0);
-    m_testPanel = new MotionTestPanel(m_client, m_test, this);
+    m_testPanel = new MotionTestPanel(m_test, this);
     connect(m_testPanel, &MotionTestPanel::statusChanged, this,
             [this](const QString &text, bool isError) {
                 setStatus(text, isError ? Severity::Error : Severity::Info);

@@ -4,7 +4,6 @@
 
 #include "common/palette.h"
 #include "common/widgethelpers.h"
-#include "feetech/busclient.h"
 #include "feetech/registertable.h"
 #include "feetechgui/registerwidgets.h"
 
@@ -47,10 +46,8 @@ constexpr double kMinimumVisibleBand = 0.05; // of the position axis
 
 } // namespace
 
-MotionTestPanel::MotionTestPanel(feetech::BusClient *client, feetech::MotionTest *test,
-                                 QWidget *parent)
+MotionTestPanel::MotionTestPanel(feetech::MotionTest *test, QWidget *parent)
     : QGroupBox(tr("Step and sweep tests"), parent)
-    , m_client(client)
     , m_test(test)
 {
     setObjectName(QStringLiteral("testGroup"));

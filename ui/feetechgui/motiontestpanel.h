@@ -5,7 +5,6 @@
 #include "feetech/motiontest.h"
 
 #include <QGroupBox>
-#include <QPointer>
 
 class QChartView;
 class QDoubleSpinBox;
@@ -16,9 +15,8 @@ class QSpinBox;
 class QValueAxis;
 
 namespace feetech {
-class BusClient;
 struct Register;
-} // namespace feetech
+}
 
 // Runs feetech::MotionTest (owned by the page, which also needs to know when a test moves its
 // servo) for the servo the page shows; errors go to the page's status line via statusChanged().
@@ -27,8 +25,7 @@ class MotionTestPanel : public QGroupBox
     Q_OBJECT
 
 public:
-    MotionTestPanel(feetech::BusClient *client, feetech::MotionTest *test,
-                    QWidget *parent = nullptr);
+    explicit MotionTestPanel(feetech::MotionTest *test, QWidget *parent = nullptr);
 
     // Whether a test asks first (a warning with Cancel as the default).
     void setConfirmMoves(bool confirm) { m_confirmMoves = confirm; }
@@ -68,7 +65,6 @@ private:
     void showStepMetrics(const feetech::StepMetrics &metrics);
     void plotRecording(const feetech::StepMetrics &metrics);
 
-    QPointer<feetech::BusClient> m_client;
     feetech::MotionTest *m_test = nullptr;
     int m_index = -1;
     QString m_servoName;
