@@ -3,6 +3,7 @@
 #include "feetechbus.h"
 #include "feetechgui/monitorpage.h"
 #include "feetechgui/telemetryplot.h"
+#include "telemetrycsv.h"
 
 #include <QChart>
 #include <QChartView>
@@ -58,16 +59,6 @@ qint64 feed(MonitorPage &page, qint64 startUs, int seconds, int servos = kServos
     }
     page.addSamples(batch);
     return startUs + cycles * kPeriodUs;
-}
-
-std::optional<QVector<feetech::CsvSample>> readCsv(const QString &path, QString *error)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        *error = file.errorString();
-        return std::nullopt;
-    }
-    return feetech::parseTelemetryCsv(QString::fromUtf8(file.readAll()), error);
 }
 
 } // namespace
@@ -328,19 +319,9 @@ private slots:
         m_page->stopRecording();
         QVERIFY(!m_page->isRecording());
 
-        const auto rows = readCsv(path, &error);
+        const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
-        QCOMPARE(rows->size(), written.size());
-        for (int i = 0; i < written.size(); ++i) {
-            const FeedbackSample &sample = written.at(i);
-            const feetech::CsvSample &row = rows->at(i);
-            QCOMPARE(row.id, int(sample.id));
-            QVERIFY(qAbs(row.timeSeconds - double(sample.steadyUs - start) / 1e6) < 1e-6);
-            for (int q = 0; q < feetech::kQuantityCount; ++q)
-                QCOMPARE(row.values.at(q), sample.values.at(q));
-            QCOMPARE(row.servoStatus, int(sample.servoStatus));
-            QCOMPARE(row.moving, sample.moving);
-        }
+        testsupport::compareTelemetryRows(*rows, written, start);
     }
 
     void recordingToAnUnwritablePlaceSaysWhy()
@@ -423,7 +404,7 @@ private slots:
         m_page->stop();
         QVERIFY(!m_page->isRunning());
         QVERIFY(!m_page->isRecording());
-        const auto rows = readCsv(path, &error);
+        const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
         QVERIFY(rows->size() >= 30);
         QSet<int> ids;
@@ -474,8 +455,9 @@ private slots:
         QCOMPARE(recording.count(), 1);
         QTRY_VERIFY_WITH_TIMEOUT(!m_page->isRunning(), 10000);
         QString parseError;
-        QVERIFY2(readCsv(m_dir.filePath(QStringLiteral("cut.csv")), &parseError),
-                 qPrintable(parseError));
+        QVERIFY2(
+            testsupport::readTelemetryCsv(m_dir.filePath(QStringLiteral("cut.csv")), &parseError),
+            qPrintable(parseError));
     }
 };
 

@@ -1,6 +1,7 @@
 // Tests the telemetry CSV recorder: rows that parse back, absent values, samples before the
 // start, an unwritable file, a device such as stdout, the flush interval and a failing disk.
 #include "feetech/telemetryrecorder.h"
+#include "telemetrycsv.h"
 
 #include <QBuffer>
 #include <QDir>
@@ -26,16 +27,6 @@ FeedbackSample sampleAt(quint8 id, qint64 steadyUs, double position)
     sample.values[int(Quantity::Voltage)] = 12.1;
     sample.values[int(Quantity::Temperature)] = 31.0;
     return sample;
-}
-
-std::optional<QVector<feetech::CsvSample>> parseFile(const QString &path, QString *error)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        *error = file.errorString();
-        return std::nullopt;
-    }
-    return feetech::parseTelemetryCsv(QString::fromUtf8(file.readAll()), error);
 }
 
 } // namespace
@@ -68,19 +59,9 @@ private slots:
         QVERIFY(recorder.finish());
         QVERIFY(!recorder.isRecording());
 
-        const auto rows = parseFile(path, &error);
+        const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
-        QCOMPARE(rows->size(), samples.size());
-        for (int i = 0; i < samples.size(); ++i) {
-            const FeedbackSample &sample = samples.at(i);
-            const feetech::CsvSample &row = rows->at(i);
-            QCOMPARE(row.id, int(sample.id));
-            QVERIFY(qAbs(row.timeSeconds - double(sample.steadyUs - start) / 1e6) < 1e-6);
-            for (int q = 0; q < feetech::kQuantityCount; ++q)
-                QCOMPARE(row.values.at(q), sample.values.at(q));
-            QCOMPARE(row.servoStatus, int(sample.servoStatus));
-            QCOMPARE(row.moving, sample.moving);
-        }
+        testsupport::compareTelemetryRows(*rows, samples, start);
     }
 
     void valuesAServoDoesNotReportStayEmptyCells()
@@ -184,7 +165,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!flushed.isEmpty(), 5000);
         QCOMPARE(flushed.last().at(0).toLongLong(), qint64(1));
         QString error;
-        const auto rows = parseFile(path, &error); // while still recording
+        const auto rows = testsupport::readTelemetryCsv(path, &error); // while still recording
         QVERIFY2(rows, qPrintable(error));
         QCOMPARE(rows->size(), 1);
     }
