@@ -3,8 +3,8 @@
 // The simulated servos run in a separate servosim process, so their work is not counted.
 #include "benchsupport.h"
 #include "feetech/busclient.h"
-#include "monitorpage.h"
-#include "telemetryplot.h"
+#include "feetechgui/monitorpage.h"
+#include "feetechgui/telemetryplot.h"
 
 #include <QApplication>
 #include <QDir>

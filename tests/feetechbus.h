@@ -4,6 +4,7 @@
 #include "feetech/busclient.h"
 #include "feetech/feetechpacket.h"
 #include "feetech/feetechsession.h"
+#include "feetech/motiontest.h"
 #include "sim/virtualfeetechservo.h"
 #include "simclient.h"
 
@@ -15,6 +16,17 @@
 #include <memory>
 
 namespace testsupport {
+
+// Motion-test timing short enough for tests to run in seconds; the behaviour does not depend
+// on it.
+inline feetech::MotionTiming quickMotionTiming()
+{
+    feetech::MotionTiming timing;
+    timing.reachTimeout = std::chrono::milliseconds(5000);
+    timing.dwell = std::chrono::milliseconds(50);
+    timing.finalSamplesGrace = std::chrono::milliseconds(150);
+    return timing;
+}
 
 // Servos with IDs 1, 2, ... of `models`, all at `baud`.
 inline QVector<sim::FeetechServoSpec> servosAt(qint32 baud,
@@ -57,6 +69,24 @@ inline bool connectAndScan(feetech::BusClient &client, const QString &link, int 
         return false;
     }
     return true;
+}
+
+// connectAndScan, then a full read of servo `id` at 1 Mbps: its index, -1 when the servo was
+// not found or not read within 10 s.
+inline int connectScanAndRead(feetech::BusClient &client, const QString &link, int lastId,
+                              quint8 id)
+{
+    if (!connectAndScan(client, link, lastId))
+        return -1;
+    const int index = client.indexOf(id, 1000000);
+    if (index < 0)
+        return -1;
+    client.readServo(index);
+    if (!QTest::qWaitFor([&] { return client.servo(index).read; }, 10000)) {
+        qWarning("servo %d was not read within 10 s", id);
+        return -1;
+    }
+    return index;
 }
 
 // The frames a simulator log shows the bus received, in order, as bytes; frames the simulator

@@ -1,8 +1,8 @@
 // GUI tests of the Control page against a simulated bus (STS3215 ×2 + SCS15 at 1 Mbps): torque,
 // goals, the throttled slider, operating mode, step and sweep tests, and All torque off.
-#include "controlpage.h"
 #include "feetech/motiontest.h"
 #include "feetechbus.h"
+#include "feetechgui/controlpage.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -23,16 +23,6 @@ constexpr qint32 k1M = 1000000;
 constexpr int kGoalAddress = 42;
 constexpr int kTorqueAddress = 40;
 constexpr quint8 kWrite = 0x03;
-
-// Short waits so the tests run in seconds; the behaviour does not depend on them.
-feetech::MotionTiming quickTiming()
-{
-    feetech::MotionTiming timing;
-    timing.reachTimeout = std::chrono::milliseconds(5000);
-    timing.dwell = std::chrono::milliseconds(50);
-    timing.finalSamplesGrace = std::chrono::milliseconds(150);
-    return timing;
-}
 
 } // namespace
 
@@ -126,7 +116,7 @@ private slots:
         QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
         m_client = std::make_unique<feetech::BusClient>();
         m_page = std::make_unique<ControlPage>(m_client.get());
-        m_page->setMotionTiming(quickTiming());
+        m_page->setMotionTiming(testsupport::quickMotionTiming());
         m_page->resize(900, 700);
         m_page->show();
     }
@@ -278,7 +268,8 @@ private slots:
                  failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
         const auto metrics = finished.first().first().value<feetech::StepMetrics>();
         QCOMPARE(metrics.target, 2200.0);
-        QVERIFY(std::abs(metrics.start - 2000.0) <= quickTiming().reachTolerance);
+        QVERIFY(std::abs(metrics.start - 2000.0)
+                <= testsupport::quickMotionTiming().reachTolerance);
         QVERIFY(metrics.riseTime.has_value());
         QVERIFY(*metrics.riseTime > 0.0);
         QVERIFY(metrics.settled);
@@ -386,7 +377,7 @@ private slots:
     {
         const int index = showServo(1);
         QVERIFY(index >= 0);
-        feetech::MotionTiming timing = quickTiming();
+        feetech::MotionTiming timing = testsupport::quickMotionTiming();
         timing.reachTimeout = std::chrono::milliseconds(300); // each leg gives up quickly
         m_page->setMotionTiming(timing);
         m_page->setConfirmMoves(false);

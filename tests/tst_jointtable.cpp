@@ -2,7 +2,7 @@
 // SYNC WRITE, live positions and pose files.
 #include "feetech/pose.h"
 #include "feetechbus.h"
-#include "jointtable.h"
+#include "feetechgui/jointtable.h"
 
 #include <QLabel>
 #include <QMap>

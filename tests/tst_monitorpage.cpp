@@ -1,8 +1,9 @@
 // GUI tests of the Monitor page: bounded plot memory under a long synthetic stream, CSV
 // recordings that parse back, PNG export, and live monitoring of a simulated bus.
 #include "feetechbus.h"
-#include "monitorpage.h"
-#include "telemetryplot.h"
+#include "feetechgui/monitorpage.h"
+#include "feetechgui/telemetryplot.h"
+#include "telemetrycsv.h"
 
 #include <QChart>
 #include <QChartView>
@@ -60,16 +61,6 @@ qint64 feed(MonitorPage &page, qint64 startUs, int seconds, int servos = kServos
     return startUs + cycles * kPeriodUs;
 }
 
-std::optional<QVector<feetech::CsvSample>> readCsv(const QString &path, QString *error)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        *error = file.errorString();
-        return std::nullopt;
-    }
-    return feetech::parseTelemetryCsv(QString::fromUtf8(file.readAll()), error);
-}
-
 } // namespace
 
 class TestMonitorPage : public testsupport::FeetechBusTest
@@ -94,7 +85,7 @@ private:
     {
         QTableWidget *table = m_page->readouts();
         for (int row = 0; row < table->rowCount(); ++row) {
-            if (table->item(row, MonitorPage::ServoColumn)->text()
+            if (table->item(row, MonitorReadouts::ServoColumn)->text()
                 == QStringLiteral("ID %1").arg(id))
                 return row;
         }
@@ -328,19 +319,9 @@ private slots:
         m_page->stopRecording();
         QVERIFY(!m_page->isRecording());
 
-        const auto rows = readCsv(path, &error);
+        const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
-        QCOMPARE(rows->size(), written.size());
-        for (int i = 0; i < written.size(); ++i) {
-            const FeedbackSample &sample = written.at(i);
-            const feetech::CsvSample &row = rows->at(i);
-            QCOMPARE(row.id, int(sample.id));
-            QVERIFY(qAbs(row.timeSeconds - double(sample.steadyUs - start) / 1e6) < 1e-6);
-            for (int q = 0; q < feetech::kQuantityCount; ++q)
-                QCOMPARE(row.values.at(q), sample.values.at(q));
-            QCOMPARE(row.servoStatus, int(sample.servoStatus));
-            QCOMPARE(row.moving, sample.moving);
-        }
+        testsupport::compareTelemetryRows(*rows, written, start);
     }
 
     void recordingToAnUnwritablePlaceSaysWhy()
@@ -387,18 +368,18 @@ private slots:
         QVERIFY(m_page->isRunning());
         QCOMPARE(m_client->monitorOptions().rateHz, 100.0);
         for (quint8 id = 1; id <= 4; ++id) {
-            QTRY_COMPARE_WITH_TIMEOUT(readout(id, MonitorPage::StateColumn), QStringLiteral("OK"),
-                                      10000);
+            QTRY_COMPARE_WITH_TIMEOUT(readout(id, MonitorReadouts::StateColumn),
+                                      QStringLiteral("OK"), 10000);
             QTRY_VERIFY_WITH_TIMEOUT(m_page->plot()->bufferedPointCount(id, Quantity::Position) > 0,
                                      10000);
-            QVERIFY(readout(id, MonitorPage::PositionColumn) != QStringLiteral("—"));
-            QVERIFY(readout(id, MonitorPage::VoltageColumn) != QStringLiteral("—"));
+            QVERIFY(readout(id, MonitorReadouts::PositionColumn) != QStringLiteral("—"));
+            QVERIFY(readout(id, MonitorReadouts::VoltageColumn) != QStringLiteral("—"));
         }
-        QCOMPARE(readout(1, MonitorPage::StatusColumn), QStringLiteral("none"));
-        QCOMPARE(readout(1, MonitorPage::MovingColumn), QStringLiteral("no"));
+        QCOMPARE(readout(1, MonitorReadouts::StatusColumn), QStringLiteral("none"));
+        QCOMPARE(readout(1, MonitorReadouts::MovingColumn), QStringLiteral("no"));
         // SCS current has no documented scale: not shown rather than made up.
-        QCOMPARE(readout(4, MonitorPage::CurrentColumn), QStringLiteral("—"));
-        QTRY_VERIFY_WITH_TIMEOUT(readout(1, MonitorPage::RateColumn).toInt() > 0, 10000);
+        QCOMPARE(readout(4, MonitorReadouts::CurrentColumn), QStringLiteral("—"));
+        QTRY_VERIFY_WITH_TIMEOUT(readout(1, MonitorReadouts::RateColumn).toInt() > 0, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(m_page->plot()->shownPointCount(1, Quantity::Position) > 0, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(m_page->findChild<QLabel *>(QStringLiteral("monitorStatus"))
                                      ->text()
@@ -423,7 +404,7 @@ private slots:
         m_page->stop();
         QVERIFY(!m_page->isRunning());
         QVERIFY(!m_page->isRecording());
-        const auto rows = readCsv(path, &error);
+        const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
         QVERIFY(rows->size() >= 30);
         QSet<int> ids;
@@ -441,20 +422,20 @@ private slots:
         m_page->setSelectedServos({0, 1, 2});
         QString error;
         QVERIFY2(m_page->start(&error), qPrintable(error));
-        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorPage::StateColumn), QStringLiteral("OK"),
+        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorReadouts::StateColumn), QStringLiteral("OK"),
                                   10000);
         // Servo 2 goes silent: its ID moves away.
         m_simulator->call([](sim::Simulator &simulator) {
             simulator.feetechBus()->findServo(2)->setValue(u"id", 20);
         });
-        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorPage::StateColumn),
+        QTRY_COMPARE_WITH_TIMEOUT(readout(2, MonitorReadouts::StateColumn),
                                   QStringLiteral("Not answering"), 10000);
         const int row = readoutRow(2);
-        QCOMPARE(m_page->readouts()->item(row, MonitorPage::StateColumn)->foreground().color(),
+        QCOMPARE(m_page->readouts()->item(row, MonitorReadouts::StateColumn)->foreground().color(),
                  QColor(0xc0, 0x1c, 0x1c));
-        QVERIFY(readout(2, MonitorPage::MissedColumn).toInt() >= 3);
+        QVERIFY(readout(2, MonitorReadouts::MissedColumn).toInt() >= 3);
         // The others go on.
-        QCOMPARE(readout(1, MonitorPage::StateColumn), QStringLiteral("OK"));
+        QCOMPARE(readout(1, MonitorReadouts::StateColumn), QStringLiteral("OK"));
         const int before = m_page->plot()->bufferedPointCount(3, Quantity::Position);
         QTRY_VERIFY_WITH_TIMEOUT(
             m_page->plot()->bufferedPointCount(3, Quantity::Position) > before + 10, 10000);
@@ -474,8 +455,9 @@ private slots:
         QCOMPARE(recording.count(), 1);
         QTRY_VERIFY_WITH_TIMEOUT(!m_page->isRunning(), 10000);
         QString parseError;
-        QVERIFY2(readCsv(m_dir.filePath(QStringLiteral("cut.csv")), &parseError),
-                 qPrintable(parseError));
+        QVERIFY2(
+            testsupport::readTelemetryCsv(m_dir.filePath(QStringLiteral("cut.csv")), &parseError),
+            qPrintable(parseError));
     }
 };
 

@@ -1,6 +1,6 @@
 // Tests the PTK page: device values beside edits, edits reach the model, polls never overwrite.
+#include "common/parameterpage.h"
 #include "model/parametermodel.h"
-#include "parameterpage.h"
 #include "ptk/ptkparameters.h"
 
 #include <QComboBox>

@@ -1,11 +1,11 @@
 // End to end through the GUI (offscreen): the main window against the simulated PTK servo.
 #include "simclient.h"
 
-#include "connectionbar.h"
+#include "common/connectionbar.h"
+#include "common/packetlogdock.h"
+#include "common/parameterpage.h"
 #include "link/packetlogmodel.h"
 #include "mainwindow.h"
-#include "packetlogdock.h"
-#include "parameterpage.h"
 #include "ptk/ptkclient.h"
 #include "ptk/ptkframe.h"
 #include "ptk/ptkparameters.h"

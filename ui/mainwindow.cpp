@@ -1,22 +1,19 @@
-// ServoBench's main window: wires the PTK client to the page, the packet log and the status bar.
+// ServoBench's main window: the connection, the two workspaces, the packet log and the status bar.
 #include "mainwindow.h"
 
-#include "connectionbar.h"
+#include "common/connectionbar.h"
+#include "common/packetlogdock.h"
 #include "feetech/busclient.h"
-#include "feetechworkspace.h"
+#include "feetechgui/feetechworkspace.h"
 #include "link/packetlogmodel.h"
-#include "packetlogdock.h"
-#include "parameterpage.h"
-#include "profile/profile.h"
-#include "profileactions.h"
+#include "model/parametermodel.h"
 #include "ptk/ptkclient.h"
+#include "ptkgui/ptkworkspace.h"
 #include "sim/demoservos.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDir>
-#include <QFileDialog>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
@@ -28,7 +25,6 @@
 
 namespace {
 
-const QString kPtkFamily = QStringLiteral("ptk");
 constexpr int kRateRefreshMs = 500;
 constexpr int kStatusMessageMs = 8000;
 
@@ -79,10 +75,8 @@ MainWindow::MainWindow(QWidget *parent)
     layout->addWidget(m_problem);
 
     m_pages = new QStackedWidget(central);
-    ParameterPage::Options ptkOptions;
-    ptkOptions.objectName = QStringLiteral("ptkPage");
-    m_ptkPage = new ParameterPage(m_ptk->model(), ptkOptions, m_pages);
-    m_pages->addWidget(m_ptkPage);
+    m_ptkWorkspace = new PtkWorkspace(m_ptk.get(), m_pages);
+    m_pages->addWidget(m_ptkWorkspace);
     m_feetechWorkspace = new FeetechWorkspace(m_feetech.get(), m_pages);
     m_pages->addWidget(m_feetechWorkspace);
     layout->addWidget(m_pages);
@@ -91,6 +85,10 @@ MainWindow::MainWindow(QWidget *parent)
             [this](ConnectionBar::Protocol protocol) {
                 showProtocol(protocol == ConnectionBar::Protocol::Feetech);
             });
+    connect(m_ptkWorkspace, &PtkWorkspace::problem, this, &MainWindow::showProblem);
+    connect(m_ptkWorkspace, &PtkWorkspace::actionStarted, m_problem, &QWidget::hide);
+    connect(m_ptkWorkspace, &PtkWorkspace::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
     connect(m_feetechWorkspace, &FeetechWorkspace::problem, this, &MainWindow::showProblem);
     connect(m_feetechWorkspace, &FeetechWorkspace::message, this, [this](const QString &text) {
         m_problem->hide();
@@ -125,29 +123,17 @@ MainWindow::MainWindow(QWidget *parent)
             &MainWindow::onCountersChanged);
     connect(m_feetech.get(), &feetech::BusClient::packetLogged, m_packetLog,
             &PacketLogDock::append);
-    connect(m_ptk.get(), &ptk::Client::applyProgress, m_ptkPage, &ParameterPage::setProgress);
-    connect(m_ptk.get(), &ptk::Client::applyFinished, this, &MainWindow::onApplyFinished);
-    connect(m_ptk.get(), &ptk::Client::readFinished, this, [this](bool ok, const QString &why) {
-        if (ok)
-            statusBar()->showMessage(tr("Read all parameters"), kStatusMessageMs);
-        else
-            showProblem(tr("Read failed: %1").arg(why));
-    });
-    connect(m_ptkPage, &ParameterPage::readRequested, this, [this] {
-        m_problem->hide();
-        m_ptk->readAll();
-    });
-    connect(m_ptkPage, &ParameterPage::applyRequested, this, &MainWindow::apply);
-    connect(m_ptkPage, &ParameterPage::saveProfileRequested, this,
-            &MainWindow::chooseProfileToSave);
-    connect(m_ptkPage, &ParameterPage::loadProfileRequested, this,
-            &MainWindow::chooseProfileToLoad);
 
     m_rateTimer = new QTimer(this);
     m_rateTimer->setInterval(kRateRefreshMs);
     connect(m_rateTimer, &QTimer::timeout, this, &MainWindow::updatePollRate);
     m_rateTimer->start();
     updatePollRate();
+}
+
+ParameterPage *MainWindow::ptkPage() const
+{
+    return m_ptkWorkspace->page();
 }
 
 MainWindow::~MainWindow()
@@ -263,7 +249,7 @@ void MainWindow::showProtocol(bool feetech)
 {
     m_feetechActive = feetech;
     m_pages->setCurrentWidget(feetech ? static_cast<QWidget *>(m_feetechWorkspace)
-                                      : static_cast<QWidget *>(m_ptkPage));
+                                      : static_cast<QWidget *>(m_ptkWorkspace));
     for (QAction *action : std::as_const(m_ptkActions))
         action->setEnabled(!feetech);
     m_pollRate->setVisible(!feetech);
@@ -354,15 +340,12 @@ void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
         QStringLiteral("QLabel { color: %1; font-weight: 600; }").arg(stateColour(status.state)));
     const bool active = status.state != ConnectionState::Disconnected;
     m_connectionBar->setSessionActive(active);
-    m_ptkPage->setLinkReady(status.state == ConnectionState::Connected);
     // One line of explanation in the banner; never a dialog, so an unplugged cable cannot
     // bury the user in message boxes.
     if (status.state == ConnectionState::Connected || status.state == ConnectionState::Connecting)
         m_problem->hide();
     else if (!status.message.isEmpty())
         showProblem(status.message);
-    if (!m_ptk->isBusy() && m_ptkPage->isBusy())
-        m_ptkPage->setBusy(false);
 }
 
 void MainWindow::onCountersChanged(const seriallink::LinkCounters &counters)
@@ -386,32 +369,6 @@ void MainWindow::updatePollRate()
     m_pollRate->setText(tr("%1 queries/s").arg(m_ptk->pollRate(), 0, 'f', 1));
 }
 
-void MainWindow::apply()
-{
-    m_problem->hide();
-    QString error;
-    if (!m_ptk->apply(&error)) {
-        showProblem(tr("Nothing was written: %1").arg(error));
-        return;
-    }
-    m_ptkPage->setBusy(true, tr("Writing N1…N12, then reading back…"));
-}
-
-void MainWindow::onApplyFinished(bool ok, const QString &message)
-{
-    m_ptkPage->setBusy(false);
-    bool mismatch = false;
-    for (const model::Definition &definition : m_ptk->model()->definitions())
-        mismatch = mismatch || m_ptk->model()->state(definition.key) == model::State::Mismatch;
-    if (!ok)
-        showProblem(message);
-    else if (mismatch)
-        showProblem(tr("The servo did not take every value: the fields marked Mismatch hold "
-                       "something else than was written."));
-    else
-        statusBar()->showMessage(tr("Written and verified"), kStatusMessageMs);
-}
-
 void MainWindow::showProblem(const QString &message)
 {
     m_problem->setText(message);
@@ -424,22 +381,12 @@ void MainWindow::chooseProfileToSave()
         m_feetechWorkspace->chooseProfileToSave();
         return;
     }
-    const QString path = profileactions::chooseSavePath(this, QStringLiteral("ptk-servo.json"));
-    if (!path.isEmpty())
-        saveProfile(path);
+    m_ptkWorkspace->chooseProfileToSave();
 }
 
 bool MainWindow::saveProfile(const QString &path)
 {
-    // What the form shows: the servo's values with any edits not yet applied.
-    QString error;
-    if (!profileactions::save(path, *m_ptk->model(), kPtkFamily, {}, m_ptk->model()->definitions(),
-                              true, &error)) {
-        showProblem(error);
-        return false;
-    }
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), kStatusMessageMs);
-    return true;
+    return m_ptkWorkspace->saveProfile(path);
 }
 
 void MainWindow::chooseProfileToLoad()
@@ -448,34 +395,12 @@ void MainWindow::chooseProfileToLoad()
         m_feetechWorkspace->chooseProfileToLoad();
         return;
     }
-    const QString path = profileactions::chooseLoadPath(this);
-    if (!path.isEmpty())
-        loadProfile(path);
+    m_ptkWorkspace->chooseProfileToLoad();
 }
 
 void MainWindow::loadProfile(const QString &path)
 {
-    if (m_ptk->isBusy()) {
-        showProblem(tr("Wait for the running read or Apply to finish before loading a profile."));
-        return;
-    }
-    QString error;
-    switch (profileactions::loadAsEdits(this, path, kPtkFamily, m_ptk->model()->definitions(),
-                                        *m_ptk->model(), &error)) {
-    case profileactions::LoadOutcome::Failed:
-        showProblem(error);
-        break;
-    case profileactions::LoadOutcome::AlreadyEqual:
-        statusBar()->showMessage(tr("The servo already holds every value of this profile"),
-                                 kStatusMessageMs);
-        break;
-    case profileactions::LoadOutcome::Cancelled:
-        break;
-    case profileactions::LoadOutcome::Loaded:
-        statusBar()->showMessage(tr("Profile loaded as edits: review them, then Apply"),
-                                 kStatusMessageMs);
-        break;
-    }
+    m_ptkWorkspace->loadProfile(path);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

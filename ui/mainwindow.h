@@ -1,4 +1,5 @@
-// ServoBench's main window: connection bar, the PTK page, the packet log and the status bar.
+// ServoBench's main window: connection bar, the PTK and Feetech workspaces, the packet log and
+// the status bar.
 #pragma once
 
 #include "link/linktypes.h"
@@ -12,6 +13,7 @@ class FeetechWorkspace;
 class QStackedWidget;
 class PacketLogDock;
 class ParameterPage;
+class PtkWorkspace;
 class QAction;
 class QLabel;
 class QTimer;
@@ -44,10 +46,11 @@ public:
     feetech::BusClient *feetechClient() const { return m_feetech.get(); }
     FeetechWorkspace *feetechWorkspace() const { return m_feetechWorkspace; }
     ConnectionBar *connectionBar() const { return m_connectionBar; }
-    ParameterPage *ptkPage() const { return m_ptkPage; }
+    PtkWorkspace *ptkWorkspace() const { return m_ptkWorkspace; }
+    ParameterPage *ptkPage() const;
     PacketLogDock *packetLog() const { return m_packetLog; }
 
-    // Loads a profile into the form as edits after showing what it changes.
+    // The PTK workspace's, for the command line and tests.
     void loadProfile(const QString &path);
     bool saveProfile(const QString &path);
 
@@ -61,8 +64,6 @@ private:
     void disconnectRequested();
     void onStatusChanged(const seriallink::ConnectionStatus &status);
     void onCountersChanged(const seriallink::LinkCounters &counters);
-    void apply();
-    void onApplyFinished(bool ok, const QString &message);
     void chooseProfileToSave();
     void chooseProfileToLoad();
     void showProblem(const QString &message);
@@ -74,7 +75,7 @@ private:
     std::unique_ptr<ptk::Client> m_ptk;
     std::unique_ptr<feetech::BusClient> m_feetech;
     ConnectionBar *m_connectionBar = nullptr;
-    ParameterPage *m_ptkPage = nullptr;
+    PtkWorkspace *m_ptkWorkspace = nullptr;
     FeetechWorkspace *m_feetechWorkspace = nullptr;
     QAction *m_allTorqueOff = nullptr; // Esc: torque off on the whole Feetech bus
     QStackedWidget *m_pages = nullptr;

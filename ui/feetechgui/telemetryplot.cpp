@@ -1,6 +1,6 @@
 // The live telemetry plot: bounded buffers per series, min/max decimation to the pixels in view,
 // and a repaint timer, so that six servos at 100 Hz cost a few replace() calls a frame.
-#include "telemetryplot.h"
+#include "feetechgui/telemetryplot.h"
 
 #include <QChart>
 #include <QChartView>
@@ -21,10 +21,6 @@
 
 namespace {
 
-// Seconds kept beyond the window, so a view that has just moved on still has its left edge.
-constexpr double kRetentionSlackSeconds = 1.0;
-// At most this many points per horizontal pixel: a minimum and a maximum per column.
-constexpr int kPointsPerPixel = 2;
 // The narrowest time span a zoom may reach.
 constexpr double kMinimumSpanSeconds = 0.01;
 // Of the data's span, above and below it, so a trace never touches the chart's frame.
@@ -83,74 +79,6 @@ private:
     WheelZoom m_zoom;
 };
 
-// The points of `points` between `from` and `to`, with one neighbour either side so the line
-// reaches the chart's edges; beyond `buckets` × 2 points, the lowest and highest of each bucket
-// (in time order), so short peaks survive. `low`/`high` widen to the values in view.
-QList<QPointF> pointsInView(const std::deque<QPointF> &points, double from, double to, int buckets,
-                            double *low, double *high)
-{
-    QList<QPointF> out;
-    if (points.empty())
-        return out;
-    const auto byTime = [](const QPointF &point, double x) {
-        return point.x() < x;
-    };
-    const auto first = std::lower_bound(points.begin(), points.end(), from, byTime);
-    const auto last =
-        std::upper_bound(points.begin(), points.end(), to,
-                         [](double x, const QPointF &point) { return x < point.x(); });
-    const auto count = std::distance(first, last);
-    out.reserve(int(std::min<qint64>(count, qint64(buckets) * kPointsPerPixel)) + 2);
-    if (first != points.begin())
-        out.append(*std::prev(first));
-    const auto widen = [low, high](const QPointF &point) {
-        *low = std::min(*low, point.y());
-        *high = std::max(*high, point.y());
-    };
-    if (count <= qint64(buckets) * kPointsPerPixel) {
-        for (auto it = first; it != last; ++it) {
-            out.append(*it);
-            widen(*it);
-        }
-    } else {
-        const double width = (to - from) / buckets;
-        int bucket = -1;
-        QPointF lowest;
-        QPointF highest;
-        const auto flush = [&] {
-            if (bucket < 0)
-                return;
-            if (lowest == highest) {
-                out.append(lowest);
-            } else if (lowest.x() <= highest.x()) {
-                out.append(lowest);
-                out.append(highest);
-            } else {
-                out.append(highest);
-                out.append(lowest);
-            }
-            widen(lowest);
-            widen(highest);
-        };
-        for (auto it = first; it != last; ++it) {
-            const int index = std::clamp(int((it->x() - from) / width), 0, buckets - 1);
-            if (index != bucket) {
-                flush();
-                bucket = index;
-                lowest = highest = *it;
-            } else if (it->y() < lowest.y()) {
-                lowest = *it;
-            } else if (it->y() > highest.y()) {
-                highest = *it;
-            }
-        }
-        flush();
-    }
-    if (last != points.end())
-        out.append(*last);
-    return out;
-}
-
 } // namespace
 
 TelemetryPlot::TelemetryPlot(QWidget *parent)
@@ -178,36 +106,19 @@ void TelemetryPlot::setQuantities(const QVector<feetech::Quantity> &quantities)
 
 void TelemetryPlot::setServos(const QVector<Servo> &servos)
 {
-    std::vector<Trace> traces;
-    traces.reserve(std::size_t(servos.size()));
-    for (const Servo &servo : servos) {
-        const int index = traceIndex(servo.id, servo.baud);
-        if (index >= 0) {
-            traces.push_back(std::move(m_traces.at(std::size_t(index))));
-        } else {
-            Trace trace;
-            trace.servo = servo;
-            traces.push_back(std::move(trace));
-        }
-    }
-    m_traces = std::move(traces);
+    m_buffer.setServos(servos);
     rebuildSeries();
 }
-
 QVector<TelemetryPlot::Servo> TelemetryPlot::servos() const
 {
-    QVector<Servo> servos;
-    for (const Trace &trace : m_traces)
-        servos.append(trace.servo);
-    return servos;
+    return m_buffer.servos();
 }
-
 void TelemetryPlot::setWindowSeconds(double seconds)
 {
     if (!(seconds > 0.0) || seconds == m_windowSeconds)
         return;
     m_windowSeconds = seconds;
-    trimAll();
+    m_buffer.trimAll(retention());
     m_viewDirty = true;
     if (!m_paused)
         refresh();
@@ -252,13 +163,7 @@ void TelemetryPlot::setTimeRange(double from, double to)
 
 void TelemetryPlot::clear()
 {
-    for (Trace &trace : m_traces) {
-        for (auto &points : trace.points)
-            points.clear();
-    }
-    m_hasOrigin = false;
-    m_originUs = 0;
-    m_newest = 0.0;
+    m_buffer.clear();
     m_dirty = true;
     m_viewDirty = true;
     if (m_paused || m_zoomed)
@@ -271,42 +176,14 @@ void TelemetryPlot::addSamples(const QVector<feetech::FeedbackSample> &samples)
 {
     if (samples.isEmpty())
         return;
-    const std::size_t tracesBefore = m_traces.size();
-    for (const feetech::FeedbackSample &sample : samples) {
-        if (!m_hasOrigin) {
-            m_hasOrigin = true;
-            m_originUs = sample.steadyUs;
-        }
-        const double seconds = double(sample.steadyUs - m_originUs) / 1e6;
-        m_newest = std::max(m_newest, seconds);
-        Trace &trace = traceFor(sample.id, sample.baud);
-        for (int q = 0; q < feetech::kQuantityCount; ++q) {
-            const std::optional<double> &value = sample.values.at(std::size_t(q));
-            if (!value)
-                continue;
-            std::deque<QPointF> &points = trace.points.at(std::size_t(q));
-            // Batches from one stream come in time order; an out-of-order sample would break
-            // the binary search over the buffer, so it is placed where it belongs.
-            if (points.empty() || points.back().x() <= seconds) {
-                points.emplace_back(seconds, *value);
-            } else {
-                const auto at =
-                    std::upper_bound(points.begin(), points.end(), seconds,
-                                     [](double x, const QPointF &point) { return x < point.x(); });
-                points.insert(at, QPointF(seconds, *value));
-            }
-            trim(points); // bounded even within one large batch
-        }
-    }
-    if (m_traces.size() != tracesBefore)
+    if (m_buffer.add(samples, retention()))
         rebuildSeries();
     m_dirty = true;
 }
-
 void TelemetryPlot::refresh()
 {
     if (!m_paused) {
-        m_viewTo = std::max(m_newest, m_windowSeconds);
+        m_viewTo = std::max(m_buffer.newest(), m_windowSeconds);
         m_viewFrom = m_viewTo - m_windowSeconds;
     }
     // A chart laid out anew (added, resized) has another number of pixels to decimate to.
@@ -359,15 +236,15 @@ int TelemetryPlot::seriesCount() const
 
 int TelemetryPlot::bufferedPointCount(quint8 id, feetech::Quantity quantity, qint32 baud) const
 {
-    const int index = findTrace(id, baud);
+    const int index = m_buffer.findTrace(id, baud);
     if (index < 0)
         return 0;
-    return int(m_traces.at(std::size_t(index)).points.at(std::size_t(quantity)).size());
+    return int(m_buffer.points(index, quantity).size());
 }
 
 int TelemetryPlot::shownPointCount(quint8 id, feetech::Quantity quantity, qint32 baud) const
 {
-    const int index = findTrace(id, baud);
+    const int index = m_buffer.findTrace(id, baud);
     if (index < 0)
         return -1;
     for (const auto &pane : m_panes) {
@@ -379,14 +256,8 @@ int TelemetryPlot::shownPointCount(quint8 id, feetech::Quantity quantity, qint32
 
 qint64 TelemetryPlot::bufferedPoints() const
 {
-    qint64 total = 0;
-    for (const Trace &trace : m_traces) {
-        for (const auto &points : trace.points)
-            total += qint64(points.size());
-    }
-    return total;
+    return m_buffer.pointCount();
 }
-
 int TelemetryPlot::maxPointsPerSeries() const
 {
     const double forWindow = std::ceil(m_windowSeconds * kMaxRateHz);
@@ -404,7 +275,7 @@ QChartView *TelemetryPlot::chartView(feetech::Quantity quantity) const
 
 QColor TelemetryPlot::servoColor(quint8 id, qint32 baud) const
 {
-    const int index = findTrace(id, baud);
+    const int index = m_buffer.findTrace(id, baud);
     return index < 0 ? QColor() : kServoColours[index % kColourCount];
 }
 
@@ -425,37 +296,6 @@ void TelemetryPlot::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
     m_viewDirty = true; // the number of pixels, and so the decimation, changed
-}
-
-int TelemetryPlot::traceIndex(quint8 id, qint32 baud) const
-{
-    for (std::size_t i = 0; i < m_traces.size(); ++i) {
-        if (m_traces[i].servo.id == id && m_traces[i].servo.baud == baud)
-            return int(i);
-    }
-    return -1;
-}
-
-int TelemetryPlot::findTrace(quint8 id, qint32 baud) const
-{
-    if (baud != 0)
-        return traceIndex(id, baud);
-    for (std::size_t i = 0; i < m_traces.size(); ++i) {
-        if (m_traces[i].servo.id == id)
-            return int(i);
-    }
-    return -1;
-}
-
-TelemetryPlot::Trace &TelemetryPlot::traceFor(quint8 id, qint32 baud)
-{
-    const int index = traceIndex(id, baud);
-    if (index >= 0)
-        return m_traces.at(std::size_t(index));
-    Trace trace;
-    trace.servo = {id, baud};
-    m_traces.push_back(std::move(trace));
-    return m_traces.back();
 }
 
 void TelemetryPlot::rebuildPanes()
@@ -515,7 +355,7 @@ void TelemetryPlot::rebuildSeries()
         pane->chart->removeAllSeries(); // deletes them
         pane->series.clear();
         pane->shown.clear();
-        for (int i = 0; i < int(m_traces.size()); ++i)
+        for (int i = 0; i < m_buffer.traceCount(); ++i)
             addSeries(*pane, i);
     }
     m_viewDirty = true;
@@ -525,7 +365,7 @@ void TelemetryPlot::rebuildSeries()
 void TelemetryPlot::addSeries(Pane &pane, int trace)
 {
     auto *series = new QLineSeries(pane.chart);
-    series->setName(seriesName(m_traces.at(std::size_t(trace)).servo));
+    series->setName(seriesName(m_buffer.servo(trace)));
     QPen pen(kServoColours[trace % kColourCount]);
     pen.setWidthF(1.5);
     series->setPen(pen);
@@ -540,43 +380,33 @@ QString TelemetryPlot::seriesName(const Servo &servo) const
 {
     // Servos on different baud rates may share an ID: only then does the name say the rate.
     bool shared = false;
-    for (const Trace &trace : m_traces)
-        shared = shared || (trace.servo.id == servo.id && trace.servo.baud != servo.baud);
+    for (int i = 0; i < m_buffer.traceCount(); ++i) {
+        const Servo &other = m_buffer.servo(i);
+        shared = shared || (other.id == servo.id && other.baud != servo.baud);
+    }
     if (!shared)
         return tr("ID %1").arg(servo.id);
     return tr("ID %1 · %2").arg(servo.id).arg(feetech::baudText(servo.baud));
 }
 
-void TelemetryPlot::trim(std::deque<QPointF> &points) const
+TelemetryBuffer::Retention TelemetryPlot::retention() const
 {
-    const std::size_t cap = std::size_t(maxPointsPerSeries());
-    while (points.size() > cap)
-        points.pop_front();
-    double keepFrom = m_newest - m_windowSeconds - kRetentionSlackSeconds;
+    TelemetryBuffer::Retention retention;
+    retention.cap = std::size_t(maxPointsPerSeries());
+    retention.windowSeconds = m_windowSeconds;
     if (m_paused || m_zoomed)
-        keepFrom = std::min(keepFrom, m_viewFrom - kRetentionSlackSeconds); // what is in view
-    while (!points.empty() && points.front().x() < keepFrom)
-        points.pop_front();
+        retention.holdFrom = m_viewFrom; // what is in view
+    return retention;
 }
-
-void TelemetryPlot::trimAll()
-{
-    for (Trace &trace : m_traces) {
-        for (auto &points : trace.points)
-            trim(points);
-    }
-}
-
 void TelemetryPlot::repaintPane(Pane &pane, double from, double to)
 {
     const int buckets = bucketsFor(pane);
     pane.buckets = buckets;
     double low = std::numeric_limits<double>::infinity();
     double high = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i < pane.series.size() && i < int(m_traces.size()); ++i) {
-        const QList<QPointF> points =
-            pointsInView(m_traces.at(std::size_t(i)).points.at(std::size_t(pane.quantity)), from,
-                         to, buckets, &low, &high);
+    for (int i = 0; i < pane.series.size() && i < m_buffer.traceCount(); ++i) {
+        const QList<QPointF> points = TelemetryBuffer::pointsInView(
+            m_buffer.points(i, pane.quantity), from, to, buckets, &low, &high);
         pane.series.at(i)->replace(points);
         pane.shown[i] = int(points.size());
     }
@@ -682,7 +512,7 @@ void TelemetryPlot::setFollowing()
     const bool wasPaused = m_paused;
     m_paused = false;
     setZoomed(false);
-    trimAll(); // what was kept for the frozen view is no longer needed
+    m_buffer.trimAll(retention()); // what was kept for the frozen view is no longer needed
     m_viewDirty = true;
     refresh();
     if (wasPaused)

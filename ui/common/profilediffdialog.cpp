@@ -1,5 +1,5 @@
 // Profile diff dialog: one row per parameter the file would change.
-#include "profilediffdialog.h"
+#include "common/profilediffdialog.h"
 
 #include <QDialogButtonBox>
 #include <QHeaderView>

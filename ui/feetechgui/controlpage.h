@@ -1,5 +1,5 @@
-// The Control page of the Feetech workspace: torque, goal position, operating mode, and the step
-// and sweep tests with their response metrics, for the servo selected in the tree.
+// The Control page of the Feetech workspace: torque, goal position and operating mode of the
+// servo selected in the tree, beside the motion-test panel.
 #pragma once
 
 #include "feetech/motiontest.h"
@@ -11,23 +11,21 @@
 #include <deque>
 #include <optional>
 
+class MotionTestPanel;
 class QButtonGroup;
-class QChartView;
 class QComboBox;
-class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
-class QLineSeries;
 class QPushButton;
 class QSlider;
 class QSpinBox;
 class QTimer;
-class QValueAxis;
 
 namespace feetech {
 class BusClient;
 struct FeedbackSample;
 struct OperationResult;
+struct Register;
 } // namespace feetech
 
 class ControlPage : public QWidget
@@ -44,7 +42,7 @@ public:
 
     // Whether the tests and mode changes ask first (a warning with Cancel as the default).
     // On by default; tests switch it off.
-    void setConfirmMoves(bool confirm) { m_confirmMoves = confirm; }
+    void setConfirmMoves(bool confirm);
     bool confirmMoves() const { return m_confirmMoves; }
 
     feetech::MotionTest *motionTest() const { return m_test; }
@@ -57,6 +55,11 @@ public:
     QString statusText() const; // the status line: the last error or notice
 
 private:
+    // Torque enable values, all in one place.
+    static constexpr int kTorqueOff = 0;
+    static constexpr int kTorqueOn = 1;
+    static constexpr int kTorqueDamping = 2;
+
     enum class WriteKind { Torque, Goal, Mode };
     enum class Severity { Info, Warning, Error };
     struct PendingWrite
@@ -69,7 +72,6 @@ private:
     QGroupBox *buildTorqueGroup();
     QGroupBox *buildModeGroup();
     QGroupBox *buildGoalGroup();
-    QGroupBox *buildTestGroup();
 
     void onServosChanged();
     void onServoUpdated(int index);
@@ -77,9 +79,6 @@ private:
     void onOperationFinished(const feetech::OperationResult &result);
     void onAllTorqueOff();
     void onTestRunning(bool running);
-    void onStepFinished(const feetech::StepMetrics &metrics);
-    void onSweepFinished(const feetech::SweepSummary &summary);
-    void onTestFailed(const QString &message);
 
     void configureForServo(); // ranges, choices and defaults of the servo shown
     void updateRanges();
@@ -91,15 +90,13 @@ private:
     void setTorque(int value);
     void onSliderMoved(int value);
     void changeMode();
-    void startTest(feetech::MotionTest::Kind kind);
-    feetech::MotionPlan testPlan() const;
-    bool confirmTest(feetech::MotionTest::Kind kind, const feetech::MotionPlan &plan);
     bool write(WriteKind kind, const QVector<model::WriteItem> &values);
 
-    void clearResults();
-    void showStepMetrics(const feetech::StepMetrics &metrics);
-    void plotRecording(const feetech::StepMetrics &metrics);
     void setStatus(const QString &text, Severity severity);
+
+    static int toInt(qint64 value); // clamped
+    // Damping (torque enable 2) only where the table says the servo knows it.
+    static bool allowsDamping(const feetech::Register *reg);
 
     bool ready() const; // connected, a servo with a known table
     bool testRunsHere() const; // a test moves the servo shown
@@ -118,7 +115,6 @@ private:
     std::optional<qint32> m_queuedGoal;
     bool m_goalInitialised = false; // the goal spin has been set from the servo once
     bool m_modeEdited = false; // the combo shows the user's choice, not the device's
-    bool m_stopRequested = false; // the test ends because the user pressed Stop
     std::optional<double> m_presentPosition; // the newest, from telemetry or a register read
     qint64 m_presentReadMs = 0; // the register read m_presentPosition last took in
 
@@ -150,29 +146,7 @@ private:
     QSpinBox *m_acceleration = nullptr;
     QLabel *m_accelerationUnit = nullptr;
 
-    QGroupBox *m_testGroup = nullptr;
-    QSpinBox *m_from = nullptr;
-    QSpinBox *m_to = nullptr;
-    QSpinBox *m_testSpeed = nullptr;
-    QSpinBox *m_testAcceleration = nullptr;
-    QDoubleSpinBox *m_recordSeconds = nullptr;
-    QSpinBox *m_legs = nullptr;
-    QPushButton *m_stepButton = nullptr;
-    QPushButton *m_sweepButton = nullptr;
-    QPushButton *m_stopButton = nullptr;
-    QLabel *m_testProgress = nullptr;
-    QLabel *m_riseTime = nullptr;
-    QLabel *m_overshoot = nullptr;
-    QLabel *m_settlingTime = nullptr;
-    QLabel *m_steadyStateError = nullptr;
-    QLabel *m_band = nullptr;
-    QChartView *m_chartView = nullptr;
-    QLineSeries *m_response = nullptr;
-    QLineSeries *m_targetLine = nullptr;
-    QLineSeries *m_bandHigh = nullptr;
-    QLineSeries *m_bandLow = nullptr;
-    QValueAxis *m_timeAxis = nullptr;
-    QValueAxis *m_positionAxis = nullptr;
+    MotionTestPanel *m_testPanel = nullptr;
 
     QLabel *m_status = nullptr;
     QTimer *m_refreshTimer = nullptr;

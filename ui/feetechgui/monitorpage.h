@@ -5,23 +5,19 @@
 // telemetry.h names ServoInfo without defining it; feetechsession.h defines it.
 #include "feetech/feetechsession.h"
 #include "feetech/telemetry.h"
+#include "feetech/telemetryrecorder.h"
+#include "feetechgui/monitorreadouts.h"
 
 #include <QHash>
 #include <QPointer>
 #include <QVector>
 #include <QWidget>
 
-#include <deque>
-#include <memory>
-
 class QCheckBox;
 class QComboBox;
-class QFile;
 class QLabel;
 class QListWidget;
 class QPushButton;
-class QTableWidget;
-class QTextStream;
 class QTimer;
 class TelemetryPlot;
 
@@ -34,26 +30,12 @@ class MonitorPage : public QWidget
     Q_OBJECT
 
 public:
-    enum ReadoutColumn {
-        ServoColumn,
-        PositionColumn,
-        SpeedColumn,
-        LoadColumn,
-        VoltageColumn,
-        TemperatureColumn,
-        CurrentColumn,
-        MovingColumn,
-        StatusColumn,
-        RateColumn, // samples per second received
-        MissedColumn,
-        StateColumn, // waiting, receiving, not answering
-        ReadoutColumns
-    };
-
+    // The plot's history when the page opens.
+    static constexpr int kDefaultWindowSeconds = 10;
     // Readouts refresh at most this often, however fast samples come.
     static constexpr int kReadoutIntervalMs = 100;
     // A recording reaches the disk at least this often.
-    static constexpr int kFlushIntervalMs = 500;
+    static constexpr int kFlushIntervalMs = feetech::TelemetryRecorder::kDefaultFlushIntervalMs;
 
     explicit MonitorPage(feetech::BusClient *client, QWidget *parent = nullptr);
     ~MonitorPage() override;
@@ -77,9 +59,9 @@ public:
     // Writes every sample of the selected servos taken from now on to `path` as CSV.
     bool startRecording(const QString &path, QString *error = nullptr);
     void stopRecording();
-    bool isRecording() const { return m_file != nullptr; }
-    qint64 recordedRows() const { return m_recordedRows; }
-    qint64 recordingStartUs() const { return m_recordStartUs; } // time 0 of the recording
+    bool isRecording() const { return m_recorder->isRecording(); }
+    qint64 recordedRows() const { return m_recorder->rowCount(); }
+    qint64 recordingStartUs() const { return m_recorder->startUs(); } // time 0 of the recording
 
     bool exportPng(const QString &path, QString *error = nullptr);
 
@@ -89,7 +71,7 @@ public:
     void updateReadouts(); // now rather than on the next tick
 
     TelemetryPlot *plot() const { return m_plot; }
-    QTableWidget *readouts() const { return m_readouts; }
+    MonitorReadouts *readouts() const { return m_readouts; }
     QListWidget *servoList() const { return m_servoList; }
 
 signals:
@@ -101,19 +83,9 @@ protected:
     void hideEvent(QHideEvent *event) override;
 
 private:
-    struct Key
-    {
-        quint8 id = 0;
-        qint32 baud = 0;
-        bool operator==(const Key &other) const { return id == other.id && baud == other.baud; }
-    };
-    friend size_t qHash(const Key &key, size_t seed) { return qHashMulti(seed, key.id, key.baud); }
-    struct Latest
-    {
-        feetech::FeedbackSample sample;
-        std::deque<qint64> recent; // steady times of the last second's samples
-    };
+    using Key = MonitorServoKey;
 
+    QWidget *buildControls();
     void rebuildServoList();
     void onServoItemChanged();
     void onQuantityToggled();
@@ -131,13 +103,11 @@ private:
     void updateControls();
     void updateStatusLine();
     void updateRecordingLabel();
-    bool flushRecording();
     void failRecording(const QString &why);
     void showMessage(const QString &text, bool isError);
     QVector<Key> checkedKeys() const;
     bool isListed(const Key &key) const;
     QVector<Key> readoutKeys() const;
-    QString statusText(const Key &key, quint8 bits) const;
 
     QPointer<feetech::BusClient> m_client;
     TelemetryPlot *m_plot = nullptr;
@@ -153,18 +123,13 @@ private:
     QLabel *m_recordingLabel = nullptr;
     QLabel *m_message = nullptr;
     QLabel *m_statusLine = nullptr;
-    QTableWidget *m_readouts = nullptr;
+    MonitorReadouts *m_readouts = nullptr;
     QTimer *m_readoutTimer = nullptr;
-    QTimer *m_flushTimer = nullptr;
 
     bool m_updatingList = false; // our own check-state changes are not the user's
     bool m_readoutsDirty = true;
-    QHash<Key, Latest> m_latest;
     QVector<Key> m_unlisted; // servos samples came for that the list does not name
     feetech::TelemetryStats m_stats;
 
-    std::unique_ptr<QFile> m_file;
-    std::unique_ptr<QTextStream> m_stream;
-    qint64 m_recordedRows = 0;
-    qint64 m_recordStartUs = 0;
+    feetech::TelemetryRecorder *m_recorder = nullptr;
 };

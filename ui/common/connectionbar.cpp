@@ -1,5 +1,5 @@
 // Connection bar: port discovery, settings and the Connect button.
-#include "connectionbar.h"
+#include "common/connectionbar.h"
 
 #include <QComboBox>
 #include <QIntValidator>

@@ -1,5 +1,5 @@
 // Scan options dialog: ID range, baud rates, and the quick broadcast probe.
-#include "scandialog.h"
+#include "feetechgui/scandialog.h"
 
 #include "feetech/registertable.h"
 

@@ -1,10 +1,10 @@
 // Parameter form: grouped rows bound by hand to the parameter model, and its buttons.
-#include "parameterpage.h"
+#include "common/parameterpage.h"
 
+#include "common/palette.h"
+#include "common/parametereditors.h"
 #include "model/parametermodel.h"
 
-#include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -14,7 +14,6 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
-#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -37,49 +36,19 @@ enum GridColumn {
     GridColumns
 };
 
-int toInt(qint64 value)
-{
-    return int(std::clamp<qint64>(value, std::numeric_limits<int>::min(),
-                                  std::numeric_limits<int>::max()));
-}
-
-// Enough decimals to show every raw step exactly (scale 0.25 → 2).
-int decimalsFor(double scale)
-{
-    int decimals = 0;
-    double step = std::abs(scale);
-    while (decimals < 6 && std::abs(step - std::round(step)) > 1e-9) {
-        step *= 10;
-        ++decimals;
-    }
-    return decimals;
-}
-
-QString userText(const Definition &definition, qint64 raw)
-{
-    if (definition.scale == 1.0)
-        return QString::number(raw);
-    return QString::number(double(raw) * definition.scale, 'g', 10); // as the model shows it
-}
-
-bool isDark(const QPalette &palette)
-{
-    return palette.color(QPalette::Window).lightness() < 128;
-}
-
 // State colours chosen to stay readable on light and dark palettes.
 QColor stateColor(State state, bool dark)
 {
     switch (state) {
     case State::Edited:
-        return dark ? QColor(255, 196, 84) : QColor(168, 98, 0);
+        return palette::toneColor(palette::Tone::Warning, dark);
     case State::Writing:
-        return dark ? QColor(120, 170, 255) : QColor(25, 90, 190);
+        return palette::toneColor(palette::Tone::Accent, dark);
     case State::Verified:
-        return dark ? QColor(110, 210, 120) : QColor(30, 120, 45);
+        return palette::toneColor(palette::Tone::Good, dark);
     case State::Mismatch:
     case State::Failed:
-        return dark ? QColor(255, 120, 110) : QColor(190, 30, 30);
+        return palette::toneColor(palette::Tone::Error, dark);
     case State::Clean:
         break;
     }
@@ -98,23 +67,6 @@ void setForeground(QWidget *widget, const QColor &color, bool bold)
     QFont font = widget->font();
     font.setBold(bold);
     widget->setFont(font);
-}
-
-// An edited value stands out from those that match the servo.
-void setHighlighted(QWidget *editor, bool highlighted)
-{
-    if (!highlighted) {
-        editor->setPalette(QPalette());
-        return;
-    }
-    QPalette palette = editor->palette();
-    const QColor background(255, 240, 170);
-    const QColor text(20, 20, 20);
-    palette.setColor(QPalette::Base, background);
-    palette.setColor(QPalette::Button, background);
-    palette.setColor(QPalette::Text, text);
-    palette.setColor(QPalette::ButtonText, text);
-    editor->setPalette(palette);
 }
 
 } // namespace
@@ -358,7 +310,7 @@ void ParameterPage::rebuild()
         widths[EditorColumn] = std::max(widths[EditorColumn], row.editor->sizeHint().width());
         widths[UnitColumn] = std::max(widths[UnitColumn], row.unit->sizeHint().width());
         for (const qint64 raw : {definition.minimum, definition.maximum}) {
-            QString shown = userText(definition, raw);
+            QString shown = parametereditors::userText(definition, raw);
             if (!definition.unit.isEmpty())
                 shown += u' ' + definition.unit;
             widths[DeviceColumn] = std::max(widths[DeviceColumn], metrics.horizontalAdvance(shown));
@@ -388,57 +340,12 @@ void ParameterPage::rebuild()
 QWidget *ParameterPage::createEditor(const model::Definition &definition)
 {
     const QString key = definition.key;
-    QWidget *editor = nullptr;
-    QString range;
-    if (!definition.choices.isEmpty()) {
-        auto *combo = new QComboBox;
-        QStringList labels;
-        for (const model::Choice &choice : definition.choices) {
-            combo->addItem(choice.label, QVariant::fromValue<qlonglong>(choice.value));
-            labels.append(choice.label);
-        }
-        combo->setCurrentIndex(-1);
-        connect(combo, &QComboBox::currentIndexChanged, this, [this, key] { editorChanged(key); });
-        range = tr("%1: %2").arg(definition.label, labels.join(tr(" or ")));
-        editor = combo;
-    } else {
-        QAbstractSpinBox *spin = nullptr;
-        if (definition.scale == 1.0) {
-            auto *box = new QSpinBox;
-            box->setRange(toInt(definition.minimum), toInt(definition.maximum));
-            connect(box, &QSpinBox::valueChanged, this, [this, key] { editorChanged(key); });
-            spin = box;
-        } else {
-            auto *box = new QDoubleSpinBox;
-            box->setDecimals(decimalsFor(definition.scale));
-            box->setRange(double(definition.minimum) * definition.scale,
-                          double(definition.maximum) * definition.scale);
-            // Whole user units per step (1 µs), not one raw step (0.25 µs).
-            box->setSingleStep(std::max(1.0, std::abs(definition.scale)));
-            connect(box, &QDoubleSpinBox::valueChanged, this, [this, key] { editorChanged(key); });
-            spin = box;
-        }
-        spin->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        spin->setKeyboardTracking(true); // Apply lights up as soon as a value is typed
-        spin->setAccelerated(true);
-        spin->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
-        connect(spin, &QAbstractSpinBox::editingFinished, this,
-                [this, key] { editorFinished(key); });
-        const QString unit = definition.unit.isEmpty() ? QString() : u' ' + definition.unit;
-        range = tr("%1: %2 to %3%4")
-                    .arg(definition.label, userText(definition, definition.minimum),
-                         userText(definition, definition.maximum), unit);
-        editor = spin;
-    }
-    editor->setObjectName(QStringLiteral("editor_") + key);
-    editor->setAccessibleName(definition.label);
-    // No wheel focus: scrolling the page must never change a servo parameter by accident.
-    editor->setFocusPolicy(Qt::StrongFocus);
-    editor->installEventFilter(this);
-    editor->setToolTip(definition.note.isEmpty() ? range : range + u'\n' + definition.note);
+    QWidget *editor = parametereditors::create(
+        definition, this, [this, key] { editorChanged(key); },
+        [this, key] { editorFinished(key); });
+    editor->installEventFilter(this); // see eventFilter(): the wheel scrolls the page
     return editor;
 }
-
 bool ParameterPage::eventFilter(QObject *watched, QEvent *event)
 {
     if (event->type() == QEvent::Wheel) {
@@ -461,22 +368,14 @@ void ParameterPage::editorChanged(const QString &key)
     if (!row || !definition)
         return;
     QString error;
-    bool accepted = true;
+    if (parametereditors::isTypedInto(row->editor))
+        row->typing = true;
     m_committing = key; // the editor is the source: the model's echo must not rewrite it
-    if (auto *combo = qobject_cast<QComboBox *>(row->editor)) {
-        if (combo->currentIndex() >= 0)
-            accepted = m_model->edit(key, combo->currentData().toLongLong(), &error);
-    } else if (auto *spin = qobject_cast<QSpinBox *>(row->editor)) {
-        row->typing = true;
-        accepted = m_model->edit(key, spin->value(), &error);
-    } else if (auto *spin = qobject_cast<QDoubleSpinBox *>(row->editor)) {
-        row->typing = true;
-        accepted = m_model->editScaled(key, spin->value(), &error);
-    }
+    const bool accepted = parametereditors::commit(row->editor, *m_model, key, &error);
     m_committing.clear();
     if (!accepted) {
         // The editors' ranges come from the definitions, so this is rare; say why in place.
-        setForeground(row->state, stateColor(State::Failed, isDark(palette())), true);
+        setForeground(row->state, stateColor(State::Failed, palette::isDark(palette())), true);
         row->state->setText(tr("Refused"));
         row->state->setToolTip(error);
     }
@@ -547,13 +446,13 @@ void ParameterPage::updateRow(Row &row)
     }
     row.state->setText(stateText);
     row.state->setToolTip(stateTip);
-    setForeground(row.state, stateColor(state, isDark(palette())),
+    setForeground(row.state, stateColor(state, palette::isDark(palette())),
                   state == State::Edited || state == State::Mismatch || state == State::Failed);
 
     const bool readable = device.has_value() || definition->access == model::Access::WriteOnly;
     const bool enabled = readable && !m_busy && definition->access != model::Access::ReadOnly;
     row.editor->setEnabled(enabled);
-    setHighlighted(row.editor, pending.has_value());
+    parametereditors::setHighlighted(row.editor, pending.has_value());
 
     // Never under the user's fingers: not while they type in it, not while it sends its value.
     if (m_committing == row.key || (row.typing && row.editor->hasFocus()))
@@ -569,36 +468,13 @@ void ParameterPage::updateRow(Row &row)
 
 void ParameterPage::showUnread(Row &row)
 {
-    // A number in an unread editor would look like the servo's value; show a dash instead.
-    const QSignalBlocker blocker(row.editor);
-    if (auto *combo = qobject_cast<QComboBox *>(row.editor)) {
-        combo->setCurrentIndex(-1);
-    } else if (auto *spin = qobject_cast<QSpinBox *>(row.editor)) {
-        spin->setSpecialValueText(tr("—"));
-        spin->setValue(spin->minimum());
-    } else if (auto *spin = qobject_cast<QDoubleSpinBox *>(row.editor)) {
-        spin->setSpecialValueText(tr("—"));
-        spin->setValue(spin->minimum());
-    }
+    parametereditors::showUnread(row.editor);
 }
-
 void ParameterPage::showValue(Row &row, qint64 raw)
 {
-    const Definition *definition = m_model ? m_model->definition(row.key) : nullptr;
-    if (!definition)
-        return;
-    const QSignalBlocker blocker(row.editor); // showing a value is not an edit
-    if (auto *combo = qobject_cast<QComboBox *>(row.editor)) {
-        combo->setCurrentIndex(combo->findData(QVariant::fromValue<qlonglong>(raw)));
-    } else if (auto *spin = qobject_cast<QSpinBox *>(row.editor)) {
-        spin->setSpecialValueText(QString());
-        spin->setValue(toInt(raw));
-    } else if (auto *spin = qobject_cast<QDoubleSpinBox *>(row.editor)) {
-        spin->setSpecialValueText(QString());
-        spin->setValue(double(raw) * definition->scale);
-    }
+    if (const Definition *definition = m_model ? m_model->definition(row.key) : nullptr)
+        parametereditors::showValue(row.editor, *definition, raw);
 }
-
 void ParameterPage::updateButtons()
 {
     const bool present = m_model != nullptr;

@@ -89,6 +89,11 @@ public:
     QString message() const; // the status line under the table
 
 private:
+    // Torque enable values, all in one place.
+    static constexpr int kTorqueOff = 0;
+    static constexpr int kTorqueOn = 1;
+    static constexpr int kTorqueDamping = 2;
+
     struct Row
     {
         quint8 id = 0;

@@ -1,6 +1,7 @@
 // The packet log dock: a table on PacketLogModel with a small tool bar.
-#include "packetlogdock.h"
+#include "common/packetlogdock.h"
 
+#include "common/palette.h"
 #include "link/packetlogmodel.h"
 
 #include <QAction>
@@ -164,8 +165,8 @@ PacketLogDock::PacketLogDock(QWidget *parent)
     setWidget(content);
 
     // Error rows readable on light and dark palettes alike.
-    const bool dark = m_view->palette().color(QPalette::Base).lightness() < 128;
-    m_proxy->setErrorColor(dark ? QColor(255, 120, 110) : QColor(190, 30, 30));
+    m_proxy->setErrorColor(palette::toneColor(palette::Tone::Error,
+                                              palette::isDark(m_view->palette(), QPalette::Base)));
 
     QScrollBar *scroll = m_view->verticalScrollBar();
     connect(scroll, &QScrollBar::valueChanged, this,

@@ -5,14 +5,13 @@
 // telemetry.h names ServoInfo without defining it; feetechsession.h defines it.
 #include "feetech/feetechsession.h"
 #include "feetech/telemetry.h"
+#include "feetechgui/telemetrybuffer.h"
 
 #include <QColor>
 #include <QPointF>
 #include <QVector>
 #include <QWidget>
 
-#include <array>
-#include <deque>
 #include <memory>
 #include <vector>
 
@@ -29,11 +28,7 @@ class TelemetryPlot : public QWidget
 
 public:
     // A servo the plot draws, as the stream names it.
-    struct Servo
-    {
-        quint8 id = 0;
-        qint32 baud = 0;
-    };
+    using Servo = TelemetryBuffer::Servo;
 
     // No series keeps more points than this, whatever the rate and the window.
     static constexpr int kHardPointCap = 20000;
@@ -101,11 +96,6 @@ protected:
     void resizeEvent(QResizeEvent *event) override;
 
 private:
-    struct Trace
-    {
-        Servo servo;
-        std::array<std::deque<QPointF>, feetech::kQuantityCount> points;
-    };
     struct Pane
     {
         feetech::Quantity quantity = feetech::Quantity::Position;
@@ -120,15 +110,11 @@ private:
         double extraRight = 0.0;
     };
 
-    int traceIndex(quint8 id, qint32 baud) const; // exact match, -1 when absent
-    int findTrace(quint8 id, qint32 baud) const; // baud 0 matches any
-    Trace &traceFor(quint8 id, qint32 baud);
     void rebuildPanes();
     void rebuildSeries();
     void addSeries(Pane &pane, int trace);
     QString seriesName(const Servo &servo) const;
-    void trim(std::deque<QPointF> &points) const;
-    void trimAll();
+    TelemetryBuffer::Retention retention() const;
     int bucketsFor(const Pane &pane) const;
     void repaintPane(Pane &pane, double from, double to);
     void setAxisRange(QValueAxis *axis, double from, double to, int intervals, bool roundBounds);
@@ -139,7 +125,7 @@ private:
     void setZoomed(bool zoomed);
 
     QVector<feetech::Quantity> m_quantities;
-    std::vector<Trace> m_traces;
+    TelemetryBuffer m_buffer;
     std::vector<std::unique_ptr<Pane>> m_panes;
     QVBoxLayout *m_layout = nullptr;
     QTimer *m_repaintTimer = nullptr;
@@ -150,9 +136,6 @@ private:
     bool m_dirty = false; // new samples since the last repaint
     bool m_viewDirty = true; // the range, size or series changed: repaint even when frozen
     bool m_settingAxes = false; // our own axis changes are not the user's zoom
-    bool m_hasOrigin = false;
-    qint64 m_originUs = 0; // the steady time of time 0
-    double m_newest = 0.0; // seconds: the newest sample
     double m_viewFrom = 0.0;
     double m_viewTo = 10.0;
 };

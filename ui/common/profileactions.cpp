@@ -1,8 +1,8 @@
 // Profile actions: file dialogs, save with a completeness check, load through the diff dialog.
-#include "profileactions.h"
+#include "common/profileactions.h"
 
+#include "common/profilediffdialog.h"
 #include "profile/profile.h"
-#include "profilediffdialog.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -74,6 +74,20 @@ LoadOutcome loadAsEdits(QWidget *parent, const QString &path, const QString &fam
     for (const profile::DiffRow &row : rows)
         parameters.edit(row.key, row.file);
     return LoadOutcome::Loaded;
+}
+
+QString outcomeMessage(LoadOutcome outcome)
+{
+    switch (outcome) {
+    case LoadOutcome::AlreadyEqual:
+        return Tr::tr("The servo already holds every value of this profile");
+    case LoadOutcome::Loaded:
+        return Tr::tr("Profile loaded as edits: review them, then Apply");
+    case LoadOutcome::Failed:
+    case LoadOutcome::Cancelled:
+        break;
+    }
+    return {};
 }
 
 } // namespace profileactions

@@ -26,5 +26,8 @@ enum class LoadOutcome { Failed, AlreadyEqual, Cancelled, Loaded };
 LoadOutcome loadAsEdits(QWidget *parent, const QString &path, const QString &family,
                         const QVector<model::Definition> &definitions,
                         model::ParameterModel &parameters, QString *error);
+// The note for the status bar after a load that changed nothing or made edits; empty for a
+// failure (its error says why) and a cancel.
+QString outcomeMessage(LoadOutcome outcome);
 
 } // namespace profileactions

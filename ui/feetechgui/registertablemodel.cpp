@@ -1,28 +1,25 @@
 // Memory table model: register rows with raw and real-unit values, edits through the model.
-#include "registertablemodel.h"
+#include "feetechgui/registertablemodel.h"
 
+#include "common/palette.h"
 #include "feetech/registertable.h"
 #include "feetech/servoparameters.h"
 #include "model/parametermodel.h"
 
 #include <QBrush>
 #include <QColor>
+#include <QCoreApplication>
 #include <QFont>
-#include <QGuiApplication>
+#include <QLocale>
 #include <QPalette>
 
 #include <cmath>
 
 namespace {
 
-bool isDark()
-{
-    return QGuiApplication::palette().color(QPalette::Window).lightness() < 128;
-}
-
 QColor stateBackground(model::State state)
 {
-    const bool dark = isDark();
+    const bool dark = palette::isDark();
     switch (state) {
     case model::State::Edited:
     case model::State::Writing:
@@ -118,7 +115,7 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
         return colour.isValid() ? QVariant(QBrush(colour)) : QVariant();
     }
     if (role == Qt::ForegroundRole && state != model::State::Clean) {
-        return QBrush(isDark() ? QColor(240, 240, 240) : QColor(20, 20, 20));
+        return QBrush(palette::isDark() ? QColor(240, 240, 240) : QColor(20, 20, 20));
     }
     if (role == Qt::FontRole && index.column() == ValueColumn && pending) {
         QFont bold;

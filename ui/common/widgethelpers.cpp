@@ -1,5 +1,5 @@
 // Widget factories shared by the pages.
-#include "widgethelpers.h"
+#include "common/widgethelpers.h"
 
 #include <QPushButton>
 

@@ -1,0 +1,152 @@
+// The telemetry CSV writer: header, one row per sample, buffered and flushed on a timer.
+#include "feetech/telemetryrecorder.h"
+
+#include <QDir>
+#include <QFile>
+#include <QSignalBlocker>
+#include <QTextStream>
+#include <QTimer>
+
+#include <algorithm>
+
+namespace feetech {
+
+TelemetryRecorder::TelemetryRecorder(QObject *parent)
+    : QObject(parent)
+    , m_flushTimer(new QTimer(this))
+{
+    m_flushTimer->setInterval(m_flushIntervalMs);
+    connect(m_flushTimer, &QTimer::timeout, this, [this] {
+        if (flush())
+            emit flushed(m_rows);
+    });
+}
+
+TelemetryRecorder::~TelemetryRecorder()
+{
+    // No one listens any more: a last failure has nobody to tell.
+    const QSignalBlocker blocker(this);
+    finish();
+}
+
+bool TelemetryRecorder::open(const QString &path, QString *error)
+{
+    finish();
+    m_path = path;
+    const auto refuse = [this, error](const QString &why) {
+        m_error = why;
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (path.isEmpty())
+        return refuse(tr("No file name was given for the recording."));
+    auto file = std::make_unique<QFile>(path);
+    if (!file->open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
+        return refuse(tr("Could not open %1 for writing: %2.")
+                          .arg(QDir::toNativeSeparators(path), file->errorString()));
+    }
+    m_file = std::move(file);
+    return begin(m_file.get(), error);
+}
+
+bool TelemetryRecorder::start(QIODevice *device, QString *error)
+{
+    finish();
+    m_path.clear();
+    if (!device || !device->isWritable()) {
+        m_error = tr("The telemetry output is not open for writing.");
+        if (error)
+            *error = m_error;
+        return false;
+    }
+    return begin(device, error);
+}
+
+bool TelemetryRecorder::begin(QIODevice *device, QString *error)
+{
+    m_device = device;
+    m_stream = std::make_unique<QTextStream>(device);
+    m_rows = 0;
+    m_startUs = steadyMicroseconds();
+    m_error.clear();
+    *m_stream << telemetryCsvHeader() << '\n';
+    // An unwritable target (a full disk) shows at once, not half a second into the recording.
+    if (!flush()) {
+        if (error)
+            *error = m_error;
+        return false;
+    }
+    if (m_flushIntervalMs > 0)
+        m_flushTimer->start();
+    return true;
+}
+
+bool TelemetryRecorder::finish()
+{
+    if (!m_stream)
+        return true;
+    const bool written = flush();
+    close();
+    return written;
+}
+
+void TelemetryRecorder::setFlushInterval(int ms)
+{
+    m_flushIntervalMs = std::max(0, ms);
+    m_flushTimer->setInterval(m_flushIntervalMs);
+    if (m_flushIntervalMs == 0)
+        m_flushTimer->stop();
+    else if (m_stream)
+        m_flushTimer->start();
+}
+
+bool TelemetryRecorder::write(const FeedbackSample &sample)
+{
+    // Samples taken before the recording started are not part of it.
+    if (!m_stream || sample.steadyUs < m_startUs)
+        return false;
+    *m_stream << telemetryCsvRow(sample, m_startUs) << '\n';
+    ++m_rows;
+    return true;
+}
+
+int TelemetryRecorder::write(const QVector<FeedbackSample> &samples)
+{
+    int written = 0;
+    for (const FeedbackSample &sample : samples)
+        written += write(sample) ? 1 : 0;
+    return written;
+}
+
+bool TelemetryRecorder::flush()
+{
+    if (!m_stream)
+        return true;
+    m_stream->flush();
+    const auto *file = qobject_cast<const QFileDevice *>(m_device);
+    if (m_stream->status() != QTextStream::Ok || (file && file->error() != QFileDevice::NoError)) {
+        fail(m_device->errorString());
+        return false;
+    }
+    return true;
+}
+
+void TelemetryRecorder::fail(const QString &reason)
+{
+    m_error = reason;
+    close();
+    emit failed(reason);
+}
+
+void TelemetryRecorder::close()
+{
+    m_flushTimer->stop();
+    m_stream.reset();
+    if (m_file)
+        m_file->close();
+    m_file.reset();
+    m_device = nullptr;
+}
+
+} // namespace feetech

@@ -1,0 +1,191 @@
+// Tests the telemetry CSV recorder: rows that parse back, absent values, samples before the
+// start, an unwritable file, a device such as stdout, the flush interval and a failing disk.
+#include "feetech/telemetryrecorder.h"
+#include "telemetrycsv.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using feetech::FeedbackSample;
+using feetech::Quantity;
+using feetech::TelemetryRecorder;
+
+namespace {
+
+FeedbackSample sampleAt(quint8 id, qint64 steadyUs, double position)
+{
+    FeedbackSample sample;
+    sample.id = id;
+    sample.baud = 1000000;
+    sample.steadyUs = steadyUs;
+    sample.values[int(Quantity::Position)] = position;
+    sample.values[int(Quantity::Speed)] = -35.0;
+    sample.values[int(Quantity::Voltage)] = 12.1;
+    sample.values[int(Quantity::Temperature)] = 31.0;
+    return sample;
+}
+
+} // namespace
+
+class TestTelemetryRecorder : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void init() { QVERIFY(m_dir.isValid()); }
+
+    void rowsWrittenToAFileParseBackWithTheirIdsTimesAndValues()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("rows.csv"));
+        TelemetryRecorder recorder;
+        QString error;
+        QVERIFY2(recorder.open(path, &error), qPrintable(error));
+        QVERIFY(recorder.isRecording());
+        QCOMPARE(recorder.fileName(), path);
+        const qint64 start = recorder.startUs();
+        QVector<FeedbackSample> samples;
+        for (int i = 0; i < 20; ++i) {
+            FeedbackSample sample = sampleAt(quint8(1 + i % 3), start + i * 20000, 2000.0 + i);
+            sample.servoStatus = i == 7 ? 0x20 : 0;
+            sample.moving = i % 2 == 0;
+            samples.append(sample);
+        }
+        QCOMPARE(recorder.write(samples), samples.size());
+        QCOMPARE(recorder.rowCount(), qint64(samples.size()));
+        QVERIFY(recorder.finish());
+        QVERIFY(!recorder.isRecording());
+
+        const auto rows = testsupport::readTelemetryCsv(path, &error);
+        QVERIFY2(rows, qPrintable(error));
+        testsupport::compareTelemetryRows(*rows, samples, start);
+    }
+
+    void valuesAServoDoesNotReportStayEmptyCells()
+    {
+        QBuffer buffer;
+        QVERIFY(buffer.open(QIODevice::WriteOnly));
+        TelemetryRecorder recorder;
+        QVERIFY(recorder.start(&buffer));
+        FeedbackSample sample = sampleAt(4, recorder.startUs(), 512.0);
+        sample.values[int(Quantity::Current)].reset();
+        sample.values[int(Quantity::Load)].reset();
+        QVERIFY(recorder.write(sample));
+        QVERIFY(recorder.finish());
+
+        QString error;
+        const auto rows = feetech::parseTelemetryCsv(QString::fromUtf8(buffer.data()), &error);
+        QVERIFY2(rows, qPrintable(error));
+        QCOMPARE(rows->size(), 1);
+        QCOMPARE(rows->first().values.at(int(Quantity::Current)), std::optional<double>());
+        QCOMPARE(rows->first().values.at(int(Quantity::Load)), std::optional<double>());
+        QCOMPARE(rows->first().values.at(int(Quantity::Position)), std::optional<double>(512.0));
+    }
+
+    void samplesTakenBeforeTheStartAreNotRecorded()
+    {
+        QBuffer buffer;
+        QVERIFY(buffer.open(QIODevice::WriteOnly));
+        TelemetryRecorder recorder;
+        QVERIFY(recorder.start(&buffer));
+        recorder.setStartUs(1000000);
+        QVERIFY(!recorder.write(sampleAt(1, 999999, 1.0)));
+        QVERIFY(recorder.write(sampleAt(1, 1000000, 2.0)));
+        QCOMPARE(recorder.rowCount(), qint64(1));
+        QVERIFY(recorder.finish());
+        QString error;
+        const auto rows = feetech::parseTelemetryCsv(QString::fromUtf8(buffer.data()), &error);
+        QVERIFY2(rows, qPrintable(error));
+        QCOMPARE(rows->size(), 1);
+        QCOMPARE(rows->first().timeSeconds, 0.0);
+    }
+
+    void writingToABufferGivesTheHeaderAndOneLinePerSample()
+    {
+        QBuffer buffer;
+        QVERIFY(buffer.open(QIODevice::WriteOnly));
+        TelemetryRecorder recorder;
+        QString error;
+        QVERIFY2(recorder.start(&buffer, &error), qPrintable(error));
+        QVERIFY(recorder.fileName().isEmpty());
+        // The header is out at once, before any sample.
+        QCOMPARE(buffer.data(), (feetech::telemetryCsvHeader() + QLatin1Char('\n')).toUtf8());
+        const FeedbackSample sample = sampleAt(2, recorder.startUs() + 250000, 100.0);
+        recorder.write(sample);
+        QVERIFY(recorder.flush());
+        const QStringList lines = QString::fromUtf8(buffer.data()).split(QLatin1Char('\n'));
+        QCOMPARE(lines.size(), 3); // header, row, and the empty rest after the last newline
+        QCOMPARE(lines.at(1), feetech::telemetryCsvRow(sample, recorder.startUs()));
+        QVERIFY(recorder.finish());
+        // The device is the caller's: it stays open.
+        QVERIFY(buffer.isOpen());
+    }
+
+    void aDeviceNotOpenForWritingIsRefused()
+    {
+        QBuffer buffer;
+        TelemetryRecorder recorder;
+        QString error;
+        QVERIFY(!recorder.start(&buffer, &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!recorder.isRecording());
+    }
+
+    void anUnwritablePathGivesAnErrorNamingTheFile()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("no/such/folder/rows.csv"));
+        TelemetryRecorder recorder;
+        QString error;
+        QVERIFY(!recorder.open(path, &error));
+        QVERIFY(!recorder.isRecording());
+        QVERIFY2(error.contains(QDir::toNativeSeparators(path)), qPrintable(error));
+        QCOMPARE(recorder.errorString(), error);
+        QVERIFY(!recorder.write(sampleAt(1, recorder.startUs(), 1.0)));
+    }
+
+    void anEmptyFileNameIsRefused()
+    {
+        TelemetryRecorder recorder;
+        QString error;
+        QVERIFY(!recorder.open(QString(), &error));
+        QVERIFY(!error.isEmpty());
+    }
+
+    void rowsReachTheFileWithinTheFlushInterval()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("flushed.csv"));
+        TelemetryRecorder recorder;
+        recorder.setFlushInterval(20);
+        QSignalSpy flushed(&recorder, &TelemetryRecorder::flushed);
+        QVERIFY(recorder.open(path));
+        recorder.write(sampleAt(3, recorder.startUs(), 42.0));
+        QTRY_VERIFY_WITH_TIMEOUT(!flushed.isEmpty(), 5000);
+        QCOMPARE(flushed.last().at(0).toLongLong(), qint64(1));
+        QString error;
+        const auto rows = testsupport::readTelemetryCsv(path, &error); // while still recording
+        QVERIFY2(rows, qPrintable(error));
+        QCOMPARE(rows->size(), 1);
+    }
+
+    void aFullDiskEndsTheRecordingAndSaysWhy()
+    {
+        if (!QFile::exists(QStringLiteral("/dev/full")))
+            QSKIP("needs /dev/full to fail writes");
+        TelemetryRecorder recorder;
+        QSignalSpy failed(&recorder, &TelemetryRecorder::failed);
+        QString error;
+        QVERIFY(!recorder.open(QStringLiteral("/dev/full"), &error));
+        QCOMPARE(failed.count(), 1);
+        QVERIFY(!failed.first().at(0).toString().isEmpty());
+        QVERIFY(!recorder.isRecording());
+    }
+
+private:
+    QTemporaryDir m_dir;
+};
+
+QTEST_GUILESS_MAIN(TestTelemetryRecorder)
+#include "tst_telemetryrecorder.moc"
