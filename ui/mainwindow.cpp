@@ -114,15 +114,13 @@ MainWindow::MainWindow(QWidget *parent)
     statusBar()->addPermanentWidget(m_counters);
     onCountersChanged({});
 
-    connect(m_ptk.get(), &ptk::Client::statusChanged, this, &MainWindow::onStatusChanged);
-    connect(m_ptk.get(), &ptk::Client::countersChanged, this, &MainWindow::onCountersChanged);
-    connect(m_ptk.get(), &ptk::Client::packetLogged, m_packetLog, &PacketLogDock::append);
-    connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
-            &MainWindow::onStatusChanged);
-    connect(m_feetech.get(), &feetech::BusClient::countersChanged, this,
-            &MainWindow::onCountersChanged);
-    connect(m_feetech.get(), &feetech::BusClient::packetLogged, m_packetLog,
-            &PacketLogDock::append);
+    // Either family's link is shown the same way: status bar, counters, packet log.
+    for (seriallink::LinkMirror *link : {m_ptk->link(), m_feetech->link()}) {
+        connect(link, &seriallink::LinkMirror::statusChanged, this, &MainWindow::onStatusChanged);
+        connect(link, &seriallink::LinkMirror::countersChanged, this,
+                &MainWindow::onCountersChanged);
+        connect(link, &seriallink::LinkMirror::packetLogged, m_packetLog, &PacketLogDock::append);
+    }
 
     m_rateTimer = new QTimer(this);
     m_rateTimer->setInterval(kRateRefreshMs);

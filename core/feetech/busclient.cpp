@@ -44,8 +44,6 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         emit statusChanged(status);
     });
     m_link.follow(&session->link());
-    connect(&m_link, &seriallink::LinkMirror::countersChanged, this, &BusClient::countersChanged);
-    connect(&m_link, &seriallink::LinkMirror::packetLogged, this, &BusClient::packetLogged);
     connect(session, &Session::scanProgress, this, &BusClient::scanProgress);
     connect(session, &Session::servoFound, this, &BusClient::onServoFound);
     connect(session, &Session::scanFinished, this, [this](bool completed, const QString &m) {

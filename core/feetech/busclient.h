@@ -111,8 +111,6 @@ public:
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
-    void countersChanged(const seriallink::LinkCounters &counters);
-    void packetLogged(const seriallink::PacketLogEntry &entry);
     void scanProgress(int done, int total, qint32 baud);
     void scanFinished(bool completed, const QString &message);
     void servosChanged(); // the list itself: added, removed, or moved to another ID or baud

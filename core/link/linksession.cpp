@@ -63,6 +63,7 @@ bool LinkSession::open(const QString &portName, qint32 baud, EchoMode echo)
         return false;
     }
     m_engine->resetCounters();
+    emit countersChanged(m_engine->counters()); // the status bar starts this port from zero
     m_engine->setEchoMode(echo);
     return true;
 }

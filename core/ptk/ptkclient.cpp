@@ -29,8 +29,6 @@ Client::Client(const SessionTiming &timing, QObject *parent)
     // First, so the client has settled before the main window hears of a change.
     connect(&m_link, &seriallink::LinkMirror::statusChanged, this, &Client::onStatusChanged);
     m_link.follow(&session->link());
-    connect(&m_link, &seriallink::LinkMirror::countersChanged, this, &Client::countersChanged);
-    connect(&m_link, &seriallink::LinkMirror::packetLogged, this, &Client::packetLogged);
     connect(session, &Session::valuesRead, this, &Client::onValuesRead);
     connect(session, &Session::readFinished, this, [this](bool ok, const QString &message) {
         m_reading = false;

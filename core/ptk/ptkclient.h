@@ -51,8 +51,6 @@ public:
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
-    void countersChanged(const seriallink::LinkCounters &counters);
-    void packetLogged(const seriallink::PacketLogEntry &entry);
     void readFinished(bool ok, const QString &message);
     void applyProgress(int done, int total);
     void applyFinished(bool ok, const QString &message);
