@@ -2,9 +2,11 @@
 #pragma once
 
 #include "feetech/busclient.h"
+#include "feetech/busexchange.h"
 #include "feetech/feetechpacket.h"
 #include "feetech/feetechsession.h"
 #include "feetech/motiontest.h"
+#include "link/linksession.h"
 #include "sim/virtualfeetechservo.h"
 #include "simclient.h"
 
@@ -14,6 +16,8 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace testsupport {
 
@@ -93,13 +97,7 @@ inline int connectScanAndRead(feetech::BusClient &client, const QString &link, i
 // ignored (bad checksum, not a frame) included.
 inline QVector<QByteArray> feetechFramesReceived(const QString &logPath)
 {
-    QVector<QByteArray> frames;
-    for (const QString &line : logLinesStartingWith(logPath, QStringLiteral("in "))) {
-        const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
-        if (const auto bytes = util::parseHex(hex))
-            frames.append(*bytes);
-    }
-    return frames;
+    return framesLogged(logPath, QStringLiteral("in"));
 }
 
 // Those frames decoded; one that does not decode (header, length, checksum) is left out.
@@ -111,6 +109,32 @@ inline QVector<feetech::Packet> feetechPacketsReceived(const QString &logPath)
             packets.append(*packet);
     }
     return packets;
+}
+
+// The instruction packets the bus received with instruction `code`, in order; only those to
+// `id` when one is given.
+inline QVector<feetech::Packet> feetechRequestsReceived(const QString &logPath,
+                                                        feetech::Instruction code,
+                                                        std::optional<quint8> id = std::nullopt)
+{
+    QVector<feetech::Packet> requests;
+    for (const feetech::Packet &packet : feetechPacketsReceived(logPath)) {
+        if (packet.code == quint8(code) && (!id || packet.id == *id))
+            requests.append(packet);
+    }
+    return requests;
+}
+
+// Session timing patient enough for a loaded machine: tests that are not about how quickly the
+// bus answers must not fail because a reply came a little late.
+inline feetech::SessionTiming patientTiming()
+{
+    feetech::SessionTiming timing;
+    timing.engine.replyTimeout = std::chrono::milliseconds(100);
+    timing.probeAllowance = std::chrono::milliseconds(200);
+    timing.minimumScanAllowance = std::chrono::milliseconds(20);
+    timing.minimumTelemetryAllowance = std::chrono::milliseconds(20);
+    return timing;
 }
 
 // Base of a test object whose tests run against a simulated Feetech bus on "bus" in a temporary
@@ -142,6 +166,24 @@ protected:
                 value = servo->value(key);
         });
         return value;
+    }
+
+    // Runs `work` in the simulator's thread on the simulated servo with `id` that listens at
+    // `baud` (IDs repeat across rates); false without that servo.
+    bool withServo(quint8 id, qint32 baud,
+                   const std::function<void(sim::VirtualFeetechServo &)> &work)
+    {
+        bool found = false;
+        m_simulator->call([&](sim::Simulator &simulator) {
+            sim::VirtualFeetechBus &bus = *simulator.feetechBus();
+            for (int i = 0; i < bus.servoCount() && !found; ++i) {
+                if (bus.servo(i).id() == id && bus.servo(i).baudRate() == baud) {
+                    found = true;
+                    work(bus.servo(i));
+                }
+            }
+        });
+        return found;
     }
 
     // Sets register `key` of simulated servo `id` as if the servo itself had changed it.
@@ -197,6 +239,76 @@ protected:
 
     std::unique_ptr<feetech::Session> m_session;
     QVector<feetech::ServoInfo> m_found;
+};
+
+// Base of a test object whose tests drive the parts of a Feetech session (scan, guided flows,
+// telemetry cycle) themselves, in the test thread: a link session on the simulated bus and the
+// bus steps over it, with the timing in m_timing (patientTiming() unless a test says otherwise).
+class FeetechLinkTest : public FeetechBusTest
+{
+protected:
+    // Starts the simulator with `options` and opens the link on it at `baud` without echo,
+    // Connected as a session would say; false and *error when either fails.
+    bool startLink(const sim::SimulatorOptions &options, QString *error, qint32 baud = 1000000)
+    {
+        if (!startSimulator(options, error))
+            return false;
+        m_link = std::make_unique<seriallink::LinkSession>(
+            m_format, [](const QByteArray &, const QByteArray &) { return QString(); });
+        m_link->engine().setTiming(m_timing.engine);
+        m_bus = std::make_unique<feetech::BusExchange>(*m_link, m_timing);
+        if (!m_link->open(m_simulator->linkPath(), baud, seriallink::EchoMode::Off)) {
+            *error = m_link->status().message;
+            return false;
+        }
+        m_link->setState(seriallink::ConnectionState::Connected);
+        return true;
+    }
+
+    // Closes the link, stops the simulator, deletes its log and puts the patient timing back.
+    void stopLink()
+    {
+        m_bus.reset();
+        m_link.reset();
+        m_simulator.reset();
+        QFile::remove(logPath());
+        m_timing = patientTiming();
+    }
+
+    // Runs `steps` on the bus and waits up to 10 s for the run to end: whether every step
+    // succeeded (false when it did not end), with the message of the failure in *message.
+    bool runSteps(std::vector<feetech::Step> steps, QString *message = nullptr)
+    {
+        // Shared: a run that ends after the wait gave up must not write into this frame.
+        auto outcome = std::make_shared<std::optional<std::pair<bool, QString>>>();
+        m_bus->runSteps(std::move(steps), [outcome](bool ok, const QString &why) {
+            *outcome = std::make_pair(ok, why);
+        });
+        if (!QTest::qWaitFor([&] { return outcome->has_value(); }, 10000)) {
+            if (message)
+                *message = QStringLiteral("the steps did not end within 10 s");
+            return false;
+        }
+        if (message)
+            *message = (*outcome)->second;
+        return (*outcome)->first;
+    }
+
+    // Servo `id` at `baud` as it identifies itself; nothing when it does not answer.
+    std::optional<feetech::ServoInfo> identify(quint8 id, qint32 baud)
+    {
+        auto servo = std::make_shared<feetech::ServoInfo>();
+        servo->id = id;
+        servo->baud = baud;
+        if (!runSteps({m_bus->setBaud(baud), m_bus->identify(servo)}))
+            return std::nullopt;
+        return *servo;
+    }
+
+    feetech::SessionTiming m_timing = patientTiming();
+    feetech::FrameFormat m_format; // the link's framer keeps a reference: declared first
+    std::unique_ptr<seriallink::LinkSession> m_link;
+    std::unique_ptr<feetech::BusExchange> m_bus;
 };
 
 } // namespace testsupport

@@ -1,13 +1,17 @@
 // Test helpers: a QSerialPort client on a simulator's pty, and simulator start-up in a temp dir.
 #pragma once
 
+#include "link/linktypes.h"
 #include "ptk/ptkframe.h"
 #include "ptk/ptkparameters.h"
+#include "ptk/ptksession.h"
 #include "sim/simulator.h"
+#include "sim/virtualptkservo.h"
 #include "util/hex.h"
 
 #include <QFile>
 #include <QSerialPort>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -74,6 +78,15 @@ struct ConnectedSimulator
     }
 };
 
+// The connection states a spy on a statusChanged signal saw, in order.
+inline QVector<seriallink::ConnectionState> connectionStates(const QSignalSpy &spy)
+{
+    QVector<seriallink::ConnectionState> states;
+    for (const QList<QVariant> &arguments : spy)
+        states.append(arguments.at(0).value<seriallink::ConnectionStatus>().state);
+    return states;
+}
+
 // Lines of a simulator log with the timestamps cut off ("in AF FA ...").
 inline QStringList logLines(const QString &path)
 {
@@ -111,15 +124,58 @@ inline sim::SimulatorOptions ptkOptions(const QTemporaryDir &dir, const QString 
     return options;
 }
 
+// PTK timing fast enough that a test runs in well under a second, slow enough to keep PTK's
+// order.
+inline ptk::SessionTiming ptkTestTiming()
+{
+    ptk::SessionTiming timing;
+    timing.pollInterval = std::chrono::milliseconds(5);
+    timing.writeGap = std::chrono::milliseconds(5);
+    timing.reconnectInterval = std::chrono::milliseconds(50);
+    timing.engine.replyTimeout = std::chrono::milliseconds(20);
+    return timing;
+}
+
+// What the simulated PTK servo holds now, looked at in the simulator's thread.
+inline ptk::ParameterSet ptkServoValues(sim::SimulatorThread &simulator)
+{
+    ptk::ParameterSet values;
+    simulator.call([&](sim::Simulator &s) { values = s.ptkServo()->values(); });
+    return values;
+}
+
+// The frames of a simulator log whose lines start with `direction` ("in", "out"), in order, as
+// bytes; the direction and any note cut off.
+inline QVector<QByteArray> framesLogged(const QString &logPath, const QString &direction)
+{
+    QVector<QByteArray> frames;
+    for (const QString &line : logLinesStartingWith(logPath, direction + u' ')) {
+        const QString hex =
+            line.mid(direction.size() + 1).section(QStringLiteral("  #"), 0, 0).trimmed();
+        if (const auto bytes = util::parseHex(hex))
+            frames.append(*bytes);
+    }
+    return frames;
+}
+
+// The commands of the PTK queries a simulator log shows the servo received, in order.
+inline QVector<quint8> ptkQueriesReceived(const QString &logPath)
+{
+    QVector<quint8> commands;
+    for (const QByteArray &frame : framesLogged(logPath, QStringLiteral("in"))) {
+        if (frame.size() == ptk::kRequestSize && ptk::findQuery(quint8(frame.at(4))))
+            commands.append(quint8(frame.at(4)));
+    }
+    return commands;
+}
+
 // The PTK write frames a simulator log shows the servo received, in order, as hex.
 inline QStringList ptkWritesReceived(const QString &logPath)
 {
     QStringList writes;
-    for (const QString &line : logLinesStartingWith(logPath, QStringLiteral("in "))) {
-        const QString hex = line.mid(3).section(QStringLiteral("  #"), 0, 0).trimmed();
-        const auto frame = util::parseHex(hex);
-        if (frame && frame->size() == ptk::kRequestSize && ptk::findWrite(quint8(frame->at(4))))
-            writes.append(hex);
+    for (const QByteArray &frame : framesLogged(logPath, QStringLiteral("in"))) {
+        if (frame.size() == ptk::kRequestSize && ptk::findWrite(quint8(frame.at(4))))
+            writes.append(util::toHex(frame));
     }
     return writes;
 }

@@ -14,24 +14,6 @@ using seriallink::ConnectionState;
 
 namespace {
 
-// Fast enough that a test runs in well under a second, slow enough to keep PTK's order.
-ptk::SessionTiming testTiming()
-{
-    ptk::SessionTiming timing;
-    timing.pollInterval = std::chrono::milliseconds(5);
-    timing.writeGap = std::chrono::milliseconds(5);
-    timing.reconnectInterval = std::chrono::milliseconds(50);
-    timing.engine.replyTimeout = std::chrono::milliseconds(20);
-    return timing;
-}
-
-ptk::ParameterSet servoValues(sim::SimulatorThread &simulator)
-{
-    ptk::ParameterSet values;
-    simulator.call([&](sim::Simulator &s) { values = s.ptkServo()->values(); });
-    return values;
-}
-
 bool modelMatches(ptk::Client &client, const ptk::ParameterSet &values)
 {
     for (const ptk::ParameterInfo &meta : ptk::parameterInfos()) {
@@ -74,10 +56,10 @@ private slots:
         auto opts = options(QStringLiteral("read%1").arg(echo), echo);
         opts.ptkValues = QStringLiteral("gain=20,min_pulse_us=900,soft_start=1");
         QVERIFY2(simulator.start(opts, &error), qPrintable(error));
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         client.connectTo(simulator.linkPath());
         QTRY_COMPARE(client.status().state, ConnectionState::Connected);
-        const ptk::ParameterSet expected = servoValues(simulator);
+        const ptk::ParameterSet expected = testsupport::ptkServoValues(simulator);
         QTRY_VERIFY(modelMatches(client, expected));
         QCOMPARE(*client.model()->deviceValue(QStringLiteral("min_pulse_us")), 3600);
         QTRY_VERIFY(client.counters().repliesOk >= 8);
@@ -94,9 +76,9 @@ private slots:
         QString error;
         const auto opts = options(QStringLiteral("apply%1").arg(echo), echo);
         QVERIFY2(simulator.start(opts, &error), qPrintable(error));
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         client.connectTo(simulator.linkPath());
-        QTRY_VERIFY(modelMatches(client, servoValues(simulator)));
+        QTRY_VERIFY(modelMatches(client, testsupport::ptkServoValues(simulator)));
 
         model::ParameterModel &model = *client.model();
         QVERIFY(model.edit(QStringLiteral("gain"), 21));
@@ -115,7 +97,7 @@ private slots:
         QCOMPARE(model.state(QStringLiteral("gain")), model::State::Verified);
         QCOMPARE(model.state(QStringLiteral("deadband")), model::State::Verified);
         QCOMPARE(model.state(QStringLiteral("damping")), model::State::Clean);
-        QCOMPARE(servoValues(simulator), written);
+        QCOMPARE(testsupport::ptkServoValues(simulator), written);
     }
 
     void aWriteTheServoIgnoresIsAMismatchOnThatParameterOnly()
@@ -124,9 +106,9 @@ private slots:
         QString error;
         QVERIFY2(simulator.start(options(QStringLiteral("ignored")), &error), qPrintable(error));
         simulator.call([](sim::Simulator &s) { s.ptkServo()->ignoreWrites(0x43); }); // deadband
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         client.connectTo(simulator.linkPath());
-        QTRY_VERIFY(modelMatches(client, servoValues(simulator)));
+        QTRY_VERIFY(modelMatches(client, testsupport::ptkServoValues(simulator)));
 
         model::ParameterModel &model = *client.model();
         QVERIFY(model.edit(QStringLiteral("gain"), 21));
@@ -147,9 +129,9 @@ private slots:
         sim::SimulatorThread simulator;
         QString error;
         QVERIFY2(simulator.start(options(QStringLiteral("edit")), &error), qPrintable(error));
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         client.connectTo(simulator.linkPath());
-        QTRY_VERIFY(modelMatches(client, servoValues(simulator)));
+        QTRY_VERIFY(modelMatches(client, testsupport::ptkServoValues(simulator)));
         model::ParameterModel &model = *client.model();
         QVERIFY(model.edit(QStringLiteral("gain"), 3));
         const qint64 editedAt = model.lastReadMs(QStringLiteral("gain"));
@@ -173,8 +155,8 @@ private slots:
         opts.ptkValues = QStringLiteral("gain=11,damping=22,deadband=33,min_angle=44,"
                                         "max_angle=55,max_power=666,overload_power=777");
         QVERIFY2(simulator.start(opts, &error), qPrintable(error));
-        const ptk::ParameterSet truth = servoValues(simulator);
-        ptk::Client client(testTiming());
+        const ptk::ParameterSet truth = testsupport::ptkServoValues(simulator);
+        ptk::Client client(testsupport::ptkTestTiming());
         QStringList wrong;
         connect(client.model(), &model::ParameterModel::parameterChanged, this,
                 [&](const QString &key) {
@@ -200,7 +182,7 @@ private slots:
         QString error;
         const auto opts = options(QStringLiteral("replug"));
         QVERIFY2(simulator.start(opts, &error), qPrintable(error));
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         QSignalSpy states(&client, &ptk::Client::statusChanged);
         client.connectTo(simulator.linkPath());
         QTRY_COMPARE(client.status().state, ConnectionState::Connected);
@@ -220,11 +202,11 @@ private slots:
         sim::SimulatorThread simulator;
         QString error;
         QVERIFY2(simulator.start(options(QStringLiteral("cut")), &error), qPrintable(error));
-        auto timing = testTiming();
+        auto timing = testsupport::ptkTestTiming();
         timing.writeGap = std::chrono::milliseconds(40); // time to cut in between writes
         ptk::Client client(timing);
         client.connectTo(simulator.linkPath());
-        QTRY_VERIFY(modelMatches(client, servoValues(simulator)));
+        QTRY_VERIFY(modelMatches(client, testsupport::ptkServoValues(simulator)));
         model::ParameterModel &model = *client.model();
         QVERIFY(model.edit(QStringLiteral("gain"), 21));
         QSignalSpy finished(&client, &ptk::Client::applyFinished);
@@ -252,7 +234,7 @@ private slots:
         sim::SimulatorThread simulator;
         QString error;
         QVERIFY2(simulator.start(options(QStringLiteral("quiet")), &error), qPrintable(error));
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         client.setPolling(false);
         client.connectTo(simulator.linkPath());
         QTRY_COMPARE(client.status().state, ConnectionState::Connected);
@@ -260,12 +242,12 @@ private slots:
         client.readAll();
         QTRY_COMPARE(read.size(), 1);
         QVERIFY(read.first().at(0).toBool());
-        QVERIFY(modelMatches(client, servoValues(simulator)));
+        QVERIFY(modelMatches(client, testsupport::ptkServoValues(simulator)));
     }
 
     void anApplyIsRefusedUntilEverythingHasBeenRead()
     {
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         QVERIFY(client.model()->edit(QStringLiteral("gain"), 3));
         QString why;
         QVERIFY(!client.apply(&why));
@@ -274,7 +256,7 @@ private slots:
 
     void aMissingPortIsAClearError()
     {
-        ptk::Client client(testTiming());
+        ptk::Client client(testsupport::ptkTestTiming());
         QSignalSpy states(&client, &ptk::Client::statusChanged);
         client.connectTo(m_dir.filePath(QStringLiteral("nothing-here")));
         QTRY_COMPARE(client.status().state, ConnectionState::Disconnected);

@@ -1,0 +1,211 @@
+// Tests of the Feetech bus client's own bookkeeping: its servo list, edits, work and busy state.
+#include "feetechbus.h"
+
+#include "feetech/busclient.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using feetech::BusClient;
+using feetech::Instruction;
+using feetech::OperationResult;
+using model::State;
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+
+const QString kMaxTemperature = QStringLiteral("max_temperature");
+
+} // namespace
+
+class TestBusClient : public testsupport::FeetechBusTest
+{
+    Q_OBJECT
+
+private:
+    std::unique_ptr<BusClient> m_client;
+
+    model::ParameterModel &parameters(int index) { return *m_client->parameters(index); }
+
+    // The address of register `key` in servo `index`'s table.
+    int addressOf(int index, const QString &key) const
+    {
+        return m_client->servo(index).info.table().find(key)->address;
+    }
+
+    // Waits for the next operationFinished; its result, or an empty one after 10 s.
+    OperationResult nextResult(QSignalSpy &finished)
+    {
+        if (finished.isEmpty() && !finished.wait(10000))
+            return {};
+        return finished.takeFirst().at(0).value<OperationResult>();
+    }
+
+private slots:
+    void init()
+    {
+        QString error;
+        const auto servos = testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS15"});
+        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
+        m_client = std::make_unique<BusClient>(testsupport::patientTiming());
+        QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 5));
+        QCOMPARE(m_client->servoCount(), 3);
+    }
+
+    void cleanup()
+    {
+        m_client.reset();
+        m_simulator.reset();
+    }
+
+    void scanFillsTheServoListWithAParameterModelPerServo()
+    {
+        for (int i = 0; i < 3; ++i) {
+            QCOMPARE(m_client->servo(i).info.id, quint8(i + 1));
+            QCOMPARE(m_client->indexOf(quint8(i + 1), k1M), i);
+            QVERIFY(!m_client->servo(i).read);
+        }
+        QCOMPARE(m_client->indexOf(2, 500000), -1);
+        QCOMPARE(m_client->idsInUse(), (QVector<int> {1, 2, 3}));
+        // Each model follows its servo's table: the SCS has no offset register.
+        QVERIFY(parameters(0).definition(QStringLiteral("position_offset")));
+        QVERIFY(!parameters(2).definition(QStringLiteral("position_offset")));
+        QVERIFY(parameters(2).definition(kMaxTemperature));
+        // A new scan starts from an empty list.
+        QSignalSpy changed(m_client.get(), &BusClient::servosChanged);
+        QSignalSpy finished(m_client.get(), &BusClient::scanFinished);
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        m_client->scan(options);
+        QCOMPARE(m_client->servoCount(), 0);
+        QCOMPARE(changed.size(), 1);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(m_client->servoCount(), 2);
+        QCOMPARE(changed.size(), 3);
+    }
+
+    void applyWritesTheEditsAndLeavesAnIdEditPending()
+    {
+        QVERIFY(parameters(0).edit(kMaxTemperature, 66));
+        QVERIFY(parameters(0).edit(QStringLiteral("id"), 9));
+        QString error;
+        QVERIFY2(m_client->apply(0, &error), qPrintable(error));
+        QCOMPARE(parameters(0).state(kMaxTemperature), State::Writing);
+        QTRY_COMPARE_WITH_TIMEOUT(parameters(0).state(kMaxTemperature), State::Verified, 10000);
+        QCOMPARE(simulatorValue(1, kMaxTemperature), 66);
+        QCOMPARE(*parameters(0).deviceValue(kMaxTemperature), 66);
+        // The ID has its own flow: the edit waits, nothing was written there.
+        QCOMPARE(parameters(0).state(QStringLiteral("id")), State::Edited);
+        QCOMPARE(*parameters(0).pendingValue(QStringLiteral("id")), 9);
+        QCOMPARE(simulatorValue(1, u"id"), 1);
+    }
+
+    void applyAllWritesTheRegistersAndThenChangesTheId()
+    {
+        QVERIFY(parameters(0).edit(kMaxTemperature, 66));
+        QVERIFY(parameters(0).edit(QStringLiteral("id"), 9));
+        const int temperatureAddress = addressOf(0, kMaxTemperature);
+        const int idAddress = addressOf(0, QStringLiteral("id"));
+        QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
+        QString error;
+        QVERIFY2(m_client->applyAll(0, &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->indexOf(9, k1M) >= 0, 10000);
+        QCOMPARE(m_client->indexOf(1, k1M), -1);
+        QCOMPARE(simulatorValue(9, kMaxTemperature), 66);
+        // Register first, at the old ID; then the ID.
+        int temperatureWrite = -1;
+        int idWrite = -1;
+        const auto writes = testsupport::feetechRequestsReceived(logPath(), Instruction::Write, 1);
+        for (int i = 0; i < writes.size(); ++i) {
+            const quint8 address = quint8(writes.at(i).parameters.at(0));
+            if (address == temperatureAddress && temperatureWrite < 0)
+                temperatureWrite = i;
+            if (address == idAddress && idWrite < 0)
+                idWrite = i;
+        }
+        QVERIFY(temperatureWrite >= 0 && temperatureWrite < idWrite);
+        const int moved = m_client->indexOf(9, k1M);
+        QVERIFY(!parameters(moved).pendingValue(QStringLiteral("id")));
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
+        QCOMPARE(busy.first().at(0).toBool(), true);
+        QCOMPARE(busy.last().at(0).toBool(), false);
+    }
+
+    void aWriteThatGoesUnansweredIsMarkedFailedAndKeepsTheEdit()
+    {
+        setSimulatorValue(2, u"id", 30); // servo 2 is no longer there
+        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        QVERIFY(parameters(1).edit(kMaxTemperature, 66));
+        QVERIFY(m_client->apply(1));
+        const OperationResult result = nextResult(finished);
+        QCOMPARE(result.operation, feetech::Operation::Write);
+        QVERIFY(!result.ok);
+        QCOMPARE(parameters(1).state(kMaxTemperature), State::Failed);
+        QCOMPARE(*parameters(1).pendingValue(kMaxTemperature), 66);
+        QVERIFY(!m_client->isBusy());
+    }
+
+    void writeValuesLeavesPendingEditsAlone()
+    {
+        QVERIFY(parameters(0).edit(kMaxTemperature, 66));
+        QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
+        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        QString error;
+        QVERIFY2(m_client->writeValues(0, {{kMaxTemperature, 70}}, &error), qPrintable(error));
+        const OperationResult result = nextResult(finished);
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QVERIFY(result.control);
+        QCOMPARE(simulatorValue(1, kMaxTemperature), 70);
+        QCOMPARE(*parameters(0).deviceValue(kMaxTemperature), 70);
+        QCOMPARE(*parameters(0).pendingValue(kMaxTemperature), 66);
+        QCOMPARE(parameters(0).state(kMaxTemperature), State::Edited);
+        // A control write never makes the bus busy.
+        QVERIFY(busy.isEmpty());
+    }
+
+    void busyChangedFollowsForegroundWorkAndBlocksWrites()
+    {
+        QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
+        m_client->readServo(0);
+        QCOMPARE(busy.size(), 1);
+        QCOMPARE(busy.first().at(0).toBool(), true);
+        QVERIFY(m_client->isBusy());
+        QVERIFY(parameters(1).edit(kMaxTemperature, 66));
+        QString error;
+        QVERIFY(!m_client->apply(1, &error));
+        QCOMPARE(error, m_client->writeBlocker(1));
+        QVERIFY(!error.isEmpty());
+        QCOMPARE(parameters(1).state(kMaxTemperature), State::Edited);
+        QTRY_COMPARE_WITH_TIMEOUT(busy.size(), 2, 10000);
+        QCOMPARE(busy.last().at(0).toBool(), false);
+        QVERIFY(m_client->servo(0).read);
+        QVERIFY(m_client->writeBlocker(1).isEmpty());
+    }
+
+    void disconnectForgetsWorkInProgress()
+    {
+        setSimulatorValue(1, u"id", 30); // the write will wait for answers that never come
+        QVERIFY(parameters(0).edit(kMaxTemperature, 66));
+        QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
+        QVERIFY(m_client->apply(0));
+        QVERIFY(m_client->isBusy());
+        m_client->disconnectFrom();
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->status().state,
+                                  seriallink::ConnectionState::Disconnected, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!busy.isEmpty() && !busy.last().at(0).toBool(), 10000);
+        QVERIFY(!m_client->isBusy());
+        QCOMPARE(parameters(0).state(kMaxTemperature), State::Failed);
+        QCOMPARE(*parameters(0).pendingValue(kMaxTemperature), 66);
+        // Nothing of the old work is left to be matched with new results.
+        setSimulatorValue(30, u"id", 1);
+        QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 5));
+        QVERIFY(parameters(0).edit(kMaxTemperature, 67));
+        QVERIFY(m_client->apply(0));
+        QTRY_COMPARE_WITH_TIMEOUT(parameters(0).state(kMaxTemperature), State::Verified, 10000);
+        QVERIFY(!m_client->isBusy());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBusClient)
+#include "tst_busclient.moc"
