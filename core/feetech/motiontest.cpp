@@ -170,8 +170,11 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
     if (table.find(kGoalSpeed))
         values.append({kGoalSpeed, plan.goalSpeed});
     values.append({kGoalPosition, plan.from});
-    if (m_client->parameters(plan.index)->deviceValue(kTorqueEnable) != 1)
-        values.append({kTorqueEnable, 1});
+    const auto on = table.torqueValue(TorqueMode::On);
+    if (on
+        && m_client->parameters(plan.index)->deviceValue(kTorqueEnable)
+            != std::optional<qint64>(*on))
+        values.append({kTorqueEnable, *on});
     if (!write(values, error)) {
         restoreMonitor();
         return false;

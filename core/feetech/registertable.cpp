@@ -467,6 +467,16 @@ quint16 modelNumber(quint8 major, quint8 minor, ByteOrder order)
     return decodeRaw(bytes, order);
 }
 
+std::optional<TorqueMode> RegisterTable::torqueMode(qint64 value) const
+{
+    for (const TorqueMode mode :
+         {TorqueMode::Off, TorqueMode::On, TorqueMode::Damping, TorqueMode::CalibrateMiddle}) {
+        if (torqueValue(mode) == std::optional<qint32>(qint32(value)) && value == qint32(value))
+            return mode;
+    }
+    return std::nullopt;
+}
+
 QVector<Block> RegisterTable::ramBlocks() const
 {
     QVector<Block> ram;

@@ -95,6 +95,8 @@ public:
     {
         return m_facts.torqueValues[std::size_t(mode)];
     }
+    // What a torque_enable value means here; none for a value the table gives no meaning.
+    std::optional<TorqueMode> torqueMode(qint64 value) const;
     // Present position through present current: what one telemetry read fetches.
     Block feedbackBlock() const { return {m_facts.feedbackAddress, m_facts.feedbackSize}; }
 

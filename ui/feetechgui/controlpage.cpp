@@ -50,15 +50,10 @@ int ControlPage::toInt(qint64 value)
                                   std::numeric_limits<int>::max()));
 }
 
-// Damping (torque enable 2) only where the table says the servo knows it.
-bool ControlPage::allowsDamping(const feetech::Register *reg)
+// Damping only where the table says the servo knows it.
+bool ControlPage::allowsDamping(const feetech::RegisterTable &table)
 {
-    if (!reg)
-        return false;
-    if (!reg->choices.isEmpty())
-        return std::any_of(reg->choices.cbegin(), reg->choices.cend(),
-                           [](const feetech::Choice &c) { return c.value == kTorqueDamping; });
-    return reg->minimum <= kTorqueDamping && reg->maximum >= kTorqueDamping;
+    return table.find(kTorqueEnable) && table.torqueValue(feetech::TorqueMode::Damping);
 }
 
 ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
@@ -241,7 +236,7 @@ void ControlPage::configureForServo()
     const feetech::RegisterTable &table = m_client->servo(m_index).info.table();
     const model::ParameterModel *parameters = m_client->parameters(m_index);
 
-    const bool damping = allowsDamping(table.find(kTorqueEnable));
+    const bool damping = allowsDamping(table);
     m_torqueDamping->setToolTip(
         damping ? tr("Damping: the horn can be turned by hand against a resistance (torque "
                      "enable 2).")
@@ -336,7 +331,9 @@ void ControlPage::syncFromDevice()
         return;
     const model::ParameterModel *parameters = m_client->parameters(m_index);
     const auto torque = parameters->deviceValue(kTorqueEnable);
-    QAbstractButton *checked = torque ? m_torqueButtons->button(int(*torque)) : nullptr;
+    const auto mode =
+        torque ? m_client->servo(m_index).info.table().torqueMode(*torque) : std::nullopt;
+    QAbstractButton *checked = mode ? m_torqueButtons->button(int(*mode)) : nullptr;
     if (checked) {
         checked->setChecked(true);
     } else if (QAbstractButton *current = m_torqueButtons->checkedButton()) {
@@ -347,11 +344,11 @@ void ControlPage::syncFromDevice()
     }
     if (!torque)
         m_torqueState->setText(tr("Torque state not read yet."));
-    else if (*torque == kTorqueOff)
+    else if (mode == feetech::TorqueMode::Off)
         m_torqueState->setText(tr("Off: the horn turns freely."));
-    else if (*torque == kTorqueOn)
+    else if (mode == feetech::TorqueMode::On)
         m_torqueState->setText(tr("On: the servo holds its goal position."));
-    else if (*torque == kTorqueDamping)
+    else if (mode == feetech::TorqueMode::Damping)
         m_torqueState->setText(tr("Damping: the horn resists being turned."));
     else
         m_torqueState->setText(tr("Torque enable is %1.").arg(*torque));
@@ -453,7 +450,7 @@ void ControlPage::updateEnabled()
     const bool torque = has(kTorqueEnable);
     m_torqueOff->setEnabled(torque);
     m_torqueOn->setEnabled(torque);
-    m_torqueDamping->setEnabled(torque && allowsDamping(table->find(kTorqueEnable)));
+    m_torqueDamping->setEnabled(torque && allowsDamping(*table));
 
     const bool goal = has(kGoalPosition) && !here;
     for (QWidget *widget : {static_cast<QWidget *>(m_slider), static_cast<QWidget *>(m_goal),

@@ -56,9 +56,6 @@ public:
 
 private:
     // Torque enable values, all in one place.
-    static constexpr int kTorqueOff = 0;
-    static constexpr int kTorqueOn = 1;
-    static constexpr int kTorqueDamping = 2;
 
     enum class WriteKind { Torque, Goal, Mode };
     enum class Severity { Info, Warning, Error };
@@ -87,7 +84,7 @@ private:
     void updateEnabled();
     void refreshPresent();
 
-    void setTorque(int value);
+    void setTorque(int modeId); // a feetech::TorqueMode, the id of the button pressed
     void onSliderMoved(int value);
     void changeMode();
     bool write(WriteKind kind, const QVector<model::WriteItem> &values);
@@ -96,7 +93,7 @@ private:
 
     static int toInt(qint64 value); // clamped
     // Damping (torque enable 2) only where the table says the servo knows it.
-    static bool allowsDamping(const feetech::Register *reg);
+    static bool allowsDamping(const feetech::RegisterTable &table);
 
     bool ready() const; // connected, a servo with a known table
     bool testRunsHere() const; // a test moves the servo shown

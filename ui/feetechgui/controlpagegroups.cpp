@@ -48,12 +48,13 @@ QGroupBox *ControlPage::buildTorqueGroup()
         m_torqueGroup);
     m_torqueButtons = new QButtonGroup(this);
     m_torqueButtons->setExclusive(true);
-    for (const auto &[button, value] :
-         {std::pair(m_torqueOff, kTorqueOff), std::pair(m_torqueOn, kTorqueOn),
-          std::pair(m_torqueDamping, kTorqueDamping)}) {
+    // Each button stands for a torque mode; the value it writes comes from the servo's table.
+    for (const auto &[button, mode] : {std::pair(m_torqueOff, feetech::TorqueMode::Off),
+                                       std::pair(m_torqueOn, feetech::TorqueMode::On),
+                                       std::pair(m_torqueDamping, feetech::TorqueMode::Damping)}) {
         button->setCheckable(true);
         button->setMinimumWidth(88);
-        m_torqueButtons->addButton(button, value);
+        m_torqueButtons->addButton(button, int(mode));
         row->addWidget(button);
     }
     row->addStretch(1);

@@ -39,9 +39,12 @@ bool ControlPage::write(WriteKind kind, const QVector<model::WriteItem> &values)
     return true;
 }
 
-void ControlPage::setTorque(int value)
+void ControlPage::setTorque(int modeId)
 {
-    if (!ready()) {
+    const auto value = ready()
+        ? m_client->servo(m_index).info.table().torqueValue(feetech::TorqueMode(modeId))
+        : std::nullopt;
+    if (!value) {
         syncFromDevice();
         return;
     }
@@ -50,7 +53,7 @@ void ControlPage::setTorque(int value)
         // Switching torque under a running test would leave it measuring nonsense.
         m_testPanel->stop();
     }
-    if (!write(WriteKind::Torque, {{kTorqueEnable, value}}))
+    if (!write(WriteKind::Torque, {{kTorqueEnable, *value}}))
         syncFromDevice(); // the buttons go back to what the servo has
 }
 
@@ -110,8 +113,9 @@ bool ControlPage::moveTo(qint32 position, QString *error)
     const bool torqueWritePending =
         std::any_of(m_writes.begin(), m_writes.end(),
                     [](const PendingWrite &w) { return w.kind == WriteKind::Torque; });
-    if (!torqueWritePending
-        && m_client->parameters(m_index)->deviceValue(kTorqueEnable) == kTorqueOff)
+    const auto torque = m_client->parameters(m_index)->deviceValue(kTorqueEnable);
+    if (!torqueWritePending && torque
+        && m_client->servo(m_index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off)
         setStatus(tr("Torque is off: %1 keeps the goal but does not move until torque is on.")
                       .arg(servoName()),
                   Severity::Warning);

@@ -414,13 +414,12 @@ void JointTable::onOperationFinished(const feetech::OperationResult &result)
     const int row = rowOf(result.servo.id, result.servo.baud);
     if (row < 0 || !m_rows.at(row).torqueRequested)
         return;
-    const int requested = *m_rows.at(row).torqueRequested;
+    const bool requestedOn = *m_rows.at(row).torqueRequested == feetech::TorqueMode::On;
     m_rows[row].torqueRequested.reset();
     if (!result.ok)
-        setMessage(
-            tr("%1: torque was not switched %2: %3")
-                .arg(servoName(row), requested == kTorqueOn ? tr("on") : tr("off"), result.message),
-            Tone::Error);
+        setMessage(tr("%1: torque was not switched %2: %3")
+                       .arg(servoName(row), requestedOn ? tr("on") : tr("off"), result.message),
+                   Tone::Error);
     refreshRow(row);
 }
 

@@ -4,6 +4,7 @@
 
 #include "feetech/goalrange.h"
 #include "feetech/pose.h"
+#include "feetech/tablefacts.h"
 
 #include <QVector>
 #include <QWidget>
@@ -90,16 +91,13 @@ public:
 
 private:
     // Torque enable values, all in one place.
-    static constexpr int kTorqueOff = 0;
-    static constexpr int kTorqueOn = 1;
-    static constexpr int kTorqueDamping = 2;
 
     struct Row
     {
         quint8 id = 0;
         qint32 baud = 0;
         std::optional<qint32> target;
-        std::optional<int> torqueRequested; // written, not yet confirmed by a read-back
+        std::optional<feetech::TorqueMode> torqueRequested; // written, not yet read back
         // Which of the two sources of a position is newer when the monitor does not watch
         // the servo: its last telemetry sample or the model's last read.
         qint64 modelReadMs = 0;

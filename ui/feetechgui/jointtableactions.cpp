@@ -21,15 +21,16 @@ bool JointTable::setTorque(int row, bool on, QString *error)
             *error = tr("That servo is no longer on the bus.");
         return false;
     }
-    const int value = on ? kTorqueOn : kTorqueOff;
-    QString why;
-    if (!m_client->writeValues(index, {{kTorqueEnable, value}}, &why)) {
+    const feetech::TorqueMode mode = on ? feetech::TorqueMode::On : feetech::TorqueMode::Off;
+    const auto value = m_client->servo(index).info.table().torqueValue(mode);
+    QString why = tr("its model has no torque enable");
+    if (!value || !m_client->writeValues(index, {{kTorqueEnable, *value}}, &why)) {
         if (error)
             *error = tr("%1: torque not switched %2: %3")
                          .arg(servoName(row), on ? tr("on") : tr("off"), why);
         return false;
     }
-    m_rows[row].torqueRequested = value;
+    m_rows[row].torqueRequested = mode;
     refreshRow(row);
     return true;
 }
@@ -79,7 +80,9 @@ bool JointTable::moveAll(QString *error)
                                    reg ? feetech::displayValue(*reg, qint32(*mode))
                                        : QString::number(*mode)));
         }
-        if (deviceValue(row, kTorqueEnable) == std::optional<qint64>(kTorqueOff))
+        const auto torque = deviceValue(row, kTorqueEnable);
+        if (torque
+            && m_client->servo(index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off)
             torqueOff.append(servoName(row));
         goals.append({index, *target});
         bauds.insert(m_rows.at(row).baud);

@@ -39,7 +39,8 @@ void JointTable::refreshRow(int row)
     QTableWidgetItem *torque = m_table->item(row, TorqueColumn);
     Row &state = m_rows[row];
     const auto device = deviceValue(row, kTorqueEnable);
-    if (state.torqueRequested && device && *device == *state.torqueRequested)
+    const auto mode = device ? info.table().torqueMode(*device) : std::nullopt;
+    if (state.torqueRequested && mode == state.torqueRequested)
         state.torqueRequested.reset();
     const bool switchable = info.hasTable() && info.table().find(kTorqueEnable);
     torque->setFlags(switchable ? Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable
@@ -48,18 +49,18 @@ void JointTable::refreshRow(int row)
     Qt::CheckState check = Qt::Unchecked;
     QColor torqueColour;
     if (state.torqueRequested) {
-        torqueText =
-            *state.torqueRequested == kTorqueOn ? tr("Switching on…") : tr("Switching off…");
-        check = *state.torqueRequested == kTorqueOn ? Qt::Checked : Qt::Unchecked;
+        const bool on = *state.torqueRequested == feetech::TorqueMode::On;
+        torqueText = on ? tr("Switching on…") : tr("Switching off…");
+        check = on ? Qt::Checked : Qt::Unchecked;
     } else if (!device) {
         torqueText = tr("Unknown");
-    } else if (*device == kTorqueOff) {
+    } else if (mode == feetech::TorqueMode::Off) {
         torqueText = tr("Off");
-    } else if (*device == kTorqueOn) {
+    } else if (mode == feetech::TorqueMode::On) {
         torqueText = tr("On");
         check = Qt::Checked;
         torqueColour = palette::toneColor(palette::Tone::Good, dark);
-    } else if (*device == kTorqueDamping) {
+    } else if (mode == feetech::TorqueMode::Damping) {
         torqueText = tr("Damping");
         check = Qt::PartiallyChecked;
         torqueColour = palette::toneColor(palette::Tone::Warning, dark);
