@@ -124,6 +124,25 @@ private slots:
         QVERIFY(buffer.isOpen());
     }
 
+    void writingIntoACallersTextStreamGivesTheSameRows()
+    {
+        QString text;
+        QTextStream stream(&text);
+        TelemetryRecorder recorder;
+        QString error;
+        QVERIFY2(recorder.start(stream, &error), qPrintable(error));
+        QCOMPARE(text, feetech::telemetryCsvHeader() + QLatin1Char('\n'));
+        const FeedbackSample sample = sampleAt(3, recorder.startUs() + 500000, 12.5);
+        QVERIFY(recorder.write(sample));
+        QVERIFY(recorder.finish());
+        QCOMPARE(text.split(QLatin1Char('\n')).at(1),
+                 feetech::telemetryCsvRow(sample, recorder.startUs()));
+        // The stream is the caller's: it goes on after the recording.
+        stream << "after";
+        stream.flush();
+        QVERIFY(text.endsWith(QStringLiteral("after")));
+    }
+
     void aDeviceNotOpenForWritingIsRefused()
     {
         QBuffer buffer;

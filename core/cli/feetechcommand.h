@@ -84,7 +84,7 @@ private:
     // Live feedback (feetechmonitorcommand.cpp).
     int monitor(const QString &what, const QStringList &operands);
     double monitorRate() const;
-    void printSample(const feetech::FeedbackSample &sample, qint64 startUs, bool csv,
+    void printSample(const feetech::FeedbackSample &sample, qint64 startUs,
                      const QVector<ServoInfo> &servos);
 
     const Arguments &m_args;

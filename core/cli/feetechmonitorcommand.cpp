@@ -1,5 +1,6 @@
 // servoctl feetech monitor: streams servos' feedback as text, JSON lines or CSV.
 #include "cli/feetechcommand.h"
+#include "feetech/telemetryrecorder.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -67,12 +68,21 @@ int FeetechCommand::monitor(const QString &what, const QStringList &operands)
     QEventLoop loop;
     const qint64 startUs = feetech::steadyMicroseconds();
     qint64 printed = 0;
-    if (csv)
-        m_output.out << feetech::telemetryCsvHeader() << '\n';
+    // CSV goes through the recorder the Monitor page records with: the same rows either way.
+    feetech::TelemetryRecorder recorder;
+    recorder.setFlushInterval(0);
+    if (csv && !recorder.start(m_output.out))
+        return fail(recorder.errorString());
+    recorder.setStartUs(startUs);
     QObject::connect(&session, &feetech::Session::telemetry, &loop,
                      [&](const QVector<feetech::FeedbackSample> &samples) {
-                         for (const feetech::FeedbackSample &sample : samples)
-                             printSample(sample, startUs, csv, options.servos);
+                         if (csv) {
+                             recorder.write(samples);
+                             recorder.flush();
+                         } else {
+                             for (const feetech::FeedbackSample &sample : samples)
+                                 printSample(sample, startUs, options.servos);
+                         }
                          printed += samples.size();
                          m_output.out.flush();
                      });
@@ -134,13 +144,9 @@ double FeetechCommand::monitorRate() const
     return rate;
 }
 
-void FeetechCommand::printSample(const feetech::FeedbackSample &sample, qint64 startUs, bool csv,
+void FeetechCommand::printSample(const feetech::FeedbackSample &sample, qint64 startUs,
                                  const QVector<ServoInfo> &servos)
 {
-    if (csv) {
-        m_output.out << feetech::telemetryCsvRow(sample, startUs) << '\n';
-        return;
-    }
     const double seconds = double(sample.steadyUs - startUs) / 1e6;
     const auto servo = std::find_if(servos.begin(), servos.end(),
                                     [&sample](const auto &s) { return s.id == sample.id; });

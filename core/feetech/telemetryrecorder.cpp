@@ -47,7 +47,9 @@ bool TelemetryRecorder::open(const QString &path, QString *error)
                           .arg(QDir::toNativeSeparators(path), file->errorString()));
     }
     m_file = std::move(file);
-    return begin(m_file.get(), error);
+    m_device = m_file.get();
+    m_ownStream = std::make_unique<QTextStream>(m_device);
+    return begin(m_ownStream.get(), error);
 }
 
 bool TelemetryRecorder::start(QIODevice *device, QString *error)
@@ -60,13 +62,21 @@ bool TelemetryRecorder::start(QIODevice *device, QString *error)
             *error = m_error;
         return false;
     }
-    return begin(device, error);
+    m_device = device;
+    m_ownStream = std::make_unique<QTextStream>(m_device);
+    return begin(m_ownStream.get(), error);
 }
 
-bool TelemetryRecorder::begin(QIODevice *device, QString *error)
+bool TelemetryRecorder::start(QTextStream &stream, QString *error)
 {
-    m_device = device;
-    m_stream = std::make_unique<QTextStream>(device);
+    finish();
+    m_path.clear();
+    return begin(&stream, error);
+}
+
+bool TelemetryRecorder::begin(QTextStream *stream, QString *error)
+{
+    m_stream = stream;
     m_rows = 0;
     m_startUs = steadyMicroseconds();
     m_error.clear();
@@ -126,7 +136,7 @@ bool TelemetryRecorder::flush()
     m_stream->flush();
     const auto *file = qobject_cast<const QFileDevice *>(m_device);
     if (m_stream->status() != QTextStream::Ok || (file && file->error() != QFileDevice::NoError)) {
-        fail(m_device->errorString());
+        fail(m_device ? m_device->errorString() : tr("The telemetry output cannot be written."));
         return false;
     }
     return true;
@@ -142,7 +152,8 @@ void TelemetryRecorder::fail(const QString &reason)
 void TelemetryRecorder::close()
 {
     m_flushTimer->stop();
-    m_stream.reset();
+    m_stream = nullptr;
+    m_ownStream.reset();
     if (m_file)
         m_file->close();
     m_file.reset();

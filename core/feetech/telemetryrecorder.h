@@ -36,6 +36,9 @@ public:
     // Writes the header to `device`, which the caller keeps open and owns (stdout for the
     // command line). False and *error when it is not open for writing.
     bool start(QIODevice *device, QString *error = nullptr);
+    // Writes into a text stream the caller owns (servoctl's standard output, which may be a
+    // string in tests); rows reach it at each flush.
+    bool start(QTextStream &stream, QString *error = nullptr);
     // Flushes and, for a file it opened, closes it. False when the last rows could not be
     // written (failed() has been emitted then).
     bool finish();
@@ -65,14 +68,15 @@ signals:
     void failed(const QString &reason);
 
 private:
-    bool begin(QIODevice *device, QString *error);
+    bool begin(QTextStream *stream, QString *error);
     void fail(const QString &reason);
     void close();
 
     std::unique_ptr<QFile> m_file; // only when open() opened it
     QString m_path;
     QIODevice *m_device = nullptr;
-    std::unique_ptr<QTextStream> m_stream;
+    std::unique_ptr<QTextStream> m_ownStream; // over m_device
+    QTextStream *m_stream = nullptr; // m_ownStream, or the caller's
     QTimer *m_flushTimer = nullptr;
     int m_flushIntervalMs = kDefaultFlushIntervalMs;
     qint64 m_rows = 0;
