@@ -6,6 +6,7 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QPointer>
 
 #include <algorithm>
 
@@ -176,9 +177,10 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
         transaction.expectedReplySize = kMinimumPacketSize + size;
     }
     const quint64 generation = m_link.generation();
-    transaction.done = [this, generation, accepted,
+    // The engine may end the transaction after this object is gone (a link destroyed last).
+    transaction.done = [this, alive = QPointer<BusExchange>(this), generation, accepted,
                         done = std::move(done)](const seriallink::TransactionResult &result) {
-        if (generation != m_link.generation())
+        if (!alive || generation != m_link.generation())
             return;
         std::optional<Packet> packet;
         if (result.ok() && !result.reply.isEmpty())

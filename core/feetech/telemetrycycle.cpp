@@ -5,6 +5,7 @@
 #include "link/transport.h"
 
 #include <QCoreApplication>
+#include <QPointer>
 
 #include <algorithm>
 #include <limits>
@@ -265,10 +266,12 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
         };
         const quint64 link = m_bus.link().generation();
         const quint64 stream = m_generation;
-        transaction.done = [this, link, stream, baud, servoIndexes, ids, answered, answers,
+        transaction.done = [this, alive = QPointer<TelemetryCycle>(this), link, stream, baud,
+                            servoIndexes, ids, answered, answers,
                             next](const seriallink::TransactionResult &result) {
-            // Indexes and the cycle belong to the stream that asked: not after a restart.
-            if (link != m_bus.link().generation() || stream != m_generation || !m_state)
+            // Indexes and the cycle belong to the stream that asked: not after a restart, nor
+            // once the cycle itself is gone (its link may outlive it).
+            if (!alive || link != m_bus.link().generation() || stream != m_generation || !m_state)
                 return;
             const qint64 now = steadyMicroseconds();
             if (!answers->isEmpty())
@@ -326,9 +329,9 @@ TelemetryCycle::CycleStep TelemetryCycle::read(int servoIndex, bool probe)
         };
         const quint64 link = m_bus.link().generation();
         const quint64 stream = m_generation;
-        transaction.done = [this, link, stream, servoIndex, accepted,
-                            next](const seriallink::TransactionResult &result) {
-            if (link != m_bus.link().generation() || stream != m_generation || !m_state)
+        transaction.done = [this, alive = QPointer<TelemetryCycle>(this), link, stream, servoIndex,
+                            accepted, next](const seriallink::TransactionResult &result) {
+            if (!alive || link != m_bus.link().generation() || stream != m_generation || !m_state)
                 return;
             const std::optional<Packet> packet = result.ok() ? *accepted : std::nullopt;
             if (packet) {
