@@ -42,7 +42,8 @@ private slots:
         QVERIFY(parameters->edit(QStringLiteral("id"), 7));
         QVERIFY(parameters->edit(QStringLiteral("baud_rate"), 4)); // code 4: 115200
         QString error;
-        const auto plan = planApply(servo, *parameters, {3, 5}, &error);
+        const auto plan =
+            planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Everything, &error);
         QVERIFY2(plan.has_value(), qPrintable(error));
         QCOMPARE(plan->writtenKeys, QStringList {QStringLiteral("max_temperature")});
         QCOMPARE(plan->writes.size(), 1);
@@ -63,8 +64,30 @@ private slots:
         QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 65));
         QVERIFY(parameters->edit(QStringLiteral("id"), 5));
         QString error;
-        QVERIFY(!planApply(servo, *parameters, {3, 5}, &error).has_value());
+        QVERIFY(!planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Everything, &error)
+                     .has_value());
         QVERIFY2(error.contains(QStringLiteral("ID 5 is already in use")), qPrintable(error));
+    }
+
+    void aRegistersOnlyPlanLeavesThePendingIdAndBaudRateAlone()
+    {
+        const ServoInfo servo = sts3215(3);
+        auto parameters = parametersOf(servo);
+        QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 65));
+        QVERIFY(parameters->edit(QStringLiteral("id"), 5)); // in use: not this plan's business
+        QVERIFY(parameters->edit(QStringLiteral("baud_rate"), 4));
+        QString error;
+        const auto plan =
+            planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Registers, &error);
+        QVERIFY2(plan.has_value(), qPrintable(error));
+        QCOMPARE(plan->writtenKeys, QStringList {QStringLiteral("max_temperature")});
+        QVERIFY(!plan->newId);
+        QVERIFY(!plan->newBaud);
+        // With only the ID and baud pending there is nothing for it to write.
+        QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 70));
+        parameters->revert(QStringLiteral("max_temperature"));
+        QVERIFY(!planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Registers, &error));
+        QCOMPARE(error, QStringLiteral("Nothing to write."));
     }
 
     void nothingPendingIsNothingToWrite()
@@ -72,7 +95,8 @@ private slots:
         const ServoInfo servo = sts3215(1);
         auto parameters = parametersOf(servo);
         QString error;
-        QVERIFY(!planApply(servo, *parameters, {1}, &error).has_value());
+        QVERIFY(!planApply(servo, *parameters, {1}, feetech::ApplyScope::Everything, &error)
+                     .has_value());
         QCOMPARE(error, QStringLiteral("Nothing to write."));
     }
 };

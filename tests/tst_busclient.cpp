@@ -132,6 +132,50 @@ private slots:
         QCOMPARE(busy.last().at(0).toBool(), false);
     }
 
+    void allTorqueOffRunsBetweenTheStepsOfAnApplyChain()
+    {
+        QVERIFY(parameters(0).edit(kMaxTemperature, 66));
+        QVERIFY(parameters(0).edit(QStringLiteral("id"), 9));
+        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        QString error;
+        QVERIFY2(m_client->applyAll(0, &error), qPrintable(error));
+        // Asked while the register write runs: it must not wait for the ID change after it.
+        m_client->allTorqueOff();
+        QVector<OperationResult> results; // the reads after a flow aside
+        for (int waited = 0; waited < 6 && results.size() < 3; ++waited) {
+            const OperationResult result = nextResult(finished);
+            if (result.operation != feetech::Operation::Read)
+                results.append(result);
+        }
+        QCOMPARE(results.size(), 3);
+        QCOMPARE(results.at(0).operation, feetech::Operation::Write);
+        QVERIFY(results.at(0).ok);
+        QVERIFY(!results.at(0).final);
+        QCOMPARE(results.at(1).operation, feetech::Operation::TorqueOff);
+        QCOMPARE(results.at(2).operation, feetech::Operation::ChangeId);
+        QVERIFY2(results.at(2).ok, qPrintable(results.at(2).message));
+        QVERIFY(results.at(2).final);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->indexOf(9, k1M) >= 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
+    }
+
+    void monitorNotesReachTheLinksPacketLog()
+    {
+        QSignalSpy logged(m_client->link(), &seriallink::LinkMirror::packetLogged);
+        QString error;
+        QVERIFY2(m_client->startMonitor({0, 1}, 50, &error), qPrintable(error));
+        // Servo 2 goes silent: the note that says so is in the log every view shows.
+        setSimulatorValue(2, u"id", 20);
+        const auto noted = [&logged] {
+            return std::any_of(logged.begin(), logged.end(), [](const QVariantList &arguments) {
+                return arguments.first().value<seriallink::PacketLogEntry>().error.contains(
+                    QLatin1String("stopped answering"));
+            });
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(noted(), 10000);
+        m_client->stopMonitor();
+    }
+
     void aWriteThatGoesUnansweredIsMarkedFailedAndKeepsTheEdit()
     {
         setSimulatorValue(2, u"id", 30); // servo 2 is no longer there

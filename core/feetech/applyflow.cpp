@@ -24,20 +24,24 @@ const QString kBaudKey = QStringLiteral("baud_rate");
 } // namespace
 
 std::optional<ApplyPlan> planApply(const ServoInfo &servo, const model::ParameterModel &parameters,
-                                   const QVector<int> &idsInUse, QString *error)
+                                   const QVector<int> &idsInUse, ApplyScope scope, QString *error)
 {
+    const bool everything = scope == ApplyScope::Everything;
     ApplyPlan plan;
     QVector<model::WriteItem> items;
     for (const model::Definition &definition : parameters.definitions()) {
         const auto pending = parameters.pendingValue(definition.key);
         if (!pending)
             continue;
-        if (definition.key == kIdKey)
-            plan.newId = int(*pending);
-        else if (definition.key == kBaudKey)
-            plan.newBaud = baudForCode(int(*pending));
-        else
+        if (definition.key == kIdKey) {
+            if (everything)
+                plan.newId = int(*pending);
+        } else if (definition.key == kBaudKey) {
+            if (everything)
+                plan.newBaud = baudForCode(int(*pending));
+        } else {
             items.append({definition.key, *pending});
+        }
     }
     if (items.isEmpty() && !plan.newId && !plan.newBaud) {
         if (error)
@@ -145,45 +149,53 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
 }
 
 void ApplyFlow::apply(const ServoInfo &servo, const ApplyPlan &plan, GuidedFlows::Finish stepDone,
-                      GuidedFlows::Finish finish)
+                      GuidedFlows::Finish finish, Yield yield)
 {
-    auto steps = std::make_shared<std::vector<PlanStep>>();
+    auto chain = std::make_shared<Chain>();
+    chain->stepDone = std::move(stepDone);
+    chain->finish = std::move(finish);
+    chain->yield = std::move(yield);
     if (!plan.writes.isEmpty())
-        steps->push_back([this, writes = plan.writes](const ServoInfo &at, GuidedFlows::Finish f) {
-            write(at, writes, std::move(f));
-        });
+        chain->steps.push_back(
+            {Operation::Write,
+             [this, writes = plan.writes](const ServoInfo &at, GuidedFlows::Finish f) {
+                 write(at, writes, std::move(f));
+             }});
     if (plan.newId)
-        steps->push_back([this, id = *plan.newId, inUse = plan.idsInUse](const ServoInfo &at,
-                                                                         GuidedFlows::Finish f) {
-            m_flows.changeId(at, id, inUse, std::move(f));
-        });
+        chain->steps.push_back({Operation::ChangeId,
+                                [this, id = *plan.newId, inUse = plan.idsInUse](
+                                    const ServoInfo &at, GuidedFlows::Finish f) {
+                                    m_flows.changeId(at, id, inUse, std::move(f));
+                                }});
     if (plan.newBaud)
-        steps->push_back([this, baud = *plan.newBaud](const ServoInfo &at, GuidedFlows::Finish f) {
-            m_flows.changeBaud(at, baud, std::move(f));
-        });
-    if (steps->empty()) {
-        finish({Operation::Write, false, Tr::tr("Nothing to write."), servo, {}});
+        chain->steps.push_back(
+            {Operation::ChangeBaud,
+             [this, baud = *plan.newBaud](const ServoInfo &at, GuidedFlows::Finish f) {
+                 m_flows.changeBaud(at, baud, std::move(f));
+             }});
+    if (chain->steps.empty()) {
+        chain->finish({Operation::Write, false, Tr::tr("Nothing to write."), servo, {}});
         return;
     }
-    runChain(servo, steps, 0, std::move(stepDone), std::move(finish));
+    runChain(servo, chain, 0);
 }
 
-void ApplyFlow::runChain(const ServoInfo &servo, std::shared_ptr<std::vector<PlanStep>> steps,
-                         std::size_t index, GuidedFlows::Finish stepDone,
-                         GuidedFlows::Finish finish)
+void ApplyFlow::runChain(const ServoInfo &servo, std::shared_ptr<Chain> chain, std::size_t index)
 {
-    steps->at(index)(servo, [this, steps, index, stepDone, finish](const OperationResult &result) {
+    chain->steps.at(index).run(servo, [this, chain, index](const OperationResult &result) {
         // A later step must not act on a servo that is not where we think it is.
-        if (!result.ok || index + 1 == steps->size()) {
+        if (!result.ok || index + 1 == chain->steps.size()) {
             OperationResult last = result;
             last.final = true;
-            finish(last);
+            chain->finish(last);
             return;
         }
         OperationResult step = result;
         step.final = false;
-        stepDone(step);
-        runChain(result.servo, steps, index + 1, stepDone, finish);
+        chain->stepDone(step);
+        const ServoInfo movedTo = result.servo;
+        chain->yield(chain->steps.at(index + 1).operation,
+                     [this, chain, index, movedTo] { runChain(movedTo, chain, index + 1); });
     });
 }
 

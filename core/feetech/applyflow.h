@@ -29,10 +29,14 @@ struct ApplyPlan
     bool isEmpty() const { return writes.isEmpty() && !newId && !newBaud; }
 };
 
+// What an Apply covers: the registers only (an ID or baud edit waits for its own flow), or
+// everything pending.
+enum class ApplyScope { Registers, Everything };
+
 // The plan for the edits pending in `parameters` of `servo`; nothing and *error when a value
 // cannot be written or there is nothing to write. The model is left as it is.
 std::optional<ApplyPlan> planApply(const ServoInfo &servo, const model::ParameterModel &parameters,
-                                   const QVector<int> &idsInUse, QString *error);
+                                   const QVector<int> &idsInUse, ApplyScope scope, QString *error);
 
 // Lives in the session's thread; the session runs one write or apply at a time, as an operation.
 class ApplyFlow : public QObject
@@ -47,19 +51,33 @@ public:
     // calibrate value are refused: they have their flows.
     void write(const ServoInfo &servo, const QVector<RegisterWrite> &writes,
                GuidedFlows::Finish finish);
+    // Hands the next step of a chain back to whoever runs the bus: it calls `resume` when the
+    // bus is free again (an emergency stop asked for meanwhile goes first).
+    using Yield = std::function<void(Operation next, std::function<void()> resume)>;
     // Runs the plan's steps in order, each only once the one before succeeded, following the
-    // servo to wherever the step before left it. Every step's result goes to `stepDone`; the
-    // last one (or the first failure) to `finish` instead, with `final` set.
+    // servo to wherever the step before left it. Every step's result but the last goes to
+    // `stepDone` (with `final` unset) and the chain yields the bus; the last result, or the
+    // first failure, goes to `finish`.
     void apply(const ServoInfo &servo, const ApplyPlan &plan, GuidedFlows::Finish stepDone,
-               GuidedFlows::Finish finish);
+               GuidedFlows::Finish finish, Yield yield);
 
 signals:
     void progress(int done, int total);
 
 private:
-    using PlanStep = std::function<void(const ServoInfo &servo, GuidedFlows::Finish finish)>;
-    void runChain(const ServoInfo &servo, std::shared_ptr<std::vector<PlanStep>> steps,
-                  std::size_t index, GuidedFlows::Finish stepDone, GuidedFlows::Finish finish);
+    struct PlanStep
+    {
+        Operation operation = Operation::Write;
+        std::function<void(const ServoInfo &servo, GuidedFlows::Finish finish)> run;
+    };
+    struct Chain
+    {
+        std::vector<PlanStep> steps;
+        GuidedFlows::Finish stepDone;
+        GuidedFlows::Finish finish;
+        Yield yield;
+    };
+    void runChain(const ServoInfo &servo, std::shared_ptr<Chain> chain, std::size_t index);
     // Why `writes` may not go out to `servo` (empty when they may).
     QString refusal(const ServoInfo &servo, const QVector<RegisterWrite> &writes) const;
 

@@ -279,17 +279,10 @@ bool BusClient::startApply(int index, QString *error, bool withAddress)
     if (refused(writeBlocker(index), error))
         return false;
     model::ParameterModel &parameters = *this->parameters(index);
-    auto plan = planApply(servo(index).info, parameters, idsInUse(), error);
-    if (plan && !withAddress) {
-        // The ID and baud rate have their own flows; they stay pending here.
-        plan->newId.reset();
-        plan->newBaud.reset();
-        if (plan->isEmpty()) {
-            if (error)
-                *error = Tr::tr("Nothing to write.");
-            plan.reset();
-        }
-    }
+    // Without the address, the ID and baud rate edits stay pending for their own flows.
+    const auto plan =
+        planApply(servo(index).info, parameters, idsInUse(),
+                  withAddress ? ApplyScope::Everything : ApplyScope::Registers, error);
     if (!plan)
         return false;
     // Exactly the planned registers are Writing; an ID or baud edit stays an edit until its

@@ -384,14 +384,7 @@ void BusExchange::searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> 
 
 void BusExchange::logNote(const QString &note, bool error)
 {
-    seriallink::PacketLogEntry entry;
-    entry.timestampMs = QDateTime::currentMSecsSinceEpoch();
-    entry.direction = seriallink::Direction::In;
-    if (error)
-        entry.error = note;
-    else
-        entry.summary = note;
-    emit noteLogged(entry);
+    m_link.logNote(note, error);
 }
 
 } // namespace feetech

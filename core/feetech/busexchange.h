@@ -101,7 +101,6 @@ signals:
     // Bytes of one block as the servo holds them, with the status byte of its reply.
     void memoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                     feetech::ReadSource source, quint8 statusByte);
-    void noteLogged(const seriallink::PacketLogEntry &entry);
 
 private:
     seriallink::LinkSession &m_link;

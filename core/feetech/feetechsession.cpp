@@ -49,7 +49,6 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     connect(m_link, &seriallink::LinkSession::statusChanged, this, &Session::statusChanged);
     connect(m_link, &seriallink::LinkSession::packetLogged, this, &Session::packetLogged);
     connect(m_link, &seriallink::LinkSession::countersChanged, this, &Session::countersChanged);
-    connect(m_bus, &BusExchange::noteLogged, this, &Session::packetLogged);
     connect(m_bus, &BusExchange::memoryRead, this, &Session::memoryRead);
     connect(m_scan, &BusScan::progress, this, &Session::scanProgress);
     connect(m_scan, &BusScan::servoFound, this, &Session::servoFound);
@@ -179,6 +178,18 @@ void Session::finishOperation(const OperationResult &result)
     m_running = false;
     emit operationFinished(result);
     // Queued, so a slot reacting to the result sees the session idle before the next starts.
+    QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
+}
+
+void Session::continueLater(Operation next, std::function<void()> resume)
+{
+    // The running operation pauses here: it goes on as the next one, behind an emergency
+    // stop asked for meanwhile (All torque off never waits for a whole apply chain).
+    m_running = false;
+    auto at = m_queue.begin();
+    while (at != m_queue.end() && at->operation == Operation::TorqueOff)
+        ++at;
+    m_queue.insert(at, {next, std::move(resume)});
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
 }
 
@@ -318,7 +329,10 @@ void Session::apply(const ServoInfo &servo, const ApplyPlan &plan)
         // Each step's result is reported as it comes; the last one ends the operation.
         m_apply->apply(
             servo, plan, [this](const OperationResult &step) { emit operationFinished(step); },
-            finisher());
+            finisher(),
+            [this](Operation next, std::function<void()> resume) {
+                continueLater(next, std::move(resume));
+            });
     });
 }
 

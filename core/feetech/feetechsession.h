@@ -102,6 +102,8 @@ private:
     void enqueue(Operation operation, std::function<void()> start);
     void finishOperation(const OperationResult &result);
     GuidedFlows::Finish finisher();
+    // Ends the running operation's turn on the bus; `resume` runs as the next operation.
+    void continueLater(Operation next, std::function<void()> resume);
     void startNextOperation();
     void startQueuedOperation(); // the next operation, whether or not a telemetry cycle is due
     void onScanFinished(bool completed, const QString &message);

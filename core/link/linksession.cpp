@@ -4,6 +4,7 @@
 #include "link/transport.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 
 namespace seriallink {
 
@@ -91,6 +92,18 @@ bool LinkSession::setBaudRate(qint32 baud)
         return false;
     m_status.baud = baud;
     return true;
+}
+
+void LinkSession::logNote(const QString &note, bool error)
+{
+    PacketLogEntry entry;
+    entry.timestampMs = QDateTime::currentMSecsSinceEpoch();
+    entry.direction = Direction::In;
+    if (error)
+        entry.error = note;
+    else
+        entry.summary = note;
+    emit packetLogged(entry);
 }
 
 void LinkSession::endLink(const QString &message, Failure failure)

@@ -62,6 +62,9 @@ public:
     // The port now runs at `baud` (a Feetech session follows servos across rates); false when
     // the port refuses it.
     bool setBaudRate(qint32 baud);
+    // A line of the packet log that is no frame (a servo that stopped answering, say): it goes
+    // wherever the link's frames go, so every view of the log shows it.
+    void logNote(const QString &note, bool error = false);
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
