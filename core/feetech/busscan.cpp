@@ -128,7 +128,10 @@ void BusScan::scanId(int baudIndex, int id)
         return;
     }
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
-    scanPing(id, m_bus.scanAllowance(), 0,
+    // A late answer is caught while the next PING waits; the last ID of a rate has no next
+    // PING, so it gets the patience of a recheck (the engine's own reply timeout).
+    const bool lastOfRate = id == m_scan->options.lastId;
+    scanPing(id, lastOfRate ? std::nullopt : std::make_optional(m_bus.scanAllowance()), 0,
              [this, baudIndex, id, baud](const seriallink::TransactionResult &result,
                                          const std::optional<Packet> &reply) {
                  const auto advance = [this, baudIndex, id, baud] {
