@@ -115,7 +115,9 @@ int main(int argc, char **argv)
 
     // One cycle: the SYNC READ request (plus one ID byte per servo) and every servo's answer.
     const qint64 cycleBytes = kSyncReadRequestSize + kServos
-        + qint64(kServos) * (kStatusOverhead + feetech::RegisterTable::forFamily(feetech::Family::Sts).feedbackBlock().size);
+        + qint64(kServos)
+            * (kStatusOverhead
+               + feetech::RegisterTable::forFamily(feetech::Family::Sts).feedbackBlock().size);
     const double cycleWireMs = bench::wireMs(cycleBytes, k1M);
     const double wireCyclesPerSecond = 1000.0 / cycleWireMs;
 
