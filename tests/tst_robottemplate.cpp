@@ -4,6 +4,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -121,6 +122,32 @@ private slots:
             QCOMPARE(loaded->joints.at(i).fullTurn, robot.joints.at(i).fullTurn);
             QCOMPARE(loaded->joints.at(i).settings, robot.joints.at(i).settings);
         }
+    }
+
+    void savedTemplatesAreListedAfterTheBuiltInOnesAndBadFilesAreReported()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QDir folder(feetech::userRobotTemplateFolder());
+        QVERIFY(folder.removeRecursively() || !folder.exists());
+        QVERIFY(folder.mkpath(QStringLiteral(".")));
+        RobotTemplate robot = feetech::builtInRobotTemplates().first();
+        robot.name = QStringLiteral("Workshop arm");
+        QString error;
+        QVERIFY2(
+            feetech::saveRobotTemplate(robot, folder.filePath(QStringLiteral("a.json")), &error),
+            qPrintable(error));
+        QFile broken(folder.filePath(QStringLiteral("b.json")));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("{ not json");
+        broken.close();
+
+        QStringList problems;
+        const QVector<RobotTemplate> all = feetech::availableRobotTemplates(&problems);
+        QCOMPARE(all.size(), feetech::builtInRobotTemplates().size() + 1);
+        QCOMPARE(all.last().name, robot.name);
+        QCOMPARE(problems.size(), 1);
+        QVERIFY2(problems.first().contains(QStringLiteral("b.json")), qPrintable(problems.first()));
+        folder.removeRecursively();
     }
 
     void aTemplateThatCannotBeSavedSaysWhereAndWhy()

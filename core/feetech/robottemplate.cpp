@@ -8,6 +8,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QStandardPaths>
 
 #include <cmath>
 
@@ -270,6 +271,27 @@ bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, QString 
     if (error)
         *error = util::notSavedError(path, why);
     return false;
+}
+
+QString userRobotTemplateFolder()
+{
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+        .filePath(QStringLiteral("robots"));
+}
+
+QVector<RobotTemplate> availableRobotTemplates(QStringList *problems)
+{
+    QVector<RobotTemplate> templates = builtInRobotTemplates();
+    const QDir folder(userRobotTemplateFolder());
+    for (const QString &name :
+         folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        QString error;
+        if (auto robot = loadRobotTemplate(folder.filePath(name), &error))
+            templates.append(std::move(*robot));
+        else if (problems)
+            problems->append(error);
+    }
+    return templates;
 }
 
 } // namespace feetech

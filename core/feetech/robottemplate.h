@@ -49,4 +49,10 @@ std::optional<RobotTemplate> loadRobotTemplate(const QString &path, QString *err
 // Saves atomically; false and *error (naming the file) when it could not.
 bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, QString *error);
 
+// Where templates a user saves live: <app data>/robots (ServoBench lists its *.json files).
+QString userRobotTemplateFolder();
+// The built-in templates, then every valid template in userRobotTemplateFolder() by file name;
+// a file there that cannot be read adds its error to *problems and is skipped.
+QVector<RobotTemplate> availableRobotTemplates(QStringList *problems = nullptr);
+
 } // namespace feetech
