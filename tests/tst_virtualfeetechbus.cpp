@@ -136,6 +136,47 @@ private slots:
         QVERIFY(!feetech::decodePacket(replies[0].bytes));
     }
 
+    void twoServosAtOneIdPingCleanlyButTheirPositionReadIsGarbled()
+    {
+        const Specs twins {{1, QStringLiteral("STS3215"), 0}, {1, QStringLiteral("STS3215"), 0}};
+        QString error;
+        QVERIFY(!VirtualFeetechBus::validate(twins, &error));
+        QVERIFY(error.contains(QStringLiteral("ID 1")));
+        auto bus = VirtualFeetechBus::create(twins, &error, VirtualFeetechBus::SharedIds::Allow);
+        QVERIFY2(bus, qPrintable(error));
+
+        QCOMPARE(bus->handleFrame(feetech::ping(1), k1M, 0).first().bytes, feetech::status(1, 0));
+        const auto identity = bus->handleFrame(feetech::read(1, 3, 2), k1M, 0);
+        QVERIFY(feetech::decodePacket(identity.first().bytes)); // same model: same bytes
+        QVERIFY(bus->servo(0).physicalPosition() != bus->servo(1).physicalPosition());
+        const auto position = bus->handleFrame(feetech::read(1, 56, 2), k1M, kMs);
+        QCOMPARE(position.size(), 1);
+        QVERIFY(!feetech::decodePacket(position.first().bytes));
+    }
+
+    void servosPluggedInAndOutWhileRunningAnswerOnlyWhilePresent()
+    {
+        VirtualFeetechBus bus(Specs {{1, QStringLiteral("STS3215"), 0}});
+        QString error;
+        QVERIFY(!bus.plug({7, QStringLiteral("NoSuchServo"), 0}, &error));
+        QVERIFY(error.contains(QStringLiteral("NoSuchServo")));
+        QVERIFY2(bus.plug({7, QStringLiteral("STS3215"), 0}, &error), qPrintable(error));
+        QCOMPARE(bus.servoCount(), 2);
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(7), k1M, 0)), QVector<quint8> {7});
+        QVERIFY(bus.plug({1, QStringLiteral("STS3215"), 0}, &error)); // a second ID 1
+        QVERIFY(!feetech::decodePacket(
+            bus.handleFrame(feetech::read(1, 56, 2), k1M, kMs).first().bytes));
+
+        QVERIFY(!bus.unplug(3));
+        QVERIFY(bus.unplug(0));
+        QCOMPARE(bus.servoCount(), 2);
+        QCOMPARE(bus.servo(0).id(), 7);
+        QVERIFY(feetech::decodePacket(
+            bus.handleFrame(feetech::read(1, 56, 2), k1M, 2 * kMs).first().bytes));
+        QVERIFY(bus.unplug(0));
+        QVERIFY(bus.handleFrame(feetech::ping(7), k1M, 3 * kMs).isEmpty());
+    }
+
     void collisionPadsToTheLongestFrame()
     {
         const QByteArray wire = VirtualFeetechBus::collide(

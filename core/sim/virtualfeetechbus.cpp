@@ -77,7 +77,8 @@ std::optional<feetech::ModelInfo> VirtualFeetechBus::resolveModel(QStringView na
     return std::nullopt;
 }
 
-bool VirtualFeetechBus::validate(const QVector<ServoSpec> &specs, QString *error)
+bool VirtualFeetechBus::validate(const QVector<ServoSpec> &specs, QString *error,
+                                 SharedIds sharedIds)
 {
     const auto fail = [error](const QString &message) {
         if (error)
@@ -108,7 +109,7 @@ bool VirtualFeetechBus::validate(const QVector<ServoSpec> &specs, QString *error
                             .arg(spec.id)
                             .arg(baud)
                             .arg(baudList()));
-        if (taken.contains({spec.id, baud}))
+        if (sharedIds == SharedIds::Refuse && taken.contains({spec.id, baud}))
             return fail(Tr::tr("two servos have ID %1 at %2 bps").arg(spec.id).arg(baud));
         taken.insert({spec.id, baud});
     }
@@ -116,9 +117,9 @@ bool VirtualFeetechBus::validate(const QVector<ServoSpec> &specs, QString *error
 }
 
 std::unique_ptr<VirtualFeetechBus> VirtualFeetechBus::create(const QVector<ServoSpec> &specs,
-                                                             QString *error)
+                                                             QString *error, SharedIds sharedIds)
 {
-    if (!validate(specs, error))
+    if (!validate(specs, error, sharedIds))
         return nullptr;
     return std::make_unique<VirtualFeetechBus>(specs);
 }
@@ -135,9 +136,42 @@ VirtualFeetechBus::VirtualFeetechBus(const QVector<ServoSpec> &specs)
         }
         const qint32 baud =
             spec.baud != 0 ? spec.baud : VirtualFeetechServo::defaultBaud(*model->family);
-        m_slots.push_back(Slot {VirtualFeetechServo(*model, spec.id, baud), 0, 0});
-        m_slots.back().savedRevision = m_slots.back().servo.eepromRevision();
+        addSlot(*model, spec.id, baud);
     }
+}
+
+void VirtualFeetechBus::addSlot(const feetech::ModelInfo &model, quint8 id, qint32 baud)
+{
+    // Apart enough that the position bytes differ, and within an SCS servo's 0-1023 for three.
+    constexpr int kTwinSpreadSteps = 211;
+    int twins = 0;
+    for (const Slot &slot : m_slots)
+        twins += slot.servo.id() == id && slot.servo.baudRate() == baud ? 1 : 0;
+    m_slots.push_back(Slot {VirtualFeetechServo(model, id, baud), 0, 0});
+    VirtualFeetechServo &servo = m_slots.back().servo;
+    if (twins > 0)
+        servo.setPhysicalPosition(servo.physicalPosition() + twins * kTwinSpreadSteps);
+    m_slots.back().savedRevision = servo.eepromRevision();
+}
+
+bool VirtualFeetechBus::plug(const ServoSpec &spec, QString *error)
+{
+    if (!validate({spec}, error))
+        return false;
+    const auto model = resolveModel(spec.model);
+    addSlot(*model, spec.id,
+            spec.baud != 0 ? spec.baud : VirtualFeetechServo::defaultBaud(*model->family));
+    saveIfChanged(true);
+    return true;
+}
+
+bool VirtualFeetechBus::unplug(int index)
+{
+    if (index < 0 || index >= servoCount())
+        return false;
+    m_slots.erase(m_slots.begin() + index);
+    saveIfChanged(true);
+    return true;
 }
 
 // ---- the wire -------------------------------------------------------------------------------
@@ -380,13 +414,14 @@ void VirtualFeetechBus::setStatePath(const QString &path)
         slot.savedRevision = slot.servo.eepromRevision();
 }
 
-void VirtualFeetechBus::saveIfChanged()
+void VirtualFeetechBus::saveIfChanged(bool slotsChanged)
 {
     if (m_statePath.isEmpty())
         return;
-    const bool changed = std::any_of(m_slots.cbegin(), m_slots.cend(), [](const Slot &slot) {
-        return slot.savedRevision != slot.servo.eepromRevision();
-    });
+    const bool changed =
+        slotsChanged || std::any_of(m_slots.cbegin(), m_slots.cend(), [](const Slot &slot) {
+            return slot.savedRevision != slot.servo.eepromRevision();
+        });
     if (!changed)
         return;
     QString error;

@@ -33,10 +33,17 @@ public:
     // or name ("hls", "HLS": the family's first listed model, or its generic major/0). Only
     // models with a register table.
     static std::optional<feetech::ModelInfo> resolveModel(QStringView name);
-    // Unknown model, ID over 253, baud not a code of spec §6, two servos with one ID at one baud.
-    static bool validate(const QVector<ServoSpec> &specs, QString *error);
+    // Two servos at one ID and one rate answer together, their replies colliding on the wire: a
+    // mistake to refuse in a bus description, a case to allow when a test plays it on purpose.
+    enum class SharedIds { Refuse, Allow };
+
+    // Unknown model, ID over 253, baud not a code of spec §6, and (unless allowed) two servos
+    // with one ID at one baud.
+    static bool validate(const QVector<ServoSpec> &specs, QString *error,
+                         SharedIds sharedIds = SharedIds::Refuse);
     static std::unique_ptr<VirtualFeetechBus> create(const QVector<ServoSpec> &specs,
-                                                     QString *error);
+                                                     QString *error,
+                                                     SharedIds sharedIds = SharedIds::Refuse);
 
     // Specs must have passed validate(); invalid entries are skipped.
     explicit VirtualFeetechBus(const QVector<ServoSpec> &specs);
@@ -51,6 +58,12 @@ public:
     const VirtualFeetechServo &servo(int index) const { return m_slots.at(size_t(index)).servo; }
     VirtualFeetechServo *findServo(quint8 id); // first servo with this ID, any baud
     bool isRebooting(int index, qint64 nowUs) const;
+
+    // Plugs a powered-up servo into the running bus (last in order); it may share an ID with
+    // another servo, as a factory-new servo at ID 1 does. False and *error for an invalid spec.
+    bool plug(const ServoSpec &spec, QString *error);
+    // Unplugs the servo at `index`; later servos move up one place. False for a bad index.
+    bool unplug(int index);
 
     // State file: JSON {"format": 1, "servos": [{"model", "eeprom": hex of 256 bytes}...]} in
     // spec order. Loading checks every slot first (count, model, image) and changes nothing on
@@ -74,8 +87,11 @@ private:
         quint64 savedRevision = 0;
     };
 
+    // Adds a servo; one that shares an ID and rate with servos already there starts with its
+    // horn elsewhere, as two real servos would, so their position replies differ on the wire.
+    void addSlot(const feetech::ModelInfo &model, quint8 id, qint32 baud);
     bool listens(const Slot &slot, qint32 hostBaud, qint64 nowUs) const;
-    void saveIfChanged();
+    void saveIfChanged(bool slotsChanged = false);
 
     feetech::FrameFormat m_format;
     std::vector<Slot> m_slots;
