@@ -17,9 +17,6 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(Hand)
 };
 
-constexpr double kMaxSweepSeconds = 3600.0;
-constexpr int kMaxCycles = 1'000'000;
-
 bool fullCircle(const VirtualFeetechServo &servo)
 {
     return servo.family() != feetech::Family::Scs;
@@ -117,8 +114,9 @@ bool Hand::sweepServo(int index, int from, int to, double seconds, int cycles, W
         return fail(
             error,
             Tr::tr("a sweep takes more than 0 and at most %1 seconds").arg(kMaxSweepSeconds));
-    if (cycles < 0 || cycles > kMaxCycles)
-        return fail(error, Tr::tr("a sweep runs 0 (until released) to %1 times").arg(kMaxCycles));
+    if (cycles < 0 || cycles > kMaxSweepCycles)
+        return fail(error,
+                    Tr::tr("a sweep runs 0 (until released) to %1 times").arg(kMaxSweepCycles));
     double end = to;
     const bool crosses = (way == Way::Up && to < from) || (way == Way::Down && to > from);
     if (crosses) {

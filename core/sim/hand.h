@@ -20,6 +20,8 @@ public:
     // How a sweep goes from FROM to TO on a full-circle servo: straight between the two numbers,
     // or always upward / downward, crossing the 4095/0 seam when it has to (3900 up to 200).
     enum class Way { Direct, Up, Down };
+    static constexpr double kMaxSweepSeconds = 3600.0;
+    static constexpr int kMaxSweepCycles = 1'000'000;
 
     explicit Hand(VirtualFeetechBus &bus);
     Hand(const Hand &) = delete;
