@@ -54,6 +54,23 @@ inline sim::SimulatorOptions feetechBusOptions(const QTemporaryDir &dir, const Q
     return options;
 }
 
+// Runs `work` on the simulated Feetech bus in the simulator's thread; what it returns.
+template<typename Work>
+auto onSimulatedBus(sim::SimulatorThread &simulator, Work work)
+{
+    decltype(work(std::declval<sim::VirtualFeetechBus &>())) result {};
+    simulator.call([&](sim::Simulator &running) { result = work(*running.feetechBus()); });
+    return result;
+}
+
+// The present position of the servo at `index` on a simulated bus.
+inline int simulatedPosition(sim::SimulatorThread &simulator, int index)
+{
+    return onSimulatedBus(simulator, [index](sim::VirtualFeetechBus &bus) {
+        return bus.servo(index).value(u"present_position");
+    });
+}
+
 // Connects `client` to `link` at 1 Mbps and scans IDs up to `lastId` there: whether it was
 // connected within 10 s and the scan finished within 20 s. Callers check what it found.
 inline bool connectAndScan(feetech::BusClient &client, const QString &link, int lastId,

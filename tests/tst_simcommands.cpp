@@ -32,17 +32,9 @@ private:
     template<typename Work>
     auto onBus(Work work)
     {
-        decltype(work(std::declval<sim::VirtualFeetechBus &>())) result {};
-        m_simulator->call(
-            [&](sim::Simulator &simulator) { result = work(*simulator.feetechBus()); });
-        return result;
+        return testsupport::onSimulatedBus(*m_simulator, work);
     }
-    int positionOf(int index)
-    {
-        return onBus([index](sim::VirtualFeetechBus &bus) {
-            return bus.servo(index).value(u"present_position");
-        });
-    }
+    int positionOf(int index) { return testsupport::simulatedPosition(*m_simulator, index); }
 
 private slots:
     void init()

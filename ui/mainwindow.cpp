@@ -3,6 +3,7 @@
 
 #include "common/connectionbar.h"
 #include "common/packetlogdock.h"
+#include "common/simulatordock.h"
 #include "feetech/busclient.h"
 #include "feetechgui/feetechworkspace.h"
 #include "link/packetlogmodel.h"
@@ -197,9 +198,9 @@ void MainWindow::createMenus()
         m_feetech->allTorqueOff();
     });
 
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    view->addAction(m_packetLog->toggleViewAction());
-    view->addAction(m_connectionBar->toggleViewAction());
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(m_packetLog->toggleViewAction());
+    m_viewMenu->addAction(m_connectionBar->toggleViewAction());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *about = help->addAction(tr("&About ServoBench"), this, &MainWindow::showAbout);
@@ -231,6 +232,19 @@ void MainWindow::startFeetechDemo()
     m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
     m_connectionBar->setPort(ConnectionBar::kSimulatedFeetechPort);
     connectRequested();
+    scanOnceConnected();
+}
+
+void MainWindow::startArmDemo()
+{
+    m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
+    m_connectionBar->setPort(ConnectionBar::kSimulatedArmPort);
+    connectRequested();
+    scanOnceConnected();
+}
+
+void MainWindow::scanOnceConnected()
+{
     // Scan as soon as the port is open, so the tree fills by itself.
     auto *once = new QObject(this);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, once,
@@ -245,6 +259,24 @@ void MainWindow::startFeetechDemo()
                 m_feetechWorkspace->startScan(options);
                 once->deleteLater();
             });
+}
+
+void MainWindow::showSimulatorDock(bool arm)
+{
+    sim::SimulatorThread *simulator = arm ? m_demo->armSimulator() : m_demo->feetechSimulator();
+    if (!m_simulatorDock) {
+        m_simulatorDock = new SimulatorDock(this);
+        addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
+        // A tab beside the packet log: the pages above keep their height.
+        tabifyDockWidget(m_packetLog, m_simulatorDock);
+        m_viewMenu->addAction(m_simulatorDock->toggleViewAction());
+        connect(m_simulatorDock, &SimulatorDock::message, this,
+                [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    }
+    m_simulatorDock->setSimulator(simulator);
+    m_simulatorDock->toggleViewAction()->setEnabled(true);
+    m_simulatorDock->show();
+    m_simulatorDock->raise();
 }
 
 void MainWindow::showProtocol(bool feetech)
@@ -278,19 +310,32 @@ void MainWindow::connectRequested()
         showProblem(tr("Choose a serial port first."));
         return;
     }
-    if (port == ConnectionBar::kSimulatedPtkPort || port == ConnectionBar::kSimulatedFeetechPort) {
-        const bool feetechBus = port == ConnectionBar::kSimulatedFeetechPort;
+    const bool arm = port == ConnectionBar::kSimulatedArmPort;
+    const bool feetechBus = arm || port == ConnectionBar::kSimulatedFeetechPort;
+    if (feetechBus || port == ConnectionBar::kSimulatedPtkPort) {
         m_connectionBar->setProtocol(feetechBus ? ConnectionBar::Protocol::Feetech
                                                 : ConnectionBar::Protocol::Ptk);
         if (!m_demo)
             m_demo = std::make_unique<sim::DemoServos>();
         QString error;
-        port = feetechBus ? m_demo->feetechPort(&error) : m_demo->ptkPort(&error);
+        port = arm       ? m_demo->armPort(&error)
+            : feetechBus ? m_demo->feetechPort(&error)
+                         : m_demo->ptkPort(&error);
         if (port.isEmpty()) {
             showProblem(tr("The simulated servos could not start: %1").arg(error));
             return;
         }
-        m_portShown = feetechBus ? tr("simulated Feetech bus") : tr("simulated PTK servo");
+        m_portShown = arm ? tr("simulated SO-101 arm")
+            : feetechBus  ? tr("simulated Feetech bus")
+                          : tr("simulated PTK servo");
+    }
+    // The Simulator dock goes with a simulated Feetech bus; a PTK servo has nothing to plug.
+    if (feetechBus) {
+        showSimulatorDock(arm);
+    } else if (m_simulatorDock) {
+        m_simulatorDock->setSimulator(nullptr);
+        m_simulatorDock->hide();
+        m_simulatorDock->toggleViewAction()->setEnabled(false);
     }
     const qint32 baud = m_connectionBar->baud();
     if (baud <= 0) {

@@ -149,10 +149,7 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         return fail(Tr::tr("--link PATH is required"));
     if (options.robot) {
         // The arm's joints come first, at the template's rate, whatever order the options had.
-        QVector<FeetechServoSpec> joints;
-        for (const feetech::RobotJoint &joint : std::as_const(options.robot->joints))
-            joints.append({quint8(joint.id), joint.model, options.robot->baud});
-        options.servos = joints + options.servos;
+        options.servos = robotServos(*options.robot) + options.servos;
     }
     if (feetech && options.servos.isEmpty())
         return fail(
@@ -253,6 +250,14 @@ std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, QStrin
     }
     const QString file = key.contains(u'-') ? key : key + QLatin1String("-follower");
     return feetech::loadRobotTemplate(QStringLiteral(":/robots/%1.json").arg(file), error);
+}
+
+QVector<FeetechServoSpec> robotServos(const feetech::RobotTemplate &robot)
+{
+    QVector<FeetechServoSpec> servos;
+    for (const feetech::RobotJoint &joint : robot.joints)
+        servos.append({quint8(joint.id), joint.model, robot.baud});
+    return servos;
 }
 
 } // namespace sim

@@ -47,6 +47,8 @@ std::optional<HandSweep> parseHandSweep(const QStringList &fields, const QString
 // The built-in robot templates servosim plays: so100, so101 (follower arms), so100-leader,
 // so101-leader. Nothing and *error for another name.
 std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, QString *error);
+// The robot's joints as servos on the bus, at the template's rate.
+QVector<FeetechServoSpec> robotServos(const feetech::RobotTemplate &robot);
 
 struct SimulatorOptions
 {
