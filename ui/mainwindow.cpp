@@ -140,6 +140,8 @@ MainWindow::~MainWindow()
     // The pages talk to the clients until they are gone, and the clients are members: the
     // pages go first (QWidget would delete them only after the members).
     delete m_pages;
+    // It looks at the demo's simulators, which are members too.
+    delete m_simulatorDock;
 }
 
 void MainWindow::createMenus()
