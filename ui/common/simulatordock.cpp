@@ -42,7 +42,8 @@ SimulatorDock::SimulatorDock(QWidget *parent)
     m_table->setHorizontalHeaderLabels(
         {tr("#"), tr("ID"), tr("Rate"), tr("Model"), tr("Position"), tr("Torque")});
     m_table->verticalHeader()->hide();
-    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    // Compact rows: an arm's six joints fit in the dock's starting height at 1366x768.
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
