@@ -72,6 +72,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         }
     });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
+    connectMotorSetup(session);
 }
 
 BusClient::~BusClient() = default;
@@ -246,6 +247,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
         reported.control = target.kind == Work::Control;
         emit operationFinished(reported);
     }
+    onMotorWorkFinished(result);
 }
 
 void BusClient::forgetWork()

@@ -109,6 +109,17 @@ public:
     // of its servo's range or a servo is unknown (nothing sent).
     bool moveAll(const QVector<Goal> &goals, QString *error = nullptr);
 
+    // ---- motor set-up (busclientmotorsetup.cpp): no scan needed, each servo is found alone
+
+    // Looks for the one servo on the bus at every rate. False and *error when not started.
+    bool findMotor(const MotorTarget &target, QString *error = nullptr);
+    // Finds the one servo again and gives it the target's ID, rate and settings, verified.
+    bool setUpMotor(const MotorTarget &target, QString *error = nullptr);
+    // Which joints of `robot` already answer at their ID at its rate, as their model.
+    bool checkJoints(const RobotTemplate &robot, QString *error = nullptr);
+    // Stops a find, set-up or check before its next step.
+    void cancelMotorSetup();
+
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
@@ -124,12 +135,20 @@ signals:
     void monitoringChanged(bool monitoring);
     // Whatever moves servos (sweeps, step tests) stops on this.
     void allTorqueOffRequested();
+    // Motor set-up: each find or set-up ends with motorSetupFinished, each check with
+    // jointsChecked, also when the link went down meanwhile.
+    void motorSetupProgress(int step, int steps, const QString &text);
+    void motorSetupFinished(const feetech::MotorSetupResult &result);
+    void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
 
 private:
     void onServoFound(const ServoInfo &info);
     void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
+    void connectMotorSetup(Session *session);
+    bool startMotorWork(QString *error, const std::function<void(Session &)> &work);
+    void onMotorWorkFinished(const OperationResult &result);
     enum class Work {
         Foreground, // the bus is busy until it ends
         Background, // a refresh: skipped when busy, its failure not reported
@@ -161,6 +180,9 @@ private:
     quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped
     TelemetryOptions m_monitorOptions;
     TelemetryStats m_telemetryStats;
+    // What the session reported of the motor set-up work running, until it ends.
+    std::optional<MotorSetupResult> m_motorResult;
+    std::optional<QVector<JointCheck>> m_jointsChecked;
 };
 
 } // namespace feetech

@@ -102,7 +102,10 @@ enum class Operation {
     Reboot,
     ClearStatus,
     TorqueOff, // every servo of the bus, ahead of the queue
-    SyncWrite
+    SyncWrite,
+    FindMotor, // motor set-up: the one servo on the bus, at any rate
+    SetUpMotor,
+    CheckJoints
 };
 
 struct OperationResult

@@ -31,12 +31,16 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_flows(new GuidedFlows(*m_bus, this))
     , m_telemetry(new TelemetryCycle(*m_bus, this))
     , m_apply(new ApplyFlow(*m_bus, *m_flows, this))
+    , m_motorSetup(new MotorSetup(*m_bus, *m_flows, *m_apply, this))
 {
     qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::ServoInfo>();
     qRegisterMetaType<feetech::ScanOptions>();
     qRegisterMetaType<feetech::ReadSource>();
     qRegisterMetaType<feetech::OperationResult>();
+    qRegisterMetaType<feetech::MotorTarget>();
+    qRegisterMetaType<feetech::MotorSetupResult>();
+    qRegisterMetaType<QVector<feetech::JointCheck>>();
     m_link->engine().setTiming(m_timing.engine);
     m_link->setReconnectInterval(m_timing.reconnectInterval);
     m_link->setLinkDownHook(
@@ -56,6 +60,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     connect(m_telemetry, &TelemetryCycle::telemetry, this, &Session::telemetry);
     connect(m_apply, &ApplyFlow::progress, this, &Session::progress);
     connect(m_telemetry, &TelemetryCycle::statsChanged, this, &Session::telemetryStats);
+    connect(m_motorSetup, &MotorSetup::progress, this, &Session::motorSetupProgress);
     m_telemetry->setBusBusy([this] { return m_running; });
     m_telemetry->setCycleEnded([this] {
         if (!m_queue.empty() && !m_running)
@@ -508,6 +513,59 @@ void Session::syncWrite(qint32 baud, int address, int length,
                  {}});
         });
     });
+}
+
+// ---- motor set-up
+
+void Session::findMotor(const MotorTarget &target)
+{
+    enqueue(Operation::FindMotor, [this, target] {
+        m_motorSetup->find(target, [this](const MotorSearch &search) {
+            MotorSetupResult result;
+            result.ok = search.foundOne();
+            result.search = search;
+            result.from = result.to = search.servo;
+            result.message = search.message;
+            emit motorSetupFinished(result);
+            finishOperation({Operation::FindMotor, result.ok, result.message, search.servo, {}});
+        });
+    });
+}
+
+void Session::setUpMotor(const MotorTarget &target)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::SetUpMotor, [this, target, epoch] {
+        if (refusedAfterTorqueOff(Operation::SetUpMotor, epoch))
+            return;
+        m_motorSetup->setUp(target, [this](const MotorSetupResult &result) {
+            emit motorSetupFinished(result);
+            finishOperation({Operation::SetUpMotor, result.ok, result.message, result.to, {}});
+        });
+    });
+}
+
+void Session::checkJoints(qint32 baud, const QVector<JointCheck> &joints)
+{
+    enqueue(Operation::CheckJoints, [this, baud, joints] {
+        m_motorSetup->check(baud, joints, [this](const QVector<JointCheck> &checked) {
+            emit jointsChecked(checked);
+            const auto done = std::count_if(checked.begin(), checked.end(),
+                                            [](const JointCheck &joint) { return joint.done(); });
+            finishOperation(
+                {Operation::CheckJoints,
+                 true,
+                 Tr::tr("%1 of %n joint(s) already set up.", nullptr, int(checked.size()))
+                     .arg(done),
+                 {},
+                 {}});
+        });
+    });
+}
+
+void Session::cancelMotorSetup()
+{
+    m_motorSetup->cancel();
 }
 
 } // namespace feetech

@@ -6,6 +6,7 @@
 #include "feetech/busscan.h"
 #include "feetech/bustypes.h"
 #include "feetech/guidedflows.h"
+#include "feetech/motorsetup.h"
 #include "feetech/telemetry.h"
 #include "feetech/telemetrycycle.h"
 #include "link/linktypes.h"
@@ -80,6 +81,14 @@ public:
     void syncWrite(qint32 baud, int address, int length,
                    const QVector<feetech::SyncWriteEntry> &entries);
 
+    // Motor set-up (MotorSetup): the one servo on the bus found at any rate; found and set up
+    // as `target` says; the joints that already answer at their ID at `baud`.
+    void findMotor(const feetech::MotorTarget &target);
+    void setUpMotor(const feetech::MotorTarget &target);
+    void checkJoints(qint32 baud, const QVector<feetech::JointCheck> &joints);
+    // Not queued: stops the running one before its next step.
+    void cancelMotorSetup();
+
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
@@ -96,6 +105,10 @@ signals:
     void countersChanged(const seriallink::LinkCounters &counters);
     void telemetry(const QVector<feetech::FeedbackSample> &samples, quint64 stream);
     void telemetryStats(const feetech::TelemetryStats &stats);
+    // Before the operationFinished of a find or a set-up, and of a check.
+    void motorSetupProgress(int step, int steps, const QString &text);
+    void motorSetupFinished(const feetech::MotorSetupResult &result);
+    void jointsChecked(const QVector<feetech::JointCheck> &joints);
 
 private:
     void onLinkDown(const QString &message);
@@ -120,6 +133,7 @@ private:
     GuidedFlows *m_flows = nullptr;
     TelemetryCycle *m_telemetry = nullptr;
     ApplyFlow *m_apply = nullptr;
+    MotorSetup *m_motorSetup = nullptr;
     struct Queued
     {
         Operation operation = Operation::Read;
