@@ -59,7 +59,7 @@ private:
         [&] {
             QVERIFY2(!result.ok, qPrintable(result.message));
             QCOMPARE(int(result.search.verdict), int(verdict));
-            QVERIFY2(result.message.contains(QLatin1String("nothing was written"))
+            QVERIFY2(result.message.contains(QLatin1String("othing was written"))
                          || result.message.contains(QLatin1String("at a time"))
                          || result.message.contains(QLatin1String("no servo"), Qt::CaseInsensitive),
                      qPrintable(result.message));
@@ -187,9 +187,9 @@ private slots:
     {
         QVERIFY(plug(1, QStringLiteral("SCS15"), k1M));
         const MotorSetupResult result = refusedSetUp(MotorSearch::Verdict::WrongModel);
-        QVERIFY2(result.message.startsWith(QLatin1String("Found a SCS15")),
+        QVERIFY2(result.message.startsWith(QLatin1String("Found servo 1 at 1 Mbps, model SCS15")),
                  qPrintable(result.message));
-        QVERIFY(result.message.contains(QLatin1String("shoulder_lift needs a STS3215")));
+        QVERIFY(result.message.contains(QLatin1String("shoulder_lift needs model STS3215")));
     }
 
     void aStopBeforeTheNextStepWritesNothingMore()
@@ -223,7 +223,8 @@ private slots:
         QVERIFY(result.at(0).done());
         QVERIFY(result.at(1).done());
         QVERIFY(!result.at(2).done());
-        QCOMPARE(result.at(2).problem(), QStringLiteral("ID 3 answers as a SCS15, not a STS3215."));
+        QCOMPARE(result.at(2).problem(),
+                 QStringLiteral("ID 3 answers as model SCS15, not STS3215."));
         for (int i = 3; i < 6; ++i) {
             QVERIFY(!result.at(i).found);
             QVERIFY(result.at(i).problem().isEmpty());

@@ -81,6 +81,10 @@ private:
     int factoryReset(const QString &what, const QStringList &operands);
     int reboot(const QString &what, const QStringList &operands);
 
+    // Setting up one motor of a robot (feetechsetupcommand.cpp).
+    feetech::MotorTarget motorTarget(const QString &what) const;
+    int setupMotor(const QString &what, const QStringList &operands);
+
     // Live feedback (feetechmonitorcommand.cpp).
     int monitor(const QString &what, const QStringList &operands);
     double monitorRate() const;

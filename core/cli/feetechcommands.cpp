@@ -45,6 +45,7 @@ int FeetechCommand::run(const QStringList &rest)
         {"calibrate-middle", &FeetechCommand::calibrateMiddle},
         {"factory-reset", &FeetechCommand::factoryReset},
         {"reboot", &FeetechCommand::reboot},
+        {"setup-motor", &FeetechCommand::setupMotor},
         {"monitor", &FeetechCommand::monitor},
     };
     for (const auto &[name, handler] : kCommands) {

@@ -53,6 +53,12 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech factory-reset --id N [--backup FILE]\n"
     "                                         save a backup profile, then restore factory values\n"
     "  feetech reboot --id N                  restart the servo and wait for it\n"
+    "  feetech setup-motor --id N [--baud BPS] [--model MODEL] [--settings ROBOT]\n"
+    "                                         the one servo on the bus (any ID, any rate) gets\n"
+    "                                         ID N and rate BPS (default 1000000, or the\n"
+    "                                         robot's), verified; ROBOT: a robot template file,\n"
+    "                                         whose joint with ID N gives the model to expect\n"
+    "                                         and the settings to write and verify\n"
     "  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]\n"
     "                                         stream position, speed, load, voltage,\n"
     "                                         temperature and current (SYNC READ)\n"
@@ -85,7 +91,8 @@ public:
                 {QStringLiteral("port"), QStringLiteral("baud"), QStringLiteral("family"),
                  QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
                  QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
-                 QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate")},
+                 QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate"),
+                 QStringLiteral("model"), QStringLiteral("settings")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version")});
             m_json = args.flag(QStringLiteral("json"));

@@ -257,20 +257,21 @@ void MotorSetup::judgeModel(std::shared_ptr<Search> search)
     const MotorTarget &target = search->target;
     if (!servo.hasTable()) {
         endSearch(search, MotorSearch::Verdict::WrongModel,
-                  Tr::tr("Found %1, a %2 (model number %3) that ServoBench has no register table "
-                         "for; nothing was written.")
+                  Tr::tr("Found %1, model %2 (model number %3), which ServoBench has no "
+                         "register table for; nothing was written.")
                       .arg(servoName(servo), servo.model.name)
                       .arg(servo.modelNumber()));
         return;
     }
     if (!target.model.isEmpty() && !servoIsModel(servo, target.model)) {
         endSearch(search, MotorSearch::Verdict::WrongModel,
-                  Tr::tr("Found a %1 (%2), but %3 needs a %4; nothing was written. Connect a %4.")
-                      .arg(servo.model.name, servoName(servo), jointText(target), target.model));
+                  Tr::tr("Found %1, model %2, but %3 needs model %4. Nothing was written: "
+                         "connect a servo of model %4.")
+                      .arg(servoName(servo), servo.model.name, jointText(target), target.model));
         return;
     }
     endSearch(search, MotorSearch::Verdict::OneServo,
-              Tr::tr("Found one servo: a %1, %2.").arg(servo.model.name, servoName(servo)));
+              Tr::tr("Found one servo: %1, model %2.").arg(servoName(servo), servo.model.name));
 }
 
 void MotorSetup::endSearch(std::shared_ptr<Search> search, MotorSearch::Verdict verdict,

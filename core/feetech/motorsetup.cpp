@@ -73,7 +73,7 @@ QString JointCheck::problem() const
 {
     if (!found || done())
         return {};
-    return Tr::tr("ID %1 answers as a %2, not a %3.").arg(id).arg(found->model.name, model);
+    return Tr::tr("ID %1 answers as model %2, not %3.").arg(id).arg(found->model.name, model);
 }
 
 struct MotorSetup::Run
@@ -121,7 +121,7 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
         const Register *baudRegister = registerAt(run->servo, u"baud_rate");
         if (!baudRegister || *baudCode(run->target.baud) > baudRegister->maximum) {
             finish(run, false,
-                   Tr::tr("A %1 cannot run at %2; nothing was written.")
+                   Tr::tr("Model %1 cannot run at %2; nothing was written.")
                        .arg(run->servo.model.name, baudText(run->target.baud)));
             return;
         }
