@@ -206,22 +206,28 @@ private slots:
         QCOMPARE(pluggedServos().first().id, quint8(1));
     }
 
-    void theCheckShowsJointsAtTheirIdWithTheirModelAsDone()
+    void theCheckShowsJointsSetUpAtTheirIdAsDone()
     {
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
-        QVERIFY(plug(2, QStringLiteral("STS3215"), k1M));
+        QVERIFY(setUp(jointTarget(1)).ok);
+        QVERIFY(plug(2, QStringLiteral("STS3215"), k1M)); // at its ID, but as it left the factory
         QVERIFY(plug(3, QStringLiteral("SCS15"), k1M));
         QVERIFY(plug(4, QStringLiteral("STS3215"), 115200)); // not at the template's rate
+        powerCycle(); // RAM settings (acceleration) start afresh; the set-up holds
         QVector<JointCheck> joints;
         for (const feetech::RobotJoint &joint : m_robot.joints)
-            joints.append({joint.id, joint.model, std::nullopt});
+            joints.append({joint.id, joint.model, joint.settings, std::nullopt, {}});
         QSignalSpy checked(m_session.get(), &feetech::Session::jointsChecked);
         m_session->checkJoints(k1M, joints);
         QVERIFY(checked.wait(20000));
         const auto result = checked.first().at(0).value<QVector<JointCheck>>();
         QCOMPARE(result.size(), 6);
         QVERIFY(result.at(0).done());
-        QVERIFY(result.at(1).done());
+        QVERIFY(!result.at(1).done());
+        QVERIFY(result.at(1).found);
+        QVERIFY2(result.at(1).problem().startsWith(QLatin1String("ID 2 answers, but ")),
+                 qPrintable(result.at(1).problem()));
+        QVERIFY(result.at(1).problem().contains(QLatin1String("p_gain is 32, not 16")));
         QVERIFY(!result.at(2).done());
         QCOMPARE(result.at(2).problem(),
                  QStringLiteral("ID 3 answers as model SCS15, not STS3215."));

@@ -64,7 +64,7 @@ bool BusClient::checkJoints(const RobotTemplate &robot, QString *error)
 {
     QVector<JointCheck> joints;
     for (const RobotJoint &joint : robot.joints)
-        joints.append({joint.id, joint.model, std::nullopt});
+        joints.append({joint.id, joint.model, joint.settings, std::nullopt, {}});
     const qint32 baud = robot.baud;
     return startMotorWork(error, [baud, joints](Session &s) { s.checkJoints(baud, joints); });
 }

@@ -66,14 +66,16 @@ bool servoIsModel(const ServoInfo &servo, QStringView model)
 
 bool JointCheck::done() const
 {
-    return found && servoIsModel(*found, model);
+    return found && servoIsModel(*found, model) && differing.isEmpty();
 }
 
 QString JointCheck::problem() const
 {
     if (!found || done())
         return {};
-    return Tr::tr("ID %1 answers as model %2, not %3.").arg(id).arg(found->model.name, model);
+    if (!servoIsModel(*found, model))
+        return Tr::tr("ID %1 answers as model %2, not %3.").arg(id).arg(found->model.name, model);
+    return Tr::tr("ID %1 answers, but %2.").arg(id).arg(differing.join(QStringLiteral(", ")));
 }
 
 struct MotorSetup::Run
@@ -206,82 +208,85 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
     }
     // Only what differs is written: the EEPROM keeps its writes for what changes.
     auto current = std::make_shared<QMap<QString, qint32>>();
-    readSettings(run, current, [this, run, current](bool ok, const QString &message) {
-        if (!ok) {
-            finish(run, false, message);
-            return;
-        }
-        QVector<model::WriteItem> items;
-        const QMap<QString, qint32> &settings = run->target.settings;
-        for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
-            if (!current->contains(it.key()) || current->value(it.key()) != it.value())
-                items.append({it.key(), it.value()});
-        }
-        if (items.isEmpty()) {
-            run->result.steps.append(Tr::tr("It already holds every setting."));
-            verifySettings(run);
-            return;
-        }
-        QString error;
-        const auto writes = encodeWrites(run->servo.table(), items, &error);
-        if (!writes) {
-            finish(run, false, error);
-            return;
-        }
-        m_apply.write(run->servo, *writes, [this, run, items](const OperationResult &result) {
-            if (!result.ok) {
-                finish(run, false, result.message);
-                return;
-            }
-            QStringList keys;
-            for (const model::WriteItem &item : items)
-                keys.append(item.key);
-            run->result.steps.append(
-                Tr::tr("Wrote %1 with the EEPROM unlocked, then locked it again.")
-                    .arg(keys.join(QStringLiteral(", "))));
-            verifySettings(run);
-        });
-    });
+    readSettings(run->servo, run->target.settings.keys(), current,
+                 [this, run, current](bool ok, const QString &message) {
+                     if (!ok) {
+                         finish(run, false, message);
+                         return;
+                     }
+                     QVector<model::WriteItem> items;
+                     const QMap<QString, qint32> &settings = run->target.settings;
+                     for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
+                         if (!current->contains(it.key()) || current->value(it.key()) != it.value())
+                             items.append({it.key(), it.value()});
+                     }
+                     if (items.isEmpty()) {
+                         run->result.steps.append(Tr::tr("It already holds every setting."));
+                         verifySettings(run);
+                         return;
+                     }
+                     QString error;
+                     const auto writes = encodeWrites(run->servo.table(), items, &error);
+                     if (!writes) {
+                         finish(run, false, error);
+                         return;
+                     }
+                     m_apply.write(
+                         run->servo, *writes, [this, run, items](const OperationResult &result) {
+                             if (!result.ok) {
+                                 finish(run, false, result.message);
+                                 return;
+                             }
+                             QStringList keys;
+                             for (const model::WriteItem &item : items)
+                                 keys.append(item.key);
+                             run->result.steps.append(
+                                 Tr::tr("Wrote %1 with the EEPROM unlocked, then locked it again.")
+                                     .arg(keys.join(QStringLiteral(", "))));
+                             verifySettings(run);
+                         });
+                 });
 }
 
 void MotorSetup::verifySettings(std::shared_ptr<Run> run)
 {
     emit progress(5, kSetupSteps, Tr::tr("Reading the settings back…"));
     auto values = std::make_shared<QMap<QString, qint32>>();
-    readSettings(run, values, [this, run, values](bool ok, const QString &message) {
-        if (!ok) {
-            finish(run, false, message);
-            return;
-        }
-        QStringList wrong;
-        const QMap<QString, qint32> &settings = run->target.settings;
-        for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
-            if (values->contains(it.key()))
-                run->result.verified.insert(it.key(), values->value(it.key()));
-            if (values->contains(it.key()) && values->value(it.key()) == it.value())
-                continue;
-            wrong.append(Tr::tr("%1 should be %2 but reads %3")
-                             .arg(it.key())
-                             .arg(it.value())
-                             .arg(values->contains(it.key())
-                                      ? QString::number(values->value(it.key()))
-                                      : Tr::tr("nothing")));
-        }
-        if (!wrong.isEmpty()) {
-            finish(run, false,
-                   Tr::tr("Verification failed: %1.").arg(wrong.join(QStringLiteral("; "))));
-            return;
-        }
-        run->result.steps.append(
-            Tr::tr("Read back: %n setting(s) hold their values.", nullptr, int(settings.size())));
-        finish(run, true, {});
-    });
+    readSettings(
+        run->servo, run->target.settings.keys(), values,
+        [this, run, values](bool ok, const QString &message) {
+            if (!ok) {
+                finish(run, false, message);
+                return;
+            }
+            QStringList wrong;
+            const QMap<QString, qint32> &settings = run->target.settings;
+            for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
+                if (values->contains(it.key()))
+                    run->result.verified.insert(it.key(), values->value(it.key()));
+                if (values->contains(it.key()) && values->value(it.key()) == it.value())
+                    continue;
+                wrong.append(Tr::tr("%1 should be %2 but reads %3")
+                                 .arg(it.key())
+                                 .arg(it.value())
+                                 .arg(values->contains(it.key())
+                                          ? QString::number(values->value(it.key()))
+                                          : Tr::tr("nothing")));
+            }
+            if (!wrong.isEmpty()) {
+                finish(run, false,
+                       Tr::tr("Verification failed: %1.").arg(wrong.join(QStringLiteral("; "))));
+                return;
+            }
+            run->result.steps.append(Tr::tr("Read back: %n setting(s) hold their values.", nullptr,
+                                            int(settings.size())));
+            finish(run, true, {});
+        });
 }
 
-void MotorSetup::readSettings(std::shared_ptr<Run> run,
+void MotorSetup::readSettings(const ServoInfo &servo, const QStringList &keys,
                               std::shared_ptr<QMap<QString, qint32>> values, StepDone next)
 {
-    const ServoInfo servo = run->servo;
     disconnect(m_reading); // one left by a run the link ended
     m_reading = connect(
         &m_bus, &BusExchange::memoryRead, this,
@@ -294,7 +299,7 @@ void MotorSetup::readSettings(std::shared_ptr<Run> run,
         });
     auto target = std::make_shared<ServoInfo>(servo);
     std::vector<Step> steps {m_bus.setBaud(servo.baud)};
-    for (const Block &block : blocksFor(servo.table(), run->target.settings.keys()))
+    for (const Block &block : blocksFor(servo.table(), keys))
         steps.push_back(m_bus.read(target, block.address, block.size, ReadSource::ReadBack));
     m_bus.runSteps(std::move(steps), [this, next](bool ok, const QString &message) {
         disconnect(m_reading);
@@ -322,8 +327,10 @@ void MotorSetup::check(qint32 baud, const QVector<JointCheck> &joints, CheckDone
 {
     m_cancelled = false;
     auto checked = std::make_shared<QVector<JointCheck>>(joints);
-    for (JointCheck &joint : *checked)
+    for (JointCheck &joint : *checked) {
         joint.found.reset();
+        joint.differing.clear();
+    }
     checkNext(baud, checked, 0, std::move(done));
 }
 
@@ -342,10 +349,45 @@ void MotorSetup::checkNext(qint32 baud, std::shared_ptr<QVector<JointCheck>> joi
     servo->baud = baud;
     m_bus.runSteps({m_bus.setBaud(baud), m_bus.identify(servo)},
                    [this, baud, joints, index, servo, done](bool found, const QString &) {
-                       if (found)
-                           (*joints)[index].found = *servo;
-                       checkNext(baud, joints, index + 1, done);
+                       const auto next = [this, baud, joints, index, done] {
+                           checkNext(baud, joints, index + 1, done);
+                       };
+                       JointCheck &joint = (*joints)[index];
+                       if (!found) {
+                           next();
+                           return;
+                       }
+                       joint.found = *servo;
+                       compareSettings(joint, next);
                    });
+}
+
+void MotorSetup::compareSettings(JointCheck &joint, std::function<void()> then)
+{
+    const ServoInfo servo = *joint.found;
+    QStringList kept;
+    for (auto it = joint.settings.cbegin(); it != joint.settings.cend(); ++it) {
+        const Register *reg = registerAt(servo, it.key());
+        if (reg && reg->storage == Storage::Eeprom)
+            kept.append(it.key());
+    }
+    if (!servoIsModel(servo, joint.model) || kept.isEmpty()) {
+        then();
+        return;
+    }
+    auto values = std::make_shared<QMap<QString, qint32>>();
+    JointCheck *target = &joint; // the vector outlives the run: checkNext owns it
+    readSettings(servo, kept, values, [target, kept, values, then](bool ok, const QString &) {
+        for (const QString &key : kept) {
+            const qint32 wanted = target->settings.value(key);
+            if (!ok || !values->contains(key))
+                target->differing.append(Tr::tr("%1 could not be read").arg(key));
+            else if (values->value(key) != wanted)
+                target->differing.append(
+                    Tr::tr("%1 is %2, not %3").arg(key).arg(values->value(key)).arg(wanted));
+        }
+        then();
+    });
 }
 
 } // namespace feetech

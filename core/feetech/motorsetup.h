@@ -68,15 +68,20 @@ struct MotorSetupResult
     QString message;
 };
 
-// One joint as a check of the bus sees it: is its servo already at its ID and rate?
+// One joint as a check of the bus sees it: is its servo already set up, at its ID and rate?
 struct JointCheck
 {
     int id = 0;
     QString model; // the model the joint needs
+    // The joint's settings; those kept in EEPROM are compared (RAM ones start afresh at
+    // power-up, so they say nothing about an earlier set-up).
+    QMap<QString, qint32> settings;
     std::optional<ServoInfo> found; // who answers at that ID at the template's rate
+    QStringList differing; // "p_gain is 32, not 16": EEPROM settings that do not hold
 
     bool done() const;
-    // Why a servo at the joint's ID is not the joint's (empty when done or nothing answers).
+    // Why a servo at the joint's ID is not set up as the joint (empty when done or nothing
+    // answers).
     QString problem() const;
 };
 
@@ -101,7 +106,7 @@ public:
     // find, then (only for exactly one servo of the right model) the ID, the rate, the
     // settings written with the EEPROM unlocked and locked again, every one read back.
     void setUp(const MotorTarget &target, SetupDone done);
-    // Asks each joint's ID at `baud` who answers there.
+    // Asks each joint's ID at `baud` who answers there, and reads its EEPROM settings.
     void check(qint32 baud, const QVector<JointCheck> &joints, CheckDone done);
     // Stops before the next step (a step under way ends first, so the EEPROM is locked).
     void cancel() { m_cancelled = true; }
@@ -126,14 +131,15 @@ private:
     void changeBaud(std::shared_ptr<Run> run);
     void writeSettings(std::shared_ptr<Run> run);
     void verifySettings(std::shared_ptr<Run> run);
-    // Reads the settings' registers of the servo into *values (register units by key).
-    void readSettings(std::shared_ptr<Run> run, std::shared_ptr<QMap<QString, qint32>> values,
-                      StepDone next);
+    // Reads the registers `keys` of the servo into *values (register units by key).
+    void readSettings(const ServoInfo &servo, const QStringList &keys,
+                      std::shared_ptr<QMap<QString, qint32>> values, StepDone next);
     bool stoppedBefore(std::shared_ptr<Run> run, const QString &step);
     void finish(std::shared_ptr<Run> run, bool ok, const QString &message);
 
     void checkNext(qint32 baud, std::shared_ptr<QVector<JointCheck>> joints, int index,
                    CheckDone done);
+    void compareSettings(JointCheck &joint, std::function<void()> then);
 
     BusExchange &m_bus;
     GuidedFlows &m_flows;
