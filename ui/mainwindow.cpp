@@ -6,6 +6,7 @@
 #include "common/simulatordock.h"
 #include "feetech/busclient.h"
 #include "feetechgui/feetechworkspace.h"
+#include "feetechgui/setupwizard.h"
 #include "link/packetlogmodel.h"
 #include "model/parametermodel.h"
 #include "ptk/ptkclient.h"
@@ -198,6 +199,24 @@ void MainWindow::createMenus()
             return;
         statusBar()->showMessage(tr("Torque off: sent to every servo…"));
         m_feetech->allTorqueOff();
+    });
+
+    // &Robot: work on a whole arm. Set up motors finds each servo itself, so it needs only an
+    // open Feetech port, no scan.
+    QMenu *robot = menuBar()->addMenu(tr("&Robot"));
+    robot->setObjectName(QStringLiteral("robotMenu"));
+    QAction *setUpMotors = robot->addAction(tr("Set up &motors…"));
+    setUpMotors->setObjectName(QStringLiteral("setUpMotorsAction"));
+    setUpMotors->setEnabled(false);
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, setUpMotors,
+            [this, setUpMotors] { setUpMotors->setEnabled(m_feetech->isConnected()); });
+    connect(setUpMotors, &QAction::triggered, this, [this] {
+        auto *wizard = findChild<SetupWizard *>();
+        if (!wizard)
+            wizard = new SetupWizard(m_feetech.get(), this);
+        wizard->show();
+        wizard->raise();
+        wizard->activateWindow();
     });
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));

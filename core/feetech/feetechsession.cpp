@@ -524,6 +524,7 @@ void Session::findMotor(const MotorTarget &target)
             MotorSetupResult result;
             result.ok = search.foundOne();
             result.search = search;
+            result.stopped = search.stopped;
             result.from = result.to = search.servo;
             result.message = search.message;
             emit motorSetupFinished(result);

@@ -65,6 +65,7 @@ void MotorSetup::search(const MotorTarget &target, SearchDone done)
 void MotorSetup::probeRate(std::shared_ptr<Search> search, int index)
 {
     if (m_cancelled) {
+        search->result.stopped = true;
         endSearch(search, MotorSearch::Verdict::Failed, Tr::tr("Stopped; nothing was written."));
         return;
     }

@@ -113,6 +113,7 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
     emit progress(1, kSetupSteps, Tr::tr("Looking for the servo at every baud rate…"));
     search(target, [this, run](const MotorSearch &search) {
         run->result.search = search;
+        run->result.stopped = search.stopped;
         if (!search.foundOne()) {
             finish(run, false, search.message);
             return;
@@ -145,6 +146,7 @@ bool MotorSetup::stoppedBefore(std::shared_ptr<Run> run, const QString &step)
 {
     if (!m_cancelled)
         return false;
+    run->result.stopped = true;
     finish(run, false,
            Tr::tr("Stopped before %1. The servo answers as %2; nothing more was written.")
                .arg(step, servoName(run->servo)));

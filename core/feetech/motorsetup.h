@@ -49,10 +49,17 @@ struct MotorSearch
     ServoInfo servo; // OneServo, WrongModel, SharedId: who answers
     int count = 0; // servos seen; with `collided`, at least that many
     bool collided = false; // some replies collided, so more may answer than could be counted
+    bool stopped = false; // cancelled before it could decide
     QStringList answering; // SeveralServos: "ID 1 at 1 Mbps", "several at 500 kbps"...
     QString message; // for the user: what was found and what to do
 
     bool foundOne() const { return verdict == Verdict::OneServo; }
+    // The bus is not as a set-up needs it, and the message does not say so itself.
+    bool needsNothingWrittenNote() const
+    {
+        return verdict == Verdict::NoServo || verdict == Verdict::SeveralServos
+            || verdict == Verdict::SharedId;
+    }
 };
 
 // A find or a set-up: what was found, what it became, and each step done.
@@ -60,6 +67,7 @@ struct MotorSetupResult
 {
     bool ok = false;
     bool setUp = false; // a set-up (false: only a find)
+    bool stopped = false; // cancelled between two steps
     MotorSearch search;
     ServoInfo from; // where the servo was found
     ServoInfo to; // where it answers afterwards
