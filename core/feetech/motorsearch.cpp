@@ -47,6 +47,17 @@ struct MotorSetup::Search
     int garbledReads = 0;
 };
 
+Exchange MotorSetup::identityRequest(quint8 id, bool quiet)
+{
+    Exchange ask;
+    ask.request = feetech::read(id, kIdentityAddress, kIdentitySize);
+    ask.replyId = id;
+    ask.replyDataSize = kIdentitySize;
+    ask.retryCount = 1;
+    ask.silenceExpected = quiet;
+    return ask;
+}
+
 void MotorSetup::find(const MotorTarget &target, SearchDone done)
 {
     m_cancelled = false;
@@ -166,12 +177,7 @@ void MotorSetup::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud)
             endSearch(search, MotorSearch::Verdict::Failed, message);
             return;
         }
-        Exchange ask;
-        ask.request = feetech::read(id, kIdentityAddress, kIdentitySize);
-        ask.replyId = id;
-        ask.replyDataSize = kIdentitySize;
-        ask.retryCount = 1;
-        m_bus.exchange(ask,
+        m_bus.exchange(identityRequest(id, false),
                        [this, search, id, baud](const seriallink::TransactionResult &result,
                                                 const std::optional<Packet> &reply) {
                            if (result.failure == seriallink::Failure::LinkDown

@@ -346,22 +346,30 @@ void MotorSetup::checkNext(qint32 baud, std::shared_ptr<QVector<JointCheck>> joi
     const int id = joints->at(index).id;
     emit progress(index + 1, int(joints->size()),
                   Tr::tr("Asking ID %1 at %2…").arg(id).arg(baudText(baud)));
-    auto servo = std::make_shared<ServoInfo>();
-    servo->id = quint8(id);
-    servo->baud = baud;
-    m_bus.runSteps({m_bus.setBaud(baud), m_bus.identify(servo)},
-                   [this, baud, joints, index, servo, done](bool found, const QString &) {
-                       const auto next = [this, baud, joints, index, done] {
-                           checkNext(baud, joints, index + 1, done);
-                       };
-                       JointCheck &joint = (*joints)[index];
-                       if (!found) {
-                           next();
-                           return;
-                       }
-                       joint.found = *servo;
-                       compareSettings(joint, next);
-                   });
+    // Most joints are not connected yet: a silent ID is an answer here, not a link problem.
+    m_bus.setBaud(baud)([this, baud, joints, index, id, done](bool ok, const QString &) {
+        const auto next = [this, baud, joints, index, done] {
+            checkNext(baud, joints, index + 1, done);
+        };
+        if (!ok) {
+            next();
+            return;
+        }
+        m_bus.exchange(identityRequest(quint8(id), true),
+                       [this, baud, joints, index, id, next](const seriallink::TransactionResult &,
+                                                             const std::optional<Packet> &reply) {
+                           const auto info = reply
+                               ? servoInfoFromIdentity(quint8(id), baud, reply->parameters)
+                               : std::nullopt;
+                           if (!info) {
+                               next();
+                               return;
+                           }
+                           JointCheck &joint = (*joints)[index];
+                           joint.found = *info;
+                           compareSettings(joint, next);
+                       });
+    });
 }
 
 void MotorSetup::compareSettings(JointCheck &joint, std::function<void()> then)

@@ -124,6 +124,8 @@ signals:
     void progress(int step, int steps, const QString &text);
 
 private:
+    // A READ of addresses 0-8 of `id`; a quiet one is no error when nothing answers.
+    static Exchange identityRequest(quint8 id, bool quiet);
     struct Search;
     void search(const MotorTarget &target, SearchDone done);
     void probeRate(std::shared_ptr<Search> search, int index);

@@ -86,6 +86,8 @@ void SetupWizard::buildUi()
     m_jointList->setColumnWidth(ModelColumn, 80);
     connect(m_jointList, &QTreeWidget::itemClicked, this,
             [this](QTreeWidgetItem *item) { chooseJoint(m_jointList->indexOfTopLevelItem(item)); });
+    // Room for a six-joint arm; the rest goes to what the current joint's work reports.
+    m_jointList->setMinimumHeight(m_jointList->fontMetrics().lineSpacing() * 9);
     layout->addWidget(m_jointList, 1);
 
     m_currentBox = new QGroupBox(this);
@@ -103,6 +105,8 @@ void SetupWizard::buildUi()
     connect(m_find, &QPushButton::clicked, this, &SetupWizard::find);
     m_setUp = new QPushButton(tr("&Set up"), m_currentBox);
     m_setUp->setObjectName(QStringLiteral("setUpButton"));
+    m_setUp->setToolTip(tr("Give the servo found the joint's ID, the robot's baud rate and the "
+                           "joint's settings, each read back"));
     connect(m_setUp, &QPushButton::clicked, this, &SetupWizard::setUp);
     m_stop = new QPushButton(tr("S&top"), m_currentBox);
     m_stop->setObjectName(QStringLiteral("stopButton"));
@@ -129,10 +133,10 @@ void SetupWizard::buildUi()
     m_outcome->setWordWrap(true);
     m_outcome->setTextFormat(Qt::RichText);
     m_outcome->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_outcome->setMinimumHeight(m_outcome->fontMetrics().lineSpacing() * 4);
+    m_outcome->setMinimumHeight(m_outcome->fontMetrics().lineSpacing() * 8);
     m_outcome->setAlignment(Qt::AlignLeft | Qt::AlignTop);
-    current->addWidget(m_outcome);
-    layout->addWidget(m_currentBox);
+    current->addWidget(m_outcome, 1);
+    layout->addWidget(m_currentBox, 2);
 
     auto *close = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -276,8 +280,6 @@ void SetupWizard::updateActions()
     m_check->setEnabled(free);
     m_find->setEnabled(free && m_current >= 0);
     m_setUp->setEnabled(free && m_current >= 0 && m_found.has_value());
-    m_setUp->setText(m_current >= 0 ? tr("&Set up as %1").arg(m_robot.joints.at(m_current).name)
-                                    : tr("&Set up"));
     m_stop->setEnabled(isWorking() && !m_stopping);
     m_jointList->setEnabled(idle);
 }

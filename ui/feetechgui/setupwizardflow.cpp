@@ -153,7 +153,7 @@ void SetupWizard::onFound(const feetech::MotorSetupResult &result)
                              .toHtmlEscaped());
     }
     html += QStringLiteral("<br>")
-        + tr("Press <i>Set up as %1</i> to give it ID %2, %3 and the %1 settings (%n value(s), "
+        + tr("Press <i>Set up</i> to give it ID %2, %3 and the %1 settings (%n value(s), "
              "each read back).",
              nullptr, int(joint.settings.size()))
               .arg(joint.name.toHtmlEscaped())
