@@ -12,6 +12,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QShowEvent>
+#include <QSignalBlocker>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -28,12 +29,7 @@ SetupWizard::SetupWizard(feetech::BusClient *client, QWidget *parent)
     setWindowTitle(tr("Set up motors"));
     setObjectName(QStringLiteral("setupWizard"));
     buildUi();
-    QStringList problems;
-    m_robots = feetech::availableRobotTemplates(&problems);
-    for (const feetech::RobotTemplate &robot : std::as_const(m_robots))
-        m_robotChoice->addItem(robot.name);
-    m_templateProblems->setText(problems.join(u'\n'));
-    m_templateProblems->setVisible(!problems.isEmpty());
+    loadRobots();
     connect(m_robotChoice, &QComboBox::currentIndexChanged, this, [this](int index) {
         chooseRobot(index);
         if (isVisible())
@@ -144,12 +140,38 @@ void SetupWizard::buildUi()
     resize(640, 620);
 }
 
+void SetupWizard::loadRobots()
+{
+    QStringList problems;
+    m_robots = feetech::availableRobotTemplates(&problems);
+    const QSignalBlocker quiet(m_robotChoice);
+    m_robotChoice->clear();
+    for (const feetech::RobotTemplate &robot : std::as_const(m_robots))
+        m_robotChoice->addItem(robot.name);
+    m_templateProblems->setText(problems.join(u'\n'));
+    m_templateProblems->setVisible(!problems.isEmpty());
+}
+
 void SetupWizard::showEvent(QShowEvent *event)
 {
     QDialog::showEvent(event);
-    // Reopened: the bus may have changed meanwhile (servos set up elsewhere, the arm built).
-    if (!event->spontaneous())
-        checkBus();
+    if (event->spontaneous())
+        return;
+    // Reopened: templates may have been saved meanwhile (the choice and the joints' states stay
+    // while the robot is still there), and the bus may have changed (servos set up elsewhere,
+    // the arm built).
+    if (!isWorking()) {
+        const QString shown = m_robot.name;
+        loadRobots();
+        const int index = m_robotChoice->findText(shown);
+        if (index >= 0) {
+            const QSignalBlocker quiet(m_robotChoice);
+            m_robotChoice->setCurrentIndex(index);
+        } else {
+            chooseRobot(0);
+        }
+    }
+    checkBus();
 }
 
 void SetupWizard::chooseRobot(int index)

@@ -65,6 +65,7 @@ private:
     };
 
     void buildUi();
+    void loadRobots(); // the templates built in and saved, into the choice
     void chooseRobot(int index);
     void onProgress(int step, int steps, const QString &text);
     void onFinished(const feetech::MotorSetupResult &result);
