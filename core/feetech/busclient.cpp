@@ -239,6 +239,8 @@ void BusClient::onOperationFinished(const OperationResult &result)
         if (result.ok && flow && result.final) // what the flow changed shows
             readServo(indexOf(entry.info.id, entry.info.baud));
     }
+    if (result.operation == Operation::Identify)
+        m_identifying.reset();
     if (target.kind == Work::Foreground)
         emit busyChanged(isBusy());
     if (target.kind != Work::Background) { // a failed refresh is retried by the next one
@@ -253,6 +255,7 @@ void BusClient::forgetWork()
     const bool wasBusy = isBusy();
     m_pending.clear();
     m_scanning = false;
+    m_identifying.reset();
     for (const auto &entry : m_servos) {
         model::ParameterModel &parameters = *entry->parameters;
         for (const model::Definition &definition : parameters.definitions()) {
@@ -394,6 +397,49 @@ bool BusClient::clearStatus(int index, QString *error)
         return false;
     return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
+}
+
+// ---- identify a joint
+
+QString BusClient::identifyBlocker(int index) const
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty())
+        return blocker;
+    const ServoInfo &info = servo(index).info;
+    const QString held = m_held.value({info.id, info.baud});
+    if (!held.isEmpty())
+        return held;
+    if (!info.table().find(u"goal_position") || !info.table().find(u"torque_enable"))
+        return Tr::tr("This servo has no goal position register: it cannot be moved.");
+    return {};
+}
+
+bool BusClient::identifyJoint(int index, QString *error)
+{
+    if (refused(identifyBlocker(index), error))
+        return false;
+    const ServoInfo &info = servo(index).info;
+    m_identifying = std::pair(info.id, info.baud);
+    return startOperation(index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &target) { s.identifyJoint(target); });
+}
+
+bool BusClient::isIdentifying(int index) const
+{
+    return m_identifying && index >= 0 && index < servoCount()
+        && *m_identifying == std::pair(servo(index).info.id, servo(index).info.baud);
+}
+
+void BusClient::holdServo(int index, const QString &reason)
+{
+    if (index >= 0 && index < servoCount())
+        m_held.insert({servo(index).info.id, servo(index).info.baud}, reason);
+}
+
+void BusClient::releaseServo(quint8 id, qint32 baud)
+{
+    m_held.remove({id, baud});
 }
 
 // ---- live monitoring and control
