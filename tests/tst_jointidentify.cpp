@@ -170,13 +170,8 @@ private slots:
         const int index = readServo(1);
         QVERIFY(index >= 0);
         feetech::MotionTest test(m_client.get(), testsupport::quickMotionTiming());
-        feetech::MotionPlan plan;
-        plan.index = index;
-        plan.from = 1800;
-        plan.to = 2300;
-        plan.legs = 1000;
         QString error;
-        QVERIFY2(test.startSweep(plan, &error), qPrintable(error));
+        QVERIFY2(test.startSweep(testsupport::longSweep(index), &error), qPrintable(error));
         QVERIFY(!m_client->identifyBlocker(index).isEmpty());
         QVERIFY(m_client->identifyBlocker(index).contains(QStringLiteral("motion test")));
         QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);

@@ -44,20 +44,10 @@ private:
                                         + arguments);
     }
 
-    QString writeFile(const QString &name, const QByteArray &contents) const
-    {
-        const QString path = m_dir.filePath(name);
-        QFile file(path);
-        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
-            return {};
-        file.write(contents);
-        return path;
-    }
-
     QString stsProfile() const
     {
-        return writeFile(QStringLiteral("gains.json"),
-                         R"({"format": "servobench-profile", "version": 1, "family": "sts",
+        return writeTestFile(QStringLiteral("gains.json"),
+                             R"({"format": "servobench-profile", "version": 1, "family": "sts",
                              "model": "STS3215",
                              "parameters": {"p_gain": 20, "max_temperature": 60}})");
     }
@@ -157,7 +147,7 @@ private slots:
                          {{QStringLiteral("p_gain"), 27}, {QStringLiteral("max_torque"), 500}}},
                         {QStringLiteral("wrist"), 3, QStringLiteral("STS3215"), false, {}}};
         const QString path =
-            writeFile(QStringLiteral("arm.json"), feetech::robotTemplateToJson(robot));
+            writeTestFile(QStringLiteral("arm.json"), feetech::robotTemplateToJson(robot));
         const auto result = feetech({QStringLiteral("--json"), QStringLiteral("load"),
                                      QStringLiteral("--ids"), QStringLiteral("1-3"), path});
         QCOMPARE(result.exitCode, 1);
@@ -187,7 +177,7 @@ private slots:
                          false,
                          {{QStringLiteral("p_gain"), 25}}}};
         const QString path =
-            writeFile(QStringLiteral("one.json"), feetech::robotTemplateToJson(robot));
+            writeTestFile(QStringLiteral("one.json"), feetech::robotTemplateToJson(robot));
         const auto result =
             feetech({QStringLiteral("load"), QStringLiteral("--ids"), QStringLiteral("1,2"), path});
         QCOMPARE(result.exitCode, 1);
@@ -212,7 +202,7 @@ private slots:
     void anInvalidFileExitsTwoAndNothingIsSent()
     {
         QFETCH(QByteArray, contents);
-        const QString path = writeFile(QStringLiteral("bad.json"), contents);
+        const QString path = writeTestFile(QStringLiteral("bad.json"), contents);
         const auto result =
             feetech({QStringLiteral("load"), QStringLiteral("--ids"), QStringLiteral("1-2"), path});
         QCOMPARE(result.exitCode, 2);

@@ -5,6 +5,7 @@
 #include "common/packetlogdock.h"
 #include "feetech/busclient.h"
 #include "feetechgui/feetechworkspace.h"
+#include "feetechgui/robotactions.h"
 #include "link/packetlogmodel.h"
 #include "model/parametermodel.h"
 #include "ptk/ptkclient.h"
@@ -196,6 +197,12 @@ void MainWindow::createMenus()
         statusBar()->showMessage(tr("Torque off: sent to every servo…"));
         m_feetech->allTorqueOff();
     });
+
+    // Arms of several servos: the Feetech workspace's robot actions (enabled once a bus is
+    // connected and scanned).
+    QMenu *robot = menuBar()->addMenu(tr("&Robot"));
+    robot->setObjectName(QStringLiteral("robotMenu"));
+    m_feetechWorkspace->robotActions()->addTo(robot);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_packetLog->toggleViewAction());

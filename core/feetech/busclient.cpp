@@ -433,13 +433,16 @@ bool BusClient::isIdentifying(int index) const
 
 void BusClient::holdServo(int index, const QString &reason)
 {
-    if (index >= 0 && index < servoCount())
-        m_held.insert({servo(index).info.id, servo(index).info.baud}, reason);
+    if (index < 0 || index >= servoCount())
+        return;
+    m_held.insert({servo(index).info.id, servo(index).info.baud}, reason);
+    emit servoUpdated(index); // what it may do now has changed
 }
 
 void BusClient::releaseServo(quint8 id, qint32 baud)
 {
-    m_held.remove({id, baud});
+    if (m_held.remove({id, baud}) > 0 && indexOf(id, baud) >= 0)
+        emit servoUpdated(indexOf(id, baud));
 }
 
 // ---- live monitoring and control

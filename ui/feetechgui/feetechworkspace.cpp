@@ -11,6 +11,7 @@
 #include "feetechgui/jointtable.h"
 #include "feetechgui/monitorpage.h"
 #include "feetechgui/registertablemodel.h"
+#include "feetechgui/robotactions.h"
 #include "feetechgui/scandialog.h"
 
 #include <QCheckBox>
@@ -18,6 +19,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSortFilterProxyModel>
@@ -26,6 +28,7 @@
 #include <QTableView>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -93,6 +96,8 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_tree->setUniformRowHeights(true);
     m_tree->header()->setStretchLastSection(false);
     m_tree->setIndentation(m_tree->fontMetrics().horizontalAdvance(u'm') * 3 / 2);
+    m_tree->setSelectionMode(QAbstractItemView::ExtendedSelection); // the robot actions take many
+    m_tree->setContextMenuPolicy(Qt::CustomContextMenu);
     leftLayout->addWidget(m_tree, 1);
     // The emergency stop stays in sight whatever page is open; Esc does the same everywhere.
     m_allTorqueOff = actionButton(tr("All torque off  (Esc)"), "allTorqueOffButton",
@@ -292,6 +297,14 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
                     selectServo(m_client->servo(0).info.id, m_client->servo(0).info.baud);
                 updateActions();
             });
+    m_robot = new RobotActions(m_client, this);
+    connect(m_robot, &RobotActions::problem, this, &FeetechWorkspace::problem);
+    connect(m_robot, &RobotActions::message, this, &FeetechWorkspace::message);
+    connect(m_tree, &QWidget::customContextMenuRequested, this, [this](const QPoint &at) {
+        QMenu menu(this);
+        m_robot->addTo(&menu);
+        menu.exec(m_tree->viewport()->mapToGlobal(at));
+    });
     rebuildTree();
     showServo();
 }
@@ -386,16 +399,41 @@ void FeetechWorkspace::rebuildTree()
     for (int column = 0; column < TreeColumns; ++column)
         m_tree->resizeColumnToContents(column);
     if (selected)
-        selected->setSelected(true);
+        m_tree->setCurrentItem(selected);
     updateActions();
+}
+
+QVector<int> FeetechWorkspace::selectedServos() const
+{
+    QVector<int> indexes;
+    for (QTreeWidgetItemIterator it(m_tree, QTreeWidgetItemIterator::Selected); *it; ++it) {
+        const QVariant id = (*it)->data(ServoColumn, kIdRole);
+        if (!id.isValid())
+            continue;
+        const int index = m_client->indexOf(quint8(id.toUInt()),
+                                            qint32((*it)->data(ServoColumn, kBaudRole).toInt()));
+        if (index >= 0)
+            indexes.append(index);
+    }
+    return indexes;
 }
 
 void FeetechWorkspace::onSelectionChanged()
 {
-    const QList<QTreeWidgetItem *> items = m_tree->selectedItems();
-    if (items.isEmpty() || !items.first()->data(ServoColumn, kIdRole).isValid())
+    // The pages show the servo clicked last (the tree's current item) while it is selected,
+    // else the first servo selected.
+    const QTreeWidgetItem *item = m_tree->currentItem();
+    if (!item || !item->isSelected() || !item->data(ServoColumn, kIdRole).isValid()) {
+        item = nullptr;
+        for (QTreeWidgetItem *selected : m_tree->selectedItems()) {
+            if (selected->data(ServoColumn, kIdRole).isValid()) {
+                item = selected;
+                break;
+            }
+        }
+    }
+    if (!item)
         return;
-    const QTreeWidgetItem *item = items.first();
     m_current = std::make_pair(quint8(item->data(ServoColumn, kIdRole).toUInt()),
                                qint32(item->data(ServoColumn, kBaudRole).toInt()));
     showServo();
