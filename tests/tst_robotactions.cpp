@@ -182,6 +182,8 @@ private slots:
             QCOMPARE(simulatorValue(id, u"max_temperature"), 61);
             QVERIFY(!client()->parameters(client()->indexOf(id, k1M))->hasEdits());
         }
+        // Every operation rebuilds the tree: the selection outlives them.
+        QCOMPARE(workspace()->selectedServos().size(), 3);
         dialog->close();
         QTRY_VERIFY(!actions()->resultDialog());
 

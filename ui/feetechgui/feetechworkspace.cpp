@@ -22,6 +22,7 @@
 #include <QMenu>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSet>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTabWidget>
@@ -323,6 +324,10 @@ void FeetechWorkspace::setPortName(const QString &name)
 void FeetechWorkspace::selectServo(quint8 id, qint32 baud)
 {
     m_current = std::make_pair(id, baud);
+    {
+        const QSignalBlocker quiet(m_tree);
+        m_tree->clearSelection(); // this one servo, not those selected before
+    }
     rebuildTree();
     showServo();
     readIfNew();
@@ -362,6 +367,11 @@ void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
 void FeetechWorkspace::rebuildTree()
 {
     const QSignalBlocker quiet(m_tree);
+    // Servos selected for the robot actions stay selected across a rebuild (one comes after
+    // every operation, a batch's included).
+    QSet<std::pair<quint8, qint32>> wasSelected;
+    for (const int index : selectedServos())
+        wasSelected.insert({m_client->servo(index).info.id, m_client->servo(index).info.baud});
     m_tree->clear();
     if (m_client->servoCount() == 0) {
         updateActions();
@@ -371,6 +381,7 @@ void FeetechWorkspace::rebuildTree()
     QTreeWidgetItem *baudItem = nullptr;
     qint32 baud = 0;
     QTreeWidgetItem *selected = nullptr;
+    QList<QTreeWidgetItem *> alsoSelected;
     for (int i = 0; i < m_client->servoCount(); ++i) {
         const feetech::ServoInfo &info = m_client->servo(i).info;
         if (!baudItem || info.baud != baud) {
@@ -394,12 +405,16 @@ void FeetechWorkspace::rebuildTree()
                                 "memory is shown as raw bytes, read-only."));
         if (m_current && m_current->first == info.id && m_current->second == info.baud)
             selected = item;
+        else if (wasSelected.contains({info.id, info.baud}))
+            alsoSelected.append(item);
     }
     m_tree->expandAll();
     for (int column = 0; column < TreeColumns; ++column)
         m_tree->resizeColumnToContents(column);
     if (selected)
         m_tree->setCurrentItem(selected);
+    for (QTreeWidgetItem *item : std::as_const(alsoSelected))
+        item->setSelected(true);
     updateActions();
 }
 
