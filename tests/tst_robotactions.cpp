@@ -228,6 +228,11 @@ private slots:
         dialog.baseChooser()->setCurrentIndex(3);
         QTableWidget *joints = dialog.jointTable();
         QCOMPARE(joints->rowCount(), 6);
+        // A built-in template's copy gets a name of its own; the built-in's name is refused.
+        QVERIFY(dialog.saveButton()->isEnabled());
+        dialog.nameEdit()->setText(feetech::builtInRobotTemplates().at(3).name);
+        QVERIFY(!dialog.saveButton()->isEnabled());
+        QVERIFY(dialog.errorLabel()->text().contains(QStringLiteral("built-in")));
         dialog.nameEdit()->setText(QStringLiteral("Bench SO-101"));
         QVERIFY(dialog.saveButton()->isEnabled());
         QVERIFY(dialog.errorLabel()->text().isEmpty());

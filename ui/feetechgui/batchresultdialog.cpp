@@ -54,9 +54,12 @@ BatchResultDialog::BatchResultDialog(const QString &source,
             m_table->setItem(row, column, item);
         }
     }
-    m_table->resizeColumnsToContents();
-    m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->resizeRowsToContents();
+    // The error takes the room that is left and wraps; rows grow to show it whole.
+    QHeaderView *header = m_table->horizontalHeader();
+    for (const int column : {ServoColumn, StatusColumn, ChangedColumn})
+        header->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(ErrorColumn, QHeaderView::Stretch);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
@@ -64,5 +67,5 @@ BatchResultDialog::BatchResultDialog(const QString &source,
     layout->addWidget(m_table, 1);
     layout->addWidget(buttons);
     const int em = fontMetrics().horizontalAdvance(u'm');
-    resize(em * 60, em * 25);
+    resize(em * 75, em * 25);
 }

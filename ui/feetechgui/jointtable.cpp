@@ -91,7 +91,7 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setStretchLastSection(true);
     // In character widths, so every column fits beside the servo tree at any font size.
-    const int ems[ColumnCount] = {4, 8, 7, 10, 9, 10, 9, 6, 8};
+    const int ems[ColumnCount] = {3, 7, 7, 10, 9, 9, 8, 6, 6};
     const int em = m_table->fontMetrics().horizontalAdvance(u'm');
     for (int column = 0; column < ColumnCount; ++column)
         m_table->setColumnWidth(column, ems[column] * em);

@@ -171,7 +171,7 @@ RobotTemplateDialog::RobotTemplateDialog(feetech::BusClient *client, QWidget *pa
     m_joints->setColumnWidth(IdColumn, em * 3);
     m_joints->setColumnWidth(ModelColumn, em * 7);
     m_joints->setColumnWidth(FullTurnColumn, em * 5);
-    resize(em * 72, em * 34);
+    resize(em * 72, em * 42);
     startFrom(0);
 }
 
@@ -185,7 +185,11 @@ void RobotTemplateDialog::startFrom(int at)
     if (at < 0)
         return;
     if (at < m_templates.size()) {
-        fill(m_templates.at(at));
+        feetech::RobotTemplate robot = m_templates.at(at);
+        // A built-in template keeps its name; the copy needs one of its own.
+        if (at < feetech::builtInRobotTemplates().size())
+            robot.name = tr("My %1").arg(robot.name);
+        fill(robot);
         return;
     }
     // The servos the scan found: one joint each, named after its ID, no settings yet.
@@ -268,6 +272,14 @@ std::optional<feetech::RobotTemplate> RobotTemplateDialog::edited(QString *error
         }
         robot.joints.append(joint);
     }
+    for (const feetech::RobotTemplate &builtIn : feetech::builtInRobotTemplates()) {
+        if (builtIn.name.compare(robot.name, Qt::CaseInsensitive) == 0) {
+            *error = tr("\"%1\" is the name of a built-in template: choose another, so the "
+                        "wizards can tell them apart")
+                         .arg(robot.name);
+            return std::nullopt;
+        }
+    }
     // Exactly the checks loading makes, on exactly the bytes that would be written.
     return feetech::robotTemplateFromJson(feetech::robotTemplateToJson(robot),
                                           QDir::toNativeSeparators(targetPath()), error);
@@ -286,7 +298,7 @@ void RobotTemplateDialog::validate()
     const bool valid = edited(&error).has_value();
     m_error->setText(valid ? QString() : error);
     m_save->setEnabled(valid);
-    m_path->setText(valid ? tr("Saved to %1; the set-up wizards offer it.")
+    m_path->setText(valid ? tr("Will be saved to %1, where the set-up wizards find it.")
                                 .arg(QDir::toNativeSeparators(targetPath()))
                           : QString());
 }
