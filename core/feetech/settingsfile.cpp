@@ -3,10 +3,10 @@
 
 #include "feetech/servoparameters.h"
 #include "profile/profile.h"
+#include "util/jsonfile.h"
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QFile>
 #include <QHash>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -20,7 +20,6 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(SettingsFile)
 };
 
-constexpr qint64 kLargestFile = 1024 * 1024;
 const QString kRobotMarker = QStringLiteral("servobench-robot");
 
 } // namespace
@@ -28,16 +27,16 @@ const QString kRobotMarker = QStringLiteral("servobench-robot");
 std::optional<SettingsFile> SettingsFile::load(const QString &path, QString *error)
 {
     const QString shown = QDir::toNativeSeparators(path);
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = Tr::tr("%1 cannot be read: %2").arg(shown, file.errorString());
+    QString why;
+    const auto read = util::readFile(path, util::kMaxJsonFileBytes,
+                                     Tr::tr("the file is too large for a profile or a robot "
+                                            "template"),
+                                     &why);
+    if (!read) {
+        *error = util::fileError(path, why);
         return std::nullopt;
     }
-    const QByteArray json = file.read(kLargestFile + 1);
-    if (json.size() > kLargestFile) {
-        *error = Tr::tr("%1 is too large for a profile or a robot template").arg(shown);
-        return std::nullopt;
-    }
+    const QByteArray &json = *read;
     SettingsFile settings;
     settings.m_source = shown;
     const QJsonObject object = QJsonDocument::fromJson(json).object();
