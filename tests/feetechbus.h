@@ -32,6 +32,18 @@ inline feetech::MotionTiming quickMotionTiming()
     return timing;
 }
 
+// A sweep of servo `index` between 1800 and 2300 long enough to be running whenever a test
+// looks (cancel it when done).
+inline feetech::MotionPlan longSweep(int index)
+{
+    feetech::MotionPlan plan;
+    plan.index = index;
+    plan.from = 1800;
+    plan.to = 2300;
+    plan.legs = feetech::MotionPlan::kMaximumLegs;
+    return plan;
+}
+
 // Servos with IDs 1, 2, ... of `models`, all at `baud`.
 inline QVector<sim::FeetechServoSpec> servosAt(qint32 baud,
                                                std::initializer_list<QStringView> models)
@@ -172,6 +184,17 @@ protected:
     }
 
     QString logPath() const { return m_dir.filePath(QStringLiteral("bus.log")); }
+
+    // Writes `contents` to `name` in the test's directory: its path (empty when it failed).
+    QString writeTestFile(const QString &name, const QByteArray &contents) const
+    {
+        const QString path = m_dir.filePath(name);
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+            return {};
+        file.write(contents);
+        return path;
+    }
 
     // Register `key` of simulated servo `id`, looked at in the simulator's thread; -1 without
     // that servo.

@@ -7,6 +7,7 @@
 #include "feetech/busclient.h"
 #include "feetechgui/feetechworkspace.h"
 #include "feetechgui/setupwizard.h"
+#include "feetechgui/robotactions.h"
 #include "link/packetlogmodel.h"
 #include "model/parametermodel.h"
 #include "ptk/ptkclient.h"
@@ -218,6 +219,8 @@ void MainWindow::createMenus()
         wizard->raise();
         wizard->activateWindow();
     });
+
+    m_feetechWorkspace->robotActions()->addTo(robot);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_packetLog->toggleViewAction());

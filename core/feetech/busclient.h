@@ -10,6 +10,7 @@
 #include "model/parametermodel.h"
 
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 
 #include <deque>
@@ -76,6 +77,18 @@ public:
     bool factoryReset(int index, QString *error = nullptr);
     bool reboot(int index, QString *error = nullptr);
     bool clearStatus(int index, QString *error = nullptr);
+
+    // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
+
+    // Why servo `index` cannot be identified now (empty when it can): no bus, an unknown
+    // model, another operation, or something holding the servo (a motion test).
+    QString identifyBlocker(int index) const;
+    bool identifyJoint(int index, QString *error = nullptr);
+    bool isIdentifying(int index) const;
+    // What moves a servo outside the session's operations (a motion test) holds it while it
+    // runs: identifyBlocker gives `reason` meanwhile.
+    void holdServo(int index, const QString &reason);
+    void releaseServo(quint8 id, qint32 baud);
 
     // ---- live monitoring and control
 
@@ -183,6 +196,8 @@ private:
     // What the session reported of the motor set-up work running, until it ends.
     std::optional<MotorSetupResult> m_motorResult;
     std::optional<QVector<JointCheck>> m_jointsChecked;
+    std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
+    QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
 };
 
 } // namespace feetech

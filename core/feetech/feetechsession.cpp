@@ -7,6 +7,7 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QTimer>
 
 #include <algorithm>
 #include <memory>
@@ -32,6 +33,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_telemetry(new TelemetryCycle(*m_bus, this))
     , m_apply(new ApplyFlow(*m_bus, *m_flows, this))
     , m_motorSetup(new MotorSetup(*m_bus, *m_flows, *m_apply, this))
+    , m_identify(new JointIdentify(*m_bus, this))
 {
     qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::ServoInfo>();
@@ -113,8 +115,10 @@ void Session::close()
 void Session::onLinkDown(const QString &message)
 {
     const bool wasScanning = m_scan->isRunning();
-    const bool wasRunning = m_running;
+    const bool wasRunning = m_running || m_paused;
     const Operation running = m_currentOperation;
+    m_paused = false;
+    ++m_pauseGeneration;
     std::deque<Queued> dropped;
     dropped.swap(m_queue);
     m_scan->abandon();
@@ -161,6 +165,8 @@ void Session::startQueuedOperation()
 {
     if (m_running || m_queue.empty())
         return;
+    if (m_paused && m_queue.front().operation != Operation::TorqueOff)
+        return; // the paused operation goes on first
     Queued next = std::move(m_queue.front());
     m_queue.pop_front();
     m_running = true;
@@ -195,6 +201,27 @@ void Session::continueLater(Operation next, std::function<void()> resume)
     while (at != m_queue.end() && at->operation == Operation::TorqueOff)
         ++at;
     m_queue.insert(at, {next, std::move(resume)});
+    QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
+}
+
+void Session::pauseFor(Operation operation, std::chrono::milliseconds delay,
+                       std::function<void()> resume)
+{
+    m_running = false;
+    m_paused = true;
+    const quint64 generation = ++m_pauseGeneration;
+    QTimer::singleShot(delay, this, [this, generation, operation, resume = std::move(resume)] {
+        if (!m_paused || generation != m_pauseGeneration)
+            return;
+        m_paused = false;
+        // Not continueLater: All torque off may be running right now, and goes on.
+        auto at = m_queue.begin();
+        while (at != m_queue.end() && at->operation == Operation::TorqueOff)
+            ++at;
+        m_queue.insert(at, {operation, resume});
+        if (!m_running)
+            startNextOperation();
+    });
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
 }
 
@@ -359,6 +386,21 @@ void Session::clearStatus(const ServoInfo &servo)
                              servo,
                              {}});
         });
+    });
+}
+
+void Session::identifyJoint(const ServoInfo &servo)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::Identify, [this, servo, epoch] {
+        if (refusedAfterTorqueOff(Operation::Identify, epoch))
+            return;
+        m_identify->run(servo, finisher(),
+                        [this, epoch](std::chrono::milliseconds delay,
+                                      std::function<void(bool torqueOff)> resume) {
+                            pauseFor(Operation::Identify, delay,
+                                     [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
+                        });
     });
 }
 
