@@ -288,7 +288,9 @@ QJsonObject benchDescribe(cli::Protocol protocol, const Traffic &traffic, bool *
         qint64 characters = 0;
         qint64 passes = 0;
         const Figure figure = time(capture.size(), [&] {
-            const auto decoded = cli::decodeStream(protocol, capture);
+            const auto decoded = cli::decodeStream(protocol, capture,
+                                                   json ? seriallink::Detail::SummaryAndFields
+                                                        : seriallink::Detail::Summary);
             for (const seriallink::DecodedFrame &frame : decoded) {
                 ++frames;
                 characters += json ? cli::toJson(frame).size()

@@ -1,5 +1,6 @@
 // Tests the packet decoder behind `servoctl decode` on spec streams.
 #include "cli/decoder.h"
+#include "feetech/feetechpacket.h"
 #include "specvectors.h"
 
 #include <QJsonArray>
@@ -131,6 +132,38 @@ private slots:
         QCOMPARE(json.value(QStringLiteral("kind")).toString(), QStringLiteral("instruction"));
         QCOMPARE(json.value(QStringLiteral("checksum_valid")).toBool(), true);
         QCOMPARE(json.value(QStringLiteral("id")).toInt(), 1);
+    }
+    void summaryOnlyDecodingExplainsEveryFrameAlikeWithoutFields_data()
+    {
+        QTest::addColumn<int>("protocol");
+        QTest::addColumn<QByteArray>("stream");
+        QTest::newRow("ptk") << int(cli::Protocol::Ptk)
+                             << bytes("00") + specvectors::ptkConversation(true)
+                + bytes(specvectors::kPtkWrites[2]) + bytes("AF FA 00");
+        QTest::newRow("feetech") << int(cli::Protocol::Feetech)
+                                 << feetech::syncRead(0x38, 2, {1, 2})
+                + feetech::status(1, 0, bytes("18 05")) + feetech::status(2, 0x24, bytes("00 08"))
+                + bytes("12") + feetech::write(1, 0x2A, bytes("00 08")) + feetech::ping(3)
+                + feetech::status(3, 0) + bytes("FF FF 01");
+    }
+
+    void summaryOnlyDecodingExplainsEveryFrameAlikeWithoutFields()
+    {
+        QFETCH(int, protocol);
+        QFETCH(QByteArray, stream);
+        const auto full = cli::decodeStream(cli::Protocol(protocol), stream);
+        const auto brief =
+            cli::decodeStream(cli::Protocol(protocol), stream, seriallink::Detail::Summary);
+        QCOMPARE(brief.size(), full.size());
+        bool anyFields = false;
+        for (int i = 0; i < full.size(); ++i) {
+            QCOMPARE(brief[i].kind, full[i].kind);
+            QCOMPARE(brief[i].summary, full[i].summary);
+            QCOMPARE(brief[i].offset, full[i].offset);
+            QVERIFY(brief[i].fields.isEmpty());
+            anyFields = anyFields || !full[i].fields.isEmpty();
+        }
+        QVERIFY(anyFields);
     }
 };
 

@@ -140,6 +140,38 @@ private slots:
         QCOMPARE(rest->bytes.size(), 4);
         QVERIFY(!framer.flush().has_value());
     }
+    void byteByByteDeliveryGivesTheSameItemsAsOneDelivery()
+    {
+        ToyFormat format;
+        // Garbage, a frame, a false header that resyncs onto a real frame, a frame cut short.
+        const QByteArray stream = "xy" + toyFrame("abc") + QByteArray("S\x03", 2) + toyFrame("ok")
+            + toyFrame("long payload").left(5);
+        const auto items = [&format](const QList<QByteArray> &chunks) {
+            seriallink::StreamFramer framer(format);
+            QList<std::pair<seriallink::StreamItem::Kind, QByteArray>> seen;
+            for (const QByteArray &chunk : chunks) {
+                framer.append(chunk);
+                while (auto item = framer.next()) {
+                    // A garbage run is reported up to the end of what has arrived, so its
+                    // pieces depend on the delivery; frames must not.
+                    if (item->kind != seriallink::StreamItem::Kind::Garbage)
+                        seen.append({item->kind, item->bytes});
+                }
+            }
+            seen.append({seriallink::StreamItem::Kind::Incomplete,
+                         QByteArray::number(framer.pendingBytes())});
+            seen.append({seriallink::StreamItem::Kind::Garbage,
+                         QByteArray::number(framer.bytesDiscarded())});
+            return seen;
+        };
+        QList<QByteArray> single;
+        for (const char byte : stream)
+            single.append(QByteArray(1, byte));
+        const auto whole = items({stream});
+        QCOMPARE(items(single), whole);
+        QCOMPARE(whole.at(0).second, toyFrame("abc"));
+        QCOMPARE(whole.at(whole.size() - 2).second, QByteArray("5"));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestStreamFramer)

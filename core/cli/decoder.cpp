@@ -19,9 +19,11 @@ std::optional<Protocol> guessProtocol(const QByteArray &stream)
     return std::nullopt;
 }
 
-QVector<DecodedFrame> decodeStream(Protocol protocol, const QByteArray &stream)
+QVector<DecodedFrame> decodeStream(Protocol protocol, const QByteArray &stream,
+                                   seriallink::Detail detail)
 {
-    return protocol == Protocol::Ptk ? ptk::decodeStream(stream) : feetech::decodeStream(stream);
+    return protocol == Protocol::Ptk ? ptk::decodeStream(stream, detail)
+                                     : feetech::decodeStream(stream, detail);
 }
 
 QJsonObject toJson(const DecodedFrame &frame)

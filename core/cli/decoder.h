@@ -18,8 +18,11 @@ using DecodedFrame = seriallink::DecodedFrame;
 // PTK when the stream starts (after any garbage) with AF FA, Feetech with FF FF.
 std::optional<Protocol> guessProtocol(const QByteArray &stream);
 
-// Every frame of the stream explained by its protocol (ptk::decodeStream, feetech::decodeStream).
-QVector<DecodedFrame> decodeStream(Protocol protocol, const QByteArray &stream);
+// Every frame of the stream explained by its protocol (ptk::decodeStream, feetech::decodeStream);
+// the fields toJson prints are filled only when asked for.
+QVector<DecodedFrame>
+decodeStream(Protocol protocol, const QByteArray &stream,
+             seriallink::Detail detail = seriallink::Detail::SummaryAndFields);
 
 QJsonObject toJson(const DecodedFrame &frame);
 

@@ -209,7 +209,9 @@ private:
                 throw UsageError {Tr::tr("no PTK (AF FA) or Feetech (FF FF) header found; "
                                          "name the protocol with --family")};
         }
-        const QVector<DecodedFrame> frames = decodeStream(*protocol, *bytes);
+        const QVector<DecodedFrame> frames = decodeStream(
+            *protocol, *bytes,
+            m_json ? seriallink::Detail::SummaryAndFields : seriallink::Detail::Summary);
         if (m_json) {
             QJsonArray array;
             for (const DecodedFrame &frame : frames)

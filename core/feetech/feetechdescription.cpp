@@ -27,13 +27,16 @@ QString idText(quint8 id)
     return id == kBroadcastId ? Tr::tr("ID %1 (broadcast)").arg(id) : Tr::tr("ID %1").arg(id);
 }
 
-void describeStatus(DecodedFrame &frame, quint8 id, quint8 code, const QByteArray &params)
+void describeStatus(DecodedFrame &frame, quint8 id, quint8 code, const QByteArray &params,
+                    bool withFields)
 {
     frame.kind = QStringLiteral("status");
-    frame.fields.insert(QStringLiteral("error"), code);
     const QStringList bits = statusBitNames(code);
-    frame.fields.insert(QStringLiteral("error_bits"), QJsonArray::fromStringList(bits));
-    frame.fields.insert(QStringLiteral("data"), util::toHex(params));
+    if (withFields) {
+        frame.fields.insert(QStringLiteral("error"), code);
+        frame.fields.insert(QStringLiteral("error_bits"), QJsonArray::fromStringList(bits));
+        frame.fields.insert(QStringLiteral("data"), util::toHex(params));
+    }
     frame.summary =
         Tr::tr("status from %1: %2")
             .arg(idText(id),
@@ -123,9 +126,10 @@ void expectRepliesAfter(Instruction instruction, quint8 id, QSet<int> &expectedR
 
 } // namespace
 
-QVector<DecodedFrame> decodeStream(const QByteArray &stream)
+QVector<DecodedFrame> decodeStream(const QByteArray &stream, seriallink::Detail detail)
 {
     const FrameFormat format;
+    const bool withFields = detail == seriallink::Detail::SummaryAndFields;
     QSet<int> expectedReplies; // servos the last instruction asked to answer (-1: any)
     return seriallink::describeStream(format, stream, [&](const StreamItem &item) {
         DecodedFrame frame;
@@ -135,18 +139,21 @@ QVector<DecodedFrame> decodeStream(const QByteArray &stream)
         const quint8 id = quint8(item.bytes[2]);
         const quint8 code = quint8(item.bytes[4]);
         const QByteArray params = item.bytes.mid(5, item.bytes.size() - 6);
-        frame.fields.insert(QStringLiteral("id"), id);
+        if (withFields)
+            frame.fields.insert(QStringLiteral("id"), id);
         const auto name = instructionName(code);
         const bool isReply = expectedReplies.contains(id) || expectedReplies.contains(-1);
         if (isReply || !name) {
             expectedReplies.remove(id);
-            describeStatus(frame, id, code, params);
+            describeStatus(frame, id, code, params, withFields);
             return frame;
         }
         frame.kind = QStringLiteral("instruction");
-        frame.fields.insert(QStringLiteral("instruction"), *name);
-        frame.fields.insert(QStringLiteral("instruction_code"), code);
-        frame.fields.insert(QStringLiteral("parameters"), util::toHex(params));
+        if (withFields) {
+            frame.fields.insert(QStringLiteral("instruction"), *name);
+            frame.fields.insert(QStringLiteral("instruction_code"), code);
+            frame.fields.insert(QStringLiteral("parameters"), util::toHex(params));
+        }
         const auto instruction = Instruction(code);
         const QString detail =
             instructionDetail(instruction, params, frame.checksumValid, expectedReplies);
@@ -160,7 +167,7 @@ QVector<DecodedFrame> decodeStream(const QByteArray &stream)
 QString describeFrame(const QByteArray &frame, const QByteArray &request)
 {
     const QByteArray stream = frame == request ? frame : request + frame;
-    const auto frames = decodeStream(stream);
+    const auto frames = decodeStream(stream, seriallink::Detail::Summary);
     return frames.isEmpty() ? QString() : frames.last().summary;
 }
 

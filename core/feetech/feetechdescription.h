@@ -13,7 +13,9 @@ namespace feetech {
 // Every packet, packet with a bad checksum and run of stray bytes of a captured stream, in stream
 // order. Status and instruction packets look alike, so a packet from a servo the previous
 // instruction addressed (or any servo after a broadcast PING) is read as its status packet.
-QVector<seriallink::DecodedFrame> decodeStream(const QByteArray &stream);
+QVector<seriallink::DecodedFrame>
+decodeStream(const QByteArray &stream,
+             seriallink::Detail detail = seriallink::Detail::SummaryAndFields);
 
 // The packet log's one-line summary of a packet the session sent or received. A reply is read
 // next to the request that asked for it (a READ's data then gets its address); the request

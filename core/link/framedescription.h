@@ -12,6 +12,10 @@
 
 namespace seriallink {
 
+// What a description fills in: the summary alone (the packet log, servoctl decode in words) or
+// also the fields (servoctl decode --json). Building the fields costs more than the summary.
+enum class Detail { Summary, SummaryAndFields };
+
 struct DecodedFrame
 {
     QString kind; // ptk: query, write, request, reply; feetech: instruction, status; or garbage

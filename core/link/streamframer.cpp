@@ -10,33 +10,47 @@ StreamFramer::StreamFramer(const FrameFormat &format, BadChecksumPolicy policy)
 
 void StreamFramer::append(const QByteArray &bytes)
 {
-    m_buffer.append(bytes);
+    // Consumed bytes are dropped here, once per delivery, rather than once per frame: what is
+    // left is at most the start of one frame, so the move is short and the capacity is reused.
+    if (m_start > 0) {
+        m_buffer.remove(0, m_start);
+        m_frameEnd -= m_start;
+        m_start = 0;
+    }
+    m_buffer.append(bytes.constData(), bytes.size()); // a copy: never share the caller's bytes
 }
 
-StreamItem StreamFramer::take(StreamItem::Kind kind, int length)
+StreamItem StreamFramer::take(StreamItem::Kind kind, qsizetype length)
 {
-    StreamItem item {kind, m_buffer.left(length), m_bufferOffset};
-    m_buffer.remove(0, length);
+    StreamItem item {kind, QByteArray(m_buffer.constData() + m_start, length), m_bufferOffset};
+    m_start += length;
     m_bufferOffset += length;
     return item;
 }
 
 std::optional<StreamItem> StreamFramer::next()
 {
+    if (m_buffer.size() < m_frameEnd)
+        return std::nullopt; // the frame being received is still short: nothing new to tell
+    const QByteArrayView pending = QByteArrayView(m_buffer).sliced(m_start);
     // Garbage is gathered until a byte that could start a frame, so one item covers one run.
-    int garbage = 0;
-    while (garbage < m_buffer.size()) {
-        const int length = m_format.frameLength(QByteArrayView(m_buffer).sliced(garbage));
+    qsizetype garbage = 0;
+    while (garbage < pending.size()) {
+        const int length = m_format.frameLength(pending.sliced(garbage));
         if (length < 0) {
             ++garbage;
             continue;
         }
         if (garbage > 0)
             break; // report the garbage first; the frame comes with the next call
-        if (length == 0 || length > m_buffer.size())
-            return std::nullopt; // need more
-        const QByteArray frame = m_buffer.left(length);
-        if (m_format.checksumValid(frame)) {
+        if (length == 0)
+            return std::nullopt; // need more to tell
+        if (length > pending.size()) {
+            // A frame's length never changes as more of it arrives, so it is asked once.
+            m_frameEnd = m_start + length;
+            return std::nullopt;
+        }
+        if (m_format.checksumValid(pending.first(length))) {
             ++m_framesAccepted;
             return take(StreamItem::Kind::Frame, length);
         }
@@ -47,9 +61,9 @@ std::optional<StreamItem> StreamFramer::next()
         }
         // Resync: report the candidate, but drop only its first byte so that a real header
         // hidden inside it is still found.
-        StreamItem item {StreamItem::Kind::BadChecksum, frame, m_bufferOffset};
-        m_buffer.remove(0, 1);
-        ++m_bufferOffset;
+        StreamItem item = take(StreamItem::Kind::BadChecksum, length);
+        m_start -= length - 1;
+        m_bufferOffset -= length - 1;
         ++m_bytesDiscarded;
         return item;
     }
@@ -61,18 +75,21 @@ std::optional<StreamItem> StreamFramer::next()
 
 std::optional<StreamItem> StreamFramer::flush()
 {
-    if (m_buffer.isEmpty())
+    const qsizetype rest = pendingBytes();
+    if (rest == 0)
         return std::nullopt;
-    m_bytesDiscarded += m_buffer.size();
-    return take(StreamItem::Kind::Incomplete, int(m_buffer.size()));
+    m_bytesDiscarded += rest;
+    return take(StreamItem::Kind::Incomplete, rest);
 }
 
 int StreamFramer::discardPending()
 {
-    const int dropped = int(m_buffer.size());
+    const int dropped = pendingBytes();
     m_bytesDiscarded += dropped;
     m_bufferOffset += dropped;
     m_buffer.clear();
+    m_start = 0;
+    m_frameEnd = 0;
     return dropped;
 }
 

@@ -52,17 +52,19 @@ public:
     // Drops all buffered bytes (counted as discarded), e.g. before a new request goes out.
     int discardPending();
 
-    int pendingBytes() const { return int(m_buffer.size()); }
+    int pendingBytes() const { return int(m_buffer.size() - m_start); }
     qint64 framesAccepted() const { return m_framesAccepted; }
     qint64 checksumErrors() const { return m_checksumErrors; }
     qint64 bytesDiscarded() const { return m_bytesDiscarded; }
 
 private:
-    StreamItem take(StreamItem::Kind kind, int length);
+    StreamItem take(StreamItem::Kind kind, qsizetype length);
 
     const FrameFormat &m_format;
     BadChecksumPolicy m_policy;
     QByteArray m_buffer;
+    qsizetype m_start = 0; // bytes of m_buffer already handed out, dropped on the next append
+    qsizetype m_frameEnd = 0; // end of the frame being received, once its length is known
     qint64 m_bufferOffset = 0;
     qint64 m_framesAccepted = 0;
     qint64 m_checksumErrors = 0;

@@ -20,7 +20,8 @@ using seriallink::DecodedFrame;
 using seriallink::hexByte;
 using seriallink::StreamItem;
 
-QString describeWords(const FrameLayout &layout, quint16 word0, quint16 word1, QJsonObject &values)
+// Names the words' values; also fills *values when given (servoctl decode --json).
+QString describeWords(const FrameLayout &layout, quint16 word0, quint16 word1, QJsonObject *values)
 {
     QStringList parts;
     for (const auto &[slot, word] :
@@ -29,24 +30,28 @@ QString describeWords(const FrameLayout &layout, quint16 word0, quint16 word1, Q
             continue;
         const ParameterInfo &meta = info(*slot);
         const double value = toUserValue(*slot, word);
-        values.insert(QLatin1String(meta.key), value);
+        if (values)
+            values->insert(QLatin1String(meta.key), value);
         parts.append(QStringLiteral("%1=%2").arg(QLatin1String(meta.key)).arg(value));
     }
     return parts.join(u' ');
 }
 
 // Explains one request (query, write or unknown command); remembers a valid query in *lastQuery
-// for the reply that follows it.
-void describeRequest(DecodedFrame &frame, QJsonObject &values, const FrameLayout *&lastQuery)
+// for the reply that follows it. Fields and values are filled only when `values` is given.
+void describeRequest(DecodedFrame &frame, QJsonObject *values, const FrameLayout *&lastQuery)
 {
     const QByteArray &b = frame.bytes;
     const quint8 command = quint8(b[4]);
-    frame.fields.insert(QStringLiteral("command"), command);
-    frame.fields.insert(QStringLiteral("payload"), QJsonArray {wordAt(b, 5), wordAt(b, 7)});
+    if (values) {
+        frame.fields.insert(QStringLiteral("command"), command);
+        frame.fields.insert(QStringLiteral("payload"), QJsonArray {wordAt(b, 5), wordAt(b, 7)});
+    }
     lastQuery = nullptr;
     if (const FrameLayout *query = findQuery(command)) {
         frame.kind = QStringLiteral("query");
-        frame.fields.insert(QStringLiteral("name"), QLatin1String(query->name));
+        if (values)
+            frame.fields.insert(QStringLiteral("name"), QLatin1String(query->name));
         QStringList asks;
         for (const auto slot : {query->word0, query->word1}) {
             if (slot)
@@ -59,7 +64,8 @@ void describeRequest(DecodedFrame &frame, QJsonObject &values, const FrameLayout
             lastQuery = query;
     } else if (const FrameLayout *write = findWrite(command)) {
         frame.kind = QStringLiteral("write");
-        frame.fields.insert(QStringLiteral("name"), QLatin1String(write->name));
+        if (values)
+            frame.fields.insert(QStringLiteral("name"), QLatin1String(write->name));
         const QString what = describeWords(*write, wordAt(b, 5), wordAt(b, 7), values);
         frame.summary = Tr::tr("write %1 (command %2) %3")
                             .arg(QLatin1String(write->name), hexByte(command),
@@ -73,13 +79,15 @@ void describeRequest(DecodedFrame &frame, QJsonObject &values, const FrameLayout
     }
 }
 
-void describeReply(DecodedFrame &frame, QJsonObject &values, const FrameLayout *query)
+void describeReply(DecodedFrame &frame, QJsonObject *values, const FrameLayout *query)
 {
     const QByteArray &b = frame.bytes;
     frame.kind = QStringLiteral("reply");
-    frame.fields.insert(QStringLiteral("payload"), QJsonArray {wordAt(b, 4), wordAt(b, 6)});
+    if (values)
+        frame.fields.insert(QStringLiteral("payload"), QJsonArray {wordAt(b, 4), wordAt(b, 6)});
     if (query) {
-        frame.fields.insert(QStringLiteral("answers"), QLatin1String(query->name));
+        if (values)
+            frame.fields.insert(QStringLiteral("answers"), QLatin1String(query->name));
         frame.summary = Tr::tr("reply to %1: %2")
                             .arg(QLatin1String(query->name),
                                  describeWords(*query, wordAt(b, 4), wordAt(b, 6), values));
@@ -91,8 +99,9 @@ void describeReply(DecodedFrame &frame, QJsonObject &values, const FrameLayout *
 
 } // namespace
 
-QVector<DecodedFrame> decodeStream(const QByteArray &stream)
+QVector<DecodedFrame> decodeStream(const QByteArray &stream, seriallink::Detail detail)
 {
+    const bool withFields = detail == seriallink::Detail::SummaryAndFields;
     const FrameFormat format;
     const FrameLayout *lastQuery = nullptr;
     return seriallink::describeStream(format, stream, [&](const StreamItem &item) {
@@ -102,9 +111,9 @@ QVector<DecodedFrame> decodeStream(const QByteArray &stream)
         frame.checksumValid = item.kind == StreamItem::Kind::Frame;
         QJsonObject values;
         if (item.bytes.size() == kRequestSize) {
-            describeRequest(frame, values, lastQuery);
+            describeRequest(frame, withFields ? &values : nullptr, lastQuery);
         } else {
-            describeReply(frame, values, lastQuery);
+            describeReply(frame, withFields ? &values : nullptr, lastQuery);
             lastQuery = nullptr;
         }
         if (!values.isEmpty())
@@ -116,7 +125,8 @@ QVector<DecodedFrame> decodeStream(const QByteArray &stream)
 QString describeFrame(const QByteArray &frame, const QByteArray &request)
 {
     const bool isReply = frame.size() == kReplySize && request.size() == kRequestSize;
-    const auto frames = decodeStream(isReply ? request + frame : frame);
+    const auto frames =
+        decodeStream(isReply ? request + frame : frame, seriallink::Detail::Summary);
     return frames.isEmpty() ? QString() : frames.last().summary;
 }
 

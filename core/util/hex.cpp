@@ -7,7 +7,20 @@ namespace util {
 
 QString toHex(const QByteArray &bytes)
 {
-    return QString::fromLatin1(bytes.toHex(' ').toUpper());
+    // Written in place: the packet log and the decoder format every frame they show.
+    static constexpr char16_t kDigits[] = u"0123456789ABCDEF";
+    if (bytes.isEmpty())
+        return {};
+    QString text(bytes.size() * 3 - 1, Qt::Uninitialized);
+    char16_t *out = reinterpret_cast<char16_t *>(text.data());
+    for (qsizetype i = 0; i < bytes.size(); ++i) {
+        if (i > 0)
+            *out++ = u' ';
+        const auto byte = quint8(bytes[i]);
+        *out++ = kDigits[byte >> 4];
+        *out++ = kDigits[byte & 0x0F];
+    }
+    return text;
 }
 
 static bool isSeparator(QChar c)
