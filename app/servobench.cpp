@@ -1,4 +1,5 @@
 // servobench: the desktop application's entry point.
+#include "common/startupprobe.h"
 #include "mainwindow.h"
 #include "version.h"
 
@@ -52,6 +53,7 @@ int main(int argc, char *argv[])
 
     MainWindow window;
     window.show();
+    StartupProbe::watchIfAsked(window); // only for bench_startup (SERVOBENCH_STARTUP_PROBE)
     if (parser.isSet(demoRobot))
         window.startArmDemo();
     else if (parser.isSet(demoFeetech))

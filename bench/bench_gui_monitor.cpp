@@ -1,15 +1,15 @@
-// Measures the GUI process while its Monitor page plots six servos at 50 Hz: CPU per second of
+// Measures the GUI process while its Monitor page plots six servos (50 Hz unless --rate): CPU of
 // the whole process and of the GUI thread, and resident memory early and late in the run.
 // The simulated servos run in a separate servosim process, so their work is not counted.
 #include "benchsupport.h"
 #include "feetech/busclient.h"
 #include "feetechgui/monitorpage.h"
 #include "feetechgui/telemetryplot.h"
+#include "util/processmemory.h"
 
 #include <QApplication>
 #include <QDir>
 #include <QElapsedTimer>
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -24,21 +24,15 @@
 namespace {
 
 constexpr int kServos = 6;
-constexpr double kRateHz = 50.0;
+constexpr double kDefaultRateHz = 50.0; // --rate HZ changes it
 constexpr int kWarmUpSeconds = 3;
 constexpr int kMeasureSeconds = 10;
 constexpr int kSecondHalfSeconds = 20; // how long the run goes on before memory is read again
 
 double residentMegabytes()
 {
-    QFile status(QStringLiteral("/proc/self/status"));
-    if (!status.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray &line : status.readAll().split('\n')) {
-        if (line.startsWith("VmRSS:"))
-            return line.mid(6).trimmed().split(' ').first().toDouble() / 1024.0;
-    }
-    return -1;
+    const auto memory = util::processMemory();
+    return memory ? memory->residentMb : -1;
 }
 
 int fail(const QString &message)
@@ -73,6 +67,18 @@ Window measure(int seconds)
 int main(int argc, char **argv)
 {
     QApplication app(argc, argv);
+    // Options: --rate HZ (default 50) and --all-quantities (all six instead of the page's
+    // default three), e.g. --rate 100 --all-quantities for the heavier case.
+    const QStringList options = QCoreApplication::arguments().mid(1);
+    double rateHz = kDefaultRateHz;
+    const qsizetype rateAt = options.indexOf(QStringLiteral("--rate"));
+    if (rateAt >= 0) {
+        bool ok = false;
+        rateHz = options.value(rateAt + 1).toDouble(&ok);
+        if (!ok || rateHz <= 0)
+            return fail(QStringLiteral("--rate needs a positive number of Hz"));
+    }
+    const bool allQuantities = options.contains(QStringLiteral("--all-quantities"));
     const QString servosim =
         QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("../app/servosim"));
     if (!QFileInfo(servosim).isExecutable())
@@ -125,7 +131,10 @@ int main(int argc, char **argv)
     for (int i = 0; i < kServos; ++i)
         all.append(i);
     page.setSelectedServos(all);
-    page.setRate(kRateHz);
+    if (allQuantities)
+        page.setQuantities(QVector<feetech::Quantity>(std::begin(feetech::kAllQuantities),
+                                                      std::end(feetech::kAllQuantities)));
+    page.setRate(rateHz);
     QString error;
     if (!page.start(&error))
         return fail(error);
@@ -143,10 +152,12 @@ int main(int argc, char **argv)
     const QJsonObject report {
         {QStringLiteral("platform"), QGuiApplication::platformName()},
         {QStringLiteral("servos"), kServos},
-        {QStringLiteral("rate_hz"), kRateHz},
+        {QStringLiteral("rate_hz"), rateHz},
         {QStringLiteral("quantities"), quantities},
         {QStringLiteral("plotted_series"), page.plot()->seriesCount()},
         {QStringLiteral("samples_per_s"), stats.samplesPerSecond},
+        {QStringLiteral("telemetry_cycles"), stats.cycles},
+        {QStringLiteral("missed_cycles"), stats.missed},
         {QStringLiteral("seconds_measured"), window.seconds},
         {QStringLiteral("process_cpu_percent_of_one_core"),
          window.processCpuMs / window.seconds / 10.0},
