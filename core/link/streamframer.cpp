@@ -13,16 +13,16 @@ void StreamFramer::append(const QByteArray &bytes)
     // Consumed bytes are dropped here, once per delivery, rather than once per frame: what is
     // left is at most the start of one frame, so the move is short and the capacity is reused.
     if (m_start > 0) {
-        m_buffer.remove(0, m_start);
+        m_buffer.erase(m_buffer.begin(), m_buffer.begin() + m_start);
         m_frameEnd -= m_start;
         m_start = 0;
     }
-    m_buffer.append(bytes.constData(), bytes.size()); // a copy: never share the caller's bytes
+    m_buffer.insert(m_buffer.end(), bytes.cbegin(), bytes.cend());
 }
 
 StreamItem StreamFramer::take(StreamItem::Kind kind, qsizetype length)
 {
-    StreamItem item {kind, QByteArray(m_buffer.constData() + m_start, length), m_bufferOffset};
+    StreamItem item {kind, QByteArray(m_buffer.data() + m_start, length), m_bufferOffset};
     m_start += length;
     m_bufferOffset += length;
     return item;
@@ -30,9 +30,9 @@ StreamItem StreamFramer::take(StreamItem::Kind kind, qsizetype length)
 
 std::optional<StreamItem> StreamFramer::next()
 {
-    if (m_buffer.size() < m_frameEnd)
+    if (qsizetype(m_buffer.size()) < m_frameEnd)
         return std::nullopt; // the frame being received is still short: nothing new to tell
-    const QByteArrayView pending = QByteArrayView(m_buffer).sliced(m_start);
+    const QByteArrayView pending(m_buffer.data() + m_start, qsizetype(m_buffer.size()) - m_start);
     // Garbage is gathered until a byte that could start a frame, so one item covers one run.
     qsizetype garbage = 0;
     while (garbage < pending.size()) {

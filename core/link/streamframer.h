@@ -5,6 +5,7 @@
 #include <QByteArrayView>
 
 #include <optional>
+#include <vector>
 
 namespace seriallink {
 
@@ -62,7 +63,9 @@ private:
 
     const FrameFormat &m_format;
     BadChecksumPolicy m_policy;
-    QByteArray m_buffer;
+    // A plain vector: appending a few bytes and dropping a consumed prefix stay inline, with none
+    // of QByteArray's sharing checks (the framer sees every delivery the port makes).
+    std::vector<char> m_buffer;
     qsizetype m_start = 0; // bytes of m_buffer already handed out, dropped on the next append
     qsizetype m_frameEnd = 0; // end of the frame being received, once its length is known
     qint64 m_bufferOffset = 0;
