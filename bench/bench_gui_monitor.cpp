@@ -157,7 +157,7 @@ int main(int argc, char **argv)
         {QStringLiteral("plotted_series"), page.plot()->seriesCount()},
         {QStringLiteral("samples_per_s"), stats.samplesPerSecond},
         {QStringLiteral("telemetry_cycles"), stats.cycles},
-        {QStringLiteral("missed_cycles"), stats.missed},
+        {QStringLiteral("missed_samples"), stats.missed}, // answers that never came
         {QStringLiteral("seconds_measured"), window.seconds},
         {QStringLiteral("process_cpu_percent_of_one_core"),
          window.processCpuMs / window.seconds / 10.0},
