@@ -65,9 +65,12 @@ private:
     QHash<QString, QJsonDocument> m_documents;
 };
 
-// Three significant figures at most, never an exponent: 0.123, 1.23, 12.3, 123, 1234.
+// Whole numbers as they are; others with three significant figures at most, never an exponent:
+// 0.123, 1.23, 12.3, 123, 1234.
 QString number(double value)
 {
+    if (value == std::floor(value) && std::fabs(value) < 1e15)
+        return QString::number(qint64(value)); // counts stay counts
     const double magnitude = std::fabs(value);
     const int decimals = magnitude >= 100 ? 0 : magnitude >= 10 ? 1 : magnitude >= 1 ? 2 : 3;
     return QString::number(value, 'f', decimals);
