@@ -46,6 +46,8 @@ int FeetechCommand::run(const QStringList &rest)
         {"factory-reset", &FeetechCommand::factoryReset},
         {"reboot", &FeetechCommand::reboot},
         {"monitor", &FeetechCommand::monitor},
+        {"calibrate", &FeetechCommand::calibrate},
+        {"calibration", &FeetechCommand::calibration},
     };
     for (const auto &[name, handler] : kCommands) {
         if (command == QLatin1String(name))
@@ -74,7 +76,8 @@ void FeetechCommand::allowOptions(const QString &what, const QStringList &allowe
         if (!allowed.contains(name) && !kGlobal.contains(name))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
     }
-    for (const QString &flag : {QStringLiteral("thorough"), QStringLiteral("csv")}) {
+    for (const QString &flag :
+         {QStringLiteral("thorough"), QStringLiteral("csv"), QStringLiteral("dry-run")}) {
         if (m_args.flag(flag) && !allowed.contains(flag))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, flag)};
     }
