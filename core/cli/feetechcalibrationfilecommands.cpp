@@ -103,8 +103,6 @@ int FeetechCommand::loadCalibration(const QString &what, const QStringList &oper
         throw UsageError {error};
 
     FeetechDevice device(m_args, m_output);
-    if (!device.open(busBaud()))
-        return fail(device.error());
     QVector<quint8> ids;
     for (const feetech::LeRobotMotor &motor : *motors)
         ids.append(quint8(motor.id));
