@@ -2,6 +2,7 @@
 // positions, a little every tick of the test thread's event loop.
 #pragma once
 
+#include "feetechbus.h"
 #include "sim/simulator.h"
 #include "sim/virtualfeetechservo.h"
 
@@ -111,5 +112,17 @@ private:
     QMap<quint8, Joint> m_joints;
     std::function<bool()> m_ready;
 };
+
+// WRITE instructions the simulated bus logged to `logPath` for servo `id` starting at `address`.
+inline int writesReceived(const QString &logPath, quint8 id, int address)
+{
+    int count = 0;
+    for (const feetech::Packet &packet :
+         feetechRequestsReceived(logPath, feetech::Instruction::Write, id)) {
+        if (!packet.parameters.isEmpty() && quint8(packet.parameters.at(0)) == address)
+            ++count;
+    }
+    return count;
+}
 
 } // namespace testsupport

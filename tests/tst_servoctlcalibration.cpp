@@ -62,18 +62,6 @@ private:
 
     QString path(const QString &name) const { return m_dir.filePath(name); }
 
-    // WRITEs the bus received to servo `id` at `address`.
-    int writesTo(quint8 id, int address) const
-    {
-        int count = 0;
-        for (const feetech::Packet &packet :
-             testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write, id)) {
-            if (!packet.parameters.isEmpty() && quint8(packet.parameters.at(0)) == address)
-                ++count;
-        }
-        return count;
-    }
-
     // Whether the recording has begun: the first SYNC READ of the positions has come in.
     bool recording() const
     {
@@ -204,11 +192,11 @@ private slots:
                                                    "2548, written and verified")),
                  qPrintable(result.out));
         for (const quint8 id : {2, 3, 4}) {
-            QCOMPARE(writesTo(id, kOffsetAddress), 0);
-            QCOMPARE(writesTo(id, kMinimumLimitAddress), 0);
+            QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
+            QCOMPARE(testsupport::writesReceived(logPath(), id, kMinimumLimitAddress), 0);
         }
         QCOMPARE(simulatorValue(99, u"position_offset"), 0);
-        QCOMPARE(writesTo(1, kOffsetAddress), 1);
+        QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 1);
         QString error;
         const auto saved =
             feetech::loadLeRobotCalibration(path(QStringLiteral("arm.json")), &error);
@@ -232,7 +220,7 @@ private slots:
         QVERIFY(hand.done());
         QVERIFY2(result.exitCode == 0, qPrintable(result.err));
         QVERIFY(result.out.contains(QLatin1String("not written: --dry-run")));
-        QCOMPARE(writesTo(1, kOffsetAddress), 0);
+        QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 0);
         QCOMPARE(simulatorValue(1, u"position_offset"), 0);
         QString error;
         QVERIFY2(feetech::loadLeRobotCalibration(out, &error), qPrintable(error));
@@ -328,7 +316,7 @@ private slots:
                                       QStringLiteral("load"), file});
         QCOMPARE(result.exitCode, 1);
         QVERIFY2(result.out.contains(QLatin1String("torque is on")), qPrintable(result.out));
-        QCOMPARE(writesTo(1, kOffsetAddress), 0);
+        QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 0);
     }
 
     void aMalformedFileIsRefusedBeforeAnythingIsSent()

@@ -4,6 +4,7 @@
 #include "common/connectionbar.h"
 #include "common/packetlogdock.h"
 #include "feetech/busclient.h"
+#include "feetechgui/calibrationfiles.h"
 #include "feetechgui/feetechworkspace.h"
 #include "link/packetlogmodel.h"
 #include "model/parametermodel.h"
@@ -195,6 +196,16 @@ void MainWindow::createMenus()
             return;
         statusBar()->showMessage(tr("Torque off: sent to every servo…"));
         m_feetech->allTorqueOff();
+    });
+
+    // Robot: whole-arm work on the scanned Feetech bus.
+    QMenu *robot = menuBar()->addMenu(tr("&Robot"));
+    robot->setObjectName(QStringLiteral("robotMenu"));
+    auto *calibration = new CalibrationActions(robot, m_feetech.get(), this);
+    connect(calibration, &CalibrationActions::problem, this, &MainWindow::showProblem);
+    connect(calibration, &CalibrationActions::message, this, [this](const QString &text) {
+        m_problem->hide();
+        statusBar()->showMessage(text, kStatusMessageMs);
     });
 
     QMenu *view = menuBar()->addMenu(tr("&View"));

@@ -35,7 +35,4 @@ WriteOutcome writeVerified(FeetechDevice &device, const ServoInfo &servo,
 // written, verified, mismatches (and error) of a write; both false when it was not attempted.
 QJsonObject writeJson(const WriteOutcome &outcome, bool attempted);
 
-// A joint name as LeRobot takes it: letters, digits and underscores, a letter first.
-bool isJointName(const QString &name);
-
 } // namespace cli

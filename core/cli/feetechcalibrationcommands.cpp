@@ -12,7 +12,6 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
-#include <QRegularExpression>
 #include <QSocketNotifier>
 #include <QTimer>
 
@@ -97,12 +96,6 @@ QJsonObject writeJson(const WriteOutcome &outcome, bool attempted)
     return object;
 }
 
-bool isJointName(const QString &name)
-{
-    static const QRegularExpression pattern(QStringLiteral("^[A-Za-z][A-Za-z0-9_]{0,63}$"));
-    return pattern.match(name).hasMatch();
-}
-
 // --ids LIST: the joints, each once.
 QVector<quint8> FeetechCommand::jointIds(const QString &what) const
 {
@@ -134,7 +127,7 @@ QStringList FeetechCommand::jointNames(const QVector<quint8> &ids) const
                               .arg(ids.size())};
     for (int i = 0; i < names.size(); ++i) {
         names[i] = names.at(i).trimmed();
-        if (!isJointName(names.at(i)))
+        if (!feetech::isLeRobotMotorName(names.at(i)))
             throw UsageError {Tr::tr("--names: \"%1\" is not a joint name (letters, digits and "
                                      "_, a letter first)")
                                   .arg(names.at(i))};

@@ -8,6 +8,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
+#include <QRegularExpression>
 #include <QSet>
 
 #include <algorithm>
@@ -56,6 +57,12 @@ QString environment(const char *name)
 }
 
 } // namespace
+
+bool isLeRobotMotorName(const QString &name)
+{
+    static const QRegularExpression pattern(QStringLiteral("^[A-Za-z][A-Za-z0-9_]{0,63}$"));
+    return pattern.match(name).hasMatch();
+}
 
 std::optional<QVector<LeRobotMotor>>
 leRobotCalibrationFromJson(const QByteArray &json, const QString &source, QString *error)

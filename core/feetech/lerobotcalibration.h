@@ -27,6 +27,10 @@ struct LeRobotMotor
 constexpr qint32 kLeRobotMaximumOffset = 2047;
 constexpr qint32 kLeRobotMaximumPosition = 4095;
 
+// A motor name as LeRobot's robots use them: ASCII letters, digits and _, a letter first
+// ("shoulder_pan").
+bool isLeRobotMotorName(const QString &name);
+
 // The motors of a file in ID order; nothing and *error naming `source`, the joint and the field
 // when the document is not an object of motors, a field is missing, not a whole number or out of
 // range, range_min is not below range_max, or an ID or name repeats.
