@@ -206,6 +206,30 @@ private slots:
             QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
     }
 
+    void recordingAgainForgetsTheFirstRecording()
+    {
+        startArm();
+        CalibrationWizard wizard(m_client.get());
+        ScriptedHand hand(*m_simulator);
+        hand.place(1, 1000);
+        hand.script(1, {600, 1600, 1000});
+        startRecording(wizard, hand);
+        QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
+        QTRY_COMPARE(wizard.recordings().first().range.maximum(), 1600);
+        click(&wizard, "finishRecordingButton");
+        QVERIFY(wizard.results().first().ok());
+        QVERIFY(!m_client->isMonitoring());
+        click(&wizard, "recordAgainButton");
+        QCOMPARE(wizard.page(), CalibrationWizard::Page::Recording);
+        QVERIFY(m_client->isMonitoring());
+        // The joint rests at 1000 now: that is all the new recording holds.
+        QTRY_VERIFY(wizard.recordings().first().range.hasSamples());
+        QCOMPARE(wizard.recordings().first().range.maximum(), 1000);
+        click(&wizard, "finishRecordingButton");
+        QVERIFY(wizard.results().first().refusal.contains(QLatin1String("never moved")));
+        QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 0);
+    }
+
     void aLoadedFileShowsItsDifferencesAndIsWrittenVerified()
     {
         startArm();

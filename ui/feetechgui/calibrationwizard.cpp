@@ -84,6 +84,7 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
                 return;
             }
             m_stage = Stage::Recording;
+            m_status->clear();
             buildBars();
             showPage(order() == feetech::CalibrationOrder::MiddlePoseFirst ? Page::MiddlePose
                                                                            : Page::Recording);
@@ -92,6 +93,7 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             m_cancel->setText(tr("Close"));
             m_cancel->setEnabled(true);
             m_save->setEnabled(!writtenMotors().isEmpty());
+            m_again->setEnabled(false);
             m_status->setText(allOk ? tr("Every joint was written and verified. Save LeRobot's "
                                          "file if you use LeRobot with this arm.")
                                     : tr("Not every joint was written: see the status column."));
@@ -308,8 +310,8 @@ void CalibrationWizard::finishRecording()
                                  [](const feetech::JointCalibration &r) { return r.ok(); });
     m_write->setEnabled(any);
     m_status->setText(any ? tr("Check the results, then write them to the servos.")
-                          : tr("No joint can be calibrated from this recording: cancel and "
-                               "record again."));
+                          : tr("No joint can be calibrated from this recording: press Record "
+                               "again and move every joint through its range."));
     showPage(Page::Results);
 }
 
@@ -332,10 +334,27 @@ void CalibrationWizard::writeToServos()
         return;
     m_stage = Stage::Writing;
     m_write->setEnabled(false);
+    m_again->setEnabled(false);
     m_cancel->setEnabled(false); // what is half written cannot be taken back
     m_progress->show();
     m_status->setText(tr("Writing to EEPROM and verifying…"));
     m_steps->start(steps);
+}
+
+void CalibrationWizard::recordAgain()
+{
+    if (page() != Page::Results || m_stage != Stage::Choosing)
+        return;
+    QString error;
+    if (!m_client->startMonitor(m_indexes, kRecordingRate, &error))
+        return fail(error);
+    for (feetech::JointRecording &joint : m_recordings)
+        joint.range = {};
+    m_results.clear();
+    m_stage = Stage::Recording;
+    m_status->clear();
+    showPage(Page::Recording);
+    refreshBars();
 }
 
 QVector<feetech::LeRobotMotor> CalibrationWizard::writtenMotors() const

@@ -67,6 +67,7 @@ public:
     void takeMiddlePose();
     void finishRecording();
     void writeToServos();
+    void recordAgain(); // from the results, before anything is written
 
 signals:
     void pageChanged(CalibrationWizard::Page page);
@@ -128,5 +129,6 @@ private:
     QPushButton *m_finish = nullptr;
     QPushButton *m_write = nullptr;
     QPushButton *m_save = nullptr;
+    QPushButton *m_again = nullptr;
     QPushButton *m_cancel = nullptr;
 };

@@ -20,6 +20,7 @@
 #include <QRadioButton>
 #include <QScrollArea>
 #include <QTableWidget>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace {
@@ -163,12 +164,23 @@ void CalibrationWizard::fillJointTable()
     m_jointTable->setRowCount(int(joints.size()));
     for (int row = 0; row < joints.size(); ++row) {
         const ArmJoint &joint = joints.at(row);
+        const feetech::ServoInfo &info = m_client->servo(joint.index).info;
+        const bool calibratable = info.hasTable() && feetech::calibrationLimits(info.table());
         const bool inTemplate = !robot || robot->joint(joint.joint.name) != nullptr;
-        auto *calibrate = checkItem(inTemplate);
+        auto *calibrate = checkItem(calibratable && inTemplate);
         calibrate->setData(Qt::UserRole, joint.index);
+        auto *model =
+            fixedItem(calibratable ? joint.joint.model
+                                   : tr("%1 (no position offset)").arg(joint.joint.model));
+        if (!calibratable) {
+            // An SCS servo (or an unknown model) has no offset to centre its range with.
+            calibrate->setFlags(Qt::ItemIsUserCheckable);
+            calibrate->setToolTip(tr("This servo has no position offset register: it cannot be "
+                                     "calibrated"));
+        }
         m_jointTable->setItem(row, CalibrateColumn, calibrate);
         m_jointTable->setItem(row, IdColumn, fixedItem(QString::number(joint.joint.id)));
-        m_jointTable->setItem(row, ModelColumn, fixedItem(joint.joint.model));
+        m_jointTable->setItem(row, ModelColumn, model);
         m_jointTable->setItem(row, NameColumn, new QTableWidgetItem(joint.joint.name));
         m_jointTable->setItem(row, FullTurnColumn, checkItem(joint.joint.fullTurn));
     }
@@ -199,7 +211,14 @@ QWidget *CalibrationWizard::buildWarningPage()
         tr("I am supporting the arm: switch torque &off"), "torqueOffStartButton",
         tr("Switch torque off on the joints and start"), page);
     connect(m_torqueOff, &QPushButton::clicked, this, &CalibrationWizard::switchTorqueOffAndStart);
+    auto *back = widgethelpers::actionButton(tr("&Back"), "calibrationBackButton",
+                                             tr("Choose the joints again"), page);
+    connect(back, &QPushButton::clicked, this, [this] {
+        if (m_stage == Stage::Choosing)
+            showPage(Page::Joints);
+    });
     auto *buttons = new QHBoxLayout;
+    buttons->addWidget(back);
     buttons->addStretch(1);
     buttons->addWidget(m_torqueOff);
     layout->addLayout(buttons);
@@ -318,7 +337,12 @@ QWidget *CalibrationWizard::buildResultsPage()
                                          page);
     m_save->setEnabled(false);
     connect(m_save, &QPushButton::clicked, this, &CalibrationWizard::chooseFileToSave);
+    m_again =
+        widgethelpers::actionButton(tr("&Record again"), "recordAgainButton",
+                                    tr("Forget this recording and record the ranges again"), page);
+    connect(m_again, &QPushButton::clicked, this, &CalibrationWizard::recordAgain);
     auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_again);
     buttons->addStretch(1);
     buttons->addWidget(m_write);
     buttons->addWidget(m_save);
@@ -342,11 +366,14 @@ void CalibrationWizard::showResults()
         m_resultTable->setItem(row, MaximumColumn, number(result.maximumLimit));
         auto *status = new QTableWidgetItem(
             result.ok() ? tr("To write") : tr("Refused, nothing written: %1").arg(result.refusal));
+        status->setToolTip(status->text());
         if (!result.ok())
             status->setForeground(refused);
         m_resultTable->setItem(row, StatusColumn, status);
     }
     m_resultTable->resizeColumnsToContents();
     m_resultTable->horizontalHeader()->setSectionResizeMode(StatusColumn, QHeaderView::Stretch);
-    m_resultTable->resizeRowsToContents();
+    // Once the stretched column has its width, long refusals wrap onto more lines.
+    QTimer::singleShot(0, m_resultTable,
+                       [table = m_resultTable] { table->resizeRowsToContents(); });
 }
