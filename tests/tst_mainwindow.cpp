@@ -22,7 +22,8 @@ private slots:
             menus.append(action->text());
         QCOMPARE(menus,
                  (QStringList {QStringLiteral("&File"), QStringLiteral("&Link"),
-                               QStringLiteral("&View"), QStringLiteral("&Help")}));
+                               QStringLiteral("&Robot"), QStringLiteral("&View"),
+                               QStringLiteral("&Help")}));
         auto *state = window.findChild<QLabel *>(QStringLiteral("connectionState"));
         QVERIFY(state);
         QCOMPARE(state->text(), QStringLiteral("Not connected"));

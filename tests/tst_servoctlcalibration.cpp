@@ -12,6 +12,8 @@
 #include <QJsonObject>
 #include <QtTest>
 
+#include <unistd.h>
+
 using testsupport::runServoctl;
 using testsupport::ScriptedHand;
 
@@ -256,6 +258,19 @@ private slots:
             servoctl(QStringList {QStringLiteral("feetech")} + arguments.split(u' '));
         QCOMPARE(result.exitCode, 2);
         QVERIFY2(result.err.contains(message), qPrintable(result.err));
+        QVERIFY(testsupport::feetechFramesReceived(logPath()).isEmpty());
+    }
+
+    void withoutATerminalTheRecordingNeedsADuration()
+    {
+        if (isatty(STDIN_FILENO))
+            QSKIP("standard input is a terminal here: Enter can end the recording");
+        startArm(1);
+        const auto result = servoctl({QStringLiteral("feetech"), QStringLiteral("calibrate"),
+                                      QStringLiteral("--ids"), QStringLiteral("1"),
+                                      QStringLiteral("--out"), path(QStringLiteral("f.json"))});
+        QCOMPARE(result.exitCode, 2);
+        QVERIFY2(result.err.contains(QLatin1String("needs --duration S")), qPrintable(result.err));
         QVERIFY(testsupport::feetechFramesReceived(logPath()).isEmpty());
     }
 

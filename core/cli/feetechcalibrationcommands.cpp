@@ -192,6 +192,10 @@ int FeetechCommand::calibrate(const QString &what, const QStringList &operands)
             Tr::tr("%1 needs --out FILE: the LeRobot calibration file to save").arg(what)};
     const QString out = m_args.value(QStringLiteral("out"));
     checkFolder(out);
+    if (!duration && !isTerminal(stdin))
+        throw UsageError {Tr::tr("%1 needs --duration S when standard input is not a terminal "
+                                 "(Enter on a terminal ends the recording otherwise)")
+                              .arg(what)};
     const bool dryRun = m_args.flag(QStringLiteral("dry-run"));
 
     FeetechDevice device(m_args, m_output);
@@ -313,8 +317,8 @@ int FeetechCommand::calibrate(const QString &what, const QStringList &operands)
     return ExitOk;
 }
 
-// Streams the joints' positions into their recorders until --duration has passed, or Enter (a
-// line, or the end, of standard input). A servo that misses cycles is marked lost. False, once
+// Streams the joints' positions into their recorders until --duration has passed, or Enter on
+// the terminal. A servo that misses cycles is marked lost. False, once
 // the failure is printed, when the link went down or the user interrupted.
 bool FeetechCommand::recordJoints(FeetechDevice &device, const QVector<ServoInfo> &servos,
                                   QVector<feetech::JointRecording> &joints,
