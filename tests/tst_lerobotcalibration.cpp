@@ -58,6 +58,10 @@ private slots:
         QTest::newRow("not JSON") << QByteArray("{") << QStringLiteral("not valid JSON");
         QTest::newRow("array") << QByteArray("[]") << QStringLiteral("not a JSON object");
         QTest::newRow("empty") << QByteArray("{}") << QStringLiteral("names no motor");
+        QTest::newRow("bad name") << QByteArray(
+            R"({"grip per": {"id": 6, "drive_mode": 0, "homing_offset": 0,
+                 "range_min": 0, "range_max": 10}})")
+                                  << QStringLiteral("motor \"grip per\": not a motor name");
         QTest::newRow("motor not object")
             << QByteArray(R"({"gripper": 5})") << QStringLiteral("motor \"gripper\": not an");
         QTest::newRow("missing field")

@@ -89,6 +89,10 @@ leRobotCalibrationFromJson(const QByteArray &json, const QString &source, QStrin
         const QString name = it.key();
         if (name.trimmed().isEmpty())
             return fail(Tr::tr("a motor has an empty name"));
+        if (!isLeRobotMotorName(name))
+            return fail(Tr::tr("motor \"%1\": not a motor name (ASCII letters, digits and _, a "
+                               "letter first)")
+                            .arg(name));
         if (!it.value().isObject())
             return fail(Tr::tr("motor \"%1\": not an object of id, drive_mode, homing_offset, "
                                "range_min and range_max")
