@@ -35,17 +35,26 @@ int main(int argc, char *argv[])
         QApplication::translate("main",
                                 "Start the simulated servos, connect to the Feetech bus "
                                 "and scan it."));
+    const QCommandLineOption demoRobot(
+        QStringLiteral("demo-robot"),
+        QApplication::translate("main",
+                                "Start a simulated SO-101 arm (six STS3215 at IDs 1-6, set up), "
+                                "connect to it and scan it; the Simulator dock turns its joints "
+                                "by hand."));
     const QCommandLineOption port(QStringList {QStringLiteral("port")},
                                   QApplication::translate("main", "Connect to PORT at start."),
                                   QStringLiteral("PORT"));
     parser.addOption(demo);
     parser.addOption(demoFeetech);
+    parser.addOption(demoRobot);
     parser.addOption(port);
     parser.process(app);
 
     MainWindow window;
     window.show();
-    if (parser.isSet(demoFeetech))
+    if (parser.isSet(demoRobot))
+        window.startArmDemo();
+    else if (parser.isSet(demoFeetech))
         window.startFeetechDemo();
     else if (parser.isSet(demo))
         window.startDemo();

@@ -1,13 +1,16 @@
 // servosim: simulated PTK servo or Feetech bus on a pseudo-terminal, for users and tests.
+#include "sim/simcommands.h"
 #include "sim/simulator.h"
 #include "util/unixsignals.h"
 #include "version.h"
 
 #include <QCoreApplication>
+#include <QSocketNotifier>
 #include <QTextStream>
 
 #include <csignal>
 #include <cstdio>
+#include <unistd.h>
 
 int main(int argc, char *argv[])
 {
@@ -51,6 +54,32 @@ int main(int argc, char *argv[])
     }
     out << "ready " << simulator->linkPath() << '\n';
     out.flush();
+
+    // Commands on standard input, one reply line each; at its end the simulator runs on.
+    QObject::connect(simulator.get(), &sim::Simulator::handNote, &app, [&](const QString &note) {
+        err << "servosim: " << note << '\n';
+        err.flush();
+    });
+    QByteArray pending;
+    QSocketNotifier input(STDIN_FILENO, QSocketNotifier::Read);
+    QObject::connect(&input, &QSocketNotifier::activated, &app, [&] {
+        char buffer[4096];
+        const ssize_t count = ::read(STDIN_FILENO, buffer, sizeof buffer);
+        if (count <= 0) {
+            input.setEnabled(false);
+            return;
+        }
+        pending.append(buffer, qsizetype(count));
+        for (qsizetype end = pending.indexOf('\n'); end >= 0; end = pending.indexOf('\n')) {
+            const QString line = QString::fromUtf8(pending.left(end));
+            pending.remove(0, end + 1);
+            const QString reply = sim::runSimulatorCommand(line, *simulator);
+            if (!reply.isEmpty()) {
+                out << reply << '\n';
+                out.flush();
+            }
+        }
+    });
     const int status = QCoreApplication::exec();
     simulator->stop(); // removes the link
     return status;

@@ -32,6 +32,18 @@ inline feetech::MotionTiming quickMotionTiming()
     return timing;
 }
 
+// A sweep of servo `index` between 1800 and 2300 long enough to be running whenever a test
+// looks (cancel it when done).
+inline feetech::MotionPlan longSweep(int index)
+{
+    feetech::MotionPlan plan;
+    plan.index = index;
+    plan.from = 1800;
+    plan.to = 2300;
+    plan.legs = feetech::MotionPlan::kMaximumLegs;
+    return plan;
+}
+
 // Servos with IDs 1, 2, ... of `models`, all at `baud`.
 inline QVector<sim::FeetechServoSpec> servosAt(qint32 baud,
                                                std::initializer_list<QStringView> models)
@@ -52,6 +64,23 @@ inline sim::SimulatorOptions feetechBusOptions(const QTemporaryDir &dir, const Q
     options.logPath = dir.filePath(name + QStringLiteral(".log"));
     options.servos = std::move(servos);
     return options;
+}
+
+// Runs `work` on the simulated Feetech bus in the simulator's thread; what it returns.
+template<typename Work>
+auto onSimulatedBus(sim::SimulatorThread &simulator, Work work)
+{
+    decltype(work(std::declval<sim::VirtualFeetechBus &>())) result {};
+    simulator.call([&](sim::Simulator &running) { result = work(*running.feetechBus()); });
+    return result;
+}
+
+// The present position of the servo at `index` on a simulated bus.
+inline int simulatedPosition(sim::SimulatorThread &simulator, int index)
+{
+    return onSimulatedBus(simulator, [index](sim::VirtualFeetechBus &bus) {
+        return bus.servo(index).value(u"present_position");
+    });
 }
 
 // Connects `client` to `link` at 1 Mbps and scans IDs up to `lastId` there: whether it was
@@ -155,6 +184,17 @@ protected:
     }
 
     QString logPath() const { return m_dir.filePath(QStringLiteral("bus.log")); }
+
+    // Writes `contents` to `name` in the test's directory: its path (empty when it failed).
+    QString writeTestFile(const QString &name, const QByteArray &contents) const
+    {
+        const QString path = m_dir.filePath(name);
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+            return {};
+        file.write(contents);
+        return path;
+    }
 
     // Register `key` of simulated servo `id`, looked at in the simulator's thread; -1 without
     // that servo.

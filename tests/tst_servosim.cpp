@@ -1,4 +1,6 @@
-// Tests the servosim executable: ready line, link lifetime, signals and argument errors.
+// Tests the servosim executable: ready line, link lifetime, signals, argument errors, a --robot
+// arm answering a scan, --hand sweeps and commands on standard input.
+#include "feetechbus.h"
 #include "simclient.h"
 #include "specvectors.h"
 
@@ -13,6 +15,30 @@
 namespace {
 
 const QString kServosim = QStringLiteral(SERVOBENCH_BINARY_DIR "/app/servosim");
+
+// Sends one command line to servosim's standard input and returns its reply line (empty when
+// none came within 5 s).
+QString command(QProcess &process, const QByteArray &line)
+{
+    process.write(line + '\n');
+    if (!QTest::qWaitFor([&] { return process.canReadLine(); }, 5000))
+        return {};
+    return QString::fromUtf8(process.readLine()).trimmed();
+}
+
+// Starts servosim with `arguments` and waits for its ready line.
+bool startServosim(QProcess &process, const QStringList &arguments)
+{
+    process.start(kServosim, arguments);
+    if (!process.waitForStarted() || !QTest::qWaitFor([&] { return process.canReadLine(); }, 5000))
+        return false;
+    return process.readLine().startsWith("ready ");
+}
+
+quint16 littleEndianWord(const QByteArray &bytes, int at)
+{
+    return quint16(quint8(bytes.at(at)) | (quint8(bytes.at(at + 1)) << 8));
+}
 
 } // namespace
 
@@ -97,6 +123,106 @@ private slots:
         QVERIFY(process.waitForFinished(5000));
     }
 
+    void robotSo101AnswersAScanAtIds1To6WithTheTemplatesSettings()
+    {
+        const QString link = m_dir.filePath(QStringLiteral("so101"));
+        QProcess process;
+        QVERIFY(startServosim(process,
+                              {QStringLiteral("feetech"), QStringLiteral("--link"), link,
+                               QStringLiteral("--robot"), QStringLiteral("so101")}));
+        feetech::BusClient client;
+        const int gripper = testsupport::connectScanAndRead(client, link, 10, 6);
+        QVERIFY(gripper >= 0);
+        QCOMPARE(client.idsInUse(), (QVector<int> {1, 2, 3, 4, 5, 6}));
+        QCOMPARE(client.servo(gripper).info.model.name, QStringLiteral("STS3215"));
+        model::ParameterModel *settings = client.parameters(gripper);
+        QCOMPARE(settings->deviceValue(QStringLiteral("max_torque")), std::optional<qint64>(500));
+        QCOMPARE(settings->deviceValue(QStringLiteral("p_gain")), std::optional<qint64>(16));
+        QCOMPARE(settings->deviceValue(QStringLiteral("d_gain")), std::optional<qint64>(32));
+        QCOMPARE(settings->deviceValue(QStringLiteral("torque_enable")), std::optional<qint64>(0));
+        client.disconnectFrom();
+        process.terminate();
+        QVERIFY(process.waitForFinished(5000));
+    }
+
+    void plugAndUnplugOnStandardInputAreSeenByASerialClient()
+    {
+        const QString link = m_dir.filePath(QStringLiteral("plug"));
+        QProcess process;
+        QVERIFY(startServosim(process,
+                              {QStringLiteral("feetech"), QStringLiteral("--link"), link,
+                               QStringLiteral("--servo"), QStringLiteral("1:STS3215")}));
+        testsupport::PortClient client;
+        QVERIFY(client.open(link, 1000000));
+        QCOMPARE(client.exchange(feetech::ping(1), 6), feetech::status(1, 0));
+        QVERIFY(client.exchange(feetech::ping(2), 6, 300).isEmpty());
+
+        QCOMPARE(command(process, "plug 2:STS3215"),
+                 QStringLiteral("ok plugged #2 (ID 2): STS3215 at 1000000 bps"));
+        QCOMPARE(client.exchange(feetech::ping(2), 6), feetech::status(2, 0));
+        const QString list = command(process, "list");
+        QVERIFY2(list.startsWith(QLatin1String("ok #1 id=1 "))
+                     && list.contains(QLatin1String("#2 id=2 ")),
+                 qPrintable(list));
+
+        QCOMPARE(command(process, "unplug 2"), QStringLiteral("ok unplugged #2 (ID 2)"));
+        QVERIFY(client.exchange(feetech::ping(2), 6, 300).isEmpty());
+        QVERIFY(command(process, "wiggle").startsWith(QLatin1String("error unknown command")));
+
+        // The end of standard input is not the end of the simulator.
+        process.closeWriteChannel();
+        QCOMPARE(client.exchange(feetech::ping(1), 6), feetech::status(1, 0));
+        QCOMPARE(process.state(), QProcess::Running);
+        process.terminate();
+        QVERIFY(process.waitForFinished(5000));
+        QCOMPARE(process.exitCode(), 0);
+    }
+
+    void handOptionSweepsAJointTheClientSeesMove()
+    {
+        const QString link = m_dir.filePath(QStringLiteral("hand"));
+        QProcess process;
+        QVERIFY(startServosim(process,
+                              {QStringLiteral("feetech"), QStringLiteral("--link"), link,
+                               QStringLiteral("--servo"), QStringLiteral("1:STS3215"),
+                               QStringLiteral("--hand"), QStringLiteral("1:1000:3000:1")}));
+        testsupport::PortClient client;
+        QVERIFY(client.open(link, 1000000));
+        // Present position, address 56: it goes up past 2500 and comes back under 1500.
+        const auto position = [&] {
+            const QByteArray reply = client.exchange(feetech::read(1, 56, 2), 8);
+            return reply.size() >= 8 ? int(littleEndianWord(reply, 5)) : -1;
+        };
+        QVERIFY(QTest::qWaitFor([&] { return position() > 2500; }, 5000));
+        QVERIFY(QTest::qWaitFor([&] { return position() < 1500 && position() >= 1000; }, 5000));
+        QCOMPARE(command(process, "release"), QStringLiteral("ok the hand let go of 1 sweep(s)"));
+        process.terminate();
+        QVERIFY(process.waitForFinished(5000));
+    }
+
+    void twoServosShareAnIdOnlyWhenAllowed()
+    {
+        const QString link = m_dir.filePath(QStringLiteral("twins"));
+        const QStringList twins {
+            QStringLiteral("feetech"),  QStringLiteral("--link"),    link,
+            QStringLiteral("--servo"),  QStringLiteral("1:STS3215"), QStringLiteral("--servo"),
+            QStringLiteral("1:STS3215")};
+        QProcess refused;
+        refused.start(kServosim, twins);
+        QVERIFY(refused.waitForFinished(5000));
+        QCOMPARE(refused.exitCode(), 2);
+        QVERIFY(refused.readAllStandardError().contains("--allow-shared-ids"));
+
+        QProcess process;
+        QVERIFY(startServosim(process, twins + QStringList {QStringLiteral("--allow-shared-ids")}));
+        const QString list = command(process, "list");
+        QVERIFY2(list.contains(QLatin1String("#1 id=1 "))
+                     && list.contains(QLatin1String("#2 id=1 ")),
+                 qPrintable(list));
+        process.terminate();
+        QVERIFY(process.waitForFinished(5000));
+    }
+
     void badArgumentsExitTwoWithAMessage_data()
     {
         QTest::addColumn<QStringList>("arguments");
@@ -128,6 +254,22 @@ private slots:
         QTest::newRow("bad baud") << QStringList {QStringLiteral("feetech"), l, link,
                                                   QStringLiteral("--servo"),
                                                   QStringLiteral("1:STS3215@12345")};
+        QTest::newRow("unknown robot") << QStringList {
+            QStringLiteral("feetech"), l, link, QStringLiteral("--robot"), QStringLiteral("koch")};
+        QTest::newRow("bad hand") << QStringList {QStringLiteral("feetech"),
+                                                  l,
+                                                  link,
+                                                  QStringLiteral("--robot"),
+                                                  QStringLiteral("so101"),
+                                                  QStringLiteral("--hand"),
+                                                  QStringLiteral("1:0:9999:1")};
+        QTest::newRow("hand on a missing id") << QStringList {QStringLiteral("feetech"),
+                                                              l,
+                                                              link,
+                                                              QStringLiteral("--robot"),
+                                                              QStringLiteral("so101"),
+                                                              QStringLiteral("--hand"),
+                                                              QStringLiteral("9:0:100:1")};
     }
     void badArgumentsExitTwoWithAMessage()
     {

@@ -3,9 +3,12 @@
 
 #include "common/connectionbar.h"
 #include "common/packetlogdock.h"
+#include "common/simulatordock.h"
 #include "feetech/busclient.h"
 #include "feetechgui/calibrationfiles.h"
 #include "feetechgui/feetechworkspace.h"
+#include "feetechgui/robotactions.h"
+#include "feetechgui/setupwizard.h"
 #include "link/packetlogmodel.h"
 #include "model/parametermodel.h"
 #include "ptk/ptkclient.h"
@@ -140,6 +143,8 @@ MainWindow::~MainWindow()
     // The pages talk to the clients until they are gone, and the clients are members: the
     // pages go first (QWidget would delete them only after the members).
     delete m_pages;
+    // It looks at the demo's simulators, which are members too.
+    delete m_simulatorDock;
 }
 
 void MainWindow::createMenus()
@@ -198,9 +203,28 @@ void MainWindow::createMenus()
         m_feetech->allTorqueOff();
     });
 
-    // Robot: whole-arm work on the scanned Feetech bus.
+    // &Robot: work on a whole arm. Set up motors finds each servo itself, so it needs only an
+    // open Feetech port, no scan.
     QMenu *robot = menuBar()->addMenu(tr("&Robot"));
     robot->setObjectName(QStringLiteral("robotMenu"));
+    QAction *setUpMotors = robot->addAction(tr("Set up &motors…"));
+    setUpMotors->setObjectName(QStringLiteral("setUpMotorsAction"));
+    setUpMotors->setEnabled(false);
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, setUpMotors,
+            [this, setUpMotors] { setUpMotors->setEnabled(m_feetech->isConnected()); });
+    connect(setUpMotors, &QAction::triggered, this, [this] {
+        auto *wizard = findChild<SetupWizard *>();
+        if (!wizard)
+            wizard = new SetupWizard(m_feetech.get(), this);
+        wizard->show();
+        wizard->raise();
+        wizard->activateWindow();
+    });
+
+    m_feetechWorkspace->robotActions()->addTo(robot);
+
+    // Calibrating the arm, and its LeRobot calibration files: they need a scanned bus.
+    robot->addSeparator();
     auto *calibration = new CalibrationActions(robot, m_feetech.get(), this);
     connect(calibration, &CalibrationActions::problem, this, &MainWindow::showProblem);
     connect(calibration, &CalibrationActions::message, this, [this](const QString &text) {
@@ -208,9 +232,9 @@ void MainWindow::createMenus()
         statusBar()->showMessage(text, kStatusMessageMs);
     });
 
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    view->addAction(m_packetLog->toggleViewAction());
-    view->addAction(m_connectionBar->toggleViewAction());
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(m_packetLog->toggleViewAction());
+    m_viewMenu->addAction(m_connectionBar->toggleViewAction());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *about = help->addAction(tr("&About ServoBench"), this, &MainWindow::showAbout);
@@ -242,6 +266,19 @@ void MainWindow::startFeetechDemo()
     m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
     m_connectionBar->setPort(ConnectionBar::kSimulatedFeetechPort);
     connectRequested();
+    scanOnceConnected();
+}
+
+void MainWindow::startArmDemo()
+{
+    m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
+    m_connectionBar->setPort(ConnectionBar::kSimulatedArmPort);
+    connectRequested();
+    scanOnceConnected();
+}
+
+void MainWindow::scanOnceConnected()
+{
     // Scan as soon as the port is open, so the tree fills by itself.
     auto *once = new QObject(this);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, once,
@@ -256,6 +293,24 @@ void MainWindow::startFeetechDemo()
                 m_feetechWorkspace->startScan(options);
                 once->deleteLater();
             });
+}
+
+void MainWindow::showSimulatorDock(bool arm)
+{
+    sim::SimulatorThread *simulator = arm ? m_demo->armSimulator() : m_demo->feetechSimulator();
+    if (!m_simulatorDock) {
+        m_simulatorDock = new SimulatorDock(this);
+        addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
+        // A tab beside the packet log: the pages above keep their height.
+        tabifyDockWidget(m_packetLog, m_simulatorDock);
+        m_viewMenu->addAction(m_simulatorDock->toggleViewAction());
+        connect(m_simulatorDock, &SimulatorDock::message, this,
+                [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    }
+    m_simulatorDock->setSimulator(simulator);
+    m_simulatorDock->toggleViewAction()->setEnabled(true);
+    m_simulatorDock->show();
+    m_simulatorDock->raise();
 }
 
 void MainWindow::showProtocol(bool feetech)
@@ -289,19 +344,32 @@ void MainWindow::connectRequested()
         showProblem(tr("Choose a serial port first."));
         return;
     }
-    if (port == ConnectionBar::kSimulatedPtkPort || port == ConnectionBar::kSimulatedFeetechPort) {
-        const bool feetechBus = port == ConnectionBar::kSimulatedFeetechPort;
+    const bool arm = port == ConnectionBar::kSimulatedArmPort;
+    const bool feetechBus = arm || port == ConnectionBar::kSimulatedFeetechPort;
+    if (feetechBus || port == ConnectionBar::kSimulatedPtkPort) {
         m_connectionBar->setProtocol(feetechBus ? ConnectionBar::Protocol::Feetech
                                                 : ConnectionBar::Protocol::Ptk);
         if (!m_demo)
             m_demo = std::make_unique<sim::DemoServos>();
         QString error;
-        port = feetechBus ? m_demo->feetechPort(&error) : m_demo->ptkPort(&error);
+        port = arm       ? m_demo->armPort(&error)
+            : feetechBus ? m_demo->feetechPort(&error)
+                         : m_demo->ptkPort(&error);
         if (port.isEmpty()) {
             showProblem(tr("The simulated servos could not start: %1").arg(error));
             return;
         }
-        m_portShown = feetechBus ? tr("simulated Feetech bus") : tr("simulated PTK servo");
+        m_portShown = arm ? tr("simulated SO-101 arm")
+            : feetechBus  ? tr("simulated Feetech bus")
+                          : tr("simulated PTK servo");
+    }
+    // The Simulator dock goes with a simulated Feetech bus; a PTK servo has nothing to plug.
+    if (feetechBus) {
+        showSimulatorDock(arm);
+    } else if (m_simulatorDock) {
+        m_simulatorDock->setSimulator(nullptr);
+        m_simulatorDock->hide();
+        m_simulatorDock->toggleViewAction()->setEnabled(false);
     }
     const qint32 baud = m_connectionBar->baud();
     if (baud <= 0) {

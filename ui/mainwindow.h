@@ -15,8 +15,10 @@ class PacketLogDock;
 class ParameterPage;
 class PtkWorkspace;
 class QAction;
+class QMenu;
 class QLabel;
 class QTimer;
+class SimulatorDock;
 
 namespace ptk {
 class Client;
@@ -40,6 +42,8 @@ public:
     void startDemo();
     // Connects to the in-process simulated Feetech bus and scans it (--demo-feetech).
     void startFeetechDemo();
+    // Connects to an in-process simulated SO-101 arm and scans it (--demo-robot).
+    void startArmDemo();
     void connectToPort(const QString &port);
 
     ptk::Client *ptkClient() const { return m_ptk.get(); }
@@ -49,6 +53,8 @@ public:
     PtkWorkspace *ptkWorkspace() const { return m_ptkWorkspace; }
     ParameterPage *ptkPage() const;
     PacketLogDock *packetLog() const { return m_packetLog; }
+    // Null until a simulated Feetech bus or arm was connected to.
+    SimulatorDock *simulatorDock() const { return m_simulatorDock; }
 
     // The PTK workspace's, for the command line and tests.
     void loadProfile(const QString &path);
@@ -70,6 +76,8 @@ private:
     void showProtocol(bool feetech);
     void updateTorqueOffAction(); // enabled while a Feetech bus is connected
     void updatePollRate();
+    void scanOnceConnected();
+    void showSimulatorDock(bool arm); // the demo's bus or arm; hidden for anything else
 
     std::unique_ptr<sim::DemoServos> m_demo;
     std::unique_ptr<ptk::Client> m_ptk;
@@ -82,6 +90,8 @@ private:
     QList<QAction *> m_ptkActions; // Link menu entries that only mean something for PTK
     bool m_feetechActive = false;
     PacketLogDock *m_packetLog = nullptr;
+    SimulatorDock *m_simulatorDock = nullptr;
+    QMenu *m_viewMenu = nullptr;
     QLabel *m_problem = nullptr; // a banner above the page: why the last action failed
     QLabel *m_connectionState = nullptr;
     QLabel *m_pollRate = nullptr;

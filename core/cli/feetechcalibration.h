@@ -1,11 +1,11 @@
-// What servoctl's calibration commands share: reading and writing a joint's calibration
-// registers with read-back.
+// What servoctl's calibration commands share: reading a joint's calibration registers, and
+// reporting their verified writes.
 #pragma once
 
 #include "cli/feetechdevice.h"
-#include "model/parametermodel.h"
 
 #include <QHash>
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QStringList>
 
@@ -17,22 +17,28 @@ namespace cli {
 std::optional<QHash<QString, qint32>> readCalibrationRegisters(FeetechDevice &device,
                                                                const ServoInfo &servo);
 
-struct WriteOutcome
+// What FeetechCommand::writeVerified came to, for the calibration commands' reports.
+template<typename Programmed>
+bool isVerified(const Programmed &outcome)
 {
-    QString error; // the write could not be done (nothing or not everything was written)
-    QStringList mismatches; // written, but read back differently
-    bool ok() const { return error.isEmpty() && mismatches.isEmpty(); }
-    QString problem() const
-    {
-        return error.isEmpty() ? mismatches.join(QStringLiteral("; ")) : error;
-    }
-};
-
-// Writes `items` through the session's write (EEPROM ones unlocked, written, locked again) and
-// compares what the servo reads back.
-WriteOutcome writeVerified(FeetechDevice &device, const ServoInfo &servo,
-                           const QVector<model::WriteItem> &items);
-// written, verified, mismatches (and error) of a write; both false when it was not attempted.
-QJsonObject writeJson(const WriteOutcome &outcome, bool attempted);
+    return outcome.failure.isEmpty() && outcome.mismatches.isEmpty();
+}
+template<typename Programmed>
+QString problemText(const Programmed &outcome)
+{
+    return outcome.failure.isEmpty() ? outcome.described.join(QStringLiteral("; "))
+                                     : outcome.failure;
+}
+// written, verified, mismatches (and error); both false when the write was not attempted.
+template<typename Programmed>
+QJsonObject writeJson(const Programmed &outcome, bool attempted)
+{
+    QJsonObject object {{QStringLiteral("written"), attempted && outcome.failure.isEmpty()},
+                        {QStringLiteral("verified"), attempted && isVerified(outcome)},
+                        {QStringLiteral("mismatches"), outcome.mismatches}};
+    if (!outcome.failure.isEmpty())
+        object.insert(QStringLiteral("error"), outcome.failure);
+    return object;
+}
 
 } // namespace cli

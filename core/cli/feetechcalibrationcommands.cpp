@@ -66,36 +66,6 @@ std::optional<QHash<QString, qint32>> readCalibrationRegisters(FeetechDevice &de
     return valuesByKey(decodeMemory(servo.table(), *memory));
 }
 
-WriteOutcome writeVerified(FeetechDevice &device, const ServoInfo &servo,
-                           const QVector<model::WriteItem> &items)
-{
-    WriteOutcome outcome;
-    const auto writes = feetech::encodeWrites(servo.table(), items, &outcome.error);
-    if (!writes)
-        return outcome;
-    Memory readBack;
-    const auto result = device.operate(
-        [&device, &servo, writes] { device.session().write(servo, *writes); }, &readBack);
-    if (!result || !result->ok) {
-        outcome.error = result ? result->message : device.error();
-        return outcome;
-    }
-    outcome.mismatches =
-        feetech::calibrationMismatches(items, valuesByKey(decodeMemory(servo.table(), readBack)));
-    return outcome;
-}
-
-QJsonObject writeJson(const WriteOutcome &outcome, bool attempted)
-{
-    QJsonObject object {
-        {QStringLiteral("written"), attempted && outcome.error.isEmpty()},
-        {QStringLiteral("verified"), attempted && outcome.ok()},
-        {QStringLiteral("mismatches"), QJsonArray::fromStringList(outcome.mismatches)}};
-    if (!outcome.error.isEmpty())
-        object.insert(QStringLiteral("error"), outcome.error);
-    return object;
-}
-
 // --ids LIST: the joints, each once.
 QVector<quint8> FeetechCommand::jointIds(const QString &what) const
 {
@@ -218,13 +188,11 @@ int FeetechCommand::calibrate(const QString &what, const QStringList &operands)
     }
     // Torque off (never a move): the joints are turned by hand.
     for (const ServoInfo &servo : std::as_const(*servos)) {
-        const WriteOutcome off =
-            writeVerified(device, servo, {{QStringLiteral("torque_enable"), 0}});
-        if (!off.ok())
+        const Programmed off = writeVerified(device, servo, {{QStringLiteral("torque_enable"), 0}});
+        if (!isVerified(off))
             return fail(Tr::tr("servo %1: torque could not be switched off: %2")
                             .arg(servo.id)
-                            .arg(off.error.isEmpty() ? off.mismatches.join(QStringLiteral("; "))
-                                                     : off.error));
+                            .arg(problemText(off)));
     }
     if (!recordJoints(device, *servos, joints, duration))
         return ExitDeviceFailure;
@@ -259,7 +227,7 @@ int FeetechCommand::calibrate(const QString &what, const QStringList &operands)
         report.insert(QStringLiteral("offset"), result.offset);
         report.insert(QStringLiteral("min_limit"), result.minimumLimit);
         report.insert(QStringLiteral("max_limit"), result.maximumLimit);
-        WriteOutcome outcome;
+        Programmed outcome;
         if (!dryRun)
             outcome = writeVerified(device, servos->at(i),
                                     feetech::calibrationWrites(result.offset, result.minimumLimit,
@@ -277,16 +245,13 @@ int FeetechCommand::calibrate(const QString &what, const QStringList &operands)
                                 .arg(result.maximumLimit);
             if (dryRun)
                 m_output.out << Tr::tr(" (not written: --dry-run)");
-            else if (outcome.ok())
+            else if (isVerified(outcome))
                 m_output.out << Tr::tr(", written and verified");
             else
-                m_output.out << Tr::tr(", NOT verified: %1")
-                                    .arg(outcome.error.isEmpty()
-                                             ? outcome.mismatches.join(QStringLiteral("; "))
-                                             : outcome.error);
+                m_output.out << Tr::tr(", NOT verified: %1").arg(problemText(outcome));
             m_output.out << '\n';
         }
-        if (!outcome.ok()) {
+        if (!dryRun && !isVerified(outcome)) {
             allDone = false;
             continue;
         }

@@ -150,16 +150,16 @@ int FeetechCommand::loadCalibration(const QString &what, const QStringList &oper
             line = Tr::tr("%1: %2; refused, nothing written: %3")
                        .arg(joint, described.join(QStringLiteral(", ")), refusal);
         } else {
-            const WriteOutcome outcome = writeVerified(device, servo, changes);
+            const Programmed outcome = writeVerified(device, servo, changes);
             const QJsonObject written = writeJson(outcome, true);
             for (auto it = written.begin(); it != written.end(); ++it)
                 report.insert(it.key(), it.value());
-            allDone = allDone && outcome.ok();
-            line = outcome.ok()
+            allDone = allDone && isVerified(outcome);
+            line = isVerified(outcome)
                 ? Tr::tr("%1: %2; written and verified")
                       .arg(joint, described.join(QStringLiteral(", ")))
                 : Tr::tr("%1: %2; NOT verified: %3")
-                      .arg(joint, described.join(QStringLiteral(", ")), outcome.problem());
+                      .arg(joint, described.join(QStringLiteral(", ")), problemText(outcome));
         }
         reports.append(report);
         if (!m_output.json)

@@ -5,9 +5,11 @@
 #include "cli/feetechdevice.h"
 #include "cli/servoctl.h"
 #include "feetech/armcalibration.h"
+#include "feetech/settingsfile.h"
 #include "model/parametermodel.h"
 #include "profile/profile.h"
 
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QStringList>
 #include <QVector>
@@ -57,6 +59,16 @@ private:
     std::optional<Target> identifyServoToWrite(const QString &what);
     int program(Target &target, const QVector<model::WriteItem> &items,
                 const QJsonObject &extra = {});
+    // What writing `items` to `servo` and reading them back came to.
+    struct Programmed
+    {
+        QString failure; // the write did not go through (nothing verified)
+        QJsonObject values; // as read back
+        QJsonArray mismatches;
+        QStringList described; // the mismatches in words
+    };
+    Programmed writeVerified(FeetechDevice &device, const ServoInfo &servo,
+                             const QVector<model::WriteItem> &items);
 
     // Finding servos and their registers (feetechregistercommands.cpp).
     int scan(const QString &what, const QStringList &operands);
@@ -69,8 +81,19 @@ private:
     std::optional<profile::Profile> takeProfile(Target &target, QString *error);
     QJsonObject profileJson(const profile::Profile &saved) const;
     int save(const QString &what, const QStringList &operands);
-    static void checkProfileFile(const QString &path);
+    static feetech::SettingsFile checkSettingsFile(const QString &path);
     int load(const QString &what, const QStringList &operands);
+
+    // Arms of several servos (feetechrobotcommands.cpp).
+    int identify(const QString &what, const QStringList &operands);
+    int loadMany(const feetech::SettingsFile &file, const QString &path);
+    // The values of `wanted` that `servo` does not hold yet (it is read whole); nothing and
+    // *error when it cannot be read.
+    static std::optional<QVector<model::WriteItem>>
+    changedOn(FeetechDevice &device, const ServoInfo &servo,
+              const QVector<model::WriteItem> &wanted, QString *error);
+    feetech::ProgramOutcome programOne(FeetechDevice &device, quint8 id,
+                                       const feetech::SettingsFile &file);
 
     // Guided flows (feetechflowcommands.cpp).
     int report(Target &target, const std::function<void()> &start,
@@ -82,6 +105,9 @@ private:
     int factoryReset(const QString &what, const QStringList &operands);
     int reboot(const QString &what, const QStringList &operands);
 
+    // Setting up one motor of a robot (feetechsetupcommand.cpp).
+    feetech::MotorTarget motorTarget(const QString &what) const;
+    int setupMotor(const QString &what, const QStringList &operands);
     // Arm calibration and LeRobot calibration files (feetechcalibrationcommands.cpp,
     // feetechcalibrationfilecommands.cpp).
     QVector<quint8> jointIds(const QString &what) const;

@@ -45,7 +45,9 @@ int FeetechCommand::run(const QStringList &rest)
         {"calibrate-middle", &FeetechCommand::calibrateMiddle},
         {"factory-reset", &FeetechCommand::factoryReset},
         {"reboot", &FeetechCommand::reboot},
+        {"setup-motor", &FeetechCommand::setupMotor},
         {"monitor", &FeetechCommand::monitor},
+        {"identify", &FeetechCommand::identify},
         {"calibrate", &FeetechCommand::calibrate},
         {"calibration", &FeetechCommand::calibration},
     };
@@ -169,45 +171,16 @@ int FeetechCommand::program(Target &target, const QVector<model::WriteItem> &ite
                             const QJsonObject &extra)
 {
     const ServoInfo &servo = target.servo;
-    QString error;
-    const auto writes = feetech::encodeWrites(servo.table(), items, &error);
-    if (!writes)
-        throw UsageError {error};
-    Memory readBack;
-    const auto result = target.device->operate(
-        [&target, writes] { target.device->session().write(target.servo, *writes); }, &readBack);
-    if (!result)
-        return fail(target.device->error());
-    if (!result->ok)
-        return fail(result->message);
-    const QHash<QString, qint32> read = valuesByKey(decodeMemory(servo.table(), readBack));
-    QJsonObject values;
-    QJsonArray mismatches;
-    QStringList described;
-    for (const model::WriteItem &item : items) {
-        const auto found = read.constFind(item.key);
-        if (found != read.constEnd())
-            values.insert(item.key, *found);
-        if (found != read.constEnd() && *found == item.value)
-            continue;
-        mismatches.append(
-            QJsonObject {{QStringLiteral("key"), item.key},
-                         {QStringLiteral("written"), qint64(item.value)},
-                         {QStringLiteral("read"),
-                          found != read.constEnd() ? QJsonValue(*found) : QJsonValue()}});
-        described.append(
-            Tr::tr("%1: wrote %2, the servo holds %3")
-                .arg(item.key)
-                .arg(item.value)
-                .arg(found != read.constEnd() ? QString::number(*found) : Tr::tr("nothing")));
-    }
-    const bool verified = mismatches.isEmpty();
+    const Programmed written = writeVerified(*target.device, servo, items);
+    if (!written.failure.isEmpty())
+        return fail(written.failure);
+    const bool verified = written.mismatches.isEmpty();
     if (m_output.json) {
         QJsonObject report = extra;
         report.insert(QStringLiteral("servo"), servoJson(servo));
         report.insert(QStringLiteral("verified"), verified);
-        report.insert(QStringLiteral("values"), values);
-        report.insert(QStringLiteral("mismatches"), mismatches);
+        report.insert(QStringLiteral("values"), written.values);
+        report.insert(QStringLiteral("mismatches"), written.mismatches);
         printJson(m_output.out, report);
     } else if (verified) {
         m_output.out << Tr::tr("written to servo %1 and verified: %n register(s)", nullptr,
@@ -217,8 +190,46 @@ int FeetechCommand::program(Target &target, const QVector<model::WriteItem> &ite
         m_output.out.flush();
     }
     if (!verified)
-        return fail(Tr::tr("verification failed: %1").arg(described.join(QStringLiteral("; "))));
+        return fail(
+            Tr::tr("verification failed: %1").arg(written.described.join(QStringLiteral("; "))));
     return ExitOk;
+}
+
+FeetechCommand::Programmed FeetechCommand::writeVerified(FeetechDevice &device,
+                                                         const ServoInfo &servo,
+                                                         const QVector<model::WriteItem> &items)
+{
+    QString error;
+    const auto writes = feetech::encodeWrites(servo.table(), items, &error);
+    if (!writes)
+        throw UsageError {error};
+    Programmed written;
+    Memory readBack;
+    const auto result = device.operate(
+        [&device, &servo, writes] { device.session().write(servo, *writes); }, &readBack);
+    if (!result || !result->ok) {
+        written.failure = result ? result->message : device.error();
+        return written;
+    }
+    const QHash<QString, qint32> read = valuesByKey(decodeMemory(servo.table(), readBack));
+    for (const model::WriteItem &item : items) {
+        const auto found = read.constFind(item.key);
+        if (found != read.constEnd())
+            written.values.insert(item.key, *found);
+        if (found != read.constEnd() && *found == item.value)
+            continue;
+        written.mismatches.append(
+            QJsonObject {{QStringLiteral("key"), item.key},
+                         {QStringLiteral("written"), qint64(item.value)},
+                         {QStringLiteral("read"),
+                          found != read.constEnd() ? QJsonValue(*found) : QJsonValue()}});
+        written.described.append(
+            Tr::tr("%1: wrote %2, the servo holds %3")
+                .arg(item.key)
+                .arg(item.value)
+                .arg(found != read.constEnd() ? QString::number(*found) : Tr::tr("nothing")));
+    }
+    return written;
 }
 
 int runFeetechCommand(const Arguments &args, const QStringList &rest, const Output &output)

@@ -102,62 +102,50 @@ int FeetechCommand::save(const QString &what, const QStringList &operands)
     return ExitOk;
 }
 
-// Refuses, before anything is sent, a file that is no valid profile for any Feetech family.
-void FeetechCommand::checkProfileFile(const QString &path)
+// Refuses, before anything is sent, a file that is neither a robot template nor a valid
+// profile for any Feetech family.
+feetech::SettingsFile FeetechCommand::checkSettingsFile(const QString &path)
 {
-    QHash<QString, QString> errors;
-    for (const feetech::Family family : feetech::kAllFamilies) {
-        QString error;
-        const QString key = feetech::familyKey(family);
-        if (profile::load(path, key,
-                          feetech::profileDefinitions(feetech::RegisterTable::forFamily(family)),
-                          &error))
-            return;
-        errors.insert(key, error);
-    }
-    // Name the problem as the family the file claims would see it.
-    QString named;
-    QFile file(path);
-    if (file.open(QIODevice::ReadOnly))
-        named = QJsonDocument::fromJson(file.read(1024 * 1024))
-                    .object()
-                    .value(QStringLiteral("family"))
-                    .toString();
-    throw UsageError {errors.value(named, errors.value(QStringLiteral("sts")))};
+    QString error;
+    auto file = feetech::SettingsFile::load(path, &error);
+    if (!file)
+        throw UsageError {error};
+    return *file;
 }
 
 int FeetechCommand::load(const QString &what, const QStringList &operands)
 {
-    allowOptions(what, {QStringLiteral("id")});
+    allowOptions(what, {QStringLiteral("id"), QStringLiteral("ids")});
     expectOperands(what, operands, 1, Tr::tr("one FILE"));
+    if (m_args.has(QStringLiteral("id")) && m_args.has(QStringLiteral("ids")))
+        throw UsageError {Tr::tr("%1 takes --id N or --ids LIST, not both").arg(what)};
     const QString path = operands.first();
-    checkProfileFile(path);
+    const feetech::SettingsFile file = checkSettingsFile(path);
+    if (m_args.has(QStringLiteral("ids")))
+        return loadMany(file, path);
     auto target = identifyServoToWrite(what);
     if (!target)
         return ExitDeviceFailure;
     const ServoInfo &servo = target->servo;
     QString error;
-    const auto loaded = profile::load(path, feetech::familyKey(*servo.model.family),
-                                      feetech::profileDefinitions(servo.table()), &error);
-    if (!loaded)
+    const auto wanted = file.valuesFor(servo, &error);
+    if (!wanted)
         throw UsageError {error};
-    if (!loaded->model.isEmpty() && loaded->model != servo.model.name) {
-        m_output.err << "servoctl: "
-                     << Tr::tr("note: the profile was saved from a %1, this servo is a %2")
-                            .arg(loaded->model, servo.model.name)
-                     << '\n';
-        m_output.err.flush();
+    if (!file.isTemplate()) {
+        const auto loaded = profile::load(path, feetech::familyKey(*servo.model.family),
+                                          feetech::profileDefinitions(servo.table()), &error);
+        if (loaded && !loaded->model.isEmpty() && loaded->model != servo.model.name) {
+            m_output.err << "servoctl: "
+                         << Tr::tr("note: the profile was saved from a %1, this servo is a %2")
+                                .arg(loaded->model, servo.model.name)
+                         << '\n';
+            m_output.err.flush();
+        }
     }
-    const auto memory = target->device->read(servo, {});
-    if (!memory)
-        return fail(target->device->error());
-    const QHash<QString, qint32> current = valuesByKey(decodeMemory(servo.table(), *memory));
-    QVector<model::WriteItem> items;
-    for (const profile::ProfileValue &value : loaded->values) {
-        const auto device = current.constFind(value.key);
-        if (device == current.constEnd() || *device != value.raw)
-            items.append({value.key, value.raw});
-    }
+    const auto changed = changedOn(*target->device, servo, *wanted, &error);
+    if (!changed)
+        return fail(error);
+    const QVector<model::WriteItem> &items = *changed;
     const QJsonObject extra {{QStringLiteral("file"), path},
                              {QStringLiteral("changed"), int(items.size())}};
     if (items.isEmpty()) {

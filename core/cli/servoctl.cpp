@@ -47,12 +47,22 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech set --id N KEY=VALUE...        write registers (register units), verified\n"
     "  feetech save --id N FILE               save the servo's EEPROM settings to a profile\n"
     "  feetech load --id N FILE               write the values of a profile that differ\n"
+    "  feetech load --ids LIST FILE           the same for several servos (1,2,3 or 1-6);\n"
+    "                                         FILE may be a robot template: each servo gets\n"
+    "                                         its joint's settings by ID\n"
     "  feetech set-id --id N NEW              give the servo a new ID (refused if taken)\n"
     "  feetech set-baud --id N BAUD           move the servo to another baud rate (bps)\n"
     "  feetech calibrate-middle --id N        make the present position the middle\n"
     "  feetech factory-reset --id N [--backup FILE]\n"
     "                                         save a backup profile, then restore factory values\n"
     "  feetech reboot --id N                  restart the servo and wait for it\n"
+    "  feetech setup-motor --id N [--baud BPS] [--model MODEL] [--settings ROBOT]\n"
+    "                                         the one servo on the bus (any ID, any rate) gets\n"
+    "                                         ID N and rate BPS (default 1000000, or the\n"
+    "                                         robot's), verified; ROBOT: a robot template file,\n"
+    "                                         whose joint with ID N gives the model to expect\n"
+    "                                         and the settings to write and verify\n"
+    "  feetech identify --id N                wiggle the servo slowly so you see which it is\n"
     "  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]\n"
     "                                         stream position, speed, load, voltage,\n"
     "                                         temperature and current (SYNC READ)\n"
@@ -94,7 +104,8 @@ public:
                  QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
                  QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
                  QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate"),
-                 QStringLiteral("names"), QStringLiteral("full-turn"), QStringLiteral("out")},
+                 QStringLiteral("model"), QStringLiteral("settings"), QStringLiteral("names"),
+                 QStringLiteral("full-turn"), QStringLiteral("out")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
                  QStringLiteral("dry-run")});

@@ -72,6 +72,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         }
     });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
+    connectMotorSetup(session);
 }
 
 BusClient::~BusClient() = default;
@@ -239,6 +240,8 @@ void BusClient::onOperationFinished(const OperationResult &result)
         if (result.ok && flow && result.final) // what the flow changed shows
             readServo(indexOf(entry.info.id, entry.info.baud));
     }
+    if (result.operation == Operation::Identify)
+        m_identifying.reset();
     if (target.kind == Work::Foreground)
         emit busyChanged(isBusy());
     if (target.kind != Work::Background) { // a failed refresh is retried by the next one
@@ -246,6 +249,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
         reported.control = target.kind == Work::Control;
         emit operationFinished(reported);
     }
+    onMotorWorkFinished(result);
 }
 
 void BusClient::forgetWork()
@@ -253,6 +257,7 @@ void BusClient::forgetWork()
     const bool wasBusy = isBusy();
     m_pending.clear();
     m_scanning = false;
+    m_identifying.reset();
     for (const auto &entry : m_servos) {
         model::ParameterModel &parameters = *entry->parameters;
         for (const model::Definition &definition : parameters.definitions()) {

@@ -10,6 +10,7 @@
 #include "model/parametermodel.h"
 
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 
 #include <deque>
@@ -77,6 +78,18 @@ public:
     bool reboot(int index, QString *error = nullptr);
     bool clearStatus(int index, QString *error = nullptr);
 
+    // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
+
+    // Why servo `index` cannot be identified now (empty when it can): no bus, an unknown
+    // model, another operation, or something holding the servo (a motion test).
+    QString identifyBlocker(int index) const;
+    bool identifyJoint(int index, QString *error = nullptr);
+    bool isIdentifying(int index) const;
+    // What moves a servo outside the session's operations (a motion test) holds it while it
+    // runs: identifyBlocker gives `reason` meanwhile.
+    void holdServo(int index, const QString &reason);
+    void releaseServo(quint8 id, qint32 baud);
+
     // ---- live monitoring and control
 
     // Streams the feedback block of the servos `indexes` at `rateHz` samples per second each
@@ -109,6 +122,17 @@ public:
     // of its servo's range or a servo is unknown (nothing sent).
     bool moveAll(const QVector<Goal> &goals, QString *error = nullptr);
 
+    // ---- motor set-up (busclientmotorsetup.cpp): no scan needed, each servo is found alone
+
+    // Looks for the one servo on the bus at every rate. False and *error when not started.
+    bool findMotor(const MotorTarget &target, QString *error = nullptr);
+    // Finds the one servo again and gives it the target's ID, rate and settings, verified.
+    bool setUpMotor(const MotorTarget &target, QString *error = nullptr);
+    // Which joints of `robot` already answer at their ID at its rate, as their model.
+    bool checkJoints(const RobotTemplate &robot, QString *error = nullptr);
+    // Stops a find, set-up or check before its next step.
+    void cancelMotorSetup();
+
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
@@ -124,12 +148,20 @@ signals:
     void monitoringChanged(bool monitoring);
     // Whatever moves servos (sweeps, step tests) stops on this.
     void allTorqueOffRequested();
+    // Motor set-up: each find or set-up ends with motorSetupFinished, each check with
+    // jointsChecked, also when the link went down meanwhile.
+    void motorSetupProgress(int step, int steps, const QString &text);
+    void motorSetupFinished(const feetech::MotorSetupResult &result);
+    void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
 
 private:
     void onServoFound(const ServoInfo &info);
     void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
+    void connectMotorSetup(Session *session);
+    bool startMotorWork(QString *error, const std::function<void(Session &)> &work);
+    void onMotorWorkFinished(const OperationResult &result);
     enum class Work {
         Foreground, // the bus is busy until it ends
         Background, // a refresh: skipped when busy, its failure not reported
@@ -161,6 +193,11 @@ private:
     quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped
     TelemetryOptions m_monitorOptions;
     TelemetryStats m_telemetryStats;
+    // What the session reported of the motor set-up work running, until it ends.
+    std::optional<MotorSetupResult> m_motorResult;
+    std::optional<QVector<JointCheck>> m_jointsChecked;
+    std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
+    QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
 };
 
 } // namespace feetech

@@ -242,31 +242,34 @@ Step BusExchange::lock(std::shared_ptr<ServoInfo> servo, bool locked)
     };
 }
 
-Step BusExchange::read(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source)
+Step BusExchange::read(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source,
+                       std::function<void(const QByteArray &bytes)> seen)
 {
-    return [this, servo, address, size, source](StepDone next) {
+    return [this, servo, address, size, source, seen](StepDone next) {
         Exchange ask;
         ask.request = feetech::read(servo->id, quint8(address), quint8(size));
         ask.replyId = servo->id;
         ask.replyDataSize = size;
         if (source == ReadSource::Refresh)
             ask.priority = seriallink::Transaction::Priority::Poll;
-        exchange(
-            ask,
-            [this, servo, address, size, source, next](const seriallink::TransactionResult &result,
-                                                       const std::optional<Packet> &reply) {
-                if (!reply) {
-                    next(false,
-                         Tr::tr("Reading %1 bytes at address %2: %3")
-                             .arg(size)
-                             .arg(address)
-                             .arg(failureText(result)));
-                    return;
-                }
-                emit memoryRead(servo->id, servo->baud, address, reply->parameters, source,
-                                reply->code);
-                next(true, {});
-            });
+        exchange(ask,
+                 [this, servo, address, size, source, seen,
+                  next](const seriallink::TransactionResult &result,
+                        const std::optional<Packet> &reply) {
+                     if (!reply) {
+                         next(false,
+                              Tr::tr("Reading %1 bytes at address %2: %3")
+                                  .arg(size)
+                                  .arg(address)
+                                  .arg(failureText(result)));
+                         return;
+                     }
+                     emit memoryRead(servo->id, servo->baud, address, reply->parameters, source,
+                                     reply->code);
+                     if (seen)
+                         seen(reply->parameters);
+                     next(true, {});
+                 });
     };
 }
 

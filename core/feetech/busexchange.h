@@ -80,8 +80,9 @@ public:
                const QString &what);
     Step instruction(quint8 id, const QByteArray &request, bool expectReply, const QString &what);
     Step lock(std::shared_ptr<ServoInfo> servo, bool locked);
-    // Emits memoryRead with what the servo holds.
-    Step read(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source);
+    // Emits memoryRead with what the servo holds, and hands the bytes to `seen` when given.
+    Step read(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source,
+              std::function<void(const QByteArray &bytes)> seen = {});
     Step identify(std::shared_ptr<ServoInfo> servo); // fills in what addresses 0-8 say
     // mustAnswer: fails when the ID is silent; otherwise fails when it answers (ID in use).
     Step ping(quint8 id, bool mustAnswer, int retries);

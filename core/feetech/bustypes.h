@@ -102,7 +102,11 @@ enum class Operation {
     Reboot,
     ClearStatus,
     TorqueOff, // every servo of the bus, ahead of the queue
-    SyncWrite
+    SyncWrite,
+    FindMotor, // motor set-up: the one servo on the bus, at any rate
+    SetUpMotor,
+    CheckJoints,
+    Identify // a joint's wiggle, with what it changed put back
 };
 
 struct OperationResult
@@ -143,6 +147,10 @@ struct SessionTiming
     std::chrono::milliseconds rebootGiveUp {4000};
     std::chrono::milliseconds rebootPollInterval {100};
     std::chrono::milliseconds reconnectInterval {500};
+    // Identify: how often the horn's position is read while it moves, and how long one move
+    // may take before the wiggle goes on without it (a joint held by a load).
+    std::chrono::milliseconds identifyPollInterval {40};
+    std::chrono::milliseconds identifyMoveTimeout {2500};
 };
 
 } // namespace feetech

@@ -7,6 +7,7 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QTimer>
 
 #include <algorithm>
 #include <memory>
@@ -31,12 +32,17 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_flows(new GuidedFlows(*m_bus, this))
     , m_telemetry(new TelemetryCycle(*m_bus, this))
     , m_apply(new ApplyFlow(*m_bus, *m_flows, this))
+    , m_motorSetup(new MotorSetup(*m_bus, *m_flows, *m_apply, this))
+    , m_identify(new JointIdentify(*m_bus, this))
 {
     qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::ServoInfo>();
     qRegisterMetaType<feetech::ScanOptions>();
     qRegisterMetaType<feetech::ReadSource>();
     qRegisterMetaType<feetech::OperationResult>();
+    qRegisterMetaType<feetech::MotorTarget>();
+    qRegisterMetaType<feetech::MotorSetupResult>();
+    qRegisterMetaType<QVector<feetech::JointCheck>>();
     m_link->engine().setTiming(m_timing.engine);
     m_link->setReconnectInterval(m_timing.reconnectInterval);
     m_link->setLinkDownHook(
@@ -56,6 +62,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     connect(m_telemetry, &TelemetryCycle::telemetry, this, &Session::telemetry);
     connect(m_apply, &ApplyFlow::progress, this, &Session::progress);
     connect(m_telemetry, &TelemetryCycle::statsChanged, this, &Session::telemetryStats);
+    connect(m_motorSetup, &MotorSetup::progress, this, &Session::motorSetupProgress);
     m_telemetry->setBusBusy([this] { return m_running; });
     m_telemetry->setCycleEnded([this] {
         if (!m_queue.empty() && !m_running)
@@ -108,8 +115,10 @@ void Session::close()
 void Session::onLinkDown(const QString &message)
 {
     const bool wasScanning = m_scan->isRunning();
-    const bool wasRunning = m_running;
+    const bool wasRunning = m_running || m_paused;
     const Operation running = m_currentOperation;
+    m_paused = false;
+    ++m_pauseGeneration;
     std::deque<Queued> dropped;
     dropped.swap(m_queue);
     m_scan->abandon();
@@ -156,6 +165,8 @@ void Session::startQueuedOperation()
 {
     if (m_running || m_queue.empty())
         return;
+    if (m_paused && m_queue.front().operation != Operation::TorqueOff)
+        return; // the paused operation goes on first
     Queued next = std::move(m_queue.front());
     m_queue.pop_front();
     m_running = true;
@@ -190,6 +201,27 @@ void Session::continueLater(Operation next, std::function<void()> resume)
     while (at != m_queue.end() && at->operation == Operation::TorqueOff)
         ++at;
     m_queue.insert(at, {next, std::move(resume)});
+    QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
+}
+
+void Session::pauseFor(Operation operation, std::chrono::milliseconds delay,
+                       std::function<void()> resume)
+{
+    m_running = false;
+    m_paused = true;
+    const quint64 generation = ++m_pauseGeneration;
+    QTimer::singleShot(delay, this, [this, generation, operation, resume = std::move(resume)] {
+        if (!m_paused || generation != m_pauseGeneration)
+            return;
+        m_paused = false;
+        // Not continueLater: All torque off may be running right now, and goes on.
+        auto at = m_queue.begin();
+        while (at != m_queue.end() && at->operation == Operation::TorqueOff)
+            ++at;
+        m_queue.insert(at, {operation, resume});
+        if (!m_running)
+            startNextOperation();
+    });
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
 }
 
@@ -357,6 +389,21 @@ void Session::clearStatus(const ServoInfo &servo)
     });
 }
 
+void Session::identifyJoint(const ServoInfo &servo)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::Identify, [this, servo, epoch] {
+        if (refusedAfterTorqueOff(Operation::Identify, epoch))
+            return;
+        m_identify->run(servo, finisher(),
+                        [this, epoch](std::chrono::milliseconds delay,
+                                      std::function<void(bool torqueOff)> resume) {
+                            pauseFor(Operation::Identify, delay,
+                                     [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
+                        });
+    });
+}
+
 bool Session::refusedAfterTorqueOff(Operation operation, quint64 epoch)
 {
     if (epoch == m_torqueOffEpoch)
@@ -508,6 +555,60 @@ void Session::syncWrite(qint32 baud, int address, int length,
                  {}});
         });
     });
+}
+
+// ---- motor set-up
+
+void Session::findMotor(const MotorTarget &target)
+{
+    enqueue(Operation::FindMotor, [this, target] {
+        m_motorSetup->find(target, [this](const MotorSearch &search) {
+            MotorSetupResult result;
+            result.ok = search.foundOne();
+            result.search = search;
+            result.stopped = search.stopped;
+            result.from = result.to = search.servo;
+            result.message = search.message;
+            emit motorSetupFinished(result);
+            finishOperation({Operation::FindMotor, result.ok, result.message, search.servo, {}});
+        });
+    });
+}
+
+void Session::setUpMotor(const MotorTarget &target)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::SetUpMotor, [this, target, epoch] {
+        if (refusedAfterTorqueOff(Operation::SetUpMotor, epoch))
+            return;
+        m_motorSetup->setUp(target, [this](const MotorSetupResult &result) {
+            emit motorSetupFinished(result);
+            finishOperation({Operation::SetUpMotor, result.ok, result.message, result.to, {}});
+        });
+    });
+}
+
+void Session::checkJoints(qint32 baud, const QVector<JointCheck> &joints)
+{
+    enqueue(Operation::CheckJoints, [this, baud, joints] {
+        m_motorSetup->check(baud, joints, [this](const QVector<JointCheck> &checked) {
+            emit jointsChecked(checked);
+            const auto done = std::count_if(checked.begin(), checked.end(),
+                                            [](const JointCheck &joint) { return joint.done(); });
+            finishOperation(
+                {Operation::CheckJoints,
+                 true,
+                 Tr::tr("%1 of %n joint(s) already set up.", nullptr, int(checked.size()))
+                     .arg(done),
+                 {},
+                 {}});
+        });
+    });
+}
+
+void Session::cancelMotorSetup()
+{
+    m_motorSetup->cancel();
 }
 
 } // namespace feetech

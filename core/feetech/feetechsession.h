@@ -6,6 +6,8 @@
 #include "feetech/busscan.h"
 #include "feetech/bustypes.h"
 #include "feetech/guidedflows.h"
+#include "feetech/motorsetup.h"
+#include "feetech/jointidentify.h"
 #include "feetech/telemetry.h"
 #include "feetech/telemetrycycle.h"
 #include "link/linktypes.h"
@@ -37,7 +39,7 @@ public:
     const seriallink::ConnectionStatus &status() const;
     const seriallink::LinkCounters &counters() const;
     seriallink::LinkSession &link() { return *m_link; }
-    bool isBusy() const { return m_running || !m_queue.empty(); }
+    bool isBusy() const { return m_running || m_paused || !m_queue.empty(); }
     // How quickly servos answer on this port: the median of the last answers (none before the
     // first), from the end of the request to the first byte of the reply.
     std::optional<std::chrono::microseconds> measuredLatency() const;
@@ -67,6 +69,10 @@ public:
     void factoryReset(const feetech::ServoInfo &servo);
     void reboot(const feetech::ServoInfo &servo);
     void clearStatus(const feetech::ServoInfo &servo);
+    // A small, slow, torque-limited wiggle around where the servo stands, then everything it
+    // changed put back (see JointIdentify). Between its moves the bus is free for telemetry
+    // and All torque off, which stops it with the torque left off.
+    void identifyJoint(const feetech::ServoInfo &servo);
 
     // Telemetry: a cycle of SYNC READs (one READ per servo where the family has no SYNC READ)
     // of the feedback block, at the options' rate, between operations, until stopTelemetry.
@@ -79,6 +85,14 @@ public:
     // One SYNC WRITE (no replies) at `baud`; every entry's data is `length` bytes.
     void syncWrite(qint32 baud, int address, int length,
                    const QVector<feetech::SyncWriteEntry> &entries);
+
+    // Motor set-up (MotorSetup): the one servo on the bus found at any rate; found and set up
+    // as `target` says; the joints that already answer at their ID at `baud`.
+    void findMotor(const feetech::MotorTarget &target);
+    void setUpMotor(const feetech::MotorTarget &target);
+    void checkJoints(qint32 baud, const QVector<feetech::JointCheck> &joints);
+    // Not queued: stops the running one before its next step.
+    void cancelMotorSetup();
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
@@ -96,6 +110,10 @@ signals:
     void countersChanged(const seriallink::LinkCounters &counters);
     void telemetry(const QVector<feetech::FeedbackSample> &samples, quint64 stream);
     void telemetryStats(const feetech::TelemetryStats &stats);
+    // Before the operationFinished of a find or a set-up, and of a check.
+    void motorSetupProgress(int step, int steps, const QString &text);
+    void motorSetupFinished(const feetech::MotorSetupResult &result);
+    void jointsChecked(const QVector<feetech::JointCheck> &joints);
 
 private:
     void onLinkDown(const QString &message);
@@ -104,6 +122,10 @@ private:
     GuidedFlows::Finish finisher();
     // Ends the running operation's turn on the bus; `resume` runs as the next operation.
     void continueLater(Operation next, std::function<void()> resume);
+    // Ends the running operation's turn on the bus for `delay`: meanwhile only telemetry and
+    // All torque off use it, then `resume` runs as the next operation.
+    void pauseFor(Operation operation, std::chrono::milliseconds delay,
+                  std::function<void()> resume);
     void startNextOperation();
     void startQueuedOperation(); // the next operation, whether or not a telemetry cycle is due
     void onScanFinished(bool completed, const QString &message);
@@ -120,6 +142,8 @@ private:
     GuidedFlows *m_flows = nullptr;
     TelemetryCycle *m_telemetry = nullptr;
     ApplyFlow *m_apply = nullptr;
+    MotorSetup *m_motorSetup = nullptr;
+    JointIdentify *m_identify = nullptr;
     struct Queued
     {
         Operation operation = Operation::Read;
@@ -128,6 +152,8 @@ private:
     std::deque<Queued> m_queue;
     bool m_running = false;
     Operation m_currentOperation = Operation::Read;
+    bool m_paused = false; // the current operation waits in pauseFor
+    quint64 m_pauseGeneration = 0; // a pause ended by a lost link never resumes
     quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
 };
 

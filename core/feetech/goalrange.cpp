@@ -12,13 +12,19 @@ std::optional<PositionRange> goalRange(const BusClient &client, int index)
 {
     if (index < 0 || index >= client.servoCount() || !client.servo(index).info.hasTable())
         return std::nullopt;
-    const Register *goal = client.servo(index).info.table().find(registerkeys::kGoalPosition);
+    const model::ParameterModel *parameters = client.parameters(index);
+    return goalRange(client.servo(index).info.table(),
+                     parameters->deviceValue(registerkeys::kMinAngleLimit),
+                     parameters->deviceValue(registerkeys::kMaxAngleLimit));
+}
+
+std::optional<PositionRange> goalRange(const RegisterTable &table, std::optional<qint64> low,
+                                       std::optional<qint64> high)
+{
+    const Register *goal = table.find(registerkeys::kGoalPosition);
     if (!goal)
         return std::nullopt;
     PositionRange range {goal->minimum, goal->maximum, false};
-    const model::ParameterModel *parameters = client.parameters(index);
-    const auto low = parameters->deviceValue(registerkeys::kMinAngleLimit);
-    const auto high = parameters->deviceValue(registerkeys::kMaxAngleLimit);
     // Both limits 0 selects multi-turn or motor mode: the limits then bound nothing. Limits are
     // kept inside the register's range, so a misread limit cannot widen what may be written.
     if (low && high && !(*low == 0 && *high == 0) && *low <= *high) {

@@ -10,6 +10,7 @@
 namespace feetech {
 
 class BusClient;
+class RegisterTable;
 
 // The goal positions a servo accepts, in steps: its angle limits (min_angle_limit,
 // max_angle_limit) as the servo reported them, or the goal_position register's range when they
@@ -25,5 +26,8 @@ struct PositionRange
 
 // Nothing for an unknown servo or a table without goal_position.
 std::optional<PositionRange> goalRange(const BusClient &client, int index);
+// The same from the table and the angle limits as read (none where not read yet).
+std::optional<PositionRange> goalRange(const RegisterTable &table, std::optional<qint64> low,
+                                       std::optional<qint64> high);
 
 } // namespace feetech

@@ -69,8 +69,10 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
 
 MotionTest::~MotionTest()
 {
-    if (isRunning() && m_client)
+    if (isRunning() && m_client) {
+        m_client->releaseServo(m_id, m_baud);
         restoreMonitor();
+    }
 }
 
 void MotionTest::setTiming(const MotionTiming &timing)
@@ -92,6 +94,8 @@ bool MotionTest::validate(const MotionPlan &plan, Kind kind, QString *error) con
     if (plan.index < 0 || plan.index >= m_client->servoCount())
         return refuse(tr("No servo is selected."));
     const ServoInfo &info = m_client->servo(plan.index).info;
+    if (m_client->isIdentifying(plan.index))
+        return refuse(tr("Servo ID %1 is being identified; wait until it is back.").arg(info.id));
     if (!info.hasTable())
         return refuse(tr("This servo's model is unknown: ServoBench does not move it."));
     const RegisterTable &table = info.table();
@@ -180,6 +184,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
         return false;
     }
     startApproach();
+    m_client->holdServo(plan.index, tr("A motion test is running on servo ID %1.").arg(m_id));
     emit runningChanged(true); // isRunning() is true by now
     return true;
 }
@@ -459,6 +464,8 @@ void MotionTest::finish()
 {
     m_timer->stop();
     m_phase = Phase::Idle;
+    if (m_client)
+        m_client->releaseServo(m_id, m_baud);
     restoreMonitor();
     emit runningChanged(false);
 }

@@ -12,6 +12,8 @@ DemoServos::~DemoServos()
         m_ptk->stop();
     if (m_feetech)
         m_feetech->stop();
+    if (m_arm)
+        m_arm->stop();
 }
 
 bool DemoServos::ensureFolder(QString *error)
@@ -48,28 +50,45 @@ QString DemoServos::ptkPort(QString *error)
     return m_ptk->linkPath();
 }
 
-QString DemoServos::feetechPort(QString *error)
+QString DemoServos::startFeetech(std::unique_ptr<SimulatorThread> &slot, SimulatorOptions options,
+                                 const QString &name, QString *error)
 {
-    if (m_feetech)
-        return m_feetech->linkPath();
+    if (slot)
+        return slot->linkPath();
     if (!ensureFolder(error))
         return QString();
-    SimulatorOptions options;
     options.kind = SimulatorOptions::Kind::Feetech;
-    options.linkPath = m_folder->filePath(QStringLiteral("feetech-bus"));
+    options.linkPath = m_folder->filePath(name);
+    // The EEPROM lives in the demo folder for as long as the program runs.
+    options.statePath = m_folder->filePath(name + QStringLiteral(".json"));
+    auto simulator = std::make_unique<SimulatorThread>();
+    if (!simulator->start(options, error))
+        return QString();
+    slot = std::move(simulator);
+    return slot->linkPath();
+}
+
+QString DemoServos::feetechPort(QString *error)
+{
     // A robot arm's bus: three STS3215 joints, an SCS15 gripper and an HLS wrist, all at the
-    // STS default rate. The EEPROM lives in the demo folder for as long as the program runs.
+    // STS default rate.
+    SimulatorOptions options;
     options.servos = {{1, QStringLiteral("STS3215"), 1000000},
                       {2, QStringLiteral("STS3215"), 1000000},
                       {3, QStringLiteral("STS3215"), 1000000},
                       {4, QStringLiteral("SCS15"), 1000000},
                       {5, QStringLiteral("HLS"), 1000000}};
-    options.statePath = m_folder->filePath(QStringLiteral("feetech-bus.json"));
-    auto simulator = std::make_unique<SimulatorThread>();
-    if (!simulator->start(options, error))
+    return startFeetech(m_feetech, options, QStringLiteral("feetech-bus"), error);
+}
+
+QString DemoServos::armPort(QString *error)
+{
+    SimulatorOptions options;
+    options.robot = simulatedRobot(QStringLiteral("so101"), error);
+    if (!options.robot)
         return QString();
-    m_feetech = std::move(simulator);
-    return m_feetech->linkPath();
+    options.servos = robotServos(*options.robot);
+    return startFeetech(m_arm, options, QStringLiteral("so101-arm"), error);
 }
 
 } // namespace sim

@@ -23,13 +23,22 @@ public:
     QString ptkPort(QString *error);
     // The port of the simulated Feetech bus: three STS3215, an SCS15 and an HLS at 1 Mbps.
     QString feetechPort(QString *error);
+    // The port of a simulated SO-101 follower arm: six STS3215 at IDs 1-6, 1 Mbps, set up.
+    QString armPort(QString *error);
+
+    // The running simulators, null until their port was asked for: for the Simulator dock.
+    SimulatorThread *feetechSimulator() const { return m_feetech.get(); }
+    SimulatorThread *armSimulator() const { return m_arm.get(); }
 
 private:
     bool ensureFolder(QString *error);
+    QString startFeetech(std::unique_ptr<SimulatorThread> &slot, SimulatorOptions options,
+                         const QString &name, QString *error);
 
     std::unique_ptr<QTemporaryDir> m_folder;
     std::unique_ptr<SimulatorThread> m_ptk;
     std::unique_ptr<SimulatorThread> m_feetech;
+    std::unique_ptr<SimulatorThread> m_arm;
 };
 
 } // namespace sim

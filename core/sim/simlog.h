@@ -8,7 +8,7 @@
 namespace sim {
 
 // Line format: "<seconds since start, 6 decimals> <direction> <HEX BYTES>[  # note]", where the
-// direction is in, out, echo or drop.
+// direction is in, out, echo or drop; "hand" lines carry no bytes, only what the hand did.
 class SimLog
 {
 public:

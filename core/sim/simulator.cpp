@@ -65,7 +65,7 @@ Simulator::Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDev
     m_sendTimer->setTimerType(Qt::PreciseTimer);
     connect(m_sendTimer, &QTimer::timeout, this, &Simulator::sendDue);
     m_tickTimer->setInterval(kTickMs);
-    connect(m_tickTimer, &QTimer::timeout, this, &Simulator::tick);
+    connect(m_tickTimer, &QTimer::timeout, this, &Simulator::advanceNow);
     connect(m_pty, &PseudoTerminal::received, this, &Simulator::onReceived);
 }
 
@@ -103,9 +103,16 @@ void Simulator::powerCycle()
     m_device->powerCycle();
 }
 
-void Simulator::tick()
+void Simulator::advanceNow()
 {
-    m_device->advanceTo(nowUs());
+    const qint64 now = nowUs();
+    m_device->advanceTo(now);
+    if (VirtualFeetechBus *bus = feetechBus()) {
+        for (const QString &note : bus->hand().takeNotes()) {
+            m_log.write(now, "hand", {}, note);
+            emit handNote(note);
+        }
+    }
 }
 
 void Simulator::onReceived(const QByteArray &bytes)

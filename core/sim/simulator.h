@@ -2,7 +2,9 @@
 // pacing, optional echo, fault injection and a frame log.
 #pragma once
 
+#include "feetech/robottemplate.h"
 #include "sim/faults.h"
+#include "sim/hand.h"
 #include "sim/pseudoterminal.h"
 #include "sim/simlog.h"
 #include "sim/virtualdevice.h"
@@ -25,6 +27,29 @@ class VirtualPtkServo;
 
 using FeetechServoSpec = VirtualFeetechBus::ServoSpec;
 
+// A scripted sweep of the hand (sim/hand.h), from the command line or standard input.
+struct HandSweep
+{
+    quint8 id = 1;
+    int from = 0;
+    int to = 0;
+    double seconds = 1.0;
+    int cycles = 0; // 0: until released
+    Hand::Way way = Hand::Way::Direct;
+};
+
+// ID:MODEL[@BAUD], as --servo and the plug command take it; `source` names it in errors.
+std::optional<FeetechServoSpec> parseServoSpec(const QString &text, const QString &source,
+                                               QString *error);
+// FIELDS are ID FROM TO SECONDS [CYCLES] [up|down], already split; `source` names them in errors.
+std::optional<HandSweep> parseHandSweep(const QStringList &fields, const QString &source,
+                                        QString *error);
+// The built-in robot templates servosim plays: so100, so101 (follower arms), so100-leader,
+// so101-leader. Nothing and *error for another name.
+std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, QString *error);
+// The robot's joints as servos on the bus, at the template's rate.
+QVector<FeetechServoSpec> robotServos(const feetech::RobotTemplate &robot);
+
 struct SimulatorOptions
 {
     enum class Kind { Ptk, Feetech };
@@ -38,6 +63,10 @@ struct SimulatorOptions
     QString ptkValues; // "gain=20,..." starting values of the PTK servo
     QVector<FeetechServoSpec> servos;
     QString statePath; // Feetech: keeps EEPROM across runs
+    bool allowSharedIds = false; // two --servo at one ID and rate, replies colliding
+    // --robot: its joints are the first servos, set up with its settings, horns at rest.
+    std::optional<feetech::RobotTemplate> robot;
+    QVector<HandSweep> sweeps; // --hand, started with the bus
 };
 
 // Parses servosim's arguments (program name excluded); nothing and *error on a bad one.
@@ -65,6 +94,12 @@ public:
     VirtualPtkServo *ptkServo(); // null on a Feetech bus
     VirtualFeetechBus *feetechBus(); // null for PTK
     void powerCycle();
+    // Brings the devices (and the hand) to the present moment; the timer does it every 10 ms.
+    void advanceNow();
+
+signals:
+    // What the hand did on its own: a sweep finished, or a joint's torque came on and resisted.
+    void handNote(const QString &note);
 
 private:
     Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDevice> device);
@@ -83,7 +118,6 @@ private:
     void schedule(qint64 startUs, const QByteArray &frame, double byteUs, const char *direction,
                   const QString &note);
     void sendDue();
-    void tick();
 
     SimulatorOptions m_options;
     std::unique_ptr<VirtualDevice> m_device;

@@ -170,7 +170,29 @@ bool VirtualFeetechBus::unplug(int index)
     if (index < 0 || index >= servoCount())
         return false;
     m_slots.erase(m_slots.begin() + index);
+    m_hand.servoUnplugged(index);
     saveIfChanged(true);
+    return true;
+}
+
+bool VirtualFeetechBus::setServoId(int index, int id, QString *error)
+{
+    if (index < 0 || index >= servoCount()) {
+        if (error)
+            *error = Tr::tr("there is no servo #%1 on the bus (it has %2)")
+                         .arg(index + 1)
+                         .arg(servoCount());
+        return false;
+    }
+    if (id < 0 || id > feetech::kMaxServoId) {
+        if (error)
+            *error = Tr::tr("servo ID %1 is out of range: IDs are 0 to %2")
+                         .arg(id)
+                         .arg(feetech::kMaxServoId);
+        return false;
+    }
+    m_slots[size_t(index)].servo.storeValue(u"id", id);
+    saveIfChanged();
     return true;
 }
 
@@ -295,6 +317,9 @@ void VirtualFeetechBus::advanceTo(qint64 nowUs)
 {
     for (Slot &slot : m_slots)
         slot.servo.advanceTo(nowUs);
+    m_nowUs = std::max(m_nowUs, nowUs);
+    // The hand after the motors: what it holds is where the horn is now.
+    m_hand.advanceTo(m_nowUs);
 }
 
 void VirtualFeetechBus::powerCycle()
@@ -312,6 +337,36 @@ VirtualFeetechServo *VirtualFeetechBus::findServo(quint8 id)
             return &slot.servo;
     }
     return nullptr;
+}
+
+QVector<int> VirtualFeetechBus::indexesOf(quint8 id) const
+{
+    QVector<int> indexes;
+    for (int i = 0; i < servoCount(); ++i) {
+        if (servo(i).id() == id)
+            indexes.append(i);
+    }
+    return indexes;
+}
+
+std::optional<int> VirtualFeetechBus::uniqueIndexOf(quint8 id, QString *error) const
+{
+    const QVector<int> indexes = indexesOf(id);
+    if (indexes.size() == 1)
+        return indexes.first();
+    if (error) {
+        if (indexes.isEmpty()) {
+            *error = Tr::tr("no servo has ID %1").arg(id);
+        } else {
+            QStringList places;
+            for (const int index : indexes)
+                places.append(QStringLiteral("#%1").arg(index + 1));
+            *error = Tr::tr("servos %1 share ID %2: name one by its place, as #N")
+                         .arg(places.join(QLatin1String(", ")))
+                         .arg(id);
+        }
+    }
+    return std::nullopt;
 }
 
 // ---- state file -----------------------------------------------------------------------------

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "feetech/feetechpacket.h"
+#include "sim/hand.h"
 #include "sim/virtualdevice.h"
 #include "sim/virtualfeetechservo.h"
 
@@ -47,6 +48,8 @@ public:
 
     // Specs must have passed validate(); invalid entries are skipped.
     explicit VirtualFeetechBus(const QVector<ServoSpec> &specs);
+    VirtualFeetechBus(const VirtualFeetechBus &) = delete;
+    VirtualFeetechBus &operator=(const VirtualFeetechBus &) = delete;
 
     const seriallink::FrameFormat &frameFormat() const override { return m_format; }
     QVector<Response> handleFrame(const QByteArray &frame, qint32 hostBaud, qint64 nowUs) override;
@@ -57,6 +60,10 @@ public:
     VirtualFeetechServo &servo(int index) { return m_slots.at(size_t(index)).servo; }
     const VirtualFeetechServo &servo(int index) const { return m_slots.at(size_t(index)).servo; }
     VirtualFeetechServo *findServo(quint8 id); // first servo with this ID, any baud
+    QVector<int> indexesOf(quint8 id) const; // every servo at this ID, any baud
+    // The one servo at `id`; nothing and *error when none is, or when several share it.
+    std::optional<int> uniqueIndexOf(quint8 id, QString *error) const;
+    qint64 nowUs() const { return m_nowUs; } // the time of the last advance or frame
     bool isRebooting(int index, qint64 nowUs) const;
 
     // Plugs a powered-up servo into the running bus (last in order); it may share an ID with
@@ -64,6 +71,12 @@ public:
     bool plug(const ServoSpec &spec, QString *error);
     // Unplugs the servo at `index`; later servos move up one place. False for a bad index.
     bool unplug(int index);
+    // Puts the servo at `index` at a new ID, in its RAM and its EEPROM, as a set-up would; two
+    // servos may end up sharing one. False and *error for a bad index or ID.
+    bool setServoId(int index, int id, QString *error);
+
+    // Turns horns whose torque is off; it moves with the bus's time.
+    Hand &hand() { return m_hand; }
 
     // State file: JSON {"format": 1, "servos": [{"model", "eeprom": hex of 256 bytes}...]} in
     // spec order. Loading checks every slot first (count, model, image) and changes nothing on
@@ -97,6 +110,8 @@ private:
     std::vector<Slot> m_slots;
     QString m_statePath;
     QString m_lastStateError;
+    qint64 m_nowUs = 0;
+    Hand m_hand {*this};
 };
 
 } // namespace sim

@@ -150,9 +150,14 @@ void VirtualFeetechServo::store(const Register *reg, qint32 value)
         return;
     const bool persist = reg->storage == Storage::Eeprom && unlocked();
     put(reg, value);
-    if (persist
-        && m_image.mid(reg->address, reg->size) != m_registers.mid(reg->address, reg->size)) {
-        putRegisterBytes(*reg, m_registers, m_image);
+    if (persist)
+        keepInImage(*reg);
+}
+
+void VirtualFeetechServo::keepInImage(const Register &reg)
+{
+    if (m_image.mid(reg.address, reg.size) != m_registers.mid(reg.address, reg.size)) {
+        putRegisterBytes(reg, m_registers, m_image);
         ++m_eepromRevision;
     }
 }
@@ -210,6 +215,16 @@ qint64 VirtualFeetechServo::returnDelayUs() const
 }
 
 // ---- EEPROM image and power -----------------------------------------------------------------
+
+void VirtualFeetechServo::storeValue(QStringView key, qint32 value)
+{
+    const Register *reg = m_table->find(key);
+    Q_ASSERT_X(reg, "VirtualFeetechServo::storeValue", "no such register in the family's table");
+    put(reg, value);
+    if (reg->storage == Storage::Eeprom)
+        keepInImage(*reg);
+    refreshRegisters();
+}
 
 bool VirtualFeetechServo::setEepromImage(const QByteArray &image)
 {

@@ -91,6 +91,9 @@ public:
     // Test hooks: decoded register units; setValue writes the live register, no lock semantics.
     qint32 value(QStringView key) const;
     void setValue(QStringView key, qint32 value);
+    // As an unlocked host write: an EEPROM register keeps the value across power cycles, a RAM
+    // register until the next one. For set-up scenes (a robot's settings, a servo put at an ID).
+    void storeValue(QStringView key, qint32 value);
     const QByteArray &registerFile() const { return m_registers; }
 
 private:
@@ -144,6 +147,7 @@ private:
     void put(const feetech::Register *reg, qint32 value); // clamps to what the format holds
     void putRegisterBytes(const feetech::Register &reg, const QByteArray &from, QByteArray &to);
     void store(const feetech::Register *reg, qint32 value); // a host write: lock semantics
+    void keepInImage(const feetech::Register &reg); // the live bytes become the EEPROM's
     bool unlocked() const;
     bool replies(quint8 instruction, bool broadcast) const;
     QByteArray statusReply(quint8 replyId, const QByteArray &data = {}) const;

@@ -18,6 +18,7 @@ constexpr int kPortRefreshMs = 1000;
 
 const QString ConnectionBar::kSimulatedPtkPort = QStringLiteral("simulated:ptk");
 const QString ConnectionBar::kSimulatedFeetechPort = QStringLiteral("simulated:feetech");
+const QString ConnectionBar::kSimulatedArmPort = QStringLiteral("simulated:so101");
 
 ConnectionBar::ConnectionBar(QWidget *parent)
     : QToolBar(tr("Connection"), parent)
@@ -37,7 +38,7 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     connect(m_port, &QComboBox::activated, this, [this] {
         if (port() == kSimulatedPtkPort)
             setProtocol(Protocol::Ptk);
-        else if (port() == kSimulatedFeetechPort)
+        else if (port() == kSimulatedFeetechPort || port() == kSimulatedArmPort)
             setProtocol(Protocol::Feetech);
     });
 
@@ -167,6 +168,7 @@ void ConnectionBar::refreshPorts()
     }
     m_port->addItem(tr("Simulated PTK servo"), kSimulatedPtkPort);
     m_port->addItem(tr("Simulated Feetech bus"), kSimulatedFeetechPort);
+    m_port->addItem(tr("Simulated SO-101 arm"), kSimulatedArmPort);
     if (!chosen.isEmpty())
         setPort(chosen);
 }

@@ -17,6 +17,7 @@ public:
     // The port list's entries for the in-process simulated servos.
     static const QString kSimulatedPtkPort;
     static const QString kSimulatedFeetechPort;
+    static const QString kSimulatedArmPort; // an SO-101 arm's six STS3215, set up
 
     enum class Protocol { Ptk, Feetech };
 

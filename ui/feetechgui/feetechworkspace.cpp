@@ -11,6 +11,7 @@
 #include "feetechgui/jointtable.h"
 #include "feetechgui/monitorpage.h"
 #include "feetechgui/registertablemodel.h"
+#include "feetechgui/robotactions.h"
 #include "feetechgui/scandialog.h"
 
 #include <QCheckBox>
@@ -18,14 +19,17 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSet>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableView>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -93,6 +97,8 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_tree->setUniformRowHeights(true);
     m_tree->header()->setStretchLastSection(false);
     m_tree->setIndentation(m_tree->fontMetrics().horizontalAdvance(u'm') * 3 / 2);
+    m_tree->setSelectionMode(QAbstractItemView::ExtendedSelection); // the robot actions take many
+    m_tree->setContextMenuPolicy(Qt::CustomContextMenu);
     leftLayout->addWidget(m_tree, 1);
     // The emergency stop stays in sight whatever page is open; Esc does the same everywhere.
     m_allTorqueOff = actionButton(tr("All torque off  (Esc)"), "allTorqueOffButton",
@@ -292,6 +298,14 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
                     selectServo(m_client->servo(0).info.id, m_client->servo(0).info.baud);
                 updateActions();
             });
+    m_robot = new RobotActions(m_client, this);
+    connect(m_robot, &RobotActions::problem, this, &FeetechWorkspace::problem);
+    connect(m_robot, &RobotActions::message, this, &FeetechWorkspace::message);
+    connect(m_tree, &QWidget::customContextMenuRequested, this, [this](const QPoint &at) {
+        QMenu menu(this);
+        m_robot->addTo(&menu);
+        menu.exec(m_tree->viewport()->mapToGlobal(at));
+    });
     rebuildTree();
     showServo();
 }
@@ -310,6 +324,10 @@ void FeetechWorkspace::setPortName(const QString &name)
 void FeetechWorkspace::selectServo(quint8 id, qint32 baud)
 {
     m_current = std::make_pair(id, baud);
+    {
+        const QSignalBlocker quiet(m_tree);
+        m_tree->clearSelection(); // this one servo, not those selected before
+    }
     rebuildTree();
     showServo();
     readIfNew();
@@ -349,6 +367,11 @@ void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
 void FeetechWorkspace::rebuildTree()
 {
     const QSignalBlocker quiet(m_tree);
+    // Servos selected for the robot actions stay selected across a rebuild (one comes after
+    // every operation, a batch's included).
+    QSet<std::pair<quint8, qint32>> wasSelected;
+    for (const int index : selectedServos())
+        wasSelected.insert({m_client->servo(index).info.id, m_client->servo(index).info.baud});
     m_tree->clear();
     if (m_client->servoCount() == 0) {
         updateActions();
@@ -358,6 +381,7 @@ void FeetechWorkspace::rebuildTree()
     QTreeWidgetItem *baudItem = nullptr;
     qint32 baud = 0;
     QTreeWidgetItem *selected = nullptr;
+    QList<QTreeWidgetItem *> alsoSelected;
     for (int i = 0; i < m_client->servoCount(); ++i) {
         const feetech::ServoInfo &info = m_client->servo(i).info;
         if (!baudItem || info.baud != baud) {
@@ -381,21 +405,50 @@ void FeetechWorkspace::rebuildTree()
                                 "memory is shown as raw bytes, read-only."));
         if (m_current && m_current->first == info.id && m_current->second == info.baud)
             selected = item;
+        else if (wasSelected.contains({info.id, info.baud}))
+            alsoSelected.append(item);
     }
     m_tree->expandAll();
     for (int column = 0; column < TreeColumns; ++column)
         m_tree->resizeColumnToContents(column);
     if (selected)
-        selected->setSelected(true);
+        m_tree->setCurrentItem(selected);
+    for (QTreeWidgetItem *item : std::as_const(alsoSelected))
+        item->setSelected(true);
     updateActions();
+}
+
+QVector<int> FeetechWorkspace::selectedServos() const
+{
+    QVector<int> indexes;
+    for (QTreeWidgetItemIterator it(m_tree, QTreeWidgetItemIterator::Selected); *it; ++it) {
+        const QVariant id = (*it)->data(ServoColumn, kIdRole);
+        if (!id.isValid())
+            continue;
+        const int index = m_client->indexOf(quint8(id.toUInt()),
+                                            qint32((*it)->data(ServoColumn, kBaudRole).toInt()));
+        if (index >= 0)
+            indexes.append(index);
+    }
+    return indexes;
 }
 
 void FeetechWorkspace::onSelectionChanged()
 {
-    const QList<QTreeWidgetItem *> items = m_tree->selectedItems();
-    if (items.isEmpty() || !items.first()->data(ServoColumn, kIdRole).isValid())
+    // The pages show the servo clicked last (the tree's current item) while it is selected,
+    // else the first servo selected.
+    const QTreeWidgetItem *item = m_tree->currentItem();
+    if (!item || !item->isSelected() || !item->data(ServoColumn, kIdRole).isValid()) {
+        item = nullptr;
+        for (QTreeWidgetItem *selected : m_tree->selectedItems()) {
+            if (selected->data(ServoColumn, kIdRole).isValid()) {
+                item = selected;
+                break;
+            }
+        }
+    }
+    if (!item)
         return;
-    const QTreeWidgetItem *item = items.first();
     m_current = std::make_pair(quint8(item->data(ServoColumn, kIdRole).toUInt()),
                                qint32(item->data(ServoColumn, kBaudRole).toInt()));
     showServo();

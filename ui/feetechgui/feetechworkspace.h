@@ -22,6 +22,7 @@ class QTableView;
 class QTimer;
 class QTreeWidget;
 class RegisterTableModel;
+class RobotActions;
 
 namespace feetech {
 class BusClient;
@@ -36,6 +37,9 @@ public:
 
     // The servo the pages show (-1: none).
     int currentIndex() const;
+    // The servos selected in the tree (BusClient numbering, tree order); several with
+    // Ctrl+click or Shift+click.
+    QVector<int> selectedServos() const;
     void selectServo(quint8 id, qint32 baud);
     void setPortName(const QString &name); // the tree's top item
 
@@ -55,6 +59,7 @@ public:
     ControlPage *controlPage() const { return m_control; }
     JointTable *jointTable() const { return m_joints; }
     QPushButton *allTorqueOffButton() const { return m_allTorqueOff; }
+    RobotActions *robotActions() const { return m_robot; }
 
 signals:
     void problem(const QString &message);
@@ -110,4 +115,5 @@ private:
     QPushButton *m_tableRevert = nullptr;
     QPushButton *m_tableApply = nullptr;
     QTimer *m_liveTimer = nullptr;
+    RobotActions *m_robot = nullptr;
 };

@@ -59,9 +59,9 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     // ---- the table
     m_table = new QTableWidget(0, ColumnCount, this);
     m_table->setObjectName(QStringLiteral("jointTableView"));
-    m_table->setHorizontalHeaderLabels({tr("ID"), tr("Model"), tr("Baud rate"),
-                                        tr("Position (steps)"), tr("Target (steps)"),
-                                        tr("Target range"), tr("Torque"), tr("Motion")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("ID"), tr("Model"), tr("Baud rate"), tr("Position (steps)"), tr("Target (steps)"),
+         tr("Target range"), tr("Torque"), tr("Motion"), tr("Identify")});
     const auto headerTip = [this](int column, const QString &tip) {
         m_table->horizontalHeaderItem(column)->setToolTip(tip);
     };
@@ -75,6 +75,9 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
                  "unknown or both 0"));
     headerTip(TorqueColumn, tr("Tick to switch torque on, untick to switch it off"));
     headerTip(MovingColumn, tr("Whether the servo reports that it is moving"));
+    headerTip(IdentifyColumn,
+              tr("Wiggle the servo slowly with little torque, then put it back as it was: see "
+                 "which servo of the arm it is"));
     m_table->setItemDelegateForColumn(TargetColumn, new TargetDelegate(m_table));
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -88,7 +91,7 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setStretchLastSection(true);
     // In character widths, so every column fits beside the servo tree at any font size.
-    const int ems[ColumnCount] = {4, 8, 7, 10, 9, 10, 9, 6};
+    const int ems[ColumnCount] = {3, 7, 7, 10, 9, 9, 8, 6, 6};
     const int em = m_table->fontMetrics().horizontalAdvance(u'm');
     for (int column = 0; column < ColumnCount; ++column)
         m_table->setColumnWidth(column, ems[column] * em);
@@ -148,6 +151,7 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
             m_rows[row].sampleNewer = false;
         }
         refreshRow(row);
+        refreshIdentifyButtons(); // a motion test may hold the servo now, or have let it go
     });
     connect(m_client, &feetech::BusClient::telemetryReceived, this, &JointTable::onTelemetry);
     connect(m_client, &feetech::BusClient::monitoringChanged, this, [this] {
@@ -164,6 +168,7 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
         refreshHint();
         refreshButtons();
     });
+    connect(m_client, &feetech::BusClient::busyChanged, this, &JointTable::refreshIdentifyButtons);
     connect(m_client, &feetech::BusClient::operationFinished, this,
             &JointTable::onOperationFinished);
 
@@ -335,6 +340,15 @@ void JointTable::rebuild()
                 item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             m_table->setItem(row, column, item);
         }
+        auto *identify = new QPushButton(tr("Identify"), m_table);
+        identify->setObjectName(QStringLiteral("identifyButton"));
+        connect(identify, &QPushButton::clicked, this,
+                [this, id = m_rows.at(row).id, baud = m_rows.at(row).baud] {
+                    QString error;
+                    if (!this->identify(rowOf(id, baud), &error))
+                        setMessage(error, Tone::Error);
+                });
+        m_table->setCellWidget(row, IdentifyColumn, identify);
         refreshRow(row);
     }
     refreshHint();
@@ -384,6 +398,7 @@ void JointTable::refreshButtons()
     m_save->setEnabled(anyTarget);
     m_moveAll->setEnabled(connected && anyTarget);
     m_poseLabel->setText(m_poseName.isEmpty() ? QString() : tr("Pose: %1").arg(m_poseName));
+    refreshIdentifyButtons();
 }
 
 void JointTable::onTelemetry(const QVector<feetech::FeedbackSample> &samples)
@@ -403,6 +418,10 @@ void JointTable::onTelemetry(const QVector<feetech::FeedbackSample> &samples)
 
 void JointTable::onOperationFinished(const feetech::OperationResult &result)
 {
+    if (result.operation == feetech::Operation::Identify) {
+        setMessage(result.message, result.ok ? Tone::Success : Tone::Error);
+        return;
+    }
     if (result.operation == feetech::Operation::SyncWrite && m_movesInFlight > 0) {
         --m_movesInFlight;
         if (!result.ok)

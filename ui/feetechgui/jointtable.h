@@ -36,6 +36,7 @@ public:
         RangeColumn,
         TorqueColumn,
         MovingColumn,
+        IdentifyColumn, // a button: wiggle the servo to see which one it is
         ColumnCount
     };
 
@@ -79,6 +80,10 @@ public:
     bool setTorque(int row, bool on, QString *error = nullptr);
     // Asks every servo for its registers, so positions, limits and torque are current.
     bool readPositions(QString *error = nullptr);
+    // Identifies the row's servo (BusClient::identifyJoint): a slow wiggle, then everything
+    // restored. The row's button is disabled, its tooltip saying why, when it cannot be.
+    bool identify(int row, QString *error = nullptr);
+    QPushButton *identifyButton(int row) const;
 
     // The rows' targets as a pose file (rows without a target are left out).
     bool savePose(const QString &path, QString *error = nullptr);
@@ -111,6 +116,7 @@ private:
     void refreshTarget(int row);
     void refreshHint();
     void refreshButtons();
+    void refreshIdentifyButtons();
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
     void onOperationFinished(const feetech::OperationResult &result);
     void onItemChanged(QTableWidgetItem *item);

@@ -132,6 +132,44 @@ bool JointTable::readPositions(QString *error)
     return true;
 }
 
+bool JointTable::identify(int row, QString *error)
+{
+    const int index = servoIndex(row);
+    if (index < 0) {
+        if (error)
+            *error = tr("That servo is no longer on the bus.");
+        return false;
+    }
+    QString why;
+    if (!m_client->identifyJoint(index, &why)) {
+        if (error)
+            *error = tr("%1 cannot be identified now: %2").arg(servoName(row), why);
+        return false;
+    }
+    setMessage(tr("Identifying %1: watch which horn moves…").arg(servoName(row)), Tone::Info);
+    return true;
+}
+
+QPushButton *JointTable::identifyButton(int row) const
+{
+    return qobject_cast<QPushButton *>(m_table->cellWidget(row, IdentifyColumn));
+}
+
+void JointTable::refreshIdentifyButtons()
+{
+    for (int row = 0; row < rowCount(); ++row) {
+        QPushButton *button = identifyButton(row);
+        if (!button)
+            continue;
+        const QString why = m_client->identifyBlocker(servoIndex(row));
+        button->setEnabled(why.isEmpty());
+        button->setToolTip(why.isEmpty() ? tr("Wiggle %1 slowly with little torque, then put it "
+                                              "back as it was")
+                                               .arg(servoName(row))
+                                         : why);
+    }
+}
+
 void JointTable::onMoveAllClicked()
 {
     QString error;

@@ -1,0 +1,297 @@
+// Identify a joint: read, hold where it is, wiggle slowly with little torque, put everything back.
+#include "feetech/jointidentify.h"
+
+#include "feetech/feetechvalue.h"
+#include "feetech/goalrange.h"
+#include "feetech/registerkeys.h"
+#include "feetech/servoparameters.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QHash>
+
+#include <algorithm>
+#include <cmath>
+
+namespace feetech {
+
+using namespace registerkeys;
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
+};
+
+const QString kTorqueLimit = QStringLiteral("torque_limit");
+
+constexpr qint32 kPositionMode = 0; // register 33: every family's mode 0 holds a position
+
+} // namespace
+
+struct JointIdentify::Run
+{
+    ServoInfo servo;
+    std::shared_ptr<ServoInfo> target;
+    GuidedFlows::Finish finish;
+    Pause pause;
+    QHash<QString, qint32> before; // as read at the start
+    QHash<QString, qint32> now; // the latest poll
+    QVector<qint32> legs; // goal positions, the last one the start
+    int leg = -1;
+    QElapsedTimer legClock;
+    bool changed = false; // something was written: restore before ending
+    bool torqueWasOn = false;
+};
+
+JointIdentify::JointIdentify(BusExchange &bus, QObject *parent)
+    : QObject(parent)
+    , m_bus(bus)
+{ }
+
+std::vector<Step> JointIdentify::readSteps(std::shared_ptr<Run> run, const QStringList &keys)
+{
+    std::vector<Step> steps;
+    const RegisterTable &table = run->servo.table();
+    for (const QString &key : keys) {
+        const Register *reg = table.find(key);
+        if (!reg)
+            continue;
+        const ValueFormat format = table.format(*reg);
+        steps.push_back(m_bus.read(run->target, reg->address, reg->size, ReadSource::ReadBack,
+                                   [run, key, format](const QByteArray &bytes) {
+                                       run->now.insert(key, decodeValue(bytes, format));
+                                   }));
+    }
+    return steps;
+}
+
+Step JointIdentify::writeStep(std::shared_ptr<Run> run, const QString &key, qint32 value)
+{
+    const ServoInfo &servo = run->servo;
+    QString error;
+    const auto writes = encodeWrites(servo.table(), {{key, value}}, &error);
+    if (!writes || writes->size() != 1)
+        return [error](StepDone next) {
+            next(false, error);
+        };
+    const RegisterWrite write = writes->first();
+    return [this, run, write, key](StepDone next) {
+        run->changed = true;
+        m_bus.write(run->servo.id, write.address, write.bytes, run->servo.repliesToWrites(),
+                    Tr::tr("Writing %1").arg(key))(next);
+    };
+}
+
+void JointIdentify::run(const ServoInfo &servo, GuidedFlows::Finish finish, Pause pause)
+{
+    auto run = std::make_shared<Run>();
+    run->servo = servo;
+    run->target = std::make_shared<ServoInfo>(servo);
+    run->finish = std::move(finish);
+    run->pause = std::move(pause);
+    const RegisterTable &table = servo.table();
+    if (!servo.hasTable() || !table.find(kGoalPosition) || !table.find(kPresentPosition)
+        || !table.find(kTorqueEnable) || !table.torqueValue(TorqueMode::On)
+        || !table.torqueValue(TorqueMode::Off)) {
+        end(run, false,
+            Tr::tr("%1 is of a model ServoBench does not move (%2); it cannot be identified.")
+                .arg(servoName(servo), servo.model.name));
+        return;
+    }
+    std::vector<Step> steps {m_bus.setBaud(servo.baud)};
+    for (Step &step : readSteps(run,
+                                {kMinAngleLimit, kMaxAngleLimit, kMode, kTorqueEnable, kTorqueLimit,
+                                 kGoalSpeed, kAcceleration, kGoalPosition, kPresentPosition}))
+        steps.push_back(std::move(step));
+    m_bus.runSteps(std::move(steps), [this, run](bool ok, const QString &message) {
+        if (!ok) {
+            end(run, false, Tr::tr("%1 does not answer: %2").arg(servoName(run->servo), message));
+            return;
+        }
+        run->before = run->now;
+        begin(run);
+    });
+}
+
+void JointIdentify::begin(std::shared_ptr<Run> run)
+{
+    const ServoInfo &servo = run->servo;
+    const RegisterTable &table = servo.table();
+    const QHash<QString, qint32> &before = run->before;
+    if (before.contains(kMode) && before.value(kMode) != kPositionMode) {
+        end(run, false,
+            Tr::tr("%1 is not in position mode (mode %2): it is not moved to identify it.")
+                .arg(servoName(servo))
+                .arg(before.value(kMode)));
+        return;
+    }
+    const auto torque = table.torqueMode(before.value(kTorqueEnable));
+    if (torque != TorqueMode::On && torque != TorqueMode::Off) {
+        end(run, false,
+            Tr::tr("%1 holds torque enable %2, neither on nor off: it is not moved.")
+                .arg(servoName(servo))
+                .arg(before.value(kTorqueEnable)));
+        return;
+    }
+    run->torqueWasOn = torque == TorqueMode::On;
+    const auto read = [&before](const QString &key) -> std::optional<qint64> {
+        if (!before.contains(key))
+            return std::nullopt;
+        return before.value(key);
+    };
+    const auto range = goalRange(table, read(kMinAngleLimit), read(kMaxAngleLimit));
+    const qint32 start = before.value(kPresentPosition);
+    if (!range || !range->contains(start)) {
+        end(run, false,
+            Tr::tr("%1 stands at %2, outside the goal positions it accepts: it is not moved.")
+                .arg(servoName(servo))
+                .arg(start));
+        return;
+    }
+    const qint32 up = std::min(start + kAmplitude, range->maximum);
+    const qint32 down = std::max(start - kAmplitude, range->minimum);
+    if (up - down < kAmplitude) {
+        end(run, false,
+            Tr::tr("%1's angle limits leave no room to move it around %2.")
+                .arg(servoName(servo))
+                .arg(start));
+        return;
+    }
+    run->legs = {up, down, start};
+
+    // The goal first: torque switched on over a stale goal would jump there.
+    std::vector<Step> steps {writeStep(run, kGoalPosition, start)};
+    if (const Register *speed = table.find(kGoalSpeed))
+        steps.push_back(writeStep(run, kGoalSpeed, std::min(kSlowSpeed, speed->maximum)));
+    if (const Register *acceleration = table.find(kAcceleration))
+        steps.push_back(
+            writeStep(run, kAcceleration,
+                      std::clamp(kGentleAcceleration, std::max(acceleration->minimum, 1),
+                                 acceleration->maximum)));
+    const Register *limit = table.find(kTorqueLimit);
+    if (limit && limit->storage == Storage::Ram && limit->writable()
+        && before.contains(kTorqueLimit)) {
+        const auto low = qint32(std::lround(limit->maximum * kTorqueShare));
+        steps.push_back(writeStep(run, kTorqueLimit, std::min(low, before.value(kTorqueLimit))));
+    }
+    if (!run->torqueWasOn)
+        steps.push_back(writeStep(run, kTorqueEnable, *table.torqueValue(TorqueMode::On)));
+    runOrRestore(run, std::move(steps), [this, run] { nextLeg(run); });
+}
+
+void JointIdentify::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> steps,
+                                 std::function<void()> then)
+{
+    m_bus.runSteps(std::move(steps), [this, run, then](bool ok, const QString &message) {
+        if (!ok) {
+            restore(run, false,
+                    Tr::tr("%1 stopped answering: %2").arg(servoName(run->servo), message));
+            return;
+        }
+        then();
+    });
+}
+
+void JointIdentify::nextLeg(std::shared_ptr<Run> run)
+{
+    ++run->leg;
+    if (run->leg >= run->legs.size()) {
+        restore(run, false, {});
+        return;
+    }
+    run->legClock.start();
+    runOrRestore(run, {writeStep(run, kGoalPosition, run->legs.at(run->leg))},
+                 [this, run] { poll(run); });
+}
+
+void JointIdentify::poll(std::shared_ptr<Run> run)
+{
+    run->pause(m_bus.timing().identifyPollInterval, [this, run](bool torqueOff) {
+        if (torqueOff) {
+            restore(
+                run, true,
+                Tr::tr("All torque off: identifying %1 was stopped.").arg(servoName(run->servo)));
+            return;
+        }
+        run->now.remove(kMoving);
+        runOrRestore(run, readSteps(run, {kPresentPosition, kMoving}), [this, run] {
+            const qint32 goal = run->legs.at(run->leg);
+            const bool there = std::abs(run->now.value(kPresentPosition) - goal) <= kReachTolerance
+                && run->now.value(kMoving) == 0;
+            // Held off by a load, say: the wiggle goes on from where it is.
+            const bool late = run->legClock.elapsed() >= m_bus.timing().identifyMoveTimeout.count();
+            if (there || late)
+                nextLeg(run);
+            else
+                poll(run);
+        });
+    });
+}
+
+void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, const QString &failure)
+{
+    const RegisterTable &table = run->servo.table();
+    const QHash<QString, qint32> &before = run->before;
+    std::vector<Step> steps;
+    QStringList restored;
+    // Torque off first where it was off, so putting the goal back moves nothing; after All
+    // torque off it stays off whatever it was.
+    if (!run->torqueWasOn && !torqueOff)
+        steps.push_back(writeStep(run, kTorqueEnable, *table.torqueValue(TorqueMode::Off)));
+    for (const QString &key : {kGoalPosition, kGoalSpeed, kAcceleration, kTorqueLimit}) {
+        if (before.contains(key) && table.find(key) && table.find(key)->writable()) {
+            steps.push_back(writeStep(run, key, before.value(key)));
+            restored.append(key);
+        }
+    }
+    if (!torqueOff)
+        restored.append(kTorqueEnable);
+    if (!run->changed) {
+        end(run, failure.isEmpty(), failure);
+        return;
+    }
+    for (Step &step : readSteps(run, restored))
+        steps.push_back(std::move(step));
+    m_bus.runSteps(
+        std::move(steps), [this, run, restored, failure](bool ok, const QString &message) {
+            QStringList differ;
+            for (const QString &key : restored) {
+                if (ok && run->now.value(key) != run->before.value(key))
+                    differ.append(Tr::tr("%1 reads %2, not %3")
+                                      .arg(key)
+                                      .arg(run->now.value(key))
+                                      .arg(run->before.value(key)));
+            }
+            QString problem;
+            if (!ok)
+                problem = Tr::tr("its registers could not be restored (%1); check its torque.")
+                              .arg(message);
+            else if (!differ.isEmpty())
+                problem = Tr::tr("it was not restored as it was: %1.")
+                              .arg(differ.join(QStringLiteral(", ")));
+            if (!failure.isEmpty()) {
+                end(run, false, problem.isEmpty() ? failure : failure + QLatin1Char(' ') + problem);
+                return;
+            }
+            if (!problem.isEmpty()) {
+                end(run, false, Tr::tr("%1 was moved, but %2").arg(servoName(run->servo), problem));
+                return;
+            }
+            end(run, true,
+                (run->torqueWasOn ? Tr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
+                                           "on, as it was.")
+                                  : Tr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
+                                           "off, as it was."))
+                    .arg(servoName(run->servo), run->servo.model.name)
+                    .arg(run->legs.last()));
+        });
+}
+
+void JointIdentify::end(std::shared_ptr<Run> run, bool ok, const QString &message)
+{
+    run->finish({Operation::Identify, ok, message, run->servo, {}});
+}
+
+} // namespace feetech

@@ -1,0 +1,65 @@
+// A file of servo settings to program into one servo or many: a profile (the same values for
+// every servo of its family) or a robot template (each servo gets its joint's settings by ID).
+#pragma once
+
+#include "feetech/bustypes.h"
+#include "feetech/robottemplate.h"
+#include "model/parametermodel.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+#include <QVector>
+
+#include <functional>
+#include <optional>
+
+namespace feetech {
+
+class SettingsFile
+{
+public:
+    // Reads and checks `path` before anything is sent: a robot template (its "format" says so)
+    // checked as robotTemplateFromJson checks it, else a profile valid for at least one Feetech
+    // family. Nothing and *error (naming the file and the problem) when it is neither.
+    static std::optional<SettingsFile> load(const QString &path, QString *error);
+    static SettingsFile fromTemplate(const RobotTemplate &robot);
+
+    bool isTemplate() const { return m_robot.has_value(); }
+    const std::optional<RobotTemplate> &robot() const { return m_robot; }
+    const QString &source() const { return m_source; }
+
+    // The register values (register units, by key) `servo` should hold. Nothing and *error
+    // when the file does not fit it: a profile of another family, a template with no joint of
+    // the servo's ID, or a joint of another model.
+    std::optional<QVector<model::WriteItem>> valuesFor(const ServoInfo &servo,
+                                                       QString *error) const;
+
+private:
+    QString m_source; // the file, for messages
+    QByteArray m_profile; // a profile's JSON, parsed again per family
+    std::optional<RobotTemplate> m_robot;
+};
+
+// The values of `wanted` that `current` (the servo's value of a key, none when unknown) does not
+// already hold: what programming the servo writes.
+QVector<model::WriteItem>
+changedValues(const QVector<model::WriteItem> &wanted,
+              const std::function<std::optional<qint64>(const QString &key)> &current);
+
+// What programming one servo of many came to.
+struct ProgramOutcome
+{
+    enum class Status { Ok, Unchanged, Failed };
+    quint8 id = 0;
+    qint32 baud = 0;
+    Status status = Status::Failed;
+    QStringList changed; // the keys written (or that were to be, when it failed)
+    QString error; // why it failed, for the user
+};
+// "ok", "unchanged", "failed": the words servoctl's JSON uses.
+QString statusKey(ProgramOutcome::Status status);
+// The same for people (translated).
+QString statusText(ProgramOutcome::Status status);
+
+} // namespace feetech

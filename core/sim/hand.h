@@ -1,0 +1,76 @@
+// The simulator's hand: turns the horns of simulated Feetech servos whose torque is off, at once
+// or in a scripted back-and-forth sweep, as a user moving joints during a calibration would.
+// Pure logic: time passes through the bus's advanceTo().
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <QtGlobal>
+
+#include <initializer_list>
+#include <vector>
+
+namespace sim {
+
+class VirtualFeetechBus;
+
+class Hand
+{
+public:
+    // How a sweep goes from FROM to TO on a full-circle servo: straight between the two numbers,
+    // or always upward / downward, crossing the 4095/0 seam when it has to (3900 up to 200).
+    enum class Way { Direct, Up, Down };
+    static constexpr double kMaxSweepSeconds = 3600.0;
+    static constexpr int kMaxSweepCycles = 1'000'000;
+
+    explicit Hand(VirtualFeetechBus &bus);
+    Hand(const Hand &) = delete;
+    Hand &operator=(const Hand &) = delete;
+
+    // Positions are present positions, what the host reads (the horn less the position offset):
+    // 0-4095 on a full-circle servo, 0-1023 on an SCS. A servo with its torque on holds its
+    // position: the hand refuses it. By ID the servo must be the only one at that ID.
+    bool turn(quint8 id, int position, QString *error = nullptr);
+    bool turnServo(int index, int position, QString *error = nullptr);
+    // From FROM to TO and back in `seconds`, `cycles` times (0: until stop()); the horn starts
+    // at FROM now and rests at FROM at the end. A sweep lets go when the servo's torque comes on.
+    bool sweep(quint8 id, int from, int to, double seconds, int cycles = 0, Way way = Way::Direct,
+               QString *error = nullptr);
+    bool sweepServo(int index, int from, int to, double seconds, int cycles = 0,
+                    Way way = Way::Direct, QString *error = nullptr);
+    // Lets go of every servo; the number of sweeps stopped.
+    int stop();
+    bool isSweeping(int index) const;
+    int sweepCount() const { return int(m_sweeps.size()); }
+
+    // Called by the bus after the servos have advanced to `nowUs`.
+    void advanceTo(qint64 nowUs);
+    // The servo at `index` left the bus: its sweep ends and later servos move up one place.
+    void servoUnplugged(int index);
+    // What the hand did on its own since the last call (a sweep ended or was resisted).
+    QStringList takeNotes();
+
+private:
+    struct Sweep
+    {
+        int index = 0;
+        double from = 0.0;
+        double to = 0.0; // may lie beyond 0-4095: the way across the seam
+        double periodUs = 0.0;
+        int cycles = 0;
+        qint64 startUs = 0;
+    };
+
+    // The servo exists, its torque is off and every position is in its range.
+    bool checkServo(int index, std::initializer_list<int> positions, QString *error) const;
+    bool holdsTorque(int index, QString *error) const;
+    void place(int index, double position);
+    void letGo(int index);
+    QString describe(int index) const;
+
+    VirtualFeetechBus &m_bus;
+    std::vector<Sweep> m_sweeps;
+    QStringList m_notes;
+};
+
+} // namespace sim

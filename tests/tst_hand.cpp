@@ -1,0 +1,229 @@
+// Tests the simulator's hand: turns and sweeps of horns whose torque is off, seam crossing,
+// joints with torque on, and servos put at a shared ID.
+#include "sim/virtualfeetechbus.h"
+
+#include <QtTest>
+
+using sim::Hand;
+using sim::VirtualFeetechBus;
+
+namespace {
+
+constexpr qint64 kMs = 1000;
+
+std::unique_ptr<VirtualFeetechBus> armBus()
+{
+    QString error;
+    auto bus = VirtualFeetechBus::create({{1, QStringLiteral("STS3215"), 0},
+                                          {2, QStringLiteral("STS3215"), 0},
+                                          {3, QStringLiteral("SCS15"), 0}},
+                                         &error);
+    if (!bus)
+        qFatal("%s", qPrintable(error));
+    return bus;
+}
+
+int present(VirtualFeetechBus &bus, quint8 id)
+{
+    return bus.findServo(id)->value(u"present_position");
+}
+
+} // namespace
+
+class TestHand : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void turnPutsTheHornAtThePresentPositionAtOnce()
+    {
+        auto bus = armBus();
+        QString error;
+        QVERIFY2(bus->hand().turn(1, 1000, &error), qPrintable(error));
+        QCOMPARE(present(*bus, 1), 1000);
+        QVERIFY(bus->hand().turn(3, 1023));
+        QCOMPARE(present(*bus, 3), 1023);
+    }
+
+    void turnCountsFromThePositionOffsetLikeTheHostReads()
+    {
+        auto bus = armBus();
+        bus->findServo(1)->setValue(u"position_offset", 100);
+        QVERIFY(bus->hand().turn(1, 50));
+        QCOMPARE(present(*bus, 1), 50);
+        QCOMPARE(qRound(bus->findServo(1)->physicalPosition()), 150);
+    }
+
+    void turnRefusesPositionsOutsideTheServosRange()
+    {
+        auto bus = armBus();
+        QString error;
+        QVERIFY(!bus->hand().turn(1, 4096, &error));
+        QVERIFY2(error.contains(QLatin1String("0 to 4095")), qPrintable(error));
+        QVERIFY(!bus->hand().turn(3, 1024, &error));
+        QVERIFY2(error.contains(QLatin1String("0 to 1023")), qPrintable(error));
+        QVERIFY(!bus->hand().turn(9, 100, &error));
+        QVERIFY2(error.contains(QLatin1String("no servo has ID 9")), qPrintable(error));
+    }
+
+    void aJointWithTorqueOnResistsTheHand()
+    {
+        auto bus = armBus();
+        bus->findServo(2)->setValue(u"torque_enable", 1);
+        const int before = present(*bus, 2);
+        QString error;
+        QVERIFY(!bus->hand().turn(2, before + 500, &error));
+        QVERIFY2(error.contains(QLatin1String("torque on")), qPrintable(error));
+        QVERIFY(!bus->hand().sweep(2, 100, 200, 1.0, 1, Hand::Way::Direct, &error));
+        QVERIFY2(error.contains(QLatin1String("torque on")), qPrintable(error));
+        QCOMPARE(present(*bus, 2), before);
+    }
+
+    void sweepGoesFromAToBAndBackOverItsPeriod()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 1000, 3000, 2.0, 2));
+        QCOMPARE(present(*bus, 1), 1000);
+        bus->advanceTo(500 * kMs);
+        QCOMPARE(present(*bus, 1), 2000);
+        bus->advanceTo(1000 * kMs);
+        QCOMPARE(present(*bus, 1), 3000);
+        bus->advanceTo(1500 * kMs);
+        QCOMPARE(present(*bus, 1), 2000);
+        bus->advanceTo(2500 * kMs); // the second cycle
+        QCOMPARE(present(*bus, 1), 2000);
+        QVERIFY(bus->hand().isSweeping(0));
+        bus->advanceTo(4200 * kMs); // both cycles done: it rests at A and lets go
+        QCOMPARE(present(*bus, 1), 1000);
+        QVERIFY(!bus->hand().isSweeping(0));
+        const QStringList notes = bus->hand().takeNotes();
+        QCOMPARE(notes.size(), 1);
+        QVERIFY2(notes.first().contains(QLatin1String("finished")), qPrintable(notes.first()));
+        bus->advanceTo(5000 * kMs);
+        QCOMPARE(present(*bus, 1), 1000);
+    }
+
+    void sweepStartsAtTheBusesCurrentTime()
+    {
+        auto bus = armBus();
+        bus->advanceTo(10'000 * kMs);
+        QVERIFY(bus->hand().sweep(1, 0, 400, 4.0));
+        bus->advanceTo(11'000 * kMs);
+        QCOMPARE(present(*bus, 1), 200);
+    }
+
+    void sweepUpFrom3900To200CrossesTheSeam()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 3900, 200, 4.0, 1, Hand::Way::Up));
+        QList<int> seen;
+        for (qint64 ms = 0; ms <= 2000; ms += 250) {
+            bus->advanceTo(ms * kMs);
+            seen.append(present(*bus, 1));
+        }
+        // 396 steps up in 2 s: 49.5 steps every 250 ms, over 4095 to 0.
+        QCOMPARE(seen.first(), 3900);
+        QCOMPARE(seen.last(), 200);
+        QVERIFY(seen.contains(4048) || seen.contains(4049));
+        QVERIFY(std::any_of(seen.cbegin(), seen.cend(), [](int p) { return p < 200 && p > 0; }));
+        QVERIFY(
+            std::none_of(seen.cbegin(), seen.cend(), [](int p) { return p > 200 && p < 3900; }));
+    }
+
+    void sweepDownCrossesTheSeamTheOtherWay()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 100, 3996, 2.0, 1, Hand::Way::Down));
+        bus->advanceTo(500 * kMs); // 200 steps down in 1 s: halfway at the seam
+        QCOMPARE(present(*bus, 1), 0);
+        bus->advanceTo(1000 * kMs);
+        QCOMPARE(present(*bus, 1), 3996);
+    }
+
+    void anScsServoHasNoSeamToCross()
+    {
+        auto bus = armBus();
+        QString error;
+        QVERIFY(!bus->hand().sweep(3, 900, 100, 1.0, 1, Hand::Way::Up, &error));
+        QVERIFY2(error.contains(QLatin1String("SCS")), qPrintable(error));
+    }
+
+    void sweepRefusesBadTimesAndCycles()
+    {
+        auto bus = armBus();
+        QString error;
+        QVERIFY(!bus->hand().sweep(1, 0, 100, 0.0, 1, Hand::Way::Direct, &error));
+        QVERIFY2(error.contains(QLatin1String("seconds")), qPrintable(error));
+        QVERIFY(!bus->hand().sweep(1, 0, 100, 1.0, -1, Hand::Way::Direct, &error));
+        QVERIFY2(error.contains(QLatin1String("times")), qPrintable(error));
+    }
+
+    void torqueComingOnMidSweepMakesTheHandLetGo()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(2, 1000, 2000, 1.0));
+        bus->advanceTo(250 * kMs);
+        QCOMPARE(present(*bus, 2), 1500);
+        // The host holds the joint where it is, as a wizard does at its end.
+        bus->findServo(2)->setValue(u"goal_position", 1500);
+        bus->findServo(2)->setValue(u"torque_enable", 1);
+        bus->advanceTo(300 * kMs);
+        QVERIFY(!bus->hand().isSweeping(1));
+        const QStringList notes = bus->hand().takeNotes();
+        QCOMPARE(notes.size(), 1);
+        QVERIFY2(notes.first().contains(QLatin1String("torque on")), qPrintable(notes.first()));
+        QVERIFY(qAbs(present(*bus, 2) - 1500) <= 2); // the motor holds, the hand moves it no more
+    }
+
+    void stopLetsGoOfEverySweep()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 1000, 2000, 1.0));
+        QVERIFY(bus->hand().sweep(2, 1000, 2000, 1.0));
+        bus->advanceTo(250 * kMs);
+        QCOMPARE(bus->hand().stop(), 2);
+        bus->advanceTo(400 * kMs);
+        QCOMPARE(present(*bus, 1), 1500);
+        QCOMPARE(bus->hand().sweepCount(), 0);
+    }
+
+    void unplugEndsTheServosSweepAndKeepsTheOthers()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 1000, 2000, 1.0));
+        QVERIFY(bus->hand().sweep(2, 1000, 2000, 1.0));
+        QVERIFY(bus->unplug(0));
+        QCOMPARE(bus->hand().sweepCount(), 1);
+        QVERIFY(bus->hand().isSweeping(0)); // ID 2, now first
+        bus->advanceTo(250 * kMs);
+        QCOMPARE(present(*bus, 2), 1500);
+    }
+
+    void servosSharingAnIdAreTurnedByPlaceNotById()
+    {
+        auto bus = armBus();
+        QString error;
+        QVERIFY2(bus->setServoId(1, 1, &error), qPrintable(error));
+        QCOMPARE(bus->servo(1).id(), quint8(1));
+        QVERIFY(!bus->hand().turn(1, 100, &error));
+        QVERIFY2(error.contains(QLatin1String("#1, #2")), qPrintable(error));
+        QVERIFY(bus->hand().turnServo(1, 100, &error));
+        QCOMPARE(bus->servo(1).value(u"present_position"), 100);
+    }
+
+    void putAtIdSurvivesAPowerCycle()
+    {
+        auto bus = armBus();
+        QString error;
+        QVERIFY(bus->setServoId(2, 7, &error));
+        bus->powerCycle();
+        QCOMPARE(bus->servo(2).id(), quint8(7));
+        QVERIFY(!bus->setServoId(2, 254, &error));
+        QVERIFY2(error.contains(QLatin1String("out of range")), qPrintable(error));
+        QVERIFY(!bus->setServoId(5, 1, &error));
+        QVERIFY2(error.contains(QLatin1String("#6")), qPrintable(error));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestHand)
+#include "tst_hand.moc"

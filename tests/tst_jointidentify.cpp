@@ -1,0 +1,289 @@
+// Tests identifying a joint end to end on a simulated bus (STS3215 ×2, SCS0009 at 1 Mbps): the
+// horn moves only around where it stood and comes back, torque, torque limit, goal and speed are
+// restored whether torque was on or off, a servo held by a motion test is refused, and a servo
+// that stops answering is reported.
+#include "feetech/motiontest.h"
+#include "feetechbus.h"
+#include "servoctlrun.h"
+
+#include <QTimer>
+#include <QtTest>
+
+#include <algorithm>
+#include <memory>
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+constexpr qint32 kAmplitude = feetech::JointIdentify::kAmplitude;
+constexpr qint32 kTolerance = feetech::JointIdentify::kReachTolerance;
+
+} // namespace
+
+class TestJointIdentify : public testsupport::FeetechBusTest
+{
+    Q_OBJECT
+
+private:
+    std::unique_ptr<feetech::BusClient> m_client;
+
+    int readServo(quint8 id)
+    {
+        return testsupport::connectScanAndRead(*m_client, m_simulator->linkPath(), 4, id);
+    }
+
+    struct Watched
+    {
+        qint32 lowest = 0;
+        qint32 highest = 0;
+        qint32 lowestTorqueLimit = 0;
+        std::optional<feetech::OperationResult> result;
+    };
+
+    // Starts identifying servo `index` (ID `id`) and watches the simulated horn until the
+    // result comes (20 s at most).
+    Watched identifyWatching(int index, quint8 id)
+    {
+        Watched watched;
+        watched.lowest = watched.highest = simulatorValue(id, u"present_position");
+        watched.lowestTorqueLimit = simulatorValue(id, u"torque_limit");
+        QTimer sampler;
+        connect(&sampler, &QTimer::timeout, this, [&] {
+            const qint32 position = simulatorValue(id, u"present_position");
+            watched.lowest = std::min(watched.lowest, position);
+            watched.highest = std::max(watched.highest, position);
+            watched.lowestTorqueLimit =
+                std::min(watched.lowestTorqueLimit, simulatorValue(id, u"torque_limit"));
+        });
+        sampler.start(2);
+        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        QString error;
+        if (!m_client->identifyJoint(index, &error)) {
+            qWarning("identify refused: %s", qPrintable(error));
+            return watched;
+        }
+        const bool ended = QTest::qWaitFor(
+            [&] {
+                for (const QList<QVariant> &signal : std::as_const(finished)) {
+                    const auto result = signal.at(0).value<feetech::OperationResult>();
+                    if (result.operation == feetech::Operation::Identify) {
+                        watched.result = result;
+                        return true;
+                    }
+                }
+                return false;
+            },
+            20000);
+        if (!ended)
+            qWarning("identify did not end within 20 s");
+        return watched;
+    }
+
+private slots:
+    void init()
+    {
+        QString error;
+        const auto servos = testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS0009"});
+        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
+        m_client = std::make_unique<feetech::BusClient>(testsupport::patientTiming());
+    }
+
+    void cleanup()
+    {
+        m_client.reset();
+        m_simulator.reset();
+        QFile::remove(logPath());
+    }
+
+    void withTorqueOffTheHornWigglesAroundItsStartAndEverythingIsRestored()
+    {
+        setSimulatorValue(1, u"goal_speed", 777);
+        const int index = readServo(1);
+        QVERIFY(index >= 0);
+        const qint32 start = simulatorValue(1, u"present_position");
+        const qint32 limit = simulatorValue(1, u"torque_limit");
+        const qint32 goal = simulatorValue(1, u"goal_position");
+        const qint32 acceleration = simulatorValue(1, u"acceleration");
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+
+        const Watched watched = identifyWatching(index, 1);
+        QVERIFY(watched.result);
+        QVERIFY2(watched.result->ok, qPrintable(watched.result->message));
+        QVERIFY(watched.result->message.contains(QStringLiteral("off")));
+        // It moved both ways, never further than the amplitude, and came back.
+        QVERIFY2(watched.highest >= start + kAmplitude / 2,
+                 qPrintable(QString::number(watched.highest)));
+        QVERIFY2(watched.lowest <= start - kAmplitude / 2,
+                 qPrintable(QString::number(watched.lowest)));
+        QVERIFY(watched.highest <= start + kAmplitude + kTolerance);
+        QVERIFY(watched.lowest >= start - kAmplitude - kTolerance);
+        QVERIFY(std::abs(simulatorValue(1, u"present_position") - start) <= kTolerance);
+        // It moved with little torque.
+        QVERIFY(watched.lowestTorqueLimit <= 300);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
+        QCOMPARE(simulatorValue(1, u"goal_position"), goal);
+        QCOMPARE(simulatorValue(1, u"goal_speed"), 777);
+        QCOMPARE(simulatorValue(1, u"acceleration"), acceleration);
+        QVERIFY(!m_client->isIdentifying(index));
+        QVERIFY(!m_client->isBusy());
+    }
+
+    void withTorqueOnTheTorqueStaysOnAndTheHornComesBack()
+    {
+        const qint32 start = simulatorValue(2, u"present_position");
+        setSimulatorValue(2, u"goal_position", start);
+        setSimulatorValue(2, u"torque_enable", 1);
+        setSimulatorValue(2, u"torque_limit", 800);
+        const int index = readServo(2);
+        QVERIFY(index >= 0);
+
+        const Watched watched = identifyWatching(index, 2);
+        QVERIFY(watched.result);
+        QVERIFY2(watched.result->ok, qPrintable(watched.result->message));
+        QVERIFY(watched.highest >= start + kAmplitude / 2);
+        QVERIFY(watched.lowest <= start - kAmplitude / 2);
+        QVERIFY(watched.highest <= start + kAmplitude + kTolerance);
+        QVERIFY(watched.lowest >= start - kAmplitude - kTolerance);
+        QCOMPARE(simulatorValue(2, u"torque_enable"), 1);
+        QCOMPARE(simulatorValue(2, u"torque_limit"), 800);
+        QCOMPARE(simulatorValue(2, u"goal_position"), start);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            std::abs(simulatorValue(2, u"present_position") - start) <= kTolerance, 5000);
+    }
+
+    void anScsServoWithoutATorqueLimitIsIdentifiedToo()
+    {
+        const int index = readServo(3);
+        QVERIFY(index >= 0);
+        const qint32 start = simulatorValue(3, u"present_position");
+        const Watched watched = identifyWatching(index, 3);
+        QVERIFY(watched.result);
+        QVERIFY2(watched.result->ok, qPrintable(watched.result->message));
+        QVERIFY(watched.highest > start);
+        QVERIFY(watched.lowest < start);
+        QCOMPARE(simulatorValue(3, u"torque_enable"), 0);
+    }
+
+    void aServoInAMotionTestIsRefusedWithTheReasonAndNothingIsSent()
+    {
+        const int index = readServo(1);
+        QVERIFY(index >= 0);
+        feetech::MotionTest test(m_client.get(), testsupport::quickMotionTiming());
+        QString error;
+        QVERIFY2(test.startSweep(testsupport::longSweep(index), &error), qPrintable(error));
+        QVERIFY(!m_client->identifyBlocker(index).isEmpty());
+        QVERIFY(m_client->identifyBlocker(index).contains(QStringLiteral("motion test")));
+        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        error.clear();
+        QVERIFY(!m_client->identifyJoint(index, &error));
+        QVERIFY(error.contains(QStringLiteral("motion test")));
+        QVERIFY(!m_client->isIdentifying(index));
+        // The other servo is free.
+        QVERIFY2(m_client->identifyBlocker(m_client->indexOf(2, k1M)).isEmpty(),
+                 qPrintable(m_client->identifyBlocker(m_client->indexOf(2, k1M))));
+        test.cancel();
+        QVERIFY(m_client->identifyBlocker(index).isEmpty());
+    }
+
+    void aMotionTestIsRefusedWhileItsServoIsIdentified()
+    {
+        const int index = readServo(1);
+        QVERIFY(index >= 0);
+        QVERIFY(m_client->identifyJoint(index));
+        feetech::MotionTest test(m_client.get(), testsupport::quickMotionTiming());
+        feetech::MotionPlan plan;
+        plan.index = index;
+        plan.from = 1800;
+        plan.to = 2300;
+        QString error;
+        QVERIFY(!test.startStep(plan, &error));
+        QVERIFY(error.contains(QStringLiteral("identified")));
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isIdentifying(index), 20000);
+    }
+
+    void aServoThatStopsAnsweringIsReportedAndTheIdentifyEnds()
+    {
+        const int index = readServo(2);
+        QVERIFY(index >= 0);
+        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        QVERIFY(m_client->identifyJoint(index));
+        // Unplugged once it has started moving.
+        QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(2, u"torque_enable") == 1, 10000);
+        m_simulator->call([](sim::Simulator &simulator) {
+            sim::VirtualFeetechBus &bus = *simulator.feetechBus();
+            for (int i = 0; i < bus.servoCount(); ++i) {
+                if (bus.servo(i).id() == 2) {
+                    bus.unplug(i);
+                    return;
+                }
+            }
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isIdentifying(index), 20000);
+        std::optional<feetech::OperationResult> result;
+        for (const QList<QVariant> &signal : std::as_const(finished)) {
+            const auto each = signal.at(0).value<feetech::OperationResult>();
+            if (each.operation == feetech::Operation::Identify)
+                result = each;
+        }
+        QVERIFY(result);
+        QVERIFY(!result->ok);
+        QVERIFY2(result->message.contains(QStringLiteral("stopped answering")),
+                 qPrintable(result->message));
+    }
+
+    void allTorqueOffStopsItAndTheTorqueStaysOff()
+    {
+        const int index = readServo(1);
+        QVERIFY(index >= 0);
+        const qint32 limit = simulatorValue(1, u"torque_limit");
+        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        QVERIFY(m_client->identifyJoint(index));
+        QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(1, u"torque_enable") == 1, 10000);
+        m_client->allTorqueOff();
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isIdentifying(index), 20000);
+        bool stopped = false;
+        for (const QList<QVariant> &signal : std::as_const(finished)) {
+            const auto each = signal.at(0).value<feetech::OperationResult>();
+            if (each.operation == feetech::Operation::Identify)
+                stopped = !each.ok && each.message.contains(QStringLiteral("All torque off"));
+        }
+        QVERIFY(stopped);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
+    }
+
+    void servoctlIdentifyExitsZeroWithTorqueRestoredAndTwoForUsage()
+    {
+        const QString link = m_simulator->linkPath();
+        const auto done = testsupport::runServoctl(
+            {QStringLiteral("--port"), link, QStringLiteral("feetech"), QStringLiteral("identify"),
+             QStringLiteral("--id"), QStringLiteral("1")});
+        QVERIFY2(done.exitCode == 0, qPrintable(done.err));
+        QVERIFY(done.out.contains(QStringLiteral("wiggled")));
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        const auto missing = testsupport::runServoctl(
+            {QStringLiteral("--port"), link, QStringLiteral("feetech"), QStringLiteral("identify"),
+             QStringLiteral("--id"), QStringLiteral("9")});
+        QCOMPARE(missing.exitCode, 1);
+        const auto usage =
+            testsupport::runServoctl({QStringLiteral("--port"), link, QStringLiteral("feetech"),
+                                      QStringLiteral("identify")});
+        QCOMPARE(usage.exitCode, 2);
+    }
+
+    void servoctlIdentifyOfAServoNotInPositionModeExitsOneWithoutWriting()
+    {
+        setSimulatorValue(1, u"mode", 1);
+        const auto refused = testsupport::runServoctl(
+            {QStringLiteral("--port"), m_simulator->linkPath(), QStringLiteral("feetech"),
+             QStringLiteral("identify"), QStringLiteral("--id"), QStringLiteral("1")});
+        QCOMPARE(refused.exitCode, 1);
+        QVERIFY2(refused.err.contains(QStringLiteral("position mode")), qPrintable(refused.err));
+        QVERIFY(testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write, 1)
+                    .isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestJointIdentify)
+#include "tst_jointidentify.moc"
