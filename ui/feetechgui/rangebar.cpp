@@ -62,7 +62,9 @@ void RangeBar::paintEvent(QPaintEvent *)
                                 QPointF(x(*m_maximum), track.bottom() - 1)));
     }
     // The middle of the turn: where the middle of the range goes.
-    painter.setPen(QPen(palette().color(QPalette::Mid), 1, Qt::DashLine));
+    QColor middleColour = palette().color(QPalette::Text);
+    middleColour.setAlpha(140);
+    painter.setPen(QPen(middleColour, 1, Qt::DashLine));
     painter.drawLine(QPointF(track.center().x(), track.top()),
                      QPointF(track.center().x(), track.bottom()));
     if (m_present) {
