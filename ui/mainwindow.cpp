@@ -5,9 +5,10 @@
 #include "common/packetlogdock.h"
 #include "common/simulatordock.h"
 #include "feetech/busclient.h"
+#include "feetechgui/calibrationfiles.h"
 #include "feetechgui/feetechworkspace.h"
-#include "feetechgui/setupwizard.h"
 #include "feetechgui/robotactions.h"
+#include "feetechgui/setupwizard.h"
 #include "link/packetlogmodel.h"
 #include "model/parametermodel.h"
 #include "ptk/ptkclient.h"
@@ -221,6 +222,15 @@ void MainWindow::createMenus()
     });
 
     m_feetechWorkspace->robotActions()->addTo(robot);
+
+    // Calibrating the arm, and its LeRobot calibration files: they need a scanned bus.
+    robot->addSeparator();
+    auto *calibration = new CalibrationActions(robot, m_feetech.get(), this);
+    connect(calibration, &CalibrationActions::problem, this, &MainWindow::showProblem);
+    connect(calibration, &CalibrationActions::message, this, [this](const QString &text) {
+        m_problem->hide();
+        statusBar()->showMessage(text, kStatusMessageMs);
+    });
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_packetLog->toggleViewAction());

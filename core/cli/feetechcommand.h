@@ -4,6 +4,7 @@
 
 #include "cli/feetechdevice.h"
 #include "cli/servoctl.h"
+#include "feetech/armcalibration.h"
 #include "feetech/settingsfile.h"
 #include "model/parametermodel.h"
 #include "profile/profile.h"
@@ -107,6 +108,19 @@ private:
     // Setting up one motor of a robot (feetechsetupcommand.cpp).
     feetech::MotorTarget motorTarget(const QString &what) const;
     int setupMotor(const QString &what, const QStringList &operands);
+    // Arm calibration and LeRobot calibration files (feetechcalibrationcommands.cpp,
+    // feetechcalibrationfilecommands.cpp).
+    QVector<quint8> jointIds(const QString &what) const;
+    QStringList jointNames(const QVector<quint8> &ids) const;
+    std::optional<QVector<ServoInfo>> identifyJoints(FeetechDevice &device,
+                                                     const QVector<quint8> &ids);
+    int calibrate(const QString &what, const QStringList &operands);
+    bool recordJoints(FeetechDevice &device, const QVector<ServoInfo> &servos,
+                      QVector<feetech::JointRecording> &joints, std::optional<double> duration);
+    void printRecording(const QVector<feetech::JointRecording> &joints, bool live);
+    int calibration(const QString &what, const QStringList &operands);
+    int saveCalibration(const QString &what, const QStringList &operands);
+    int loadCalibration(const QString &what, const QStringList &operands);
 
     // Live feedback (feetechmonitorcommand.cpp).
     int monitor(const QString &what, const QStringList &operands);

@@ -48,6 +48,8 @@ int FeetechCommand::run(const QStringList &rest)
         {"setup-motor", &FeetechCommand::setupMotor},
         {"monitor", &FeetechCommand::monitor},
         {"identify", &FeetechCommand::identify},
+        {"calibrate", &FeetechCommand::calibrate},
+        {"calibration", &FeetechCommand::calibration},
     };
     for (const auto &[name, handler] : kCommands) {
         if (command == QLatin1String(name))
@@ -76,7 +78,8 @@ void FeetechCommand::allowOptions(const QString &what, const QStringList &allowe
         if (!allowed.contains(name) && !kGlobal.contains(name))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
     }
-    for (const QString &flag : {QStringLiteral("thorough"), QStringLiteral("csv")}) {
+    for (const QString &flag :
+         {QStringLiteral("thorough"), QStringLiteral("csv"), QStringLiteral("dry-run")}) {
         if (m_args.flag(flag) && !allowed.contains(flag))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, flag)};
     }

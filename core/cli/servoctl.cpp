@@ -66,6 +66,14 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]\n"
     "                                         stream position, speed, load, voltage,\n"
     "                                         temperature and current (SYNC READ)\n"
+    "  feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]\n"
+    "                    [--dry-run] --out FILE\n"
+    "                                         torque off, record each joint's range by hand\n"
+    "                                         (Enter ends), centre it on the encoder: offset\n"
+    "                                         and limits written, LeRobot calibration saved\n"
+    "  feetech calibration save --ids LIST [--names LIST] FILE\n"
+    "                                         the servos' offsets and limits to a LeRobot file\n"
+    "  feetech calibration load FILE          write a LeRobot calibration file, verified\n"
     "  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each\n"
     "  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)\n"
     "  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values\n"
@@ -96,9 +104,11 @@ public:
                  QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
                  QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
                  QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate"),
-                 QStringLiteral("model"), QStringLiteral("settings")},
+                 QStringLiteral("model"), QStringLiteral("settings"), QStringLiteral("names"),
+                 QStringLiteral("full-turn"), QStringLiteral("out")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
-                 QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version")});
+                 QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
+                 QStringLiteral("dry-run")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);

@@ -1,0 +1,58 @@
+// LeRobot's calibration files: one JSON object of motors by joint name, and where LeRobot keeps
+// them.
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+#include <QVector>
+
+#include <optional>
+
+namespace feetech {
+
+// What LeRobot keeps of one motor: positions and offset in steps, the offset as the signed value
+// of the offset register (present = physical - homing_offset).
+struct LeRobotMotor
+{
+    QString name; // "shoulder_pan"
+    int id = 1;
+    int driveMode = 0; // LeRobot inverts the direction in software for 1; ServoBench writes 0
+    qint32 homingOffset = 0;
+    qint32 rangeMin = 0;
+    qint32 rangeMax = 4095;
+};
+
+// The bounds a file's values are checked against: the STS3215's offset register and encoder.
+constexpr qint32 kLeRobotMaximumOffset = 2047;
+constexpr qint32 kLeRobotMaximumPosition = 4095;
+
+// A motor name as LeRobot's robots use them: ASCII letters, digits and _, a letter first
+// ("shoulder_pan").
+bool isLeRobotMotorName(const QString &name);
+
+// The motors of a file in ID order; nothing and *error naming `source`, the joint and the field
+// when the document is not an object of motors, a field is missing, not a whole number or out of
+// range, range_min is not below range_max, or an ID or name repeats.
+std::optional<QVector<LeRobotMotor>>
+leRobotCalibrationFromJson(const QByteArray &json, const QString &source, QString *error);
+// The file LeRobot writes: motors in the order given, indented by four spaces.
+QByteArray leRobotCalibrationToJson(const QVector<LeRobotMotor> &motors);
+
+// Reads and checks a file; nothing and *error (naming the file) when it cannot be used.
+std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path, QString *error);
+// Saves atomically; false and *error (naming the file) when it could not.
+bool saveLeRobotCalibration(const QVector<LeRobotMotor> &motors, const QString &path,
+                            QString *error);
+
+// Where LeRobot keeps calibration files, as it finds it: $HF_LEROBOT_CALIBRATION, else
+// $HF_LEROBOT_HOME/calibration, else $HF_HOME/lerobot/calibration, with HF_HOME defaulting to
+// $XDG_CACHE_HOME/huggingface and that to ~/.cache/huggingface.
+QString leRobotCalibrationFolder();
+// The folders under it that may hold a robot template's arm, the usual one first:
+// "robots/so101_follower" for the SO-101 follower (LeRobot from 0.4 also uses
+// "robots/so_follower" for both SO arms), "teleoperators/so100_leader" for the SO-100 leader;
+// none for any other arm.
+QStringList leRobotArmFolders(const QString &templateName);
+
+} // namespace feetech

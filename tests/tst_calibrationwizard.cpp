@@ -1,0 +1,295 @@
+// The arm calibration wizard and the calibration file actions, offscreen against a simulated
+// SO-101 arm whose joints a scripted hand turns: results, verified writes, Cancel, LeRobot files.
+#include "feetechbus.h"
+#include "scriptedhand.h"
+
+#include "feetech/lerobotcalibration.h"
+#include "feetechgui/calibrationfiles.h"
+#include "feetechgui/calibrationwizard.h"
+#include "mainwindow.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QTableWidget>
+#include <QtTest>
+
+using testsupport::ScriptedHand;
+
+namespace {
+
+constexpr int kOffsetAddress = 31;
+
+} // namespace
+
+class TestCalibrationWizard : public testsupport::FeetechBusTest
+{
+    Q_OBJECT
+
+private:
+    std::unique_ptr<feetech::BusClient> m_client;
+
+    void startArm()
+    {
+        QVector<sim::FeetechServoSpec> specs;
+        for (int id = 1; id <= 6; ++id)
+            specs.append({quint8(id), QStringLiteral("STS3215"), 1000000});
+        QString error;
+        QVERIFY2(startSimulator(busOptions(specs), &error), qPrintable(error));
+        m_client = std::make_unique<feetech::BusClient>(testsupport::patientTiming());
+        QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 6));
+        QCOMPARE(m_client->servoCount(), 6);
+    }
+
+    static void click(QWidget *parent, const char *name)
+    {
+        auto *button = parent->findChild<QPushButton *>(QLatin1String(name));
+        QVERIFY2(button, name);
+        QVERIFY2(button->isEnabled(), name);
+        button->click();
+    }
+
+    // Torque off and recording, the hand starting once every joint has been sampled.
+    static void startRecording(CalibrationWizard &wizard, ScriptedHand &hand)
+    {
+        click(&wizard, "calibrationNextButton");
+        QCOMPARE(wizard.page(), CalibrationWizard::Page::Warning);
+        hand.start([&wizard] {
+            if (wizard.page() != CalibrationWizard::Page::Recording)
+                return false;
+            const auto &joints = wizard.recordings();
+            return std::all_of(joints.begin(), joints.end(),
+                               [](const auto &joint) { return joint.range.hasSamples(); });
+        });
+        click(&wizard, "torqueOffStartButton");
+    }
+
+private slots:
+    void cleanup()
+    {
+        m_client.reset();
+        m_simulator.reset();
+        QFile::remove(logPath());
+    }
+
+    void theWizardCalibratesTheArmAndSavesLeRobotsFile()
+    {
+        startArm();
+        setSimulatorValue(3, u"position_offset", 300);
+        CalibrationWizard wizard(m_client.get());
+        wizard.show();
+        auto *table = wizard.findChild<QTableWidget *>(QStringLiteral("calibrationJointTable"));
+        QCOMPARE(table->item(0, 3)->text(), QStringLiteral("shoulder_pan"));
+        QCOMPARE(table->item(4, 3)->text(), QStringLiteral("wrist_roll"));
+        QCOMPARE(table->item(4, 4)->checkState(), Qt::Checked); // full turn, from the template
+        table->item(5, 3)->setText(QStringLiteral("claw"));
+
+        ScriptedHand hand(*m_simulator);
+        hand.place(1, 2000);
+        hand.script(1, {500, 3000, 1800});
+        hand.place(2, 3600);
+        hand.script(2, {3500, 4096 + 700, 4000});
+        hand.place(3, 2000);
+        hand.script(3, {1200, 2800, 2100});
+        hand.place(4, 2048);
+        hand.script(4, {1000, 3000, 2000});
+        hand.place(5, 100);
+        hand.script(5, {1100, 600});
+        hand.place(6, 2100);
+        hand.script(6, {1900, 2600, 2000});
+        startRecording(wizard, hand);
+        QVERIFY(wizard.findChild<QLabel *>(QStringLiteral("torqueWarning"))
+                    ->text()
+                    .startsWith(QLatin1String("Support the arm")));
+        QTRY_COMPARE_WITH_TIMEOUT(wizard.page(), CalibrationWizard::Page::Recording, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
+        // What the servo read while recording: the elbow's offset of 300 taken off.
+        QTRY_COMPARE(wizard.recordings().at(1).range.maximum(), 4096 + 700);
+        QTRY_COMPARE(wizard.recordings().at(2).range.minimum(), 1200 - 300);
+        QTRY_COMPARE(wizard.recordings().at(5).range.present(), 2000);
+        QVERIFY(wizard.findChild<QLabel *>(QStringLiteral("rangeValues_2"))
+                    ->text()
+                    .contains(QLatin1String("max 4796")));
+
+        click(&wizard, "finishRecordingButton");
+        QCOMPARE(wizard.page(), CalibrationWizard::Page::Results);
+        const int offsets[] = {1750 - 2048, 4148 - 4096 - 2048, 2000 - 2048,
+                               2000 - 2048, 600 - 2048,         2250 - 2048};
+        for (int i = 0; i < 6; ++i) {
+            QVERIFY2(wizard.results().at(i).ok(), qPrintable(wizard.results().at(i).refusal));
+            QCOMPARE(wizard.results().at(i).offset, offsets[i]);
+        }
+        QCOMPARE(testsupport::writesReceived(logPath(), 2, kOffsetAddress),
+                 0); // nothing until Write
+
+        QSignalSpy written(&wizard, &CalibrationWizard::writingFinished);
+        click(&wizard, "writeCalibrationButton");
+        QVERIFY(written.wait(20000));
+        QCOMPARE(written.first().at(0).toBool(), true);
+        auto *results = wizard.findChild<QTableWidget *>(QStringLiteral("calibrationResultTable"));
+        QCOMPARE(results->item(1, 4)->text(), QStringLiteral("Written and verified"));
+        m_simulator->call([](sim::Simulator &simulator) { simulator.powerCycle(); });
+        QCOMPARE(simulatorValue(2, u"position_offset"), -1996);
+        QCOMPARE(simulatorValue(2, u"min_angle_limit"), 2048 - 648);
+        QCOMPARE(simulatorValue(2, u"max_angle_limit"), 2048 + 648);
+        QCOMPARE(simulatorValue(5, u"max_angle_limit"), 4095);
+
+        const QString file = m_dir.filePath(QStringLiteral("follower.json"));
+        QString error;
+        QVERIFY2(wizard.saveLeRobotFile(file, &error), qPrintable(error));
+        const auto saved = feetech::loadLeRobotCalibration(file, &error);
+        QVERIFY2(saved, qPrintable(error));
+        QCOMPARE(saved->size(), 6);
+        QCOMPARE(saved->at(5).name, QStringLiteral("claw"));
+        QCOMPARE(saved->at(1).homingOffset, -1996);
+        QVERIFY(!m_client->isMonitoring());
+    }
+
+    void leRobotsOrderTakesTheMiddlePoseFirst()
+    {
+        startArm();
+        CalibrationWizard wizard(m_client.get());
+        wizard.findChild<QRadioButton *>(QStringLiteral("middlePoseFirstRadio"))->setChecked(true);
+        ScriptedHand hand(*m_simulator);
+        for (quint8 id = 1; id <= 6; ++id)
+            hand.place(id, 1000 + 100 * id);
+        hand.script(1, {600, 1600, 1100});
+        click(&wizard, "calibrationNextButton");
+        click(&wizard, "torqueOffStartButton");
+        QTRY_COMPARE_WITH_TIMEOUT(wizard.page(), CalibrationWizard::Page::MiddlePose, 10000);
+        QTRY_VERIFY(m_client->latestSample(5).has_value());
+        for (int i = 0; i < 6; ++i)
+            QTRY_VERIFY(m_client->latestSample(i).has_value());
+        hand.start([&wizard] {
+            return wizard.page() == CalibrationWizard::Page::Recording
+                && wizard.recordings().first().range.hasSamples();
+        });
+        click(&wizard, "takeMiddlePoseButton");
+        QCOMPARE(wizard.recordings().first().middlePose, std::optional<int>(1100));
+        QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
+        QTRY_COMPARE(wizard.recordings().first().range.maximum(), 1600);
+        QTRY_COMPARE(wizard.recordings().first().range.present(), 1100);
+        click(&wizard, "finishRecordingButton");
+        const feetech::JointCalibration &pan = wizard.results().first();
+        QVERIFY2(pan.ok(), qPrintable(pan.refusal));
+        QCOMPARE(pan.offset, 1100 - 2047);
+        QCOMPARE(pan.minimumLimit, 2047 - 500);
+        QCOMPARE(pan.maximumLimit, 2047 + 500);
+        // The joints the hand never moved are refused, and only the pan is written.
+        QVERIFY(wizard.results().at(1).refusal.contains(QLatin1String("never moved")));
+        QSignalSpy written(&wizard, &CalibrationWizard::writingFinished);
+        click(&wizard, "writeCalibrationButton");
+        QVERIFY(written.wait(20000));
+        QCOMPARE(simulatorValue(1, u"position_offset"), 1100 - 2047);
+        for (quint8 id = 2; id <= 6; ++id)
+            QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
+    }
+
+    void cancelWritesNothing()
+    {
+        startArm();
+        auto *wizard = new CalibrationWizard(m_client.get());
+        wizard->setAttribute(Qt::WA_DeleteOnClose);
+        wizard->show();
+        ScriptedHand hand(*m_simulator);
+        hand.place(1, 1000);
+        hand.script(1, {600, 1600});
+        startRecording(*wizard, hand);
+        QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
+        QVERIFY(m_client->isMonitoring());
+        QPointer<CalibrationWizard> alive(wizard);
+        click(wizard, "calibrationCancelButton");
+        QTRY_VERIFY(alive.isNull());
+        QVERIFY(!m_client->isMonitoring());
+        for (quint8 id = 1; id <= 6; ++id)
+            QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
+    }
+
+    void recordingAgainForgetsTheFirstRecording()
+    {
+        startArm();
+        CalibrationWizard wizard(m_client.get());
+        ScriptedHand hand(*m_simulator);
+        hand.place(1, 1000);
+        hand.script(1, {600, 1600, 1000});
+        startRecording(wizard, hand);
+        QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
+        QTRY_COMPARE(wizard.recordings().first().range.maximum(), 1600);
+        click(&wizard, "finishRecordingButton");
+        QVERIFY(wizard.results().first().ok());
+        QVERIFY(!m_client->isMonitoring());
+        click(&wizard, "recordAgainButton");
+        QCOMPARE(wizard.page(), CalibrationWizard::Page::Recording);
+        QVERIFY(m_client->isMonitoring());
+        // The joint rests at 1000 now: that is all the new recording holds.
+        QTRY_VERIFY(wizard.recordings().first().range.hasSamples());
+        QCOMPARE(wizard.recordings().first().range.maximum(), 1000);
+        click(&wizard, "finishRecordingButton");
+        QVERIFY(wizard.results().first().refusal.contains(QLatin1String("never moved")));
+        QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 0);
+    }
+
+    void aLoadedFileShowsItsDifferencesAndIsWrittenVerified()
+    {
+        startArm();
+        const QVector<feetech::LeRobotMotor> motors {
+            {QStringLiteral("shoulder_pan"), 1, 0, -1200, 800, 3300},
+            {QStringLiteral("elbow_flex"), 3, 0, 0, 0, 4095},
+            {QStringLiteral("ghost"), 9, 0, 0, 10, 20}};
+        LoadCalibrationDialog dialog(m_client.get(), motors, QStringLiteral("arm.json"));
+        QSignalSpy ready(&dialog, &LoadCalibrationDialog::ready);
+        QVERIFY(dialog.isReady() || ready.wait(10000));
+        QCOMPARE(dialog.changedJoints(), 1);
+        auto *table = dialog.findChild<QTableWidget *>(QStringLiteral("calibrationDiffTable"));
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("0 → -1200"));
+        QCOMPARE(table->item(1, 4)->text(), QStringLiteral("Unchanged"));
+        QVERIFY(table->item(2, 4)->text().contains(QLatin1String("not on the bus")));
+        QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress),
+                 0); // nothing before Write
+        QSignalSpy written(&dialog, &LoadCalibrationDialog::writingFinished);
+        click(&dialog, "writeLoadedCalibrationButton");
+        QVERIFY(written.wait(20000));
+        QCOMPARE(written.first().at(0).toBool(), true);
+        QCOMPARE(table->item(0, 4)->text(), QStringLiteral("Written and verified"));
+        QCOMPARE(simulatorValue(1, u"position_offset"), -1200);
+        QCOMPARE(simulatorValue(1, u"max_angle_limit"), 3300);
+    }
+
+    void theSavedCalibrationNamesTheJointsByTheTemplate()
+    {
+        startArm();
+        setSimulatorValue(2, u"position_offset", -5);
+        CalibrationSaver saver(m_client.get());
+        QSignalSpy finished(&saver, &CalibrationSaver::finished);
+        const QString file = m_dir.filePath(QStringLiteral("saved.json"));
+        QString error;
+        QVERIFY2(saver.save(file, &error), qPrintable(error));
+        QVERIFY(finished.wait(20000));
+        QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
+        const auto saved = feetech::loadLeRobotCalibration(file, &error);
+        QVERIFY2(saved, qPrintable(error));
+        QCOMPARE(saved->size(), 6);
+        QCOMPARE(saved->at(1).name, QStringLiteral("shoulder_lift"));
+        QCOMPARE(saved->at(1).homingOffset, -5);
+    }
+
+    void theRobotMenuIsEnabledOnceABusIsScanned()
+    {
+        QVector<sim::FeetechServoSpec> specs {{1, QStringLiteral("STS3215"), 1000000}};
+        QString error;
+        QVERIFY2(startSimulator(busOptions(specs), &error), qPrintable(error));
+        MainWindow window;
+        auto *calibrate = window.findChild<QAction *>(QStringLiteral("calibrateArmAction"));
+        QVERIFY(calibrate);
+        QVERIFY(!calibrate->isEnabled());
+        QVERIFY(testsupport::connectAndScan(*window.feetechClient(), m_simulator->linkPath(), 3));
+        QTRY_VERIFY(calibrate->isEnabled());
+        QVERIFY(window.findChild<QAction *>(QStringLiteral("loadCalibrationAction"))->isEnabled());
+        window.feetechClient()->disconnectFrom();
+        QTRY_VERIFY(!calibrate->isEnabled());
+    }
+};
+
+QTEST_MAIN(TestCalibrationWizard)
+#include "tst_calibrationwizard.moc"

@@ -1,0 +1,158 @@
+// Tests of LeRobot calibration files: the format, its checks, saving and LeRobot's folder.
+#include "feetech/lerobotcalibration.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace feetech;
+
+namespace {
+
+const QByteArray kTwoMotors = R"({
+    "shoulder_pan": {"id": 1, "drive_mode": 0, "homing_offset": -1200, "range_min": 800,
+                     "range_max": 3300},
+    "wrist_roll": {"id": 5, "drive_mode": 0, "homing_offset": 15, "range_min": 0,
+                   "range_max": 4095}
+})";
+
+} // namespace
+
+class TestLeRobotCalibration : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void aFileIsReadInIdOrder()
+    {
+        QString error;
+        const auto motors =
+            leRobotCalibrationFromJson(kTwoMotors, QStringLiteral("a.json"), &error);
+        QVERIFY2(motors, qPrintable(error));
+        QCOMPARE(motors->size(), 2);
+        QCOMPARE(motors->at(0).name, QStringLiteral("shoulder_pan"));
+        QCOMPARE(motors->at(0).homingOffset, -1200);
+        QCOMPARE(motors->at(0).rangeMin, 800);
+        QCOMPARE(motors->at(1).id, 5);
+        QCOMPARE(motors->at(1).rangeMax, 4095);
+    }
+
+    void whatIsWrittenReadsBackTheSameInTheArmsOrder()
+    {
+        const QVector<LeRobotMotor> motors {{QStringLiteral("gripper"), 6, 0, 2047, 2000, 3500},
+                                            {QStringLiteral("shoulder_pan"), 1, 0, -2047, 10, 20}};
+        const QByteArray json = leRobotCalibrationToJson(motors);
+        QVERIFY(json.indexOf("gripper") < json.indexOf("shoulder_pan"));
+        QVERIFY(json.contains("        \"homing_offset\": -2047,\n"));
+        QString error;
+        const auto read = leRobotCalibrationFromJson(json, QStringLiteral("b.json"), &error);
+        QVERIFY2(read, qPrintable(error));
+        QCOMPARE(read->at(0).name, QStringLiteral("shoulder_pan"));
+        QCOMPARE(read->at(1).homingOffset, 2047);
+        QCOMPARE(read->at(1).rangeMin, 2000);
+    }
+
+    void aMalformedFileIsRefusedNamingTheJointAndField_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("not JSON") << QByteArray("{") << QStringLiteral("not valid JSON");
+        QTest::newRow("array") << QByteArray("[]") << QStringLiteral("not a JSON object");
+        QTest::newRow("empty") << QByteArray("{}") << QStringLiteral("names no motor");
+        QTest::newRow("bad name") << QByteArray(
+            R"({"grip per": {"id": 6, "drive_mode": 0, "homing_offset": 0,
+                 "range_min": 0, "range_max": 10}})")
+                                  << QStringLiteral("motor \"grip per\": not a motor name");
+        QTest::newRow("motor not object")
+            << QByteArray(R"({"gripper": 5})") << QStringLiteral("motor \"gripper\": not an");
+        QTest::newRow("missing field")
+            << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 0,
+                 "range_min": 0}})")
+            << QStringLiteral("motor \"gripper\": \"range_max\" is missing");
+        QTest::newRow("not whole")
+            << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 1.5,
+                 "range_min": 0, "range_max": 10}})")
+            << QStringLiteral("\"homing_offset\" must be a whole number");
+        QTest::newRow("string") << QByteArray(
+            R"({"gripper": {"id": "6", "drive_mode": 0, "homing_offset": 1,
+                 "range_min": 0, "range_max": 10}})")
+                                << QStringLiteral("\"id\" must be a whole number");
+        QTest::newRow("offset out of range")
+            << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 2048,
+                 "range_min": 0, "range_max": 10}})")
+            << QStringLiteral("\"homing_offset\" is 2048, outside -2047 to 2047");
+        QTest::newRow("range reversed")
+            << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 0,
+                 "range_min": 10, "range_max": 10}})")
+            << QStringLiteral("\"range_min\" (10) must be below \"range_max\" (10)");
+        QTest::newRow("unknown field")
+            << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 0,
+                 "range_min": 0, "range_max": 10, "speed": 3}})")
+            << QStringLiteral("unknown field \"speed\"");
+        QTest::newRow("repeated ID")
+            << QByteArray(R"({"a": {"id": 6, "drive_mode": 0, "homing_offset": 0,
+                 "range_min": 0, "range_max": 10},
+                 "b": {"id": 6, "drive_mode": 0, "homing_offset": 0,
+                 "range_min": 0, "range_max": 10}})")
+            << QStringLiteral("ID 6 is used by another motor too");
+    }
+
+    void aMalformedFileIsRefusedNamingTheJointAndField()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, expected);
+        QString error;
+        QVERIFY(!leRobotCalibrationFromJson(json, QStringLiteral("arm.json"), &error));
+        QVERIFY2(error.startsWith(QLatin1String("arm.json: ")), qPrintable(error));
+        QVERIFY2(error.contains(expected), qPrintable(error));
+    }
+
+    void savedFilesLoadBackAndAMissingOneIsNamed()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("arm.json"));
+        QString error;
+        const QVector<LeRobotMotor> motors {{QStringLiteral("elbow_flex"), 3, 0, 12, 900, 3100}};
+        QVERIFY2(saveLeRobotCalibration(motors, path, &error), qPrintable(error));
+        const auto loaded = loadLeRobotCalibration(path, &error);
+        QVERIFY2(loaded, qPrintable(error));
+        QCOMPARE(loaded->first().rangeMax, 3100);
+        QVERIFY(!loadLeRobotCalibration(dir.filePath(QStringLiteral("none.json")), &error));
+        QVERIFY2(error.contains(QLatin1String("none.json")), qPrintable(error));
+    }
+
+    void theFolderFollowsLeRobotsEnvironment()
+    {
+        const QByteArray saved[] = {qgetenv("HF_LEROBOT_CALIBRATION"), qgetenv("HF_LEROBOT_HOME"),
+                                    qgetenv("HF_HOME")};
+        qunsetenv("HF_LEROBOT_CALIBRATION");
+        qunsetenv("HF_LEROBOT_HOME");
+        qputenv("HF_HOME", "/tmp/hf");
+        QCOMPARE(leRobotCalibrationFolder(), QStringLiteral("/tmp/hf/lerobot/calibration"));
+        qputenv("HF_LEROBOT_HOME", "/tmp/lr");
+        QCOMPARE(leRobotCalibrationFolder(), QStringLiteral("/tmp/lr/calibration"));
+        qputenv("HF_LEROBOT_CALIBRATION", "/tmp/cal/");
+        QCOMPARE(leRobotCalibrationFolder(), QStringLiteral("/tmp/cal"));
+        qunsetenv("HF_LEROBOT_CALIBRATION");
+        qunsetenv("HF_LEROBOT_HOME");
+        qunsetenv("HF_HOME");
+        QVERIFY(
+            leRobotCalibrationFolder().endsWith(QLatin1String("huggingface/lerobot/calibration")));
+        const char *names[] = {"HF_LEROBOT_CALIBRATION", "HF_LEROBOT_HOME", "HF_HOME"};
+        for (int i = 0; i < 3; ++i) {
+            if (!saved[i].isEmpty())
+                qputenv(names[i], saved[i]);
+        }
+    }
+
+    void soArmsHaveTheirLeRobotFolders()
+    {
+        QCOMPARE(leRobotArmFolders(QStringLiteral("SO-101 follower arm")).first(),
+                 QStringLiteral("robots/so101_follower"));
+        QCOMPARE(leRobotArmFolders(QStringLiteral("SO-100 leader arm")).first(),
+                 QStringLiteral("teleoperators/so100_leader"));
+        QVERIFY(leRobotArmFolders(QStringLiteral("My hexapod")).isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLeRobotCalibration)
+#include "tst_lerobotcalibration.moc"
