@@ -389,21 +389,6 @@ void Session::clearStatus(const ServoInfo &servo)
     });
 }
 
-void Session::identifyJoint(const ServoInfo &servo)
-{
-    const quint64 epoch = m_torqueOffEpoch;
-    enqueue(Operation::Identify, [this, servo, epoch] {
-        if (refusedAfterTorqueOff(Operation::Identify, epoch))
-            return;
-        m_identify->run(servo, finisher(),
-                        [this, epoch](std::chrono::milliseconds delay,
-                                      std::function<void(bool torqueOff)> resume) {
-                            pauseFor(Operation::Identify, delay,
-                                     [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
-                        });
-    });
-}
-
 bool Session::refusedAfterTorqueOff(Operation operation, quint64 epoch)
 {
     if (epoch == m_torqueOffEpoch)
@@ -555,60 +540,6 @@ void Session::syncWrite(qint32 baud, int address, int length,
                  {}});
         });
     });
-}
-
-// ---- motor set-up
-
-void Session::findMotor(const MotorTarget &target)
-{
-    enqueue(Operation::FindMotor, [this, target] {
-        m_motorSetup->find(target, [this](const MotorSearch &search) {
-            MotorSetupResult result;
-            result.ok = search.foundOne();
-            result.search = search;
-            result.stopped = search.stopped;
-            result.from = result.to = search.servo;
-            result.message = search.message;
-            emit motorSetupFinished(result);
-            finishOperation({Operation::FindMotor, result.ok, result.message, search.servo, {}});
-        });
-    });
-}
-
-void Session::setUpMotor(const MotorTarget &target)
-{
-    const quint64 epoch = m_torqueOffEpoch;
-    enqueue(Operation::SetUpMotor, [this, target, epoch] {
-        if (refusedAfterTorqueOff(Operation::SetUpMotor, epoch))
-            return;
-        m_motorSetup->setUp(target, [this](const MotorSetupResult &result) {
-            emit motorSetupFinished(result);
-            finishOperation({Operation::SetUpMotor, result.ok, result.message, result.to, {}});
-        });
-    });
-}
-
-void Session::checkJoints(qint32 baud, const QVector<JointCheck> &joints)
-{
-    enqueue(Operation::CheckJoints, [this, baud, joints] {
-        m_motorSetup->check(baud, joints, [this](const QVector<JointCheck> &checked) {
-            emit jointsChecked(checked);
-            const auto done = std::count_if(checked.begin(), checked.end(),
-                                            [](const JointCheck &joint) { return joint.done(); });
-            finishOperation(
-                {Operation::CheckJoints,
-                 true,
-                 Tr::tr("%1 of %n joint(s) already set up.", nullptr, int(checked.size()))
-                     .arg(done),
-                 {},
-                 {}});
-        });
-    });
-}
-
-void Session::cancelMotorSetup()
-{
-    m_motorSetup->cancel();
 }
 
 } // namespace feetech
