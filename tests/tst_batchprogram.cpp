@@ -1,6 +1,7 @@
 // Tests feetech::BatchProgram on a simulated bus (STS3215 ×3 at 1 Mbps): a servo unplugged after
 // the scan fails alone while the others are written and verified, a servo with edits of its own
-// is left alone, and nothing starts on a bus that is not connected.
+// is left alone, a servo with torque on gets no offset or limit change, a profile never copies
+// its position offset, and nothing starts on a bus that is not connected.
 #include "feetech/batchprogram.h"
 #include "feetechbus.h"
 
@@ -35,11 +36,28 @@ private:
         return *file;
     }
 
-    QVector<feetech::ProgramOutcome> runOnAll()
+    // A profile saved from one servo of an arm: its offset and limits as well as its gains.
+    feetech::SettingsFile calibratedProfile() const
+    {
+        QString error;
+        const auto file = feetech::SettingsFile::load(
+            writeTestFile(QStringLiteral("calibrated.json"),
+                          R"({"format": "servobench-profile", "version": 1, "family": "sts",
+                              "parameters": {"p_gain": 22, "position_offset": 300,
+                                             "max_angle_limit": 4000}})"),
+            &error);
+        if (!file)
+            qFatal("the test profile is invalid: %s", qPrintable(error));
+        return *file;
+    }
+
+    QVector<feetech::ProgramOutcome> runOnAll() { return runOnAll(gains()); }
+
+    QVector<feetech::ProgramOutcome> runOnAll(const feetech::SettingsFile &file)
     {
         QSignalSpy finished(m_batch.get(), &feetech::BatchProgram::finished);
         QString error;
-        if (!m_batch->start({0, 1, 2}, gains(), &error)) {
+        if (!m_batch->start({0, 1, 2}, file, &error)) {
             qWarning("refused: %s", qPrintable(error));
             return {};
         }
@@ -90,6 +108,34 @@ private slots:
         QCOMPARE(simulatorValue(3, u"p_gain"), 22);
         QVERIFY(!m_batch->isRunning());
         QVERIFY(!m_client->isBusy());
+    }
+
+    void aProfileKeepsEachOffsetAndATorquedServoGetsNoLimitChange()
+    {
+        QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 4));
+        setSimulatorValue(2, u"torque_enable", 1);
+        const qint32 gain = simulatorValue(2, u"p_gain");
+        const qint32 limit = simulatorValue(2, u"max_angle_limit");
+        const qint32 offset = simulatorValue(1, u"position_offset");
+        const QVector<feetech::ProgramOutcome> outcomes = runOnAll(calibratedProfile());
+        QCOMPARE(outcomes.size(), 3);
+        const QStringList written {QStringLiteral("p_gain"), QStringLiteral("max_angle_limit")};
+        for (const int i : {0, 2}) {
+            QCOMPARE(outcomes.at(i).status, feetech::ProgramOutcome::Status::Ok);
+            QCOMPARE(QSet<QString>(outcomes.at(i).changed.cbegin(), outcomes.at(i).changed.cend()),
+                     QSet<QString>(written.cbegin(), written.cend()));
+            QCOMPARE(outcomes.at(i).leftOut, QStringList {QStringLiteral("position_offset")});
+        }
+        QCOMPARE(simulatorValue(1, u"position_offset"), offset);
+        QCOMPARE(simulatorValue(3, u"max_angle_limit"), 4000);
+        QVERIFY(feetech::leftOutNote(outcomes).contains(QLatin1String("position_offset")));
+        // Torque on: refused whole, nothing written to it.
+        QCOMPARE(outcomes.at(1).status, feetech::ProgramOutcome::Status::Failed);
+        QVERIFY2(outcomes.at(1).error.contains(QLatin1String("torque is on")),
+                 qPrintable(outcomes.at(1).error));
+        QCOMPARE(simulatorValue(2, u"p_gain"), gain);
+        QCOMPARE(simulatorValue(2, u"max_angle_limit"), limit);
+        QCOMPARE(simulatorValue(2, u"position_offset"), offset);
     }
 
     void aServoWithEditsOfItsOwnIsLeftAlone()

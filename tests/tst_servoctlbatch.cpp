@@ -1,6 +1,7 @@
 // servoctl feetech load --ids against a simulated bus (STS3215 ×2, SCS0009 at 1 Mbps): one
 // profile or a robot template's settings to several servos, each diffed, written, verified and
-// reported in a JSON array; a missing servo fails alone; an invalid file sends nothing.
+// reported in a JSON array; a missing servo fails alone; an invalid file sends nothing; a
+// profile's offset is not copied and a servo with torque on gets no offset or limit change.
 #include "feetechbus.h"
 #include "servoctlrun.h"
 
@@ -112,6 +113,45 @@ private slots:
             QCOMPARE(eepromByte(id, QStringLiteral("max_temperature")), 60);
             QCOMPARE(simulatorValue(id, u"lock"), 1);
         }
+    }
+
+    void aProfileKeepsEachOffsetAndATorquedServoIsRefusedItsLimits()
+    {
+        const QString profile =
+            writeTestFile(QStringLiteral("calibrated.json"),
+                          R"({"format": "servobench-profile", "version": 1, "family": "sts",
+                          "parameters": {"p_gain": 20, "position_offset": 300,
+                                         "min_angle_limit": 100}})");
+        setSimulatorValue(2, u"torque_enable", 1);
+        const qint32 offset = simulatorValue(1, u"position_offset");
+        const qint32 gain = simulatorValue(2, u"p_gain");
+        const int writesBefore = writesTo(2);
+        const auto result = feetech({QStringLiteral("--json"), QStringLiteral("load"),
+                                     QStringLiteral("--ids"), QStringLiteral("1,2"), profile});
+        QCOMPARE(result.exitCode, 1);
+        const QJsonArray entries = arrayOf(result.out);
+        QCOMPARE(entries.size(), 2);
+        const QJsonObject written = entries.at(0).toObject();
+        QCOMPARE(written.value(QStringLiteral("status")).toString(), QStringLiteral("ok"));
+        QCOMPARE(stringsOf(written.value(QStringLiteral("left_out"))),
+                 QStringList {QStringLiteral("position_offset")});
+        QVERIFY(!stringsOf(written.value(QStringLiteral("changed")))
+                     .contains(QStringLiteral("position_offset")));
+        QCOMPARE(simulatorValue(1, u"position_offset"), offset);
+        QCOMPARE(simulatorValue(1, u"min_angle_limit"), 100);
+        const QJsonObject refused = entries.at(1).toObject();
+        QCOMPARE(refused.value(QStringLiteral("status")).toString(), QStringLiteral("failed"));
+        QVERIFY(refused.value(QStringLiteral("error"))
+                    .toString()
+                    .contains(QLatin1String("torque is on")));
+        QCOMPARE(writesTo(2), writesBefore);
+        QCOMPARE(simulatorValue(2, u"p_gain"), gain);
+
+        // The text report says why the offset was not copied.
+        const auto text = feetech(
+            {QStringLiteral("load"), QStringLiteral("--ids"), QStringLiteral("1"), profile});
+        QVERIFY2(text.out.contains(QLatin1String("Not copied from the profile: position_offset")),
+                 qPrintable(text.out));
     }
 
     void servosThatAlreadyHoldTheValuesAreUnchangedAndNotWritten()

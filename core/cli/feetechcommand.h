@@ -91,7 +91,8 @@ private:
     // *error when it cannot be read.
     static std::optional<QVector<model::WriteItem>>
     changedOn(FeetechDevice &device, const ServoInfo &servo,
-              const QVector<model::WriteItem> &wanted, QString *error);
+              const QVector<model::WriteItem> &wanted, QString *error,
+              std::optional<qint64> *torque = nullptr);
     feetech::ProgramOutcome programOne(FeetechDevice &device, quint8 id,
                                        const feetech::SettingsFile &file);
 

@@ -24,7 +24,8 @@ QJsonObject outcomeJson(const feetech::ProgramOutcome &outcome)
             {QStringLiteral("status"), feetech::statusKey(outcome.status)},
             {QStringLiteral("changed"), QJsonArray::fromStringList(outcome.changed)},
             {QStringLiteral("error"),
-             outcome.error.isEmpty() ? QJsonValue() : QJsonValue(outcome.error)}};
+             outcome.error.isEmpty() ? QJsonValue() : QJsonValue(outcome.error)},
+            {QStringLiteral("left_out"), QJsonArray::fromStringList(outcome.leftOut)}};
 }
 
 } // namespace
@@ -46,7 +47,8 @@ int FeetechCommand::identify(const QString &what, const QStringList &operands)
 
 std::optional<QVector<model::WriteItem>>
 FeetechCommand::changedOn(FeetechDevice &device, const ServoInfo &servo,
-                          const QVector<model::WriteItem> &wanted, QString *error)
+                          const QVector<model::WriteItem> &wanted, QString *error,
+                          std::optional<qint64> *torque)
 {
     const auto memory = device.read(servo, {});
     if (!memory) {
@@ -54,6 +56,8 @@ FeetechCommand::changedOn(FeetechDevice &device, const ServoInfo &servo,
         return std::nullopt;
     }
     const QHash<QString, qint32> current = valuesByKey(decodeMemory(servo.table(), *memory));
+    if (torque && current.contains(QStringLiteral("torque_enable")))
+        *torque = current.value(QStringLiteral("torque_enable"));
     return feetech::changedValues(wanted, [&current](const QString &key) -> std::optional<qint64> {
         const auto found = current.constFind(key);
         if (found == current.constEnd())
@@ -75,14 +79,18 @@ feetech::ProgramOutcome FeetechCommand::programOne(FeetechDevice &device, quint8
         return outcome;
     }
     QString error;
-    const auto wanted = file.valuesFor(*servo, &error);
-    const auto items = wanted ? changedOn(device, *servo, *wanted, &error) : std::nullopt;
+    const auto wanted = file.batchValuesFor(*servo, &outcome.leftOut, &error);
+    std::optional<qint64> torque;
+    const auto items = wanted ? changedOn(device, *servo, *wanted, &error, &torque) : std::nullopt;
     if (!items) {
         outcome.error = error;
         return outcome;
     }
     for (const model::WriteItem &item : *items)
         outcome.changed.append(item.key);
+    outcome.error = feetech::torqueRefusal(*servo, *items, torque);
+    if (!outcome.error.isEmpty())
+        return outcome;
     if (items->isEmpty()) {
         outcome.status = feetech::ProgramOutcome::Status::Unchanged;
         return outcome;
@@ -140,6 +148,9 @@ int FeetechCommand::loadMany(const feetech::SettingsFile &file, const QString &p
         m_output.out << QString::number(outcome.id).leftJustified(5)
                      << feetech::statusText(outcome.status).leftJustified(22) << detail << '\n';
     }
+    const QString leftOut = leftOutNote(outcomes);
+    if (!leftOut.isEmpty())
+        m_output.out << leftOut << '\n';
     m_output.out.flush();
     return anyFailed ? ExitDeviceFailure : ExitOk;
 }

@@ -116,7 +116,8 @@ void BatchProgram::diffAndWrite(int index)
         return;
     }
     QString error;
-    const auto wanted = m_file->valuesFor(m_client->servo(index).info, &error);
+    const ServoInfo &info = m_client->servo(index).info;
+    const auto wanted = m_file->batchValuesFor(info, &m_current.leftOut, &error);
     if (!wanted) {
         failCurrent(error);
         return;
@@ -126,6 +127,12 @@ void BatchProgram::diffAndWrite(int index)
         *wanted, [&parameters](const QString &key) { return parameters.deviceValue(key); });
     for (const model::WriteItem &item : changed)
         m_current.changed.append(item.key);
+    const QString refused =
+        torqueRefusal(info, changed, parameters.deviceValue(QStringLiteral("torque_enable")));
+    if (!refused.isEmpty()) {
+        failCurrent(refused);
+        return;
+    }
     if (changed.isEmpty()) {
         m_current.status = ProgramOutcome::Status::Unchanged;
         m_outcomes.append(m_current);

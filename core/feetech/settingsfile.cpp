@@ -11,6 +11,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
+
 namespace feetech {
 
 namespace {
@@ -21,6 +23,7 @@ struct Tr
 };
 
 const QString kRobotMarker = QStringLiteral("servobench-robot");
+const QString kOffsetKey = QStringLiteral("position_offset");
 
 } // namespace
 
@@ -116,6 +119,34 @@ std::optional<QVector<model::WriteItem>> SettingsFile::valuesFor(const ServoInfo
     return values;
 }
 
+std::optional<QVector<model::WriteItem>>
+SettingsFile::batchValuesFor(const ServoInfo &servo, QStringList *leftOut, QString *error) const
+{
+    auto values = valuesFor(servo, error);
+    if (!values || m_robot)
+        return values; // a template's joint holds that servo's own calibration
+    const auto isOffset = [](const model::WriteItem &item) {
+        return item.key == kOffsetKey;
+    };
+    if (values->removeIf(isOffset) > 0 && !leftOut->contains(kOffsetKey))
+        leftOut->append(kOffsetKey);
+    return values;
+}
+
+QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &changed,
+                      std::optional<qint64> torque)
+{
+    static const QStringList moving {kOffsetKey, QStringLiteral("min_angle_limit"),
+                                     QStringLiteral("max_angle_limit"),
+                                     QStringLiteral("goal_position")};
+    const bool moves = std::any_of(changed.cbegin(), changed.cend(),
+                                   [](const auto &item) { return moving.contains(item.key); });
+    const auto off = servo.hasTable() ? servo.table().torqueValue(TorqueMode::Off) : std::nullopt;
+    if (!moves || (torque && off && *torque == *off))
+        return {};
+    return Tr::tr("torque is on: switch it off before changing the position offset or limits");
+}
+
 QVector<model::WriteItem>
 changedValues(const QVector<model::WriteItem> &wanted,
               const std::function<std::optional<qint64>(const QString &key)> &current)
@@ -126,6 +157,22 @@ changedValues(const QVector<model::WriteItem> &wanted,
             changed.append(item);
     }
     return changed;
+}
+
+QString leftOutNote(const QVector<ProgramOutcome> &outcomes)
+{
+    QStringList keys;
+    for (const ProgramOutcome &outcome : outcomes) {
+        for (const QString &key : outcome.leftOut) {
+            if (!keys.contains(key))
+                keys.append(key);
+        }
+    }
+    if (keys.isEmpty())
+        return {};
+    return Tr::tr("Not copied from the profile: %1 (each servo's own calibration, not a setting "
+                  "to copy; use a robot template or Load calibration for it).")
+        .arg(keys.join(QStringLiteral(", ")));
 }
 
 QString statusKey(ProgramOutcome::Status status)

@@ -34,6 +34,10 @@ public:
     // the servo's ID, or a joint of another model.
     std::optional<QVector<model::WriteItem>> valuesFor(const ServoInfo &servo,
                                                        QString *error) const;
+    // valuesFor when several servos are programmed: a profile's position_offset is one servo's
+    // calibration, not a setting to copy, so it is left out (its key added to *leftOut).
+    std::optional<QVector<model::WriteItem>>
+    batchValuesFor(const ServoInfo &servo, QStringList *leftOut, QString *error) const;
 
 private:
     QString m_source; // the file, for messages
@@ -47,6 +51,11 @@ QVector<model::WriteItem>
 changedValues(const QVector<model::WriteItem> &wanted,
               const std::function<std::optional<qint64>(const QString &key)> &current);
 
+// Why `changed` may not be written to `servo` whose torque_enable holds `torque` (none when it was
+// not read): under torque a new offset, limit or goal moves the horn. Empty when it may.
+QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &changed,
+                      std::optional<qint64> torque);
+
 // What programming one servo of many came to.
 struct ProgramOutcome
 {
@@ -56,7 +65,10 @@ struct ProgramOutcome
     Status status = Status::Failed;
     QStringList changed; // the keys written (or that were to be, when it failed)
     QString error; // why it failed, for the user
+    QStringList leftOut; // the file's keys not written to any servo (a profile's offset)
 };
+// What the outcomes left out of the file and why, for the result (empty when nothing was).
+QString leftOutNote(const QVector<ProgramOutcome> &outcomes);
 // "ok", "unchanged", "failed": the words servoctl's JSON uses.
 QString statusKey(ProgramOutcome::Status status);
 // The same for people (translated).

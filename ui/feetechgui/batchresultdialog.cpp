@@ -64,6 +64,13 @@ BatchResultDialog::BatchResultDialog(const QString &source,
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(summary);
+    const QString leftOut = feetech::leftOutNote(outcomes);
+    if (!leftOut.isEmpty()) {
+        auto *note = new QLabel(leftOut, this);
+        note->setObjectName(QStringLiteral("batchLeftOutNote"));
+        note->setWordWrap(true);
+        layout->addWidget(note);
+    }
     layout->addWidget(m_table, 1);
     layout->addWidget(buttons);
     const int em = fontMetrics().horizontalAdvance(u'm');
