@@ -80,9 +80,13 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             }
             QString error;
             if (!m_client->startMonitor(m_indexes, kRecordingRate, &error)) {
-                fail(error);
+                // Back to the choice: torque is off, so only the recording is to start again.
+                m_stage = Stage::Choosing;
+                m_torqueOff->setEnabled(true);
+                fail(tr("Torque is off, but the recording could not start: %1").arg(error));
                 return;
             }
+            m_freshPositions = QVector<std::optional<double>>(m_recordings.size());
             m_stage = Stage::Recording;
             m_status->clear();
             buildBars();
@@ -224,7 +228,11 @@ void CalibrationWizard::onTelemetry(const QVector<feetech::FeedbackSample> &samp
         const auto position = sample.value(feetech::Quantity::Position);
         for (int i = 0; i < m_recordings.size(); ++i) {
             const feetech::ServoInfo &info = m_client->servo(m_indexes.at(i)).info;
-            if (position && recording && info.id == sample.id && info.baud == sample.baud)
+            if (!position || info.id != sample.id || info.baud != sample.baud)
+                continue;
+            if (i < m_freshPositions.size())
+                m_freshPositions[i] = *position;
+            if (recording)
                 m_recordings[i].range.addSample(int(std::lround(*position)));
         }
     }
@@ -233,12 +241,17 @@ void CalibrationWizard::onTelemetry(const QVector<feetech::FeedbackSample> &samp
 
 void CalibrationWizard::onTelemetryStats(const feetech::TelemetryStats &stats)
 {
-    if (m_stage != Stage::Recording || page() != Page::Recording)
+    if (m_stage != Stage::Recording)
         return;
+    const bool recording = page() == Page::Recording;
     for (const feetech::ServoTelemetry &servo : stats.servos) {
         for (int i = 0; i < m_recordings.size(); ++i) {
             const feetech::ServoInfo &info = m_client->servo(m_indexes.at(i)).info;
-            if (servo.missing && info.id == servo.id && info.baud == servo.baud)
+            if (!servo.missing || info.id != servo.id || info.baud != servo.baud)
+                continue;
+            if (i < m_freshPositions.size())
+                m_freshPositions[i].reset(); // its last position is no longer where it is
+            if (recording)
                 m_recordings[i].range.markLost();
         }
     }
@@ -250,9 +263,7 @@ void CalibrationWizard::refreshBars()
     if (page() == Page::MiddlePose) {
         QStringList lines;
         for (int i = 0; i < m_recordings.size(); ++i) {
-            const auto sample = m_client->latestSample(m_indexes.at(i));
-            const auto position =
-                sample ? sample->value(feetech::Quantity::Position) : std::nullopt;
+            const auto position = m_freshPositions.value(i);
             lines.append(tr("%1 (%2): %3")
                              .arg(m_recordings.at(i).name)
                              .arg(m_recordings.at(i).id)
@@ -282,8 +293,7 @@ void CalibrationWizard::takeMiddlePose()
     if (m_stage != Stage::Recording || page() != Page::MiddlePose)
         return;
     for (int i = 0; i < m_recordings.size(); ++i) {
-        const auto sample = m_client->latestSample(m_indexes.at(i));
-        const auto position = sample ? sample->value(feetech::Quantity::Position) : std::nullopt;
+        const auto position = m_freshPositions.value(i);
         if (!position)
             return fail(tr("No position has come from %1 (ID %2) yet: check that it answers.")
                             .arg(m_recordings.at(i).name)
@@ -350,6 +360,7 @@ void CalibrationWizard::recordAgain()
         return fail(error);
     for (feetech::JointRecording &joint : m_recordings)
         joint.range = {};
+    m_freshPositions = QVector<std::optional<double>>(m_recordings.size());
     m_results.clear();
     m_stage = Stage::Recording;
     m_status->clear();

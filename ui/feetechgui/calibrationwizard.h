@@ -10,6 +10,8 @@
 #include <QDialog>
 #include <QVector>
 
+#include <optional>
+
 namespace feetech {
 class BusClient;
 struct FeedbackSample;
@@ -106,6 +108,9 @@ private:
     Stage m_stage = Stage::Choosing;
     QVector<int> m_indexes; // of the joints being calibrated, as the client lists them
     QVector<feetech::JointRecording> m_recordings;
+    // Per joint: its last position received since this recording started, none while it has
+    // sent none or since it went missing (the client's latest sample may be an old one).
+    QVector<std::optional<double>> m_freshPositions;
     QVector<feetech::JointCalibration> m_results;
     QVector<bool> m_written; // per result: written and verified
     QVector<int> m_writeRows; // the result row of each write step
