@@ -256,6 +256,30 @@ private slots:
         QCOMPARE(simulatorValue(1, u"max_angle_limit"), 3300);
     }
 
+    void aServoOfTheFileThatDoesNotAnswerIsNotWritten()
+    {
+        startArm();
+        // Index 1: servo ID 2, found by the scan, silent now.
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
+        const QVector<feetech::LeRobotMotor> motors {
+            {QStringLiteral("shoulder_pan"), 1, 0, -1200, 800, 3300},
+            {QStringLiteral("shoulder_lift"), 2, 0, -500, 700, 3000}};
+        LoadCalibrationDialog dialog(m_client.get(), motors, QStringLiteral("arm.json"));
+        QSignalSpy ready(&dialog, &LoadCalibrationDialog::ready);
+        QVERIFY(dialog.isReady() || ready.wait(20000));
+        QCOMPARE(dialog.changedJoints(), 1);
+        auto *table = dialog.findChild<QTableWidget *>(QStringLiteral("calibrationDiffTable"));
+        QVERIFY2(table->item(1, 4)->text().contains(QLatin1String("could not be read")),
+                 qPrintable(table->item(1, 4)->text()));
+        QCOMPARE(table->item(0, 4)->text(), QStringLiteral("To write"));
+        QSignalSpy written(&dialog, &LoadCalibrationDialog::writingFinished);
+        click(&dialog, "writeLoadedCalibrationButton");
+        QVERIFY(written.wait(20000));
+        QCOMPARE(written.first().at(0).toBool(), true);
+        QCOMPARE(simulatorValue(1, u"position_offset"), -1200);
+        QCOMPARE(testsupport::writesReceived(logPath(), 2, kOffsetAddress), 0);
+    }
+
     void theSavedCalibrationNamesTheJointsByTheTemplate()
     {
         startArm();
@@ -286,6 +310,13 @@ private slots:
         QVERIFY(testsupport::connectAndScan(*window.feetechClient(), m_simulator->linkPath(), 3));
         QTRY_VERIFY(calibrate->isEnabled());
         QVERIFY(window.findChild<QAction *>(QStringLiteral("loadCalibrationAction"))->isEnabled());
+        // Application-modal: the modeless set-up wizard cannot start a set-up meanwhile.
+        calibrate->trigger();
+        QPointer<CalibrationWizard> wizard = window.findChild<CalibrationWizard *>();
+        QVERIFY(wizard);
+        QCOMPARE(wizard->windowModality(), Qt::ApplicationModal);
+        wizard->reject();
+        QTRY_VERIFY(wizard.isNull());
         window.feetechClient()->disconnectFrom();
         QTRY_VERIFY(!calibrate->isEnabled());
     }

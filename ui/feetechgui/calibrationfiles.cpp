@@ -29,6 +29,14 @@ qint32 deviceValue(const feetech::BusClient &client, int index, const QString &k
     return qint32(client.parameters(index)->deviceValue(key).value_or(0));
 }
 
+// Application-modal, not window-modal: the set-up wizard is a window of its own (modeless), and
+// no set-up may run while joints are recorded or calibrations written.
+void showApplicationModal(QDialog *dialog)
+{
+    dialog->setWindowModality(Qt::ApplicationModal);
+    dialog->show();
+}
+
 const feetech::RobotTemplate *defaultTemplate(const QVector<feetech::RobotTemplate> &templates)
 {
     const int chosen = defaultRobotTemplate(templates);
@@ -167,11 +175,17 @@ LoadCalibrationDialog::LoadCalibrationDialog(feetech::BusClient *client,
                 found = index;
         }
         m_indexes.append(found);
-        if (found >= 0)
+        m_readFailures.append(QString());
+        if (found >= 0) {
             steps.append(CalibrationSteps::Step {found, {}});
+            m_readRows.append(row);
+        }
     }
     connect(m_steps, &CalibrationSteps::stepFinished, this,
             [this](int step, bool ok, const QString &message) {
+                if (!m_writing && !ok && step < m_readRows.size())
+                    m_readFailures[m_readRows.at(step)] =
+                        message.isEmpty() ? tr("no answer") : message;
                 if (m_writing && step < m_writeRows.size())
                     setStatus(m_writeRows.at(step), ok ? tr("Written and verified") : message, !ok);
             });
@@ -215,6 +229,15 @@ void LoadCalibrationDialog::onRead(bool allOk)
             setStatus(row, tr("Servo %1 is not on the bus: nothing written").arg(motor.id), true);
             continue;
         }
+        if (!m_readFailures.at(row).isEmpty()) {
+            // Its device values are stale or were never read: nothing to diff against.
+            setStatus(row,
+                      tr("Servo %1 could not be read (%2): nothing written")
+                          .arg(motor.id)
+                          .arg(m_readFailures.at(row)),
+                      true);
+            continue;
+        }
         const QVector<model::WriteItem> wanted =
             feetech::calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax);
         bool changed = false;
@@ -229,7 +252,8 @@ void LoadCalibrationDialog::onRead(bool allOk)
         }
         if (!changed) {
             setStatus(row, tr("Unchanged"), false);
-        } else if (deviceValue(*m_client, index, QStringLiteral("torque_enable")) != 0) {
+        } else if (m_client->parameters(index)->deviceValue(QStringLiteral("torque_enable"))
+                   != std::optional<qint64>(0)) {
             // A new offset under torque would move the horn to the old goal's new place.
             setStatus(row,
                       tr("Torque is on: the new offset would move the horn. Switch torque off "
@@ -283,7 +307,7 @@ CalibrationActions::CalibrationActions(QMenu *menu, feetech::BusClient *client, 
     m_calibrate = menu->addAction(tr("&Calibrate arm…"), this, [this] {
         auto *wizard = new CalibrationWizard(m_client, m_window);
         wizard->setAttribute(Qt::WA_DeleteOnClose);
-        wizard->open();
+        showApplicationModal(wizard);
     });
     m_calibrate->setObjectName(QStringLiteral("calibrateArmAction"));
     m_calibrate->setToolTip(tr("Record each joint's range by hand and centre it on the encoder"));
@@ -346,5 +370,5 @@ void CalibrationActions::loadCalibration()
     }
     auto *dialog = new LoadCalibrationDialog(m_client, *motors, path, m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->open();
+    showApplicationModal(dialog);
 }

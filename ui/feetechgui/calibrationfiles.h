@@ -69,6 +69,8 @@ private:
     CalibrationSteps *m_steps = nullptr;
     QVector<feetech::LeRobotMotor> m_motors;
     QVector<int> m_indexes; // per motor: the client's index, -1 when not on the bus
+    QVector<int> m_readRows; // the row of each read step
+    QStringList m_readFailures; // per row: why its servo could not be read, empty when it was
     QVector<int> m_writeRows; // the rows with changes that may be written
     bool m_ready = false;
     bool m_writing = false;
