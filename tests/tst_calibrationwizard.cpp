@@ -315,7 +315,7 @@ private slots:
         QPointer<CalibrationWizard> wizard = window.findChild<CalibrationWizard *>();
         QVERIFY(wizard);
         QCOMPARE(wizard->windowModality(), Qt::ApplicationModal);
-        wizard->reject();
+        wizard->close();
         QTRY_VERIFY(wizard.isNull());
         window.feetechClient()->disconnectFrom();
         QTRY_VERIFY(!calibrate->isEnabled());
