@@ -253,6 +253,43 @@ private slots:
         QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
     }
 
+    void aServoAtAnotherRateIsIdentifiedWhileTheMonitorStreamsBothRates()
+    {
+        // Between moves the monitor's reads leave the link at 1 Mbps: every move and the
+        // restore go out at servo 1's 500 kbps all the same.
+        constexpr qint32 k500k = 500000;
+        QString error;
+        QVERIFY2(startSimulator(busOptions({{1, QStringLiteral("STS3215"), k500k},
+                                            {2, QStringLiteral("STS3215"), k1M}}),
+                                &error),
+                 qPrintable(error));
+        m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Auto);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        feetech::ScanOptions options;
+        options.lastId = 4;
+        options.bauds = {k500k, k1M};
+        QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
+        m_client->scan(options);
+        QTRY_VERIFY_WITH_TIMEOUT(!scanned.isEmpty(), 20000);
+        const int slow = m_client->indexOf(1, k500k);
+        const int fast = m_client->indexOf(2, k1M);
+        QVERIFY(slow >= 0 && fast >= 0);
+        m_client->readServo(slow);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servo(slow).read, 10000);
+        QVERIFY2(m_client->startMonitor({slow, fast}, 0, &error), qPrintable(error));
+        const qint32 start = simulatorValue(1, u"present_position");
+        const qint32 limit = simulatorValue(1, u"torque_limit");
+
+        const Watched watched = identifyWatching(slow, 1);
+        m_client->stopMonitor();
+        QVERIFY(watched.result);
+        QVERIFY2(watched.result->ok, qPrintable(watched.result->message));
+        QVERIFY(watched.highest >= start + kAmplitude / 2);
+        QVERIFY(watched.lowest <= start - kAmplitude / 2);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
+    }
+
     void servoctlIdentifyExitsZeroWithTorqueRestoredAndTwoForUsage()
     {
         const QString link = m_simulator->linkPath();

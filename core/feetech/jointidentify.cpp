@@ -184,6 +184,9 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
 void JointIdentify::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> steps,
                                  std::function<void()> then)
 {
+    // Telemetry and All torque off use the bus during the pauses, at other rates: every
+    // sequence sets the servo's rate again before talking to it.
+    steps.insert(steps.begin(), m_bus.setBaud(run->servo.baud));
     m_bus.runSteps(std::move(steps), [this, run, then](bool ok, const QString &message) {
         if (!ok) {
             restore(run, false,
@@ -234,7 +237,7 @@ void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, const QStr
 {
     const RegisterTable &table = run->servo.table();
     const QHash<QString, qint32> &before = run->before;
-    std::vector<Step> steps;
+    std::vector<Step> steps {m_bus.setBaud(run->servo.baud)};
     QStringList restored;
     // Torque off first where it was off, so putting the goal back moves nothing; after All
     // torque off it stays off whatever it was.
