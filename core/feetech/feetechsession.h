@@ -153,6 +153,7 @@ private:
     bool m_running = false;
     Operation m_currentOperation = Operation::Read;
     bool m_paused = false; // the current operation waits in pauseFor
+    Operation m_pausedOperation = Operation::Read; // the one waiting, while m_paused
     quint64 m_pauseGeneration = 0; // a pause ended by a lost link never resumes
     quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
 };
