@@ -95,7 +95,6 @@ MotorSetup::MotorSetup(BusExchange &bus, GuidedFlows &flows, ApplyFlow &apply, Q
 
 void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
 {
-    m_cancelled = false;
     auto run = std::make_shared<Run>();
     run->target = target;
     run->done = std::move(done);
@@ -327,7 +326,6 @@ void MotorSetup::finish(std::shared_ptr<Run> run, bool ok, const QString &messag
 
 void MotorSetup::check(qint32 baud, const QVector<JointCheck> &joints, CheckDone done)
 {
-    m_cancelled = false;
     auto checked = std::make_shared<QVector<JointCheck>>(joints);
     for (JointCheck &joint : *checked) {
         joint.found.reset();
