@@ -223,6 +223,17 @@ private slots:
         QCOMPARE(pluggedServos().first().id, quint8(1));
     }
 
+    void ramSettingsAreWrittenWithoutSayingTheEepromWasUnlocked()
+    {
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        MotorTarget target = jointTarget(2);
+        target.settings = {{QStringLiteral("acceleration"), 20}};
+        const MotorSetupResult result = setUp(target);
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QVERIFY2(result.steps.contains(QStringLiteral("Wrote acceleration.")),
+                 qPrintable(result.steps.join(QLatin1Char('|'))));
+    }
+
     void theCheckShowsJointsSetUpAtTheirIdAsDone()
     {
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
