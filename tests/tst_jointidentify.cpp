@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <csignal>
 #include <memory>
 
 namespace {
@@ -307,6 +308,32 @@ private slots:
             testsupport::runServoctl({QStringLiteral("--port"), link, QStringLiteral("feetech"),
                                       QStringLiteral("identify")});
         QCOMPARE(usage.exitCode, 2);
+    }
+
+    void servoctlIdentifyStoppedByCtrlCRestoresTheServoAndExitsOne()
+    {
+        const qint32 limit = simulatorValue(1, u"torque_limit");
+        const qint32 goal = simulatorValue(1, u"goal_position");
+        // Ctrl-C once the horn is held: only the identify itself can have switched torque on,
+        // so servoctl is inside it and watching for the signal.
+        QTimer interrupter;
+        connect(&interrupter, &QTimer::timeout, this, [&] {
+            if (simulatorValue(1, u"torque_enable") == 1) {
+                interrupter.stop();
+                std::raise(SIGINT);
+            }
+        });
+        interrupter.start(5);
+        const auto done = testsupport::runServoctl(
+            {QStringLiteral("--port"), m_simulator->linkPath(), QStringLiteral("feetech"),
+             QStringLiteral("identify"), QStringLiteral("--id"), QStringLiteral("1")});
+        QVERIFY(!interrupter.isActive());
+        QCOMPARE(done.exitCode, 1);
+        QVERIFY2(done.err.contains(QStringLiteral("interrupted")), qPrintable(done.err));
+        QVERIFY2(done.err.contains(QStringLiteral("stopped")), qPrintable(done.err));
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
+        QCOMPARE(simulatorValue(1, u"goal_position"), goal);
     }
 
     void servoctlIdentifyOfAServoNotInPositionModeExitsOneWithoutWriting()

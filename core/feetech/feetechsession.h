@@ -73,6 +73,8 @@ public:
     // changed put back (see JointIdentify). Between its moves the bus is free for telemetry
     // and All torque off, which stops it with the torque left off.
     void identifyJoint(const feetech::ServoInfo &servo);
+    // Not queued: the running identify stops before its next move and restores the servo.
+    void cancelIdentify();
 
     // Telemetry: a cycle of SYNC READs (one READ per servo where the family has no SYNC READ)
     // of the feedback block, at the options' rate, between operations, until stopTelemetry.

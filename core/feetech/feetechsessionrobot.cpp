@@ -22,6 +22,7 @@ struct Tr
 void Session::identifyJoint(const ServoInfo &servo)
 {
     const quint64 epoch = m_torqueOffEpoch;
+    m_identify->clearCancel();
     enqueue(Operation::Identify, [this, servo, epoch] {
         if (refusedAfterTorqueOff(Operation::Identify, epoch))
             return;
@@ -89,6 +90,11 @@ void Session::checkJoints(qint32 baud, const QVector<JointCheck> &joints)
 void Session::cancelMotorSetup()
 {
     m_motorSetup->cancel();
+}
+
+void Session::cancelIdentify()
+{
+    m_identify->cancel();
 }
 
 } // namespace feetech

@@ -136,6 +136,11 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
         return;
     }
     run->torqueWasOn = torque == TorqueMode::On;
+    if (m_cancelled) {
+        end(run, false,
+            Tr::tr("Identifying %1 was stopped; nothing was written.").arg(servoName(servo)));
+        return;
+    }
     const auto read = [&before](const QString &key) -> std::optional<qint64> {
         if (!before.contains(key))
             return std::nullopt;
@@ -204,6 +209,10 @@ void JointIdentify::nextLeg(std::shared_ptr<Run> run)
         restore(run, false, {});
         return;
     }
+    if (m_cancelled) {
+        restore(run, false, Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
+        return;
+    }
     run->legClock.start();
     runOrRestore(run, {writeStep(run, kGoalPosition, run->legs.at(run->leg))},
                  [this, run] { poll(run); });
@@ -216,6 +225,10 @@ void JointIdentify::poll(std::shared_ptr<Run> run)
             restore(
                 run, true,
                 Tr::tr("All torque off: identifying %1 was stopped.").arg(servoName(run->servo)));
+            return;
+        }
+        if (m_cancelled) {
+            restore(run, false, Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
             return;
         }
         run->now.remove(kMoving);
