@@ -7,6 +7,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
+#include <chrono>
+
 using feetech::OperationResult;
 using feetech::ReadSource;
 using feetech::ServoInfo;
@@ -329,6 +332,36 @@ private slots:
         result = run([&] { m_session->clearStatus(*found(1)); });
         QVERIFY2(result.ok, qPrintable(result.message));
         QVERIFY(framesReceived().filter(QStringLiteral("FF FF 01 02 0A")).size() == 1);
+    }
+
+    void aLostLinkAfterAllTorqueOffInAnIdentifyPauseEndsTheIdentifyToo()
+    {
+        // A pause long enough that the link is lost while identify still waits in it.
+        feetech::SessionTiming timing;
+        timing.identifyPollInterval = std::chrono::seconds(60);
+        m_session = std::make_unique<Session>(timing);
+        connect(m_session.get(), &Session::servoFound, this,
+                [this](const ServoInfo &servo) { m_found.append(servo); });
+        m_session->open(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
+        feetech::ScanOptions options;
+        options.lastId = 1;
+        QVERIFY(scan(options));
+        const auto servo = found(1);
+        QVERIFY(servo);
+        QSignalSpy finished(m_session.get(), &Session::operationFinished);
+        const auto ended = [&finished](feetech::Operation operation) {
+            return std::any_of(finished.begin(), finished.end(), [operation](const auto &signal) {
+                return signal.at(0).template value<OperationResult>().operation == operation;
+            });
+        };
+        m_session->identifyJoint(*servo);
+        QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(1, u"torque_enable") == 1, 10000);
+        m_session->torqueOffAll({k1M}, {*servo});
+        QTRY_VERIFY_WITH_TIMEOUT(ended(feetech::Operation::TorqueOff), 10000);
+        QVERIFY(!ended(feetech::Operation::Identify));
+        m_session->close();
+        QTRY_VERIFY_WITH_TIMEOUT(ended(feetech::Operation::Identify), 10000);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
     }
 };
 

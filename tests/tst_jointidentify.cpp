@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <csignal>
 #include <memory>
 
 namespace {
@@ -253,6 +254,43 @@ private slots:
         QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
     }
 
+    void aServoAtAnotherRateIsIdentifiedWhileTheMonitorStreamsBothRates()
+    {
+        // Between moves the monitor's reads leave the link at 1 Mbps: every move and the
+        // restore go out at servo 1's 500 kbps all the same.
+        constexpr qint32 k500k = 500000;
+        QString error;
+        QVERIFY2(startSimulator(busOptions({{1, QStringLiteral("STS3215"), k500k},
+                                            {2, QStringLiteral("STS3215"), k1M}}),
+                                &error),
+                 qPrintable(error));
+        m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Auto);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        feetech::ScanOptions options;
+        options.lastId = 4;
+        options.bauds = {k500k, k1M};
+        QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
+        m_client->scan(options);
+        QTRY_VERIFY_WITH_TIMEOUT(!scanned.isEmpty(), 20000);
+        const int slow = m_client->indexOf(1, k500k);
+        const int fast = m_client->indexOf(2, k1M);
+        QVERIFY(slow >= 0 && fast >= 0);
+        m_client->readServo(slow);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servo(slow).read, 10000);
+        QVERIFY2(m_client->startMonitor({slow, fast}, 0, &error), qPrintable(error));
+        const qint32 start = simulatorValue(1, u"present_position");
+        const qint32 limit = simulatorValue(1, u"torque_limit");
+
+        const Watched watched = identifyWatching(slow, 1);
+        m_client->stopMonitor();
+        QVERIFY(watched.result);
+        QVERIFY2(watched.result->ok, qPrintable(watched.result->message));
+        QVERIFY(watched.highest >= start + kAmplitude / 2);
+        QVERIFY(watched.lowest <= start - kAmplitude / 2);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
+    }
+
     void servoctlIdentifyExitsZeroWithTorqueRestoredAndTwoForUsage()
     {
         const QString link = m_simulator->linkPath();
@@ -270,6 +308,32 @@ private slots:
             testsupport::runServoctl({QStringLiteral("--port"), link, QStringLiteral("feetech"),
                                       QStringLiteral("identify")});
         QCOMPARE(usage.exitCode, 2);
+    }
+
+    void servoctlIdentifyStoppedByCtrlCRestoresTheServoAndExitsOne()
+    {
+        const qint32 limit = simulatorValue(1, u"torque_limit");
+        const qint32 goal = simulatorValue(1, u"goal_position");
+        // Ctrl-C once the horn is held: only the identify itself can have switched torque on,
+        // so servoctl is inside it and watching for the signal.
+        QTimer interrupter;
+        connect(&interrupter, &QTimer::timeout, this, [&] {
+            if (simulatorValue(1, u"torque_enable") == 1) {
+                interrupter.stop();
+                std::raise(SIGINT);
+            }
+        });
+        interrupter.start(5);
+        const auto done = testsupport::runServoctl(
+            {QStringLiteral("--port"), m_simulator->linkPath(), QStringLiteral("feetech"),
+             QStringLiteral("identify"), QStringLiteral("--id"), QStringLiteral("1")});
+        QVERIFY(!interrupter.isActive());
+        QCOMPARE(done.exitCode, 1);
+        QVERIFY2(done.err.contains(QStringLiteral("interrupted")), qPrintable(done.err));
+        QVERIFY2(done.err.contains(QStringLiteral("stopped")), qPrintable(done.err));
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        QCOMPARE(simulatorValue(1, u"torque_limit"), limit);
+        QCOMPARE(simulatorValue(1, u"goal_position"), goal);
     }
 
     void servoctlIdentifyOfAServoNotInPositionModeExitsOneWithoutWriting()

@@ -206,6 +206,34 @@ private slots:
         QCOMPARE(pluggedServos().first().id, quint8(1));
     }
 
+    void aStopWhileTheSetUpWaitsInTheQueueWritesNothing()
+    {
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        const quint64 revision = pluggedServos().first().revision;
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        const MotorSetupResult result = run([&] {
+            m_session->scan(options); // the set-up waits behind the scan
+            m_session->setUpMotor(jointTarget(2));
+            m_session->cancelMotorSetup();
+        });
+        QVERIFY2(!result.ok, qPrintable(result.message));
+        QVERIFY(result.stopped);
+        QCOMPARE(pluggedServos().first().revision, revision);
+        QCOMPARE(pluggedServos().first().id, quint8(1));
+    }
+
+    void ramSettingsAreWrittenWithoutSayingTheEepromWasUnlocked()
+    {
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        MotorTarget target = jointTarget(2);
+        target.settings = {{QStringLiteral("acceleration"), 20}};
+        const MotorSetupResult result = setUp(target);
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QVERIFY2(result.steps.contains(QStringLiteral("Wrote acceleration.")),
+                 qPrintable(result.steps.join(QLatin1Char('|'))));
+    }
+
     void theCheckShowsJointsSetUpAtTheirIdAsDone()
     {
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));

@@ -22,7 +22,7 @@ struct Tr
 
 // Long enough for the slowest flow: a factory reset that looks for the servo at every rate, or
 // a reboot that waits for the servo to come back.
-constexpr int kOperationTimeoutMs = 30000;
+constexpr double kOperationTimeoutSeconds = 30;
 // Addresses 0-8 name the servo: firmware, byte order, model, ID, baud code, response level.
 constexpr int kIdentitySize = 9;
 
@@ -188,6 +188,10 @@ std::optional<Memory> FeetechDevice::read(const ServoInfo &servo,
 std::optional<OperationResult> FeetechDevice::operate(const std::function<void()> &start,
                                                       Memory *memory)
 {
+    if (m_interrupted) {
+        m_error = Tr::tr("interrupted: nothing more was sent");
+        return std::nullopt;
+    }
     QEventLoop loop;
     std::optional<OperationResult> result;
     const QMetaObject::Connection finished =
@@ -205,10 +209,23 @@ std::optional<OperationResult> FeetechDevice::operate(const std::function<void()
     }
     // Started from inside the loop: a refusal is emitted before start() returns.
     QTimer::singleShot(0, &loop, start);
-    QTimer::singleShot(kOperationTimeoutMs, &loop, &QEventLoop::quit);
-    loop.exec();
+    runUntilInterrupted(loop, kOperationTimeoutSeconds, [this, &loop] {
+        if (m_interrupted) {
+            loop.quit();
+            return;
+        }
+        m_interrupted = true;
+        m_session->cancelIdentify();
+        m_session->cancelMotorSetup();
+    });
     QObject::disconnect(finished);
     QObject::disconnect(reading);
+    if (m_interrupted) {
+        m_error = result ? Tr::tr("interrupted: %1").arg(result->message)
+                         : Tr::tr("interrupted again before the operation ended: check the "
+                                  "servo's torque and EEPROM lock");
+        return std::nullopt;
+    }
     if (!result)
         m_error = Tr::tr("the servo did not finish in time");
     return result;

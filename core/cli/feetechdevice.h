@@ -69,7 +69,10 @@ public:
     std::optional<Memory> read(const ServoInfo &servo, const QVector<feetech::Block> &blocks);
 
     // Runs one session operation to its operationFinished; `memory` gathers what it read.
-    // Nothing (and error()) when it did not finish in time.
+    // Nothing (and error()) when it did not finish in time, or after Ctrl-C: the first asks
+    // the operation to stop cleanly (identify restores the servo, a set-up stops between
+    // steps, a write finishes and relocks) and waits for it; a second stops waiting. Once
+    // interrupted, no further operation starts.
     std::optional<OperationResult> operate(const std::function<void()> &start,
                                            Memory *memory = nullptr);
 
@@ -86,6 +89,7 @@ private:
     bool m_trace = false;
     std::unique_ptr<feetech::Session> m_session;
     QString m_error;
+    bool m_interrupted = false;
 };
 
 } // namespace cli

@@ -79,8 +79,14 @@ int FeetechCommand::setupMotor(const QString &what, const QStringList &operands)
     const auto finished =
         device.operate([&device, &target] { device.session().setUpMotor(target); });
     QObject::disconnect(reporting);
-    if (!finished || !result)
-        return fail(device.error());
+    if (!finished)
+        return fail(device.error()); // too slow, or Ctrl-C: the device says which
+    // The link dropped: the session ends the set-up without a motorSetupFinished.
+    if (!result)
+        return fail(finished->message.isEmpty()
+                        ? Tr::tr("the set-up ended before it reported; check the port and "
+                                 "the cable, then run it again")
+                        : finished->message);
     if (!result->ok)
         return fail(result->message);
     if (m_output.json) {

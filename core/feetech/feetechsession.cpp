@@ -115,8 +115,11 @@ void Session::close()
 void Session::onLinkDown(const QString &message)
 {
     const bool wasScanning = m_scan->isRunning();
-    const bool wasRunning = m_running || m_paused;
+    const bool wasRunning = m_running;
     const Operation running = m_currentOperation;
+    // All torque off may have run during the pause: the paused operation ends too.
+    const bool wasPaused = m_paused;
+    const Operation paused = m_pausedOperation;
     m_paused = false;
     ++m_pauseGeneration;
     std::deque<Queued> dropped;
@@ -130,6 +133,8 @@ void Session::onLinkDown(const QString &message)
         emit scanFinished(false, message);
     else if (wasRunning)
         emit operationFinished({running, false, message, {}, {}});
+    if (wasPaused)
+        emit operationFinished({paused, false, message, {}, {}});
     for (const Queued &operation : dropped) {
         if (operation.operation == Operation::Scan)
             emit scanFinished(false, message);
@@ -209,6 +214,7 @@ void Session::pauseFor(Operation operation, std::chrono::milliseconds delay,
 {
     m_running = false;
     m_paused = true;
+    m_pausedOperation = operation;
     const quint64 generation = ++m_pauseGeneration;
     QTimer::singleShot(delay, this, [this, generation, operation, resume = std::move(resume)] {
         if (!m_paused || generation != m_pauseGeneration)

@@ -73,6 +73,8 @@ public:
     // changed put back (see JointIdentify). Between its moves the bus is free for telemetry
     // and All torque off, which stops it with the torque left off.
     void identifyJoint(const feetech::ServoInfo &servo);
+    // Not queued: the running identify stops before its next move and restores the servo.
+    void cancelIdentify();
 
     // Telemetry: a cycle of SYNC READs (one READ per servo where the family has no SYNC READ)
     // of the feedback block, at the options' rate, between operations, until stopTelemetry.
@@ -153,6 +155,7 @@ private:
     bool m_running = false;
     Operation m_currentOperation = Operation::Read;
     bool m_paused = false; // the current operation waits in pauseFor
+    Operation m_pausedOperation = Operation::Read; // the one waiting, while m_paused
     quint64 m_pauseGeneration = 0; // a pause ended by a lost link never resumes
     quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
 };

@@ -22,6 +22,7 @@ struct Tr
 void Session::identifyJoint(const ServoInfo &servo)
 {
     const quint64 epoch = m_torqueOffEpoch;
+    m_identify->clearCancel();
     enqueue(Operation::Identify, [this, servo, epoch] {
         if (refusedAfterTorqueOff(Operation::Identify, epoch))
             return;
@@ -38,6 +39,7 @@ void Session::identifyJoint(const ServoInfo &servo)
 
 void Session::findMotor(const MotorTarget &target)
 {
+    m_motorSetup->clearCancel();
     enqueue(Operation::FindMotor, [this, target] {
         m_motorSetup->find(target, [this](const MotorSearch &search) {
             MotorSetupResult result;
@@ -54,6 +56,7 @@ void Session::findMotor(const MotorTarget &target)
 
 void Session::setUpMotor(const MotorTarget &target)
 {
+    m_motorSetup->clearCancel();
     const quint64 epoch = m_torqueOffEpoch;
     enqueue(Operation::SetUpMotor, [this, target, epoch] {
         if (refusedAfterTorqueOff(Operation::SetUpMotor, epoch))
@@ -67,6 +70,7 @@ void Session::setUpMotor(const MotorTarget &target)
 
 void Session::checkJoints(qint32 baud, const QVector<JointCheck> &joints)
 {
+    m_motorSetup->clearCancel();
     enqueue(Operation::CheckJoints, [this, baud, joints] {
         m_motorSetup->check(baud, joints, [this](const QVector<JointCheck> &checked) {
             emit jointsChecked(checked);
@@ -86,6 +90,11 @@ void Session::checkJoints(qint32 baud, const QVector<JointCheck> &joints)
 void Session::cancelMotorSetup()
 {
     m_motorSetup->cancel();
+}
+
+void Session::cancelIdentify()
+{
+    m_identify->cancel();
 }
 
 } // namespace feetech

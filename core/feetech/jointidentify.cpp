@@ -136,6 +136,11 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
         return;
     }
     run->torqueWasOn = torque == TorqueMode::On;
+    if (m_cancelled) {
+        end(run, false,
+            Tr::tr("Identifying %1 was stopped; nothing was written.").arg(servoName(servo)));
+        return;
+    }
     const auto read = [&before](const QString &key) -> std::optional<qint64> {
         if (!before.contains(key))
             return std::nullopt;
@@ -184,6 +189,9 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
 void JointIdentify::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> steps,
                                  std::function<void()> then)
 {
+    // Telemetry and All torque off use the bus during the pauses, at other rates: every
+    // sequence sets the servo's rate again before talking to it.
+    steps.insert(steps.begin(), m_bus.setBaud(run->servo.baud));
     m_bus.runSteps(std::move(steps), [this, run, then](bool ok, const QString &message) {
         if (!ok) {
             restore(run, false,
@@ -201,6 +209,10 @@ void JointIdentify::nextLeg(std::shared_ptr<Run> run)
         restore(run, false, {});
         return;
     }
+    if (m_cancelled) {
+        restore(run, false, Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
+        return;
+    }
     run->legClock.start();
     runOrRestore(run, {writeStep(run, kGoalPosition, run->legs.at(run->leg))},
                  [this, run] { poll(run); });
@@ -213,6 +225,10 @@ void JointIdentify::poll(std::shared_ptr<Run> run)
             restore(
                 run, true,
                 Tr::tr("All torque off: identifying %1 was stopped.").arg(servoName(run->servo)));
+            return;
+        }
+        if (m_cancelled) {
+            restore(run, false, Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
             return;
         }
         run->now.remove(kMoving);
@@ -234,7 +250,7 @@ void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, const QStr
 {
     const RegisterTable &table = run->servo.table();
     const QHash<QString, qint32> &before = run->before;
-    std::vector<Step> steps;
+    std::vector<Step> steps {m_bus.setBaud(run->servo.baud)};
     QStringList restored;
     // Torque off first where it was off, so putting the goal back moves nothing; after All
     // torque off it stays off whatever it was.

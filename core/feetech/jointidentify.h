@@ -40,6 +40,10 @@ public:
     // unknown model or not in position mode. A servo that stops answering ends it with that
     // said (the restore is still tried).
     void run(const ServoInfo &servo, GuidedFlows::Finish finish, Pause pause);
+    // Stops the running wiggle before its next move and restores the servo as after a failure.
+    void cancel() { m_cancelled = true; }
+    // Called when an identify is queued, so a stop asked for while it waits still counts.
+    void clearCancel() { m_cancelled = false; }
 
 private:
     struct Run;
@@ -55,6 +59,7 @@ private:
     Step writeStep(std::shared_ptr<Run> run, const QString &key, qint32 value);
 
     BusExchange &m_bus;
+    bool m_cancelled = false;
 };
 
 } // namespace feetech

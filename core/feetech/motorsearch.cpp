@@ -60,7 +60,6 @@ Exchange MotorSetup::identityRequest(quint8 id, bool quiet)
 
 void MotorSetup::find(const MotorTarget &target, SearchDone done)
 {
-    m_cancelled = false;
     search(target, std::move(done));
 }
 

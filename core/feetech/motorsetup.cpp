@@ -95,7 +95,6 @@ MotorSetup::MotorSetup(BusExchange &bus, GuidedFlows &flows, ApplyFlow &apply, Q
 
 void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
 {
-    m_cancelled = false;
     auto run = std::make_shared<Run>();
     run->target = target;
     run->done = std::move(done);
@@ -233,8 +232,12 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
                          finish(run, false, error);
                          return;
                      }
+                     const bool eeprom =
+                         std::any_of(writes->begin(), writes->end(),
+                                     [](const RegisterWrite &write) { return write.eeprom; });
                      m_apply.write(
-                         run->servo, *writes, [this, run, items](const OperationResult &result) {
+                         run->servo, *writes,
+                         [this, run, items, eeprom](const OperationResult &result) {
                              if (!result.ok) {
                                  finish(run, false, result.message);
                                  return;
@@ -242,8 +245,11 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
                              QStringList keys;
                              for (const model::WriteItem &item : items)
                                  keys.append(item.key);
+                             // The EEPROM is unlocked only when an EEPROM register is written.
                              run->result.steps.append(
-                                 Tr::tr("Wrote %1 with the EEPROM unlocked, then locked it again.")
+                                 (eeprom ? Tr::tr("Wrote %1 with the EEPROM unlocked, then locked "
+                                                  "it again.")
+                                         : Tr::tr("Wrote %1."))
                                      .arg(keys.join(QStringLiteral(", "))));
                              verifySettings(run);
                          });
@@ -327,7 +333,6 @@ void MotorSetup::finish(std::shared_ptr<Run> run, bool ok, const QString &messag
 
 void MotorSetup::check(qint32 baud, const QVector<JointCheck> &joints, CheckDone done)
 {
-    m_cancelled = false;
     auto checked = std::make_shared<QVector<JointCheck>>(joints);
     for (JointCheck &joint : *checked) {
         joint.found.reset();

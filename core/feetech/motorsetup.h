@@ -118,6 +118,9 @@ public:
     void check(qint32 baud, const QVector<JointCheck> &joints, CheckDone done);
     // Stops before the next step (a step under way ends first, so the EEPROM is locked).
     void cancel() { m_cancelled = true; }
+    // Called when find, setUp or check is queued (not when it starts), so a Stop pressed
+    // while it waits in the queue still stops it.
+    void clearCancel() { m_cancelled = false; }
 
 signals:
     // Step `step` of `steps` has begun: `text` says what it does.
