@@ -35,6 +35,7 @@ struct Tr
 
 // Samples per second and joint while recording: smooth enough to follow a hand.
 constexpr double kRecordingRate = 50.0;
+constexpr int kRecordingMissesBeforeLost = 10;
 // How often the live table is redrawn on a terminal.
 constexpr int kLiveRefreshMs = 100;
 
@@ -293,6 +294,10 @@ bool FeetechCommand::recordJoints(FeetechDevice &device, const QVector<ServoInfo
     feetech::TelemetryOptions options;
     options.servos = servos;
     options.rateHz = kRecordingRate;
+    // A joint turned by hand moves far less than half a turn in this many cycles (200 ms), so
+    // the unwrapping still holds across such a gap; fewer misses would refuse a healthy joint
+    // whenever a loaded machine delays a few replies.
+    options.missesBeforeMissing = kRecordingMissesBeforeLost;
     options.logEveryFrame = m_args.flag(QStringLiteral("trace"));
     const auto jointOf = [&joints](quint8 id) -> feetech::JointRecording * {
         for (feetech::JointRecording &joint : joints) {
