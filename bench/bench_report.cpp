@@ -81,7 +81,7 @@ QString withUnit(const QString &text, const QString &unit)
     return unit.isEmpty() ? text : text + u' ' + unit;
 }
 
-enum class Verdict { Met, NotMet, Missing, Elsewhere };
+enum class Verdict { Met, NotMet, Missing, Elsewhere, Reference };
 
 struct Row
 {
@@ -98,12 +98,15 @@ Row evaluate(const QJsonObject &entry, Results &results)
     row.figure = entry.value(QStringLiteral("figure")).toString();
     const QString unit = entry.value(QStringLiteral("unit")).toString();
     const QString compare = entry.value(QStringLiteral("compare")).toString();
+    // A figure without a target is printed for reference: it is neither met nor missed.
+    const bool reference = !entry.contains(QStringLiteral("target"));
     const double target = entry.value(QStringLiteral("target")).toDouble();
     const bool relative = entry.value(QStringLiteral("relative_to_wire")).toBool();
     const QString sign = compare == QLatin1String(">=") ? QStringLiteral("≥") : QStringLiteral("≤");
-    row.target = sign + u' '
-        + (relative ? QString::number(target) + QStringLiteral(" × wire")
-                    : withUnit(QString::number(target), unit));
+    row.target = reference ? QStringLiteral("none (for reference)")
+                           : sign + u' '
+            + (relative ? QString::number(target) + QStringLiteral(" × wire")
+                        : withUnit(QString::number(target), unit));
 
     const QJsonObject wire = entry.value(QStringLiteral("wire")).toObject();
     std::optional<double> wireValue;
@@ -143,6 +146,10 @@ Row evaluate(const QJsonObject &entry, Results &results)
         compared /= *wireValue;
         row.measured += QStringLiteral(" = %1 × wire").arg(number(compared));
     }
+    if (reference) {
+        row.verdict = Verdict::Reference;
+        return row;
+    }
     const bool met = compare == QLatin1String(">=") ? compared >= target : compared <= target;
     row.verdict = met ? Verdict::Met : Verdict::NotMet;
     return row;
@@ -158,6 +165,7 @@ QString verdictText(Verdict verdict)
     case Verdict::Missing:
         return QStringLiteral("**missing**");
     case Verdict::Elsewhere:
+    case Verdict::Reference:
         break;
     }
     return QStringLiteral("—");
@@ -190,7 +198,7 @@ int main(int argc, char *argv[])
     Results results(arguments.at(2));
     QString table = QStringLiteral("| figure | measured | target | wire/physical limit | met? |\n"
                                    "|---|---|---|---|---|\n");
-    int counts[4] = {}; // by Verdict
+    int counts[5] = {}; // by Verdict
     for (const QJsonValue &entry : figures) {
         const Row row = evaluate(entry.toObject(), results);
         ++counts[int(row.verdict)];
@@ -200,12 +208,13 @@ int main(int argc, char *argv[])
     const int measured =
         counts[int(Verdict::Met)] + counts[int(Verdict::NotMet)] + counts[int(Verdict::Missing)];
     table += QStringLiteral("\n%1 of %2 figures met, %3 not met, %4 missing; %5 measured "
-                            "separately, not by run-all.\n")
+                            "separately, not by run-all; %6 for reference.\n")
                  .arg(counts[int(Verdict::Met)])
                  .arg(measured)
                  .arg(counts[int(Verdict::NotMet)])
                  .arg(counts[int(Verdict::Missing)])
-                 .arg(counts[int(Verdict::Elsewhere)]);
+                 .arg(counts[int(Verdict::Elsewhere)])
+                 .arg(counts[int(Verdict::Reference)]);
     std::printf("%s", table.toUtf8().constData());
     return counts[int(Verdict::Met)] == measured ? 0 : 1;
 }
