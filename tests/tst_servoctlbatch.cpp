@@ -154,6 +154,30 @@ private slots:
                  qPrintable(text.out));
     }
 
+    void loadingOneServoRefusesAnOffsetUnderTorqueAndRestoresItWithTorqueOff()
+    {
+        const QString profile =
+            writeTestFile(QStringLiteral("own-calibration.json"),
+                          R"({"format": "servobench-profile", "version": 1, "family": "sts",
+                          "parameters": {"position_offset": 300}})");
+        setSimulatorValue(1, u"torque_enable", 1);
+        const qint32 offset = simulatorValue(1, u"position_offset");
+        const int writesBefore = writesTo(1);
+        const auto refused =
+            feetech({QStringLiteral("load"), QStringLiteral("--id"), QStringLiteral("1"), profile});
+        QCOMPARE(refused.exitCode, 1);
+        QVERIFY2(refused.err.contains(QLatin1String("torque is on")), qPrintable(refused.err));
+        QCOMPARE(writesTo(1), writesBefore);
+        QCOMPARE(simulatorValue(1, u"position_offset"), offset);
+
+        // One servo's own profile is its calibration: with torque off its offset is restored.
+        setSimulatorValue(1, u"torque_enable", 0);
+        const auto loaded =
+            feetech({QStringLiteral("load"), QStringLiteral("--id"), QStringLiteral("1"), profile});
+        QCOMPARE(loaded.exitCode, 0);
+        QCOMPARE(simulatorValue(1, u"position_offset"), 300);
+    }
+
     void servosThatAlreadyHoldTheValuesAreUnchangedAndNotWritten()
     {
         QCOMPARE(feetech({QStringLiteral("load"), QStringLiteral("--id"), QStringLiteral("1"),

@@ -142,10 +142,15 @@ int FeetechCommand::load(const QString &what, const QStringList &operands)
             m_output.err.flush();
         }
     }
-    const auto changed = changedOn(*target->device, servo, *wanted, &error);
+    std::optional<qint64> torque;
+    const auto changed = changedOn(*target->device, servo, *wanted, &error, &torque);
     if (!changed)
         return fail(error);
     const QVector<model::WriteItem> &items = *changed;
+    // A new offset, limit or goal under torque would move the horn: refused, as in a batch.
+    const QString refused = feetech::torqueRefusal(servo, items, torque);
+    if (!refused.isEmpty())
+        return fail(Tr::tr("servo %1: %2").arg(servo.id).arg(refused));
     const QJsonObject extra {{QStringLiteral("file"), path},
                              {QStringLiteral("changed"), int(items.size())}};
     if (items.isEmpty()) {
