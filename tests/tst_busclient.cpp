@@ -176,6 +176,32 @@ private slots:
         m_client->stopMonitor();
     }
 
+    void aStreamTakesASilentServoOutOnlyAfterTheMissesItWasGiven_data()
+    {
+        QTest::addColumn<int>("misses");
+        QTest::newRow("default") << feetech::kDefaultMissesBeforeMissing;
+        QTest::newRow("calibration recording") << 10;
+    }
+
+    void aStreamTakesASilentServoOutOnlyAfterTheMissesItWasGiven()
+    {
+        QFETCH(int, misses);
+        QString error;
+        setSimulatorValue(2, u"id", 22); // servo 2 goes silent before the stream starts
+        QVERIFY2(m_client->startMonitor({0, 1}, 50, &error, misses), qPrintable(error));
+        const auto silent = [this]() -> std::optional<feetech::ServoTelemetry> {
+            for (const feetech::ServoTelemetry &servo : m_client->telemetryStats().servos) {
+                if (servo.id == 2 && servo.missing)
+                    return servo;
+            }
+            return std::nullopt;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(silent().has_value(), 10000);
+        QVERIFY2(silent()->missed >= misses, qPrintable(QString::number(silent()->missed)));
+        QVERIFY2(silent()->missed < misses + 5, qPrintable(QString::number(silent()->missed)));
+        m_client->stopMonitor();
+    }
+
     void aWriteThatGoesUnansweredIsMarkedFailedAndKeepsTheEdit()
     {
         setSimulatorValue(2, u"id", 30); // servo 2 is no longer there

@@ -33,9 +33,6 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
 
-// Samples per second and joint while recording: smooth enough to follow a hand.
-constexpr double kRecordingRate = 50.0;
-constexpr int kRecordingMissesBeforeLost = 10;
 // How often the live table is redrawn on a terminal.
 constexpr int kLiveRefreshMs = 100;
 
@@ -293,11 +290,8 @@ bool FeetechCommand::recordJoints(FeetechDevice &device, const QVector<ServoInfo
     feetech::Session &session = device.session();
     feetech::TelemetryOptions options;
     options.servos = servos;
-    options.rateHz = kRecordingRate;
-    // A joint turned by hand moves far less than half a turn in this many cycles (200 ms), so
-    // the unwrapping still holds across such a gap; fewer misses would refuse a healthy joint
-    // whenever a loaded machine delays a few replies.
-    options.missesBeforeMissing = kRecordingMissesBeforeLost;
+    options.rateHz = feetech::kRecordingRateHz;
+    options.missesBeforeMissing = feetech::kRecordingMissesBeforeLost;
     options.logEveryFrame = m_args.flag(QStringLiteral("trace"));
     const auto jointOf = [&joints](quint8 id) -> feetech::JointRecording * {
         for (feetech::JointRecording &joint : joints) {

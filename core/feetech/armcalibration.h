@@ -26,6 +26,12 @@ constexpr int kLeRobotHalfTurn = (kEncoderSteps - 1) / 2; // 2047
 constexpr int kRangeSafetyMargin = 64;
 // A joint whose recorded motion spans fewer steps than this was not moved.
 constexpr int kMinimumMotionSteps = 20;
+// Samples per second and joint while a range is recorded: smooth enough to follow a hand.
+constexpr double kRecordingRateHz = 50.0;
+// A joint turned by hand moves far less than half a turn in this many cycles (200 ms at
+// kRecordingRateHz), so the unwrapping still holds across such a gap; fewer misses would refuse
+// a healthy joint whenever a loaded machine delays a few replies.
+constexpr int kRecordingMissesBeforeLost = 10;
 
 // The register keys a calibration writes.
 inline constexpr char16_t kOffsetKey[] = u"position_offset";

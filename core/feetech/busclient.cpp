@@ -403,7 +403,8 @@ bool BusClient::clearStatus(int index, QString *error)
 
 // ---- live monitoring and control
 
-bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString *error)
+bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString *error,
+                             int missesBeforeMissing)
 {
     const auto refuse = [error](const QString &why) {
         if (error)
@@ -418,6 +419,7 @@ bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString
         return refuse(Tr::tr("The rate cannot be negative."));
     TelemetryOptions options;
     options.rateHz = rateHz;
+    options.missesBeforeMissing = std::max(1, missesBeforeMissing);
     for (const int index : indexes) {
         if (index < 0 || index >= servoCount())
             return refuse(Tr::tr("No servo is selected."));

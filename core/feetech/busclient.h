@@ -94,8 +94,10 @@ public:
 
     // Streams the feedback block of the servos `indexes` at `rateHz` samples per second each
     // (0: as fast as the bus allows) until stopMonitor; replaces a stream already running.
+    // A servo is taken out after `missesBeforeMissing` missed cycles in a row (TelemetryOptions).
     // False and *error when nothing was started.
-    bool startMonitor(const QVector<int> &indexes, double rateHz, QString *error = nullptr);
+    bool startMonitor(const QVector<int> &indexes, double rateHz, QString *error = nullptr,
+                      int missesBeforeMissing = kDefaultMissesBeforeMissing);
     void stopMonitor();
     bool isMonitoring() const { return m_monitoring; }
     const TelemetryOptions &monitorOptions() const { return m_monitorOptions; }

@@ -49,13 +49,16 @@ struct ServoInfo
 // Reads addresses 0-8 as an identity (nothing when the bytes are too few).
 std::optional<ServoInfo> servoInfoFromIdentity(quint8 id, qint32 baud, QByteArrayView bytes);
 
+// Cycles a servo may miss in a row before a stream takes it out (TelemetryOptions).
+constexpr int kDefaultMissesBeforeMissing = 3;
+
 struct TelemetryOptions
 {
     QVector<ServoInfo> servos; // in the order their replies are asked for
     double rateHz = 50.0; // samples per second per servo; 0: as fast as the bus allows
     // A servo that misses this many cycles in a row is taken out of the cycle (so it cannot
     // slow the others) and asked alone, once per missingProbeInterval, until it answers.
-    int missesBeforeMissing = 3;
+    int missesBeforeMissing = kDefaultMissesBeforeMissing;
     std::chrono::milliseconds missingProbeInterval {1000};
     // servoctl --trace: every frame in the packet log, not only the failures.
     bool logEveryFrame = false;

@@ -25,9 +25,6 @@
 
 namespace {
 
-// Samples per second and joint while recording: smooth enough to follow a hand.
-constexpr double kRecordingRate = 50.0;
-
 enum JointColumn { CalibrateColumn, IdColumn, ModelColumn, NameColumn, FullTurnColumn };
 constexpr int kStatusColumn = 4;
 
@@ -79,7 +76,8 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
                 m_recordings[i].currentOffset = qint32(offset.value_or(0));
             }
             QString error;
-            if (!m_client->startMonitor(m_indexes, kRecordingRate, &error)) {
+            if (!m_client->startMonitor(m_indexes, feetech::kRecordingRateHz, &error,
+                                        feetech::kRecordingMissesBeforeLost)) {
                 // Back to the choice: torque is off, so only the recording is to start again.
                 m_stage = Stage::Choosing;
                 m_torqueOff->setEnabled(true);
@@ -356,7 +354,8 @@ void CalibrationWizard::recordAgain()
     if (page() != Page::Results || m_stage != Stage::Choosing)
         return;
     QString error;
-    if (!m_client->startMonitor(m_indexes, kRecordingRate, &error))
+    if (!m_client->startMonitor(m_indexes, feetech::kRecordingRateHz, &error,
+                                feetech::kRecordingMissesBeforeLost))
         return fail(error);
     for (feetech::JointRecording &joint : m_recordings)
         joint.range = {};
