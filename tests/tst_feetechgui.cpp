@@ -1,10 +1,10 @@
 // GUI tests of the Feetech workspace against a simulated bus: scan, tree, memory-table edits.
 #include "common/connectionbar.h"
 #include "common/parameterpage.h"
-#include "feetechbus.h"
 #include "feetechgui/feetechworkspace.h"
 #include "feetechgui/jointtable.h"
 #include "feetechgui/registertablemodel.h"
+#include "feetechwindow.h"
 #include "mainwindow.h"
 
 #include <QAbstractItemView>
@@ -35,27 +35,14 @@ void acceptNextMessageBox()
 
 } // namespace
 
-class TestFeetechGui : public testsupport::FeetechBusTest
+class TestFeetechGui : public testsupport::FeetechWindowTest
 {
     Q_OBJECT
 
 private:
-    std::unique_ptr<MainWindow> m_window;
-
-    FeetechWorkspace *workspace() const { return m_window->feetechWorkspace(); }
-    feetech::BusClient *client() const { return m_window->feetechClient(); }
-
     void connectAndScan()
     {
-        m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
-        m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY(client()->isConnected());
-        feetech::ScanOptions options;
-        options.lastId = 10;
-        QSignalSpy finished(client(), &feetech::BusClient::scanFinished);
-        workspace()->startScan(options);
-        QVERIFY(finished.wait(20000));
-        QCOMPARE(client()->servoCount(), 3);
+        connectAndScanUpTo(10);
         // The first servo is shown and read by itself.
         QTRY_VERIFY(workspace()->currentIndex() >= 0
                     && client()->servo(workspace()->currentIndex()).read);
@@ -73,20 +60,9 @@ private:
     }
 
 private slots:
-    void init()
-    {
-        QString error;
-        const auto servos = testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS15"});
-        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
-        m_window = std::make_unique<MainWindow>();
-        m_window->show();
-    }
+    void init() { openWindowOnBus(); }
 
-    void cleanup()
-    {
-        m_window.reset();
-        m_simulator.reset();
-    }
+    void cleanup() { closeWindow(); }
 
     void scanFillsTheTreeByPortAndBaud()
     {

@@ -5,12 +5,12 @@
 #include "common/connectionbar.h"
 #include "feetech/batchprogram.h"
 #include "feetech/motiontest.h"
-#include "feetechbus.h"
 #include "feetechgui/batchresultdialog.h"
 #include "feetechgui/feetechworkspace.h"
 #include "feetechgui/jointtable.h"
 #include "feetechgui/robotactions.h"
 #include "feetechgui/robottemplatedialog.h"
+#include "feetechwindow.h"
 #include "mainwindow.h"
 
 #include <QAction>
@@ -36,28 +36,16 @@ QString cell(const QTableWidget *table, int row, int column)
 
 } // namespace
 
-class TestRobotActions : public testsupport::FeetechBusTest
+class TestRobotActions : public testsupport::FeetechWindowTest
 {
     Q_OBJECT
 
 private:
-    std::unique_ptr<MainWindow> m_window;
-
-    FeetechWorkspace *workspace() const { return m_window->feetechWorkspace(); }
-    feetech::BusClient *client() const { return m_window->feetechClient(); }
     RobotActions *actions() const { return workspace()->robotActions(); }
 
     void connectAndScan()
     {
-        m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
-        m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY(client()->isConnected());
-        feetech::ScanOptions options;
-        options.lastId = 5;
-        QSignalSpy finished(client(), &feetech::BusClient::scanFinished);
-        workspace()->startScan(options);
-        QVERIFY(finished.wait(20000));
-        QCOMPARE(client()->servoCount(), 3);
+        connectAndScanUpTo(5);
         QTRY_VERIFY(!client()->isBusy());
     }
 
@@ -88,19 +76,11 @@ private slots:
         QDir(feetech::userRobotTemplateFolder()).removeRecursively();
     }
 
-    void init()
-    {
-        QString error;
-        const auto servos = testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS15"});
-        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
-        m_window = std::make_unique<MainWindow>();
-        m_window->show();
-    }
+    void init() { openWindowOnBus(); }
 
     void cleanup()
     {
-        m_window.reset();
-        m_simulator.reset();
+        closeWindow();
         QDir(feetech::userRobotTemplateFolder()).removeRecursively();
     }
 
