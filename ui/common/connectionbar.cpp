@@ -96,7 +96,10 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_refresh->setInterval(kPortRefreshMs);
     connect(m_refresh, &QTimer::timeout, this, &ConnectionBar::refreshPorts);
     m_refresh->start();
-    refreshPorts();
+    // Asking the system for its ports can take a while: the window shows first, with the
+    // simulated buses, and the real ports join the list once the event loop runs.
+    showPorts({}, {});
+    QTimer::singleShot(0, this, &ConnectionBar::refreshPorts);
 }
 
 QString ConnectionBar::port() const
@@ -155,6 +158,11 @@ void ConnectionBar::refreshPorts()
     }
     if (ports == m_knownPorts && m_port->count() > 0)
         return;
+    showPorts(ports, descriptions);
+}
+
+void ConnectionBar::showPorts(const QStringList &ports, const QStringList &descriptions)
+{
     m_knownPorts = ports;
     // Rebuilding the list must not lose what the user chose or is typing.
     const QString chosen = port();

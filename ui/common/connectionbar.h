@@ -42,6 +42,9 @@ signals:
     void protocolChanged(ConnectionBar::Protocol protocol);
 
 private:
+    // The port list: `ports` (with their `descriptions`), then the simulated buses.
+    void showPorts(const QStringList &ports, const QStringList &descriptions);
+
     QComboBox *m_port = nullptr;
     QComboBox *m_baud = nullptr;
     QComboBox *m_protocol = nullptr;
