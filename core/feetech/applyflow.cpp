@@ -2,6 +2,7 @@
 #include "feetech/applyflow.h"
 
 #include "feetech/servoparameters.h"
+#include "feetech/torqueonhold.h"
 #include "model/parametermodel.h"
 
 #include <QCoreApplication>
@@ -107,7 +108,8 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
     auto target = std::make_shared<ServoInfo>(servo);
     const bool eeprom =
         std::any_of(writes.begin(), writes.end(), [](const RegisterWrite &w) { return w.eeprom; });
-    const int total = int(writes.size()) * 2 + (eeprom ? 2 : 0);
+    const bool hold = needsHoldBeforeTorqueOn(servo, writes);
+    const int total = int(writes.size()) * 2 + (eeprom ? 2 : 0) + (hold ? 1 : 0);
     auto done = std::make_shared<int>(0);
     const auto counted = [this, done, total](Step step) -> Step {
         return [this, done, total, step = std::move(step)](StepDone next) {
@@ -118,6 +120,8 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
         };
     };
     std::vector<Step> steps {m_bus.setBaud(servo.baud)};
+    if (hold)
+        steps.push_back(counted(holdBeforeTorqueOn(m_bus, target)));
     if (eeprom)
         steps.push_back(counted(m_bus.lock(target, false)));
     for (const RegisterWrite &item : writes)

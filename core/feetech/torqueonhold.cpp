@@ -1,0 +1,113 @@
+// Torque on never jumps: the goal set to the present position before torque is switched on.
+#include "feetech/torqueonhold.h"
+
+#include "feetech/registertable.h"
+#include "feetech/servoparameters.h"
+
+#include <QCoreApplication>
+
+namespace feetech {
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
+};
+
+const QString kTorqueKey = QStringLiteral("torque_enable");
+const QString kGoalKey = QStringLiteral("goal_position");
+const QString kPresentKey = QStringLiteral("present_position");
+
+bool overlaps(const RegisterWrite &write, const Register &reg)
+{
+    return write.address < reg.end() && reg.address < write.address + int(write.bytes.size());
+}
+
+// The value `reg` holds in `bytes` read from its own address.
+std::optional<qint32> valueOf(const RegisterTable &table, const Register &reg,
+                              const QByteArray &bytes)
+{
+    for (const DecodedRegister &item : decodeRegisters(table, reg.address, bytes)) {
+        if (item.reg->key == reg.key)
+            return item.value;
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+bool needsHoldBeforeTorqueOn(const ServoInfo &servo, const QVector<RegisterWrite> &writes)
+{
+    if (!servo.hasTable())
+        return false;
+    const RegisterTable &table = servo.table();
+    const Register *torque = table.find(kTorqueKey);
+    const Register *goal = table.find(kGoalKey);
+    const auto on = table.torqueValue(TorqueMode::On);
+    if (!torque || !goal || !table.find(kPresentKey) || !on)
+        return false;
+    bool switchesOn = false;
+    for (const RegisterWrite &write : writes) {
+        if (overlaps(write, *goal))
+            return false; // the goal is set on purpose: that motion was asked for
+        const int offset = torque->address - write.address;
+        if (offset >= 0 && offset < write.bytes.size())
+            switchesOn = switchesOn || qint32(quint8(write.bytes.at(offset))) == *on;
+    }
+    return switchesOn;
+}
+
+Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
+{
+    return [&bus, servo](StepDone next) {
+        const RegisterTable &table = servo->table();
+        const Register &torque = *table.find(kTorqueKey);
+        const Register &present = *table.find(kPresentKey);
+        const Register &goal = *table.find(kGoalKey);
+        auto torqueNow = std::make_shared<std::optional<qint32>>();
+        bus.read(servo, torque.address, torque.size, ReadSource::ReadBack,
+                 [&table, &torque, torqueNow](const QByteArray &bytes) {
+                     *torqueNow = valueOf(table, torque, bytes);
+                 })([&bus, servo, &table, &present, &goal, torqueNow,
+                     next](bool ok, const QString &message) {
+            if (!ok) {
+                next(false, message);
+                return;
+            }
+            if (*torqueNow && table.torqueMode(**torqueNow) == TorqueMode::On) {
+                next(true, {}); // already holding: its goal is its own business
+                return;
+            }
+            auto where = std::make_shared<std::optional<qint32>>();
+            bus.read(servo, present.address, present.size, ReadSource::ReadBack,
+                     [&table, &present, where](const QByteArray &bytes) {
+                         *where = valueOf(table, present, bytes);
+                     })([&bus, servo, &table, &goal, where, next](bool ok, const QString &message) {
+                if (!ok || !*where) {
+                    next(false,
+                         ok ? Tr::tr("The present position could not be read: torque stays off.")
+                            : message);
+                    return;
+                }
+                QString error;
+                const auto writes = encodeWrites(table, {{goal.key, **where}}, &error);
+                if (!writes || writes->size() != 1) {
+                    next(false,
+                         Tr::tr("The goal cannot be set to the present position (%1): "
+                                "torque stays off.")
+                             .arg(error));
+                    return;
+                }
+                const RegisterWrite hold = writes->first();
+                bus.runSteps(
+                    {bus.write(servo->id, hold.address, hold.bytes, servo->repliesToWrites(),
+                               Tr::tr("Setting the goal to the present position")),
+                     bus.read(servo, goal.address, goal.size, ReadSource::ReadBack)},
+                    next);
+            });
+        });
+    };
+}
+
+} // namespace feetech

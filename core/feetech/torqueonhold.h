@@ -1,0 +1,22 @@
+// Torque on never jumps: before a write switches a servo's torque on, its goal is set to where
+// the horn stands, so the servo holds its place instead of driving to an old goal.
+#pragma once
+
+#include "feetech/busexchange.h"
+#include "feetech/bustypes.h"
+
+#include <QVector>
+
+#include <memory>
+
+namespace feetech {
+
+// Whether `writes` switch torque on (torque enable to the table's "on" value) without also
+// setting the goal position: the writes the hold must go before.
+bool needsHoldBeforeTorqueOn(const ServoInfo &servo, const QVector<RegisterWrite> &writes);
+
+// Reads torque enable; when it is not on already, reads the present position, writes it as the
+// goal and reads the goal back. Fails (so nothing after it runs) when any of that fails.
+Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo);
+
+} // namespace feetech
