@@ -34,7 +34,7 @@ TelemetryPlot::TelemetryPlot(QWidget *parent)
                   "wheel; Reset zoom goes back to live data"));
     m_frameTimer = new QTimer(this);
     m_frameTimer->setSingleShot(true);
-    m_frameTimer->setInterval(1000 / kDefaultFramesPerSecond);
+    m_frameTimer->setInterval(1000 / kMaxFramesPerSecond);
     connect(m_frameTimer, &QTimer::timeout, this, &TelemetryPlot::refresh);
     m_viewTo = m_windowSeconds;
 }
@@ -253,11 +253,12 @@ std::pair<double, double> TelemetryPlot::valueRange(feetech::Quantity quantity) 
 void TelemetryPlot::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
-    // One frame per screen refresh at most.
+    // One frame per screen refresh at most, and kMaxFramesPerSecond.
     const QScreen *screen = this->screen();
-    const double hz = screen && screen->refreshRate() >= 1.0 ? screen->refreshRate()
-                                                             : double(kDefaultFramesPerSecond);
-    m_frameTimer->setInterval(std::max(1, int(std::lround(1000.0 / hz))));
+    double hz = kMaxFramesPerSecond;
+    if (screen && screen->refreshRate() >= 1.0)
+        hz = std::min(hz, screen->refreshRate());
+    m_frameTimer->setInterval(int(std::lround(1000.0 / hz)));
     m_viewDirty = true;
     m_layoutDirty = true;
     refresh(); // what came while hidden

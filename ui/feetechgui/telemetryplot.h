@@ -35,8 +35,9 @@ public:
     static constexpr int kHardPointCap = 20000;
     // The fastest one servo is sampled on a 1 Mbps bus, for sizing a window's buffer.
     static constexpr double kMaxRateHz = 1000.0;
-    // Frames per second when the screen does not say its refresh rate.
-    static constexpr int kDefaultFramesPerSecond = 60;
+    // Frames per second at most: one per screen refresh, and no more than this, which keeps a
+    // scrolling trace smooth (data comes in batches every 20 ms) at half the cost of 60.
+    static constexpr int kMaxFramesPerSecond = 30;
     // The least height of one quantity's pane, in pixels.
     static constexpr int kMinimumPaneHeight = 110;
 
