@@ -1,5 +1,6 @@
 // Measures the GUI process while its Monitor page plots six servos (50 Hz unless --rate): CPU of
-// the whole process and of the GUI thread, and resident memory early and late in the run.
+// the whole process and of the GUI thread, the plot's frames (how many, how long each took), and
+// resident memory early and late in the run.
 // The simulated servos run in a separate servosim process, so their work is not counted.
 #include "benchsupport.h"
 #include "feetech/busclient.h"
@@ -19,7 +20,9 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 
 namespace {
 
@@ -61,6 +64,23 @@ Window measure(int seconds)
     window.guiThreadCpuMs = bench::threadCpuMs() - gui;
     return window;
 }
+
+// The plot's frames during the measured window: how many a second and how long they took.
+struct Frames
+{
+    std::vector<qint64> nanoseconds;
+    bool recording = false;
+
+    double percentileMs(double fraction) const
+    {
+        if (nanoseconds.empty())
+            return 0.0;
+        std::vector<qint64> sorted = nanoseconds;
+        std::sort(sorted.begin(), sorted.end());
+        const auto at = std::size_t(fraction * double(sorted.size() - 1) + 0.5);
+        return double(sorted.at(std::min(at, sorted.size() - 1))) / 1e6;
+    }
+};
 
 } // namespace
 
@@ -138,9 +158,16 @@ int main(int argc, char **argv)
     QString error;
     if (!page.start(&error))
         return fail(error);
+    Frames frames;
+    QObject::connect(page.plot(), &TelemetryPlot::framePainted, [&frames](qint64 nanoseconds) {
+        if (frames.recording)
+            frames.nanoseconds.push_back(nanoseconds);
+    });
     measure(kWarmUpSeconds);
     const double memoryEarly = residentMegabytes();
+    frames.recording = true;
     const Window window = measure(kMeasureSeconds);
+    frames.recording = false;
     measure(kSecondHalfSeconds);
     const double memoryLate = residentMegabytes();
     const feetech::TelemetryStats stats = client.telemetryStats();
@@ -166,6 +193,11 @@ int main(int argc, char **argv)
         {QStringLiteral("resident_mb_after_3_s"), memoryEarly},
         {QStringLiteral("resident_mb_after_33_s"), memoryLate},
         {QStringLiteral("buffered_points"), page.plot()->bufferedPoints()},
+        // A frame: bringing the plot's view up to date and painting it.
+        {QStringLiteral("plot_frames_per_s"), double(frames.nanoseconds.size()) / window.seconds},
+        {QStringLiteral("plot_frame_ms_median"), frames.percentileMs(0.5)},
+        {QStringLiteral("plot_frame_ms_p99"), frames.percentileMs(0.99)},
+        {QStringLiteral("plot_frame_ms_max"), frames.percentileMs(1.0)},
     };
     std::printf("%s", QJsonDocument(report).toJson(QJsonDocument::Indented).constData());
     return 0;

@@ -5,17 +5,13 @@
 #include "feetechgui/telemetryplot.h"
 #include "telemetrycsv.h"
 
-#include <QChart>
-#include <QChartView>
 #include <QImage>
 #include <QLabel>
-#include <QLineSeries>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include <QValueAxis>
 #include <QtTest>
 
 #include <memory>
@@ -180,9 +176,7 @@ private slots:
         m_page->setQuantities({Quantity::Position});
         m_page->setWindowSeconds(120);
         TelemetryPlot *plot = m_page->plot();
-        QChartView *view = plot->chartView(Quantity::Position);
-        QVERIFY(view);
-        QTRY_VERIFY(view->chart()->plotArea().width() > 100); // laid out
+        QTRY_VERIFY(plot->plotArea(Quantity::Position).width() > 100); // laid out
         qint64 now = 5000000;
         now = feed(*m_page, now, 60, 2);
         // One short spike far above the rest (which stay within 1048..3048).
@@ -191,22 +185,20 @@ private slots:
         now = feed(*m_page, now + kPeriodUs, 60, 2);
         plot->refresh();
         QCOMPARE(plot->bufferedPointCount(1, Quantity::Position), 120 * kRateHz + 1);
-        const int pixels = int(view->chart()->plotArea().width());
+        const int pixels = plot->plotArea(Quantity::Position).width();
         QVERIFY(pixels > 100);
         const int shown = plot->shownPointCount(1, Quantity::Position);
         QVERIFY2(shown <= 2 * pixels + 2,
                  qPrintable(QStringLiteral("%1 > 2 × %2").arg(shown).arg(pixels)));
         QVERIFY(shown < 120 * kRateHz);
-        auto *series = qobject_cast<QLineSeries *>(view->chart()->series().first());
-        QVERIFY(series);
-        QCOMPARE(series->count(), shown);
-        const QList<QPointF> points = series->points();
+        const QList<QPointF> points = plot->shownPoints(1, Quantity::Position);
+        QCOMPARE(points.size(), shown);
         QVERIFY(std::any_of(points.begin(), points.end(),
                             [](const QPointF &point) { return point.y() == 4000.0; }));
         // The value axis follows the data in view, the spike included.
-        auto *axis = qobject_cast<QValueAxis *>(view->chart()->axes(Qt::Vertical).first());
-        QVERIFY(axis->max() >= 4000.0);
-        QVERIFY(axis->min() <= 1048.0 && axis->min() > 0.0); // yet not much lower
+        const auto [low, high] = plot->valueRange(Quantity::Position);
+        QVERIFY(high >= 4000.0);
+        QVERIFY(low <= 1048.0 && low > 0.0); // yet not much lower
     }
 
     void zoomFreezesTheViewAndResetReturnsToLive()
@@ -251,38 +243,33 @@ private slots:
     void dragAndWheelZoomTheTimeAxisOfEveryChart()
     {
         TelemetryPlot *plot = m_page->plot();
-        QChartView *position = plot->chartView(Quantity::Position);
-        QChartView *speed = plot->chartView(Quantity::Speed);
-        QTRY_VERIFY(position->chart()->plotArea().width() > 100); // laid out
+        QTRY_VERIFY(plot->plotArea(Quantity::Position).width() > 100); // laid out
         feed(*m_page, 0, 20, 2);
         plot->refresh();
         const double from = plot->viewFrom();
         const double span = plot->viewTo() - plot->viewFrom();
-        // Dragged across the middle half of the position chart.
-        const QRectF area = position->chart()->plotArea();
-        const QPoint start = position->mapFromScene(
-            position->chart()->mapToScene(area.left() + area.width() / 4, area.center().y()));
-        const QPoint end = position->mapFromScene(
-            position->chart()->mapToScene(area.left() + area.width() * 3 / 4, area.center().y()));
-        QTest::mousePress(position->viewport(), Qt::LeftButton, {}, start);
-        QTest::mouseMove(position->viewport(), end);
-        QTest::mouseRelease(position->viewport(), Qt::LeftButton, {}, end);
+        // Dragged across the middle half of the position pane.
+        const QRect area = plot->plotArea(Quantity::Position);
+        const QPoint start(area.left() + area.width() / 4, area.center().y());
+        const QPoint end(area.left() + area.width() * 3 / 4, area.center().y());
+        QTest::mousePress(plot, Qt::LeftButton, {}, start);
+        QTest::mouseMove(plot, end);
+        QTest::mouseRelease(plot, Qt::LeftButton, {}, end);
         QVERIFY(plot->isZoomed());
         QVERIFY(plot->isPaused());
         QVERIFY(qAbs(plot->viewFrom() - (from + span / 4)) < span / 50);
         QVERIFY(qAbs(plot->viewTo() - (from + span * 3 / 4)) < span / 50);
-        // The other chart follows the shared time axis.
-        auto *speedAxis = qobject_cast<QValueAxis *>(speed->chart()->axes(Qt::Horizontal).first());
-        QTRY_COMPARE(speedAxis->min(), plot->viewFrom());
-        QCOMPARE(speedAxis->max(), plot->viewTo());
+        // The other pane shares the time axis: its plot area spans the same pixels.
+        const QRect speedArea = plot->plotArea(Quantity::Speed);
+        QCOMPARE(speedArea.left(), area.left());
+        QCOMPARE(speedArea.width(), area.width());
 
         // One wheel notch up zooms in around the pointer.
         const double zoomedSpan = plot->viewTo() - plot->viewFrom();
-        const QPointF centre = QPointF(position->mapFromScene(
-            position->chart()->mapToScene(area.center().x(), area.center().y())));
-        QWheelEvent wheel(centre, position->viewport()->mapToGlobal(centre), {}, {0, 120},
-                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
-        QApplication::sendEvent(position->viewport(), &wheel);
+        const QPointF centre = QPointF(area.center());
+        QWheelEvent wheel(centre, plot->mapToGlobal(centre), {}, {0, 120}, Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(plot, &wheel);
         QVERIFY(qAbs((plot->viewTo() - plot->viewFrom()) - zoomedSpan * 0.8) < 1e-6);
 
         plot->resetZoom();

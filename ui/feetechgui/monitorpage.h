@@ -33,7 +33,7 @@ public:
     // The plot's history when the page opens.
     static constexpr int kDefaultWindowSeconds = 10;
     // Readouts refresh at most this often, however fast samples come.
-    static constexpr int kReadoutIntervalMs = 100;
+    static constexpr int kReadoutIntervalMs = 250;
     // A recording reaches the disk at least this often.
     static constexpr int kFlushIntervalMs = feetech::TelemetryRecorder::kDefaultFlushIntervalMs;
 

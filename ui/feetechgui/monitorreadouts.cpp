@@ -3,8 +3,12 @@
 
 #include "feetech/busclient.h"
 
+#include <QFontMetrics>
 #include <QHeaderView>
 #include <QLocale>
+#include <QStyle>
+
+#include <algorithm>
 
 namespace {
 
@@ -47,8 +51,12 @@ MonitorReadouts::MonitorReadouts(feetech::BusClient *client, QWidget *parent)
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setAlternatingRowColors(true);
     setWordWrap(false);
-    horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Not ResizeToContents: that measures every cell of every column again for each cell whose
+    // text changes, which made these readouts cost more than the plot. fitColumns measures
+    // only the texts, once per refresh.
+    horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     horizontalHeader()->setSectionResizeMode(StatusColumn, QHeaderView::Stretch);
+    resizeColumnsToContents();
 }
 
 void MonitorReadouts::addSample(const feetech::FeedbackSample &sample)
@@ -141,6 +149,28 @@ void MonitorReadouts::refresh(const QVector<Row> &rows, const feetech::Telemetry
         servo->setForeground(colour.isValid() ? QBrush(colour) : QBrush());
         servo->setBackground(missing ? QBrush(QColor(0xfd, 0xe2, 0xe2)) : QBrush());
         servo->setToolTip(tr("ID %1 at %2").arg(key.id).arg(feetech::baudText(key.baud)));
+    }
+    fitColumns();
+}
+
+void MonitorReadouts::fitColumns()
+{
+    // The item delegate's padding either side of a cell's text.
+    const int padding =
+        2 * (style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, this) + 1) + 4;
+    for (int column = 0; column < ColumnCount; ++column) {
+        if (column == StatusColumn)
+            continue; // stretches over what is left
+        int needed = horizontalHeader()->sectionSizeHint(column);
+        for (int row = 0; row < rowCount(); ++row) {
+            const QTableWidgetItem *cell = item(row, column);
+            if (!cell)
+                continue;
+            const QFontMetrics metrics(cell->font());
+            needed = std::max(needed, metrics.horizontalAdvance(cell->text()) + padding);
+        }
+        if (needed > columnWidth(column))
+            setColumnWidth(column, needed);
     }
 }
 

@@ -82,6 +82,9 @@ private:
 
     QString statusText(const MonitorServoKey &key, quint8 bits) const;
 
+    // Widens the columns whose text no longer fits; never narrows them, so they do not jitter.
+    void fitColumns();
+
     QPointer<feetech::BusClient> m_client;
     QHash<MonitorServoKey, Latest> m_latest;
 };

@@ -2,6 +2,7 @@
 #include "feetechgui/telemetrybuffer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 QVector<TelemetryBuffer::Servo> TelemetryBuffer::servos() const
@@ -160,7 +161,10 @@ QList<QPointF> TelemetryBuffer::pointsInView(const Points &points, double from, 
             widen(*it);
         }
     } else {
+        // Columns sit on a grid fixed in time rather than to the view's edge, so that as the view
+        // scrolls a column keeps the same points and the trace does not shimmer.
         const double width = (to - from) / buckets;
+        const double firstColumn = std::floor(from / width);
         int bucket = -1;
         QPointF lowest;
         QPointF highest;
@@ -180,7 +184,8 @@ QList<QPointF> TelemetryBuffer::pointsInView(const Points &points, double from, 
             widen(highest);
         };
         for (auto it = first; it != last; ++it) {
-            const int index = std::clamp(int((it->x() - from) / width), 0, buckets - 1);
+            const int index = int(
+                std::clamp(std::floor(it->x() / width) - firstColumn, 0.0, double(buckets - 1)));
             if (index != bucket) {
                 flush();
                 bucket = index;

@@ -62,8 +62,9 @@ public:
     void trimAll(const Retention &retention);
 
     // The points of `points` between `from` and `to`, with one neighbour either side so the
-    // line reaches the chart's edges; beyond `buckets` × kPointsPerPixel points, the lowest and
-    // highest of each bucket (in time order), so short peaks survive. `low`/`high` widen to
+    // line reaches the plot's edges; beyond `buckets` × kPointsPerPixel points, the lowest and
+    // highest of each bucket (in time order), so short peaks survive. Buckets are
+    // (to - from) / buckets wide and lie on a grid from time 0. `low`/`high` widen to
     // the values in view.
     static QList<QPointF> pointsInView(const Points &points, double from, double to, int buckets,
                                        double *low, double *high);

@@ -1,83 +1,25 @@
-// The live telemetry plot: bounded buffers per series, min/max decimation to the pixels in view,
-// and a repaint timer, so that six servos at 100 Hz cost a few replace() calls a frame.
+// The live telemetry plot's state and interaction: bounded buffers per series, the view that
+// follows live data or stays where the user put it, and repaints coalesced to one per frame.
 #include "feetechgui/telemetryplot.h"
 
-#include <QChart>
-#include <QChartView>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QImageWriter>
-#include <QLegend>
-#include <QLineSeries>
-#include <QPen>
+#include <QMouseEvent>
+#include <QScreen>
 #include <QTimer>
-#include <QVBoxLayout>
-#include <QValueAxis>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 
 namespace {
 
 // The narrowest time span a zoom may reach.
 constexpr double kMinimumSpanSeconds = 0.01;
-// Of the data's span, above and below it, so a trace never touches the chart's frame.
-constexpr double kValueMargin = 0.05;
-constexpr int kMinimumChartHeight = 110;
-
-// Distinct on white and for the common colour-vision deficiencies, in the order servos come.
-const QColor kServoColours[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
-                                QColor(0x2c, 0xa0, 0x2c), QColor(0xff, 0x7f, 0x0e),
-                                QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
-                                QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf),
-                                QColor(0x7f, 0x7f, 0x7f), QColor(0xbc, 0xbd, 0x22)};
-constexpr int kColourCount = int(sizeof(kServoColours) / sizeof(kServoColours[0]));
-
-// The smallest of 1, 2 and 5 times a power of ten that is at least `raw`.
-double niceStep(double raw)
-{
-    if (!(raw > 0.0) || !std::isfinite(raw))
-        return 1.0;
-    const double power = std::pow(10.0, std::floor(std::log10(raw)));
-    for (const double factor : {1.0, 2.0, 5.0, 10.0}) {
-        if (factor * power >= raw * (1.0 - 1e-9))
-            return factor * power;
-    }
-    return 10.0 * power;
-}
-
-// Takes the mouse wheel for zooming the time axis; the rest is QChartView's (rubber band).
-class PlotChartView : public QChartView
-{
-public:
-    // `fraction`: where the pointer is across the plot area (0 left, 1 right).
-    using WheelZoom = std::function<void(double fraction, double factor)>;
-
-    PlotChartView(QChart *chart, QWidget *parent, WheelZoom zoom)
-        : QChartView(chart, parent)
-        , m_zoom(std::move(zoom))
-    { }
-
-protected:
-    void wheelEvent(QWheelEvent *event) override
-    {
-        const QPointF position = chart()->mapFromScene(mapToScene(event->position().toPoint()));
-        const QRectF area = chart()->plotArea();
-        const int delta = event->angleDelta().y();
-        if (!area.contains(position) || area.width() <= 0.0 || delta == 0) {
-            QChartView::wheelEvent(event);
-            return;
-        }
-        // One notch (120) zooms in to 80 %; turning back zooms out by as much.
-        m_zoom((position.x() - area.left()) / area.width(), std::pow(0.8, delta / 120.0));
-        event->accept();
-    }
-
-private:
-    WheelZoom m_zoom;
-};
+// A drag shorter than this many pixels is a click, not a zoom.
+constexpr int kMinimumDragPixels = 4;
 
 } // namespace
 
@@ -85,12 +27,15 @@ TelemetryPlot::TelemetryPlot(QWidget *parent)
     : QWidget(parent)
 {
     setObjectName(QStringLiteral("telemetryPlot"));
-    m_layout = new QVBoxLayout(this);
-    m_layout->setContentsMargins(0, 0, 0, 0);
-    m_layout->setSpacing(0);
-    m_repaintTimer = new QTimer(this);
-    m_repaintTimer->setInterval(1000 / kFramesPerSecond);
-    connect(m_repaintTimer, &QTimer::timeout, this, &TelemetryPlot::refresh);
+    // Every paint covers what it was asked to paint: no background first.
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setMouseTracking(false);
+    setToolTip(tr("Drag across a time span to zoom in, right-click to zoom out, or turn the "
+                  "wheel; Reset zoom goes back to live data"));
+    m_frameTimer = new QTimer(this);
+    m_frameTimer->setSingleShot(true);
+    m_frameTimer->setInterval(1000 / kMaxFramesPerSecond);
+    connect(m_frameTimer, &QTimer::timeout, this, &TelemetryPlot::refresh);
     m_viewTo = m_windowSeconds;
 }
 
@@ -107,7 +52,7 @@ void TelemetryPlot::setQuantities(const QVector<feetech::Quantity> &quantities)
 void TelemetryPlot::setServos(const QVector<Servo> &servos)
 {
     m_buffer.setServos(servos);
-    rebuildSeries();
+    onServosChanged();
 }
 QVector<TelemetryPlot::Servo> TelemetryPlot::servos() const
 {
@@ -133,6 +78,7 @@ void TelemetryPlot::setPaused(bool paused)
     if (m_paused)
         return;
     m_paused = true;
+    m_frameTimer->stop(); // a frame already due would move the view on
     emit pausedChanged(true);
 }
 
@@ -154,6 +100,7 @@ void TelemetryPlot::setTimeRange(double from, double to)
     m_viewTo = to;
     if (!m_paused) {
         m_paused = true;
+        m_frameTimer->stop();
         emit pausedChanged(true);
     }
     setZoomed(true);
@@ -177,27 +124,43 @@ void TelemetryPlot::addSamples(const QVector<feetech::FeedbackSample> &samples)
     if (samples.isEmpty())
         return;
     if (m_buffer.add(samples, retention()))
-        rebuildSeries();
+        onServosChanged();
     m_dirty = true;
+    if (!m_paused)
+        scheduleFrame();
 }
+
 void TelemetryPlot::refresh()
 {
     if (!m_paused) {
         m_viewTo = std::max(m_buffer.newest(), m_windowSeconds);
         m_viewFrom = m_viewTo - m_windowSeconds;
     }
-    // A chart laid out anew (added, resized) has another number of pixels to decimate to.
-    for (const auto &pane : m_panes)
-        m_viewDirty = m_viewDirty || bucketsFor(*pane) != pane->buckets;
+    if (m_layoutDirty)
+        layoutPanes(); // another width decimates to another number of columns
     if (m_paused && !m_viewDirty)
         return; // frozen: new samples are buffered but not drawn
     if (!m_paused && !m_dirty && !m_viewDirty)
         return;
-    for (auto &pane : m_panes)
-        repaintPane(*pane, m_viewFrom, m_viewTo);
+    QElapsedTimer clock;
+    clock.start();
+    prepareFrame();
     m_dirty = false;
     m_viewDirty = false;
-    alignPlotAreas();
+    m_prepareNs += clock.nsecsElapsed();
+    requestPaint();
+}
+
+bool TelemetryPlot::isFramePending() const
+{
+    return m_frameTimer->isActive();
+}
+
+void TelemetryPlot::scheduleFrame()
+{
+    // However many batches come in one frame, they are drawn together at its end.
+    if (isVisible() && !m_frameTimer->isActive())
+        m_frameTimer->start();
 }
 
 bool TelemetryPlot::exportPng(const QString &path, QString *error)
@@ -211,8 +174,6 @@ bool TelemetryPlot::exportPng(const QString &path, QString *error)
         return fail(tr("There is nothing to export: choose at least one quantity to plot."));
     if (path.isEmpty())
         return fail(tr("No file name was given for the image."));
-    if (QLayout *layout = this->layout())
-        layout->activate();
     m_viewDirty = true;
     refresh();
     const QImage image = grab().toImage();
@@ -228,10 +189,7 @@ bool TelemetryPlot::exportPng(const QString &path, QString *error)
 
 int TelemetryPlot::seriesCount() const
 {
-    int count = 0;
-    for (const auto &pane : m_panes)
-        count += int(pane->series.size());
-    return count;
+    return int(m_panes.size()) * m_buffer.traceCount();
 }
 
 int TelemetryPlot::bufferedPointCount(quint8 id, feetech::Quantity quantity, qint32 baud) const
@@ -247,11 +205,21 @@ int TelemetryPlot::shownPointCount(quint8 id, feetech::Quantity quantity, qint32
     const int index = m_buffer.findTrace(id, baud);
     if (index < 0)
         return -1;
-    for (const auto &pane : m_panes) {
-        if (pane->quantity == quantity && index < pane->shown.size())
-            return pane->shown.at(index);
+    for (const Pane &pane : m_panes) {
+        if (pane.quantity == quantity && index < pane.shown.size())
+            return int(pane.shown.at(index).size());
     }
     return -1;
+}
+
+QList<QPointF> TelemetryPlot::shownPoints(quint8 id, feetech::Quantity quantity, qint32 baud) const
+{
+    const int index = m_buffer.findTrace(id, baud);
+    for (const Pane &pane : m_panes) {
+        if (pane.quantity == quantity && index >= 0 && index < pane.shown.size())
+            return pane.shown.at(index);
+    }
+    return {};
 }
 
 qint64 TelemetryPlot::bufferedPoints() const
@@ -264,116 +232,161 @@ int TelemetryPlot::maxPointsPerSeries() const
     return int(std::min<double>(kHardPointCap, std::max(1.0, forWindow)));
 }
 
-QChartView *TelemetryPlot::chartView(feetech::Quantity quantity) const
+QRect TelemetryPlot::plotArea(feetech::Quantity quantity) const
 {
-    for (const auto &pane : m_panes) {
-        if (pane->quantity == quantity)
-            return pane->view;
+    for (const Pane &pane : m_panes) {
+        if (pane.quantity == quantity)
+            return pane.area;
     }
-    return nullptr;
+    return {};
 }
 
-QColor TelemetryPlot::servoColor(quint8 id, qint32 baud) const
+std::pair<double, double> TelemetryPlot::valueRange(feetech::Quantity quantity) const
 {
-    const int index = m_buffer.findTrace(id, baud);
-    return index < 0 ? QColor() : kServoColours[index % kColourCount];
+    for (const Pane &pane : m_panes) {
+        if (pane.quantity == quantity)
+            return {pane.values.from, pane.values.to};
+    }
+    return {0.0, 0.0};
 }
 
 void TelemetryPlot::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    // One frame per screen refresh at most, and kMaxFramesPerSecond.
+    const QScreen *screen = this->screen();
+    double hz = kMaxFramesPerSecond;
+    if (screen && screen->refreshRate() >= 1.0)
+        hz = std::min(hz, screen->refreshRate());
+    m_frameTimer->setInterval(int(std::lround(1000.0 / hz)));
     m_viewDirty = true;
-    m_repaintTimer->start();
+    m_layoutDirty = true;
+    refresh(); // what came while hidden
 }
 
 void TelemetryPlot::hideEvent(QHideEvent *event)
 {
     QWidget::hideEvent(event);
-    m_repaintTimer->stop(); // nothing to draw for; samples are still buffered
+    m_frameTimer->stop(); // nothing to draw for; samples are still buffered
 }
 
 void TelemetryPlot::resizeEvent(QResizeEvent *event)
 {
     QWidget::resizeEvent(event);
-    m_viewDirty = true; // the number of pixels, and so the decimation, changed
-}
-
-void TelemetryPlot::rebuildPanes()
-{
-    for (auto &pane : m_panes)
-        delete pane->view; // owns its chart, which owns the axes and series
-    m_panes.clear();
-    for (const feetech::Quantity quantity : std::as_const(m_quantities)) {
-        auto pane = std::make_unique<Pane>();
-        pane->quantity = quantity;
-        pane->chart = new QChart;
-        pane->chart->setTitle(
-            tr("%1 (%2)").arg(feetech::quantityName(quantity), feetech::quantityUnit(quantity)));
-        QFont titleFont = pane->chart->titleFont();
-        titleFont.setBold(true);
-        pane->chart->setTitleFont(titleFont);
-        pane->chart->setBackgroundRoundness(0);
-        pane->chart->setMargins(QMargins(4, 2, 4, 2));
-        pane->chart->legend()->setVisible(true);
-        pane->chart->legend()->setAlignment(Qt::AlignRight);
-        pane->chart->setAnimationOptions(QChart::NoAnimation);
-
-        pane->timeAxis = new QValueAxis(pane->chart);
-        pane->timeAxis->setLabelFormat(QStringLiteral("%g"));
-        pane->timeAxis->setTickType(QValueAxis::TicksDynamic);
-        pane->timeAxis->setTickAnchor(0.0);
-        pane->chart->addAxis(pane->timeAxis, Qt::AlignBottom);
-        pane->valueAxis = new QValueAxis(pane->chart);
-        pane->valueAxis->setLabelFormat(QStringLiteral("%g"));
-        pane->valueAxis->setTickType(QValueAxis::TicksDynamic);
-        pane->valueAxis->setTickAnchor(0.0);
-        pane->chart->addAxis(pane->valueAxis, Qt::AlignLeft);
-        connect(pane->timeAxis, &QValueAxis::rangeChanged, this, &TelemetryPlot::onTimeAxisChanged);
-
-        pane->view = new PlotChartView(pane->chart, this, [this](double fraction, double factor) {
-            zoomAround(fraction, factor);
-        });
-        pane->view->setObjectName(QStringLiteral("chart_%1").arg(feetech::quantityKey(quantity)));
-        pane->view->setRenderHint(QPainter::Antialiasing);
-        pane->view->setRubberBand(QChartView::HorizontalRubberBand);
-        pane->view->setMinimumHeight(kMinimumChartHeight);
-        pane->view->setToolTip(
-            tr("Drag across a time span to zoom in, right-click to zoom out, or turn the wheel; "
-               "Reset zoom goes back to live data"));
-        m_layout->addWidget(pane->view, 1);
-        m_panes.push_back(std::move(pane));
-    }
-    // The time axis is shared: only the lowest chart names it.
-    if (!m_panes.empty())
-        m_panes.back()->timeAxis->setTitleText(tr("Time (s)"));
-    rebuildSeries();
-}
-
-void TelemetryPlot::rebuildSeries()
-{
-    for (auto &pane : m_panes) {
-        pane->chart->removeAllSeries(); // deletes them
-        pane->series.clear();
-        pane->shown.clear();
-        for (int i = 0; i < m_buffer.traceCount(); ++i)
-            addSeries(*pane, i);
-    }
+    m_layoutDirty = true; // the number of pixels, and so the decimation, changed
     m_viewDirty = true;
     refresh();
 }
 
-void TelemetryPlot::addSeries(Pane &pane, int trace)
+void TelemetryPlot::changeEvent(QEvent *event)
 {
-    auto *series = new QLineSeries(pane.chart);
-    series->setName(seriesName(m_buffer.servo(trace)));
-    QPen pen(kServoColours[trace % kColourCount]);
-    pen.setWidthF(1.5);
-    series->setPen(pen);
-    pane.chart->addSeries(series);
-    series->attachAxis(pane.timeAxis);
-    series->attachAxis(pane.valueAxis);
-    pane.series.append(series);
-    pane.shown.append(0);
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange
+        || event->type() == QEvent::StyleChange) {
+        m_labels.clear();
+        m_layoutDirty = true;
+        m_viewDirty = true;
+        invalidateChrome();
+        refresh();
+    }
+}
+
+void TelemetryPlot::mousePressEvent(QMouseEvent *event)
+{
+    const int index = paneAt(event->position().toPoint());
+    if (index < 0) {
+        QWidget::mousePressEvent(event);
+        return;
+    }
+    const Pane &pane = m_panes.at(std::size_t(index));
+    if (event->button() == Qt::LeftButton) {
+        m_dragPane = index;
+        m_dragFromX = m_dragToX = event->position().toPoint().x();
+        event->accept();
+    } else if (event->button() == Qt::RightButton) {
+        // Zooms out to twice the span around the middle of the view.
+        const double centre = timeAt(pane, pane.area.center().x());
+        const double span = m_viewTo - m_viewFrom;
+        setTimeRange(centre - span, centre + span);
+        event->accept();
+    }
+}
+
+void TelemetryPlot::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_dragPane < 0) {
+        QWidget::mouseMoveEvent(event);
+        return;
+    }
+    const QRect &area = m_panes.at(std::size_t(m_dragPane)).area;
+    m_dragToX = std::clamp(event->position().toPoint().x(), area.left(), area.right());
+    requestPaint();
+}
+
+void TelemetryPlot::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_dragPane < 0 || event->button() != Qt::LeftButton) {
+        QWidget::mouseReleaseEvent(event);
+        return;
+    }
+    const Pane &pane = m_panes.at(std::size_t(m_dragPane));
+    m_dragToX = std::clamp(event->position().toPoint().x(), pane.area.left(), pane.area.right());
+    const int left = std::min(m_dragFromX, m_dragToX);
+    const int right = std::max(m_dragFromX, m_dragToX);
+    const double from = timeAt(pane, left);
+    const double to = timeAt(pane, right);
+    m_dragPane = -1;
+    if (right - left >= kMinimumDragPixels)
+        setTimeRange(from, to);
+    requestPaint();
+}
+
+void TelemetryPlot::wheelEvent(QWheelEvent *event)
+{
+    const int index = paneAt(event->position().toPoint());
+    const int delta = event->angleDelta().y();
+    if (index < 0 || delta == 0) {
+        QWidget::wheelEvent(event);
+        return;
+    }
+    const QRect &area = m_panes.at(std::size_t(index)).area;
+    // One notch (120) zooms in to 80 %; turning back zooms out by as much.
+    zoomAround((event->position().x() - area.left()) / std::max(1, area.width()),
+               std::pow(0.8, delta / 120.0));
+    event->accept();
+}
+
+TelemetryBuffer::Retention TelemetryPlot::retention() const
+{
+    TelemetryBuffer::Retention retention;
+    retention.cap = std::size_t(maxPointsPerSeries());
+    retention.windowSeconds = m_windowSeconds;
+    if (m_paused || m_zoomed)
+        retention.holdFrom = m_viewFrom; // what is in view
+    return retention;
+}
+
+void TelemetryPlot::rebuildPanes()
+{
+    m_panes.clear();
+    for (const feetech::Quantity quantity : std::as_const(m_quantities)) {
+        Pane pane;
+        pane.quantity = quantity;
+        m_panes.push_back(pane);
+    }
+    setMinimumHeight(int(m_panes.size()) * kMinimumPaneHeight);
+    updateGeometry();
+    m_layoutDirty = true;
+    onServosChanged();
+}
+
+void TelemetryPlot::onServosChanged()
+{
+    for (Pane &pane : m_panes)
+        pane.shown.resize(m_buffer.traceCount());
+    invalidateChrome(); // the legends name the servos
+    m_viewDirty = true;
+    refresh();
 }
 
 QString TelemetryPlot::seriesName(const Servo &servo) const
@@ -389,114 +402,19 @@ QString TelemetryPlot::seriesName(const Servo &servo) const
     return tr("ID %1 · %2").arg(servo.id).arg(feetech::baudText(servo.baud));
 }
 
-TelemetryBuffer::Retention TelemetryPlot::retention() const
+int TelemetryPlot::paneAt(const QPoint &position) const
 {
-    TelemetryBuffer::Retention retention;
-    retention.cap = std::size_t(maxPointsPerSeries());
-    retention.windowSeconds = m_windowSeconds;
-    if (m_paused || m_zoomed)
-        retention.holdFrom = m_viewFrom; // what is in view
-    return retention;
-}
-void TelemetryPlot::repaintPane(Pane &pane, double from, double to)
-{
-    const int buckets = bucketsFor(pane);
-    pane.buckets = buckets;
-    double low = std::numeric_limits<double>::infinity();
-    double high = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i < pane.series.size() && i < m_buffer.traceCount(); ++i) {
-        const QList<QPointF> points = TelemetryBuffer::pointsInView(
-            m_buffer.points(i, pane.quantity), from, to, buckets, &low, &high);
-        pane.series.at(i)->replace(points);
-        pane.shown[i] = int(points.size());
+    for (std::size_t i = 0; i < m_panes.size(); ++i) {
+        if (m_panes[i].area.contains(position))
+            return int(i);
     }
-    // About one time label per 90 pixels, one value label per 35.
-    setAxisRange(pane.timeAxis, from, to, std::clamp(buckets / 90, 2, 12), false);
-    const int valueIntervals = std::clamp(int(pane.chart->plotArea().height() / 35.0), 2, 8);
-    if (low <= high) {
-        const double span = high - low;
-        const double margin =
-            span > 0.0 ? span * kValueMargin : std::max(1.0, std::abs(low) * kValueMargin);
-        setAxisRange(pane.valueAxis, low - margin, high + margin, valueIntervals, true);
-    } else if (pane.valueAxis->min() >= pane.valueAxis->max()) {
-        setAxisRange(pane.valueAxis, 0.0, 1.0, valueIntervals, true);
-    }
+    return -1;
 }
 
-int TelemetryPlot::bucketsFor(const Pane &pane) const
+double TelemetryPlot::timeAt(const Pane &pane, double x) const
 {
-    // One per pixel column of the plot area (the view's width before the chart is laid out).
-    const double width = pane.chart->plotArea().width();
-    return std::max(16, int(width > 1.0 ? width : pane.view->width()));
-}
-
-void TelemetryPlot::setAxisRange(QValueAxis *axis, double from, double to, int intervals,
-                                 bool roundBounds)
-{
-    const double span = to - from;
-    if (!(span > 0.0))
-        return;
-    // Labels 1, 2 or 5 × 10^n apart. Value bounds snap to a quarter of that, so the scale
-    // stays put while the data wanders a little, without wasting much of the chart's height.
-    const double step = niceStep(span / std::max(1, intervals));
-    if (roundBounds) {
-        const double quantum = step / 4.0;
-        from = std::floor(from / quantum) * quantum;
-        to = std::ceil(to / quantum) * quantum;
-    }
-    m_settingAxes = true;
-    if (axis->tickInterval() != step)
-        axis->setTickInterval(step);
-    if (axis->min() != from || axis->max() != to)
-        axis->setRange(from, to);
-    m_settingAxes = false;
-}
-
-void TelemetryPlot::alignPlotAreas()
-{
-    // Value labels differ in width from chart to chart; without this the stacked plot areas,
-    // and so their time axes, would not line up.
-    if (m_panes.size() < 2)
-        return;
-    double left = 0.0;
-    double right = 0.0;
-    for (const auto &pane : m_panes) {
-        const QRectF area = pane->chart->plotArea();
-        left = std::max(left, area.left() - pane->extraLeft);
-        right = std::max(right, pane->chart->size().width() - area.right() - pane->extraRight);
-    }
-    for (auto &pane : m_panes) {
-        const QRectF area = pane->chart->plotArea();
-        const double naturalLeft = area.left() - pane->extraLeft;
-        const double naturalRight = pane->chart->size().width() - area.right() - pane->extraRight;
-        const double extraLeft = std::round(left - naturalLeft);
-        const double extraRight = std::round(right - naturalRight);
-        if (extraLeft == pane->extraLeft && extraRight == pane->extraRight)
-            continue;
-        pane->extraLeft = extraLeft;
-        pane->extraRight = extraRight;
-        QMargins margins = pane->chart->margins();
-        margins.setLeft(4 + int(extraLeft));
-        margins.setRight(4 + int(extraRight));
-        pane->chart->setMargins(margins);
-    }
-}
-
-void TelemetryPlot::onTimeAxisChanged(double from, double to)
-{
-    if (m_settingAxes)
-        return;
-    // The user zoomed with the rubber band or zoomed out with the right button. The chart is
-    // still in the middle of zooming (its value axis comes next): repaint once it is done.
-    m_viewFrom = from;
-    m_viewTo = std::max(to, from + kMinimumSpanSeconds);
-    if (!m_paused) {
-        m_paused = true;
-        emit pausedChanged(true);
-    }
-    setZoomed(true);
-    m_viewDirty = true;
-    QMetaObject::invokeMethod(this, &TelemetryPlot::refresh, Qt::QueuedConnection);
+    const double fraction = (x - pane.area.left()) / std::max(1, pane.area.width());
+    return m_viewFrom + fraction * (m_viewTo - m_viewFrom);
 }
 
 void TelemetryPlot::zoomAround(double fraction, double factor)
