@@ -51,6 +51,17 @@ qint64 servoKey(const ServoInfo &servo)
     return qint64(servo.baud) * 256 + servo.id;
 }
 
+Exchange readRequest(const ServoInfo &servo, int address, int size, ReadSource source)
+{
+    Exchange ask;
+    ask.request = feetech::read(servo.id, quint8(address), quint8(size));
+    ask.replyId = servo.id;
+    ask.replyDataSize = size;
+    if (source == ReadSource::Refresh)
+        ask.priority = seriallink::Transaction::Priority::Poll;
+    return ask;
+}
+
 // Runs asynchronous steps one after the other; the first failure ends the run.
 class StepRunner : public std::enable_shared_from_this<StepRunner>
 {
@@ -108,6 +119,14 @@ QString failureText(const seriallink::TransactionResult &result)
         return Tr::tr("cancelled");
     }
     return {};
+}
+
+static QString readFailure(int address, int size, const seriallink::TransactionResult &result)
+{
+    return Tr::tr("Reading %1 bytes at address %2: %3")
+        .arg(size)
+        .arg(address)
+        .arg(failureText(result));
 }
 
 const Register *registerAt(const ServoInfo &servo, QStringView key)
@@ -276,22 +295,12 @@ Step BusExchange::read(std::shared_ptr<ServoInfo> servo, int address, int size, 
                        std::function<void(const QByteArray &bytes)> seen)
 {
     return [this, servo, address, size, source, seen](StepDone next) {
-        Exchange ask;
-        ask.request = feetech::read(servo->id, quint8(address), quint8(size));
-        ask.replyId = servo->id;
-        ask.replyDataSize = size;
-        if (source == ReadSource::Refresh)
-            ask.priority = seriallink::Transaction::Priority::Poll;
-        exchange(ask,
+        exchange(readRequest(*servo, address, size, source),
                  [this, servo, address, size, source, seen,
                   next](const seriallink::TransactionResult &result,
                         const std::optional<Packet> &reply) {
                      if (!reply) {
-                         next(false,
-                              Tr::tr("Reading %1 bytes at address %2: %3")
-                                  .arg(size)
-                                  .arg(address)
-                                  .arg(failureText(result)));
+                         next(false, readFailure(address, size, result));
                          return;
                      }
                      emit memoryRead(servo->id, servo->baud, address, reply->parameters, source,
@@ -327,14 +336,8 @@ Step BusExchange::readSpan(std::shared_ptr<ServoInfo> servo, QVector<Block> bloc
     return [this, servo, blocks, source](StepDone next) {
         const int address = blocks.first().address;
         const int size = blocks.last().address + blocks.last().size - address;
-        Exchange ask;
-        ask.request = feetech::read(servo->id, quint8(address), quint8(size));
-        ask.replyId = servo->id;
-        ask.replyDataSize = size;
-        if (source == ReadSource::Refresh)
-            ask.priority = seriallink::Transaction::Priority::Poll;
         exchange(
-            ask,
+            readRequest(*servo, address, size, source),
             [this, servo, blocks, source, address, size, next](
                 const seriallink::TransactionResult &result, const std::optional<Packet> &reply) {
                 if (reply) {
@@ -346,11 +349,7 @@ Step BusExchange::readSpan(std::shared_ptr<ServoInfo> servo, QVector<Block> bloc
                     return;
                 }
                 if (result.failure != seriallink::Failure::Timeout) {
-                    next(false,
-                         Tr::tr("Reading %1 bytes at address %2: %3")
-                             .arg(size)
-                             .arg(address)
-                             .arg(failureText(result)));
+                    next(false, readFailure(address, size, result));
                     return;
                 }
                 // Firmware that answers short READs only: remembered once the blocks
