@@ -199,9 +199,61 @@ private slots:
         const Memory scs = readAll(*found(3));
         QCOMPARE(scs.values.value(QStringLiteral("max_angle_limit")), 1000);
         QCOMPARE(scs.values.value(QStringLiteral("goal_position")), 300);
-        // Three READs for the STS table (its contiguous blocks), not one per register.
-        const int reads = framesReceived().filter(QStringLiteral("FF FF 01 04 02")).size();
-        QCOMPARE(reads, int(found(1)->table().blocks().size()) + 1); // + the scan's identity
+        // One READ for the STS table (its blocks are a few bytes apart), not one per register.
+        const QStringList reads = framesReceived().filter(QStringLiteral("FF FF 01 04 02"));
+        QCOMPARE(reads.size(), 2); // + the scan's identity
+        QVERIFY(reads.last().contains(QStringLiteral("FF FF 01 04 02 00 57"))); // 0-86
+    }
+
+    void aTableReadInOneReadGivesTheValuesOfAReadPerBlock()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        options.bauds = {k1M};
+        QVERIFY(scan(options));
+        const ServoInfo servo = *found(1);
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(1)->setValue(u"position_offset", -321);
+        });
+        const Memory whole = readAll(servo);
+        QCOMPARE(framesReceived().filter(QStringLiteral("FF FF 01 04 02 00 57")).size(), 1);
+        Memory perBlock;
+        for (const feetech::Block &block : servo.table().blocks()) {
+            QSignalSpy read(m_session.get(), &Session::memoryRead);
+            QVERIFY(run([&] { m_session->read(servo, {block}, ReadSource::Read); }).ok);
+            QCOMPARE(read.size(), 1);
+            for (const auto &item : feetech::decodeRegisters(servo.table(), block.address,
+                                                             read.first().at(3).toByteArray()))
+                perBlock.values.insert(item.reg->key, item.value);
+        }
+        QCOMPARE(whole.values.value(QStringLiteral("position_offset")), -321);
+        QCOMPARE(whole.values.size(), int(servo.table().registers().size()));
+        QCOMPARE(whole.values, perBlock.values);
+    }
+
+    void aServoRefusingLongReadsIsReadBlockByBlockFromThenOn()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        options.bauds = {k1M};
+        QVERIFY(scan(options));
+        const ServoInfo servo = *found(1);
+        const Memory answered = readAll(servo);
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->findServo(1)->setLongestRead(64); // the table spans 87
+        });
+        const auto readsOf = [this](const char *request) {
+            return framesReceived().filter(QLatin1String(request)).size();
+        };
+        const int longReadsBefore = readsOf("FF FF 01 04 02 00 57");
+        const Memory fallenBack = readAll(servo);
+        QCOMPARE(fallenBack.values, answered.values);
+        QVERIFY(readsOf("FF FF 01 04 02 00 57") > longReadsBefore);
+        QCOMPARE(readsOf("FF FF 01 04 02 00 32"), 1); // addresses 0-49
+        const int longReads = readsOf("FF FF 01 04 02 00 57");
+        QCOMPARE(readAll(servo).values, answered.values);
+        QCOMPARE(readsOf("FF FF 01 04 02 00 57"), longReads); // not asked again
+        QCOMPARE(readsOf("FF FF 01 04 02 00 32"), 2);
     }
 
     void eepromChangeSurvivesPowerCycle()

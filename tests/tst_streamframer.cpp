@@ -28,6 +28,33 @@ public:
     }
 };
 
+// The same frames, declaring their fixed first byte: the framer then scans for it itself.
+class ToyFormatWithPrefix final : public seriallink::FrameFormat
+{
+public:
+    int frameLength(QByteArrayView buffer) const override { return m_toy.frameLength(buffer); }
+    bool checksumValid(QByteArrayView frame) const override { return m_toy.checksumValid(frame); }
+    QByteArrayView framePrefix() const override { return "S"; }
+
+private:
+    ToyFormat m_toy;
+};
+
+using Items = QList<std::tuple<seriallink::StreamItem::Kind, QByteArray, qint64>>;
+
+// Every item of `stream` delivered in pieces of `pieceSize`, with where each one started.
+Items itemsOf(const seriallink::FrameFormat &format, const QByteArray &stream, int pieceSize)
+{
+    seriallink::StreamFramer framer(format);
+    Items items;
+    for (qsizetype at = 0; at < stream.size(); at += pieceSize) {
+        framer.append(stream.mid(at, pieceSize));
+        while (const auto item = framer.next())
+            items.append({item->kind, item->bytes, item->offset});
+    }
+    return items;
+}
+
 QByteArray toyFrame(const QByteArray &payload)
 {
     QByteArray frame("S");
@@ -171,6 +198,62 @@ private slots:
         QCOMPARE(items(single), whole);
         QCOMPARE(whole.at(0).second, toyFrame("abc"));
         QCOMPARE(whole.at(whole.size() - 2).second, QByteArray("5"));
+    }
+    void aDeclaredFramePrefixChangesNoItem_data()
+    {
+        QTest::addColumn<int>("pieceSize");
+        QTest::newRow("byte by byte") << 1;
+        QTest::newRow("three bytes") << 3;
+        QTest::newRow("one block") << 100000;
+    }
+    void aDeclaredFramePrefixChangesNoItem()
+    {
+        // Frames, noise with and without false headers, a bad checksum, a frame cut short.
+        QFETCH(int, pieceSize);
+        QRandomGenerator random(7);
+        QByteArray stream;
+        for (int i = 0; i < 300; ++i) {
+            QByteArray payload;
+            for (int n = int(random.bounded(6)); n > 0; --n)
+                payload.append(char(random.bounded(256)));
+            QByteArray frame = toyFrame(payload);
+            if (i % 11 == 5)
+                frame.back() = char(frame.back() + 1);
+            stream += frame;
+            for (int n = int(random.bounded(4)); n > 0; --n)
+                stream += random.bounded(3) == 0 ? 'S' : char(random.bounded(256));
+        }
+        stream += toyFrame("cut short").left(4);
+        const Items plain = itemsOf(ToyFormat(), stream, pieceSize);
+        QCOMPARE(itemsOf(ToyFormatWithPrefix(), stream, pieceSize), plain);
+        QVERIFY(plain.size() > 300);
+    }
+    void anItemKeptByItsReceiverIsNotOverwrittenByTheNext()
+    {
+        ToyFormat format;
+        seriallink::StreamFramer framer(format);
+        framer.append(toyFrame("first") + toyFrame("other"));
+        const auto first = framer.next();
+        QVERIFY(first.has_value());
+        const auto second = framer.next();
+        QVERIFY(second.has_value());
+        QCOMPARE(first->bytes, toyFrame("first"));
+        QCOMPARE(second->bytes, toyFrame("other"));
+    }
+    void sumOfBytesAddsEveryByte()
+    {
+        QRandomGenerator random(3);
+        for (int size = 0; size <= 40; ++size) {
+            QByteArray bytes(size, char(0xFF));
+            quint32 expected = 255u * quint32(size);
+            QCOMPARE(seriallink::sumOfBytes(bytes), expected);
+            expected = 0;
+            for (char &byte : bytes) {
+                byte = char(random.bounded(256));
+                expected += quint8(byte);
+            }
+            QCOMPARE(seriallink::sumOfBytes(bytes), expected);
+        }
     }
 };
 

@@ -20,6 +20,47 @@ struct Tr
 };
 
 constexpr std::size_t kLatencyWindow = 8;
+// Blocks at most this far apart are read in one READ: at any rate, 16 unused bytes take less
+// wire time than a second READ (14 bytes of request and reply framing) and its turnaround.
+constexpr int kLongestGapReadThrough = 16;
+// The most data one status packet carries (the SDKs' 250-byte packets).
+constexpr int kLongestRead = kMaxPacketSize - kMinimumPacketSize;
+
+// The blocks in groups that one READ each covers.
+QVector<QVector<Block>> readGroups(const QVector<Block> &blocks)
+{
+    QVector<QVector<Block>> groups;
+    for (const Block &block : blocks) {
+        if (!groups.isEmpty()) {
+            QVector<Block> &group = groups.last();
+            const int groupEnd = group.last().address + group.last().size;
+            const int gap = block.address - groupEnd;
+            if (gap >= 0 && gap <= kLongestGapReadThrough
+                && block.address + block.size - group.first().address <= kLongestRead) {
+                group.append(block);
+                continue;
+            }
+        }
+        groups.append({block});
+    }
+    return groups;
+}
+
+qint64 servoKey(const ServoInfo &servo)
+{
+    return qint64(servo.baud) * 256 + servo.id;
+}
+
+Exchange readRequest(const ServoInfo &servo, int address, int size, ReadSource source)
+{
+    Exchange ask;
+    ask.request = feetech::read(servo.id, quint8(address), quint8(size));
+    ask.replyId = servo.id;
+    ask.replyDataSize = size;
+    if (source == ReadSource::Refresh)
+        ask.priority = seriallink::Transaction::Priority::Poll;
+    return ask;
+}
 
 // Runs asynchronous steps one after the other; the first failure ends the run.
 class StepRunner : public std::enable_shared_from_this<StepRunner>
@@ -78,6 +119,14 @@ QString failureText(const seriallink::TransactionResult &result)
         return Tr::tr("cancelled");
     }
     return {};
+}
+
+static QString readFailure(int address, int size, const seriallink::TransactionResult &result)
+{
+    return Tr::tr("Reading %1 bytes at address %2: %3")
+        .arg(size)
+        .arg(address)
+        .arg(failureText(result));
 }
 
 const Register *registerAt(const ServoInfo &servo, QStringView key)
@@ -246,22 +295,12 @@ Step BusExchange::read(std::shared_ptr<ServoInfo> servo, int address, int size, 
                        std::function<void(const QByteArray &bytes)> seen)
 {
     return [this, servo, address, size, source, seen](StepDone next) {
-        Exchange ask;
-        ask.request = feetech::read(servo->id, quint8(address), quint8(size));
-        ask.replyId = servo->id;
-        ask.replyDataSize = size;
-        if (source == ReadSource::Refresh)
-            ask.priority = seriallink::Transaction::Priority::Poll;
-        exchange(ask,
+        exchange(readRequest(*servo, address, size, source),
                  [this, servo, address, size, source, seen,
                   next](const seriallink::TransactionResult &result,
                         const std::optional<Packet> &reply) {
                      if (!reply) {
-                         next(false,
-                              Tr::tr("Reading %1 bytes at address %2: %3")
-                                  .arg(size)
-                                  .arg(address)
-                                  .arg(failureText(result)));
+                         next(false, readFailure(address, size, result));
                          return;
                      }
                      emit memoryRead(servo->id, servo->baud, address, reply->parameters, source,
@@ -270,6 +309,61 @@ Step BusExchange::read(std::shared_ptr<ServoInfo> servo, int address, int size, 
                          seen(reply->parameters);
                      next(true, {});
                  });
+    };
+}
+
+Step BusExchange::readBlocks(std::shared_ptr<ServoInfo> servo, QVector<Block> blocks,
+                             ReadSource source)
+{
+    return [this, servo, blocks, source](StepDone next) {
+        std::vector<Step> steps;
+        if (m_refuseLongReads.contains(servoKey(*servo))) {
+            for (const Block &block : blocks)
+                steps.push_back(read(servo, block.address, block.size, source));
+        } else {
+            for (const QVector<Block> &group : readGroups(blocks))
+                steps.push_back(readSpan(servo, group, source));
+        }
+        runSteps(std::move(steps), std::move(next));
+    };
+}
+
+Step BusExchange::readSpan(std::shared_ptr<ServoInfo> servo, QVector<Block> blocks,
+                           ReadSource source)
+{
+    if (blocks.size() == 1)
+        return read(servo, blocks.first().address, blocks.first().size, source);
+    return [this, servo, blocks, source](StepDone next) {
+        const int address = blocks.first().address;
+        const int size = blocks.last().address + blocks.last().size - address;
+        exchange(
+            readRequest(*servo, address, size, source),
+            [this, servo, blocks, source, address, size, next](
+                const seriallink::TransactionResult &result, const std::optional<Packet> &reply) {
+                if (reply) {
+                    for (const Block &block : blocks)
+                        emit memoryRead(servo->id, servo->baud, block.address,
+                                        reply->parameters.mid(block.address - address, block.size),
+                                        source, reply->code);
+                    next(true, {});
+                    return;
+                }
+                if (result.failure != seriallink::Failure::Timeout) {
+                    next(false, readFailure(address, size, result));
+                    return;
+                }
+                // Firmware that answers short READs only: remembered once the blocks
+                // alone are answered (a servo that answers nothing proves nothing).
+                std::vector<Step> steps;
+                for (const Block &block : blocks)
+                    steps.push_back(read(servo, block.address, block.size, source));
+                const qint64 key = servoKey(*servo);
+                runSteps(std::move(steps), [this, key, next](bool ok, const QString &message) {
+                    if (ok)
+                        m_refuseLongReads.insert(key);
+                    next(ok, message);
+                });
+            });
     };
 }
 

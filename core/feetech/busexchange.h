@@ -5,6 +5,7 @@
 #include "link/requestengine.h"
 
 #include <QObject>
+#include <QSet>
 
 #include <chrono>
 #include <deque>
@@ -83,6 +84,11 @@ public:
     // Emits memoryRead with what the servo holds, and hands the bytes to `seen` when given.
     Step read(std::shared_ptr<ServoInfo> servo, int address, int size, ReadSource source,
               std::function<void(const QByteArray &bytes)> seen = {});
+    // Reads `blocks` (in address order) in as few READs as the servo takes: blocks a few bytes
+    // apart go in one READ, since the unused bytes between them cost less wire time than another
+    // request and its turnaround. A servo that does not answer such a READ is read block by
+    // block, then and from then on. memoryRead comes once per block either way.
+    Step readBlocks(std::shared_ptr<ServoInfo> servo, QVector<Block> blocks, ReadSource source);
     Step identify(std::shared_ptr<ServoInfo> servo); // fills in what addresses 0-8 say
     // mustAnswer: fails when the ID is silent; otherwise fails when it answers (ID in use).
     Step ping(quint8 id, bool mustAnswer, int retries);
@@ -104,9 +110,13 @@ signals:
                     feetech::ReadSource source, quint8 statusByte);
 
 private:
+    // One READ covering `blocks`, handed out block by block; falls back to a READ per block.
+    Step readSpan(std::shared_ptr<ServoInfo> servo, QVector<Block> blocks, ReadSource source);
+
     seriallink::LinkSession &m_link;
     SessionTiming m_timing;
     std::deque<std::chrono::microseconds> m_latencies;
+    QSet<qint64> m_refuseLongReads; // servos (baud and ID) read block by block
 };
 
 } // namespace feetech

@@ -38,9 +38,9 @@ std::optional<QString> instructionName(quint8 code)
 
 quint8 checksum(QByteArrayView packetWithoutChecksum)
 {
-    unsigned sum = 0;
-    for (qsizetype i = 2; i < packetWithoutChecksum.size(); ++i)
-        sum += quint8(packetWithoutChecksum[i]);
+    const quint32 sum = packetWithoutChecksum.size() > 2
+        ? seriallink::sumOfBytes(packetWithoutChecksum.sliced(2))
+        : 0;
     return quint8(~sum & 0xFF);
 }
 

@@ -80,6 +80,7 @@ class FrameFormat final : public seriallink::FrameFormat
 public:
     int frameLength(QByteArrayView buffer) const override;
     bool checksumValid(QByteArrayView frame) const override;
+    QByteArrayView framePrefix() const override { return QByteArrayView("\xFF\xFF", 2); }
 };
 
 } // namespace feetech

@@ -337,8 +337,7 @@ void Session::read(const ServoInfo &servo, const QVector<Block> &blocks, ReadSou
         if (toRead.isEmpty())
             toRead = servo.hasTable() ? servo.table().blocks()
                                       : QVector<Block> {{0, RegisterTable::kRawViewSize}};
-        for (const Block &block : std::as_const(toRead))
-            steps.push_back(m_bus->read(target, block.address, block.size, source));
+        steps.push_back(m_bus->readBlocks(target, toRead, source));
         m_bus->runSteps(std::move(steps), [this, servo](bool ok, const QString &message) {
             finishOperation({Operation::Read,
                              ok,

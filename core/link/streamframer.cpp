@@ -1,42 +1,97 @@
 // Generic resynchronising framer shared by the PTK and Feetech codecs.
 #include "link/streamframer.h"
 
+#include <algorithm>
+#include <cstdint>
+
 namespace seriallink {
 
 StreamFramer::StreamFramer(const FrameFormat &format, BadChecksumPolicy policy)
     : m_format(format)
     , m_policy(policy)
-{ }
-
-void StreamFramer::append(const QByteArray &bytes)
 {
-    // Consumed bytes are dropped here, once per delivery, rather than once per frame: what is
-    // left is at most the start of one frame, so the move is short and the capacity is reused.
-    if (m_start > 0) {
-        m_buffer.erase(m_buffer.begin(), m_buffer.begin() + m_start);
-        m_frameEnd -= m_start;
-        m_start = 0;
+    const QByteArrayView prefix = format.framePrefix();
+    m_prefixSize = std::min<qsizetype>(prefix.size(), qsizetype(m_prefix.size()));
+    std::copy_n(prefix.data(), m_prefixSize, m_prefix.begin());
+}
+
+quint32 sumOfBytes(QByteArrayView bytes)
+{
+    // Eight bytes at a time: add the bytes pairwise into 16-bit lanes, then all lanes at once
+    // with one multiplication (no lane can carry into the next).
+    constexpr std::uint64_t kLowBytes = 0x00FF00FF00FF00FFull;
+    constexpr std::uint64_t kLanes = 0x0001000100010001ull;
+    const char *at = bytes.data();
+    const char *const end = at + bytes.size();
+    quint32 sum = 0;
+    for (; end - at >= 8; at += 8) {
+        std::uint64_t word;
+        std::memcpy(&word, at, sizeof word);
+        const std::uint64_t pairs = (word & kLowBytes) + ((word >> 8) & kLowBytes);
+        sum += quint32((pairs * kLanes) >> 48);
     }
-    m_buffer.insert(m_buffer.end(), bytes.cbegin(), bytes.cend());
+    if (end - at >= 4) {
+        quint32 word;
+        std::memcpy(&word, at, sizeof word);
+        const quint32 pairs = (word & 0x00FF00FFu) + ((word >> 8) & 0x00FF00FFu);
+        sum += (pairs & 0xFFFFu) + (pairs >> 16);
+        at += 4;
+    }
+    for (; at < end; ++at)
+        sum += quint8(*at);
+    return sum;
+}
+
+void StreamFramer::dropConsumed()
+{
+    // Consumed bytes are dropped once per delivery, rather than once per frame: what is left is
+    // at most the start of one frame, so the move is short and the capacity is reused.
+    const qsizetype rest = m_end - m_start;
+    if (rest > 0)
+        std::memmove(m_buffer.data(), m_buffer.data() + m_start, std::size_t(rest));
+    m_frameEnd -= m_start;
+    m_frameStart -= m_start;
+    m_end = rest;
+    m_start = 0;
+}
+
+void StreamFramer::grow(qsizetype more)
+{
+    m_buffer.resize(std::max<std::size_t>(2 * m_buffer.size(), std::size_t(m_end + more)));
 }
 
 StreamItem StreamFramer::take(StreamItem::Kind kind, qsizetype length)
 {
-    StreamItem item {kind, QByteArray(m_buffer.data() + m_start, length), m_bufferOffset};
+    const char *from = m_buffer.data() + m_start;
+    if (m_lastItem.isDetached()) {
+        m_lastItem.resize(length); // keeps the allocation; nobody else sees these bytes
+        std::memcpy(m_lastItem.data(), from, std::size_t(length));
+    } else {
+        m_lastItem = QByteArray(from, length);
+    }
+    StreamItem item {kind, m_lastItem, m_bufferOffset};
     m_start += length;
     m_bufferOffset += length;
     return item;
 }
 
-std::optional<StreamItem> StreamFramer::next()
+std::optional<StreamItem> StreamFramer::nextItem()
 {
-    if (qsizetype(m_buffer.size()) < m_frameEnd)
-        return std::nullopt; // the frame being received is still short: nothing new to tell
-    const QByteArrayView pending(m_buffer.data() + m_start, qsizetype(m_buffer.size()) - m_start);
+    const char *const data = m_buffer.data() + m_start;
+    const qsizetype size = m_end - m_start;
+    const QByteArrayView pending(data, size);
     // Garbage is gathered until a byte that could start a frame, so one item covers one run.
     qsizetype garbage = 0;
-    while (garbage < pending.size()) {
-        const int length = m_format.frameLength(pending.sliced(garbage));
+    while (garbage < size) {
+        if (m_prefixSize > 0 && data[garbage] != m_prefix[0]) {
+            const void *lead =
+                std::memchr(data + garbage, quint8(m_prefix[0]), std::size_t(size - garbage));
+            garbage = lead ? static_cast<const char *>(lead) - data : size;
+            continue;
+        }
+        const qsizetype length = garbage == 0 && m_frameStart == m_start
+            ? m_frameEnd - m_start
+            : m_format.frameLength(pending.sliced(garbage));
         if (length < 0) {
             ++garbage;
             continue;
@@ -45,9 +100,10 @@ std::optional<StreamItem> StreamFramer::next()
             break; // report the garbage first; the frame comes with the next call
         if (length == 0)
             return std::nullopt; // need more to tell
-        if (length > pending.size()) {
+        if (length > size) {
             // A frame's length never changes as more of it arrives, so it is asked once.
             m_frameEnd = m_start + length;
+            m_frameStart = m_start;
             return std::nullopt;
         }
         if (m_format.checksumValid(pending.first(length))) {
@@ -87,9 +143,10 @@ int StreamFramer::discardPending()
     const int dropped = pendingBytes();
     m_bytesDiscarded += dropped;
     m_bufferOffset += dropped;
-    m_buffer.clear();
     m_start = 0;
+    m_end = 0;
     m_frameEnd = 0;
+    m_frameStart = -1;
     return dropped;
 }
 

@@ -68,7 +68,11 @@ bool SerialTransport::setBaudRate(qint32 baud)
 
 void SerialTransport::write(const QByteArray &bytes)
 {
+    // QSerialPort only buffers in write() and sends on the next event-loop pass; flush() sends
+    // now, so the servo's turnaround is not held up by that pass (bytesWritten still follows
+    // from the event loop, once the bytes have left).
     m_port->write(bytes);
+    m_port->flush();
 }
 
 QByteArray SerialTransport::discardInput()

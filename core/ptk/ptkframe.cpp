@@ -5,10 +5,9 @@ namespace ptk {
 
 quint8 checksum(QByteArrayView frameWithoutChecksum)
 {
-    unsigned sum = 0;
-    for (qsizetype i = 2; i < frameWithoutChecksum.size(); ++i)
-        sum += quint8(frameWithoutChecksum[i]);
-    return quint8(sum & 0xFF);
+    if (frameWithoutChecksum.size() <= 2)
+        return 0;
+    return quint8(seriallink::sumOfBytes(frameWithoutChecksum.sliced(2)) & 0xFF);
 }
 
 static void appendWord(QByteArray &out, quint16 word)

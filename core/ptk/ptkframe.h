@@ -53,6 +53,7 @@ class FrameFormat final : public seriallink::FrameFormat
 public:
     int frameLength(QByteArrayView buffer) const override;
     bool checksumValid(QByteArrayView frame) const override;
+    QByteArrayView framePrefix() const override { return QByteArrayView("\xAF\xFA\x00", 3); }
 };
 
 } // namespace ptk

@@ -293,7 +293,7 @@ QByteArray VirtualFeetechServo::statusReply(quint8 replyId, const QByteArray &da
 
 std::optional<QByteArray> VirtualFeetechServo::readReply(int address, int length) const
 {
-    if (length <= 0 || address < 0 || address + length > kRegisterFileSize
+    if (length <= 0 || address < 0 || address + length > kRegisterFileSize || length > m_longestRead
         || length + feetech::kMinimumPacketSize > feetech::kMaxPacketSize)
         return std::nullopt;
     return statusReply(id(), m_registers.mid(address, length));

@@ -63,6 +63,9 @@ public:
     void applySyncWrite(quint8 address, const QByteArray &data);
     // The READ status frame for `length` bytes at `address`, or nothing when the range is invalid.
     std::optional<QByteArray> readReply(int address, int length) const;
+    // Firmware that answers no READ longer than `bytes` (tests of the host's fallback); by
+    // default any READ that fits in a packet is answered.
+    void setLongestRead(int bytes) { m_longestRead = bytes; }
 
     void advanceTo(qint64 nowUs);
     qint64 nowUs() const { return m_nowUs; }
@@ -175,6 +178,7 @@ private:
     QByteArray m_registers = QByteArray(kRegisterFileSize, '\0');
     QByteArray m_powerOnRam = QByteArray(kRegisterFileSize, '\0');
     QByteArray m_image = QByteArray(kRegisterFileSize, '\0');
+    int m_longestRead = kRegisterFileSize;
     QByteArray m_factory = QByteArray(kRegisterFileSize, '\0');
     std::optional<QByteArray> m_backup;
     quint64 m_eepromRevision = 0;
