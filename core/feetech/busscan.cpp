@@ -21,6 +21,8 @@ struct Tr
 // After the first byte of the broadcast probe's answers: every servo at the rate answers
 // within its return delay, so the rest of the collided bytes are in well before this.
 constexpr std::chrono::microseconds kProbeSettle {2000};
+// How much longer than an opening probe the closing broadcast may wait for its answers.
+constexpr int kClosingPatience = 10;
 // How often one ID may be asked again at one rate.
 constexpr int kMostRechecks = 2;
 
@@ -97,7 +99,7 @@ void BusScan::onFrameHeard(const QByteArray &frame)
     // A PING's own echo, come late, is no answer.
     if (packet && frame != feetech::ping(packet->id))
         answeredLate(packet->id);
-    else if (!packet)
+    else if (!packet && !m_scan->probing)
         heardUnnamed();
 }
 
@@ -109,7 +111,7 @@ void BusScan::onStrayBytes(const QByteArray &bytes)
     m_strays.append(bytes);
     while (auto item = m_strays.next())
         onFrameHeard(item->bytes);
-    if (m_strays.pendingBytes() > 0)
+    if (m_strays.pendingBytes() > 0 && !m_scan->probing)
         heardUnnamed();
 }
 
@@ -153,6 +155,7 @@ void BusScan::scanBaud(int baudIndex)
     m_scan->timesRechecked.clear();
     m_scan->asking = -1;
     m_scan->sweptUpTo = -1;
+    m_scan->answeredAtRate = false;
     m_strays.discardPending();
     if (!feetech::baudCode(baud) && baud != m_bus.link().transport().baudRate()) {
         end(false, Tr::tr("%1 is not a Feetech baud rate.").arg(baudText(baud)));
@@ -173,25 +176,11 @@ void BusScan::probe(int baudIndex, int round)
     // any come at all says there is something to find, and when they come tells how quickly
     // this adapter answers. A second round gives a second measurement, so that one slow first
     // exchange does not set the pace.
-    Exchange ask;
-    ask.request = feetech::ping(kBroadcastId);
-    ask.listenOnly = true;
-    ask.silenceExpected = true;
-    ask.replyTimeout = std::max(m_bus.timing().probeAllowance, m_bus.scanAllowance());
-    // Once the answers begin, the probe has what it came for: it ends when they are in.
-    ask.afterFirstByte = kProbeSettle;
-    ask.retryCount = 0;
-    m_bus.exchange(
-        ask,
-        [this, baudIndex, round](const seriallink::TransactionResult &result,
-                                 const std::optional<Packet> &) {
-            if (!m_scan)
-                return;
-            if (result.failure == seriallink::Failure::LinkDown) {
-                end(false, failureText(result));
-                return;
-            }
+    broadcastPing(
+        std::max(m_bus.timing().probeAllowance, m_bus.scanAllowance()),
+        [this, baudIndex, round](const seriallink::TransactionResult &result) {
             if (result.bytesHeard > 0) {
+                m_scan->answeredAtRate = true;
                 m_bus.noteLatency(result.latency);
                 m_scan->pace.noteAnswer(result.latency, m_scan->options.bauds.at(baudIndex));
                 if (round == 0)
@@ -211,6 +200,42 @@ void BusScan::probe(int baudIndex, int round)
         });
 }
 
+void BusScan::broadcastPing(std::chrono::microseconds wait,
+                            std::function<void(const seriallink::TransactionResult &)> then)
+{
+    Exchange ask;
+    ask.request = feetech::ping(kBroadcastId);
+    ask.listenOnly = true;
+    ask.silenceExpected = true;
+    ask.replyTimeout = wait;
+    // Once the answers begin, the broadcast has what it came for: it ends when they are in.
+    ask.afterFirstByte = kProbeSettle;
+    ask.retryCount = 0;
+    // Its answers collide: bytes that name no one are no late answer of a silent ID.
+    m_scan->probing = true;
+    m_bus.exchange(
+        ask,
+        [this, then](const seriallink::TransactionResult &result, const std::optional<Packet> &) {
+            if (!m_scan)
+                return;
+            m_scan->probing = false;
+            if (result.failure == seriallink::Failure::LinkDown)
+                end(false, failureText(result));
+            else
+                then(result);
+        });
+}
+
+void BusScan::closeSweep(int baudIndex)
+{
+    // The servos answer in the order they were asked: once the answers to a broadcast PING
+    // sent after the last ID are in, every late answer of the sweep is in too, heard and
+    // named. On a busy machine that is what bounds a late answer, not a fixed wait. It costs
+    // one answer time, unless every servo went away meanwhile.
+    broadcastPing(m_bus.timing().probeAllowance * kClosingPatience,
+                  [this, baudIndex](const seriallink::TransactionResult &) { recheck(baudIndex); });
+}
+
 void BusScan::scanId(int baudIndex, int id)
 {
     if (!m_scan)
@@ -220,16 +245,19 @@ void BusScan::scanId(int baudIndex, int id)
         return;
     }
     if (id > m_scan->options.lastId) {
-        recheck(baudIndex);
+        if (m_scan->answeredAtRate)
+            closeSweep(baudIndex);
+        else
+            recheck(baudIndex);
         return;
     }
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
     m_scan->asking = id;
     m_scan->sweptUpTo = id;
-    // A late answer is caught while a later PING waits (or between two), by its ID; the last
-    // ID of a rate has no later PING, so it gets the patience of a recheck (the engine's own
-    // reply timeout), which is also the time every earlier late answer has to show up.
-    const bool lastOfRate = id == m_scan->options.lastId;
+    // A late answer is caught while a later PING waits (or between two), by its ID, and the
+    // broadcast that closes the sweep waits for the last ones. Where nothing answered that
+    // broadcast (a thorough scan), the last ID gets the patience of a recheck instead.
+    const bool lastOfRate = id == m_scan->options.lastId && !m_scan->answeredAtRate;
     scanPing(id, lastOfRate ? std::nullopt : std::make_optional(pingWait(baud)), 0,
              [this, baudIndex, id, baud](const seriallink::TransactionResult &result,
                                          const std::optional<Packet> &reply) {

@@ -45,7 +45,10 @@ private:
     void scanBaud(int baudIndex);
     void probe(int baudIndex, int round);
     void scanId(int baudIndex, int id);
+    void closeSweep(int baudIndex);
     void recheck(int baudIndex);
+    void broadcastPing(std::chrono::microseconds wait,
+                       std::function<void(const seriallink::TransactionResult &)> then);
     // A scan's PING; the scan ends when the link does, otherwise `then` hears the answer.
     void scanPing(int id, std::optional<std::chrono::microseconds> timeout, int retries,
                   ExchangeDone then);
@@ -72,6 +75,8 @@ private:
         QVector<int> foundIds;
         int asking = -1; // the ID of the PING (or identity READ) on its way
         int sweptUpTo = -1; // the highest ID the sweep of this rate has asked
+        bool answeredAtRate = false; // the opening broadcast PING was answered
+        bool probing = false; // a broadcast PING is on its way
         QHash<int, int> timesRechecked;
         // The IDs of this rate that stayed silent, with when their wait ended (m_clock, µs).
         std::deque<std::pair<int, qint64>> silent;
