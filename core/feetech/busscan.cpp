@@ -23,8 +23,9 @@ struct Tr
 constexpr std::chrono::microseconds kProbeSettle {2000};
 // How much longer than an opening probe the closing broadcast may wait for its answers.
 constexpr int kClosingPatience = 10;
-// How often one ID may be asked again at one rate.
-constexpr int kMostRechecks = 2;
+// How often one ID may be asked again at one rate: a loaded machine may make a servo late
+// more than once, but a servo that is always too late must not keep the scan going.
+constexpr int kMostRechecks = 4;
 
 } // namespace
 
@@ -85,7 +86,6 @@ void BusScan::askAgain(int id)
 {
     if (m_scan->foundIds.contains(id) || m_scan->recheck.contains(id))
         return;
-    // At most twice: a servo that is always too late cannot keep the scan going.
     int &times = m_scan->timesRechecked[id];
     if (times >= kMostRechecks)
         return;
@@ -231,7 +231,9 @@ void BusScan::closeSweep(int baudIndex)
     // The servos answer in the order they were asked: once the answers to a broadcast PING
     // sent after the last ID are in, every late answer of the sweep is in too, heard and
     // named. On a busy machine that is what bounds a late answer, not a fixed wait. It costs
-    // one answer time, unless every servo went away meanwhile.
+    // one answer time, unless every servo went away meanwhile. The last ID's answer is a late
+    // one now too.
+    m_scan->asking = -1;
     broadcastPing(m_bus.timing().probeAllowance * kClosingPatience,
                   [this, baudIndex](const seriallink::TransactionResult &) { recheck(baudIndex); });
 }
