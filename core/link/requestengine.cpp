@@ -210,6 +210,10 @@ void RequestEngine::onBytesWritten(qint64 count)
         wait = replyTimeout();
     else
         wait = wireTime(requestSize + echoSize + m_current->expectedReplySize) + replyTimeout();
+    // Only a scan's wait is cut to the microsecond; every other keeps the whole milliseconds
+    // it always had (telemetry's waits are tuned to them).
+    if (!m_current->afterFirstByte)
+        wait = std::chrono::ceil<std::chrono::milliseconds>(wait);
     m_replyTimer->start(wait, [this, generation] { onTimeout(generation); });
     if (m_firstHeardUs >= 0)
         armAfterFirstByte(); // the answer began before the write was confirmed
