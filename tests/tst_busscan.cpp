@@ -2,6 +2,7 @@
 #include "feetechbus.h"
 
 #include "feetech/busscan.h"
+#include "util/hex.h"
 
 #include <QSignalSpy>
 #include <QtTest>
@@ -34,6 +35,20 @@ private:
         m_scan = std::make_unique<BusScan>(*m_bus);
         connect(m_scan.get(), &BusScan::servoFound, this,
                 [this](const ServoInfo &servo) { m_found.append(servo); });
+    }
+
+    // Starts a bus with `models` at IDs 1, 2... at 1 Mbps and every answer touched by `faults`
+    // (seeded), then scans IDs 0 to lastId: whether the scan completed.
+    bool scanFaultyBus(std::initializer_list<QStringView> models, const sim::FaultSettings &faults,
+                       int lastId, quint32 seed = 11)
+    {
+        sim::SimulatorOptions options = busOptions(testsupport::servosAt(k1M, models));
+        options.faults = faults;
+        options.seed = seed;
+        startBus(options);
+        ScanOptions scanOptions;
+        scanOptions.lastId = lastId;
+        return scan(scanOptions);
     }
 
     // Scans and waits up to 20 s for the end: whether it completed.
@@ -71,6 +86,23 @@ private:
                 ids.clear();
             else
                 ids.append(ping.id);
+        }
+        return ids;
+    }
+
+    // The servos (IDs 1-3) whose answer to a unicast PING the simulator garbled, from its log:
+    // named by the answer's ID byte (the flipped bit is rarely there).
+    QVector<int> garbledPingAnswers() const
+    {
+        QVector<int> ids;
+        for (const QString &line :
+             testsupport::logLinesStartingWith(logPath(), QStringLiteral("out "))) {
+            const QString hex = line.mid(4).section(QStringLiteral("  #"), 0, 0).trimmed();
+            const auto bytes = util::parseHex(hex);
+            const bool pingAnswer = bytes && bytes->size() == feetech::kMinimumPacketSize;
+            const int id = pingAnswer ? quint8(bytes->at(2)) : -1;
+            if (line.contains(QStringLiteral("corrupt")) && id >= 1 && id <= 3 && !ids.contains(id))
+                ids.append(id);
         }
         return ids;
     }
@@ -194,8 +226,88 @@ private slots:
         QVERIFY(found(2, k1M));
         QCOMPARE(found(2, k1M)->model.family, feetech::Family::Scs);
         // Asked in the sweep and again in the recheck.
+        if (pingsTo(1) < 2) {
+            for (const QString &l : testsupport::logLines(logPath()))
+                qInfo() << l;
+        }
         QVERIFY(pingsTo(1) >= 2);
         QVERIFY(pingsTo(2) >= 2);
+    }
+
+    void everyServoIsFoundWhenAnswersComeLateAtRandom()
+    {
+        // Each answer is late by 0-8 ms at random while the sweep waits at most 1 ms: most
+        // answers come during a later ID's wait or between two PINGs, and each names its
+        // servo, which is asked again with the engine's patient timeout.
+        m_timing.minimumScanAllowance = std::chrono::microseconds(500);
+        m_timing.maximumScanAllowance = std::chrono::milliseconds(1);
+        sim::FaultSettings late;
+        late.delayMs = 8;
+        QVERIFY(scanFaultyBus(
+            {u"STS3215", u"STS3215", u"SCS15", u"STS3215", u"STS3215", u"STS3215"}, late, 30));
+        for (quint8 id = 1; id <= 6; ++id)
+            QVERIFY2(found(id, k1M), qPrintable(QStringLiteral("servo %1 missed").arg(id)));
+        QCOMPARE(m_found.size(), 6);
+    }
+
+    void aSlowerLinkGetsALongerWaitAndStillFindsEveryone()
+    {
+        // The wait for a missing ID follows the answers heard: 5 ms more on every answer
+        // makes it longer, and nobody goes missing on either link.
+        const auto scanAndMeasure = [this](qint64 replyDelayUs) {
+            sim::SimulatorOptions options =
+                busOptions(testsupport::servosAt(k1M, {u"STS3215", u"SCS15", u"STS3215"}));
+            options.replyDelayUs = replyDelayUs;
+            startBus(options);
+            std::chrono::microseconds wait {0};
+            connect(m_scan.get(), &BusScan::progress, this,
+                    [this, &wait] { wait = m_scan->pingWait(k1M); });
+            ScanOptions scanOptions;
+            scanOptions.lastId = 12;
+            const bool completed = scan(scanOptions);
+            const bool everyone = found(1, k1M) && found(2, k1M) && found(3, k1M);
+            m_scan.reset();
+            stopLink();
+            m_found.clear();
+            return std::make_tuple(completed, everyone, wait);
+        };
+        const auto [slowCompleted, slowEveryone, slowWait] = scanAndMeasure(5000);
+        QVERIFY(slowCompleted);
+        QVERIFY(slowEveryone);
+        // A busy moment slows the fast link too, and the wait rightly follows it: the fast
+        // link gets up to three tries to show its own pace.
+        std::chrono::microseconds fastWait = std::chrono::hours(1);
+        for (int attempt = 0; attempt < 3 && fastWait >= slowWait; ++attempt) {
+            const auto [completed, everyone, wait] = scanAndMeasure(0);
+            QVERIFY(completed);
+            QVERIFY(everyone);
+            fastWait = std::min(fastWait, wait);
+        }
+        QVERIFY2(slowWait > fastWait,
+                 qPrintable(QStringLiteral("%1 us on the slow link, %2 us on the fast one")
+                                .arg(slowWait.count())
+                                .arg(fastWait.count())));
+        // Each answer took 5 ms beyond its wire time: the slow link waits at least that.
+        QVERIFY(slowWait > std::chrono::milliseconds(5));
+    }
+
+    void aGarbledAnswerIsAskedAgain()
+    {
+        // A third of the answers have a bit flipped: a servo whose answer came garbled is
+        // asked again rather than taken for an empty ID (its second answer may be garbled
+        // too: whether it is found then is the dice's).
+        QVector<int> garbled;
+        for (quint32 seed = 5; seed < 8 && garbled.isEmpty(); ++seed) {
+            cleanup();
+            m_found.clear();
+            sim::FaultSettings garbling;
+            garbling.corrupt = 0.35;
+            QVERIFY(scanFaultyBus({u"STS3215", u"STS3215", u"STS3215"}, garbling, 8, seed));
+            garbled = garbledPingAnswers();
+        }
+        QVERIFY2(!garbled.isEmpty(), "no PING answer was garbled with any of the seeds");
+        for (const int id : garbled)
+            QVERIFY2(pingsTo(quint8(id)) >= 2, qPrintable(QStringLiteral("ID %1").arg(id)));
     }
 
     void progressReachesTheTotalRateByRate()

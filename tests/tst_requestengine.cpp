@@ -73,6 +73,16 @@ Transaction query(quint8 command, Transaction::Priority priority, QVector<QStrin
     return transaction;
 }
 
+// A scan's PING: 300 µs for the first byte of the answer, then all the time it needs.
+Transaction firstByteQuery(QVector<QString> *order, TransactionResult *result)
+{
+    Transaction transaction = query(0x38, Transaction::Priority::Command, order, result);
+    transaction.replyTimeout = std::chrono::microseconds(300);
+    transaction.afterFirstByte = std::chrono::seconds(30);
+    transaction.retryCount = 0;
+    return transaction;
+}
+
 } // namespace
 
 class TestRequestEngine : public QObject
@@ -267,6 +277,57 @@ private slots:
         QTRY_COMPARE(order.size(), 1);
         QCOMPARE(result.failure, Failure::LinkDown);
         QVERIFY(transport.written.isEmpty());
+    }
+
+    void anAnswerThatHasBegunWhenAFirstByteWaitEndsGetsItsTime()
+    {
+        // A scan waits a fraction of a millisecond for the first byte; this answer's first
+        // bytes are in by then, the rest comes well after.
+        ScriptedTransport transport;
+        const QByteArray answer = reply(7);
+        transport.answers = {answer.left(3)};
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        QVector<QString> order;
+        requests->submit(firstByteQuery(&order, &result));
+        QTRY_COMPARE(transport.written.size(), 1);
+        QTimer::singleShot(20, &transport, [&] { transport.deliver(answer.mid(3)); });
+        QTRY_COMPARE(order.size(), 1);
+        QCOMPARE(result.failure, Failure::None);
+        QCOMPARE(result.reply, answer);
+    }
+
+    void aFirstByteWaitWithNothingHeardEndsInATimeout()
+    {
+        ScriptedTransport transport; // silent
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        QVector<QString> order;
+        requests->submit(firstByteQuery(&order, &result));
+        QTRY_COMPARE(order.size(), 1);
+        QCOMPARE(result.failure, Failure::Timeout);
+        QCOMPARE(result.bytesHeard, 0);
+    }
+
+    void aListenOnlyWaitEndsOnceTheAnswersHaveComeIn()
+    {
+        // The broadcast probe: it accepts nothing, and its long wait is for a silent rate only.
+        ScriptedTransport transport;
+        transport.answers = {reply(1)};
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        QVector<QString> order;
+        Transaction transaction = query(0x38, Transaction::Priority::Command, &order, &result);
+        transaction.acceptsReply = [](const QByteArray &) {
+            return false;
+        };
+        transaction.replyTimeout = std::chrono::seconds(600);
+        transaction.afterFirstByte = std::chrono::milliseconds(1);
+        transaction.retryCount = 0;
+        requests->submit(std::move(transaction));
+        QTRY_COMPARE_WITH_TIMEOUT(order.size(), 1, 60000);
+        QCOMPARE(result.failure, Failure::Timeout);
+        QCOMPARE(result.bytesHeard, int(ptk::kReplySize));
     }
 
     void thePermissionMessageExplainsTheDialoutGroup()

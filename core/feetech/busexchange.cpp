@@ -193,6 +193,7 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
     transaction.priority = request.priority;
     transaction.replyTimeout = request.replyTimeout;
     transaction.retryCount = request.retryCount;
+    transaction.afterFirstByte = request.afterFirstByte;
     transaction.silenceExpected = request.silenceExpected;
     if (request.listenOnly) {
         transaction.acceptsReply = [](const QByteArray &) {

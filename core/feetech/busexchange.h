@@ -38,6 +38,8 @@ struct Exchange
     seriallink::Transaction::Priority priority = seriallink::Transaction::Priority::Command;
     std::optional<std::chrono::microseconds> replyTimeout;
     std::optional<int> retryCount;
+    // A scan: replyTimeout is the whole wait for an answer's first byte (see Transaction).
+    std::optional<std::chrono::microseconds> afterFirstByte;
 };
 // The reply arrives decoded: the frame the engine accepted is decoded once, on acceptance.
 using ExchangeDone = std::function<void(const seriallink::TransactionResult &result,

@@ -18,12 +18,102 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
 
+// After the first byte of the broadcast probe's answers: every servo at the rate answers
+// within its return delay, so the rest of the collided bytes are in well before this.
+constexpr std::chrono::microseconds kProbeSettle {2000};
+// How much longer than an opening probe the closing broadcast may wait for its answers.
+constexpr int kClosingPatience = 10;
+// How often one ID may be asked again at one rate: a loaded machine may make a servo late
+// more than once, but a servo that is always too late must not keep the scan going.
+constexpr int kMostRechecks = 4;
+
 } // namespace
 
 BusScan::BusScan(BusExchange &bus, QObject *parent)
     : QObject(parent)
     , m_bus(bus)
-{ }
+{
+    m_clock.start();
+    // Every byte the link hears during a scan passes through the packet log: answers, frames
+    // no exchange was waiting for (a late answer during another servo's identity READ), and
+    // input that came while nothing waited (a late answer between two PINGs).
+    connect(&m_bus.link(), &seriallink::LinkSession::packetLogged, this,
+            [this](const seriallink::PacketLogEntry &entry) {
+                if (!m_scan || entry.bytes.isEmpty())
+                    return;
+                if (entry.direction == seriallink::Direction::Stray)
+                    onStrayBytes(entry.bytes);
+                else if (entry.direction == seriallink::Direction::In)
+                    onFrameHeard(entry.bytes);
+            });
+}
+
+std::chrono::microseconds BusScan::pingWait(qint32 baud) const
+{
+    const bool echo = m_bus.link().engine().echoDetected();
+    const ScanPace none;
+    return (m_scan ? m_scan->pace : none).pingWait(baud, echo, m_bus.scanAllowance());
+}
+
+std::chrono::microseconds BusScan::lateWindow() const
+{
+    // Bytes that name no one may be the late answer of any ID whose wait ended this long ago:
+    // what a scan waited per ID before it measured its link, so that an answer that wait
+    // would have caught is never lost to the shorter one, even garbled.
+    const qint32 baud = m_bus.link().transport().baudRate();
+    return ScanPace::pingWireTime(baud, true) + std::max(m_bus.scanAllowance(), pingWait(baud));
+}
+
+void BusScan::answeredLate(quint8 id)
+{
+    // The answer of the ID being asked is no late one, and a higher ID was not asked yet.
+    if (m_scan && int(id) != m_scan->asking && int(id) <= m_scan->sweptUpTo)
+        askAgain(id);
+}
+
+void BusScan::heardUnnamed()
+{
+    if (!m_scan)
+        return;
+    const qint64 since = m_clock.nsecsElapsed() / 1000 - lateWindow().count();
+    for (const auto &[id, endedUs] : m_scan->silent) {
+        if (endedUs >= since)
+            askAgain(id);
+    }
+}
+
+void BusScan::askAgain(int id)
+{
+    if (m_scan->foundIds.contains(id) || m_scan->recheck.contains(id))
+        return;
+    int &times = m_scan->timesRechecked[id];
+    if (times >= kMostRechecks)
+        return;
+    ++times;
+    m_scan->recheck.append(id);
+}
+
+void BusScan::onFrameHeard(const QByteArray &frame)
+{
+    const auto packet = decodePacket(frame);
+    // A PING's own echo, come late, is no answer.
+    if (packet && frame != feetech::ping(packet->id))
+        answeredLate(packet->id);
+    else if (!packet && !m_scan->probing)
+        heardUnnamed();
+}
+
+void BusScan::onStrayBytes(const QByteArray &bytes)
+{
+    // Each delivery on its own: the start of a frame left over from noise must not swallow
+    // the late answer that comes next. A frame split across two is unnamed bytes.
+    m_strays.discardPending();
+    m_strays.append(bytes);
+    while (auto item = m_strays.next())
+        onFrameHeard(item->bytes);
+    if (m_strays.pendingBytes() > 0 && !m_scan->probing)
+        heardUnnamed();
+}
 
 void BusScan::start(const ScanOptions &options)
 {
@@ -61,6 +151,12 @@ void BusScan::scanBaud(int baudIndex)
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
     m_scan->foundIds.clear(); // the same ID at another rate is another servo
     m_scan->recheck.clear();
+    m_scan->silent.clear();
+    m_scan->timesRechecked.clear();
+    m_scan->asking = -1;
+    m_scan->sweptUpTo = -1;
+    m_scan->answeredAtRate = false;
+    m_strays.discardPending();
     if (!feetech::baudCode(baud) && baud != m_bus.link().transport().baudRate()) {
         end(false, Tr::tr("%1 is not a Feetech baud rate.").arg(baudText(baud)));
         return;
@@ -80,24 +176,13 @@ void BusScan::probe(int baudIndex, int round)
     // any come at all says there is something to find, and when they come tells how quickly
     // this adapter answers. A second round gives a second measurement, so that one slow first
     // exchange does not set the pace.
-    Exchange ask;
-    ask.request = feetech::ping(kBroadcastId);
-    ask.listenOnly = true;
-    ask.silenceExpected = true;
-    ask.replyTimeout = std::max(m_bus.timing().probeAllowance, m_bus.scanAllowance());
-    ask.retryCount = 0;
-    m_bus.exchange(
-        ask,
-        [this, baudIndex, round](const seriallink::TransactionResult &result,
-                                 const std::optional<Packet> &) {
-            if (!m_scan)
-                return;
-            if (result.failure == seriallink::Failure::LinkDown) {
-                end(false, failureText(result));
-                return;
-            }
+    broadcastPing(
+        std::max(m_bus.timing().probeAllowance, m_bus.scanAllowance()),
+        [this, baudIndex, round](const seriallink::TransactionResult &result) {
             if (result.bytesHeard > 0) {
+                m_scan->answeredAtRate = true;
                 m_bus.noteLatency(result.latency);
+                m_scan->pace.noteAnswer(result.latency, m_scan->options.bauds.at(baudIndex));
                 if (round == 0)
                     probe(baudIndex, 1);
                 else
@@ -115,6 +200,44 @@ void BusScan::probe(int baudIndex, int round)
         });
 }
 
+void BusScan::broadcastPing(std::chrono::microseconds wait,
+                            std::function<void(const seriallink::TransactionResult &)> then)
+{
+    Exchange ask;
+    ask.request = feetech::ping(kBroadcastId);
+    ask.listenOnly = true;
+    ask.silenceExpected = true;
+    ask.replyTimeout = wait;
+    // Once the answers begin, the broadcast has what it came for: it ends when they are in.
+    ask.afterFirstByte = kProbeSettle;
+    ask.retryCount = 0;
+    // Its answers collide: bytes that name no one are no late answer of a silent ID.
+    m_scan->probing = true;
+    m_bus.exchange(
+        ask,
+        [this, then](const seriallink::TransactionResult &result, const std::optional<Packet> &) {
+            if (!m_scan)
+                return;
+            m_scan->probing = false;
+            if (result.failure == seriallink::Failure::LinkDown)
+                end(false, failureText(result));
+            else
+                then(result);
+        });
+}
+
+void BusScan::closeSweep(int baudIndex)
+{
+    // The servos answer in the order they were asked: once the answers to a broadcast PING
+    // sent after the last ID are in, every late answer of the sweep is in too, heard and
+    // named. On a busy machine that is what bounds a late answer, not a fixed wait. It costs
+    // one answer time, unless every servo went away meanwhile. The last ID's answer is a late
+    // one now too.
+    m_scan->asking = -1;
+    broadcastPing(m_bus.timing().probeAllowance * kClosingPatience,
+                  [this, baudIndex](const seriallink::TransactionResult &) { recheck(baudIndex); });
+}
+
 void BusScan::scanId(int baudIndex, int id)
 {
     if (!m_scan)
@@ -124,14 +247,20 @@ void BusScan::scanId(int baudIndex, int id)
         return;
     }
     if (id > m_scan->options.lastId) {
-        recheck(baudIndex);
+        if (m_scan->answeredAtRate)
+            closeSweep(baudIndex);
+        else
+            recheck(baudIndex);
         return;
     }
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
-    // A late answer is caught while the next PING waits; the last ID of a rate has no next
-    // PING, so it gets the patience of a recheck (the engine's own reply timeout).
-    const bool lastOfRate = id == m_scan->options.lastId;
-    scanPing(id, lastOfRate ? std::nullopt : std::make_optional(m_bus.scanAllowance()), 0,
+    m_scan->asking = id;
+    m_scan->sweptUpTo = id;
+    // A late answer is caught while a later PING waits (or between two), by its ID, and the
+    // broadcast that closes the sweep waits for the last ones. Where nothing answered that
+    // broadcast (a thorough scan), the last ID gets the patience of a recheck instead.
+    const bool lastOfRate = id == m_scan->options.lastId && !m_scan->answeredAtRate;
+    scanPing(id, lastOfRate ? std::nullopt : std::make_optional(pingWait(baud)), 0,
              [this, baudIndex, id, baud](const seriallink::TransactionResult &result,
                                          const std::optional<Packet> &reply) {
                  const auto advance = [this, baudIndex, id, baud] {
@@ -142,12 +271,20 @@ void BusScan::scanId(int baudIndex, int id)
                      scanId(baudIndex, id + 1);
                  };
                  if (!reply) {
-                     // Something came, but not a clean answer: worth a second, patient look.
-                     if (result.bytesHeard > 0 && !m_scan->recheck.contains(id))
-                         m_scan->recheck.append(id);
+                     if (result.bytesHeard > 0) {
+                         // Something came, but not a clean answer: this ID or one just before
+                         // it (answering late) is worth a second, patient look.
+                         heardUnnamed();
+                         askAgain(id);
+                     }
+                     const qint64 nowUs = m_clock.nsecsElapsed() / 1000;
+                     m_scan->silent.emplace_back(id, nowUs);
+                     while (m_scan->silent.front().second < nowUs - lateWindow().count())
+                         m_scan->silent.pop_front();
                      advance();
                      return;
                  }
+                 m_scan->pace.noteAnswer(result.latency, baud);
                  identifyFound(quint8(id), baud, advance);
              });
 }
@@ -160,13 +297,10 @@ void BusScan::scanPing(int id, std::optional<std::chrono::microseconds> timeout,
     ask.replyId = quint8(id);
     ask.silenceExpected = true;
     ask.replyTimeout = timeout;
+    // A short sweep wait is for the first byte only: an answer that has begun gets its time.
+    if (timeout)
+        ask.afterFirstByte = m_bus.timing().engine.replyTimeout;
     ask.retryCount = retries;
-    // A servo that answered after its wait ended shows up now, named: ask it again later.
-    ask.otherFrame = [this, id](const Packet &packet) {
-        if (m_scan && packet.id < id && !m_scan->foundIds.contains(packet.id)
-            && !m_scan->recheck.contains(packet.id))
-            m_scan->recheck.append(packet.id);
-    };
     m_bus.exchange(ask,
                    [this, then](const seriallink::TransactionResult &result,
                                 const std::optional<Packet> &reply) {
@@ -190,6 +324,7 @@ void BusScan::recheck(int baudIndex)
     }
     const int id = m_scan->recheck.takeFirst();
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
+    m_scan->asking = id;
     // The engine's own, generous reply timeout this time, and one retry.
     scanPing(id, std::nullopt, 1,
              [this, baudIndex, id, baud](const seriallink::TransactionResult &,

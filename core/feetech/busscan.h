@@ -3,16 +3,22 @@
 
 #include "feetech/busexchange.h"
 #include "feetech/bustypes.h"
+#include "feetech/feetechpacket.h"
+#include "feetech/scanpace.h"
+#include "link/streamframer.h"
 
+#include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 
+#include <deque>
 #include <optional>
 
 namespace feetech {
 
 // Asks every ID of a range at every chosen rate and identifies whoever answers. A missing ID
-// costs what the line's measured answer time says, not a fixed wait; servos that answered late
-// or garbled are asked once more, with time to spare, before the scan moves on.
+// costs what the answers heard on this link say (ScanPace), not a fixed wait; servos that
+// answered late or garbled are asked once more, with time to spare, before the scan moves on.
 // Lives in the session's thread; the session runs one scan at a time, as an operation.
 class BusScan : public QObject
 {
@@ -27,6 +33,8 @@ public:
     // The link ended: forget the scan without a word (the session reports it).
     void abandon() { m_scan.reset(); }
     bool isRunning() const { return m_scan.has_value(); }
+    // What a missing ID costs now at `baud`: the wait for the first byte of its answer.
+    std::chrono::microseconds pingWait(qint32 baud) const;
 
 signals:
     void progress(int done, int total, qint32 baud);
@@ -37,12 +45,23 @@ private:
     void scanBaud(int baudIndex);
     void probe(int baudIndex, int round);
     void scanId(int baudIndex, int id);
+    void closeSweep(int baudIndex);
     void recheck(int baudIndex);
+    void broadcastPing(std::chrono::microseconds wait,
+                       std::function<void(const seriallink::TransactionResult &)> then);
     // A scan's PING; the scan ends when the link does, otherwise `then` hears the answer.
     void scanPing(int id, std::optional<std::chrono::microseconds> timeout, int retries,
                   ExchangeDone then);
     void identifyFound(quint8 id, qint32 baud, std::function<void()> then);
     void end(bool completed, const QString &message);
+    // An answer named `id` outside its own wait: it is asked again, patiently.
+    void answeredLate(quint8 id);
+    // Bytes that name no one came: any ID whose wait ended lately may have sent them.
+    void heardUnnamed();
+    void askAgain(int id); // in the recheck after the sweep of this rate
+    void onFrameHeard(const QByteArray &frame);
+    void onStrayBytes(const QByteArray &bytes);
+    std::chrono::microseconds lateWindow() const;
 
     struct State
     {
@@ -54,10 +73,22 @@ private:
         // IDs that answered too late or garbled during the sweep of this rate.
         QVector<int> recheck;
         QVector<int> foundIds;
+        int asking = -1; // the ID of the PING (or identity READ) on its way
+        int sweptUpTo = -1; // the highest ID the sweep of this rate has asked
+        bool answeredAtRate = false; // the opening broadcast PING was answered
+        bool probing = false; // a broadcast PING is on its way
+        QHash<int, int> timesRechecked;
+        // The IDs of this rate that stayed silent, with when their wait ended (m_clock, µs).
+        std::deque<std::pair<int, qint64>> silent;
+        ScanPace pace; // across rates: what the link adds beyond the wire does not change
     };
 
     BusExchange &m_bus;
     std::optional<State> m_scan;
+    QElapsedTimer m_clock;
+    FrameFormat m_format;
+    // Input the engine discarded while no request waited (a late answer between two PINGs).
+    seriallink::StreamFramer m_strays {m_format};
 };
 
 } // namespace feetech

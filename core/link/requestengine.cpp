@@ -48,6 +48,7 @@ RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, De
     connect(&m_transport, &Transport::received, this, &RequestEngine::onReceived);
     connect(&m_transport, &Transport::bytesWritten, this, &RequestEngine::onBytesWritten);
     m_clock.start();
+    m_replyTimer = new PreciseTimer(this);
     m_countersTimer = new QTimer(this);
     m_countersTimer->setSingleShot(true);
     m_countersTimer->setInterval(kCounterPublishInterval);
@@ -172,6 +173,7 @@ void RequestEngine::send()
     m_firstHeardUs = -1;
     m_echoConsumed = false;
     m_sawFrame = false;
+    m_firstByteDeadline = false;
     m_collected.clear();
     ++m_counters.framesSent;
     if (!m_current->logFailuresOnly)
@@ -204,11 +206,29 @@ void RequestEngine::onBytesWritten(qint64 count)
     std::chrono::microseconds wait;
     if (!m_current->expectsReply())
         wait = wireTime(requestSize + echoSize) + m_timing.writeSettle;
+    else if (m_current->afterFirstByte)
+        wait = replyTimeout();
     else
         wait = wireTime(requestSize + echoSize + m_current->expectedReplySize) + replyTimeout();
-    const int waitMs = int((wait.count() + 999) / 1000);
-    QTimer::singleShot(waitMs, Qt::PreciseTimer, this,
-                       [this, generation] { onTimeout(generation); });
+    // Only a scan's wait is cut to the microsecond; every other keeps the whole milliseconds
+    // it always had (telemetry's waits are tuned to them).
+    if (!m_current->afterFirstByte)
+        wait = std::chrono::ceil<std::chrono::milliseconds>(wait);
+    m_replyTimer->start(wait, [this, generation] { onTimeout(generation); });
+    if (m_firstHeardUs >= 0)
+        armAfterFirstByte(); // the answer began before the write was confirmed
+}
+
+void RequestEngine::armAfterFirstByte()
+{
+    if (m_firstByteDeadline || !m_current || !m_current->afterFirstByte
+        || m_state != State::AwaitingReply)
+        return;
+    m_firstByteDeadline = true;
+    const qint64 elapsed = m_clock.nsecsElapsed() / 1000 - m_firstHeardUs;
+    const quint64 generation = m_generation;
+    m_replyTimer->start(*m_current->afterFirstByte - std::chrono::microseconds(elapsed),
+                        [this, generation] { onTimeout(generation); });
 }
 
 void RequestEngine::onReceived(const QByteArray &bytes)
@@ -286,6 +306,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             break;
         }
     }
+    armAfterFirstByte();
     publishCounters();
 }
 
@@ -295,9 +316,12 @@ void RequestEngine::onTimeout(quint64 generation)
         return; // a timer of an exchange that has already ended
     if (m_state == State::AwaitingReply && m_current->expectsReply()) {
         // The answer may be waiting unread; if it completes the exchange, this timer is stale.
+        const bool waitedForFirstByte = !m_firstByteDeadline;
         m_transport.deliverPendingInput();
         if (generation != m_generation || m_state == State::Idle || !m_current)
             return;
+        if (waitedForFirstByte && m_firstByteDeadline)
+            return; // an answer began just now: it gets its own time
     }
     if (m_state == State::AwaitingReply && !m_current->expectsReply()) {
         finish(Failure::None);

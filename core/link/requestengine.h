@@ -3,6 +3,7 @@
 #pragma once
 
 #include "link/linktypes.h"
+#include "link/precisetimer.h"
 #include "link/streamframer.h"
 
 #include <QElapsedTimer>
@@ -72,6 +73,10 @@ struct Transaction
     // Overrides of the engine's timing for this transaction (a scan waits less than a write).
     std::optional<std::chrono::microseconds> replyTimeout;
     std::optional<int> retryCount;
+    // Set by a scan: replyTimeout is then the whole wait for the first byte of an answer, from
+    // the request leaving (the caller has counted the wire time in), and once a byte has come
+    // the answer gets this long from that byte to complete, however short the first wait was.
+    std::optional<std::chrono::microseconds> afterFirstByte;
     // A scan asks where most IDs are empty and several servos may answer at once: its
     // timeouts and garbled answers say nothing about the link, so the counters skip them.
     bool silenceExpected = false;
@@ -136,6 +141,7 @@ private:
              const QString &note = {});
     void publishCounters();
     void heard(int bytes);
+    void armAfterFirstByte();
     bool echoExpected() const;
     std::chrono::microseconds wireTime(int bytes) const;
     std::chrono::microseconds replyTimeout() const;
@@ -162,6 +168,7 @@ private:
     std::chrono::microseconds m_replyWireTime {0};
     bool m_echoConsumed = false;
     bool m_sawFrame = false;
+    bool m_firstByteDeadline = false; // afterFirstByte: the wait now runs from the first byte
     QVector<QByteArray> m_collected; // answers so far of a request several servos answer
     QElapsedTimer m_clock;
     qint64 m_quietUntilMs = 0; // no request goes out before this: a late reply may be on its way
@@ -169,6 +176,7 @@ private:
     bool m_nextScheduled = false;
     bool m_countersDirty = false;
     QTimer *m_countersTimer = nullptr; // a child, so it follows the engine to its thread
+    PreciseTimer *m_replyTimer = nullptr; // a child too; a scan waits less than a millisecond
 };
 
 } // namespace seriallink
