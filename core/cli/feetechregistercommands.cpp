@@ -80,6 +80,11 @@ int FeetechCommand::scan(const QString &what, const QStringList &operands)
         m_output.out.flush();
     });
     if (m_output.json) {
+        // A servo asked again after a late answer is found after its neighbours: the list
+        // comes in the tree's order, fastest rate first, then by ID.
+        std::stable_sort(found.begin(), found.end(), [](const ServoInfo &a, const ServoInfo &b) {
+            return a.baud != b.baud ? a.baud > b.baud : a.id < b.id;
+        });
         QJsonArray array;
         for (const ServoInfo &servo : std::as_const(found))
             array.append(servoJson(servo));
