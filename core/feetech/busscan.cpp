@@ -48,11 +48,11 @@ BusScan::BusScan(BusExchange &bus, QObject *parent)
             });
 }
 
-std::chrono::microseconds BusScan::pingWait(qint32 baud) const
+std::chrono::microseconds BusScan::pingWait(qint32 baud, bool patient) const
 {
     const bool echo = m_bus.link().engine().echoDetected();
-    const ScanPace none;
-    return (m_scan ? m_scan->pace : none).pingWait(baud, echo, m_bus.scanAllowance());
+    const ScanPace none; // measures nothing: its wait is the whole allowance
+    return (m_scan && !patient ? m_scan->pace : none).pingWait(baud, echo, m_bus.scanAllowance());
 }
 
 std::chrono::microseconds BusScan::lateWindow() const
@@ -258,9 +258,14 @@ void BusScan::scanId(int baudIndex, int id)
     m_scan->sweptUpTo = id;
     // A late answer is caught while a later PING waits (or between two), by its ID, and the
     // broadcast that closes the sweep waits for the last ones. Where nothing answered that
-    // broadcast (a thorough scan), the last ID gets the patience of a recheck instead.
-    const bool lastOfRate = id == m_scan->options.lastId && !m_scan->answeredAtRate;
-    scanPing(id, lastOfRate ? std::nullopt : std::make_optional(pingWait(baud)), 0,
+    // broadcast (a thorough scan), the last ID gets the patience of a recheck instead. Where
+    // something did, the last ID still waits the whole allowance: a late answer of its own
+    // would collide with the broadcast's answers and name no one.
+    const bool lastId = id == m_scan->options.lastId;
+    const auto wait = !lastId    ? std::make_optional(pingWait(baud))
+        : m_scan->answeredAtRate ? std::make_optional(pingWait(baud, true))
+                                 : std::nullopt;
+    scanPing(id, wait, 0,
              [this, baudIndex, id, baud](const seriallink::TransactionResult &result,
                                          const std::optional<Packet> &reply) {
                  const auto advance = [this, baudIndex, id, baud] {

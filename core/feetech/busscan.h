@@ -34,7 +34,8 @@ public:
     void abandon() { m_scan.reset(); }
     bool isRunning() const { return m_scan.has_value(); }
     // What a missing ID costs now at `baud`: the wait for the first byte of its answer.
-    std::chrono::microseconds pingWait(qint32 baud) const;
+    // `patient`: the whole allowance, whatever the link has shown.
+    std::chrono::microseconds pingWait(qint32 baud, bool patient = false) const;
 
 signals:
     void progress(int done, int total, qint32 baud);

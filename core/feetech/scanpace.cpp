@@ -39,7 +39,7 @@ std::chrono::microseconds ScanPace::typicalExtra() const
     // what the late-answer recheck is there for).
     std::vector<std::chrono::microseconds> sorted(m_extras.begin(), m_extras.end());
     std::sort(sorted.begin(), sorted.end());
-    return sorted.at((sorted.size() - 1) / 2);
+    return sorted.at(sorted.size() / 2);
 }
 
 std::chrono::microseconds ScanPace::pingWait(qint32 baud, bool echo,

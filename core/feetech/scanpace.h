@@ -31,7 +31,8 @@ public:
     void noteAnswer(std::chrono::microseconds latency, qint32 baud);
     void clear() { m_extras.clear(); }
     bool measured() const { return !m_extras.empty(); }
-    // The median of the recent times beyond the wire time; zero before any answer.
+    // The median of the recent times beyond the wire time (the upper one of an even count:
+    // with two answers, the slower); zero before any answer.
     std::chrono::microseconds typicalExtra() const;
     // The wait for the first byte of a PING's answer at `baud`, from the moment the request
     // left, wire time included. Without a measurement it is the cap's.

@@ -112,6 +112,12 @@ QString ConnectionBar::port() const
 
 void ConnectionBar::setPort(const QString &port)
 {
+    m_portSet = true;
+    selectPort(port);
+}
+
+void ConnectionBar::selectPort(const QString &port)
+{
     const int index = m_port->findData(port);
     if (index >= 0)
         m_port->setCurrentIndex(index);
@@ -156,16 +162,20 @@ void ConnectionBar::refreshPorts()
         ports.append(info.systemLocation());
         descriptions.append(info.description());
     }
-    if (ports == m_knownPorts && m_port->count() > 0)
+    if (ports == m_knownPorts && m_port->count() > 0) {
+        m_portsListed = true;
         return;
+    }
     showPorts(ports, descriptions);
+    m_portsListed = true;
 }
 
 void ConnectionBar::showPorts(const QStringList &ports, const QStringList &descriptions)
 {
     m_knownPorts = ports;
-    // Rebuilding the list must not lose what the user chose or is typing.
-    const QString chosen = port();
+    // Rebuilding the list must not lose what the user chose or is typing; the first list of
+    // the system's ports starts at its first port, unless a port was asked for.
+    const QString chosen = m_portsListed || m_portSet ? port() : QString();
     const QSignalBlocker quiet(m_port);
     m_port->clear();
     for (int i = 0; i < ports.size(); ++i) {
@@ -178,5 +188,5 @@ void ConnectionBar::showPorts(const QStringList &ports, const QStringList &descr
     m_port->addItem(tr("Simulated Feetech bus"), kSimulatedFeetechPort);
     m_port->addItem(tr("Simulated SO-101 arm"), kSimulatedArmPort);
     if (!chosen.isEmpty())
-        setPort(chosen);
+        selectPort(chosen);
 }

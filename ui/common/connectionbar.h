@@ -44,6 +44,8 @@ signals:
 private:
     // The port list: `ports` (with their `descriptions`), then the simulated buses.
     void showPorts(const QStringList &ports, const QStringList &descriptions);
+    // Selects `port` in the list, or types it when it is not listed.
+    void selectPort(const QString &port);
 
     QComboBox *m_port = nullptr;
     QComboBox *m_baud = nullptr;
@@ -52,5 +54,7 @@ private:
     QPushButton *m_connect = nullptr;
     QTimer *m_refresh = nullptr;
     QStringList m_knownPorts;
+    bool m_portsListed = false; // the system's ports were asked for at least once
+    bool m_portSet = false; // setPort was called: the first listing keeps that port
     bool m_active = false;
 };
