@@ -77,6 +77,15 @@ private:
         return memory;
     }
 
+    // Scans IDs 0-2 at 1 Mbps only.
+    bool scanIdsUpTo2At1M()
+    {
+        feetech::ScanOptions options;
+        options.lastId = 2;
+        options.bauds = {k1M};
+        return scan(options);
+    }
+
     std::optional<ServoInfo> found(quint8 id) const
     {
         for (const ServoInfo &servo : m_found) {
@@ -207,10 +216,7 @@ private slots:
 
     void aTableReadInOneReadGivesTheValuesOfAReadPerBlock()
     {
-        feetech::ScanOptions options;
-        options.lastId = 2;
-        options.bauds = {k1M};
-        QVERIFY(scan(options));
+        QVERIFY(scanIdsUpTo2At1M());
         const ServoInfo servo = *found(1);
         m_simulator->call([](sim::Simulator &simulator) {
             simulator.feetechBus()->findServo(1)->setValue(u"position_offset", -321);
@@ -233,10 +239,7 @@ private slots:
 
     void aServoRefusingLongReadsIsReadBlockByBlockFromThenOn()
     {
-        feetech::ScanOptions options;
-        options.lastId = 2;
-        options.bauds = {k1M};
-        QVERIFY(scan(options));
+        QVERIFY(scanIdsUpTo2At1M());
         const ServoInfo servo = *found(1);
         const Memory answered = readAll(servo);
         m_simulator->call([](sim::Simulator &simulator) {

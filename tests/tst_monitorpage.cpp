@@ -1,5 +1,6 @@
 // GUI tests of the Monitor page: bounded plot memory under a long synthetic stream, CSV
 // recordings that parse back, PNG export, and live monitoring of a simulated bus.
+#include "feedbacksample.h"
 #include "feetechbus.h"
 #include "feetechgui/monitorpage.h"
 #include "feetechgui/telemetryplot.h"
@@ -26,17 +27,6 @@ constexpr int kServos = 6;
 constexpr int kRateHz = 100;
 constexpr qint64 kPeriodUs = 1000000 / kRateHz;
 
-// A plausible sample of servo `id` at `us`, every quantity reported.
-FeedbackSample makeSample(quint8 id, qint64 us, double position)
-{
-    FeedbackSample sample;
-    sample.id = id;
-    sample.baud = k1M;
-    sample.steadyUs = us;
-    sample.values = {position, 120.0, 8.5, 12.1, 35.0, 40.0};
-    return sample;
-}
-
 // `seconds` of samples for `servos` servos at kRateHz, fed to the page in the stream's batches
 // of 20 ms, starting at `startUs`; returns the time after the last one.
 qint64 feed(MonitorPage &page, qint64 startUs, int seconds, int servos = kServos)
@@ -47,7 +37,8 @@ qint64 feed(MonitorPage &page, qint64 startUs, int seconds, int servos = kServos
     for (int cycle = 0; cycle < cycles; ++cycle) {
         const qint64 us = startUs + cycle * kPeriodUs;
         for (int id = 1; id <= servos; ++id)
-            batch.append(makeSample(quint8(id), us, 2048 + 1000 * std::sin(cycle / 50.0 + id)));
+            batch.append(testsupport::feedbackSample(quint8(id), us,
+                                                     2048 + 1000 * std::sin(cycle / 50.0 + id)));
         if ((cycle + 1) % kCyclesPerBatch == 0) {
             page.addSamples(batch);
             batch.clear();
@@ -180,7 +171,7 @@ private slots:
         qint64 now = 5000000;
         now = feed(*m_page, now, 60, 2);
         // One short spike far above the rest (which stay within 1048..3048).
-        FeedbackSample spike = makeSample(1, now, 4000);
+        FeedbackSample spike = testsupport::feedbackSample(1, now, 4000);
         m_page->addSamples({spike});
         now = feed(*m_page, now + kPeriodUs, 60, 2);
         plot->refresh();
@@ -285,12 +276,13 @@ private slots:
         QVERIFY(m_page->isRecording());
         const qint64 start = m_page->recordingStartUs();
         // Taken before recording started: not part of it.
-        m_page->addSamples({makeSample(1, start - 5000, 1)});
+        m_page->addSamples({testsupport::feedbackSample(1, start - 5000, 1)});
         QVector<FeedbackSample> written;
         for (int i = 0; i < 50; ++i) {
             QVector<FeedbackSample> batch;
             for (quint8 id = 1; id <= 3; ++id) {
-                FeedbackSample sample = makeSample(id, start + i * 10000 + id * 100, 2048 + i);
+                FeedbackSample sample =
+                    testsupport::feedbackSample(id, start + i * 10000 + id * 100, 2048 + i);
                 sample.values[int(Quantity::Speed)] = -120.5 + i;
                 sample.values[int(Quantity::Voltage)] = 11.9;
                 if (id == 3)

@@ -1,5 +1,6 @@
 // Unit tests of the hand-painted telemetry plot: min/max decimation to pixel columns, repaints
 // coalesced to one per frame, a paused plot that stays still, zoom and reset, and PNG export.
+#include "feedbacksample.h"
 #include "feetechgui/telemetrybuffer.h"
 #include "feetechgui/telemetryplot.h"
 
@@ -17,26 +18,14 @@ using feetech::Quantity;
 
 namespace {
 
-constexpr qint32 k1M = 1000000;
-
-FeedbackSample makeSample(quint8 id, qint64 us, double position)
-{
-    FeedbackSample sample;
-    sample.id = id;
-    sample.baud = k1M;
-    sample.steadyUs = us;
-    sample.values = {position, 120.0, 8.5, 12.1, 35.0, 40.0};
-    return sample;
-}
-
 // `count` batches of one sample per servo, 10 ms apart, from `startUs`; returns the time after.
 qint64 feed(TelemetryPlot &plot, qint64 startUs, int count, int servos = 2)
 {
     for (int i = 0; i < count; ++i) {
         QVector<FeedbackSample> batch;
         for (int id = 1; id <= servos; ++id)
-            batch.append(
-                makeSample(quint8(id), startUs + i * 10000, 2048 + 500 * std::sin(i / 20.0)));
+            batch.append(testsupport::feedbackSample(quint8(id), startUs + i * 10000,
+                                                     2048 + 500 * std::sin(i / 20.0)));
         plot.addSamples(batch);
     }
     return startUs + count * 10000;
@@ -211,7 +200,8 @@ private slots:
 
     void valueAxisFitsTheDataInViewWithRoundBounds()
     {
-        m_plot->addSamples({makeSample(1, 0, 1000.0), makeSample(1, 10000, 3000.0)});
+        m_plot->addSamples({testsupport::feedbackSample(1, 0, 1000.0),
+                            testsupport::feedbackSample(1, 10000, 3000.0)});
         m_plot->refresh();
         const auto [low, high] = m_plot->valueRange(Quantity::Position);
         QVERIFY(low < 1000.0 && low > 800.0);
