@@ -98,6 +98,7 @@ private:
         seriallink::EngineTiming timing;
         timing.replyTimeout = std::chrono::milliseconds(5);
         timing.retryCount = 2;
+        timing.discardImpossiblyEarlyAnswers = false; // this transport answers at once
         result->setTiming(timing);
         return result;
     }
@@ -163,6 +164,29 @@ private slots:
         QVERIFY(result.ok());
         QCOMPARE(result.attempts, 2);
         QCOMPARE(ptk::decodeReply(result.reply)->word0, quint16(42));
+    }
+
+    void anAnswerCompleteSoonerThanTheWireAllowsIsALateOneAndDiscarded()
+    {
+        // A late reply of an earlier query lands just after this query went out; the real
+        // answer comes once query and answer have crossed the wire (19 bytes: 1.65 ms).
+        ScriptedTransport transport;
+        transport.answers = {reply(7)};
+        auto requests = engine(transport);
+        seriallink::EngineTiming timing = requests->timing();
+        timing.discardImpossiblyEarlyAnswers = true;
+        timing.replyTimeout = std::chrono::milliseconds(2000);
+        requests->setTiming(timing);
+        TransactionResult result = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &result));
+        QTRY_VERIFY(!transport.written.isEmpty());
+        QTimer::singleShot(20, Qt::PreciseTimer, &transport,
+                           [&transport] { transport.deliver(reply(8)); });
+        QTRY_VERIFY(result.ok());
+        QCOMPARE(ptk::decodeReply(result.reply)->word0, quint16(8));
+        QCOMPARE(result.attempts, 1);
+        QCOMPARE(requests->counters().lateReplies, 1);
+        QCOMPARE(requests->counters().discardedBytes, ptk::kReplySize);
     }
 
     void strayInputIsDiscardedBeforeEachRequest()

@@ -30,13 +30,15 @@ struct LinkCounters
     qint64 failures = 0; // transactions given up after every retry
     qint64 discardedBytes = 0; // stray input thrown away
     qint64 echoBytes = 0; // our own bytes removed by echo suppression
+    qint64 lateReplies = 0; // answers that came after their request had ended, discarded
 
     bool operator==(const LinkCounters &other) const
     {
         return framesSent == other.framesSent && repliesOk == other.repliesOk
             && checksumErrors == other.checksumErrors && timeouts == other.timeouts
             && retries == other.retries && failures == other.failures
-            && discardedBytes == other.discardedBytes && echoBytes == other.echoBytes;
+            && discardedBytes == other.discardedBytes && echoBytes == other.echoBytes
+            && lateReplies == other.lateReplies;
     }
     bool operator!=(const LinkCounters &other) const { return !(*this == other); }
 };

@@ -178,6 +178,7 @@ void RequestEngine::send()
     ++m_counters.framesSent;
     if (!m_current->logFailuresOnly)
         log(Direction::Out, m_current->request);
+    m_sentAtUs = m_clock.nsecsElapsed() / 1000;
     m_transport.write(m_current->request);
     publishCounters();
     // A port that never confirms the write must not hang the queue.
@@ -261,6 +262,17 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 m_counters.echoBytes += item->bytes.size();
                 if (!m_current->logFailuresOnly)
                     log(Direction::Echo, item->bytes);
+                break;
+            }
+            if (cameTooSoon(int(item->bytes.size()))) {
+                // Nothing can answer before the request and the answer have crossed the wire:
+                // this is a late answer to an earlier request (PTK replies name no query).
+                heard(int(item->bytes.size()));
+                m_counters.discardedBytes += item->bytes.size();
+                ++m_counters.lateReplies;
+                log(Direction::Stray, item->bytes,
+                    Tr::tr("came sooner than any answer to this request could: a late answer "
+                           "to an earlier one, discarded"));
                 break;
             }
             if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown && !m_sawFrame)
@@ -432,6 +444,18 @@ int RequestEngine::retryCount() const
     if (m_current && m_current->retryCount)
         return *m_current->retryCount;
     return m_timing.retryCount;
+}
+
+bool RequestEngine::cameTooSoon(int frameBytes) const
+{
+    if (!m_timing.discardImpossiblyEarlyAnswers)
+        return false;
+    // The write was asked for at m_sentAtUs: its bytes cannot have left sooner, and a frame is
+    // seen only once its last byte is in, however late the program hears of it. A tenth off
+    // for clocks that run a little fast.
+    const auto earliest =
+        (wireTime(int(m_current->request.size())) + wireTime(frameBytes)) * 9 / 10;
+    return m_clock.nsecsElapsed() / 1000 - m_sentAtUs < earliest.count();
 }
 
 std::chrono::microseconds RequestEngine::wireTime(int bytes) const

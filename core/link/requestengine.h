@@ -35,6 +35,10 @@ struct EngineTiming
     // while nothing waits. PTK needs this (its replies name no query); Feetech replies carry
     // the servo's ID, so a late one is recognised and discarded without the wait.
     bool settleAfterTimeout = true;
+    // A frame complete sooner after the request than the request and the frame take to cross
+    // the wire answers an earlier request (late): it is discarded. Off only for a test
+    // transport that answers instantly.
+    bool discardImpossiblyEarlyAnswers = true;
 };
 
 enum class Failure { None, Timeout, LinkDown, Cancelled };
@@ -144,6 +148,8 @@ private:
     void armAfterFirstByte();
     bool echoExpected() const;
     std::chrono::microseconds wireTime(int bytes) const;
+    // Whether a frame of this size, complete now, came too soon to answer the request in flight.
+    bool cameTooSoon(int frameBytes) const;
     std::chrono::microseconds replyTimeout() const;
     int retryCount() const;
 
@@ -161,6 +167,7 @@ private:
     State m_state = State::Idle;
     int m_attempts = 0;
     qint64 m_writtenBytes = 0;
+    qint64 m_sentAtUs = 0; // when the request was handed to the port
     qint64 m_writtenAtUs = 0; // when the whole request had left
     qint64 m_firstHeardUs = -1; // when the first byte other than the echo came
     int m_bytesHeard = 0;

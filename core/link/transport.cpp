@@ -95,18 +95,32 @@ void SerialTransport::onError(QSerialPort::SerialPortError error)
 {
     if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError)
         return;
-    if (error == QSerialPort::ReadError && !isHungUp()) {
-        // QSerialPort calls a read that finds nothing an error, with whatever errno was left
-        // from before. That happens when input it was told about was flushed first (a late
-        // reply discarded before the next request): the port is fine.
+    if ((error == QSerialPort::ReadError || error == QSerialPort::ResourceError) && !isHungUp()) {
+        // QSerialPort calls a read that finds nothing an error: a ReadError with whatever errno
+        // was left from before, or, when the read says EAGAIN, a ResourceError ("the device
+        // went away"). That happens when input it was told about was read first (a late reply
+        // discarded before the next request, a wait that looked): the port is fine. After a
+        // ResourceError QSerialPort stops watching for input; a read starts it again, once it
+        // has finished with this one.
         qCDebug(lcLink) << "read found nothing; not an error" << m_port->errorString();
         m_port->clearError();
+        if (error == QSerialPort::ResourceError)
+            QMetaObject::invokeMethod(this, &SerialTransport::resumeReading, Qt::QueuedConnection);
         return;
     }
     const QString message = portErrorMessage(error, m_port->portName(), m_port->errorString());
-    qCDebug(lcLink) << "port error" << error << message;
+    qCDebug(lcLink) << "port error" << error << m_port->errorString() << message;
     m_port->clearError();
     emit failed(message, isLostError(error));
+}
+
+void SerialTransport::resumeReading()
+{
+    if (!m_port->isOpen())
+        return;
+    const QByteArray bytes = m_port->readAll(); // re-arms QSerialPort's read notification
+    if (!bytes.isEmpty())
+        emit received(bytes);
 }
 
 bool SerialTransport::isHungUp() const

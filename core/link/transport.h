@@ -58,6 +58,8 @@ private:
     // The device is gone or closed on the far side (a pty whose other end closed, an adapter
     // unplugged): a read error then means the link is lost.
     bool isHungUp() const;
+    // Reads what the port holds and watches for input again (after a spurious ResourceError).
+    void resumeReading();
 
     QSerialPort *m_port = nullptr;
 };
