@@ -39,6 +39,24 @@ private slots:
         }
     }
 
+    void aLostRequestIsNeverHeardUntilTheFaultsAreCleared()
+    {
+        auto opts = options(QStringLiteral("lost"));
+        QString error;
+        const auto lost = sim::FaultSettings::parse(QStringLiteral("lost=1"), &error);
+        QVERIFY2(lost && lost->any(), qPrintable(error));
+        opts.faults = *lost;
+        testsupport::ConnectedSimulator simulator;
+        QVERIFY2(simulator.start(opts, 115200), qPrintable(simulator.error));
+        const QByteArray query = bytes(specvectors::kPtkExchanges[0].query);
+        QVERIFY(simulator.client.exchange(query, ptk::kReplySize, 300).isEmpty());
+        QTRY_COMPARE(testsupport::logLinesStartingWith(opts.logPath, QStringLiteral("lost")).size(),
+                     1);
+        simulator.simulator.call([](sim::Simulator &running) { running.setFaults({}, 1); });
+        QCOMPARE(simulator.client.exchange(query, ptk::kReplySize),
+                 bytes(specvectors::kPtkExchanges[0].reply));
+    }
+
     void aWriteIsNeverAnsweredAndTheNextReadShowsTheNewValue()
     {
         sim::SimulatorThread simulator;

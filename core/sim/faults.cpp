@@ -1,4 +1,5 @@
-// Fault injection: drop, corrupt, truncate, noise and delay, from one seeded generator.
+// Fault injection: drop, corrupt, truncate, noise and delay of replies from one seeded
+// generator, and lost requests from another.
 #include "sim/faults.h"
 
 #include <QCoreApplication>
@@ -46,10 +47,12 @@ std::optional<FaultSettings> FaultSettings::parse(const QString &text, QString *
             settings.truncate = value;
         else if (name == QLatin1String("noise"))
             settings.noise = value;
+        else if (name == QLatin1String("lost"))
+            settings.lost = value;
         else
-            return fail(
-                Tr::tr("--faults: unknown fault \"%1\" (drop, corrupt, truncate, noise, delay)")
-                    .arg(name));
+            return fail(Tr::tr("--faults: unknown fault \"%1\" (drop, corrupt, truncate, noise, "
+                               "delay, lost)")
+                            .arg(name));
     }
     return settings;
 }
@@ -57,7 +60,13 @@ std::optional<FaultSettings> FaultSettings::parse(const QString &text, QString *
 FaultInjector::FaultInjector(const FaultSettings &settings, quint32 seed)
     : m_settings(settings)
     , m_random(seed)
+    , m_requestRandom(seed ^ 0x5EEDu)
 { }
+
+bool FaultInjector::loseRequest()
+{
+    return m_requestRandom.generateDouble() < m_settings.lost;
+}
 
 FaultOutcome FaultInjector::apply(const QByteArray &reply)
 {

@@ -16,10 +16,14 @@ struct FaultSettings
     double truncate = 0; // probability a reply is cut short
     double noise = 0; // probability stray bytes precede a reply
     int delayMs = 0; // each reply is late by a random 0..delayMs milliseconds
+    double lost = 0; // probability a host frame never reaches the servos (noise on the way there)
 
-    bool any() const { return drop > 0 || corrupt > 0 || truncate > 0 || noise > 0 || delayMs > 0; }
+    bool any() const
+    {
+        return drop > 0 || corrupt > 0 || truncate > 0 || noise > 0 || delayMs > 0 || lost > 0;
+    }
 
-    // "drop=0.2,corrupt=0.1,delay=30"; nothing (and *error) on a bad spec.
+    // "drop=0.2,corrupt=0.1,delay=30,lost=0.1"; nothing (and *error) on a bad spec.
     static std::optional<FaultSettings> parse(const QString &text, QString *error);
 };
 
@@ -39,10 +43,14 @@ public:
     // The same seed and the same sequence of replies give the same outcomes, always: every reply
     // draws the same number of random values whatever happens to it.
     FaultOutcome apply(const QByteArray &reply);
+    // Whether the next host frame is lost on its way to the servos; from a generator of its
+    // own, so requests never shift the replies' outcomes.
+    bool loseRequest();
 
 private:
     FaultSettings m_settings;
     QRandomGenerator m_random;
+    QRandomGenerator m_requestRandom;
 };
 
 } // namespace sim

@@ -125,6 +125,16 @@ void Simulator::advanceNow()
     }
 }
 
+void Simulator::setFaults(const FaultSettings &faults, quint32 seed)
+{
+    m_options.faults = faults;
+    m_options.seed = seed;
+    if (faults.any())
+        m_faults.emplace(faults, seed);
+    else
+        m_faults.reset();
+}
+
 void Simulator::onReceived(const QByteArray &bytes)
 {
     const qint64 now = nowUs();
@@ -139,6 +149,10 @@ void Simulator::onReceived(const QByteArray &bytes)
     while (auto item = m_framer->next()) {
         switch (item->kind) {
         case seriallink::StreamItem::Kind::Frame: {
+            if (m_faults && m_faults->loseRequest()) {
+                m_log.write(now, "lost", item->bytes, QStringLiteral("lost on its way"));
+                break;
+            }
             m_log.write(now, "in", item->bytes);
             respond(m_device->handleFrame(item->bytes, hostBaud, now), hostBaud, m_inputEndUs);
             break;

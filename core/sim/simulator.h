@@ -95,6 +95,8 @@ public:
     VirtualPtkServo *ptkServo(); // null on a Feetech bus
     VirtualFeetechBus *feetechBus(); // null for PTK
     void powerCycle();
+    // Changes the faults from now on (none: a clean link), with a new seed.
+    void setFaults(const FaultSettings &faults, quint32 seed);
     // Brings the devices (and the hand) to the present moment; the timer does it every 10 ms.
     void advanceNow();
 
