@@ -16,6 +16,7 @@ namespace {
 constexpr qint32 k1M = 1000000;
 
 const QString kMaxTemperature = QStringLiteral("max_temperature");
+const QString kAcceleration = QStringLiteral("acceleration");
 
 } // namespace
 
@@ -202,7 +203,7 @@ private slots:
         m_client->stopMonitor();
     }
 
-    void aWriteThatGoesUnansweredIsMarkedFailedAndKeepsTheEdit()
+    void anEepromWriteWhoseUnlockGoesUnansweredIsFailedAndKeepsTheEdit()
     {
         setSimulatorValue(2, u"id", 30); // servo 2 is no longer there
         QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
@@ -211,9 +212,50 @@ private slots:
         const OperationResult result = nextResult(finished);
         QCOMPARE(result.operation, feetech::Operation::Write);
         QVERIFY(!result.ok);
+        QVERIFY(!result.writesSent); // the register write never went out
         QCOMPARE(parameters(1).state(kMaxTemperature), State::Failed);
         QCOMPARE(*parameters(1).pendingValue(kMaxTemperature), 66);
         QVERIFY(!m_client->isBusy());
+    }
+
+    void aRamWriteThatGoesUnansweredIsUnknownUntilAReadSettlesIt()
+    {
+        setSimulatorValue(2, u"id", 30); // servo 2 is no longer there
+        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        QVERIFY(parameters(1).edit(kAcceleration, 40));
+        QVERIFY(m_client->apply(1));
+        const OperationResult result = nextResult(finished);
+        QVERIFY(!result.ok);
+        QVERIFY(result.writesSent);
+        // It went out and nothing answered: whether it landed is not known.
+        QCOMPARE(parameters(1).state(kAcceleration), State::Unknown);
+        QCOMPARE(*parameters(1).pendingValue(kAcceleration), 40);
+        // Back at its ID, the servo is read: it never got the write.
+        setSimulatorValue(30, u"id", 2);
+        m_client->readServo(1);
+        QTRY_COMPARE_WITH_TIMEOUT(parameters(1).state(kAcceleration), State::Failed, 10000);
+        QCOMPARE(*parameters(1).pendingValue(kAcceleration), 40);
+    }
+
+    void aWriteWhoseAnswersAreLostButThatLandedIsSettledVerifiedByARead()
+    {
+        m_simulator->call([](sim::Simulator &simulator) {
+            sim::FaultSettings faults;
+            faults.drop = 1.0; // every answer lost; the requests still arrive
+            simulator.setFaults(faults, 3);
+        });
+        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        QVERIFY(parameters(0).edit(kAcceleration, 41));
+        QVERIFY(m_client->apply(0));
+        const OperationResult result = nextResult(finished);
+        QVERIFY(!result.ok);
+        QVERIFY(result.writesSent);
+        QCOMPARE(parameters(0).state(kAcceleration), State::Unknown);
+        QCOMPARE(simulatorValue(1, kAcceleration), 41);
+        m_simulator->call([](sim::Simulator &simulator) { simulator.setFaults({}, 1); });
+        m_client->readServo(0);
+        QTRY_COMPARE_WITH_TIMEOUT(parameters(0).state(kAcceleration), State::Verified, 10000);
+        QVERIFY(!parameters(0).pendingValue(kAcceleration));
     }
 
     void writeValuesLeavesPendingEditsAlone()
@@ -265,7 +307,7 @@ private slots:
                                   seriallink::ConnectionState::Disconnected, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!busy.isEmpty() && !busy.last().at(0).toBool(), 10000);
         QVERIFY(!m_client->isBusy());
-        QCOMPARE(parameters(0).state(kMaxTemperature), State::Failed);
+        QCOMPARE(parameters(0).state(kMaxTemperature), State::Failed); // the unlock never answered
         QCOMPARE(*parameters(0).pendingValue(kMaxTemperature), 66);
         // Nothing of the old work is left to be matched with new results.
         setSimulatorValue(30, u"id", 1);

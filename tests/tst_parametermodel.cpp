@@ -138,6 +138,37 @@ private slots:
         QCOMPARE(parameters.takeWritePlan().size(), 1);
     }
 
+    void anUnknownWriteIsSettledVerifiedByAReadThatShowsIt()
+    {
+        model::ParameterModel parameters;
+        parameters.setDefinitions(definitions());
+        parameters.setDeviceValue(QStringLiteral("gain"), 3);
+        QVERIFY(parameters.edit(QStringLiteral("gain"), 5));
+        QCOMPARE(parameters.takeWritePlan().size(), 1);
+        parameters.markUnknown(QStringLiteral("gain"));
+        QCOMPARE(parameters.state(QStringLiteral("gain")), State::Unknown);
+        QCOMPARE(parameters.pendingValue(QStringLiteral("gain")).value_or(-1), 5);
+        QVERIFY(!model::ParameterModel::stateName(State::Unknown).isEmpty());
+        parameters.setDeviceValue(QStringLiteral("gain"), 5);
+        QCOMPARE(parameters.state(QStringLiteral("gain")), State::Verified);
+        QVERIFY(!parameters.pendingValue(QStringLiteral("gain")));
+        QVERIFY(!parameters.hasEdits());
+    }
+
+    void anUnknownWriteIsSettledFailedByAReadThatShowsTheOldValue()
+    {
+        model::ParameterModel parameters;
+        parameters.setDefinitions(definitions());
+        parameters.setDeviceValue(QStringLiteral("gain"), 3);
+        QVERIFY(parameters.edit(QStringLiteral("gain"), 5));
+        QCOMPARE(parameters.takeWritePlan().size(), 1);
+        parameters.markUnknown(QStringLiteral("gain"));
+        parameters.setDeviceValue(QStringLiteral("gain"), 3);
+        QCOMPARE(parameters.state(QStringLiteral("gain")), State::Failed);
+        QCOMPARE(parameters.pendingValue(QStringLiteral("gain")).value_or(-1), 5);
+        QCOMPARE(parameters.takeWritePlan().size(), 1); // to try again
+    }
+
     void revertDropsEditsAndTellsTheViews()
     {
         model::ParameterModel parameters;

@@ -124,6 +124,9 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
         steps.push_back(counted(holdBeforeTorqueOn(m_bus, target)));
     if (eeprom)
         steps.push_back(counted(m_bus.lock(target, false)));
+    // From here on a failure leaves the outcome open: a write may have landed unacknowledged.
+    auto sent = std::make_shared<bool>(false);
+    steps.push_back(BusExchange::markDone(sent));
     for (const RegisterWrite &item : writes)
         steps.push_back(
             counted(m_bus.write(servo.id, item.address, item.bytes, servo.repliesToWrites(),
@@ -134,22 +137,64 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
         steps.push_back(counted(
             m_bus.read(target, item.address, int(item.bytes.size()), ReadSource::ReadBack)));
     emit progress(0, total);
-    m_bus.runSteps(std::move(steps),
-                   [this, finish, servo, target, eeprom](bool ok, const QString &message) {
-                       if (ok || !eeprom) {
-                           finish({Operation::Write,
-                                   ok,
-                                   ok ? Tr::tr("Written and read back.") : message,
-                                   servo,
-                                   {}});
-                           return;
-                       }
-                       // Never leave the EEPROM open: lock it again, whatever failed.
-                       m_bus.runSteps({m_bus.lock(target, true)},
-                                      [finish, servo, message](bool, const QString &) {
-                                          finish({Operation::Write, false, message, servo, {}});
-                                      });
-                   });
+    m_bus.runSteps(
+        std::move(steps),
+        [this, finish, servo, target, eeprom, writes, sent](bool ok, const QString &message) {
+            if (ok) {
+                finish({Operation::Write, true, Tr::tr("Written and read back."), servo, {}});
+                return;
+            }
+            if (!*sent) {
+                // Nothing was written, but an unlock may have landed unconfirmed: close it.
+                if (!eeprom) {
+                    finish({Operation::Write, false, message, servo, {}});
+                    return;
+                }
+                m_bus.runSteps({BusExchange::tolerant(relock(target, kRelockAttempts))},
+                               [finish, servo, message](bool, const QString &) {
+                                   finish({Operation::Write, false, message, servo, {}});
+                               });
+                return;
+            }
+            // Never leave the EEPROM open: lock it again, whatever failed. Then read back what
+            // was written, each register on its own, so that every write whose answer was lost
+            // is settled by what the servo holds; what no read-back settles stays unknown.
+            std::vector<Step> settle;
+            auto locked = std::make_shared<bool>(!eeprom);
+            if (eeprom) {
+                settle.push_back(BusExchange::tolerant(relock(target, kRelockAttempts)));
+                settle.push_back(BusExchange::markDone(locked));
+            }
+            for (const RegisterWrite &item : writes)
+                settle.push_back(BusExchange::tolerant(m_bus.read(
+                    target, item.address, int(item.bytes.size()), ReadSource::ReadBack)));
+            m_bus.runSteps(
+                std::move(settle), [finish, servo, message, locked](bool, const QString &) {
+                    OperationResult result {Operation::Write, false, message, servo, {}};
+                    if (!*locked)
+                        result.message +=
+                            u' '
+                            + Tr::tr(
+                                "The EEPROM lock could not be closed again: the servo's EEPROM "
+                                "may be left open. Read the servo again and lock it when it "
+                                "answers.");
+                    result.writesSent = true;
+                    finish(result);
+                });
+        });
+}
+
+Step ApplyFlow::relock(std::shared_ptr<ServoInfo> target, int attempts)
+{
+    return [this, target, attempts](StepDone next) {
+        m_bus.lock(target, true)([this, target, attempts, next](bool ok, const QString &message) {
+            if (ok || attempts <= 1) {
+                next(ok, message);
+                return;
+            }
+            relock(target, attempts - 1)(next);
+        });
+    };
 }
 
 void ApplyFlow::apply(const ServoInfo &servo, const ApplyPlan &plan, GuidedFlows::Finish stepDone,

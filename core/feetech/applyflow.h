@@ -78,6 +78,9 @@ private:
         Yield yield;
     };
     void runChain(const ServoInfo &servo, std::shared_ptr<Chain> chain, std::size_t index);
+    // Closing the EEPROM lock after a failure, asked again while the servo does not confirm.
+    static constexpr int kRelockAttempts = 4;
+    Step relock(std::shared_ptr<ServoInfo> target, int attempts);
     // Why `writes` may not go out to `servo` (empty when they may).
     QString refusal(const ServoInfo &servo, const QVector<RegisterWrite> &writes) const;
 

@@ -210,9 +210,14 @@ void BusClient::onOperationFinished(const OperationResult &result)
             entry.read = true;
         // A control write never marks anything Writing: its failure leaves an apply alone.
         if (result.operation == Operation::Write && !result.ok && target.kind != Work::Control) {
-            // What was on its way and never came back verified keeps its edit, as Failed.
+            // What was on its way and never came back verified keeps its edit: Unknown when it
+            // went out (it may have landed), Failed when it never did.
             for (const model::Definition &definition : parameters.definitions()) {
-                if (parameters.state(definition.key) == model::State::Writing)
+                if (parameters.state(definition.key) != model::State::Writing)
+                    continue;
+                if (result.writesSent)
+                    parameters.markUnknown(definition.key);
+                else
                     parameters.markFailed(definition.key);
             }
         }
@@ -258,11 +263,12 @@ void BusClient::forgetWork()
     m_pending.clear();
     m_scanning = false;
     m_identifying.reset();
+    // The link went down with writes on their way: whether they landed is not known.
     for (const auto &entry : m_servos) {
         model::ParameterModel &parameters = *entry->parameters;
         for (const model::Definition &definition : parameters.definitions()) {
             if (parameters.state(definition.key) == model::State::Writing)
-                parameters.markFailed(definition.key);
+                parameters.markUnknown(definition.key);
         }
     }
     if (wasBusy)

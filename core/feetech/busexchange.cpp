@@ -460,6 +460,13 @@ Step BusExchange::markDone(std::shared_ptr<bool> flag)
     };
 }
 
+Step BusExchange::tolerant(Step step)
+{
+    return [step = std::move(step)](StepDone next) {
+        step([next](bool, const QString &) { next(true, {}); });
+    };
+}
+
 void BusExchange::searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> rates,
                               StepDone done)
 {

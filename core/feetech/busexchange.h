@@ -98,6 +98,7 @@ public:
     // all, so only a closed link fails it.
     Step addressWrite(quint8 id, int address, quint8 value, std::optional<quint8> alternateReplyId);
     static Step markDone(std::shared_ptr<bool> flag); // sets the flag when the run gets there
+    static Step tolerant(Step step); // the run goes on whether `step` succeeds or not
     // Locks the EEPROM at each place (ID and baud) in turn, whether or not anything answers.
     void relock(std::vector<std::shared_ptr<ServoInfo>> places, std::function<void()> done);
     // Looks for the servo's ID at each rate in turn; on success servo->baud is where it answered.

@@ -124,6 +124,9 @@ struct OperationResult
     bool control = false;
     // False for a step of an apply chain that more steps follow (the operation goes on).
     bool final = true;
+    // A Write that failed after its frames went out: they may have landed. What its read-backs
+    // did not settle is reported as unknown, not as unwritten.
+    bool writesSent = false;
 };
 
 struct SessionTiming

@@ -63,6 +63,16 @@ void ParameterModel::setDeviceValue(const QString &key, qint64 raw, qint64 nowMs
     if (entry.state == State::Writing && entry.written) {
         entry.state = *entry.written == raw ? State::Verified : State::Mismatch;
         entry.written.reset();
+    } else if (entry.state == State::Unknown && entry.written) {
+        // A later read settles a write whose outcome was unknown.
+        if (*entry.written == raw) {
+            entry.state = State::Verified;
+            if (entry.pending == entry.written)
+                entry.pending.reset();
+        } else {
+            entry.state = State::Failed;
+        }
+        entry.written.reset();
     }
     changed(row);
 }
@@ -161,6 +171,18 @@ void ParameterModel::markFailed(const QString &key)
     changed(row);
 }
 
+void ParameterModel::markUnknown(const QString &key)
+{
+    const int row = rowOf(key);
+    if (row < 0)
+        return;
+    Entry &entry = m_entries[row];
+    if (entry.written && !entry.pending)
+        entry.pending = entry.written; // an Apply would write it again; a read may settle it
+    entry.state = State::Unknown;
+    changed(row);
+}
+
 QString ParameterModel::stateName(State state)
 {
     switch (state) {
@@ -176,6 +198,8 @@ QString ParameterModel::stateName(State state)
         return tr("Mismatch");
     case State::Failed:
         return tr("Failed");
+    case State::Unknown:
+        return tr("Unknown");
     }
     return QString();
 }

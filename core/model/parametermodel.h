@@ -14,8 +14,10 @@ enum class Access { ReadOnly, ReadWrite, WriteOnly };
 enum class Storage { Eeprom, Ram, Ptk };
 
 // Clean: no edit. Edited: an edit waits to be written. Writing: it is on its way. Verified /
-// Mismatch: the read-back after a write matched / did not. Failed: the write did not go out.
-enum class State { Clean, Edited, Writing, Verified, Mismatch, Failed };
+// Mismatch: the read-back after a write matched / did not. Failed: the write did not go out, or
+// a read-back shows the device kept its old value. Unknown: the write went out but no read-back
+// answered, so whether it took effect is not known (the next read settles it).
+enum class State { Clean, Edited, Writing, Verified, Mismatch, Failed, Unknown };
 
 struct Choice
 {
@@ -89,6 +91,9 @@ public:
     QVector<WriteItem> takeWritePlan(const QStringList &except = {});
     // The write of `key` could not be sent (link failure, refused): the edit stays, Failed.
     void markFailed(const QString &key);
+    // The write of `key` went out but its outcome is not known: the edit stays, Unknown, until
+    // a read settles it (Verified when the device shows the written value, Failed otherwise).
+    void markUnknown(const QString &key);
 
     static QString stateName(State state);
 

@@ -156,10 +156,11 @@ void Client::onApplyFinished(bool ok, const QString &message)
     if (!m_applying)
         return; // already ended (the status backstop came first)
     m_applying = false;
-    // Whatever the read-back did not settle was written but not confirmed: keep the edit.
+    // Whatever the read-back did not settle was written but not confirmed: its outcome is
+    // unknown (a PTK write is never answered); the edit stays, and the next read settles it.
     for (const model::Definition &definition : m_model.definitions()) {
         if (m_model.state(definition.key) == model::State::Writing)
-            m_model.markFailed(definition.key);
+            m_model.markUnknown(definition.key);
     }
     emit applyFinished(ok, message);
 }

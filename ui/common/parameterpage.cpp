@@ -49,6 +49,8 @@ QColor stateColor(State state, bool dark)
     case State::Mismatch:
     case State::Failed:
         return palette::toneColor(palette::Tone::Error, dark);
+    case State::Unknown:
+        return palette::toneColor(palette::Tone::Warning, dark);
     case State::Clean:
         break;
     }
@@ -300,7 +302,8 @@ void ParameterPage::rebuild()
     widths[DeviceColumn] = metrics.horizontalAdvance(tr("Device"));
     widths[StateColumn] = boldMetrics.horizontalAdvance(
         QStringLiteral("✓ ") + ParameterModel::stateName(State::Verified));
-    for (const State state : {State::Edited, State::Writing, State::Mismatch, State::Failed})
+    for (const State state :
+         {State::Edited, State::Writing, State::Mismatch, State::Failed, State::Unknown})
         widths[StateColumn] = std::max(
             widths[StateColumn],
             boldMetrics.horizontalAdvance(QStringLiteral("✗ ") + ParameterModel::stateName(state)));
@@ -441,13 +444,19 @@ void ParameterPage::updateRow(Row &row)
         break;
     case State::Failed:
         stateText = QStringLiteral("✗ ") + stateText;
-        stateTip = tr("The write did not go out; the edit is kept so you can try again");
+        stateTip = tr("The write did not take effect; the edit is kept so you can try again");
+        break;
+    case State::Unknown:
+        stateText = QStringLiteral("? ") + stateText;
+        stateTip = tr("The write went out but no answer confirmed it, so whether the servo took "
+                      "it is not known; the next read settles it, and the edit is kept");
         break;
     }
     row.state->setText(stateText);
     row.state->setToolTip(stateTip);
     setForeground(row.state, stateColor(state, palette::isDark(palette())),
-                  state == State::Edited || state == State::Mismatch || state == State::Failed);
+                  state == State::Edited || state == State::Mismatch || state == State::Failed
+                      || state == State::Unknown);
 
     const bool readable = device.has_value() || definition->access == model::Access::WriteOnly;
     const bool enabled = readable && !m_busy && definition->access != model::Access::ReadOnly;

@@ -479,7 +479,7 @@ void FeetechWorkspace::showServo()
     int stateWidth = 0;
     for (const model::State state :
          {model::State::Edited, model::State::Writing, model::State::Verified,
-          model::State::Mismatch, model::State::Failed})
+          model::State::Mismatch, model::State::Failed, model::State::Unknown})
         stateWidth = std::max(
             stateWidth,
             m_table->fontMetrics().horizontalAdvance(model::ParameterModel::stateName(state)));

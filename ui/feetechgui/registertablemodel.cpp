@@ -23,6 +23,7 @@ QColor stateBackground(model::State state)
     switch (state) {
     case model::State::Edited:
     case model::State::Writing:
+    case model::State::Unknown:
         return dark ? QColor(90, 72, 20) : QColor(255, 240, 170);
     case model::State::Verified:
         return dark ? QColor(28, 70, 36) : QColor(214, 240, 218);
