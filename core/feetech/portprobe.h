@@ -22,11 +22,11 @@ namespace feetech {
 struct ProbeTiming
 {
     // How long a PTK query waits for its reply at 115200.
-    std::chrono::milliseconds ptkWait {150};
+    std::chrono::milliseconds ptkWait {200};
     // How long a broadcast PING waits for the first byte of an answer at each Feetech rate.
-    std::chrono::milliseconds feetechWait {60};
+    std::chrono::milliseconds feetechWait {100};
     // Once answers begin, how long the rest of them (collided or not) may take to come in.
-    std::chrono::milliseconds settle {15};
+    std::chrono::milliseconds settle {20};
 };
 
 // What came back at one rate, besides the adapter's echo of the question.
