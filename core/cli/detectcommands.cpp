@@ -67,6 +67,11 @@ BusLook lookAtBus(const Arguments &args, const Output &output, const QString &wh
     if (look.seen.probe.cancelled || look.seen.probe.ptk || bauds.isEmpty())
         return look;
     look.device = std::make_unique<FeetechDevice>(args, output);
+    // The probe heard whether the adapter echoes. Deciding it again from the first answer
+    // could go wrong: a PING's answer with the voltage bit set has the PING's very bytes.
+    if (!args.has(QStringLiteral("echo")))
+        look.device->setEchoMode(look.seen.probe.echo ? seriallink::EchoMode::On
+                                                      : seriallink::EchoMode::Off);
     if (!look.device->open(bauds.first())) {
         look.scanError = look.device->error();
         return look;
