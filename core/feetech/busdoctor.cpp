@@ -4,6 +4,7 @@
 #include "feetech/servoparameters.h"
 
 #include <QCoreApplication>
+#include <QHash>
 #include <QSettings>
 
 #include <algorithm>
@@ -246,25 +247,43 @@ void conditionFindings(const BusObservation &seen, QVector<DoctorFinding> &findi
 
 ServoCondition servoCondition(const ServoInfo &servo, const QMap<int, QByteArray> &memory)
 {
-    ServoCondition condition;
-    condition.servo = servo;
-    condition.readable = !memory.isEmpty();
-    if (!servo.hasTable())
-        return condition;
-    const RegisterTable &table = servo.table();
-    for (auto it = memory.cbegin(); it != memory.cend(); ++it) {
-        for (const DecodedRegister &item : decodeRegisters(table, it.key(), it.value())) {
-            const double real = item.value * item.reg->scale;
-            if (item.reg->key == QLatin1String("present_voltage"))
-                condition.voltage = real;
-            else if (item.reg->key == QLatin1String("min_voltage"))
-                condition.minVoltage = real;
-            else if (item.reg->key == QLatin1String("max_voltage"))
-                condition.maxVoltage = real;
-            else if (item.reg->key == QLatin1String("status"))
-                condition.status = quint8(item.value);
+    QHash<QString, qint32> values;
+    if (servo.hasTable()) {
+        for (auto it = memory.cbegin(); it != memory.cend(); ++it) {
+            for (const DecodedRegister &item : decodeRegisters(servo.table(), it.key(), it.value()))
+                values.insert(item.reg->key, item.value);
         }
     }
+    return servoCondition(servo, !memory.isEmpty(),
+                          [&values](const QString &key) -> std::optional<qint64> {
+                              const auto found = values.constFind(key);
+                              if (found == values.cend())
+                                  return std::nullopt;
+                              return *found;
+                          });
+}
+
+ServoCondition servoCondition(const ServoInfo &servo, bool readable,
+                              const std::function<std::optional<qint64>(const QString &)> &value)
+{
+    ServoCondition condition;
+    condition.servo = servo;
+    condition.readable = readable;
+    if (!readable || !servo.hasTable())
+        return condition;
+    const RegisterTable &table = servo.table();
+    const auto volts = [&](const QString &key) -> std::optional<double> {
+        const Register *reg = table.find(key);
+        const auto raw = reg ? value(key) : std::nullopt;
+        if (!raw)
+            return std::nullopt;
+        return double(*raw) * reg->scale;
+    };
+    condition.voltage = volts(QStringLiteral("present_voltage"));
+    condition.minVoltage = volts(QStringLiteral("min_voltage"));
+    condition.maxVoltage = volts(QStringLiteral("max_voltage"));
+    if (const auto status = value(QStringLiteral("status")))
+        condition.status = quint8(*status);
     return condition;
 }
 
@@ -286,11 +305,21 @@ QVector<DoctorFinding> diagnoseBus(const BusObservation &seen,
                                         .arg(seen.probe.port)));
         return findings;
     }
-    if (seen.probe.silent() && seen.found.isEmpty()) {
+    if (seen.probed && seen.probe.silent() && seen.found.isEmpty()) {
         findings.append(silenceFinding(seen.probe));
         return findings;
     }
-    if (const auto unframed = unframedFinding(seen))
+    if (!seen.probed && seen.found.isEmpty()) {
+        QStringList rates;
+        for (const qint32 baud : seen.scannedBauds)
+            rates.append(baudText(baud));
+        findings.append(finding(doctorcodes::kNoServoFound,
+                                Tr::tr("No servo answered at %1. Re-scan with the port probed: "
+                                       "it listens at every rate and tells silence from "
+                                       "bytes that never make an answer.")
+                                    .arg(rates.join(QStringLiteral(", ")))));
+    }
+    if (const auto unframed = seen.probed ? unframedFinding(seen) : std::nullopt)
         findings.append(*unframed);
     expectationFindings(seen, expected, findings);
     conditionFindings(seen, findings);

@@ -8,6 +8,7 @@
 #include <QString>
 #include <QVector>
 
+#include <functional>
 #include <optional>
 
 namespace feetech {
@@ -21,6 +22,7 @@ inline const QString kPortFailed = QStringLiteral("PORT_FAILED");
 inline const QString kNoBytes = QStringLiteral("NO_BYTES");
 inline const QString kUnframedBytes = QStringLiteral("UNFRAMED_BYTES");
 inline const QString kPtkServo = QStringLiteral("PTK_SERVO");
+inline const QString kNoServoFound = QStringLiteral("NO_SERVO_FOUND");
 inline const QString kUnexpectedId = QStringLiteral("UNEXPECTED_ID");
 inline const QString kUnexpectedBaud = QStringLiteral("UNEXPECTED_BAUD");
 inline const QString kChainBreak = QStringLiteral("CHAIN_BREAK");
@@ -49,6 +51,9 @@ struct ServoCondition
 
 // The condition `memory` (READ bytes by start address) shows; unreadable when it is empty.
 ServoCondition servoCondition(const ServoInfo &servo, const QMap<int, QByteArray> &memory);
+// The same from register values by key (register units), as a parameter model holds them.
+ServoCondition servoCondition(const ServoInfo &servo, bool readable,
+                              const std::function<std::optional<qint64>(const QString &)> &value);
 
 // A move the doctor offers: the servo found at (servo.id, servo.baud) to a new ID or rate.
 struct ServoMove
@@ -70,6 +75,10 @@ struct DoctorFinding
 struct BusObservation
 {
     PortProbeReport probe;
+    // The probe ran (every rate heard). Without it only the scan's rates are known: nothing is
+    // said about silence or bytes that never frame.
+    bool probed = true;
+    QVector<qint32> scannedBauds; // the rates scanned, for what a scan without a probe says
     bool scanned = false; // the rates that answered were scanned
     QVector<ServoInfo> found;
     QVector<ServoCondition> conditions; // of the servos found, when they were read

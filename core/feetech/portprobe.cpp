@@ -185,12 +185,10 @@ void PortProbe::finish()
         return;
     m_running = false;
     m_deadline->stop();
-    if (m_transport) {
-        m_transport->disconnect(this);
+    // Closed, not deleted: this may run inside one of the transport's own signals. The next
+    // start (or the probe's end) deletes it.
+    if (m_transport)
         m_transport->close();
-        // Deleted later: this may run inside one of the transport's own signals.
-        m_transport.release()->deleteLater();
-    }
     emit progress(stepCount(), stepCount(), QString());
     emit finished(m_report);
 }
