@@ -249,6 +249,35 @@ private slots:
         QCOMPARE(idsOf(findings.value(feetech::doctorcodes::kSharedId)), QVector<int> {1});
     }
 
+    void doctorFindsBytesThatNeverMakeAnAnswer()
+    {
+        // Every answer arrives with a bit flipped: bytes come at 1 Mbps, never a valid frame.
+        auto options = busOptions({{1, QStringLiteral("STS3215"), k1M}});
+        options.faults.corrupt = 1.0;
+        QString error;
+        QVERIFY2(startSimulator(options, &error), qPrintable(error));
+        const auto result = run(QStringLiteral("doctor --json --expect 1"));
+        QCOMPARE(result.exitCode, 1);
+        const auto findings = findingsByCode(result.out);
+        QVERIFY2(findings.contains(feetech::doctorcodes::kUnframedBytes), qPrintable(result.out));
+        QVERIFY(findings.value(feetech::doctorcodes::kUnframedBytes)[QStringLiteral("message")]
+                    .toString()
+                    .contains(QStringLiteral("1 Mbps")));
+        QVERIFY(!findings.contains(feetech::doctorcodes::kNoBytes));
+    }
+
+    void doctorOnAPtkServoIsContentUnlessABusWasExpected()
+    {
+        startPtk(false);
+        const auto content = run(QStringLiteral("doctor"));
+        QCOMPARE(content.exitCode, 0);
+        QVERIFY2(content.out.contains(QStringLiteral("PTK")), qPrintable(content.out));
+        const auto expecting = run(QStringLiteral("doctor --json --expect 1-3"));
+        QCOMPARE(expecting.exitCode, 1);
+        QCOMPARE(findingsByCode(expecting.out).keys(),
+                 QStringList {feetech::doctorcodes::kPtkServo});
+    }
+
     void doctorNamesTheProgramHoldingABusyPort()
     {
         startBus({{1, QStringLiteral("STS3215"), k1M}});

@@ -184,6 +184,7 @@ void MainWindow::onProbeFinished(const feetech::PortProbeReport &report)
         m_feetech->connectTo(report.port, baud, echo);
         feetech::ScanOptions options;
         options.bauds = bauds;
+        options.skipSilentRates = false; // the probe heard something at each of them
         scanOnceConnected(options);
         return;
     }

@@ -34,7 +34,7 @@ void allowOnly(const Arguments &args, const QStringList &allowed, const QString 
 }
 
 // What detect and doctor both look at: the probe's answers, then a scan of the rates that
-// answered (the scan's own "skip silent rates" probe, as servoctl feetech scan does).
+// answered.
 struct BusLook
 {
     feetech::BusObservation seen;
@@ -78,7 +78,9 @@ BusLook lookAtBus(const Arguments &args, const Output &output, const QString &wh
     }
     feetech::ScanOptions options;
     options.bauds = bauds;
-    options.skipSilentRates = true;
+    // The probe heard something at each of these rates: every ID is asked there, even when
+    // the scan's own opening broadcast happens to go unanswered.
+    options.skipSilentRates = false;
     const bool completed =
         look.device->scan(options, [&](const ServoInfo &servo) { look.seen.found.append(servo); });
     look.seen.scanned = true;
