@@ -61,7 +61,7 @@ DoctorPanel::DoctorPanel(feetech::BusClient *client, QWidget *parent)
     m_expectation = new QComboBox(body);
     m_expectation->setObjectName(QStringLiteral("doctorExpectation"));
     m_expectation->addItem(tr("the servos found last time on this port"), QString());
-    for (const feetech::RobotTemplate &robot : feetech::builtInRobotTemplates())
+    for (const feetech::RobotTemplate &robot : feetech::availableRobotTemplates())
         m_expectation->addItem(robot.name, robot.name);
     const int remembered = m_expectation->findData(QSettings().value(kExpectationKey).toString());
     m_expectation->setCurrentIndex(std::max(remembered, 0));
@@ -103,7 +103,9 @@ DoctorPanel::DoctorPanel(feetech::BusClient *client, QWidget *parent)
 QVector<feetech::ExpectedServo> DoctorPanel::expected(const QString &port) const
 {
     const QString robotName = m_expectation->currentData().toString();
-    for (const feetech::RobotTemplate &robot : feetech::builtInRobotTemplates()) {
+    if (robotName.isEmpty())
+        return feetech::rememberedServos(port);
+    for (const feetech::RobotTemplate &robot : feetech::availableRobotTemplates()) {
         if (robot.name != robotName)
             continue;
         QVector<feetech::ExpectedServo> joints;
