@@ -78,6 +78,8 @@ DoctorPanel::DoctorPanel(feetech::BusClient *client, QWidget *parent)
     m_list->setRootIsDecorated(false);
     m_list->setWordWrap(true);
     m_list->header()->setStretchLastSection(true);
+    m_list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_list->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     connect(m_list, &QTreeWidget::currentItemChanged, this, &DoctorPanel::updateMove);
     layout->addWidget(m_list, 1);
 
