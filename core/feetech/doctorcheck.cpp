@@ -25,7 +25,12 @@ DoctorCheck::DoctorCheck(BusClient *client, QObject *parent)
         readNext();
     });
     connect(m_client, &BusClient::operationFinished, this, [this](const OperationResult &result) {
-        if (m_running && m_guard.isActive() && result.operation == Operation::Read)
+        // Only the read of the servo being looked at: a page may read another one meanwhile.
+        if (!m_running || !m_guard.isActive() || result.operation != Operation::Read
+            || m_next >= m_seen.found.size())
+            return;
+        const ServoInfo &looking = m_seen.found.at(m_next);
+        if (result.servo.id == looking.id && result.servo.baud == looking.baud)
             onRead(result.ok);
     });
 }
