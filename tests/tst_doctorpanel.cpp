@@ -92,6 +92,41 @@ private slots:
         QVERIFY(!m_window->doctorPanel()->isVisible());
     }
 
+    void autoOpensThePtkWorkspaceForAPtkServoBehindAnEchoingAdapter()
+    {
+        sim::SimulatorOptions options;
+        options.kind = sim::SimulatorOptions::Kind::Ptk;
+        options.linkPath = m_dir.filePath(QStringLiteral("ptk"));
+        options.echo = true;
+        QString error;
+        QVERIFY2(startSimulator(options, &error), qPrintable(error));
+        m_window = std::make_unique<MainWindow>();
+        m_window->show();
+        m_window->connectToPort(m_simulator->linkPath());
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->ptkClient()->status().state,
+                                  seriallink::ConnectionState::Connected, 30000);
+        QCOMPARE(currentWorkspace(), m_window->ptkWorkspace());
+        QCOMPARE(m_window->connectionBar()->echoMode(), seriallink::EchoMode::On);
+        QCOMPARE(m_window->connectionBar()->baud(), 115200);
+        QVERIFY(!m_window->feetechClient()->isConnected());
+    }
+
+    void disconnectDuringTheProbeCancelsItAndConnectsNothing()
+    {
+        openWindow({{1, QStringLiteral("STS3215"), k1M}});
+        m_window->connectToPort(m_simulator->linkPath());
+        QVERIFY(m_window->isDetecting());
+        auto *button =
+            m_window->connectionBar()->findChild<QPushButton *>(QStringLiteral("connectButton"));
+        QCOMPARE(button->text(), QStringLiteral("Disconnect"));
+        QTest::mouseClick(button, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_window->isDetecting(), 30000);
+        QCOMPARE(button->text(), QStringLiteral("Connect"));
+        QVERIFY(!m_window->feetechClient()->isConnected());
+        QVERIFY(!m_window->ptkClient()->isConnected());
+        QVERIFY(!m_window->doctorPanel()->isVisible());
+    }
+
     void autoOnASilentPortOpensTheDoctorWithNoBytes()
     {
         openWindow({{1, QStringLiteral("STS3215"), k1M}});
