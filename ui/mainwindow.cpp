@@ -103,6 +103,7 @@ MainWindow::MainWindow(QWidget *parent)
     addDockWidget(Qt::BottomDockWidgetArea, m_packetLog);
 
     createMenus();
+    createDoctor();
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
             [this] { updateTorqueOffAction(); });
 
@@ -277,19 +278,18 @@ void MainWindow::startArmDemo()
     scanOnceConnected();
 }
 
-void MainWindow::scanOnceConnected()
+void MainWindow::scanOnceConnected(const feetech::ScanOptions &options)
 {
     // Scan as soon as the port is open, so the tree fills by itself.
     auto *once = new QObject(this);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, once,
-            [this, once](const seriallink::ConnectionStatus &status) {
+            [this, once, options](const seriallink::ConnectionStatus &status) {
                 if (status.state == seriallink::ConnectionState::Disconnected) {
                     once->deleteLater(); // the demo never connected: no scan later
                     return;
                 }
                 if (status.state != seriallink::ConnectionState::Connected)
                     return;
-                feetech::ScanOptions options;
                 m_feetechWorkspace->startScan(options);
                 once->deleteLater();
             });
@@ -371,6 +371,12 @@ void MainWindow::connectRequested()
         m_simulatorDock->hide();
         m_simulatorDock->toggleViewAction()->setEnabled(false);
     }
+    m_portPath = port;
+    m_probe.reset();
+    if (m_connectionBar->protocol() == ConnectionBar::Protocol::Auto) {
+        detectAndConnect(port);
+        return;
+    }
     const qint32 baud = m_connectionBar->baud();
     if (baud <= 0) {
         showProblem(tr("Enter a baud rate."));
@@ -387,6 +393,10 @@ void MainWindow::connectRequested()
 
 void MainWindow::disconnectRequested()
 {
+    if (m_probeThread) {
+        cancelDetection();
+        return;
+    }
     if (m_feetechActive)
         m_feetech->disconnectFrom();
     else

@@ -2,13 +2,19 @@
 // the status bar.
 #pragma once
 
+#include "feetech/bustypes.h"
+#include "feetech/portprobe.h"
 #include "link/linktypes.h"
+#include "link/sessionthread.h"
 
 #include <QMainWindow>
 
 #include <memory>
+#include <optional>
 
 class ConnectionBar;
+class DoctorPanel;
+class QProgressDialog;
 class FeetechWorkspace;
 class QStackedWidget;
 class PacketLogDock;
@@ -25,7 +31,8 @@ class Client;
 }
 namespace feetech {
 class BusClient;
-}
+class DoctorCheck;
+} // namespace feetech
 namespace sim {
 class DemoServos;
 }
@@ -55,6 +62,8 @@ public:
     PacketLogDock *packetLog() const { return m_packetLog; }
     // Null until a simulated Feetech bus or arm was connected to.
     SimulatorDock *simulatorDock() const { return m_simulatorDock; }
+    DoctorPanel *doctorPanel() const { return m_doctor; }
+    bool isDetecting() const { return m_probeThread != nullptr; }
 
     // The PTK workspace's, for the command line and tests.
     void loadProfile(const QString &path);
@@ -76,7 +85,18 @@ private:
     void showProtocol(bool feetech);
     void updateTorqueOffAction(); // enabled while a Feetech bus is connected
     void updatePollRate();
-    void scanOnceConnected();
+    void scanOnceConnected(const feetech::ScanOptions &options = {});
+    // Auto (mainwindowdoctor.cpp): probe the port in a worker thread, then open the workspace
+    // of what answered at the rate and echo it found, and scan the Feetech rates that answered.
+    void detectAndConnect(const QString &port);
+    void cancelDetection();
+    void onProbeFinished(const feetech::PortProbeReport &report);
+    // The doctor: after a scan that came back short (or while the panel is open), each servo
+    // is read and the findings listed in the Doctor panel, which opens by itself.
+    void createDoctor();
+    void onFeetechScanFinished(bool completed);
+    void rescanForDoctor();
+    void openDoctor();
     void showSimulatorDock(bool arm); // the demo's bus or arm; hidden for anything else
 
     std::unique_ptr<sim::DemoServos> m_demo;
@@ -98,4 +118,11 @@ private:
     QLabel *m_counters = nullptr;
     QTimer *m_rateTimer = nullptr;
     QString m_portShown; // what the user connected to, as they chose it
+    QString m_portPath; // the port actually opened (a simulated bus's pty)
+    DoctorPanel *m_doctor = nullptr;
+    feetech::DoctorCheck *m_doctorCheck = nullptr;
+    std::unique_ptr<seriallink::SessionThread<feetech::PortProbe>> m_probeThread;
+    QProgressDialog *m_probeProgress = nullptr;
+    // What the probe of the Auto connection heard; none for a protocol chosen by hand.
+    std::optional<feetech::PortProbeReport> m_probe;
 };

@@ -60,6 +60,8 @@ public:
     const QString &error() const { return m_error; }
 
     bool open(qint32 baud);
+    // Before open: the echo as something else found out (the port probe), not --echo's.
+    void setEchoMode(seriallink::EchoMode echo) { m_echo = echo; }
 
     // PING, then READ of addresses 0-8: who answers at `id`, or nothing (and error()).
     std::optional<ServoInfo> identify(quint8 id, qint32 baud,

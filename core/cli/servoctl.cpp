@@ -3,6 +3,7 @@
 
 #include "cli/arguments.h"
 #include "cli/decoder.h"
+#include "cli/detectcommands.h"
 #include "cli/feetechcommands.h"
 #include "cli/ptkcommands.h"
 #include "feetech/feetechpacket.h"
@@ -35,6 +36,12 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "\n"
     "commands:\n"
     "  ports                                  list serial ports\n"
+    "  detect                                 find out what answers on the port: a PTK servo\n"
+    "                                         or a Feetech bus (its rates and servos); only\n"
+    "                                         queries, PINGs and READs are sent\n"
+    "  doctor [--expect LIST [--baud N]]      say what is wrong with the bus and what to do;\n"
+    "                                         LIST: the servos expected, in chain order\n"
+    "                                         (1,2,3 or 1-6), at --baud (1000000)\n"
     "  ptk read                               read the PTK servo's thirteen parameters\n"
     "  ptk write NAME=VALUE...                change parameters (full sequence, verified)\n"
     "  ptk save FILE | ptk load FILE          save the servo to a profile / program one\n"
@@ -107,7 +114,7 @@ public:
                  QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
                  QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate"),
                  QStringLiteral("model"), QStringLiteral("settings"), QStringLiteral("names"),
-                 QStringLiteral("full-turn"), QStringLiteral("out")},
+                 QStringLiteral("full-turn"), QStringLiteral("out"), QStringLiteral("expect")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
                  QStringLiteral("dry-run")});
@@ -130,6 +137,10 @@ public:
                 return decode(args, rest);
             if (command == QLatin1String("packet"))
                 return packet(args, rest);
+            if (command == QLatin1String("detect"))
+                return runDetectCommand(args, rest, {m_out, m_err, m_json});
+            if (command == QLatin1String("doctor"))
+                return runDoctorCommand(args, rest, {m_out, m_err, m_json});
             if (command == QLatin1String("ptk"))
                 return runPtkCommand(args, rest, {m_out, m_err, m_json});
             if (command == QLatin1String("feetech"))

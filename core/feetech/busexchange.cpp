@@ -208,11 +208,15 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
         const quint8 id = *request.replyId;
         const std::optional<quint8> alternate = request.alternateReplyId;
         const int size = request.replyDataSize;
-        // Our own frame coming back (an echo the engine did not expect) is never the answer.
+        // Our own frame coming back (an echo the engine did not expect) is no answer. But a
+        // PING's answer with the voltage bit set (FF FF id 02 01 ..) has the PING's very bytes:
+        // where the echo is known (On: the engine took it already; Off: there is none), such a
+        // frame is the answer.
+        const bool ownFrameIsEcho = m_link.engine().echoMode() == seriallink::EchoMode::Auto;
         const auto other = request.otherFrame;
-        transaction.acceptsReply = [sent, id, alternate, size, other,
-                                    accepted](const QByteArray &frame) {
-            if (frame == sent)
+        transaction.acceptsReply = [sent, id, alternate, size, other, accepted,
+                                    ownFrameIsEcho](const QByteArray &frame) {
+            if (ownFrameIsEcho && frame == sent)
                 return false;
             auto packet = decodePacket(frame);
             const bool answer = packet

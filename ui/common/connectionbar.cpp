@@ -58,15 +58,21 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     addWidget(new QLabel(tr("Protocol "), this));
     m_protocol = new QComboBox(this);
     m_protocol->setObjectName(QStringLiteral("protocolCombo"));
+    m_protocol->addItem(tr("Auto"), int(Protocol::Auto));
     m_protocol->addItem(tr("PTK RC servo"), int(Protocol::Ptk));
     m_protocol->addItem(tr("Feetech bus"), int(Protocol::Feetech));
-    m_protocol->setToolTip(tr("PTK: one RC servo on a USB programmer. Feetech: SCS, STS, SMS "
-                              "and HLS servos on a serial bus."));
+    m_protocol->setToolTip(tr("Auto: ServoBench asks the port who is there (it only asks, it "
+                              "writes nothing) and opens the right workspace at the right "
+                              "rate. PTK: one RC servo on a USB programmer. Feetech: SCS, STS, "
+                              "SMS and HLS servos on a serial bus."));
     addWidget(m_protocol);
     connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
-        const QString rate =
-            protocol() == Protocol::Ptk ? QStringLiteral("115200") : QStringLiteral("1000000");
-        m_baud->setCurrentIndex(m_baud->findText(rate));
+        if (protocol() != Protocol::Auto) {
+            const QString rate =
+                protocol() == Protocol::Ptk ? QStringLiteral("115200") : QStringLiteral("1000000");
+            m_baud->setCurrentIndex(m_baud->findText(rate));
+        }
+        updateEnabled();
         emit protocolChanged(protocol());
     });
 
@@ -100,6 +106,7 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     // simulated buses, and the real ports join the list once the event loop runs.
     showPorts({}, {});
     QTimer::singleShot(0, this, &ConnectionBar::refreshPorts);
+    updateEnabled();
 }
 
 QString ConnectionBar::port() const
@@ -145,13 +152,30 @@ seriallink::EchoMode ConnectionBar::echoMode() const
     return seriallink::EchoMode(m_echo->currentData().toInt());
 }
 
+void ConnectionBar::showDetected(qint32 baud, seriallink::EchoMode echo)
+{
+    const QString rate = QString::number(baud);
+    if (m_baud->findText(rate) >= 0)
+        m_baud->setCurrentIndex(m_baud->findText(rate));
+    else
+        m_baud->setEditText(rate);
+    m_echo->setCurrentIndex(m_echo->findData(int(echo)));
+}
+
 void ConnectionBar::setSessionActive(bool active)
 {
     m_active = active;
     m_connect->setText(active ? tr("Disconnect") : tr("Connect"));
-    for (QWidget *setting : {static_cast<QWidget *>(m_port), static_cast<QWidget *>(m_baud),
-                             static_cast<QWidget *>(m_protocol), static_cast<QWidget *>(m_echo)})
-        setting->setEnabled(!active);
+    updateEnabled();
+}
+
+void ConnectionBar::updateEnabled()
+{
+    const bool chosenByHand = protocol() != Protocol::Auto;
+    m_port->setEnabled(!m_active);
+    m_protocol->setEnabled(!m_active);
+    m_baud->setEnabled(!m_active && chosenByHand);
+    m_echo->setEnabled(!m_active && chosenByHand);
 }
 
 void ConnectionBar::refreshPorts()

@@ -19,7 +19,8 @@ public:
     static const QString kSimulatedFeetechPort;
     static const QString kSimulatedArmPort; // an SO-101 arm's six STS3215, set up
 
-    enum class Protocol { Ptk, Feetech };
+    // Auto: ServoBench probes the port and opens the workspace of what answers.
+    enum class Protocol { Ptk, Feetech, Auto };
 
     explicit ConnectionBar(QWidget *parent = nullptr);
 
@@ -29,6 +30,8 @@ public:
     seriallink::EchoMode echoMode() const;
     Protocol protocol() const;
     void setProtocol(Protocol protocol); // also offers that protocol's usual baud rate
+    // The baud rate and echo as a probe found them (Auto): shown, for the user to see.
+    void showDetected(qint32 baud, seriallink::EchoMode echo);
 
     // Connected (or trying to be): the button offers Disconnect and the settings are locked.
     void setSessionActive(bool active);
@@ -46,6 +49,8 @@ private:
     void showPorts(const QStringList &ports, const QStringList &descriptions);
     // Selects `port` in the list, or types it when it is not listed.
     void selectPort(const QString &port);
+    // Auto finds the rate and the echo itself: their boxes are for the explicit protocols.
+    void updateEnabled();
 
     QComboBox *m_port = nullptr;
     QComboBox *m_baud = nullptr;

@@ -45,6 +45,7 @@ public:
 
     void openScanDialog();
     void startScan(const feetech::ScanOptions &options);
+    const feetech::ScanOptions &scanOptions() const { return m_scanOptions; } // of the last scan
     void apply(); // with a confirmation when the ID or baud rate would change
     void chooseProfileToSave();
     void chooseProfileToLoad();
