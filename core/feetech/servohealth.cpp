@@ -166,7 +166,9 @@ ServoHealth assessHealth(const HealthReading &reading, const HealthLimits &limit
     health.id = servo.id;
     health.baud = servo.baud;
     health.model = servo.model.name;
-    health.firmware = servo.firmware();
+    // A servo that never answered has no firmware to show.
+    if (!servo.model.name.isEmpty())
+        health.firmware = servo.firmware();
     health.comm = reading.comm;
     if (!reading.failure.isEmpty()) {
         health.add(QStringLiteral("unreadable"), Verdict::Fault,
@@ -197,8 +199,8 @@ ServoHealth assessHealth(const HealthReading &reading, const HealthLimits &limit
             health.position = *position;
         health.status |= sample.servoStatus;
     }
-    if (voltages > 0)
-        health.voltage = voltageSum / voltages;
+    if (voltages > 0) // the register's resolution is 0.1 V: no more digits than it has
+        health.voltage = std::round(voltageSum / voltages * 100.0) / 100.0;
     if (loads > 0)
         health.load = loadSum / loads;
     health.statusText = servoStatusText(servo.table(), health.status);
@@ -320,7 +322,8 @@ QJsonObject healthJson(const ServoHealth &health)
     QJsonObject json {{QStringLiteral("id"), health.id},
                       {QStringLiteral("baud"), health.baud},
                       {QStringLiteral("model"), health.model},
-                      {QStringLiteral("firmware"), health.firmware},
+                      {QStringLiteral("firmware"),
+                       health.firmware.isEmpty() ? QJsonValue() : QJsonValue(health.firmware)},
                       {QStringLiteral("verdict"), verdictKey(health.verdict)},
                       {QStringLiteral("findings"), findings},
                       {QStringLiteral("voltage"), optionalJson(health.voltage)},
