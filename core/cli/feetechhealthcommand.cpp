@@ -37,11 +37,19 @@ int FeetechCommand::health(const QString &what, const QStringList &operands)
     for (int i = 0; i < ids.size(); ++i) {
         readings[i].servo.id = ids.at(i);
         readings[i].servo.baud = busBaud();
-        if (const auto servo = device.identify(ids.at(i), busBaud())) {
+        // Addresses 0-8 by READ, not PING first: a servo with its voltage bit set answers a
+        // PING with status 0x01, a frame byte for byte the PING itself, taken for its echo.
+        const auto memory = device.read(readings.at(i).servo,
+                                        {{feetech::kIdentityAddress, feetech::kIdentitySize}});
+        const auto servo = memory ? feetech::servoInfoFromIdentity(
+                               ids.at(i), busBaud(), memory->value(feetech::kIdentityAddress))
+                                  : std::nullopt;
+        if (servo) {
             readings[i].servo = *servo;
             reachable.append(*servo);
         } else {
-            readings[i].failure = device.error();
+            readings[i].failure =
+                memory ? Tr::tr("its identity (addresses 0-8) could not be read") : device.error();
         }
     }
     if (!reachable.isEmpty()) {
