@@ -26,8 +26,7 @@ namespace {
 
 QString measured(const std::optional<double> &value, int decimals, const QString &unit)
 {
-    return value ? QLocale().toString(*value, 'f', decimals) + QLatin1Char(' ') + unit
-                 : QString();
+    return value ? QLocale().toString(*value, 'f', decimals) + QLatin1Char(' ') + unit : QString();
 }
 
 palette::Tone verdictTone(Verdict verdict)
@@ -65,9 +64,8 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
     layout->addWidget(intro);
 
     auto *buttons = new QHBoxLayout;
-    m_check = widgethelpers::actionButton(tr("Check"), "healthCheck",
-                                          tr("Read every servo found and give each a verdict"),
-                                          this);
+    m_check = widgethelpers::actionButton(
+        tr("Check"), "healthCheck", tr("Read every servo found and give each a verdict"), this);
     m_cancel = widgethelpers::actionButton(tr("Cancel"), "healthCancel",
                                            tr("Stop the check before the next servo"), this);
     m_move = widgethelpers::actionButton(
