@@ -171,6 +171,34 @@ private slots:
         QCOMPARE(servos.at(0).verdict, Verdict::Warning);
     }
 
+    void aLatchedOverloadIsAFaultNamedAfterItsStatusBit()
+    {
+        startBus(busOptions(testsupport::servosAt(k1M, {u"STS3215"})));
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setOverloadLatched(true); }));
+        const QVector<ServoHealth> servos = check();
+        QCOMPARE(servos.size(), 1);
+        QCOMPARE(servos.first().verdict, Verdict::Fault);
+        // Bit 5 of the status register, "Load" in the STS table.
+        QVERIFY2(hasFinding(servos.first(), QStringLiteral("status-load")),
+                 qPrintable(codes(servos.first())));
+        QVERIFY(servos.first().statusText.contains(QStringLiteral("Load")));
+    }
+
+    void aServoThatLostPowerIsAFaultAndTheOthersAreStillChecked()
+    {
+        startBus(busOptions(testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"STS3215"})));
+        QCOMPARE(m_found.size(), 3);
+        QVERIFY(testsupport::onSimulatedBus(
+            *m_simulator, [](sim::VirtualFeetechBus &bus) { return bus.setPowered(1, false); }));
+        const QVector<ServoHealth> servos = check();
+        QCOMPARE(servos.size(), 3);
+        QVERIFY2(servos.at(0).verdict == Verdict::Ok, qPrintable(codes(servos.at(0))));
+        QCOMPARE(servos.at(1).verdict, Verdict::Fault);
+        QVERIFY2(hasFinding(servos.at(1), QStringLiteral("unreadable")),
+                 qPrintable(codes(servos.at(1))));
+        QVERIFY2(servos.at(2).verdict == Verdict::Ok, qPrintable(codes(servos.at(2))));
+    }
+
     void aFaultyLineShowsInTheServosCommunicationCounts()
     {
         auto options = busOptions(testsupport::servosAt(k1M, {u"STS3215"}));
