@@ -19,6 +19,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 using feetech::ServoHealth;
 using feetech::Verdict;
 
@@ -91,13 +93,14 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
     m_table = new QTableWidget(0, ColumnCount, m_stack);
     m_table->setObjectName(QStringLiteral("healthTable"));
     m_table->setHorizontalHeaderLabels({tr("ID"), tr("Model"), tr("Firmware"), tr("Verdict"),
-                                        tr("Voltage"), tr("Temperature"), tr("Load"),
-                                        tr("Communication"), tr("Move test"), tr("Reasons")});
+                                        tr("Reasons"), tr("Voltage"), tr("Temperature"), tr("Load"),
+                                        tr("Communication"), tr("Move test")});
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setTextElideMode(Qt::ElideNone);
     m_table->setWordWrap(true);
     m_stack->addWidget(m_empty);
     m_stack->addWidget(m_table);
@@ -291,9 +294,11 @@ void HealthPage::rebuildRows()
         const auto found = m_health.constFind({info.id, info.baud});
         if (found != m_health.constEnd())
             health = *found;
-        health.id = info.id;
-        health.model = info.model.name;
-        health.firmware = info.firmware();
+        if (found == m_health.constEnd()) { // as the scan found it
+            health.id = info.id;
+            health.model = info.model.name;
+            health.firmware = info.firmware();
+        }
         fillRow(row, health);
         if (found == m_health.constEnd()) {
             m_table->item(row, VerdictColumn)->setText(tr("not checked"));
@@ -301,6 +306,8 @@ void HealthPage::rebuildRows()
         }
     }
     m_table->resizeColumnsToContents();
+    // The reasons wrap rather than push the measurements out of sight.
+    m_table->setColumnWidth(ReasonsColumn, std::min(m_table->columnWidth(ReasonsColumn), 420));
     m_table->resizeRowsToContents();
     if (selected >= 0 && selected < m_table->rowCount())
         m_table->selectRow(selected);
@@ -318,12 +325,12 @@ void HealthPage::fillRow(int row, const ServoHealth &health)
                              health.model,
                              health.firmware,
                              feetech::verdictName(health.verdict),
+                             reasons.join(QLatin1Char('\n')),
                              measured(health.voltage, 1, QStringLiteral("V")),
                              measured(health.temperature, 0, QStringLiteral("°C")),
                              measured(health.load, 1, QStringLiteral("%")),
                              health.comm.reads > 0 ? feetech::commText(health.comm) : QString(),
-                             health.move ? feetech::moveText(*health.move) : QString(),
-                             reasons.join(QLatin1Char('\n'))};
+                             health.move ? feetech::moveText(*health.move) : QString()};
     for (int column = 0; column < ColumnCount; ++column) {
         auto *item = new QTableWidgetItem(cells.at(column));
         if (column == ReasonsColumn && !health.findings.isEmpty()) {

@@ -31,12 +31,12 @@ public:
         ModelColumn,
         FirmwareColumn,
         VerdictColumn,
+        ReasonsColumn,
         VoltageColumn,
         TemperatureColumn,
         LoadColumn,
         CommColumn,
         MoveColumn,
-        ReasonsColumn,
         ColumnCount
     };
     // Asked before a move test with what will move; true lets it run.
