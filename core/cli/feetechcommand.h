@@ -5,6 +5,7 @@
 #include "cli/feetechdevice.h"
 #include "cli/servoctl.h"
 #include "feetech/armcalibration.h"
+#include "feetech/servohealth.h"
 #include "feetech/settingsfile.h"
 #include "model/parametermodel.h"
 #include "profile/profile.h"
@@ -122,6 +123,10 @@ private:
     int calibration(const QString &what, const QStringList &operands);
     int saveCalibration(const QString &what, const QStringList &operands);
     int loadCalibration(const QString &what, const QStringList &operands);
+
+    // The health check (feetechhealthcommand.cpp).
+    int health(const QString &what, const QStringList &operands);
+    void printHealth(const feetech::ServoHealth &health, bool moveAsked);
 
     // Live feedback (feetechmonitorcommand.cpp).
     int monitor(const QString &what, const QStringList &operands);

@@ -48,6 +48,7 @@ int FeetechCommand::run(const QStringList &rest)
         {"setup-motor", &FeetechCommand::setupMotor},
         {"monitor", &FeetechCommand::monitor},
         {"identify", &FeetechCommand::identify},
+        {"health", &FeetechCommand::health},
         {"calibrate", &FeetechCommand::calibrate},
         {"calibration", &FeetechCommand::calibration},
     };
@@ -78,8 +79,8 @@ void FeetechCommand::allowOptions(const QString &what, const QStringList &allowe
         if (!allowed.contains(name) && !kGlobal.contains(name))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
     }
-    for (const QString &flag :
-         {QStringLiteral("thorough"), QStringLiteral("csv"), QStringLiteral("dry-run")}) {
+    for (const QString &flag : {QStringLiteral("thorough"), QStringLiteral("csv"),
+                                QStringLiteral("dry-run"), QStringLiteral("move-test")}) {
         if (m_args.flag(flag) && !allowed.contains(flag))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, flag)};
     }

@@ -217,6 +217,7 @@ std::optional<OperationResult> FeetechDevice::operate(const std::function<void()
         m_interrupted = true;
         m_session->cancelIdentify();
         m_session->cancelMotorSetup();
+        m_session->cancelHealthCheck();
     });
     QObject::disconnect(finished);
     QObject::disconnect(reading);

@@ -72,6 +72,14 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "                                         whose joint with ID N gives the model to expect\n"
     "                                         and the settings to write and verify\n"
     "  feetech identify --id N                wiggle the servo slowly so you see which it is\n"
+    "  feetech health --ids LIST [--move-test]\n"
+    "                                         check each servo: model and firmware, voltage and\n"
+    "                                         temperature against its limits, status bits, load,\n"
+    "                                         20 reads' retries and errors, position against its\n"
+    "                                         limits; --move-test also moves each servo without\n"
+    "                                         a fault 100 steps and back (rise time, overshoot,\n"
+    "                                         steady-state error); exit 1 when a servo has a "
+    "fault\n"
     "  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]\n"
     "                                         stream position, speed, load, voltage,\n"
     "                                         temperature and current (SYNC READ)\n"
@@ -117,7 +125,7 @@ public:
                  QStringLiteral("full-turn"), QStringLiteral("out"), QStringLiteral("expect")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
-                 QStringLiteral("dry-run")});
+                 QStringLiteral("dry-run"), QStringLiteral("move-test")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);

@@ -73,6 +73,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
     connectMotorSetup(session);
+    connectHealth(session);
 }
 
 BusClient::~BusClient() = default;

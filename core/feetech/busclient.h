@@ -3,6 +3,7 @@
 #pragma once
 
 #include "feetech/feetechsession.h"
+#include "feetech/servohealth.h"
 #include "feetech/telemetry.h"
 #include "link/linkmirror.h"
 #include "link/linktypes.h"
@@ -135,6 +136,22 @@ public:
     // Stops a find, set-up or check before its next step.
     void cancelMotorSetup();
 
+    // ---- health check (busclienthealth.cpp): reads only, except the confirmed move test
+
+    // Reads each of servos `indexes` in turn (its limits and `reads` feedback blocks); a
+    // healthRead per servo (and progress), then healthCheckFinished. False and *error when
+    // nothing was started.
+    bool checkHealth(const QVector<int> &indexes, int reads = kDefaultHealthReads,
+                     QString *error = nullptr);
+    // The running check stops before its next servo.
+    void cancelHealthCheck();
+    bool isCheckingHealth() const { return m_checkingHealth; }
+    // Why servo `index` cannot take the move test now (empty when it can).
+    QString moveTestBlocker(int index) const;
+    // The move test moves the horn: it runs only when `confirmed` says the user agreed to it;
+    // otherwise, as when blocked, false and *error, and nothing is sent. Ends with moveTested.
+    bool moveTest(int index, bool confirmed, QString *error = nullptr);
+
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
@@ -155,6 +172,10 @@ signals:
     void motorSetupProgress(int step, int steps, const QString &text);
     void motorSetupFinished(const feetech::MotorSetupResult &result);
     void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
+    void healthRead(const feetech::HealthReading &reading);
+    void healthCheckFinished(bool completed, const QString &message);
+    // Also when the link went down meanwhile (then not ok).
+    void moveTested(const feetech::MoveTestResult &result);
 
 private:
     void onServoFound(const ServoInfo &info);
@@ -162,6 +183,7 @@ private:
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
     void connectMotorSetup(Session *session);
+    void connectHealth(Session *session);
     bool startMotorWork(QString *error, const std::function<void(Session &)> &work);
     void onMotorWorkFinished(const OperationResult &result);
     enum class Work {
@@ -200,6 +222,8 @@ private:
     std::optional<QVector<JointCheck>> m_jointsChecked;
     std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
     QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
+    bool m_checkingHealth = false;
+    std::optional<MoveTestResult> m_moveTested; // what the session said of the running test
 };
 
 } // namespace feetech

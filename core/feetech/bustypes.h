@@ -109,7 +109,9 @@ enum class Operation {
     FindMotor, // motor set-up: the one servo on the bus, at any rate
     SetUpMotor,
     CheckJoints,
-    Identify // a joint's wiggle, with what it changed put back
+    Identify, // a joint's wiggle, with what it changed put back
+    HealthCheck, // reads only
+    MoveTest // the health check's confirmed move, with what it changed put back
 };
 
 struct OperationResult

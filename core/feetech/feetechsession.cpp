@@ -34,8 +34,12 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_apply(new ApplyFlow(*m_bus, *m_flows, this))
     , m_motorSetup(new MotorSetup(*m_bus, *m_flows, *m_apply, this))
     , m_identify(new JointIdentify(*m_bus, this))
+    , m_health(new HealthCheck(*m_bus, this))
+    , m_moveTest(new HealthMoveTest(*m_bus, this))
 {
     qRegisterMetaType<feetech::ApplyPlan>();
+    qRegisterMetaType<feetech::HealthReading>();
+    qRegisterMetaType<feetech::MoveTestResult>();
     qRegisterMetaType<feetech::ServoInfo>();
     qRegisterMetaType<feetech::ScanOptions>();
     qRegisterMetaType<feetech::ReadSource>();

@@ -6,6 +6,8 @@
 #include "feetech/busscan.h"
 #include "feetech/bustypes.h"
 #include "feetech/guidedflows.h"
+#include "feetech/healthcheck.h"
+#include "feetech/healthmovetest.h"
 #include "feetech/jointidentify.h"
 #include "feetech/motorsetup.h"
 #include "feetech/telemetry.h"
@@ -96,6 +98,15 @@ public:
     // Not queued: stops the running one before its next step.
     void cancelMotorSetup();
 
+    // Health check (feetechsessionhealth.cpp): reads only. Each servo in turn gets its limits
+    // and `reads` feedback blocks read (HealthCheck); healthRead and progress follow each one,
+    // and the bus is free for All torque off and telemetry between two servos.
+    void checkHealth(const QVector<feetech::ServoInfo> &servos, int reads);
+    // Not queued: the running check stops before its next servo.
+    void cancelHealthCheck();
+    // The move test (HealthMoveTest): the caller asks only once the user confirmed it.
+    void moveTest(const feetech::ServoInfo &servo);
+
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
@@ -116,6 +127,10 @@ signals:
     void motorSetupProgress(int step, int steps, const QString &text);
     void motorSetupFinished(const feetech::MotorSetupResult &result);
     void jointsChecked(const QVector<feetech::JointCheck> &joints);
+    // Before the health check's operationFinished, once per servo read.
+    void healthRead(const feetech::HealthReading &reading);
+    // Before the move test's operationFinished.
+    void moveTested(const feetech::MoveTestResult &result);
 
 private:
     void onLinkDown(const QString &message);
@@ -131,6 +146,7 @@ private:
     void startNextOperation();
     void startQueuedOperation(); // the next operation, whether or not a telemetry cycle is due
     void onScanFinished(bool completed, const QString &message);
+    void checkNextServo(QVector<ServoInfo> servos, int done, int reads);
     // Ends a write queued before the last torque off without sending it; true when it did.
     bool refusedAfterTorqueOff(Operation operation, quint64 epoch);
     // Reads torque enable back after All torque off; counts the servos that confirm it.
@@ -146,6 +162,8 @@ private:
     ApplyFlow *m_apply = nullptr;
     MotorSetup *m_motorSetup = nullptr;
     JointIdentify *m_identify = nullptr;
+    HealthCheck *m_health = nullptr;
+    HealthMoveTest *m_moveTest = nullptr;
     struct Queued
     {
         Operation operation = Operation::Read;

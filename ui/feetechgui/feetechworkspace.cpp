@@ -8,6 +8,7 @@
 #include "feetech/busclient.h"
 #include "feetech/servoparameters.h"
 #include "feetechgui/controlpage.h"
+#include "feetechgui/healthpage.h"
 #include "feetechgui/jointtable.h"
 #include "feetechgui/monitorpage.h"
 #include "feetechgui/registertablemodel.h"
@@ -220,6 +221,10 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_tabs->addTab(m_monitor, tr("Monitor"));
     m_joints = new JointTable(m_client, m_tabs);
     m_tabs->addTab(m_joints, tr("Joints"));
+    m_health = new HealthPage(m_client, m_tabs);
+    m_tabs->addTab(m_health, tr("Health"));
+    connect(m_health, &HealthPage::problem, this, &FeetechWorkspace::problem);
+    connect(m_health, &HealthPage::message, this, &FeetechWorkspace::message);
     rightLayout->addWidget(m_tabs, 1);
     splitter->addWidget(right);
     splitter->setStretchFactor(0, 0);

@@ -8,6 +8,7 @@
 #include <optional>
 
 class ControlPage;
+class HealthPage;
 class JointTable;
 class MonitorPage;
 class ParameterPage;
@@ -59,6 +60,7 @@ public:
     MonitorPage *monitorPage() const { return m_monitor; }
     ControlPage *controlPage() const { return m_control; }
     JointTable *jointTable() const { return m_joints; }
+    HealthPage *healthPage() const { return m_health; }
     QPushButton *allTorqueOffButton() const { return m_allTorqueOff; }
     RobotActions *robotActions() const { return m_robot; }
 
@@ -92,6 +94,7 @@ private:
     MonitorPage *m_monitor = nullptr;
     ControlPage *m_control = nullptr;
     JointTable *m_joints = nullptr;
+    HealthPage *m_health = nullptr;
     QPushButton *m_scan = nullptr;
     QPushButton *m_cancelScan = nullptr;
     QProgressBar *m_scanProgress = nullptr;
