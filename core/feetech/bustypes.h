@@ -109,7 +109,9 @@ enum class Operation {
     FindMotor, // motor set-up: the one servo on the bus, at any rate
     SetUpMotor,
     CheckJoints,
-    Identify // a joint's wiggle, with what it changed put back
+    Identify, // a joint's wiggle, with what it changed put back
+    Guard, // the guard's hold or torque off, ahead of the queue; reported as a GuardEvent
+    RecoverOverload // torque off and on again after an overload trip, then the status checked
 };
 
 struct OperationResult
@@ -124,6 +126,8 @@ struct OperationResult
     bool control = false;
     // False for a step of an apply chain that more steps follow (the operation goes on).
     bool final = true;
+    // RecoverOverload: the overload bit stayed set; only a power cycle clears it.
+    bool stillLatched = false;
 };
 
 struct SessionTiming

@@ -5,6 +5,7 @@
 #include "feetech/busexchange.h"
 #include "feetech/busscan.h"
 #include "feetech/bustypes.h"
+#include "feetech/guardkeeper.h"
 #include "feetech/guidedflows.h"
 #include "feetech/jointidentify.h"
 #include "feetech/motorsetup.h"
@@ -88,6 +89,15 @@ public:
     void syncWrite(qint32 baud, int address, int length,
                    const QVector<feetech::SyncWriteEntry> &entries);
 
+    // The overload and thermal guard (GuardKeeper): on from the start; these replace its
+    // settings. Its warnings and actions come as guardEvent and notes in the packet log.
+    void setGuardSettings(const feetech::GuardSettings &settings);
+    const GuardSettings &guardSettings() const { return m_guard->settings(); }
+    // Torque off and on again, then the status checked (see recoverOverload in
+    // overloadrecovery.h); with `checkOnly` (after a power cycle) only the status. The result's
+    // stillLatched says a power cycle is needed.
+    void recoverOverload(const feetech::ServoInfo &servo, bool checkOnly);
+
     // Motor set-up (MotorSetup): the one servo on the bus found at any rate; found and set up
     // as `target` says; the joints that already answer at their ID at `baud`.
     void findMotor(const feetech::MotorTarget &target);
@@ -116,6 +126,7 @@ signals:
     void motorSetupProgress(int step, int steps, const QString &text);
     void motorSetupFinished(const feetech::MotorSetupResult &result);
     void jointsChecked(const QVector<feetech::JointCheck> &joints);
+    void guardEvent(const feetech::GuardEvent &event);
 
 private:
     void onLinkDown(const QString &message);
@@ -130,6 +141,13 @@ private:
                   std::function<void()> resume);
     void startNextOperation();
     void startQueuedOperation(); // the next operation, whether or not a telemetry cycle is due
+    // Telemetry and the guard's reads take turns: a cycle that ended lets the next one go.
+    void onCycleEnded();
+    bool startCycleIfDue(); // the stream's, else the guard's; true when one started
+    bool inCycle() const;
+    // The guard's action: ahead of everything queued but All torque off; it ends the
+    // operation without an operationFinished (the GuardEvent says what happened).
+    void runGuardAction(std::function<void(std::function<void()> finished)> work);
     void onScanFinished(bool completed, const QString &message);
     // Ends a write queued before the last torque off without sending it; true when it did.
     bool refusedAfterTorqueOff(Operation operation, quint64 epoch);
@@ -146,6 +164,7 @@ private:
     ApplyFlow *m_apply = nullptr;
     MotorSetup *m_motorSetup = nullptr;
     JointIdentify *m_identify = nullptr;
+    GuardKeeper *m_guard = nullptr;
     struct Queued
     {
         Operation operation = Operation::Read;

@@ -26,6 +26,7 @@ void Session::identifyJoint(const ServoInfo &servo)
     enqueue(Operation::Identify, [this, servo, epoch] {
         if (refusedAfterTorqueOff(Operation::Identify, epoch))
             return;
+        m_guard->noteDriven(servo);
         m_identify->run(servo, finisher(),
                         [this, epoch](std::chrono::milliseconds delay,
                                       std::function<void(bool torqueOff)> resume) {
