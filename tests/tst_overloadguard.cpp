@@ -101,8 +101,8 @@ private slots:
     void aModelWithoutOverloadTorqueIsWatchedByItsProtectionCurrent()
     {
         const auto &table = feetech::RegisterTable::forFamily(feetech::Family::Hls);
-        const GuardLimits limits = feetech::defaultGuardLimits(
-            table, [](QStringView key) -> std::optional<qint32> {
+        const GuardLimits limits =
+            feetech::defaultGuardLimits(table, [](QStringView key) -> std::optional<qint32> {
                 return key == u"protection_current" ? std::optional<qint32>(200) : std::nullopt;
             });
         QVERIFY(limits.currentMilliamps);
@@ -210,8 +210,8 @@ private slots:
     {
         OverloadGuard guard;
         feetech::GuardSettings settings;
-        GuardLimits strict = feetech::defaultGuardLimits(
-            feetech::RegisterTable::forFamily(feetech::Family::Sts));
+        GuardLimits strict =
+            feetech::defaultGuardLimits(feetech::RegisterTable::forFamily(feetech::Family::Sts));
         strict.loadPercent = 30.0;
         strict.holdTime = std::chrono::milliseconds(400);
         strict.action = feetech::GuardAction::TorqueOff;
@@ -249,8 +249,9 @@ private slots:
         decisions += guard.observe(servo, sample(1, 600, 0.0, 35.0, 0x00));
         QCOMPARE(stages(decisions, GuardCause::LatchedOverload),
                  (QVector<GuardStage> {GuardStage::Warning, GuardStage::Cleared}));
-        QCOMPARE(feetech::overloadStatusBit(feetech::RegisterTable::forFamily(feetech::Family::Sts)),
-                 quint8(0x20));
+        QCOMPARE(
+            feetech::overloadStatusBit(feetech::RegisterTable::forFamily(feetech::Family::Sts)),
+            quint8(0x20));
     }
 
     void theActionMessageNamesTheServoTheFiguresAndWhatWasDone()

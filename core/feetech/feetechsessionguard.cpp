@@ -47,7 +47,8 @@ void Session::recoverOverload(const ServoInfo &servo, bool checkOnly)
         auto target = std::make_shared<ServoInfo>(servo);
         auto latched = std::make_shared<std::optional<bool>>();
         m_bus->runSteps(
-            {m_bus->setBaud(servo.baud), feetech::recoverOverload(*m_bus, target, checkOnly, latched)},
+            {m_bus->setBaud(servo.baud),
+             feetech::recoverOverload(*m_bus, target, checkOnly, latched)},
             [this, servo, checkOnly, latched](bool ok, const QString &message) {
                 OperationResult result {Operation::RecoverOverload, ok, message, servo, {}};
                 result.stillLatched = ok && latched->value_or(false);

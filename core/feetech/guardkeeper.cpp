@@ -209,24 +209,26 @@ void GuardKeeper::act(const ServoInfo &servo, const GuardEvent &seen, const Guar
             steps.push_back(m_bus.write(info.id, torque->address, QByteArray(1, char(*off)),
                                         info.repliesToWrites(),
                                         Tr::tr("Guard: torque off of servo %1").arg(info.id)));
-            steps.push_back(m_bus.read(target, torque->address, torque->size, ReadSource::ReadBack));
+            steps.push_back(
+                m_bus.read(target, torque->address, torque->size, ReadSource::ReadBack));
         }
-        m_bus.runSteps(std::move(steps), [this, target, seen, limits, heldAt,
-                                          finished](bool ok, const QString &message) {
-            GuardEvent event = seen;
-            GuardLimits used = limits;
-            if (!target->table().find(u"goal_position"))
-                used.action = event.action = GuardAction::TorqueOff;
-            event.ok = ok;
-            event.heldAt = *heldAt;
-            event.message = message;
-            if (ok && event.action == GuardAction::TorqueOff)
-                setDriven(*target, false);
-            report(event, used);
-            if (m_acted)
-                m_acted(*target);
-            finished();
-        });
+        m_bus.runSteps(
+            std::move(steps),
+            [this, target, seen, limits, heldAt, finished](bool ok, const QString &message) {
+                GuardEvent event = seen;
+                GuardLimits used = limits;
+                if (!target->table().find(u"goal_position"))
+                    used.action = event.action = GuardAction::TorqueOff;
+                event.ok = ok;
+                event.heldAt = *heldAt;
+                event.message = message;
+                if (ok && event.action == GuardAction::TorqueOff)
+                    setDriven(*target, false);
+                report(event, used);
+                if (m_acted)
+                    m_acted(*target);
+                finished();
+            });
     });
 }
 

@@ -185,16 +185,15 @@ QVector<GuardDecision> OverloadGuard::observe(const ServoInfo &info, const Feedb
 }
 
 void OverloadGuard::observeOverload(State &state, const GuardLimits &limits,
-                                    const FeedbackSample &sample,
-                                    QVector<GuardDecision> &out) const
+                                    const FeedbackSample &sample, QVector<GuardDecision> &out) const
 {
     std::optional<GuardDecision> over;
     if (const auto load = sample.value(Quantity::Load);
         load && std::abs(*load) > limits.loadPercent)
         over = GuardDecision {GuardCause::Overload, GuardStage::Warning, *load, limits.loadPercent,
                               false};
-    else if (const auto current = sample.value(Quantity::Current); current
-             && limits.currentMilliamps && std::abs(*current) > *limits.currentMilliamps)
+    else if (const auto current = sample.value(Quantity::Current);
+             current && limits.currentMilliamps && std::abs(*current) > *limits.currentMilliamps)
         over = GuardDecision {GuardCause::Overload, GuardStage::Warning, *current,
                               *limits.currentMilliamps, true};
     if (!over) {

@@ -28,8 +28,9 @@ Step recoverOverload(BusExchange &bus, std::shared_ptr<ServoInfo> servo, bool ch
         const auto off = table.torqueValue(TorqueMode::Off);
         const auto on = table.torqueValue(TorqueMode::On);
         if (!torque || !status || !off || !on || !table.find(u"goal_position")) {
-            next(false, Tr::tr("%1 has no torque, goal or status register to recover with.")
-                            .arg(servoName(*servo)));
+            next(false,
+                 Tr::tr("%1 has no torque, goal or status register to recover with.")
+                     .arg(servoName(*servo)));
             return;
         }
         const auto torqueWrite = [&bus, servo, torque](qint32 value, const QString &what) {
@@ -50,25 +51,28 @@ Step recoverOverload(BusExchange &bus, std::shared_ptr<ServoInfo> servo, bool ch
                                  }));
         const Register *torqueRegister = torque;
         const qint32 offValue = *off;
-        bus.runSteps(std::move(steps), [&bus, servo, latched, torqueRegister, offValue,
-                                        next](bool ok, const QString &message) {
-            if (!ok || !latched->has_value()) {
-                next(false, ok ? Tr::tr("The status of %1 could not be read.").arg(servoName(*servo))
-                               : message);
-                return;
-            }
-            if (!**latched) {
-                next(true, {});
-                return;
-            }
-            // Still tripped: the servo keeps its torque off; the register says so too.
-            bus.runSteps({bus.write(servo->id, torqueRegister->address,
-                                    QByteArray(1, char(offValue)), servo->repliesToWrites(),
-                                    Tr::tr("Recovery: torque off (still tripped)")),
-                          bus.read(servo, torqueRegister->address, torqueRegister->size,
-                                   ReadSource::ReadBack)},
-                         next);
-        });
+        bus.runSteps(
+            std::move(steps),
+            [&bus, servo, latched, torqueRegister, offValue, next](bool ok,
+                                                                   const QString &message) {
+                if (!ok || !latched->has_value()) {
+                    next(false,
+                         ok ? Tr::tr("The status of %1 could not be read.").arg(servoName(*servo))
+                            : message);
+                    return;
+                }
+                if (!**latched) {
+                    next(true, {});
+                    return;
+                }
+                // Still tripped: the servo keeps its torque off; the register says so too.
+                bus.runSteps({bus.write(servo->id, torqueRegister->address,
+                                        QByteArray(1, char(offValue)), servo->repliesToWrites(),
+                                        Tr::tr("Recovery: torque off (still tripped)")),
+                              bus.read(servo, torqueRegister->address, torqueRegister->size,
+                                       ReadSource::ReadBack)},
+                             next);
+            });
     };
 }
 

@@ -84,21 +84,20 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
 }
 
 Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
-                            std::shared_ptr<std::optional<qint32>> heldAt)
+                           std::shared_ptr<std::optional<qint32>> heldAt)
 {
     return [&bus, servo, heldAt](StepDone next) {
         const RegisterTable &table = servo->table();
         const Register &present = *table.find(kPresentKey);
         const Register &goal = *table.find(kGoalKey);
         auto where = std::make_shared<std::optional<qint32>>();
-        bus.read(servo, present.address, present.size, ReadSource::ReadBack,
-                 [&table, &present, where](const QByteArray &bytes) {
-                     *where = valueOf(table, present, bytes);
-                 })([&bus, servo, &table, &goal, where, heldAt, next](bool ok,
-                                                                      const QString &message) {
+        bus.read(
+            servo, present.address, present.size, ReadSource::ReadBack,
+            [&table, &present, where](const QByteArray &bytes) {
+                *where = valueOf(table, present, bytes);
+            })([&bus, servo, &table, &goal, where, heldAt, next](bool ok, const QString &message) {
             if (!ok || !*where) {
-                next(false,
-                     ok ? Tr::tr("The present position could not be read.") : message);
+                next(false, ok ? Tr::tr("The present position could not be read.") : message);
                 return;
             }
             QString error;
