@@ -52,6 +52,15 @@ int main(int argc, char *argv[])
         err << "servosim: " << error << '\n';
         return 1;
     }
+    for (const QString &command : std::as_const(options->commands)) {
+        const QString reply = sim::runSimulatorCommand(command, *simulator);
+        if (reply.startsWith(QLatin1String("error "))) {
+            err << "servosim: --command \"" << command << "\": " << reply.mid(6) << '\n';
+            simulator->stop();
+            return 2;
+        }
+        err << "servosim: " << reply.mid(3) << '\n';
+    }
     out << "ready " << simulator->linkPath() << '\n';
     out.flush();
 

@@ -223,6 +223,27 @@ private slots:
         QVERIFY(process.waitForFinished(5000));
     }
 
+    void commandOptionsPlayBenchCasesBeforeReady()
+    {
+        const QString link = m_dir.filePath(QStringLiteral("cases"));
+        QProcess process;
+        QVERIFY(startServosim(process,
+                              {QStringLiteral("feetech"), QStringLiteral("--link"), link,
+                               QStringLiteral("--robot"), QStringLiteral("so101"),
+                               QStringLiteral("--command"), QStringLiteral("break-chain 2"),
+                               QStringLiteral("--command"), QStringLiteral("supply 12.6")}));
+        testsupport::PortClient client;
+        QVERIFY(client.open(link, 1000000));
+        // ID 2 answers, with the voltage bit of its status set: 12.6 V is over its limit.
+        QCOMPARE(client.exchange(feetech::ping(2), 6), feetech::status(2, 0x01));
+        QVERIFY(client.exchange(feetech::ping(3), 6, 300).isEmpty());
+        const QString list = command(process, "list");
+        QCOMPARE(list.count(QLatin1String("power=off")), 4);
+        QCOMPARE(list.count(QLatin1String("supply=12.6")), 6);
+        process.terminate();
+        QVERIFY(process.waitForFinished(5000));
+    }
+
     void badArgumentsExitTwoWithAMessage_data()
     {
         QTest::addColumn<QStringList>("arguments");
@@ -270,6 +291,13 @@ private slots:
                                                               QStringLiteral("so101"),
                                                               QStringLiteral("--hand"),
                                                               QStringLiteral("9:0:100:1")};
+        QTest::newRow("bad command") << QStringList {QStringLiteral("feetech"),
+                                                     l,
+                                                     link,
+                                                     QStringLiteral("--robot"),
+                                                     QStringLiteral("so101"),
+                                                     QStringLiteral("--command"),
+                                                     QStringLiteral("supply 99")};
     }
     void badArgumentsExitTwoWithAMessage()
     {

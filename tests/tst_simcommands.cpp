@@ -144,12 +144,48 @@ private slots:
         QCOMPARE(run(QStringLiteral("list")).count(QLatin1String("torque=off")), 3);
     }
 
+    void benchCasesChangeTheBusAndShowInList()
+    {
+        QVERIFY(isOk(run(QStringLiteral("power 2 off"))));
+        QVERIFY(isOk(run(QStringLiteral("block #1"))));
+        QVERIFY(isOk(run(QStringLiteral("latch 3"))));
+        QVERIFY(isOk(run(QStringLiteral("heat 1 0.5"))));
+        QVERIFY(isOk(run(QStringLiteral("supply 12.5"))));
+        const QString list = run(QStringLiteral("list"));
+        QCOMPARE(list.count(QLatin1String("power=off")), 1);
+        QCOMPARE(list.count(QLatin1String("horn=blocked")), 1);
+        QCOMPARE(list.count(QLatin1String("overload=latched")), 1);
+        QCOMPARE(list.count(QLatin1String("heat=0.5")), 1);
+        QCOMPARE(list.count(QLatin1String("supply=12.5")), 3);
+        const auto state = onBus([](sim::VirtualFeetechBus &bus) {
+            return std::make_tuple(bus.isPowered(1), bus.servo(0).externalLoad(),
+                                   bus.servo(2).overloadLatched(), bus.servo(0).temperatureRise());
+        });
+        QCOMPARE(state, std::make_tuple(false, 1000, true, 0.5));
+        QVERIFY(isOk(run(QStringLiteral("power 2 on"))));
+        QVERIFY(isOk(run(QStringLiteral("unblock 1"))));
+        QVERIFY(isOk(run(QStringLiteral("temperature 1 70"))));
+        const QString after = run(QStringLiteral("list"));
+        QVERIFY2(!after.contains(QLatin1String("power=off")), qPrintable(after));
+        QVERIFY2(!after.contains(QLatin1String("horn=blocked")), qPrintable(after));
+        QVERIFY2(after.contains(QLatin1String("temperature=70")), qPrintable(after));
+    }
+
+    void breakChainSilencesTheServosAfterItUntilNone()
+    {
+        QVERIFY(isOk(run(QStringLiteral("break-chain 1"))));
+        QCOMPARE(run(QStringLiteral("list")).count(QLatin1String("power=off")), 2);
+        QVERIFY(isOk(run(QStringLiteral("break-chain none"))));
+        QCOMPARE(run(QStringLiteral("list")).count(QLatin1String("power=off")), 0);
+    }
+
     void helpNamesEveryCommand()
     {
         const QString reply = run(QStringLiteral("help"));
         QVERIFY(isOk(reply));
         for (const char *command :
-             {"turn", "sweep", "release", "plug", "unplug", "set-id", "list", "power-cycle"})
+             {"turn", "sweep", "release", "plug", "unplug", "set-id", "list", "power-cycle",
+              "power", "break-chain", "supply", "heat", "temperature", "block", "unblock", "latch"})
             QVERIFY2(reply.contains(QLatin1String(command)), command);
     }
 
@@ -160,7 +196,7 @@ private slots:
         QTest::addColumn<QString>("line");
         QTest::addColumn<QString>("expected");
         const auto row = [](const char *line, const char *expected) {
-            QTest::newRow(line) << QString::fromLatin1(line) << QString::fromLatin1(expected);
+            QTest::newRow(line) << QString::fromLatin1(line) << QString::fromUtf8(expected);
         };
         row("bogus", "unknown command \"bogus\": try help");
         row("turn", "turn takes: turn SERVO POS");
@@ -186,6 +222,20 @@ private slots:
         row("list all", "list takes: list");
         row("release now", "release takes: release");
         row("power-cycle twice", "power-cycle takes: power-cycle");
+        row("power 1", "power takes: power SERVO on|off");
+        row("power 1 maybe", "power takes: power SERVO on|off");
+        row("power 9 off", "no servo has ID 9");
+        row("break-chain", "break-chain takes: break-chain SERVO|none");
+        row("supply", "supply takes: supply VOLTS");
+        row("supply 99", "\"99\" is not a supply from 0 to 30 V");
+        row("supply nan", "\"nan\" is not a supply from 0 to 30 V");
+        row("heat 1", "heat takes: heat SERVO C_PER_S");
+        row("heat 1 50", "\"50\" is not a rate from -10 to 10 °C/s");
+        row("temperature 1 500", "\"500\" is not a temperature from -20 to 120 °C");
+        row("block 1 0.5", "\"0.5\" is not a load from -1000 to 1000 ‰");
+        row("block 1 2 3", "block takes: block SERVO [PERMILLE]");
+        row("unblock", "unblock takes: unblock SERVO");
+        row("latch 1 2", "latch takes: latch SERVO");
     }
     void badCommandsGetAClearError()
     {

@@ -1,6 +1,6 @@
 // Tests the Simulator dock offscreen: its servo table, turning a horn by hand (refused with
-// torque on), sweeping, plugging and unplugging, putting a servo at an ID and power-cycling,
-// each verified through the SimulatorThread.
+// torque on), sweeping, plugging and unplugging, putting a servo at an ID, power-cycling and
+// the bench cases, each verified through the SimulatorThread.
 #include "common/packetlogdock.h"
 #include "common/simulatordock.h"
 #include "feetechbus.h"
@@ -139,6 +139,65 @@ private slots:
         QCOMPARE(m_dock->table()->item(1, 1)->text(), QStringLiteral("1"));
         QVERIFY(!m_dock->putSelectedAtId(254));
         QVERIFY2(m_dock->note().contains(QLatin1String("out of range")),
+                 qPrintable(m_dock->note()));
+    }
+
+    void everyBenchCaseChangesTheBusAndTheTableSaysSo()
+    {
+        using Case = SimulatorDock::BenchCase;
+        m_dock->selectServo(1);
+        QVERIFY(m_dock->playBenchCase(Case::CutPower));
+        QVERIFY(!onBus([](sim::VirtualFeetechBus &bus) { return bus.isPowered(1); }));
+        QVERIFY2(m_dock->table()->item(1, 6)->text().contains(QLatin1String("no power")),
+                 qPrintable(m_dock->table()->item(1, 6)->text()));
+        QVERIFY(m_dock->playBenchCase(Case::RestorePower));
+        QVERIFY(onBus([](sim::VirtualFeetechBus &bus) { return bus.isPowered(1); }));
+
+        m_dock->selectServo(0);
+        QVERIFY(m_dock->playBenchCase(Case::BreakChainAfter));
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.chainBreakAfter(); }), 0);
+        QVERIFY(m_dock->playBenchCase(Case::MendChain));
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.chainBreakAfter(); }), -1);
+
+        m_dock->selectServo(0);
+        QVERIFY(m_dock->playBenchCase(Case::BlockHorn));
+        QVERIFY(m_dock->playBenchCase(Case::Heat));
+        QVERIFY(m_dock->playBenchCase(Case::LatchOverload));
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) {
+                     const sim::VirtualFeetechServo &servo = bus.servo(0);
+                     return std::make_tuple(servo.externalLoad(), servo.temperatureRise(),
+                                            servo.overloadLatched());
+                 }),
+                 std::make_tuple(1000, SimulatorDock::kHeatPerSecond, true));
+        const QString bench = m_dock->table()->item(0, 6)->text();
+        QVERIFY2(bench.contains(QLatin1String("horn blocked"))
+                     && bench.contains(QLatin1String("overload latched"))
+                     && bench.contains(QLatin1String("heating")),
+                 qPrintable(bench));
+        QVERIFY(m_dock->playBenchCase(Case::FreeHorn));
+        QVERIFY(m_dock->playBenchCase(Case::StopHeating));
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) {
+                     return std::make_pair(bus.servo(0).externalLoad(),
+                                           bus.servo(0).temperatureRise());
+                 }),
+                 std::make_pair(0, 0.0));
+
+        QVERIFY(m_dock->playBenchCase(Case::SupplyTooHigh));
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.servo(1).supplyVoltage(); }),
+                 SimulatorDock::kHighSupplyVolts);
+        QVERIFY(m_dock->playBenchCase(Case::SupplyTooLow));
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.servo(1).supplyVoltage(); }),
+                 SimulatorDock::kLowSupplyVolts);
+        QVERIFY(m_dock->playBenchCase(Case::SupplyNormal));
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.servo(1).supplyVoltage(); }),
+                 sim::VirtualFeetechServo::kDefaultSupplyVolts);
+    }
+
+    void aServoCaseNeedsASelectedServo()
+    {
+        m_dock->table()->clearSelection();
+        QVERIFY(!m_dock->playBenchCase(SimulatorDock::BenchCase::CutPower));
+        QVERIFY2(m_dock->note().contains(QLatin1String("Select a servo")),
                  qPrintable(m_dock->note()));
     }
 

@@ -117,6 +117,85 @@ private slots:
         QCOMPARE(bus.findServo(4)->value(u"torque_enable"), 0); // at 115200: heard only noise
     }
 
+    void anUnpoweredServoHearsNothingAndBootsFreshWhenPoweredAgain()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        bus.servo(0).setValue(u"torque_enable", 1);
+        QVERIFY(bus.setPowered(0, false));
+        QVERIFY(!bus.isPowered(0));
+        QVERIFY(bus.handleFrame(feetech::ping(1), k1M, 0).isEmpty());
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(2), k1M, 0)), QVector<quint8> {2});
+        QVERIFY(bus.setPowered(0, true));
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(1), k1M, 0)), QVector<quint8> {1});
+        QCOMPARE(bus.servo(0).value(u"torque_enable"), 0);
+        QVERIFY(!bus.setPowered(9, false));
+    }
+
+    void aBrokenChainSilencesEveryServoAfterTheBreakUntilMended()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        QVERIFY(bus.setChainBreakAfter(0));
+        QCOMPARE(bus.chainBreakAfter(), 0);
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(1), k1M, 0)), QVector<quint8> {1});
+        QVERIFY(bus.handleFrame(feetech::ping(2), k1M, 0).isEmpty());
+        QVERIFY(bus.handleFrame(feetech::ping(3), k1M, 0).isEmpty());
+        QVERIFY(bus.handleFrame(feetech::ping(4), k115k, 0).isEmpty());
+        QVERIFY(!bus.setChainBreakAfter(4));
+        QVERIFY(bus.setChainBreakAfter(-1));
+        QCOMPARE(replyIds(bus.handleFrame(feetech::ping(4), k115k, 0)), QVector<quint8> {4});
+    }
+
+    void unpluggingAServoBeforeTheBreakKeepsTheBreakAfterTheSameServo()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        QVERIFY(bus.setChainBreakAfter(1)); // after ID 2
+        QVERIFY(bus.unplug(0));
+        QCOMPARE(bus.chainBreakAfter(), 0); // still after ID 2, now first
+        QVERIFY(bus.isPowered(0));
+        QVERIFY(!bus.isPowered(1));
+    }
+
+    void aLatchedOverloadStaysSetWhenTorqueIsSwitchedOnAgainUntilAPowerCycle()
+    {
+        VirtualFeetechBus bus({{1, QStringLiteral("STS3215"), 0}});
+        bus.servo(0).setOverloadLatched(true);
+        const auto write = [&](int value) {
+            bus.handleFrame(feetech::write(1, 40, byte(value)), k1M, 0);
+        };
+        write(0);
+        write(1);
+        bus.advanceTo(10 * kMs);
+        QCOMPARE(bus.servo(0).value(u"status") & 0x20, 0x20);
+        const double before = bus.servo(0).physicalPosition();
+        bus.servo(0).setValue(u"goal_position", int(before) + 500);
+        bus.advanceTo(500 * kMs);
+        QCOMPARE(bus.servo(0).physicalPosition(), before); // limp: it does not move
+        bus.powerCycle();
+        bus.advanceTo(510 * kMs);
+        QCOMPARE(bus.servo(0).value(u"status") & 0x20, 0);
+        QVERIFY(!bus.servo(0).overloadLatched());
+    }
+
+    void heatRaisesTheTemperatureUntilTheServoTripsAtItsMaximum()
+    {
+        VirtualFeetechBus bus({{1, QStringLiteral("STS3215"), 0}});
+        bus.servo(0).setValue(u"torque_enable", 1);
+        bus.servo(0).setTemperatureRise(5.0);
+        const int maximum = bus.servo(0).value(u"max_temperature");
+        bus.advanceTo(qint64(maximum) * 1000 * kMs / 5);
+        QVERIFY(bus.servo(0).value(u"present_temperature") >= maximum);
+        QCOMPARE(bus.servo(0).value(u"torque_enable"), 0);
+        QCOMPARE(bus.servo(0).value(u"status") & 0x04, 0x04);
+    }
+
+    void theSupplyReachesEveryServo()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        bus.setSupplyVoltage(12.6);
+        for (int index = 0; index < bus.servoCount(); ++index)
+            QCOMPARE(bus.servo(index).supplyVoltage(), 12.6);
+    }
+
     void broadcastPingWithOneServoListeningGetsOneCleanReply()
     {
         VirtualFeetechBus bus(mixedSpecs());

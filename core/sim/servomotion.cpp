@@ -36,8 +36,11 @@ ServoMotion::ServoMotion(bool fullCircle, double supplyVolts)
     m_position = fullCircle ? kFullCircleSteps / 2 : (kScsMaxPosition + 1) / 2;
 }
 
-bool ServoMotion::step(const MotionCommand &command, double dt)
+bool ServoMotion::step(const MotionCommand &asked, double dt)
 {
+    MotionCommand command = asked;
+    if (m_latched)
+        command.torqueEnable = 0; // a latched fault: the motor pushes nothing
     const double previous = m_velocity;
     const double limit = command.torqueEnable == 1 && command.control != MotionControl::OpenLoop
         ? command.acceleration
@@ -138,6 +141,7 @@ void ServoMotion::updateLoadAndHeat(const MotionCommand &command, double limit,
 
     const double steady = m_ambient + kThermalRiseCelsiusPerAmp * m_amps;
     m_temperature += (steady - m_temperature) * (1.0 - std::exp(-dt / kThermalTimeConstantS));
+    m_temperature += m_extraHeatPerSecond * dt;
 }
 
 void ServoMotion::updateOverload(const MotionCommand &command, double dt)
@@ -162,13 +166,25 @@ void ServoMotion::stop()
     m_appliedAcceleration = 0.0;
     m_loadPermille = 0.0;
     m_amps = kIdleAmps;
+    m_latched = false;
     clearOverload();
 }
 
 void ServoMotion::clearOverload()
 {
+    if (m_latched)
+        return;
     m_overloaded = false;
     m_overloadSeconds = 0.0;
+}
+
+void ServoMotion::setOverloadLatched(bool latched)
+{
+    m_latched = latched;
+    if (latched)
+        m_overloaded = true;
+    else
+        clearOverload();
 }
 
 double ServoMotion::presentCoordinate(double offset) const

@@ -64,8 +64,13 @@ public:
 
     // Power-on: the horn stays where it is and as warm as it is, but nothing moves or draws.
     void stop();
-    // Re-arming the torque clears an overload trip.
+    // Re-arming the torque clears an overload trip, unless it is latched.
     void clearOverload();
+    // A latched overload (a fault the servo cannot clear by itself): the overload stays
+    // tripped and the motor pushes nothing, whatever the torque enable says, until stop()
+    // (a power cycle) or setOverloadLatched(false).
+    void setOverloadLatched(bool latched);
+    bool overloadLatched() const { return m_latched; }
 
     double maxSpeed() const { return m_fullCircle ? kMaxSpeedFullCircle : kMaxSpeedScs; }
     double position() const { return m_position; } // horn, encoder steps
@@ -83,8 +88,13 @@ public:
     void setSupplyVoltage(double volts) { m_supplyVolts = volts; }
     void setAmbientTemperature(double celsius) { m_ambient = celsius; }
     void setExternalLoad(int permille); // signed, +-1000; |load| >= torque cap blocks the horn
+    int externalLoad() const { return m_externalLoad; }
     void setTemperature(double celsius) { m_temperature = celsius; }
     void setPosition(double steps); // turns the horn by hand
+    // Heat from outside the model (a stalled gearbox, a hot enclosure): the temperature rises
+    // this much a second on top of the model's own heating, until set back to 0.
+    void setTemperatureRise(double celsiusPerSecond) { m_extraHeatPerSecond = celsiusPerSecond; }
+    double temperatureRise() const { return m_extraHeatPerSecond; }
 
 private:
     double torqueCap(const MotionCommand &command) const;
@@ -106,6 +116,8 @@ private:
     int m_externalLoad = 0;
     double m_overloadSeconds = 0.0;
     bool m_overloaded = false;
+    bool m_latched = false;
+    double m_extraHeatPerSecond = 0.0;
 };
 
 } // namespace sim

@@ -1,12 +1,16 @@
 // servosim's standard-input commands: turn, sweep, release, plug, unplug, set-id, list,
-// power-cycle and help, each answered with one line.
+// power-cycle, the bench cases (power, break-chain, supply, heat, temperature, block, unblock,
+// latch) and help, each answered with one line.
 #include "sim/simcommands.h"
 
 #include "sim/simulator.h"
 #include "util/hex.h"
 
 #include <QCoreApplication>
+#include <QHash>
 #include <QRegularExpression>
+
+#include <cmath>
 
 namespace sim {
 
@@ -45,9 +49,117 @@ QString listLine(const QVector<SimulatedServo> &servos)
                            .arg(servo.model)
                            .arg(servo.position)
                            .arg(servo.torqueOn ? QLatin1String("on") : QLatin1String("off"))
-                           .arg(servo.sweeping ? QLatin1String(" hand=sweeping") : QString()));
+                           .arg(servo.sweeping ? QLatin1String(" hand=sweeping") : QString())
+                       + QStringLiteral(" temperature=%1 supply=%2")
+                             .arg(servo.temperature)
+                             .arg(servo.supplyVolts, 0, 'f', 1)
+                       + (servo.powered ? QString() : QStringLiteral(" power=off"))
+                       + (servo.blocked ? QStringLiteral(" horn=blocked") : QString())
+                       + (servo.overloadLatched ? QStringLiteral(" overload=latched") : QString())
+                       + (servo.heatPerSecond != 0.0
+                              ? QStringLiteral(" heat=%1").arg(servo.heatPerSecond)
+                              : QString()));
     }
     return entries.join(QLatin1String("; "));
+}
+
+const QStringList kBenchCaseCommands {QStringLiteral("power"),       QStringLiteral("break-chain"),
+                                      QStringLiteral("supply"),      QStringLiteral("heat"),
+                                      QStringLiteral("temperature"), QStringLiteral("block"),
+                                      QStringLiteral("unblock"),     QStringLiteral("latch")};
+
+std::optional<double> numberIn(const QString &text, double low, double high)
+{
+    bool ok = false;
+    const double value = text.toDouble(&ok);
+    if (!ok || !std::isfinite(value) || value < low || value > high)
+        return std::nullopt;
+    return value;
+}
+
+// The bench cases: a servo without power, a broken daisy chain, the supply, heat, a blocked horn
+// and a latched overload. `words` follow the command.
+QString runBenchCase(const QString &command, const QStringList &words, VirtualFeetechBus &bus)
+{
+    const auto usage = [&](const QString &form) {
+        return error(Tr::tr("%1 takes: %2").arg(command, form));
+    };
+    QString why;
+    if (command == QLatin1String("supply")) {
+        if (words.size() != 1)
+            return usage(QStringLiteral("supply VOLTS"));
+        const auto volts = numberIn(words.first(), 0.0, 30.0);
+        if (!volts)
+            return error(Tr::tr("\"%1\" is not a supply from 0 to 30 V").arg(words.first()));
+        bus.setSupplyVoltage(*volts);
+        return ok(Tr::tr("the supply is %1 V").arg(*volts, 0, 'f', 1));
+    }
+    if (command == QLatin1String("break-chain") && words.size() == 1
+        && words.first() == QLatin1String("none")) {
+        bus.setChainBreakAfter(-1);
+        return ok(Tr::tr("the daisy chain is whole"));
+    }
+    static const QHash<QString, QString> kForms {
+        {QStringLiteral("power"), QStringLiteral("power SERVO on|off")},
+        {QStringLiteral("break-chain"), QStringLiteral("break-chain SERVO|none")},
+        {QStringLiteral("heat"), QStringLiteral("heat SERVO C_PER_S")},
+        {QStringLiteral("temperature"), QStringLiteral("temperature SERVO C")},
+        {QStringLiteral("block"), QStringLiteral("block SERVO [PERMILLE]")},
+        {QStringLiteral("unblock"), QStringLiteral("unblock SERVO")},
+        {QStringLiteral("latch"), QStringLiteral("latch SERVO")}};
+    const bool oneWord = command == QLatin1String("break-chain")
+        || command == QLatin1String("unblock") || command == QLatin1String("latch");
+    const bool optionalSecond = command == QLatin1String("block");
+    if (words.isEmpty() || words.size() > 2 || (oneWord && words.size() != 1)
+        || (!oneWord && !optionalSecond && words.size() != 2))
+        return usage(kForms.value(command));
+    const auto index = servoIndex(bus, words.first(), &why);
+    if (!index)
+        return error(why);
+    VirtualFeetechServo &servo = bus.servo(*index);
+    const QString who = place(bus, *index);
+    const QString second = words.value(1);
+
+    if (command == QLatin1String("power")) {
+        if (second != QLatin1String("on") && second != QLatin1String("off"))
+            return usage(kForms.value(command));
+        bus.setPowered(*index, second == QLatin1String("on"));
+        return ok(second == QLatin1String("on") ? Tr::tr("%1 has power").arg(who)
+                                                : Tr::tr("%1 has no power").arg(who));
+    }
+    if (command == QLatin1String("break-chain")) {
+        bus.setChainBreakAfter(*index);
+        return ok(Tr::tr("the daisy chain is broken after %1").arg(who));
+    }
+    if (command == QLatin1String("heat")) {
+        const auto rate = numberIn(second, -10.0, 10.0);
+        if (!rate)
+            return error(Tr::tr("\"%1\" is not a rate from -10 to 10 °C/s").arg(second));
+        servo.setTemperatureRise(*rate);
+        return ok(Tr::tr("%1 warms by %2 °C/s").arg(who).arg(*rate));
+    }
+    if (command == QLatin1String("temperature")) {
+        const auto celsius = numberIn(second, -20.0, 120.0);
+        if (!celsius)
+            return error(Tr::tr("\"%1\" is not a temperature from -20 to 120 °C").arg(second));
+        servo.setTemperature(*celsius);
+        return ok(Tr::tr("%1 is at %2 °C").arg(who).arg(*celsius));
+    }
+    if (command == QLatin1String("block")) {
+        const auto permille =
+            second.isEmpty() ? std::optional<double>(1000.0) : numberIn(second, -1000.0, 1000.0);
+        if (!permille || *permille != std::round(*permille))
+            return error(Tr::tr("\"%1\" is not a load from -1000 to 1000 ‰").arg(second));
+        servo.setExternalLoad(int(*permille));
+        return ok(Tr::tr("%1's horn is held with a load of %2 ‰").arg(who).arg(*permille));
+    }
+    if (command == QLatin1String("unblock")) {
+        servo.setExternalLoad(0);
+        return ok(Tr::tr("%1's horn is free").arg(who));
+    }
+    // latch
+    servo.setOverloadLatched(true);
+    return ok(Tr::tr("%1's overload is latched until a power cycle").arg(who));
 }
 
 } // namespace
@@ -58,12 +170,40 @@ QVector<SimulatedServo> simulatedServos(VirtualFeetechBus &bus)
     for (int i = 0; i < bus.servoCount(); ++i) {
         const VirtualFeetechServo &servo = bus.servo(i);
         const bool scs = servo.family() == feetech::Family::Scs;
-        servos.append({i, servo.id(), servo.baudRate(), servo.modelName(),
-                       servo.value(u"present_position"),
-                       scs ? ServoMotion::kScsMaxPosition : ServoMotion::kFullCircleSteps - 1,
-                       servo.value(u"torque_enable") != 0, bus.hand().isSweeping(i)});
+        SimulatedServo entry {i,
+                              servo.id(),
+                              servo.baudRate(),
+                              servo.modelName(),
+                              servo.value(u"present_position"),
+                              scs ? ServoMotion::kScsMaxPosition
+                                  : ServoMotion::kFullCircleSteps - 1,
+                              servo.value(u"torque_enable") != 0,
+                              bus.hand().isSweeping(i)};
+        entry.powered = bus.isPowered(i);
+        entry.blocked = servo.externalLoad() != 0;
+        entry.overloadLatched = servo.overloadLatched();
+        entry.heatPerSecond = servo.temperatureRise();
+        entry.temperature = servo.value(u"present_temperature");
+        entry.supplyVolts = servo.supplyVoltage();
+        servos.append(entry);
     }
     return servos;
+}
+
+QString benchCondition(const SimulatedServo &servo)
+{
+    QStringList words;
+    if (!servo.powered)
+        words.append(Tr::tr("no power"));
+    if (servo.blocked)
+        words.append(Tr::tr("horn blocked"));
+    if (servo.overloadLatched)
+        words.append(Tr::tr("overload latched"));
+    if (servo.heatPerSecond > 0)
+        words.append(Tr::tr("heating %1 °C/s").arg(servo.heatPerSecond));
+    else if (servo.heatPerSecond < 0)
+        words.append(Tr::tr("cooling %1 °C/s").arg(-servo.heatPerSecond));
+    return words.join(QLatin1String(", "));
 }
 
 std::optional<int> servoIndex(const VirtualFeetechBus &bus, const QString &reference,
@@ -95,7 +235,9 @@ QString simulatorCommandHelp()
 {
     return Tr::tr("commands: turn SERVO POS | sweep SERVO FROM TO SECONDS [CYCLES] [up|down] | "
                   "release | plug ID:MODEL[@BAUD] | unplug SERVO | set-id SERVO ID | list | "
-                  "power-cycle | help; SERVO is an ID or a place #N from list");
+                  "power-cycle | power SERVO on|off | break-chain SERVO|none | supply VOLTS | "
+                  "heat SERVO C_PER_S | temperature SERVO C | block SERVO [PERMILLE] | "
+                  "unblock SERVO | latch SERVO | help; SERVO is an ID or a place #N from list");
 }
 
 QString runSimulatorCommand(const QString &line, Simulator &simulator)
@@ -111,7 +253,7 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
                                         QStringLiteral("release"), QStringLiteral("plug"),
                                         QStringLiteral("unplug"),  QStringLiteral("set-id"),
                                         QStringLiteral("list"),    QStringLiteral("power-cycle")};
-    if (!kCommands.contains(command))
+    if (!kCommands.contains(command) && !kBenchCaseCommands.contains(command))
         return error(Tr::tr("unknown command \"%1\": try help").arg(command));
     const auto usage = [&](const QString &form) {
         return error(Tr::tr("%1 takes: %2").arg(command, form));
@@ -129,6 +271,8 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         return error(Tr::tr("%1 is for a Feetech bus; this is a PTK servo").arg(command));
     QString why;
 
+    if (kBenchCaseCommands.contains(command))
+        return runBenchCase(command, words, *bus);
     if (command == QLatin1String("list")) {
         if (!words.isEmpty())
             return usage(QStringLiteral("list"));

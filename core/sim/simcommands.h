@@ -23,7 +23,18 @@ struct SimulatedServo
     int maxPosition = 4095;
     bool torqueOn = false;
     bool sweeping = false; // the hand is sweeping it
+    // Bench cases (see the power, break-chain, supply, heat, block and latch commands).
+    bool powered = true; // its own switch and the daisy chain
+    bool blocked = false; // something holds the horn
+    bool overloadLatched = false;
+    double heatPerSecond = 0.0; // °C/s on top of its own heating
+    int temperature = 0; // °C, as its register says
+    double supplyVolts = 0.0;
 };
+
+// What is wrong on the bench for `servo`, as short words for a list ("no power, blocked horn");
+// empty when nothing is.
+QString benchCondition(const SimulatedServo &servo);
 
 QVector<SimulatedServo> simulatedServos(VirtualFeetechBus &bus);
 

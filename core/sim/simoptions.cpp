@@ -32,6 +32,8 @@ QString simulatorUsage()
         "                           TO and back in SECONDS, CYCLES times (0 or none: until\n"
         "                           released); up or down crosses the 4095/0 seam if needed\n"
         "  --state FILE             keep the servos' EEPROM in FILE across runs\n"
+        "  --command LINE           a standard-input command run before \"ready\", e.g.\n"
+        "                           \"break-chain 2\", \"supply 12.6\", \"block 3\" (repeatable)\n"
         "\n"
         "options:\n"
         "  --echo                 send every host byte back first (single-wire adapter)\n"
@@ -87,7 +89,8 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
             QStringLiteral("--seed"),           QStringLiteral("--log"),
             QStringLiteral("--reply-delay-us"), QStringLiteral("--values"),
             QStringLiteral("--servo"),          QStringLiteral("--state"),
-            QStringLiteral("--robot"),          QStringLiteral("--hand")};
+            QStringLiteral("--robot"),          QStringLiteral("--hand"),
+            QStringLiteral("--command")};
         if (!kWithValue.contains(option))
             return fail(Tr::tr("unknown option \"%1\"").arg(option));
         const auto text = value();
@@ -136,6 +139,8 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
             if (!sweep)
                 return std::nullopt;
             options.sweeps.append(*sweep);
+        } else if (option == QLatin1String("--command")) {
+            options.commands.append(*text);
         } else if (option == QLatin1String("--servo")) {
             if (!feetech)
                 return fail(Tr::tr("--servo is for a Feetech bus"));

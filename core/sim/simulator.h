@@ -67,6 +67,7 @@ struct SimulatorOptions
     // --robot: its joints are the first servos, set up with its settings, horns at rest.
     std::optional<feetech::RobotTemplate> robot;
     QVector<HandSweep> sweeps; // --hand, started with the bus
+    QStringList commands; // --command: standard-input commands run before "ready"
 };
 
 // Parses servosim's arguments (program name excluded); nothing and *error on a bad one.

@@ -170,6 +170,8 @@ bool VirtualFeetechBus::unplug(int index)
     if (index < 0 || index >= servoCount())
         return false;
     m_slots.erase(m_slots.begin() + index);
+    if (index < m_chainReach)
+        --m_chainReach; // the break stays where it is, after the servo before it
     m_hand.servoUnplugged(index);
     saveIfChanged(true);
     return true;
@@ -200,7 +202,64 @@ bool VirtualFeetechBus::setServoId(int index, int id, QString *error)
 
 bool VirtualFeetechBus::listens(const Slot &slot, qint32 hostBaud, qint64 nowUs) const
 {
-    return slot.servo.baudRate() == hostBaud && nowUs >= slot.rebootUntilUs;
+    return slot.servo.baudRate() == hostBaud && nowUs >= slot.rebootUntilUs
+        && isPowered(int(&slot - m_slots.data()));
+}
+
+bool VirtualFeetechBus::chainReaches(int index) const
+{
+    return m_chainReach < 0 || index < m_chainReach;
+}
+
+bool VirtualFeetechBus::isPowered(int index) const
+{
+    return index >= 0 && index < servoCount() && m_slots.at(size_t(index)).switchedOn
+        && chainReaches(index);
+}
+
+std::vector<bool> VirtualFeetechBus::poweredNow() const
+{
+    std::vector<bool> powered;
+    for (int index = 0; index < servoCount(); ++index)
+        powered.push_back(isPowered(index));
+    return powered;
+}
+
+void VirtualFeetechBus::powerUpReturned(const std::vector<bool> &wasPowered)
+{
+    for (int index = 0; index < servoCount(); ++index) {
+        if (isPowered(index) == wasPowered.at(size_t(index)))
+            continue;
+        // Off: RAM is gone and the motor stops; on: it boots as after any power cycle.
+        m_slots.at(size_t(index)).servo.powerCycle();
+        m_slots.at(size_t(index)).rebootUntilUs = 0;
+    }
+}
+
+bool VirtualFeetechBus::setPowered(int index, bool powered)
+{
+    if (index < 0 || index >= servoCount())
+        return false;
+    const std::vector<bool> before = poweredNow();
+    m_slots.at(size_t(index)).switchedOn = powered;
+    powerUpReturned(before);
+    return true;
+}
+
+bool VirtualFeetechBus::setChainBreakAfter(int index)
+{
+    if (index < -1 || index >= servoCount())
+        return false;
+    const std::vector<bool> before = poweredNow();
+    m_chainReach = index < 0 ? -1 : index + 1;
+    powerUpReturned(before);
+    return true;
+}
+
+void VirtualFeetechBus::setSupplyVoltage(double volts)
+{
+    for (Slot &slot : m_slots)
+        slot.servo.setSupplyVoltage(volts);
 }
 
 bool VirtualFeetechBus::isRebooting(int index, qint64 nowUs) const

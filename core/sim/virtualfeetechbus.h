@@ -75,6 +75,16 @@ public:
     // servos may end up sharing one. False and *error for a bad index or ID.
     bool setServoId(int index, int id, QString *error);
 
+    // Power, as a bench sees it. An unpowered servo hears and answers nothing and pushes nothing;
+    // powered again it starts as after a power cycle. A broken daisy chain after place `index`
+    // (-1: whole) takes signal and power from every servo after it.
+    bool setPowered(int index, bool powered); // false for a bad index
+    bool isPowered(int index) const; // its own switch and the chain
+    bool setChainBreakAfter(int index); // -1 mends; false for an index outside -1..count-1
+    int chainBreakAfter() const { return m_chainReach < 0 ? -1 : m_chainReach - 1; }
+    // Every servo's supply (one power supply feeds the bus).
+    void setSupplyVoltage(double volts);
+
     // Turns horns whose torque is off; it moves with the bus's time.
     Hand &hand() { return m_hand; }
 
@@ -98,12 +108,17 @@ private:
         VirtualFeetechServo servo;
         qint64 rebootUntilUs = 0;
         quint64 savedRevision = 0;
+        bool switchedOn = true;
     };
 
     // Adds a servo; one that shares an ID and rate with servos already there starts with its
     // horn elsewhere, as two real servos would, so their position replies differ on the wire.
     void addSlot(const feetech::ModelInfo &model, quint8 id, qint32 baud);
     bool listens(const Slot &slot, qint32 hostBaud, qint64 nowUs) const;
+    bool chainReaches(int index) const;
+    // Powers up (a power cycle) the servos that get power back after a change of `wasPowered`.
+    void powerUpReturned(const std::vector<bool> &wasPowered);
+    std::vector<bool> poweredNow() const;
     void saveIfChanged(bool slotsChanged = false);
 
     feetech::FrameFormat m_format;
@@ -111,6 +126,7 @@ private:
     QString m_statePath;
     QString m_lastStateError;
     qint64 m_nowUs = 0;
+    int m_chainReach = -1; // servos at places below it get signal and power; -1: all
     Hand m_hand {*this};
 };
 

@@ -87,6 +87,18 @@ public:
     void setExternalLoad(int permille); // signed, ±1000; |load| ≥ torque limit blocks the horn
     void setTemperature(double celsius);
     void setPhysicalPosition(double steps); // turns the horn by hand
+    // The motor warms by this much a second on top of its own heating, until set to 0; at its
+    // maximum temperature it trips as a real one does (torque off, status bit 0x04).
+    void setTemperatureRise(double celsiusPerSecond)
+    {
+        m_motion.setTemperatureRise(celsiusPerSecond);
+    }
+    double temperatureRise() const { return m_motion.temperatureRise(); }
+    // A latched overload: status bit 0x20 stays set and the motor stays limp even when torque is
+    // switched on again; only a power cycle clears it.
+    void setOverloadLatched(bool latched);
+    bool overloadLatched() const { return m_motion.overloadLatched(); }
+    int externalLoad() const { return m_motion.externalLoad(); }
     double supplyVoltage() const { return m_motion.supplyVoltage(); }
     double temperature() const { return m_motion.temperature(); }
     double physicalPosition() const { return m_motion.position(); }

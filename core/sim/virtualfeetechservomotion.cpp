@@ -161,6 +161,12 @@ void VirtualFeetechServo::setExternalLoad(int permille)
     m_motion.setExternalLoad(permille);
 }
 
+void VirtualFeetechServo::setOverloadLatched(bool latched)
+{
+    m_motion.setOverloadLatched(latched);
+    refreshRegisters();
+}
+
 void VirtualFeetechServo::setTemperature(double celsius)
 {
     m_motion.setTemperature(celsius);

@@ -23,7 +23,16 @@
 
 namespace {
 
-enum Column { PlaceColumn, IdColumn, RateColumn, ModelColumn, PositionColumn, TorqueColumn };
+enum Column {
+    PlaceColumn,
+    IdColumn,
+    RateColumn,
+    ModelColumn,
+    PositionColumn,
+    TorqueColumn,
+    ConditionColumn,
+    ColumnCount
+};
 
 } // namespace
 
@@ -37,10 +46,10 @@ SimulatorDock::SimulatorDock(QWidget *parent)
     auto *layout = new QHBoxLayout(content);
     layout->setContentsMargins(4, 4, 4, 4);
 
-    m_table = new QTableWidget(0, 6, content);
+    m_table = new QTableWidget(0, ColumnCount, content);
     m_table->setObjectName(QStringLiteral("simulatedServos"));
     m_table->setHorizontalHeaderLabels(
-        {tr("#"), tr("ID"), tr("Rate"), tr("Model"), tr("Position"), tr("Torque")});
+        {tr("#"), tr("ID"), tr("Rate"), tr("Model"), tr("Position"), tr("Torque"), tr("Bench")});
     m_table->verticalHeader()->hide();
     // Compact rows: an arm's six joints fit in the dock's starting height at 1366x768.
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
@@ -56,6 +65,7 @@ SimulatorDock::SimulatorDock(QWidget *parent)
     auto *controls = new QVBoxLayout;
     controls->addWidget(buildHandControls());
     controls->addWidget(buildBusButtons());
+    controls->addWidget(buildBenchCases());
     m_note = new QLabel(content);
     m_note->setObjectName(QStringLiteral("simulatorNote"));
     m_note->setWordWrap(true);
@@ -260,14 +270,19 @@ void SimulatorDock::refresh()
     m_table->setRowCount(int(servos.size()));
     for (int row = 0; row < servos.size(); ++row) {
         const sim::SimulatedServo &servo = servos.at(row);
-        const QStringList cells {QStringLiteral("#%1").arg(servo.index + 1),
-                                 QString::number(servo.id),
-                                 QString::number(servo.baud),
-                                 servo.model,
-                                 QString::number(servo.position),
-                                 servo.torqueOn       ? tr("on")
-                                     : servo.sweeping ? tr("off, hand sweeping")
-                                                      : tr("off")};
+        const QStringList cells {
+            QStringLiteral("#%1").arg(servo.index + 1),
+            QString::number(servo.id),
+            QString::number(servo.baud),
+            servo.model,
+            QString::number(servo.position),
+            servo.torqueOn       ? tr("on")
+                : servo.sweeping ? tr("off, hand sweeping")
+                                 : tr("off"),
+            tr("%1 V, %2 °C").arg(servo.supplyVolts, 0, 'f', 1).arg(servo.temperature)
+                + (sim::benchCondition(servo).isEmpty()
+                       ? QString()
+                       : QStringLiteral(", ") + sim::benchCondition(servo))};
         for (int column = 0; column < cells.size(); ++column) {
             QTableWidgetItem *item = m_table->item(row, column);
             if (!item) {

@@ -1,5 +1,6 @@
 // The Simulator dock of the demo: the simulated Feetech servos, a hand to turn and sweep their
-// horns, and plugging, unplugging, re-addressing and power-cycling them.
+// horns, plugging, unplugging, re-addressing and power-cycling them, and the bench cases (no
+// power, a broken chain, a wrong supply, heat, a blocked horn, a latched overload).
 #pragma once
 
 #include "sim/simcommands.h"
@@ -9,6 +10,7 @@
 
 #include <functional>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -47,6 +49,27 @@ public:
     bool putSelectedAtId(int id);
     bool powerCycle();
 
+    // What can go wrong on a bench, played on the selected servo or the whole bus.
+    enum class BenchCase {
+        CutPower, // the selected servo
+        RestorePower,
+        BreakChainAfter, // every servo after the selected one loses signal and power
+        MendChain,
+        BlockHorn, // something holds the selected servo's horn
+        FreeHorn,
+        Heat, // the selected servo warms by kHeatPerSecond
+        StopHeating,
+        LatchOverload, // until the next power cycle
+        SupplyTooHigh, // the bus: kHighSupplyVolts
+        SupplyTooLow, // the bus: kLowSupplyVolts
+        SupplyNormal, // each servo its family's usual supply
+    };
+    static constexpr double kHeatPerSecond = 1.0;
+    static constexpr double kHighSupplyVolts = 12.6;
+    static constexpr double kLowSupplyVolts = 4.5;
+    bool playBenchCase(BenchCase benchCase);
+    QComboBox *benchCaseChoice() const { return m_benchCase; }
+
     void refresh(); // reads the servo list now (a timer does it while the dock is shown)
     void selectServo(int index);
     int selectedIndex() const; // -1: none
@@ -64,6 +87,7 @@ signals:
 private:
     QWidget *buildHandControls();
     QWidget *buildBusButtons();
+    QWidget *buildBenchCases(); // simulatordockcases.cpp
     // Runs `work` on the bus in the simulator's thread and notes how it went: `done`, or the
     // error it gave; false without a bus.
     using BusWork = std::function<bool(sim::VirtualFeetechBus &, QString *error)>;
@@ -91,6 +115,7 @@ private:
     QPushButton *m_letGo = nullptr;
     QPushButton *m_unplug = nullptr;
     QPushButton *m_putAtId = nullptr;
+    QComboBox *m_benchCase = nullptr;
     QLabel *m_note = nullptr;
     QTimer *m_refreshTimer = nullptr;
     bool m_updating = false; // the list is being shown: slider moves are not the user's
