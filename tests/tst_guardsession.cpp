@@ -207,6 +207,29 @@ private slots:
         // Torque on never jumps: it holds where it stands.
         QCOMPARE(simulatorValue(1, u"goal_position"), simulatorValue(1, u"present_position"));
     }
+
+    void aLatchedOverloadAsksForAPowerCycleAndIsClearAfterOne()
+    {
+        QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setOverloadLatched(true); }));
+        QVERIFY(drive(simulatorValue(1, u"present_position")).ok); // torque on: driven, read
+        QVERIFY(waitFor(events, GuardCause::LatchedOverload, GuardStage::Warning));
+        const OperationResult stuck = run([&] { m_session->recoverOverload(m_servo, false); });
+        QVERIFY(!stuck.ok);
+        QVERIFY(stuck.stillLatched);
+        QVERIFY2(stuck.message.contains(QLatin1String("power")), qPrintable(stuck.message));
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0); // left as the servo really is
+        // The user switches the power off and on, then asks for the check.
+        m_simulator->call([](sim::Simulator &simulator) {
+            simulator.feetechBus()->setPowered(0, false);
+            simulator.feetechBus()->setPowered(0, true);
+        });
+        const OperationResult checked = run([&] { m_session->recoverOverload(m_servo, true); });
+        QVERIFY2(checked.ok, qPrintable(checked.message));
+        QVERIFY(!checked.stillLatched);
+        QCOMPARE(simulatorValue(1, u"status") & 0x20, 0);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0); // a check switches nothing on
+    }
 };
 
 QTEST_GUILESS_MAIN(TestGuardSession)
