@@ -124,6 +124,22 @@ public:
     // of its servo's range or a servo is unknown (nothing sent).
     bool moveAll(const QVector<Goal> &goals, QString *error = nullptr);
 
+    // ---- the overload and thermal guard (busclientguard.cpp): on from the start
+
+    // The limits of servo `index` now: those set with setGuardSettings, else the defaults from
+    // its own limit registers as last read (the table's factory values before a read).
+    GuardLimits guardLimits(int index) const;
+    // Its defaults alone: from its limit registers, whatever was set.
+    GuardLimits guardDefaults(int index) const;
+    // Replaces the whole guard's settings (limits set for servos not listed are dropped).
+    void setGuardSettings(const GuardSettings &settings);
+    const GuardSettings &guardSettings() const { return m_guardSettings; }
+    // The newest thing the guard said about servo `index`.
+    std::optional<GuardEvent> lastGuardEvent(int index) const;
+    // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
+    // result (operationFinished, RecoverOverload) says stillLatched when a power cycle is due.
+    bool recoverOverload(int index, bool checkOnly, QString *error = nullptr);
+
     // ---- motor set-up (busclientmotorsetup.cpp): no scan needed, each servo is found alone
 
     // Looks for the one servo on the bus at every rate. False and *error when not started.
@@ -155,6 +171,8 @@ signals:
     void motorSetupProgress(int step, int steps, const QString &text);
     void motorSetupFinished(const feetech::MotorSetupResult &result);
     void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
+    // The guard warned or acted (the message names the servo, the figures and the action).
+    void guardEvent(const feetech::GuardEvent &event);
 
 private:
     void onServoFound(const ServoInfo &info);
@@ -162,6 +180,9 @@ private:
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
     void connectMotorSetup(Session *session);
+    void connectGuard(Session *session);
+    // Sends the guard each servo's limits (set, or from its registers) when they changed.
+    void sendGuardSettings();
     bool startMotorWork(QString *error, const std::function<void(Session &)> &work);
     void onMotorWorkFinished(const OperationResult &result);
     enum class Work {
@@ -200,6 +221,9 @@ private:
     std::optional<QVector<JointCheck>> m_jointsChecked;
     std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
     QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
+    GuardSettings m_guardSettings; // as the user set them
+    std::optional<GuardSettings> m_guardSent; // what the session has now
+    QHash<QPair<quint8, qint32>, GuardEvent> m_lastGuardEvent;
 };
 
 } // namespace feetech
