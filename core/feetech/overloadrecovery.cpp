@@ -84,8 +84,8 @@ QStringList powerCycleSteps(const ServoInfo &servo)
             Tr::tr("1. Free the horn: remove whatever blocks it or the load it holds."),
             Tr::tr("2. Switch the servos' power supply off (the USB adapter may stay connected)."),
             Tr::tr("3. Wait five seconds, then switch the power on again."),
-            Tr::tr("4. Check again: the guard reads the status; torque stays off until you switch "
-                   "it on.")};
+            Tr::tr("4. Check again: only the status is read; torque stays off until you switch it "
+                   "on.")};
 }
 
 } // namespace feetech
