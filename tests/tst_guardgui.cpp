@@ -58,6 +58,9 @@ private slots:
         m_page->setConfirmMoves(false);
         m_page->resize(900, 700);
         m_page->show();
+        // The servo's own overload trip as late as it goes (2.54 s): a loaded machine delays
+        // the guard's samples, and the tests are about the guard, not about that race.
+        setSimulatorValue(1, u"protection_time", 254);
         m_index = testsupport::connectScanAndRead(*m_client, m_simulator->linkPath(), 2, 1);
         QVERIFY(m_index >= 0);
         m_page->setServo(m_index);
@@ -92,6 +95,20 @@ private slots:
         QVERIFY2(text.contains(QStringLiteral("where it stands (%1)").arg(start)),
                  qPrintable(text));
         QCOMPARE(simulatorValue(1, u"goal_position"), start);
+    }
+
+    void aSweepOnABlockedServoIsStoppedWhenTheGuardHoldsIt()
+    {
+        blockServo();
+        QSignalSpy failed(m_page->motionTest(), &feetech::MotionTest::failed);
+        QString error;
+        QVERIFY2(m_page->motionTest()->startSweep(testsupport::longSweep(m_index), &error),
+                 qPrintable(error));
+        QVERIFY(failed.wait(20000));
+        const QString message = failed.first().at(0).toString();
+        QVERIFY2(message.contains(QLatin1String("Guard")), qPrintable(message));
+        QVERIFY(!m_page->motionTest()->isRunning());
+        QVERIFY(m_page->guardText().contains(QLatin1String("was overloaded")));
     }
 
     void aLatchedOverloadIsWalkedThroughItsRecovery()

@@ -84,6 +84,9 @@ private slots:
         QString error;
         QVERIFY2(startSession(busOptions(testsupport::servosAt(k1M, {u"STS3215"})), &error),
                  qPrintable(error));
+        // The servo's own overload trip as late as it goes (2.54 s): a loaded machine delays
+        // the guard's samples, and the tests are about the guard, not about that race.
+        setSimulatorValue(1, u"protection_time", 254);
         feetech::ScanOptions options;
         options.bauds = {k1M};
         options.lastId = 1;
@@ -146,6 +149,50 @@ private slots:
         QCOMPARE(acted->action, feetech::GuardAction::TorqueOff);
         QVERIFY(acted->message.contains(QLatin1String("torque was switched off")));
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+    }
+
+    void aServoMovedByASyncWriteIsGuardedToo()
+    {
+        // The Joints tab's Move all: torque on first, then the goals in one SYNC WRITE.
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
+        QString error;
+        const auto torque =
+            feetech::encodeWrites(m_servo.table(), {{QStringLiteral("torque_enable"), 1}}, &error);
+        QVERIFY(torque);
+        QVERIFY(run([&] { m_session->write(m_servo, *torque); }).ok);
+        QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
+        const qint32 start = simulatorValue(1, u"present_position");
+        const auto goal = feetech::encodeWrites(
+            m_servo.table(), {{QStringLiteral("goal_position"), start > 2048 ? 500 : 3500}},
+            &error);
+        QVERIFY(goal);
+        QVERIFY(run([&] {
+                    m_session->syncWrite(k1M, goal->first().address,
+                                         int(goal->first().bytes.size()),
+                                         {{1, goal->first().bytes}});
+                }).ok);
+        QVERIFY(waitFor(events, GuardCause::Overload, GuardStage::Acted));
+        QCOMPARE(simulatorValue(1, u"goal_position"), start);
+    }
+
+    void anIdentifyOfABlockedServoIsStoppedAndPutBack()
+    {
+        // The wiggle limits the torque; a guard set low enough sees even that strain.
+        feetech::GuardSettings settings;
+        feetech::GuardLimits limits = feetech::defaultGuardLimits(m_servo.table());
+        limits.loadPercent = 5.0;
+        limits.holdTime = std::chrono::milliseconds(400);
+        settings.servos.insert({m_servo.id, m_servo.baud}, limits);
+        m_session->setGuardSettings(settings);
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
+        QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
+        QSignalSpy finished(m_session.get(), &feetech::Session::operationFinished);
+        m_session->identifyJoint(m_servo);
+        QVERIFY(waitFor(events, GuardCause::Overload, GuardStage::Acted));
+        QTRY_VERIFY_WITH_TIMEOUT(!finished.isEmpty(), 15000);
+        const auto result = finished.first().at(0).value<OperationResult>();
+        QCOMPARE(result.operation, feetech::Operation::Identify);
+        QVERIFY(!result.ok); // stopped, not finished
     }
 
     void aServoNearItsMaximumTemperatureIsHeld()

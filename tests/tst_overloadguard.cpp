@@ -63,6 +63,21 @@ QVector<GuardDecision> feed(OverloadGuard &guard, const feetech::ServoInfo &serv
 
 } // namespace
 
+// A guard whose servos all have a 1 s hold time, as the tests below count on.
+OverloadGuard oneSecondGuard()
+{
+    OverloadGuard guard;
+    feetech::GuardSettings settings;
+    for (const quint8 id : {quint8(1), quint8(2), quint8(3)}) {
+        GuardLimits limits =
+            feetech::defaultGuardLimits(feetech::RegisterTable::forFamily(feetech::Family::Sts));
+        limits.holdTime = std::chrono::milliseconds(1000);
+        settings.servos.insert({id, 1000000}, limits);
+    }
+    guard.setSettings(settings);
+    return guard;
+}
+
 class TestOverloadGuard : public QObject
 {
     Q_OBJECT
@@ -74,7 +89,7 @@ private slots:
         const GuardLimits limits = feetech::defaultGuardLimits(table);
         QCOMPARE(limits.loadPercent, 80.0); // overload torque, factory value
         QCOMPARE(limits.maxTemperature, 70.0); // max temperature, factory value
-        QCOMPARE(limits.holdTime, std::chrono::milliseconds(1000)); // half of 2 s protection
+        QCOMPARE(limits.holdTime, std::chrono::milliseconds(500)); // a quarter of 2 s protection
         QVERIFY(!limits.currentMilliamps); // the load is compared with the overload torque
         QVERIFY(limits.enabled);
         QCOMPARE(limits.action, feetech::GuardAction::Hold);
@@ -90,12 +105,12 @@ private slots:
                 if (key == u"max_temperature")
                     return 60;
                 if (key == u"protection_time")
-                    return 40; // 400 ms
+                    return 120; // 1.2 s
                 return std::nullopt;
             });
         QCOMPARE(limits.loadPercent, 50.0);
         QCOMPARE(limits.maxTemperature, 60.0);
-        QCOMPARE(limits.holdTime, std::chrono::milliseconds(200));
+        QCOMPARE(limits.holdTime, std::chrono::milliseconds(300));
     }
 
     void aModelWithoutOverloadTorqueIsWatchedByItsProtectionCurrent()
@@ -113,7 +128,7 @@ private slots:
 
     void aShortLoadPeakIsNeitherWarnedNorActedOn()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         auto decisions = feed(guard, servo, 0, 300, 95.0); // 300 ms < half the hold time
         decisions += feed(guard, servo, 400, 3000, 20.0);
@@ -122,7 +137,7 @@ private slots:
 
     void aLoadAboveTheThresholdWarnsAtHalfTheHoldTimeThenActsOnce()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         QVERIFY(feed(guard, servo, 0, 400, -95.0).isEmpty()); // the sign does not matter
         const auto warned = feed(guard, servo, 500, 500, -95.0);
@@ -136,7 +151,7 @@ private slots:
 
     void aLoadThatStaysAfterTheHoldIsReportedOnceAndNotActedOnAgain()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         const auto decisions = feed(guard, servo, 0, 5000, 95.0);
         QCOMPARE(stages(decisions, GuardCause::Overload),
@@ -146,7 +161,7 @@ private slots:
 
     void aNewGoalAfterTheActionStartsANewEpisode()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         feed(guard, servo, 0, 1000, 95.0);
         guard.rearm(servo.id, servo.baud);
@@ -157,7 +172,7 @@ private slots:
 
     void aNewGoalBeforeTheActionDoesNotResetTheHoldTime()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         feed(guard, servo, 0, 700, 95.0);
         guard.rearm(servo.id, servo.baud); // a slider dragged against the block
@@ -167,7 +182,7 @@ private slots:
 
     void aLongGapBetweenSamplesStillWarnsBeforeActing()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         guard.observe(servo, sample(1, 0, 95.0));
         const auto decisions = guard.observe(servo, sample(1, 1500, 95.0));
@@ -177,7 +192,7 @@ private slots:
 
     void temperatureWarnsWithinTheWarnMarginAndActsWithinTheMargin()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         QVERIFY(feed(guard, servo, 0, 100, 0.0, 59.0).isEmpty()); // 11 °C below 70
         QCOMPARE(stages(feed(guard, servo, 200, 300, 0.0, 61.0), GuardCause::Heat),
@@ -190,7 +205,7 @@ private slots:
 
     void aServoAlreadyHotWarnsThenActsAtOnce()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto decisions = guard.observe(sts(1), sample(1, 0, 0.0, 68.0));
         QCOMPARE(stages(decisions, GuardCause::Heat),
                  (QVector<GuardStage> {GuardStage::Warning, GuardStage::Acted}));
@@ -198,7 +213,7 @@ private slots:
 
     void aServoThatCooledDownIsGuardedAfresh()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         feed(guard, servo, 0, 100, 0.0, 68.0);
         feed(guard, servo, 200, 300, 0.0, 40.0);
@@ -241,7 +256,7 @@ private slots:
 
     void theOverloadBitIsReportedOnceWhileSetAndWhenItClears()
     {
-        OverloadGuard guard;
+        OverloadGuard guard = oneSecondGuard();
         const auto servo = sts(1);
         QVector<GuardDecision> decisions;
         for (int i = 0; i < 5; ++i)

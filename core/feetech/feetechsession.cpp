@@ -74,8 +74,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     m_guard->setActed([this](const ServoInfo &) {
         // An identify would go on wiggling the servo the guard just stopped: it ends and
         // puts back what it changed.
-        if ((m_running && m_currentOperation == Operation::Identify)
-            || (m_paused && m_pausedOperation == Operation::Identify))
+        if (m_identifying)
             m_identify->cancel();
     });
     m_telemetry->setBusBusy([this] { return m_running || m_guard->cycle().inCycle(); });
@@ -135,6 +134,7 @@ void Session::onLinkDown(const QString &message)
     const bool wasPaused = m_paused;
     const Operation paused = m_pausedOperation;
     m_paused = false;
+    m_identifying = false;
     ++m_pauseGeneration;
     std::deque<Queued> dropped;
     dropped.swap(m_queue);

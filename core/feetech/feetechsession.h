@@ -177,6 +177,7 @@ private:
     Operation m_pausedOperation = Operation::Read; // the one waiting, while m_paused
     quint64 m_pauseGeneration = 0; // a pause ended by a lost link never resumes
     quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
+    bool m_identifying = false; // an identify runs, paused, or waits to go on
 };
 
 } // namespace feetech

@@ -81,11 +81,12 @@ GuardLimits defaultGuardLimits(const RegisterTable &table, const RegisterLookup 
         if (protection && *protection > 0)
             limits.currentMilliamps = *protection;
     }
-    // Act before the servo's own protection would trip: within half its protection time.
+    // Act well before the servo's own protection would trip: within a quarter of its
+    // protection time, so a late sample still comes in time.
     if (const auto protectionMs = limitValue(table, u"protection_time", lookup);
         protectionMs && *protectionMs > 0) {
-        const auto half = std::chrono::milliseconds(std::llround(*protectionMs / 2.0));
-        limits.holdTime = std::clamp(half, kShortestHold, kLongestHold);
+        const auto quarter = std::chrono::milliseconds(std::llround(*protectionMs / 4.0));
+        limits.holdTime = std::clamp(quarter, kShortestHold, kLongestHold);
     }
     const auto maxTemperature = limitValue(table, u"max_temperature", lookup);
     limits.maxTemperature =

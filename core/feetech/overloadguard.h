@@ -48,7 +48,8 @@ using RegisterLookup = std::function<std::optional<qint32>(QStringView key)>;
 
 // The limits for a servo of `table`: the overload torque, protection current, protection time
 // and max temperature registers as `lookup` gives them (the servo's own values), else the
-// table's factory defaults, else fixed fallbacks (80 %, 1 s, 70 °C).
+// table's factory defaults, else fixed fallbacks (80 %, 1 s, 70 °C). The hold time is a quarter
+// of the protection time (200 ms to 1 s): the guard acts before the servo's own trip.
 GuardLimits defaultGuardLimits(const RegisterTable &table, const RegisterLookup &lookup = {});
 
 // The guard's settings for a whole bus: on or off, and the limits of servos set by hand (the
