@@ -216,6 +216,26 @@ private slots:
         QCOMPARE(simulatorValue(1, u"goal_position"), *acted->heldAt);
     }
 
+    void aHotServoThatNothingDrivesIsOnlyWarnedAbout()
+    {
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) {
+            s.setAmbientTemperature(68.0);
+            s.setTemperature(68.0);
+        }));
+        QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
+        feetech::TelemetryOptions options;
+        options.servos = {m_servo};
+        options.rateHz = 20.0;
+        m_session->startTelemetry(options); // the Monitor page: samples, nothing driven
+        QVERIFY(waitFor(events, GuardCause::Heat, GuardStage::Warning));
+        // An action would have gone ahead of this ping.
+        QVERIFY(run([&] { m_session->ping(1, k1M); }).ok);
+        m_session->stopTelemetry();
+        QVERIFY(!find(eventsOf(events), GuardCause::Heat, GuardStage::Acted));
+        QVERIFY(testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write, 1)
+                    .isEmpty());
+    }
+
     void aServoThatIsNotDrivenIsNotRead()
     {
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setTemperature(68.0); }));

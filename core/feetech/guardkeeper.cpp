@@ -173,6 +173,11 @@ void GuardKeeper::observe(const QVector<FeedbackSample> &samples)
             event.limit = decision.limit;
             event.current = decision.current;
             event.steadyUs = sample.steadyUs;
+            // A hot servo nothing drives gets the warning only: there is nothing to stop (a
+            // high load, though, proves its torque is on, whoever switched it on).
+            if (decision.stage == GuardStage::Acted && decision.cause == GuardCause::Heat
+                && !isDriven(servo.id, servo.baud))
+                continue;
             if (decision.stage == GuardStage::Acted)
                 act(servo, event, limits);
             else
