@@ -31,6 +31,8 @@ namespace {
 
 constexpr int kRateRefreshMs = 500;
 constexpr int kStatusMessageMs = 8000;
+// The guard's news stays longer: it says what was done to a servo.
+constexpr int kGuardMessageMs = 20000;
 
 QString stateColour(seriallink::ConnectionState state)
 {
@@ -106,6 +108,11 @@ MainWindow::MainWindow(QWidget *parent)
     createDoctor();
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
             [this] { updateTorqueOffAction(); });
+    // Whatever page moves the servos, the guard's warnings and actions show here.
+    connect(m_feetech.get(), &feetech::BusClient::guardEvent, this,
+            [this](const feetech::GuardEvent &event) {
+                statusBar()->showMessage(event.message, kGuardMessageMs);
+            });
 
     m_connectionState = new QLabel(tr("Not connected"), this);
     m_connectionState->setObjectName(QStringLiteral("connectionState"));

@@ -45,6 +45,7 @@ int FeetechCommand::run(const QStringList &rest)
         {"calibrate-middle", &FeetechCommand::calibrateMiddle},
         {"factory-reset", &FeetechCommand::factoryReset},
         {"reboot", &FeetechCommand::reboot},
+        {"recover", &FeetechCommand::recover},
         {"setup-motor", &FeetechCommand::setupMotor},
         {"monitor", &FeetechCommand::monitor},
         {"identify", &FeetechCommand::identify},
@@ -79,8 +80,9 @@ void FeetechCommand::allowOptions(const QString &what, const QStringList &allowe
         if (!allowed.contains(name) && !kGlobal.contains(name))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
     }
-    for (const QString &flag : {QStringLiteral("thorough"), QStringLiteral("csv"),
-                                QStringLiteral("dry-run"), QStringLiteral("move-test")}) {
+    for (const QString &flag :
+         {QStringLiteral("thorough"), QStringLiteral("csv"), QStringLiteral("dry-run"),
+          QStringLiteral("move-test"), QStringLiteral("check")}) {
         if (m_args.flag(flag) && !allowed.contains(flag))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, flag)};
     }

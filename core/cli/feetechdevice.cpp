@@ -133,6 +133,12 @@ bool FeetechDevice::open(qint32 baud)
     m_session = std::make_unique<feetech::Session>();
     QObject::connect(m_session.get(), &feetech::Session::packetLogged,
                      [this](const seriallink::PacketLogEntry &entry) { trace(entry); });
+    // The guard watches whatever a command drives; what it says goes to stderr at once.
+    QObject::connect(m_session.get(), &feetech::Session::guardEvent,
+                     [this](const feetech::GuardEvent &event) {
+                         m_output.err << "servoctl: " << event.message << '\n';
+                         m_output.err.flush();
+                     });
     m_session->open(m_port, baud, m_echo);
     if (m_session->status().state != seriallink::ConnectionState::Connected) {
         m_error = m_session->status().message;

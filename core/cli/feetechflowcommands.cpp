@@ -1,4 +1,5 @@
-// servoctl feetech set-id, set-baud, calibrate-middle, factory-reset and reboot: guided flows.
+// servoctl feetech set-id, set-baud, calibrate-middle, factory-reset, reboot and recover:
+// guided flows.
 #include "cli/feetechcommand.h"
 
 #include "profile/profile.h"
@@ -182,6 +183,30 @@ int FeetechCommand::reboot(const QString &what, const QStringList &operands)
     if (!target)
         return ExitDeviceFailure;
     return report(*target, [&target] { target->device->session().reboot(target->servo); });
+}
+
+int FeetechCommand::recover(const QString &what, const QStringList &operands)
+{
+    allowOptions(what, {QStringLiteral("id"), QStringLiteral("check")});
+    expectOperands(what, operands, 0, {});
+    const bool checkOnly = m_args.flag(QStringLiteral("check"));
+    auto target = identifyKnownServo(
+        what, Tr::tr("servo %1 is of an unknown model (%2): its status bits are not known"));
+    if (!target)
+        return ExitDeviceFailure;
+    // Still tripped, the result's message is the power-cycle steps: printed as the failure.
+    const quint8 id = target->servo.id;
+    const int code = report(*target, [&target, checkOnly] {
+        target->device->session().recoverOverload(target->servo, checkOnly);
+    });
+    if (code != ExitOk && !checkOnly) {
+        m_output.err
+            << "servoctl: "
+            << Tr::tr("after the power cycle: servoctl feetech recover --id %1 --check").arg(id)
+            << '\n';
+        m_output.err.flush();
+    }
+    return code;
 }
 
 } // namespace cli

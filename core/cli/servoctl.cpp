@@ -65,6 +65,10 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech factory-reset --id N [--backup FILE]\n"
     "                                         save a backup profile, then restore factory values\n"
     "  feetech reboot --id N                  restart the servo and wait for it\n"
+    "  feetech recover --id N [--check]       after an overload trip: torque off and on, goal\n"
+    "                                         at the present position, the overload bit read;\n"
+    "                                         still set: the power-cycle steps (exit 1); after\n"
+    "                                         the power cycle --check only reads the bit\n"
     "  feetech setup-motor --id N [--baud BPS] [--model MODEL] [--settings ROBOT]\n"
     "                                         the one servo on the bus (any ID, any rate) gets\n"
     "                                         ID N and rate BPS (default 1000000, or the\n"
@@ -102,6 +106,9 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "         rate, 1000000),\n"
     "         --echo auto|on|off (single-wire adapter echo; default auto)\n"
     "\n"
+    "The overload and thermal guard watches every servo a command drives (identify, and set\n"
+    "while it runs); its warnings and actions are printed on stderr.\n"
+    "\n"
     "exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)\n");
 
 class Servoctl
@@ -125,7 +132,7 @@ public:
                  QStringLiteral("full-turn"), QStringLiteral("out"), QStringLiteral("expect")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
-                 QStringLiteral("dry-run"), QStringLiteral("move-test")});
+                 QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);

@@ -74,6 +74,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
     connectMotorSetup(session);
     connectHealth(session);
+    connectGuard(session);
 }
 
 BusClient::~BusClient() = default;
@@ -189,6 +190,8 @@ void BusClient::onOperationFinished(const OperationResult &result)
 {
     if (result.operation == Operation::Scan)
         return; // a scan ends through scanFinished
+    if (result.operation == Operation::Guard)
+        return; // the guard's own: reported as a guardEvent
     if (result.operation == Operation::TorqueOff) {
         // It overtook everything queued, so it has no place in m_pending.
         emit operationFinished(result);

@@ -125,6 +125,22 @@ public:
     // of its servo's range or a servo is unknown (nothing sent).
     bool moveAll(const QVector<Goal> &goals, QString *error = nullptr);
 
+    // ---- the overload and thermal guard (busclientguard.cpp): on from the start
+
+    // The limits of servo `index` now: those set with setGuardSettings, else the defaults from
+    // its own limit registers as last read (the table's factory values before a read).
+    GuardLimits guardLimits(int index) const;
+    // Its defaults alone: from its limit registers, whatever was set.
+    GuardLimits guardDefaults(int index) const;
+    // Replaces the whole guard's settings (limits set for servos not listed are dropped).
+    void setGuardSettings(const GuardSettings &settings);
+    const GuardSettings &guardSettings() const { return m_guardSettings; }
+    // The newest thing the guard said about servo `index`.
+    std::optional<GuardEvent> lastGuardEvent(int index) const;
+    // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
+    // result (operationFinished, RecoverOverload) says stillLatched when a power cycle is due.
+    bool recoverOverload(int index, bool checkOnly, QString *error = nullptr);
+
     // ---- motor set-up (busclientmotorsetup.cpp): no scan needed, each servo is found alone
 
     // Looks for the one servo on the bus at every rate. False and *error when not started.
@@ -176,6 +192,8 @@ signals:
     void healthCheckFinished(bool completed, const QString &message);
     // Also when the link went down meanwhile (then not ok).
     void moveTested(const feetech::MoveTestResult &result);
+    // The guard warned or acted (the message names the servo, the figures and the action).
+    void guardEvent(const feetech::GuardEvent &event);
 
 private:
     void onServoFound(const ServoInfo &info);
@@ -184,6 +202,9 @@ private:
     void onOperationFinished(const OperationResult &result);
     void connectMotorSetup(Session *session);
     void connectHealth(Session *session);
+    void connectGuard(Session *session);
+    // Sends the guard each servo's limits (set, or from its registers) when they changed.
+    void sendGuardSettings();
     bool startMotorWork(QString *error, const std::function<void(Session &)> &work);
     void onMotorWorkFinished(const OperationResult &result);
     enum class Work {
@@ -224,6 +245,9 @@ private:
     QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
     bool m_checkingHealth = false;
     std::optional<MoveTestResult> m_moveTested; // what the session said of the running test
+    GuardSettings m_guardSettings; // as the user set them
+    std::optional<GuardSettings> m_guardSent; // what the session has now
+    QHash<QPair<quint8, qint32>, GuardEvent> m_lastGuardEvent;
 };
 
 } // namespace feetech

@@ -111,7 +111,9 @@ enum class Operation {
     CheckJoints,
     Identify, // a joint's wiggle, with what it changed put back
     HealthCheck, // reads only
-    MoveTest // the health check's confirmed move, with what it changed put back
+    MoveTest, // the health check's confirmed move, with what it changed put back
+    Guard, // the guard's hold or torque off, ahead of the queue; reported as a GuardEvent
+    RecoverOverload // torque off and on again after an overload trip, then the status checked
 };
 
 struct OperationResult
@@ -129,6 +131,8 @@ struct OperationResult
     // A Write that failed after its frames went out: they may have landed. What its read-backs
     // did not settle is reported as unknown, not as unwritten.
     bool writesSent = false;
+    // RecoverOverload: the overload bit stayed set; only a power cycle clears it.
+    bool stillLatched = false;
 };
 
 struct SessionTiming

@@ -36,6 +36,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     , m_identify(new JointIdentify(*m_bus, this))
     , m_health(new HealthCheck(*m_bus, this))
     , m_moveTest(new HealthMoveTest(*m_bus, this))
+    , m_guard(new GuardKeeper(*m_bus, this))
 {
     qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::HealthReading>();
@@ -67,11 +68,23 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     connect(m_apply, &ApplyFlow::progress, this, &Session::progress);
     connect(m_telemetry, &TelemetryCycle::statsChanged, this, &Session::telemetryStats);
     connect(m_motorSetup, &MotorSetup::progress, this, &Session::motorSetupProgress);
-    m_telemetry->setBusBusy([this] { return m_running; });
-    m_telemetry->setCycleEnded([this] {
-        if (!m_queue.empty() && !m_running)
-            startQueuedOperation();
+    connect(m_scan, &BusScan::servoFound, m_guard, &GuardKeeper::noteServo);
+    connect(m_telemetry, &TelemetryCycle::telemetry, m_guard,
+            [this](const QVector<FeedbackSample> &samples, quint64) { m_guard->observe(samples); });
+    connect(m_guard, &GuardKeeper::guardEvent, this, &Session::guardEvent);
+    m_guard->setRunUrgent([this](std::function<void(std::function<void()>)> work) {
+        runGuardAction(std::move(work));
     });
+    m_guard->setActed([this](const ServoInfo &) {
+        // An identify would go on wiggling the servo the guard just stopped: it ends and
+        // puts back what it changed.
+        if (m_identifying)
+            m_identify->cancel();
+    });
+    m_telemetry->setBusBusy([this] { return m_running || m_guard->cycle().inCycle(); });
+    m_telemetry->setCycleEnded([this] { onCycleEnded(); });
+    m_guard->cycle().setBusBusy([this] { return m_running || m_telemetry->inCycle(); });
+    m_guard->cycle().setCycleEnded([this] { onCycleEnded(); });
 }
 
 Session::~Session()
@@ -125,24 +138,26 @@ void Session::onLinkDown(const QString &message)
     const bool wasPaused = m_paused;
     const Operation paused = m_pausedOperation;
     m_paused = false;
+    m_identifying = false;
     ++m_pauseGeneration;
     std::deque<Queued> dropped;
     dropped.swap(m_queue);
     m_scan->abandon();
     stopTelemetry();
+    m_guard->noteLinkDown();
     m_running = false;
     // Whoever waits for an operation hears that it ended, queued ones included, so nothing
     // stays busy.
     if (wasScanning)
         emit scanFinished(false, message);
-    else if (wasRunning)
+    else if (wasRunning && running != Operation::Guard)
         emit operationFinished({running, false, message, {}, {}});
     if (wasPaused)
         emit operationFinished({paused, false, message, {}, {}});
     for (const Queued &operation : dropped) {
         if (operation.operation == Operation::Scan)
             emit scanFinished(false, message);
-        else
+        else if (operation.operation != Operation::Guard)
             emit operationFinished({operation.operation, false, message, {}, {}});
     }
 }
@@ -162,28 +177,50 @@ void Session::startNextOperation()
         return;
     // Telemetry and operations take turns: a running cycle ends first, and a cycle that is
     // due goes before the next operation, unless that is the torque-off emergency.
-    if (m_telemetry->inCycle())
+    if (inCycle())
         return;
-    const bool emergency = !m_queue.empty() && m_queue.front().operation == Operation::TorqueOff;
-    if (!emergency && m_telemetry->startIfDue())
+    const bool emergency = !m_queue.empty()
+        && (m_queue.front().operation == Operation::TorqueOff
+            || m_queue.front().operation == Operation::Guard);
+    if (!emergency && startCycleIfDue())
         return;
     startQueuedOperation();
+}
+
+bool Session::inCycle() const
+{
+    return m_telemetry->inCycle() || m_guard->cycle().inCycle();
+}
+
+bool Session::startCycleIfDue()
+{
+    return m_telemetry->startIfDue() || m_guard->cycle().startIfDue();
+}
+
+void Session::onCycleEnded()
+{
+    if (!m_queue.empty() && !m_running)
+        startQueuedOperation();
+    if (!m_running && !inCycle())
+        startCycleIfDue();
 }
 
 void Session::startQueuedOperation()
 {
     if (m_running || m_queue.empty())
         return;
-    if (m_paused && m_queue.front().operation != Operation::TorqueOff)
+    if (m_paused && m_queue.front().operation != Operation::TorqueOff
+        && m_queue.front().operation != Operation::Guard)
         return; // the paused operation goes on first
     Queued next = std::move(m_queue.front());
     m_queue.pop_front();
     m_running = true;
     m_currentOperation = next.operation;
     if (!m_link->isOpen()) {
-        if (next.operation == Operation::Scan) {
+        if (next.operation == Operation::Scan || next.operation == Operation::Guard) {
             m_running = false;
-            emit scanFinished(false, Tr::tr("Not connected."));
+            if (next.operation == Operation::Scan)
+                emit scanFinished(false, Tr::tr("Not connected."));
             QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
         } else {
             finishOperation({next.operation, false, Tr::tr("Not connected."), {}, {}});
@@ -264,11 +301,13 @@ void Session::cancelScan()
 void Session::startTelemetry(const TelemetryOptions &options)
 {
     m_telemetry->start(options);
+    m_guard->noteStream(options);
 }
 
 void Session::stopTelemetry()
 {
     m_telemetry->stop();
+    m_guard->noteStream({});
 }
 
 void Session::changeId(const ServoInfo &servo, int newId, const QVector<int> &idsInUse)
@@ -334,6 +373,7 @@ void Session::ping(quint8 id, qint32 baud)
 
 void Session::read(const ServoInfo &servo, const QVector<Block> &blocks, ReadSource source)
 {
+    m_guard->noteServo(servo);
     enqueue(Operation::Read, [this, servo, blocks, source] {
         auto target = std::make_shared<ServoInfo>(servo);
         std::vector<Step> steps {m_bus->setBaud(servo.baud)};
@@ -356,8 +396,10 @@ void Session::write(const ServoInfo &servo, const QVector<RegisterWrite> &writes
 {
     const quint64 epoch = m_torqueOffEpoch;
     enqueue(Operation::Write, [this, servo, writes, epoch] {
-        if (!refusedAfterTorqueOff(Operation::Write, epoch))
-            m_apply->write(servo, writes, finisher());
+        if (refusedAfterTorqueOff(Operation::Write, epoch))
+            return;
+        m_guard->noteWrites(servo, writes);
+        m_apply->write(servo, writes, finisher());
     });
 }
 
@@ -367,6 +409,7 @@ void Session::apply(const ServoInfo &servo, const ApplyPlan &plan)
     enqueue(Operation::Write, [this, servo, plan, epoch] {
         if (refusedAfterTorqueOff(Operation::Write, epoch))
             return;
+        m_guard->noteWrites(servo, plan.writes);
         // Each step's result is reported as it comes; the last one ends the operation.
         m_apply->apply(
             servo, plan, [this](const OperationResult &step) { emit operationFinished(step); },
@@ -477,6 +520,7 @@ void Session::torqueOffAll(const QVector<qint32> &bauds, const QVector<ServoInfo
 {
     m_scan->cancel(); // nothing may hold torque off back for seconds
     ++m_torqueOffEpoch; // writes asked for before this must not power the servos again
+    m_guard->noteAllTorqueOff();
     const auto start = [this, bauds, servos] {
         // Every step goes on whatever failed before it: one silent servo or an odd rate must
         // not keep the others powered.
@@ -526,6 +570,7 @@ void Session::syncWrite(qint32 baud, int address, int length,
     enqueue(Operation::SyncWrite, [this, baud, address, length, entries, epoch] {
         if (refusedAfterTorqueOff(Operation::SyncWrite, epoch))
             return;
+        m_guard->noteSyncWrite(baud, address, entries);
         const auto frame = feetech::syncWrite(quint8(address), quint8(length), entries);
         if (!frame) {
             finishOperation({Operation::SyncWrite,

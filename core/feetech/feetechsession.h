@@ -5,6 +5,7 @@
 #include "feetech/busexchange.h"
 #include "feetech/busscan.h"
 #include "feetech/bustypes.h"
+#include "feetech/guardkeeper.h"
 #include "feetech/guidedflows.h"
 #include "feetech/healthcheck.h"
 #include "feetech/healthmovetest.h"
@@ -90,6 +91,15 @@ public:
     void syncWrite(qint32 baud, int address, int length,
                    const QVector<feetech::SyncWriteEntry> &entries);
 
+    // The overload and thermal guard (GuardKeeper): on from the start; these replace its
+    // settings. Its warnings and actions come as guardEvent and notes in the packet log.
+    void setGuardSettings(const feetech::GuardSettings &settings);
+    const GuardSettings &guardSettings() const { return m_guard->settings(); }
+    // Torque off and on again, then the status checked (see recoverOverload in
+    // overloadrecovery.h); with `checkOnly` (after a power cycle) only the status. The result's
+    // stillLatched says a power cycle is needed.
+    void recoverOverload(const feetech::ServoInfo &servo, bool checkOnly);
+
     // Motor set-up (MotorSetup): the one servo on the bus found at any rate; found and set up
     // as `target` says; the joints that already answer at their ID at `baud`.
     void findMotor(const feetech::MotorTarget &target);
@@ -131,6 +141,7 @@ signals:
     void healthRead(const feetech::HealthReading &reading);
     // Before the move test's operationFinished.
     void moveTested(const feetech::MoveTestResult &result);
+    void guardEvent(const feetech::GuardEvent &event);
 
 private:
     void onLinkDown(const QString &message);
@@ -145,6 +156,13 @@ private:
                   std::function<void()> resume);
     void startNextOperation();
     void startQueuedOperation(); // the next operation, whether or not a telemetry cycle is due
+    // Telemetry and the guard's reads take turns: a cycle that ended lets the next one go.
+    void onCycleEnded();
+    bool startCycleIfDue(); // the stream's, else the guard's; true when one started
+    bool inCycle() const;
+    // The guard's action: ahead of everything queued but All torque off; it ends the
+    // operation without an operationFinished (the GuardEvent says what happened).
+    void runGuardAction(std::function<void(std::function<void()> finished)> work);
     void onScanFinished(bool completed, const QString &message);
     void checkNextServo(QVector<ServoInfo> servos, int done, int reads);
     // Ends a write queued before the last torque off without sending it; true when it did.
@@ -164,6 +182,7 @@ private:
     JointIdentify *m_identify = nullptr;
     HealthCheck *m_health = nullptr;
     HealthMoveTest *m_moveTest = nullptr;
+    GuardKeeper *m_guard = nullptr;
     struct Queued
     {
         Operation operation = Operation::Read;
@@ -176,6 +195,7 @@ private:
     Operation m_pausedOperation = Operation::Read; // the one waiting, while m_paused
     quint64 m_pauseGeneration = 0; // a pause ended by a lost link never resumes
     quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
+    bool m_identifying = false; // an identify runs, paused, or waits to go on
 };
 
 } // namespace feetech

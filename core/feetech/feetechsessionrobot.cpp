@@ -26,12 +26,19 @@ void Session::identifyJoint(const ServoInfo &servo)
     enqueue(Operation::Identify, [this, servo, epoch] {
         if (refusedAfterTorqueOff(Operation::Identify, epoch))
             return;
-        m_identify->run(servo, finisher(),
-                        [this, epoch](std::chrono::milliseconds delay,
-                                      std::function<void(bool torqueOff)> resume) {
-                            pauseFor(Operation::Identify, delay,
-                                     [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
-                        });
+        m_guard->noteDriven(servo);
+        m_identifying = true;
+        m_identify->run(
+            servo,
+            [this](const OperationResult &result) {
+                m_identifying = false;
+                finishOperation(result);
+            },
+            [this, epoch](std::chrono::milliseconds delay,
+                          std::function<void(bool torqueOff)> resume) {
+                pauseFor(Operation::Identify, delay,
+                         [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
+            });
     });
 }
 

@@ -61,6 +61,12 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
     connect(m_client, &BusClient::statusChanged, this, &MotionTest::onStatusChanged);
     connect(m_client, &BusClient::allTorqueOffRequested, this,
             [this] { fail(tr("All torque off: the test was stopped.")); });
+    // The guard held the servo or switched it off: the next leg must not drive it again.
+    connect(m_client, &BusClient::guardEvent, this, [this](const GuardEvent &event) {
+        if (isRunning() && event.stage == GuardStage::Acted && event.id == m_id
+            && event.baud == m_baud)
+            fail(tr("The test was stopped: %1").arg(event.message));
+    });
     connect(m_client, &BusClient::servosChanged, this, [this] {
         if (isRunning() && servoIndex() < 0)
             fail(tr("%1 is no longer on the bus: the test was stopped.").arg(servoName()));

@@ -63,14 +63,11 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
     return [&bus, servo](StepDone next) {
         const RegisterTable &table = servo->table();
         const Register &torque = *table.find(kTorqueKey);
-        const Register &present = *table.find(kPresentKey);
-        const Register &goal = *table.find(kGoalKey);
         auto torqueNow = std::make_shared<std::optional<qint32>>();
         bus.read(servo, torque.address, torque.size, ReadSource::ReadBack,
                  [&table, &torque, torqueNow](const QByteArray &bytes) {
                      *torqueNow = valueOf(table, torque, bytes);
-                 })([&bus, servo, &table, &present, &goal, torqueNow,
-                     next](bool ok, const QString &message) {
+                 })([&bus, servo, &table, torqueNow, next](bool ok, const QString &message) {
             if (!ok) {
                 next(false, message);
                 return;
@@ -79,33 +76,44 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
                 next(true, {}); // already holding: its goal is its own business
                 return;
             }
-            auto where = std::make_shared<std::optional<qint32>>();
-            bus.read(servo, present.address, present.size, ReadSource::ReadBack,
-                     [&table, &present, where](const QByteArray &bytes) {
-                         *where = valueOf(table, present, bytes);
-                     })([&bus, servo, &table, &goal, where, next](bool ok, const QString &message) {
-                if (!ok || !*where) {
-                    next(false,
-                         ok ? Tr::tr("The present position could not be read: torque stays off.")
-                            : message);
-                    return;
-                }
-                QString error;
-                const auto writes = encodeWrites(table, {{goal.key, **where}}, &error);
-                if (!writes || writes->size() != 1) {
-                    next(false,
-                         Tr::tr("The goal cannot be set to the present position (%1): "
-                                "torque stays off.")
-                             .arg(error));
-                    return;
-                }
-                const RegisterWrite hold = writes->first();
-                bus.runSteps(
-                    {bus.write(servo->id, hold.address, hold.bytes, servo->repliesToWrites(),
-                               Tr::tr("Setting the goal to the present position")),
-                     bus.read(servo, goal.address, goal.size, ReadSource::ReadBack)},
-                    next);
+            holdAtPresentPosition(bus, servo)([next](bool held, const QString &why) {
+                next(held, held ? QString() : Tr::tr("%1 Torque stays off.").arg(why));
             });
+        });
+    };
+}
+
+Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
+                           std::shared_ptr<std::optional<qint32>> heldAt)
+{
+    return [&bus, servo, heldAt](StepDone next) {
+        const RegisterTable &table = servo->table();
+        const Register &present = *table.find(kPresentKey);
+        const Register &goal = *table.find(kGoalKey);
+        auto where = std::make_shared<std::optional<qint32>>();
+        bus.read(
+            servo, present.address, present.size, ReadSource::ReadBack,
+            [&table, &present, where](const QByteArray &bytes) {
+                *where = valueOf(table, present, bytes);
+            })([&bus, servo, &table, &goal, where, heldAt, next](bool ok, const QString &message) {
+            if (!ok || !*where) {
+                next(false, ok ? Tr::tr("The present position could not be read.") : message);
+                return;
+            }
+            QString error;
+            const auto writes = encodeWrites(table, {{goal.key, **where}}, &error);
+            if (!writes || writes->size() != 1) {
+                next(false,
+                     Tr::tr("The goal cannot be set to the present position (%1).").arg(error));
+                return;
+            }
+            if (heldAt)
+                *heldAt = *where;
+            const RegisterWrite hold = writes->first();
+            bus.runSteps({bus.write(servo->id, hold.address, hold.bytes, servo->repliesToWrites(),
+                                    Tr::tr("Setting the goal to the present position")),
+                          bus.read(servo, goal.address, goal.size, ReadSource::ReadBack)},
+                         next);
         });
     };
 }

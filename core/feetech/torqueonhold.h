@@ -8,6 +8,7 @@
 #include <QVector>
 
 #include <memory>
+#include <optional>
 
 namespace feetech {
 
@@ -18,5 +19,11 @@ bool needsHoldBeforeTorqueOn(const ServoInfo &servo, const QVector<RegisterWrite
 // Reads torque enable; when it is not on already, reads the present position, writes it as the
 // goal and reads the goal back. Fails (so nothing after it runs) when any of that fails.
 Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo);
+
+// Reads the present position, writes it as the goal and reads the goal back, whatever the
+// torque: the servo stops pushing where it stands (the guard's hold). `heldAt`, when given,
+// gets the goal written.
+Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
+                           std::shared_ptr<std::optional<qint32>> heldAt = {});
 
 } // namespace feetech

@@ -73,6 +73,7 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     m_hint->setMargin(10);
     m_hint->setForegroundRole(QPalette::PlaceholderText);
     outer->addWidget(m_hint);
+    outer->addWidget(buildGuardBanner());
 
     auto *scroll = new QScrollArea(this);
     scroll->setObjectName(QStringLiteral("controlScrollArea"));
@@ -164,6 +165,7 @@ void ControlPage::setServo(int index)
     m_index = index;
     m_servo = servo;
     m_testPanel->setServo(index, servoName());
+    showGuard();
     if (changed) {
         setStatus({}, Severity::Info);
         configureForServo();

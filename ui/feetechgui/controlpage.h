@@ -24,6 +24,7 @@ class QTimer;
 namespace feetech {
 class BusClient;
 struct FeedbackSample;
+struct GuardEvent;
 struct OperationResult;
 struct Register;
 } // namespace feetech
@@ -53,6 +54,8 @@ public:
     bool moveTo(qint32 position, QString *error = nullptr);
 
     QString statusText() const; // the status line: the last error or notice
+    // The guard's banner: what the guard last said about the servo shown (empty: nothing).
+    QString guardText() const;
 
 private:
     // Torque enable values, all in one place.
@@ -69,6 +72,12 @@ private:
     QGroupBox *buildTorqueGroup();
     QGroupBox *buildModeGroup();
     QGroupBox *buildGoalGroup();
+    // The guard's banner and its actions (controlpageguard.cpp).
+    QWidget *buildGuardBanner();
+    void onGuardEvent(const feetech::GuardEvent &event);
+    void showGuard(); // the banner for the servo shown
+    void openGuardSettings();
+    void openRecovery();
 
     void onServosChanged();
     void onServoUpdated(int index);
@@ -144,6 +153,11 @@ private:
     QLabel *m_accelerationUnit = nullptr;
 
     MotionTestPanel *m_testPanel = nullptr;
+
+    QWidget *m_guardBanner = nullptr;
+    QLabel *m_guardText = nullptr;
+    QPushButton *m_guardRecover = nullptr;
+    QPushButton *m_guardSettings = nullptr;
 
     QLabel *m_status = nullptr;
     QTimer *m_refreshTimer = nullptr;
