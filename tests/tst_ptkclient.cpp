@@ -197,7 +197,7 @@ private slots:
         QTRY_VERIFY(client.counters().repliesOk > before);
     }
 
-    void disconnectingDuringAnApplyEndsItAndTheNextApplyWorks()
+    void disconnectingDuringAnApplyEndsItAReadSettlesItAndTheNextApplyWorks()
     {
         sim::SimulatorThread simulator;
         QString error;
@@ -226,6 +226,11 @@ private slots:
 
         client.connectTo(simulator.linkPath());
         QTRY_COMPARE(client.status().state, ConnectionState::Connected);
+        // Gain travels in the first write frame, which left before the cut: the first poll
+        // shows it landed and settles it.
+        QTRY_COMPARE(model.state(QStringLiteral("gain")), model::State::Verified);
+        QVERIFY(!model.pendingValue(QStringLiteral("gain")));
+        QVERIFY(model.edit(QStringLiteral("gain"), 22));
         QTRY_VERIFY(client.applyBlocker().isEmpty());
         QVERIFY(client.apply());
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 2, 5000);
