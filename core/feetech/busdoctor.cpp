@@ -188,9 +188,9 @@ void expectationFindings(const BusObservation &seen, const QVector<ExpectedServo
             ? Tr::tr("Servo %1 does not answer").arg(missing.first())
             : Tr::tr("Servos %1 do not answer").arg(idList(missing));
         findings.append(finding(doctorcodes::kChainBreak,
-                                Tr::tr("%1, while every servo before it in the chain does: "
-                                       "check the cable after ID %2 (and its connectors at "
-                                       "both ends).")
+                                Tr::tr("%1, while every servo up to ID %2 in the chain "
+                                       "does: check the cable after ID %2 (and its connectors "
+                                       "at both ends).")
                                     .arg(notAnswering)
                                     .arg(last),
                                 missing));
