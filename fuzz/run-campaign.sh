@@ -104,7 +104,7 @@ printf '%s\n' "${targets[@]}" | xargs -P "${FUZZ_PARALLEL:-1}" -I{} bash -c 'run
 {
     printf '| %-20s | %12s | %8s | %7s | %5s | %17s | %6s |\n' target executions seconds \
         crashes leaks "sanitizer reports" corpus
-    printf '|%s|%s|%s|%s|%s|%s|%s|\n' ---------------------- -------------: --------: \
+    printf '|%s|%s|%s|%s|%s|%s|%s|\n' ---------------------- -------------: ---------: \
         --------: ------: ------------------: -------:
     for target in "${targets[@]}"; do
         IFS=$'\t' read -r name executions seconds crashed leaks sanitizer corpus \
