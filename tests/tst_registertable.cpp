@@ -294,6 +294,24 @@ private slots:
         QVERIFY2(error.contains(QStringLiteral("baud_rates")), qPrintable(error));
     }
 
+    void aFeedbackBlockAtTheTopOfTheIntegerRangeIsRefused()
+    {
+        // Found by fuzzing: the block's end was added up in int before the address was checked,
+        // an overflow the sanitizer build stops on.
+        QFile file(QStringLiteral(":/feetech/registers-sts.json"));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+        for (const auto &[address, size] : {std::pair {2147483647, 1}, std::pair {56, 2147483647},
+                                            std::pair {-2147483647 - 1, -1}}) {
+            root.insert(
+                QStringLiteral("feedback_block"),
+                QJsonObject {{QStringLiteral("address"), address}, {QStringLiteral("size"), size}});
+            QString error;
+            QVERIFY(!RegisterTable::fromJson(QJsonDocument(root).toJson(), kSource, &error));
+            QVERIFY2(error.contains(QStringLiteral("feedback_block")), qPrintable(error));
+        }
+    }
+
     void stsTableReadsInThreeBlocks()
     {
         // Checked by hand against registers-sts.json: 0-49 (up to torque limit at 48), 55-70

@@ -366,6 +366,40 @@ private slots:
         QVERIFY(!bus.loadState(dir.filePath(QStringLiteral("missing.json")), &error));
     }
 
+    void aStateIsReadFromTextAsFromItsFile()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("state.json"));
+        VirtualFeetechBus saved(mixedSpecs());
+        saved.handleFrame(feetech::write(1, 55, byte(0)), k1M, 0);
+        saved.handleFrame(feetech::write(1, 13, byte(60)), k1M, 0);
+        QVERIFY(saved.saveState(path, nullptr));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll(), saved.stateJson()); // the file holds exactly the text
+
+        VirtualFeetechBus fromText(mixedSpecs());
+        QString error;
+        QVERIFY2(fromText.loadStateJson(saved.stateJson(), path, &error), qPrintable(error));
+        QCOMPARE(fromText.servo(0).value(u"max_temperature"), 60);
+        QCOMPARE(fromText.stateJson(), saved.stateJson());
+    }
+
+    void aRefusedStateTextChangesNothingAndNamesTheFile()
+    {
+        VirtualFeetechBus bus(mixedSpecs());
+        const QByteArray before = bus.stateJson();
+        QByteArray wrongImage = before;
+        wrongImage.replace("\"eeprom\": \"", "\"eeprom\": \"zz");
+        for (const QByteArray &text : {QByteArray("{\"format\": 1, \"servos\": ["), wrongImage}) {
+            QString error;
+            QVERIFY(!bus.loadStateJson(text, QStringLiteral("bench.json"), &error));
+            QVERIFY2(error.startsWith(QStringLiteral("state file bench.json: ")),
+                     qPrintable(error));
+            QCOMPARE(bus.stateJson(), before);
+        }
+    }
+
     void validationRejectsBadSpecs_data()
     {
         QTest::addColumn<Specs>("specs");

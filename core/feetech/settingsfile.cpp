@@ -39,12 +39,17 @@ std::optional<SettingsFile> SettingsFile::load(const QString &path, QString *err
         *error = util::fileError(path, why);
         return std::nullopt;
     }
-    const QByteArray &json = *read;
+    return fromJson(*read, shown, error);
+}
+
+std::optional<SettingsFile> SettingsFile::fromJson(const QByteArray &json, const QString &source,
+                                                   QString *error)
+{
     SettingsFile settings;
-    settings.m_source = shown;
+    settings.m_source = source;
     const QJsonObject object = QJsonDocument::fromJson(json).object();
     if (object.value(QStringLiteral("format")).toString() == kRobotMarker) {
-        settings.m_robot = robotTemplateFromJson(json, shown, error);
+        settings.m_robot = robotTemplateFromJson(json, source, error);
         if (!settings.m_robot)
             return std::nullopt;
         return settings;
@@ -63,7 +68,7 @@ std::optional<SettingsFile> SettingsFile::load(const QString &path, QString *err
     }
     const QString claimed = object.value(QStringLiteral("family")).toString();
     *error =
-        Tr::tr("%1: %2").arg(shown, errors.value(claimed, errors.value(familyKey(Family::Sts))));
+        Tr::tr("%1: %2").arg(source, errors.value(claimed, errors.value(familyKey(Family::Sts))));
     return std::nullopt;
 }
 

@@ -23,6 +23,9 @@ public:
     // checked as robotTemplateFromJson checks it, else a profile valid for at least one Feetech
     // family. Nothing and *error (naming the file and the problem) when it is neither.
     static std::optional<SettingsFile> load(const QString &path, QString *error);
+    // The same check of a file's contents; `source` names it in messages.
+    static std::optional<SettingsFile> fromJson(const QByteArray &json, const QString &source,
+                                                QString *error);
     static SettingsFile fromTemplate(const RobotTemplate &robot);
 
     bool isTemplate() const { return m_robot.has_value(); }

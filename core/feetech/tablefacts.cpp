@@ -85,7 +85,8 @@ bool parseFeedbackBlock(const QJsonObject &root, const QVector<Register> &regist
     const QJsonObject block = root.value(QLatin1String("feedback_block")).toObject();
     facts.feedbackAddress = block.value(QLatin1String("address")).toInt(-1);
     facts.feedbackSize = block.value(QLatin1String("size")).toInt(-1);
-    const int end = facts.feedbackAddress + facts.feedbackSize;
+    // In 64 bits: the file's numbers may be anywhere in int's range, checked only below.
+    const qint64 end = qint64(facts.feedbackAddress) + facts.feedbackSize;
     // The block must start at present position and lie wholly inside the table's registers.
     const bool covered = first && first->address == facts.feedbackAddress && facts.feedbackSize > 0
         && std::any_of(registers.begin(), registers.end(),

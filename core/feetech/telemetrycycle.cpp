@@ -41,7 +41,9 @@ void TelemetryCycle::start(const TelemetryOptions &options)
     qRegisterMetaType<feetech::FeedbackSample>();
     qRegisterMetaType<QVector<feetech::FeedbackSample>>();
     qRegisterMetaType<feetech::TelemetryStats>();
-    m_state.emplace();
+    // From a value, not emplace(): clang cannot tell a nested struct with member initialisers
+    // default-constructible inside its enclosing class (the fuzz build compiles with clang).
+    m_state.emplace(State {});
     State &state = *m_state;
     state.options = options;
     state.startedUs = steadyMicroseconds();

@@ -430,7 +430,7 @@ std::optional<int> VirtualFeetechBus::uniqueIndexOf(quint8 id, QString *error) c
 
 // ---- state file -----------------------------------------------------------------------------
 
-bool VirtualFeetechBus::saveState(const QString &path, QString *error) const
+QByteArray VirtualFeetechBus::stateJson() const
 {
     QJsonArray servos;
     for (const Slot &slot : m_slots) {
@@ -443,13 +443,18 @@ bool VirtualFeetechBus::saveState(const QString &path, QString *error) const
         {QStringLiteral("format"), kStateFormat},
         {QStringLiteral("servos"), servos},
     };
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+bool VirtualFeetechBus::saveState(const QString &path, QString *error) const
+{
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         if (error)
             *error = Tr::tr("cannot write the state file %1: %2").arg(path, file.errorString());
         return false;
     }
-    file.write(QJsonDocument(root).toJson(QJsonDocument::Indented));
+    file.write(stateJson());
     if (!file.commit()) {
         if (error)
             *error = Tr::tr("cannot write the state file %1: %2").arg(path, file.errorString());
@@ -460,16 +465,24 @@ bool VirtualFeetechBus::saveState(const QString &path, QString *error) const
 
 bool VirtualFeetechBus::loadState(const QString &path, QString *error)
 {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = Tr::tr("state file %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return loadStateJson(file.readAll(), path, error);
+}
+
+bool VirtualFeetechBus::loadStateJson(const QByteArray &json, const QString &path, QString *error)
+{
     const auto fail = [error, &path](const QString &message) {
         if (error)
             *error = Tr::tr("state file %1: %2").arg(path, message);
         return false;
     };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(file.errorString());
     QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError)
         return fail(Tr::tr("not valid JSON (%1)").arg(parseError.errorString()));
     const QJsonObject root = document.object();

@@ -93,6 +93,9 @@ public:
     // error; then every servo powers up from its image.
     bool loadState(const QString &path, QString *error);
     bool saveState(const QString &path, QString *error) const;
+    // The same from and to the file's contents; `path` names the file in messages.
+    bool loadStateJson(const QByteArray &json, const QString &path, QString *error);
+    QByteArray stateJson() const;
     // When set, the bus saves the state after every frame that changed an EEPROM image.
     void setStatePath(const QString &path);
     QString statePath() const { return m_statePath; }

@@ -1,0 +1,24 @@
+// Fuzz target: a pose file; a pose read is written and read back unchanged.
+#include "feetech/feetechpacket.h"
+#include "feetech/pose.h"
+#include "fuzztarget.h"
+
+#include <cstdlib>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
+{
+    QString error;
+    const auto pose = feetech::poseFromJson(fuzz::input(data, size), &error);
+    if (!pose) {
+        FUZZ_CHECK(!error.isEmpty());
+        return 0;
+    }
+    for (const feetech::PoseEntry &entry : pose->servos) {
+        FUZZ_CHECK(entry.id <= feetech::kMaxServoId);
+        FUZZ_CHECK(std::abs(entry.position) <= feetech::kPoseMaxMagnitude);
+        FUZZ_CHECK(pose->find(entry.id, entry.baud) == &entry); // no servo twice
+    }
+    const auto reread = feetech::poseFromJson(feetech::poseToJson(*pose), &error);
+    FUZZ_CHECK(reread == pose);
+    return 0;
+}

@@ -1,0 +1,109 @@
+// Tests feetech::SettingsFile's reading: a profile or a robot template from a file or from its
+// text gives the same values, and text that is neither is refused naming its source.
+#include "feetech/registertable.h"
+#include "feetech/settingsfile.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+const QByteArray kProfile = R"({"format": "servobench-profile", "version": 1, "family": "sts",
+                                "parameters": {"p_gain": 22, "max_angle_limit": 4000}})";
+const QByteArray kTemplate = R"({"format": "servobench-robot", "version": 1, "name": "Arm",
+                                 "baud": 1000000, "settings": {"p_gain": 16},
+                                 "joints": [{"name": "base", "id": 1, "model": "STS3215"}]})";
+
+feetech::ServoInfo sts3215(quint8 id)
+{
+    feetech::ServoInfo servo;
+    servo.id = id;
+    servo.baud = 1000000;
+    servo.model = *feetech::ModelTable::builtIn().findByName(u"STS3215");
+    servo.modelMajor = quint8(servo.model.major);
+    servo.modelMinor = quint8(servo.model.minor);
+    return servo;
+}
+
+QVector<std::pair<QString, qint64>> valuesOf(const feetech::SettingsFile &file)
+{
+    QString error;
+    const auto values = file.valuesFor(sts3215(1), &error);
+    if (!values)
+        qFatal("no values: %s", qPrintable(error));
+    QVector<std::pair<QString, qint64>> pairs;
+    for (const model::WriteItem &item : *values)
+        pairs.append({item.key, item.value});
+    return pairs;
+}
+
+} // namespace
+
+class TestSettingsFile : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+
+    QString write(const QString &name, const QByteArray &contents)
+    {
+        const QString path = m_dir.filePath(name);
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly) || file.write(contents) != contents.size())
+            qFatal("cannot write %s", qPrintable(path));
+        return path;
+    }
+
+private slots:
+    void aProfileReadFromTextIsTheProfileReadFromItsFile()
+    {
+        QString error;
+        const auto fromFile =
+            feetech::SettingsFile::load(write(QStringLiteral("gains.json"), kProfile), &error);
+        QVERIFY2(fromFile, qPrintable(error));
+        const auto fromText =
+            feetech::SettingsFile::fromJson(kProfile, QStringLiteral("gains.json"), &error);
+        QVERIFY2(fromText, qPrintable(error));
+        QVERIFY(!fromText->isTemplate());
+        QCOMPARE(valuesOf(*fromText), valuesOf(*fromFile));
+        const QVector<std::pair<QString, qint64>> expected {
+            {QStringLiteral("max_angle_limit"), 4000}, {QStringLiteral("p_gain"), 22}};
+        auto values = valuesOf(*fromText);
+        std::sort(values.begin(), values.end());
+        QCOMPARE(values, expected);
+    }
+
+    void aTemplateIsRecognisedInTextByItsFormat()
+    {
+        QString error;
+        const auto fromFile =
+            feetech::SettingsFile::load(write(QStringLiteral("arm.json"), kTemplate), &error);
+        QVERIFY2(fromFile, qPrintable(error));
+        const auto fromText =
+            feetech::SettingsFile::fromJson(kTemplate, QStringLiteral("arm.json"), &error);
+        QVERIFY2(fromText, qPrintable(error));
+        QVERIFY(fromText->isTemplate());
+        QCOMPARE(fromText->robot()->name, QStringLiteral("Arm"));
+        QCOMPARE(valuesOf(*fromText), valuesOf(*fromFile));
+    }
+
+    void textThatIsNeitherIsRefusedWithTheSameMessageAsItsFile()
+    {
+        const QByteArray broken = R"({"format": "servobench-profile", "version": 1,
+                                      "family": "sts", "parameters": {"p_gain": "high"}})";
+        const QString path = write(QStringLiteral("broken.json"), broken);
+        QString fileError;
+        QVERIFY(!feetech::SettingsFile::load(path, &fileError));
+        QString textError;
+        QVERIFY(
+            !feetech::SettingsFile::fromJson(broken, QDir::toNativeSeparators(path), &textError));
+        QCOMPARE(textError, fileError);
+        QVERIFY2(textError.startsWith(QDir::toNativeSeparators(path) + QStringLiteral(": ")),
+                 qPrintable(textError));
+        QVERIFY2(textError.contains(QStringLiteral("p_gain")), qPrintable(textError));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSettingsFile)
+#include "tst_settingsfile.moc"
