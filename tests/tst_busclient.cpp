@@ -218,6 +218,30 @@ private slots:
         QVERIFY(!m_client->isBusy());
     }
 
+    void anEepromLeftOpenByALostAnswerIsSaidAndLockedOnceTheServoAnswers()
+    {
+        // Every answer is lost: the unlock lands unconfirmed and no relock is confirmed.
+        m_simulator->call([](sim::Simulator &simulator) {
+            sim::FaultSettings faults;
+            faults.drop = 1.0;
+            simulator.setFaults(faults, 5);
+        });
+        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        QVERIFY(parameters(0).edit(kMaxTemperature, 68));
+        QVERIFY(m_client->apply(0));
+        const OperationResult result = nextResult(finished);
+        QVERIFY(!result.ok);
+        QVERIFY2(result.message.contains(QLatin1String("may be left open")),
+                 qPrintable(result.message));
+        m_simulator->call([](sim::Simulator &simulator) { simulator.setFaults({}, 1); });
+        // The next apply of that servo opens and closes it again, confirmed.
+        QVERIFY(m_client->apply(0));
+        const OperationResult again = nextResult(finished);
+        QVERIFY2(again.ok, qPrintable(again.message));
+        QCOMPARE(simulatorValue(1, u"lock"), 1);
+        QCOMPARE(simulatorValue(1, kMaxTemperature), 68);
+    }
+
     void aRamWriteThatGoesUnansweredIsUnknownUntilAReadSettlesIt()
     {
         setSimulatorValue(2, u"id", 30); // servo 2 is no longer there

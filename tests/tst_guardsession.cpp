@@ -195,7 +195,7 @@ private slots:
         QVERIFY(!result.ok); // stopped, not finished
     }
 
-    void aServoNearItsMaximumTemperatureIsHeld()
+    void aServoNearItsMaximumTemperatureHasItsTorqueSwitchedOff()
     {
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) {
             s.setAmbientTemperature(67.0);
@@ -210,10 +210,30 @@ private slots:
         QVERIFY(find(eventsOf(events), GuardCause::Heat, GuardStage::Warning, &warnedAt));
         const auto acted = find(eventsOf(events), GuardCause::Heat, GuardStage::Acted, &actedAt);
         QVERIFY(warnedAt < actedAt);
-        QVERIFY(acted->ok && acted->heldAt);
+        // A held motor keeps warming: heat is met with torque off, whatever the action set.
+        QVERIFY(acted->ok);
+        QCOMPARE(acted->action, feetech::GuardAction::TorqueOff);
         QVERIFY(acted->value >= 65.0);
         QVERIFY2(acted->message.contains(QLatin1String("70")), qPrintable(acted->message));
-        QCOMPARE(simulatorValue(1, u"goal_position"), *acted->heldAt);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+    }
+
+    void aServoOutsidePositionModeIsNotHeldButSwitchedOff()
+    {
+        // In step mode a goal is a relative move: the guard must not write one.
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
+        QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
+        const qint32 start = simulatorValue(1, u"present_position");
+        QVERIFY(drive(start > 2048 ? start - 300 : start + 300).ok);
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setValue(u"mode", 3); }));
+        const qint32 goalBefore = simulatorValue(1, u"goal_position");
+        QVERIFY(waitFor(events, GuardCause::Overload, GuardStage::Acted));
+        const auto acted = find(eventsOf(events), GuardCause::Overload, GuardStage::Acted);
+        QVERIFY(acted->ok);
+        QCOMPARE(acted->action, feetech::GuardAction::TorqueOff);
+        QVERIFY(!acted->heldAt);
+        QCOMPARE(simulatorValue(1, u"goal_position"), goalBefore);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
     }
 
     void aHotServoThatNothingDrivesIsOnlyWarnedAbout()

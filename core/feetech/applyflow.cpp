@@ -22,6 +22,12 @@ struct Tr
 const QString kIdKey = QStringLiteral("id");
 const QString kBaudKey = QStringLiteral("baud_rate");
 
+QString lockLeftOpenWarning()
+{
+    return Tr::tr("The EEPROM lock could not be closed again: the servo's EEPROM may be left "
+                  "open. Read the servo again and lock it when it answers.");
+}
+
 } // namespace
 
 std::optional<ApplyPlan> planApply(const ServoInfo &servo, const model::ParameterModel &parameters,
@@ -144,44 +150,39 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
                 finish({Operation::Write, true, Tr::tr("Written and read back."), servo, {}});
                 return;
             }
-            if (!*sent) {
-                // Nothing was written, but an unlock may have landed unconfirmed: close it.
-                if (!eeprom) {
-                    finish({Operation::Write, false, message, servo, {}});
-                    return;
-                }
-                m_bus.runSteps({BusExchange::tolerant(relock(target, kRelockAttempts))},
-                               [finish, servo, message](bool, const QString &) {
-                                   finish({Operation::Write, false, message, servo, {}});
-                               });
-                return;
-            }
-            // Never leave the EEPROM open: lock it again, whatever failed. Then read back what
-            // was written, each register on its own, so that every write whose answer was lost
-            // is settled by what the servo holds; what no read-back settles stays unknown.
+            // Never leave the EEPROM open: lock it again, whatever failed (an unlock may have
+            // landed unconfirmed even when nothing else went out).
             std::vector<Step> settle;
             auto locked = std::make_shared<bool>(!eeprom);
-            if (eeprom) {
-                settle.push_back(BusExchange::tolerant(relock(target, kRelockAttempts)));
-                settle.push_back(BusExchange::markDone(locked));
+            if (eeprom)
+                settle.push_back(relockNoting(target, locked));
+            // Then read back what was written, each register on its own, so that every write
+            // whose answer was lost is settled by what the servo holds; what no read-back
+            // settles stays unknown.
+            if (*sent) {
+                for (const RegisterWrite &item : writes)
+                    settle.push_back(BusExchange::tolerant(m_bus.read(
+                        target, item.address, int(item.bytes.size()), ReadSource::ReadBack)));
             }
-            for (const RegisterWrite &item : writes)
-                settle.push_back(BusExchange::tolerant(m_bus.read(
-                    target, item.address, int(item.bytes.size()), ReadSource::ReadBack)));
-            m_bus.runSteps(
-                std::move(settle), [finish, servo, message, locked](bool, const QString &) {
-                    OperationResult result {Operation::Write, false, message, servo, {}};
-                    if (!*locked)
-                        result.message +=
-                            u' '
-                            + Tr::tr(
-                                "The EEPROM lock could not be closed again: the servo's EEPROM "
-                                "may be left open. Read the servo again and lock it when it "
-                                "answers.");
-                    result.writesSent = true;
-                    finish(result);
-                });
+            m_bus.runSteps(std::move(settle),
+                           [finish, servo, message, locked, sent](bool, const QString &) {
+                               OperationResult result {Operation::Write, false, message, servo, {}};
+                               if (!*locked)
+                                   result.message += u' ' + lockLeftOpenWarning();
+                               result.writesSent = *sent;
+                               finish(result);
+                           });
         });
+}
+
+Step ApplyFlow::relockNoting(std::shared_ptr<ServoInfo> target, std::shared_ptr<bool> locked)
+{
+    return [this, target, locked](StepDone next) {
+        relock(target, kRelockAttempts)([locked, next](bool ok, const QString &) {
+            *locked = ok;
+            next(true, {}); // the read-backs go on either way
+        });
+    };
 }
 
 Step ApplyFlow::relock(std::shared_ptr<ServoInfo> target, int attempts)

@@ -81,6 +81,8 @@ private:
     // Closing the EEPROM lock after a failure, asked again while the servo does not confirm.
     static constexpr int kRelockAttempts = 4;
     Step relock(std::shared_ptr<ServoInfo> target, int attempts);
+    // relock, its outcome in `locked`; the run goes on either way.
+    Step relockNoting(std::shared_ptr<ServoInfo> target, std::shared_ptr<bool> locked);
     // Why `writes` may not go out to `servo` (empty when they may).
     QString refusal(const ServoInfo &servo, const QVector<RegisterWrite> &writes) const;
 

@@ -75,11 +75,12 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     m_guard->setRunUrgent([this](std::function<void(std::function<void()>)> work) {
         runGuardAction(std::move(work));
     });
-    m_guard->setActed([this](const ServoInfo &) {
+    m_guard->setActed([this](const ServoInfo &servo) {
         // An identify would go on wiggling the servo the guard just stopped: it ends and
-        // puts back what it changed.
+        // puts back what it changed. A move test ends and leaves it as the guard did.
         if (m_identifying)
             m_identify->cancel();
+        m_moveTest->stopForGuard(servo.id, servo.baud);
     });
     m_telemetry->setBusBusy([this] { return m_running || m_guard->cycle().inCycle(); });
     m_telemetry->setCycleEnded([this] { onCycleEnded(); });

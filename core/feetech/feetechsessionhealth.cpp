@@ -59,6 +59,7 @@ void Session::moveTest(const ServoInfo &servo)
     enqueue(Operation::MoveTest, [this, servo, epoch] {
         if (refusedAfterTorqueOff(Operation::MoveTest, epoch))
             return;
+        m_guard->noteDriven(servo); // the guard watches the move as it does any other
         m_moveTest->run(
             servo,
             [this, epoch](std::chrono::milliseconds delay,

@@ -202,39 +202,69 @@ void GuardKeeper::act(const ServoInfo &servo, const GuardEvent &seen, const Guar
     auto target = std::make_shared<ServoInfo>(servo);
     m_runUrgent([this, target, seen, limits](std::function<void()> finished) {
         const ServoInfo &info = *target;
-        std::vector<Step> steps {m_bus.setBaud(info.baud)};
         auto heldAt = std::make_shared<std::optional<qint32>>();
+        auto otherMode = std::make_shared<bool>(false);
         const RegisterTable &table = info.table();
+        // A held motor keeps its current and keeps warming: heat is always met with torque off.
+        const bool hold = limits.action == GuardAction::Hold && seen.cause != GuardCause::Heat
+            && table.find(u"goal_position") && table.find(u"present_position");
+        std::vector<Step> steps {m_bus.setBaud(info.baud)};
+        if (hold)
+            steps.push_back(holdAtPresentPosition(m_bus, target, heldAt, otherMode));
+        else
+            steps.push_back(torqueOff(target));
+        m_bus.runSteps(std::move(steps),
+                       [this, target, seen, limits, heldAt, otherMode, hold,
+                        finished](bool ok, const QString &message) {
+                           GuardEvent event = seen;
+                           GuardLimits used = limits;
+                           if (!hold)
+                               used.action = event.action = GuardAction::TorqueOff;
+                           const auto done = [this, target, heldAt,
+                                              finished](GuardEvent event, GuardLimits used, bool ok,
+                                                        const QString &message) {
+                               event.ok = ok;
+                               event.heldAt = *heldAt;
+                               event.message = message;
+                               if (ok && event.action == GuardAction::TorqueOff)
+                                   setDriven(*target, false);
+                               report(event, used);
+                               if (m_acted)
+                                   m_acted(*target);
+                               finished();
+                           };
+                           if (hold && !ok && *otherMode) {
+                               // Not in position mode: a goal cannot hold it, so its torque goes
+                               // off.
+                               used.action = event.action = GuardAction::TorqueOff;
+                               m_bus.runSteps({torqueOff(target)},
+                                              [done, event, used](bool off, const QString &why) {
+                                                  done(event, used, off, why);
+                                              });
+                               return;
+                           }
+                           done(event, used, ok, message);
+                       });
+    });
+}
+
+Step GuardKeeper::torqueOff(std::shared_ptr<ServoInfo> target)
+{
+    return [this, target](StepDone next) {
+        const RegisterTable &table = target->table();
         const Register *torque = table.find(u"torque_enable");
         const auto off = table.torqueValue(TorqueMode::Off);
-        if (limits.action == GuardAction::Hold && table.find(u"goal_position")
-            && table.find(u"present_position")) {
-            steps.push_back(holdAtPresentPosition(m_bus, target, heldAt));
-        } else if (torque && off) {
-            steps.push_back(m_bus.write(info.id, torque->address, QByteArray(1, char(*off)),
-                                        info.repliesToWrites(),
-                                        Tr::tr("Guard: torque off of servo %1").arg(info.id)));
-            steps.push_back(
-                m_bus.read(target, torque->address, torque->size, ReadSource::ReadBack));
+        if (!torque || !off) {
+            next(false,
+                 Tr::tr("Servo %1 has no torque switch the guard could use.").arg(target->id));
+            return;
         }
-        m_bus.runSteps(
-            std::move(steps),
-            [this, target, seen, limits, heldAt, finished](bool ok, const QString &message) {
-                GuardEvent event = seen;
-                GuardLimits used = limits;
-                if (!target->table().find(u"goal_position"))
-                    used.action = event.action = GuardAction::TorqueOff;
-                event.ok = ok;
-                event.heldAt = *heldAt;
-                event.message = message;
-                if (ok && event.action == GuardAction::TorqueOff)
-                    setDriven(*target, false);
-                report(event, used);
-                if (m_acted)
-                    m_acted(*target);
-                finished();
-            });
-    });
+        m_bus.runSteps({m_bus.write(target->id, torque->address, QByteArray(1, char(*off)),
+                                    target->repliesToWrites(),
+                                    Tr::tr("Guard: torque off of servo %1").arg(target->id)),
+                        m_bus.read(target, torque->address, torque->size, ReadSource::ReadBack)},
+                       next);
+    };
 }
 
 } // namespace feetech

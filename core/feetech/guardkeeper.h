@@ -61,6 +61,7 @@ private:
     void updateCycle();
     void report(GuardEvent event, const GuardLimits &limits);
     void act(const ServoInfo &servo, const GuardEvent &seen, const GuardLimits &limits);
+    Step torqueOff(std::shared_ptr<ServoInfo> target); // written and read back
 
     BusExchange &m_bus;
     TelemetryCycle *m_cycle;

@@ -39,6 +39,7 @@ struct HealthMoveTest::Run
     bool returning = false; // on the way back to the start
     bool changed = false;
     bool torqueWasOn = false;
+    bool stoppedByGuard = false; // its goal is the guard's now: not put back
     QElapsedTimer clock; // since the step's goal write, then since the way back began
     QVector<TimedValue> samples;
 };
@@ -85,6 +86,7 @@ void HealthMoveTest::run(const ServoInfo &servo, Pause pause,
                          std::function<void(const MoveTestResult &)> done)
 {
     auto run = std::make_shared<Run>();
+    m_running = run;
     run->servo = std::make_shared<ServoInfo>(servo);
     run->pause = std::move(pause);
     run->done = std::move(done);
@@ -188,9 +190,22 @@ void HealthMoveTest::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> st
     });
 }
 
+void HealthMoveTest::stopForGuard(quint8 id, qint32 baud)
+{
+    if (const auto run = m_running.lock(); run && run->servo->id == id && run->servo->baud == baud)
+        run->stoppedByGuard = true;
+}
+
 void HealthMoveTest::poll(std::shared_ptr<Run> run)
 {
     run->pause(kPollInterval, [this, run](bool torqueOff) {
+        if (run->stoppedByGuard) {
+            restore(run, false,
+                    Tr::tr("The overload guard stopped the move test of %1; its goal stays where "
+                           "the guard held it.")
+                        .arg(servoName(*run->servo)));
+            return;
+        }
         if (torqueOff) {
             restore(run, true,
                     Tr::tr("All torque off: the move test of %1 was stopped.")
@@ -249,7 +264,7 @@ void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, const QSt
         steps.push_back(writeStep(run, kTorqueEnable, *table.torqueValue(TorqueMode::Off)));
     if (!torqueOff)
         restored.append(kTorqueEnable);
-    if (run->before.contains(kGoalPosition)) {
+    if (run->before.contains(kGoalPosition) && !run->stoppedByGuard) {
         steps.push_back(writeStep(run, kGoalPosition, run->before.value(kGoalPosition)));
         restored.append(kGoalPosition);
     }

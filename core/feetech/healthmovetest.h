@@ -37,6 +37,9 @@ public:
     // an unknown model, not in position mode, or without room to move. Then goal = present
     // position before torque on (never a jump), the step, the way back, the restore.
     void run(const ServoInfo &servo, Pause pause, std::function<void(const MoveTestResult &)> done);
+    // The guard held or switched off the servo at `id` and `baud`: a test running on it ends at
+    // its next poll; its torque is put back as it was, its goal stays where the guard put it.
+    void stopForGuard(quint8 id, qint32 baud);
 
 private:
     struct Run;
@@ -51,6 +54,7 @@ private:
     void end(std::shared_ptr<Run> run, bool ok, const QString &message);
 
     BusExchange &m_bus;
+    std::weak_ptr<Run> m_running;
 };
 
 } // namespace feetech

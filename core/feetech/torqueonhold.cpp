@@ -18,6 +18,7 @@ struct Tr
 const QString kTorqueKey = QStringLiteral("torque_enable");
 const QString kGoalKey = QStringLiteral("goal_position");
 const QString kPresentKey = QStringLiteral("present_position");
+const QString kModeKey = QStringLiteral("mode");
 
 bool overlaps(const RegisterWrite &write, const Register &reg)
 {
@@ -34,6 +35,10 @@ std::optional<qint32> valueOf(const RegisterTable &table, const Register &reg,
     }
     return std::nullopt;
 }
+
+// Reads the present position, writes it as the goal and reads the goal back.
+Step writeGoalAtPresent(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
+                        std::shared_ptr<std::optional<qint32>> heldAt);
 
 } // namespace
 
@@ -76,7 +81,14 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
                 next(true, {}); // already holding: its goal is its own business
                 return;
             }
-            holdAtPresentPosition(bus, servo)([next](bool held, const QString &why) {
+            auto otherMode = std::make_shared<bool>(false);
+            holdAtPresentPosition(bus, servo, {},
+                                  otherMode)([next, otherMode](bool held, const QString &why) {
+                // Outside position mode the goal is no position: there is nothing to hold.
+                if (!held && *otherMode) {
+                    next(true, {});
+                    return;
+                }
                 next(held, held ? QString() : Tr::tr("%1 Torque stays off.").arg(why));
             });
         });
@@ -84,7 +96,48 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
 }
 
 Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
-                           std::shared_ptr<std::optional<qint32>> heldAt)
+                           std::shared_ptr<std::optional<qint32>> heldAt,
+                           std::shared_ptr<bool> notInPositionMode)
+{
+    return [&bus, servo, heldAt, notInPositionMode](StepDone next) {
+        const RegisterTable &table = servo->table();
+        const Register *mode = table.find(kModeKey);
+        if (!mode) {
+            writeGoalAtPresent(bus, servo, heldAt)(next);
+            return;
+        }
+        // In wheel, PWM or step mode the goal is no position (in step mode a goal is a
+        // relative move): writing the present position there would move the horn or do
+        // nothing. Only position mode (0) is held.
+        auto modeNow = std::make_shared<std::optional<qint32>>();
+        bus.read(servo, mode->address, mode->size, ReadSource::ReadBack,
+                 [&table, mode, modeNow](const QByteArray &bytes) {
+                     *modeNow = valueOf(table, *mode, bytes);
+                 })([&bus, servo, heldAt, notInPositionMode, modeNow,
+                     next](bool ok, const QString &message) {
+            if (!ok || !*modeNow) {
+                next(false, ok ? Tr::tr("The operating mode could not be read.") : message);
+                return;
+            }
+            if (**modeNow != 0) {
+                if (notInPositionMode)
+                    *notInPositionMode = true;
+                next(false,
+                     Tr::tr("Servo %1 is not in position mode (mode %2): its goal is not a "
+                            "position, so it cannot be held there.")
+                         .arg(servo->id)
+                         .arg(**modeNow));
+                return;
+            }
+            writeGoalAtPresent(bus, servo, heldAt)(next);
+        });
+    };
+}
+
+namespace {
+
+Step writeGoalAtPresent(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
+                        std::shared_ptr<std::optional<qint32>> heldAt)
 {
     return [&bus, servo, heldAt](StepDone next) {
         const RegisterTable &table = servo->table();
@@ -117,5 +170,7 @@ Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
         });
     };
 }
+
+} // namespace
 
 } // namespace feetech

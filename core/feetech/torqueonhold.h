@@ -22,8 +22,11 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo);
 
 // Reads the present position, writes it as the goal and reads the goal back, whatever the
 // torque: the servo stops pushing where it stands (the guard's hold). `heldAt`, when given,
-// gets the goal written.
+// gets the goal written. Only in position mode: a servo in another mode (wheel, PWM, step,
+// where the goal is no position) is left alone, the step fails and `notInPositionMode`, when
+// given, is set.
 Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
-                           std::shared_ptr<std::optional<qint32>> heldAt = {});
+                           std::shared_ptr<std::optional<qint32>> heldAt = {},
+                           std::shared_ptr<bool> notInPositionMode = {});
 
 } // namespace feetech

@@ -266,8 +266,8 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             }
             if (cameTooSoon(int(item->bytes.size()))) {
                 // Nothing can answer before the request and the answer have crossed the wire:
-                // this is a late answer to an earlier request (PTK replies name no query).
-                heard(int(item->bytes.size()));
+                // this is a late answer to an earlier request (PTK replies name no query). It
+                // says nothing of when this request is answered: no first-byte deadline starts.
                 m_counters.discardedBytes += item->bytes.size();
                 ++m_counters.lateReplies;
                 log(Direction::Stray, item->bytes,

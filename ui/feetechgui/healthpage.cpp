@@ -186,11 +186,13 @@ void HealthPage::cancel()
 
 bool HealthPage::moveTest(QString *error)
 {
-    const int index = selectedServo();
+    int index = selectedServo();
     QString why = index < 0 ? tr("Select the servo to move in the table first.")
                             : m_client->moveTestBlocker(index);
     if (why.isEmpty()) {
-        const feetech::ServoInfo &info = m_client->servo(index).info;
+        // The question runs its own event loop: by its answer the servo list may have changed,
+        // so the servo confirmed is looked up again by its address.
+        const feetech::ServoInfo info = m_client->servo(index).info;
         const QString question =
             tr("Servo %1 (%2) will move %3 steps from where it stands and back, with its torque "
                "on meanwhile. Make sure nothing is in the way. Move it?")
@@ -198,8 +200,11 @@ bool HealthPage::moveTest(QString *error)
                 .arg(info.model.name)
                 .arg(feetech::HealthMoveTest::kAmplitude);
         const bool confirmed = m_confirm(question);
+        index = m_client->indexOf(info.id, info.baud);
         if (!confirmed)
             why = tr("The move test was not confirmed: nothing moved.");
+        else if (index < 0)
+            why = tr("Servo %1 is no longer on the bus: nothing moved.").arg(info.id);
         else if (m_client->moveTest(index, true, &why))
             m_moving = true;
     }
