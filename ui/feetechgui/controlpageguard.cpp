@@ -71,8 +71,9 @@ void ControlPage::showGuard()
     m_guardSettings->setEnabled(m_client->servoCount() > 0);
     if (!event) {
         m_guardText->setText(m_client->guardSettings().enabled
-                                 ? tr("Guard on: an overloaded or hot servo is held where it "
-                                      "stands.")
+                                 ? tr("Guard on: an overloaded servo is stopped (held where "
+                                      "it stands, or its torque switched off, as set under "
+                                      "Guard…); a hot one has its torque switched off.")
                                  : tr("Guard off: nothing stops an overloaded servo but its own "
                                       "protection."));
         m_guardText->setPalette(QPalette());
