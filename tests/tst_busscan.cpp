@@ -172,6 +172,41 @@ private slots:
         QCOMPARE(idsAskedAfterTheLastProbe(), QVector<int> {});
     }
 
+    void aRateThatSeemedSilentIsLookedAtAgainWhenNobodyWasFound()
+    {
+        // The servo answers 30 ms late, the opening probe waits 20: the rate seems silent.
+        // Before the scan reports nobody, it asks that rate once more, twice as patiently.
+        m_timing.probeAllowance = std::chrono::milliseconds(20);
+        m_timing.initialScanAllowance = std::chrono::milliseconds(20);
+        m_timing.engine.replyTimeout = std::chrono::milliseconds(150);
+        sim::SimulatorOptions options = busOptions(testsupport::servosAt(k1M, {u"STS3215"}));
+        options.replyDelayUs = 30000;
+        startBus(options);
+        ScanOptions scanOptions;
+        scanOptions.lastId = 3;
+        QVERIFY(scan(scanOptions));
+        QVERIFY(found(1, k1M));
+        QCOMPARE(m_found.size(), 1);
+    }
+
+    void anEmptyBusIsProbedTwiceAtEachRateBeforeNobodyIsReported()
+    {
+        // Its one servo is at a rate the scan does not cover.
+        startBus(busOptions({{1, QStringLiteral("STS3215"), k115k}}));
+        ScanOptions options;
+        options.lastId = 5;
+        options.bauds = {k1M, k500k};
+        QSignalSpy progress(m_scan.get(), &BusScan::progress);
+        QVERIFY(scan(options));
+        QVERIFY(m_found.isEmpty());
+        QCOMPARE(pingsTo(feetech::kBroadcastId), 4);
+        for (quint8 id = 0; id <= 5; ++id)
+            QCOMPARE(pingsTo(id), 0);
+        // The second look is counted too: progress ends at its own, larger total.
+        QCOMPARE(progress.last().at(0).toInt(), progress.last().at(1).toInt());
+        QCOMPARE(progress.last().at(1).toInt(), 2 * 2 * 6);
+    }
+
     void aThoroughScanAsksEveryIdEvenAtASilentRate()
     {
         startBus(busOptions(testsupport::servosAt(k1M, {u"STS3215"})));

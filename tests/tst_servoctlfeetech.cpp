@@ -150,14 +150,15 @@ private slots:
     void scanTextCoversEveryIdByDefault()
     {
         const auto result = run(QStringLiteral("scan"));
-        QCOMPARE(result.exitCode, 0);
+        QVERIFY2(result.exitCode == 0, qPrintable(result.err));
         const QStringList lines = result.out.trimmed().split(u'\n');
         QCOMPARE(lines.size(), 1 + 3); // header and one row per servo
         // Rows come as servos are found: one asked again after a late answer comes later.
         QCOMPARE(lines.mid(1).filter(QStringLiteral("STS3215")).size(), 2);
         QCOMPARE(lines.mid(1).filter(QStringLiteral("SCS15")).size(), 1);
-        // Every unicast ID was asked at 1 Mbps.
-        QVERIFY(framesReceived().filter(QStringLiteral("FF FF FD 02 01")).size() == 1);
+        // Every unicast ID was asked at 1 Mbps, the last one too (again, if bytes that named
+        // no one came just after its wait: the scan then looks once more).
+        QVERIFY(!framesReceived().filter(QStringLiteral("FF FF FD 02 01")).isEmpty());
     }
 
     void scanOfAllBaudRatesFindsTheSmsAt115200()

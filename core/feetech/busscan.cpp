@@ -23,6 +23,9 @@ struct Tr
 constexpr std::chrono::microseconds kProbeSettle {2000};
 // How much longer than an opening probe the closing broadcast may wait for its answers.
 constexpr int kClosingPatience = 10;
+// How much longer than an opening probe a second look at a rate that seemed silent waits:
+// a busy machine (or adapter) can hold one answer back past the first probe's wait.
+constexpr int kSecondLookPatience = 2;
 // How often one ID may be asked again at one rate: a loaded machine may make a servo late
 // more than once, but a servo that is always too late must not keep the scan going.
 constexpr int kMostRechecks = 4;
@@ -145,6 +148,10 @@ void BusScan::scanBaud(int baudIndex)
         return;
     }
     if (baudIndex >= m_scan->options.bauds.size()) {
+        if (m_scan->found == 0 && !m_scan->secondLook && !m_scan->silentRates.isEmpty()) {
+            lookAgainAtSilentRates();
+            return;
+        }
         end(true, Tr::tr("Scan complete: %n servo(s) found.", nullptr, m_scan->found));
         return;
     }
@@ -176,8 +183,9 @@ void BusScan::probe(int baudIndex, int round)
     // any come at all says there is something to find, and when they come tells how quickly
     // this adapter answers. A second round gives a second measurement, so that one slow first
     // exchange does not set the pace.
+    const auto allowance = std::max(m_bus.timing().probeAllowance, m_bus.scanAllowance());
     broadcastPing(
-        std::max(m_bus.timing().probeAllowance, m_bus.scanAllowance()),
+        m_scan->secondLook ? allowance * kSecondLookPatience : allowance,
         [this, baudIndex, round](const seriallink::TransactionResult &result) {
             if (result.bytesHeard > 0) {
                 m_scan->answeredAtRate = true;
@@ -195,9 +203,24 @@ void BusScan::probe(int baudIndex, int round)
             }
             const int ids = m_scan->options.lastId - m_scan->options.firstId + 1;
             m_scan->done += ids;
+            if (!m_scan->secondLook)
+                m_scan->silentRates.append(m_scan->options.bauds.at(baudIndex));
             emit progress(m_scan->done, m_scan->total, m_scan->options.bauds.at(baudIndex));
             scanBaud(baudIndex + 1);
         });
+}
+
+void BusScan::lookAgainAtSilentRates()
+{
+    // Nobody answered anywhere: before saying so, each rate whose broadcast PING went
+    // unanswered gets one more, longer one. It costs a moment only when the scan found nobody,
+    // and a servo whose first answer a busy machine held back is not reported missing.
+    m_scan->secondLook = true;
+    m_scan->options.bauds = m_scan->silentRates;
+    const int ids = m_scan->options.lastId - m_scan->options.firstId + 1;
+    m_scan->total += ids * int(m_scan->silentRates.size());
+    m_scan->silentRates.clear();
+    scanBaud(0);
 }
 
 void BusScan::broadcastPing(std::chrono::microseconds wait,

@@ -45,6 +45,7 @@ signals:
 private:
     void scanBaud(int baudIndex);
     void probe(int baudIndex, int round);
+    void lookAgainAtSilentRates();
     void scanId(int baudIndex, int id);
     void closeSweep(int baudIndex);
     void recheck(int baudIndex);
@@ -82,6 +83,10 @@ private:
         // The IDs of this rate that stayed silent, with when their wait ended (m_clock, µs).
         std::deque<std::pair<int, qint64>> silent;
         ScanPace pace; // across rates: what the link adds beyond the wire does not change
+        // Rates skipped because nothing answered their broadcast PING, and whether they are
+        // being looked at again (once, patiently, when the whole scan found nobody).
+        QVector<qint32> silentRates;
+        bool secondLook = false;
     };
 
     BusExchange &m_bus;
