@@ -1,12 +1,13 @@
 // The health report as HTML and JSON, written through QSaveFile.
 #include "feetech/healthreport.h"
 
+#include "util/savefile.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QLocale>
-#include <QSaveFile>
 
 namespace feetech {
 
@@ -125,12 +126,12 @@ bool saveHealthReport(const QString &path, ReportFormat format, const HealthRepo
                          .arg(QDir::toNativeSeparators(path), reason);
         return false;
     };
-    QSaveFile file(path);
+    util::SavingFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return fail(file.errorString());
     const QByteArray bytes =
         format == ReportFormat::Json ? healthReportJson(report) : healthReportHtml(report).toUtf8();
-    if (file.write(bytes) != bytes.size())
+    if (file.device().write(bytes) != bytes.size())
         return fail(file.errorString());
     if (!file.commit())
         return fail(file.errorString());

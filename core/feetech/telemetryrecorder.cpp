@@ -3,6 +3,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalBlocker>
 #include <QTextStream>
 #include <QTimer>
@@ -145,8 +146,13 @@ bool TelemetryRecorder::flush()
 void TelemetryRecorder::fail(const QString &reason)
 {
     m_error = reason;
+    const bool ownFile = m_file != nullptr;
     close();
-    emit failed(reason);
+    // A regular file only: a pipe or a device named as the target stays.
+    if (ownFile && QFileInfo(m_path).isFile() && QFile::remove(m_path))
+        m_error = tr("%1; the incomplete file %2 was removed.")
+                      .arg(reason, QDir::toNativeSeparators(m_path));
+    emit failed(m_error);
 }
 
 void TelemetryRecorder::close()

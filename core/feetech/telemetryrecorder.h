@@ -20,6 +20,9 @@ namespace feetech {
 // Rows are buffered and written out every flushInterval() (or by flush()): a recording at full
 // bus speed must not cost a write() per sample, yet a crash should lose at most half a second.
 // The first failure to write ends the recording: failed() says why, and nothing more is written.
+// A file it opened is then removed, so a full disk leaves no partial recording. It is written
+// straight to its name, not through QSaveFile, whose unnamed temporary file (O_TMPFILE on
+// Linux) would lose a whole recording to a crash.
 class TelemetryRecorder : public QObject
 {
     Q_OBJECT

@@ -2,10 +2,10 @@
 #include "link/packetlogmodel.h"
 
 #include "util/hex.h"
+#include "util/savefile.h"
 
 #include <QDateTime>
 #include <QIODevice>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <iterator>
@@ -171,15 +171,15 @@ bool PacketLogModel::exportTo(QIODevice &device, QString *error)
 bool PacketLogModel::exportToFile(const QString &path, QString *error)
 {
     // QSaveFile: an export that fails half-way never leaves a truncated file behind.
-    QSaveFile file(path);
+    util::SavingFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
         if (error)
             *error = tr("Cannot write %1: %2").arg(path, file.errorString());
         return false;
     }
     QString why;
-    if (!exportTo(file, &why)) {
-        file.cancelWriting();
+    if (!exportTo(file.device(), &why)) {
+        file.cancel();
         if (error)
             *error = tr("Cannot write %1: %2").arg(path, why);
         return false;

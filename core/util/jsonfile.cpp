@@ -1,13 +1,14 @@
 // Reading, checking and saving the JSON files that profiles and poses are kept in.
 #include "util/jsonfile.h"
 
+#include "util/savefile.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonParseError>
 #include <QJsonValue>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -45,14 +46,14 @@ std::optional<QByteArray> readFile(const QString &path, qint64 maxBytes, const Q
 
 bool writeFileAtomically(const QString &path, const QByteArray &data, QString *why)
 {
-    QSaveFile file(path);
+    SavingFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         *why = file.errorString();
         return false;
     }
-    if (file.write(data) != data.size()) {
+    if (file.device().write(data) != data.size()) {
         *why = file.errorString();
-        file.cancelWriting();
+        file.cancel();
         return false;
     }
     if (!file.commit()) {
