@@ -1,8 +1,11 @@
 // servoctl feetech against a simulated mixed bus over a pty: output, JSON, exit codes, and that
 // refused commands write nothing.
+#include "hostilefiles.h"
+#include "samplefiles.h"
 #include "servoctlrun.h"
 #include "simclient.h"
 
+#include "feetech/robottemplate.h"
 #include "feetech/servoparameters.h"
 #include "feetech/telemetry.h"
 #include "profile/profile.h"
@@ -283,6 +286,73 @@ private slots:
         QTest::newRow("missing profile") << QStringLiteral("load --id 1 /nonexistent/p.json");
         QTest::newRow("backup folder missing")
             << QStringLiteral("factory-reset --id 1 --backup /nonexistent/b.json");
+        // Every way a file can be bad, for each command that reads one.
+        const QString robot = m_dir.filePath(QStringLiteral("robot.json"));
+        const QString calibration = m_dir.filePath(QStringLiteral("calibration.json"));
+        QString error;
+        QVERIFY(feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(), robot,
+                                           &error));
+        QVERIFY(feetech::saveLeRobotCalibration(testsupport::sampleCalibration(), calibration,
+                                                &error));
+        const struct
+        {
+            QString command;
+            QString good;
+        } readers[] = {{QStringLiteral("load --id 1"), robot},
+                       {QStringLiteral("load --ids 1,2"), robot},
+                       {QStringLiteral("calibration load"), calibration}};
+        for (const auto &reader : readers) {
+            QFile file(reader.good);
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            const QString folder = m_dir.filePath(QString(reader.command).replace(u' ', u'_'));
+            for (const auto &bad : testsupport::writeHostileFiles(
+                     folder, QFileInfo(reader.good).fileName(), file.readAll())) {
+                QTest::newRow(qPrintable(reader.command + QStringLiteral(", ") + bad.kind))
+                    << reader.command + u' ' + bad.path;
+            }
+        }
+    }
+
+    void everyCommandWithMalformedArgumentsExitsTwoAndWritesNothing()
+    {
+        // Each command, each way its arguments can be wrong: exit 2 and one line saying why.
+        const QStringList commands = {
+            QStringLiteral("scan"),           QStringLiteral("ping"),
+            QStringLiteral("read"),           QStringLiteral("get"),
+            QStringLiteral("set"),            QStringLiteral("save"),
+            QStringLiteral("load"),           QStringLiteral("set-id"),
+            QStringLiteral("set-baud"),       QStringLiteral("calibrate-middle"),
+            QStringLiteral("factory-reset"),  QStringLiteral("reboot"),
+            QStringLiteral("recover"),        QStringLiteral("setup-motor"),
+            QStringLiteral("monitor"),        QStringLiteral("identify"),
+            QStringLiteral("health"),         QStringLiteral("calibrate"),
+            QStringLiteral("calibration")};
+        const QStringList malformed = {
+            QStringLiteral("--bogus 1"),       QStringLiteral("--id abc"),
+            QStringLiteral("--id 999"),        QStringLiteral("--id -1"),
+            QStringLiteral("--id 1.5"),        QStringLiteral("--ids 1,,2"),
+            QStringLiteral("--ids 3-1"),       QStringLiteral("--ids 1-999999999999"),
+            QStringLiteral("--id 1 --id 2 x y z"), QStringLiteral("--id"),
+            QStringLiteral("--rate nan"),      QStringLiteral("--duration -5"),
+            QStringLiteral("--baud 12abc"),    QStringLiteral("--id 1 --baud 0")};
+        QStringList wrong;
+        for (const QString &command : commands) {
+            for (const QString &arguments : malformed) {
+                const QString line = command + u' ' + arguments;
+                const auto result = run(line);
+                if (result.exitCode != 2 || result.err.count(u'\n') != 1
+                    || !result.err.startsWith(u"servoctl: ")) {
+                    wrong.append(QStringLiteral("%1: exit %2, %3")
+                                     .arg(line)
+                                     .arg(result.exitCode)
+                                     .arg(result.err.trimmed()));
+                }
+            }
+        }
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join(u'\n')));
+        QCOMPARE(writesReceived(), 0);
+        for (const quint8 instruction : instructionsReceived())
+            QVERIFY(instruction == 0x01 || instruction == 0x02);
     }
 
     void badKeysAndValuesExitTwoWithoutWriting()

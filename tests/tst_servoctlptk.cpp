@@ -138,6 +138,33 @@ private slots:
         QCOMPARE(framesReceived(), 0);
     }
 
+    void everyCommandWithMalformedArgumentsExitsTwoAndSendsNothing()
+    {
+        const QStringList commands = {QStringLiteral("read"), QStringLiteral("write gain=3"),
+                                      QStringLiteral("save"), QStringLiteral("load"),
+                                      QStringLiteral("monitor")};
+        const QStringList malformed = {
+            QStringLiteral("--bogus 1"),      QStringLiteral("--id 1"),
+            QStringLiteral("--rate nan"),     QStringLiteral("--interval -5"),
+            QStringLiteral("--duration x"),   QStringLiteral("--echo"),
+            QStringLiteral("--echo on --echo off"), QStringLiteral("--ids 1-3"),
+            QStringLiteral("--json=yes"),     QStringLiteral("a.json b.json c.json")};
+        QStringList wrong;
+        for (const QString &command : commands) {
+            for (const QString &arguments : malformed) {
+                const QString line = QStringLiteral("ptk ") + command + u' ' + arguments;
+                const auto result = runServoctl(device(line.split(u' ')));
+                if (result.exitCode != 2 || result.err.count(u'\n') != 1)
+                    wrong.append(QStringLiteral("%1: exit %2, %3")
+                                     .arg(line)
+                                     .arg(result.exitCode)
+                                     .arg(result.err.trimmed()));
+            }
+        }
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join(u'\n')));
+        QCOMPARE(framesReceived(), 0);
+    }
+
     void anInvalidProfileIsRefusedBeforeAnythingIsSent()
     {
         const QString path = m_dir.filePath(QStringLiteral("bad.json"));

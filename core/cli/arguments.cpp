@@ -42,6 +42,9 @@ Arguments::Arguments(const QStringList &raw, const QSet<QString> &valueOptions,
                     throw UsageError {Tr::tr("--%1 needs a value").arg(name)};
                 value = raw.at(++i);
             }
+            // "--id 1 --id 2": which one was meant is not for servoctl to guess.
+            if (m_values.contains(name))
+                throw UsageError {Tr::tr("--%1 is given twice").arg(name)};
             m_values.insert(name, value);
         } else {
             throw UsageError {Tr::tr("unknown option --%1").arg(name)};
@@ -94,7 +97,13 @@ QVector<quint8> idList(const QString &text, int maximumId)
             throw UsageError {Tr::tr("--ids: ID %1 is over %2").arg(*value).arg(maximumId)};
         return int(*value);
     };
-    for (const QString &part : text.split(u',', Qt::SkipEmptyParts)) {
+    const QStringList parts = text.split(u',');
+    for (const QString &part : parts) {
+        // "1,,2" or a trailing comma is a slip the user should see, not one to guess past.
+        if (part.trimmed().isEmpty() && parts.size() > 1)
+            throw UsageError {Tr::tr("--ids: \"%1\" has an empty place between commas").arg(text)};
+        if (part.trimmed().isEmpty())
+            continue;
         const int dash = part.indexOf(u'-', 1);
         if (dash > 0) {
             const int first = parseId(part.left(dash));

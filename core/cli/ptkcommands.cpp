@@ -204,6 +204,14 @@ public:
         const QStringList operands = rest.mid(1);
         if (m_args.has(QStringLiteral("rate")))
             throw UsageError {Tr::tr("ptk takes no --rate: the servo is polled every 50 ms")};
+        // A Feetech option (--id, --ids, --settings...) means the wrong servo family was named:
+        // nothing is sent on a guess.
+        static const QStringList kPtkOptions {QStringLiteral("port"), QStringLiteral("baud"),
+                                              QStringLiteral("echo"), QStringLiteral("duration")};
+        for (const QString &name : m_args.valueNames()) {
+            if (!kPtkOptions.contains(name))
+                throw UsageError {Tr::tr("ptk takes no --%1").arg(name)};
+        }
         if (command != QLatin1String("monitor")) {
             if (m_args.has(QStringLiteral("duration")))
                 throw UsageError {Tr::tr("only ptk monitor takes --duration")};

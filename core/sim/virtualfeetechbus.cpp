@@ -2,12 +2,14 @@
 // broadcast, SYNC READ / SYNC WRITE, collisions, reboot silence and the EEPROM state file.
 #include "sim/virtualfeetechbus.h"
 
+#include "util/jsonfile.h"
+#include "util/savefile.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QSet>
 
 #include <algorithm>
@@ -448,13 +450,13 @@ QByteArray VirtualFeetechBus::stateJson() const
 
 bool VirtualFeetechBus::saveState(const QString &path, QString *error) const
 {
-    QSaveFile file(path);
+    util::SavingFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         if (error)
             *error = Tr::tr("cannot write the state file %1: %2").arg(path, file.errorString());
         return false;
     }
-    file.write(stateJson());
+    file.device().write(stateJson());
     if (!file.commit()) {
         if (error)
             *error = Tr::tr("cannot write the state file %1: %2").arg(path, file.errorString());
@@ -465,13 +467,17 @@ bool VirtualFeetechBus::saveState(const QString &path, QString *error) const
 
 bool VirtualFeetechBus::loadState(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    // A whole bus of 253 servos saves to well under this: anything larger is another file.
+    constexpr qint64 kMaxStateBytes = 16 * 1024 * 1024;
+    QString why;
+    const auto json = util::readFile(path, kMaxStateBytes,
+                                     Tr::tr("larger than any state file (over 16 MB)"), &why);
+    if (!json) {
         if (error)
-            *error = Tr::tr("state file %1: %2").arg(path, file.errorString());
+            *error = Tr::tr("state file %1: %2").arg(path, why);
         return false;
     }
-    return loadStateJson(file.readAll(), path, error);
+    return loadStateJson(*json, path, error);
 }
 
 bool VirtualFeetechBus::loadStateJson(const QByteArray &json, const QString &path, QString *error)
