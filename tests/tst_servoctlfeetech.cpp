@@ -313,6 +313,21 @@ private slots:
         }
     }
 
+    void aServoLeftUnlockedIsNamedInAWarning()
+    {
+        auto result = run(QStringLiteral("get --id 1 max_temperature"));
+        QCOMPARE(result.exitCode, 0);
+        QVERIFY2(result.err.isEmpty(), qPrintable(result.err)); // locked, as servos power on
+        setServoValue(1, QStringLiteral("lock"), 0); // a write cut short before its relock
+        result = run(QStringLiteral("get --id 1 max_temperature"));
+        QCOMPARE(result.exitCode, 0);
+        QVERIFY2(result.err.contains(QStringLiteral("servo 1's EEPROM is unlocked")),
+                 qPrintable(result.err));
+        QCOMPARE(result.err.count(u'\n'), 1);
+        QVERIFY(!result.out.isEmpty()); // and the command still did its work
+        QCOMPARE(writesReceived(), 0); // nothing is locked behind the user's back
+    }
+
     void everyCommandWithMalformedArgumentsExitsTwoAndWritesNothing()
     {
         // Each command, each way its arguments can be wrong: exit 2 and one line saying why.

@@ -53,6 +53,8 @@ private:
     static void checkFolder(const QString &path);
     // The servo --id at --baud; nothing, once the failure is printed, when it cannot be reached.
     std::optional<Target> identifyServo(const QString &what);
+    // A warning on stderr when the servo's EEPROM lock was found open.
+    void warnIfUnlocked(Target &target);
     // The same, refusing a servo of a model no table describes with `unknownModel` (%1: its ID,
     // %2: its model).
     std::optional<Target> identifyKnownServo(const QString &what, const QString &unknownModel);

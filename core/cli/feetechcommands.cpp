@@ -148,7 +148,32 @@ std::optional<FeetechCommand::Target> FeetechCommand::identifyServo(const QStrin
         return std::nullopt;
     }
     target.servo = *servo;
+    warnIfUnlocked(target);
     return target;
+}
+
+void FeetechCommand::warnIfUnlocked(Target &target)
+{
+    // A servo whose EEPROM lock is open (a write cut short, another tool that unlocks with
+    // torque off) keeps whatever anything writes into its EEPROM: the user should know before
+    // the command does anything. A servo that does not answer this read is left to the command.
+    const ServoInfo &servo = target.servo;
+    const feetech::Register *lock = servo.hasTable() ? servo.table().find(u"lock") : nullptr;
+    if (!lock)
+        return;
+    const auto memory = target.device->read(servo, {{lock->address, lock->size}});
+    if (!memory)
+        return;
+    const qint32 value = valuesByKey(decodeMemory(servo.table(), *memory)).value(lock->key, 1);
+    if (value != 0)
+        return;
+    m_output.err << "servoctl: "
+                 << Tr::tr("warning: servo %1's EEPROM is unlocked (lock = 0): a setting written "
+                           "to it now survives a power cut. servoctl locks it again after each "
+                           "of its own EEPROM writes (set, load, set-id...).")
+                        .arg(servo.id)
+                 << '\n';
+    m_output.err.flush();
 }
 
 std::optional<FeetechCommand::Target>
