@@ -27,18 +27,24 @@ namespace {
 class FullDisk
 {
 public:
-    FullDisk()
+    // `room`: the size no file may grow past (0: no write at all succeeds).
+    explicit FullDisk(rlim_t room = 0)
     {
-        std::signal(SIGXFSZ, SIG_IGN);
+        m_signal = std::signal(SIGXFSZ, SIG_IGN);
         getrlimit(RLIMIT_FSIZE, &m_saved);
         rlimit none = m_saved;
-        none.rlim_cur = 0;
+        none.rlim_cur = room;
         setrlimit(RLIMIT_FSIZE, &none);
     }
-    ~FullDisk() { setrlimit(RLIMIT_FSIZE, &m_saved); }
+    ~FullDisk()
+    {
+        setrlimit(RLIMIT_FSIZE, &m_saved);
+        std::signal(SIGXFSZ, m_signal);
+    }
 
 private:
     rlimit m_saved {};
+    void (*m_signal)(int) = SIG_DFL;
 };
 
 feetech::HealthReport healthReport()
@@ -193,18 +199,48 @@ private slots:
 
     void aDeviceNamedAsTheTargetStaysADevice()
     {
-        // Saved to /dev/full, a file fails for want of room; the device node is not replaced
-        // by a finished copy renamed over it (as root could).
+        // Saved to /dev/full (through a link of its own, so that a regression replaces the
+        // link, never the machine's device), a file fails for want of room; the device is
+        // written directly, not replaced by a finished copy renamed over it (as root could).
         if (!QFileInfo::exists(QStringLiteral("/dev/full")))
             QSKIP("needs /dev/full");
-        feetech::Pose pose;
-        pose.servos = {{1, 1000000, 2048}};
+        const QString link = m_dir.filePath(QStringLiteral("full-device"));
+        QVERIFY(QFile::link(QStringLiteral("/dev/full"), link));
         QString error;
-        QVERIFY(!feetech::savePose(QStringLiteral("/dev/full"), pose, &error));
+        QVERIFY(!feetech::savePose(link, testsupport::samplePose(), &error));
         QVERIFY(!error.isEmpty());
-        const QFileInfo device(QStringLiteral("/dev/full"));
-        QVERIFY(!device.isFile());
-        QVERIFY(device.exists());
+        const QFileInfo device(link);
+        QVERIFY(device.isSymLink());
+        QVERIFY(device.exists() && !device.isFile());
+    }
+
+    void aRecordingCutShortByAFullDiskKeepsItsWholeRows()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("cut-short.csv"));
+        feetech::TelemetryRecorder recorder;
+        recorder.setFlushInterval(0);
+        QVERIFY(recorder.open(path));
+        feetech::FeedbackSample sample;
+        sample.id = 1;
+        sample.steadyUs = recorder.startUs();
+        for (int row = 0; row < 3; ++row)
+            recorder.write(sample);
+        QVERIFY(recorder.flush());
+        const qint64 whole = QFileInfo(path).size();
+        for (int row = 0; row < 500; ++row) // far more than the room left
+            recorder.write(sample);
+        bool finished = true;
+        {
+            const FullDisk full(rlim_t(whole + 40)); // room for part of a row
+            finished = recorder.finish();
+        }
+        QVERIFY(!finished);
+        QVERIFY2(recorder.errorString().contains(QStringLiteral("3 row")),
+                 qPrintable(recorder.errorString()));
+        QCOMPARE(QFileInfo(path).size(), whole);
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.readAll().count('\n'), 1 + 3); // the header and three whole rows
     }
 
 private:

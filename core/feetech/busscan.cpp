@@ -203,8 +203,10 @@ void BusScan::probe(int baudIndex, int round)
             }
             const int ids = m_scan->options.lastId - m_scan->options.firstId + 1;
             m_scan->done += ids;
-            if (!m_scan->secondLook)
-                m_scan->silentRates.append(m_scan->options.bauds.at(baudIndex));
+            // Only a Feetech rate can be set again: a port's own other rate is left as it was.
+            const qint32 baud = m_scan->options.bauds.at(baudIndex);
+            if (!m_scan->secondLook && feetech::baudCode(baud))
+                m_scan->silentRates.append(baud);
             emit progress(m_scan->done, m_scan->total, m_scan->options.bauds.at(baudIndex));
             scanBaud(baudIndex + 1);
         });

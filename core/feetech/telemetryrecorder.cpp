@@ -79,6 +79,8 @@ bool TelemetryRecorder::begin(QTextStream *stream, QString *error)
 {
     m_stream = stream;
     m_rows = 0;
+    m_wholeBytes = 0;
+    m_wholeRows = 0;
     m_startUs = steadyMicroseconds();
     m_error.clear();
     *m_stream << telemetryCsvHeader() << '\n';
@@ -140,6 +142,10 @@ bool TelemetryRecorder::flush()
         fail(m_device ? m_device->errorString() : tr("The telemetry output cannot be written."));
         return false;
     }
+    if (m_file) { // everything up to here is on the disk, whole
+        m_wholeBytes = m_file->size();
+        m_wholeRows = m_rows;
+    }
     return true;
 }
 
@@ -148,10 +154,18 @@ void TelemetryRecorder::fail(const QString &reason)
     m_error = reason;
     const bool ownFile = m_file != nullptr;
     close();
-    // A regular file only: a pipe or a device named as the target stays.
-    if (ownFile && QFileInfo(m_path).isFile() && QFile::remove(m_path))
-        m_error = tr("%1; the incomplete file %2 was removed.")
-                      .arg(reason, QDir::toNativeSeparators(m_path));
+    // A regular file only: a pipe or a device named as the target stays. Hours of rows are
+    // not thrown away for their last half second: the file is cut back to the rows that were
+    // written whole (shrinking needs no room on the disk), or removed if there were none.
+    const QString path = QDir::toNativeSeparators(m_path);
+    if (ownFile && QFileInfo(m_path).isFile()) {
+        if (m_wholeRows > 0 && QFile::resize(m_path, m_wholeBytes))
+            m_error = tr("%1; the %n row(s) written before it are kept whole in %2.", nullptr,
+                         int(m_wholeRows))
+                          .arg(reason, path);
+        else if (QFile::remove(m_path))
+            m_error = tr("%1; the incomplete file %2 was removed.").arg(reason, path);
+    }
     emit failed(m_error);
 }
 

@@ -20,9 +20,10 @@ namespace feetech {
 // Rows are buffered and written out every flushInterval() (or by flush()): a recording at full
 // bus speed must not cost a write() per sample, yet a crash should lose at most half a second.
 // The first failure to write ends the recording: failed() says why, and nothing more is written.
-// A file it opened is then removed, so a full disk leaves no partial recording. It is written
-// straight to its name, not through QSaveFile, whose unnamed temporary file (O_TMPFILE on
-// Linux) would lose a whole recording to a crash.
+// A file it opened is then cut back to the rows flushed whole before (removed when there were
+// none), so a full disk leaves no half-written row. It is written straight to its name, not
+// through QSaveFile, whose unnamed temporary file (O_TMPFILE on Linux) would lose a whole
+// recording to a crash.
 class TelemetryRecorder : public QObject
 {
     Q_OBJECT
@@ -83,6 +84,8 @@ private:
     QTimer *m_flushTimer = nullptr;
     int m_flushIntervalMs = kDefaultFlushIntervalMs;
     qint64 m_rows = 0;
+    qint64 m_wholeBytes = 0; // of a file it opened: the size at the last successful flush
+    qint64 m_wholeRows = 0; // the rows in those bytes
     qint64 m_startUs = 0;
     QString m_error;
 };

@@ -12,6 +12,7 @@ namespace util {
 // only at commit(), so a failed save (a read-only folder, a full disk) leaves the old file
 // untouched and no partial one. A path that names a device or a pipe (/dev/stdout, a FIFO) is
 // written directly: renaming a finished file over it would replace the device node itself.
+// (Opening a FIFO that nobody reads waits for a reader, as any program writing to it would.)
 class SavingFile
 {
 public:
