@@ -28,7 +28,8 @@ inline QByteArray withFirstNumber(const QByteArray &good, const QByteArray &repl
     if (!match.hasMatch())
         return good + replacement; // no number: the replacement spoils the end instead
     QString spoiled = text;
-    spoiled.replace(match.capturedStart(1), match.capturedLength(1), QString::fromUtf8(replacement));
+    spoiled.replace(match.capturedStart(1), match.capturedLength(1),
+                    QString::fromUtf8(replacement));
     return spoiled.toUtf8();
 }
 
@@ -41,8 +42,8 @@ inline QVector<HostileFile> writeHostileFiles(const QString &folder, const QStri
     for (int i = 3; i < garbled.size(); i += 7)
         garbled[i] = char(garbled.at(i) ^ 0x5A);
     const int depth = 100000;
-    const QByteArray nested = "{\"format\": " + QByteArray(depth, '[') + QByteArray(depth, ']')
-        + "}";
+    const QByteArray nested =
+        "{\"format\": " + QByteArray(depth, '[') + QByteArray(depth, ']') + "}";
     const QVector<std::pair<QString, QByteArray>> variants = {
         {QStringLiteral("empty"), QByteArray()},
         {QStringLiteral("truncated"), good.left(good.size() / 2)},

@@ -45,8 +45,7 @@ private:
         const QString folder = m_dir.filePath(format).replace(u' ', u'-');
         for (const testsupport::HostileFile &bad :
              testsupport::writeHostileFiles(folder, name, file.readAll())) {
-            QTest::newRow(qPrintable(format + QStringLiteral(", ") + bad.kind))
-                << bad.path << read;
+            QTest::newRow(qPrintable(format + QStringLiteral(", ") + bad.kind)) << bad.path << read;
         }
     }
 

@@ -107,21 +107,19 @@ private slots:
                                         return profile::save(path, testsupport::samplePtkProfile(),
                                                              ptk::modelDefinitions(), error);
                                     });
-        QTest::newRow("pose") << QStringLiteral("arm.sbpose")
-                              << Save([](const QString &path, QString *error) {
-                                     return feetech::savePose(path, testsupport::samplePose(),
-                                                              error);
-                                 });
+        QTest::newRow("pose") << QStringLiteral(
+            "arm.sbpose") << Save([](const QString &path, QString *error) {
+            return feetech::savePose(path, testsupport::samplePose(), error);
+        });
         QTest::newRow("robot template")
             << QStringLiteral("arm.sbrobot") << Save([](const QString &path, QString *error) {
-                   return feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(),
-                                                     path, error);
+                   return feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(), path,
+                                                     error);
                });
-        QTest::newRow("calibration")
-            << QStringLiteral("arm.json") << Save([](const QString &path, QString *error) {
-                   return feetech::saveLeRobotCalibration(testsupport::sampleCalibration(),
-                                                          path, error);
-               });
+        QTest::newRow("calibration") << QStringLiteral(
+            "arm.json") << Save([](const QString &path, QString *error) {
+            return feetech::saveLeRobotCalibration(testsupport::sampleCalibration(), path, error);
+        });
         QTest::newRow("health report json")
             << QStringLiteral("health.json") << Save([](const QString &path, QString *error) {
                    return feetech::saveHealthReport(path, feetech::ReportFormat::Json,
@@ -132,12 +130,12 @@ private slots:
                    return feetech::saveHealthReport(path, feetech::ReportFormat::Html,
                                                     healthReport(), error);
                });
-        QTest::newRow("packet log") << QStringLiteral("packets.tsv")
-                                    << Save([](const QString &path, QString *error) {
-                                           seriallink::PacketLogModel log;
-                                           log.append(testsupport::logEntry(0));
-                                           return log.exportToFile(path, error);
-                                       });
+        QTest::newRow("packet log")
+            << QStringLiteral("packets.tsv") << Save([](const QString &path, QString *error) {
+                   seriallink::PacketLogModel log;
+                   log.append(testsupport::logEntry(0));
+                   return log.exportToFile(path, error);
+               });
         QTest::newRow("simulator state")
             << QStringLiteral("bus.json") << Save([](const QString &path, QString *error) {
                    sim::VirtualFeetechBus bus({{1, QStringLiteral("STS3215"), 0}});

@@ -290,10 +290,10 @@ private slots:
         const QString robot = m_dir.filePath(QStringLiteral("robot.json"));
         const QString calibration = m_dir.filePath(QStringLiteral("calibration.json"));
         QString error;
-        QVERIFY(feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(), robot,
-                                           &error));
-        QVERIFY(feetech::saveLeRobotCalibration(testsupport::sampleCalibration(), calibration,
-                                                &error));
+        QVERIFY(
+            feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(), robot, &error));
+        QVERIFY(
+            feetech::saveLeRobotCalibration(testsupport::sampleCalibration(), calibration, &error));
         const struct
         {
             QString command;
@@ -332,24 +332,30 @@ private slots:
     {
         // Each command, each way its arguments can be wrong: exit 2 and one line saying why.
         const QStringList commands = {
-            QStringLiteral("scan"),           QStringLiteral("ping"),
-            QStringLiteral("read"),           QStringLiteral("get"),
-            QStringLiteral("set"),            QStringLiteral("save"),
-            QStringLiteral("load"),           QStringLiteral("set-id"),
-            QStringLiteral("set-baud"),       QStringLiteral("calibrate-middle"),
-            QStringLiteral("factory-reset"),  QStringLiteral("reboot"),
-            QStringLiteral("recover"),        QStringLiteral("setup-motor"),
-            QStringLiteral("monitor"),        QStringLiteral("identify"),
-            QStringLiteral("health"),         QStringLiteral("calibrate"),
+            QStringLiteral("scan"),          QStringLiteral("ping"),
+            QStringLiteral("read"),          QStringLiteral("get"),
+            QStringLiteral("set"),           QStringLiteral("save"),
+            QStringLiteral("load"),          QStringLiteral("set-id"),
+            QStringLiteral("set-baud"),      QStringLiteral("calibrate-middle"),
+            QStringLiteral("factory-reset"), QStringLiteral("reboot"),
+            QStringLiteral("recover"),       QStringLiteral("setup-motor"),
+            QStringLiteral("monitor"),       QStringLiteral("identify"),
+            QStringLiteral("health"),        QStringLiteral("calibrate"),
             QStringLiteral("calibration")};
-        const QStringList malformed = {
-            QStringLiteral("--bogus 1"),       QStringLiteral("--id abc"),
-            QStringLiteral("--id 999"),        QStringLiteral("--id -1"),
-            QStringLiteral("--id 1.5"),        QStringLiteral("--ids 1,,2"),
-            QStringLiteral("--ids 3-1"),       QStringLiteral("--ids 1-999999999999"),
-            QStringLiteral("--id 1 --id 2 x y z"), QStringLiteral("--id"),
-            QStringLiteral("--rate nan"),      QStringLiteral("--duration -5"),
-            QStringLiteral("--baud 12abc"),    QStringLiteral("--id 1 --baud 0")};
+        const QStringList malformed = {QStringLiteral("--bogus 1"),
+                                       QStringLiteral("--id abc"),
+                                       QStringLiteral("--id 999"),
+                                       QStringLiteral("--id -1"),
+                                       QStringLiteral("--id 1.5"),
+                                       QStringLiteral("--ids 1,,2"),
+                                       QStringLiteral("--ids 3-1"),
+                                       QStringLiteral("--ids 1-999999999999"),
+                                       QStringLiteral("--id 1 --id 2 x y z"),
+                                       QStringLiteral("--id"),
+                                       QStringLiteral("--rate nan"),
+                                       QStringLiteral("--duration -5"),
+                                       QStringLiteral("--baud 12abc"),
+                                       QStringLiteral("--id 1 --baud 0")};
         QStringList wrong;
         for (const QString &command : commands) {
             for (const QString &arguments : malformed) {

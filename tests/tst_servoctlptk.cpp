@@ -143,12 +143,16 @@ private slots:
         const QStringList commands = {QStringLiteral("read"), QStringLiteral("write gain=3"),
                                       QStringLiteral("save"), QStringLiteral("load"),
                                       QStringLiteral("monitor")};
-        const QStringList malformed = {
-            QStringLiteral("--bogus 1"),      QStringLiteral("--id 1"),
-            QStringLiteral("--rate nan"),     QStringLiteral("--interval -5"),
-            QStringLiteral("--duration x"),   QStringLiteral("--echo"),
-            QStringLiteral("--echo on --echo off"), QStringLiteral("--ids 1-3"),
-            QStringLiteral("--json=yes"),     QStringLiteral("a.json b.json c.json")};
+        const QStringList malformed = {QStringLiteral("--bogus 1"),
+                                       QStringLiteral("--id 1"),
+                                       QStringLiteral("--rate nan"),
+                                       QStringLiteral("--interval -5"),
+                                       QStringLiteral("--duration x"),
+                                       QStringLiteral("--echo"),
+                                       QStringLiteral("--echo on --echo off"),
+                                       QStringLiteral("--ids 1-3"),
+                                       QStringLiteral("--json=yes"),
+                                       QStringLiteral("a.json b.json c.json")};
         QStringList wrong;
         for (const QString &command : commands) {
             for (const QString &arguments : malformed) {

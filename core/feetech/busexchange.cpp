@@ -1,6 +1,9 @@
 // Feetech bus steps: exchanges with a decoded answer, locked writes, reads, pings, relocking.
 #include "feetech/busexchange.h"
 
+#include "feetech/feetechvalue.h"
+#include "feetech/servoparameters.h"
+
 #include "link/linksession.h"
 #include "link/transport.h"
 
@@ -279,6 +282,42 @@ Step BusExchange::instruction(quint8 id, const QByteArray &request, bool expectR
                      else
                          next(true, {});
                  });
+    };
+}
+
+std::vector<Step>
+BusExchange::readValues(std::shared_ptr<ServoInfo> servo, const QStringList &keys,
+                        std::function<void(const QString &key, qint32 value)> seen)
+{
+    std::vector<Step> steps;
+    const RegisterTable &table = servo->table();
+    for (const QString &key : keys) {
+        const Register *reg = table.find(key);
+        if (!reg)
+            continue;
+        const ValueFormat format = table.format(*reg);
+        steps.push_back(read(servo, reg->address, reg->size, ReadSource::ReadBack,
+                             [seen, key, format](const QByteArray &bytes) {
+                                 seen(key, decodeValue(bytes, format));
+                             }));
+    }
+    return steps;
+}
+
+Step BusExchange::writeValue(std::shared_ptr<ServoInfo> servo, const QString &key, qint32 value,
+                             std::function<void()> sending)
+{
+    QString error;
+    const auto writes = encodeWrites(servo->table(), {{key, value}}, &error);
+    if (!writes || writes->size() != 1)
+        return [error](StepDone next) {
+            next(false, error);
+        };
+    const RegisterWrite registerWrite = writes->first();
+    return [this, servo, registerWrite, key, sending](StepDone next) {
+        sending();
+        write(servo->id, registerWrite.address, registerWrite.bytes, servo->repliesToWrites(),
+              Tr::tr("Writing %1").arg(key))(next);
     };
 }
 

@@ -91,6 +91,14 @@ public:
     // request and its turnaround. A servo that does not answer such a READ is read block by
     // block, then and from then on. memoryRead comes once per block either way.
     Step readBlocks(std::shared_ptr<ServoInfo> servo, QVector<Block> blocks, ReadSource source);
+    // One read-back READ per key the servo's table has (the others are skipped); `seen` hears
+    // each key's value in register units.
+    std::vector<Step> readValues(std::shared_ptr<ServoInfo> servo, const QStringList &keys,
+                                 std::function<void(const QString &key, qint32 value)> seen);
+    // A write of one register by key, in register units; `sending` is called as it goes out
+    // (from then on the servo may hold it). Fails at once when the table refuses the value.
+    Step writeValue(std::shared_ptr<ServoInfo> servo, const QString &key, qint32 value,
+                    std::function<void()> sending);
     Step identify(std::shared_ptr<ServoInfo> servo); // fills in what addresses 0-8 say
     // mustAnswer: fails when the ID is silent; otherwise fails when it answers (ID in use).
     Step ping(quint8 id, bool mustAnswer, int retries);

@@ -51,35 +51,13 @@ HealthMoveTest::HealthMoveTest(BusExchange &bus, QObject *parent)
 
 std::vector<Step> HealthMoveTest::readSteps(std::shared_ptr<Run> run, const QStringList &keys)
 {
-    std::vector<Step> steps;
-    const RegisterTable &table = run->servo->table();
-    for (const QString &key : keys) {
-        const Register *reg = table.find(key);
-        if (!reg)
-            continue;
-        const ValueFormat format = table.format(*reg);
-        steps.push_back(m_bus.read(run->servo, reg->address, reg->size, ReadSource::ReadBack,
-                                   [run, key, format](const QByteArray &bytes) {
-                                       run->now.insert(key, decodeValue(bytes, format));
-                                   }));
-    }
-    return steps;
+    return m_bus.readValues(
+        run->servo, keys, [run](const QString &key, qint32 value) { run->now.insert(key, value); });
 }
 
 Step HealthMoveTest::writeStep(std::shared_ptr<Run> run, const QString &key, qint32 value)
 {
-    QString error;
-    const auto writes = encodeWrites(run->servo->table(), {{key, value}}, &error);
-    if (!writes || writes->size() != 1)
-        return [error](StepDone next) {
-            next(false, error);
-        };
-    const RegisterWrite write = writes->first();
-    return [this, run, write, key](StepDone next) {
-        run->changed = true;
-        m_bus.write(run->servo->id, write.address, write.bytes, run->servo->repliesToWrites(),
-                    Tr::tr("Writing %1").arg(key))(next);
-    };
+    return m_bus.writeValue(run->servo, key, value, [run] { run->changed = true; });
 }
 
 void HealthMoveTest::run(const ServoInfo &servo, Pause pause,

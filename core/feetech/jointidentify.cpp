@@ -52,36 +52,14 @@ JointIdentify::JointIdentify(BusExchange &bus, QObject *parent)
 
 std::vector<Step> JointIdentify::readSteps(std::shared_ptr<Run> run, const QStringList &keys)
 {
-    std::vector<Step> steps;
-    const RegisterTable &table = run->servo.table();
-    for (const QString &key : keys) {
-        const Register *reg = table.find(key);
-        if (!reg)
-            continue;
-        const ValueFormat format = table.format(*reg);
-        steps.push_back(m_bus.read(run->target, reg->address, reg->size, ReadSource::ReadBack,
-                                   [run, key, format](const QByteArray &bytes) {
-                                       run->now.insert(key, decodeValue(bytes, format));
-                                   }));
-    }
-    return steps;
+    return m_bus.readValues(run->target, keys, [run](const QString &key, qint32 value) {
+        run->now.insert(key, value);
+    });
 }
 
 Step JointIdentify::writeStep(std::shared_ptr<Run> run, const QString &key, qint32 value)
 {
-    const ServoInfo &servo = run->servo;
-    QString error;
-    const auto writes = encodeWrites(servo.table(), {{key, value}}, &error);
-    if (!writes || writes->size() != 1)
-        return [error](StepDone next) {
-            next(false, error);
-        };
-    const RegisterWrite write = writes->first();
-    return [this, run, write, key](StepDone next) {
-        run->changed = true;
-        m_bus.write(run->servo.id, write.address, write.bytes, run->servo.repliesToWrites(),
-                    Tr::tr("Writing %1").arg(key))(next);
-    };
+    return m_bus.writeValue(run->target, key, value, [run] { run->changed = true; });
 }
 
 void JointIdentify::run(const ServoInfo &servo, GuidedFlows::Finish finish, Pause pause)
