@@ -6,7 +6,6 @@
 #include "sim/simulator.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -24,47 +23,7 @@ constexpr int kStatusOverhead = 6; // header, ID, length, error, checksum
 // The vendor tool: one servo, about 30 Hz, on its GUI thread (issue 6).
 constexpr double kVendorSamplesPerSecond = 30.0;
 
-struct Run
-{
-    double rateHz = 0;
-    double seconds = 0;
-    qint64 samples = 0;
-    qint64 cycles = 0;
-    qint64 missed = 0;
-    double cpuMs = 0; // of the thread the session runs in
-};
-
-Run stream(feetech::Session &session, const QVector<feetech::ServoInfo> &servos, double rateHz)
-{
-    Run run;
-    run.rateHz = rateHz;
-    feetech::TelemetryStats last;
-    qint64 samples = 0;
-    const auto gotSamples = QObject::connect(
-        &session, &feetech::Session::telemetry,
-        [&samples](const QVector<feetech::FeedbackSample> &batch) { samples += batch.size(); });
-    const auto gotStats = QObject::connect(&session, &feetech::Session::telemetryStats,
-                                           [&last](const feetech::TelemetryStats &s) { last = s; });
-    feetech::TelemetryOptions options;
-    options.servos = servos;
-    options.rateHz = rateHz;
-    const double cpuBefore = bench::threadCpuMs();
-    QElapsedTimer clock;
-    clock.start();
-    session.startTelemetry(options);
-    bench::Waiter().wait(kRunSeconds * 1000);
-    session.stopTelemetry();
-    run.seconds = double(clock.nsecsElapsed()) / 1e9;
-    run.cpuMs = bench::threadCpuMs() - cpuBefore;
-    run.samples = samples;
-    run.cycles = last.cycles;
-    run.missed = last.missed;
-    QObject::disconnect(gotSamples);
-    QObject::disconnect(gotStats);
-    return run;
-}
-
-QJsonObject describe(const Run &run, double wireLimitCyclesPerSecond)
+QJsonObject describe(const bench::StreamRun &run, double wireLimitCyclesPerSecond)
 {
     const double samplesPerSecond = double(run.samples) / run.seconds;
     QJsonObject figures {
@@ -74,6 +33,7 @@ QJsonObject describe(const Run &run, double wireLimitCyclesPerSecond)
         {QStringLiteral("samples_per_s"), samplesPerSecond},
         {QStringLiteral("cycles_per_s"), double(run.cycles) / run.seconds},
         {QStringLiteral("missed"), run.missed},
+        {QStringLiteral("late"), run.late},
         {QStringLiteral("session_cpu_ms_per_s"), run.cpuMs / run.seconds},
     };
     if (run.rateHz <= 0)
@@ -123,7 +83,8 @@ int main(int argc, char **argv)
 
     QJsonArray runs;
     for (const double rate : {0.0, 100.0, 50.0})
-        runs.append(describe(stream(session, servos, rate), wireCyclesPerSecond));
+        runs.append(describe(bench::streamTelemetry(session, servos, rate, kRunSeconds),
+                             wireCyclesPerSecond));
     const QJsonObject report {
         {QStringLiteral("servos"), kServos},
         {QStringLiteral("baud"), k1M},

@@ -1,7 +1,11 @@
-// Shared pieces of the benchmark programs: waiting on the event loop and wire-time arithmetic.
+// Shared pieces of the benchmark programs: waiting on the event loop, wire-time arithmetic and a
+// timed telemetry stream.
 #pragma once
 
+#include "feetech/feetechsession.h"
 #include "sim/simulator.h"
+
+#include <QElapsedTimer>
 
 #include <QEventLoop>
 #include <QTemporaryDir>
@@ -63,6 +67,52 @@ inline double processCpuMs()
     timespec now {};
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
     return double(now.tv_sec) * 1e3 + double(now.tv_nsec) / 1e6;
+}
+
+// What one telemetry stream of a set length did.
+struct StreamRun
+{
+    double rateHz = 0; // 0: as fast as the bus allows
+    double seconds = 0;
+    qint64 samples = 0;
+    qint64 cycles = 0;
+    qint64 missed = 0;
+    qint64 late = 0;
+    double cpuMs = 0; // of the thread the session runs in
+};
+
+// Streams the servos' feedback at `rateHz` for `seconds` and counts what came.
+inline StreamRun streamTelemetry(feetech::Session &session,
+                                 const QVector<feetech::ServoInfo> &servos, double rateHz,
+                                 int seconds)
+{
+    StreamRun run;
+    run.rateHz = rateHz;
+    feetech::TelemetryStats last;
+    qint64 samples = 0;
+    const auto gotSamples = QObject::connect(
+        &session, &feetech::Session::telemetry,
+        [&samples](const QVector<feetech::FeedbackSample> &batch) { samples += batch.size(); });
+    const auto gotStats = QObject::connect(&session, &feetech::Session::telemetryStats,
+                                           [&last](const feetech::TelemetryStats &s) { last = s; });
+    feetech::TelemetryOptions options;
+    options.servos = servos;
+    options.rateHz = rateHz;
+    const double cpuBefore = threadCpuMs();
+    QElapsedTimer clock;
+    clock.start();
+    session.startTelemetry(options);
+    Waiter().wait(seconds * 1000);
+    session.stopTelemetry();
+    run.seconds = double(clock.nsecsElapsed()) / 1e9;
+    run.cpuMs = threadCpuMs() - cpuBefore;
+    run.samples = samples;
+    run.cycles = last.cycles;
+    run.missed = last.missed;
+    run.late = last.late;
+    QObject::disconnect(gotSamples);
+    QObject::disconnect(gotStats);
+    return run;
 }
 
 } // namespace bench

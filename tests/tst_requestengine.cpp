@@ -275,6 +275,161 @@ private slots:
         QCOMPARE(requests->counters().timeouts, 0);
     }
 
+    void aLateAnswerIsCountedLateAndHandedToItsRequestNotReportedAsAnError()
+    {
+        ScriptedTransport transport; // silent: the answer comes after the wait
+        auto requests = engine(transport);
+        QSignalSpy log(requests.get(), &RequestEngine::packetLogged);
+        Transaction asked = query(0x38, Transaction::Priority::Command, nullptr);
+        asked.retryCount = 0;
+        QByteArray lateFrame;
+        std::chrono::microseconds lateAfter {-1};
+        asked.lateAnswer = [&](const QByteArray &frame, std::chrono::microseconds after) {
+            lateFrame = frame;
+            lateAfter = after;
+            return true;
+        };
+        TransactionResult result = unfinished();
+        asked.done = [&](const TransactionResult &outcome) {
+            result = outcome;
+        };
+        requests->submit(asked);
+        QTRY_COMPARE(result.failure, Failure::Timeout);
+        QTest::qWait(10);
+        log.clear();
+        transport.deliver(reply(7));
+        QCOMPARE(lateFrame, reply(7));
+        QVERIFY(lateAfter >= std::chrono::milliseconds(10));
+        QCOMPARE(requests->counters().lateReplies, 1);
+        QCOMPARE(requests->counters().discardedBytes, 0);
+        QCOMPARE(log.size(), 1);
+        const auto entry = log.first().first().value<seriallink::PacketLogEntry>();
+        QCOMPARE(entry.direction, seriallink::Direction::In);
+        QVERIFY2(entry.error.isEmpty(), qPrintable(entry.error));
+    }
+
+    void aLateEchoIsNeverTakenForALateAnswer()
+    {
+        ScriptedTransport transport; // no echo in time, then the echo after the wait
+        auto requests = engine(transport);
+        requests->setEchoMode(EchoMode::On);
+        Transaction asked = query(0x38, Transaction::Priority::Command, nullptr);
+        asked.retryCount = 0;
+        int claimed = 0;
+        asked.lateAnswer = [&](const QByteArray &, std::chrono::microseconds) {
+            ++claimed;
+            return true; // would take anything
+        };
+        TransactionResult result = unfinished();
+        asked.done = [&](const TransactionResult &outcome) { result = outcome; };
+        requests->submit(asked);
+        QTRY_COMPARE(result.failure, Failure::Timeout);
+        QSignalSpy log(requests.get(), &RequestEngine::packetLogged);
+        transport.deliver(asked.request);
+        QCOMPARE(claimed, 0);
+        QCOMPARE(log.size(), 1);
+        QCOMPARE(log.first().first().value<seriallink::PacketLogEntry>().direction,
+                 seriallink::Direction::Echo);
+        // Its answer then is the late one, taken once: a second copy is stray.
+        transport.deliver(reply(4));
+        QCOMPARE(claimed, 1);
+        transport.deliver(reply(4));
+        QCOMPARE(claimed, 1);
+        QCOMPARE(requests->counters().lateReplies, 1);
+    }
+
+    void aFrameNoEndedRequestClaimsIsStillStray()
+    {
+        ScriptedTransport transport;
+        auto requests = engine(transport);
+        Transaction asked = query(0x38, Transaction::Priority::Command, nullptr);
+        asked.retryCount = 0;
+        asked.lateAnswer = [](const QByteArray &, std::chrono::microseconds) {
+            return false;
+        };
+        TransactionResult result = unfinished();
+        asked.done = [&](const TransactionResult &outcome) {
+            result = outcome;
+        };
+        requests->submit(asked);
+        QTRY_COMPARE(result.failure, Failure::Timeout);
+        QSignalSpy log(requests.get(), &RequestEngine::packetLogged);
+        transport.deliver(reply(7));
+        QCOMPARE(requests->counters().lateReplies, 0);
+        QCOMPARE(log.size(), 1);
+        QCOMPARE(log.first().first().value<seriallink::PacketLogEntry>().direction,
+                 seriallink::Direction::Stray);
+    }
+
+    void theDefaultWaitGrowsToTheSlowEndOfTheAnswers()
+    {
+        // Answers 40 ms after their request, eight times the set wait (an FTDI adapter's latency
+        // timer): the first is late; from then on the wait (some 62 ms) covers them.
+        ScriptedTransport transport;
+        auto requests = engine(transport);
+        const auto answerLater = [&] {
+            QTimer::singleShot(40, Qt::PreciseTimer, &transport,
+                               [&] { transport.deliver(reply(3)); });
+        };
+        Transaction first = query(0x38, Transaction::Priority::Command, nullptr);
+        first.retryCount = 0;
+        bool tookLate = false;
+        first.lateAnswer = [&](const QByteArray &, std::chrono::microseconds) {
+            tookLate = true;
+            return true;
+        };
+        TransactionResult result = unfinished();
+        first.done = [&](const TransactionResult &outcome) {
+            result = outcome;
+        };
+        requests->submit(first);
+        answerLater();
+        QTRY_VERIFY(tookLate);
+        QCOMPARE(result.failure, Failure::Timeout);
+        for (int i = 0; i < 3; ++i) {
+            Transaction next = query(0x3D, Transaction::Priority::Command, nullptr, &result);
+            next.retryCount = 0;
+            result = unfinished();
+            requests->submit(next);
+            answerLater();
+            QTRY_VERIFY(result.failure != Failure::Cancelled);
+            QVERIFY(result.ok());
+        }
+        QCOMPARE(requests->counters().timeouts, 1);
+    }
+
+    void aWriteEndsWhenItsEchoIsBackAndALateEchoIsNoStrayInput()
+    {
+        ScriptedTransport transport;
+        auto requests = engine(transport);
+        requests->setEchoMode(EchoMode::On);
+        seriallink::EngineTiming patient = requests->timing();
+        patient.replyTimeout = std::chrono::seconds(3);
+        QSignalSpy log(requests.get(), &RequestEngine::packetLogged);
+        Transaction write;
+        write.request = ptk::encodeRequest({1, 20, 0});
+        TransactionResult result = unfinished();
+        write.done = [&](const TransactionResult &outcome) {
+            result = outcome;
+        };
+        // The adapter gives the echo back only after the write's wait: it is still the echo.
+        requests->submit(write);
+        QTRY_VERIFY(result.ok());
+        transport.deliver(write.request);
+        // The next write's echo comes in time and ends it, long before its 3 s wait would.
+        requests->setTiming(patient);
+        transport.echo = true;
+        result = unfinished();
+        write.request = ptk::encodeRequest({1, 21, 0});
+        requests->submit(write);
+        QTRY_VERIFY_WITH_TIMEOUT(result.ok(), 1000);
+        QCOMPARE(requests->counters().discardedBytes, 0);
+        QCOMPARE(requests->counters().echoBytes, 2 * write.request.size());
+        for (const auto &entry : log)
+            QVERIFY(entry.first().value<seriallink::PacketLogEntry>().direction
+                    != seriallink::Direction::Stray);
+    }
+
     void cancellingEndsQueuedAndCurrentTransactions()
     {
         ScriptedTransport transport;

@@ -45,6 +45,22 @@ private slots:
                  ScanPace::pingWireTime(k1M, false) + microseconds(3 * 400) + ScanPace::kMargin);
     }
 
+    void answersHeldForAnAdaptersPacketGetHalfAgainTheSlowest()
+    {
+        // An FTDI adapter's 16 ms latency timer: every answer about as late as the others.
+        constexpr microseconds kLargeCap {60000};
+        ScanPace pace = heard(microseconds(16000), 4);
+        pace.noteAnswer(ScanPace::pingWireTime(k1M, false) + microseconds(17000), k1M);
+        QCOMPARE(pace.pingWait(k1M, false, kLargeCap),
+                 ScanPace::pingWireTime(k1M, false) + microseconds(17000 * 3 / 2)
+                     + ScanPace::kMargin);
+        // Spread wide, the median rule is the shorter one and stays.
+        ScanPace spread = heard(microseconds(2000), 4);
+        spread.noteAnswer(ScanPace::pingWireTime(k1M, false) + microseconds(30000), k1M);
+        QCOMPARE(spread.pingWait(k1M, false, kLargeCap),
+                 ScanPace::pingWireTime(k1M, false) + microseconds(3 * 2000) + ScanPace::kMargin);
+    }
+
     void theWaitNeverExceedsTheCap()
     {
         const ScanPace slow = heard(microseconds(5000), 3);

@@ -113,12 +113,13 @@ int FeetechCommand::monitor(const QString &what, const QStringList &operands)
     runUntilInterrupted(loop, duration);
     const bool linkLost = session.status().state != seriallink::ConnectionState::Connected;
     session.stopTelemetry(); // flushes the last samples through the connection above
-    m_output.err << Tr::tr("servoctl: %1 samples in %2 s (%3 per second); %4 missed")
+    m_output.err << Tr::tr("servoctl: %1 samples in %2 s (%3 per second); %4 missed, %5 late")
                         .arg(printed)
                         .arg(last.elapsedSeconds, 0, 'f', 2)
                         .arg(last.elapsedSeconds > 0 ? double(printed) / last.elapsedSeconds : 0.0,
                              0, 'f', 1)
                         .arg(last.missed)
+                        .arg(last.late)
                  << '\n';
     m_output.err.flush();
     if (linkLost)

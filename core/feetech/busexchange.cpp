@@ -198,6 +198,7 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
     transaction.retryCount = request.retryCount;
     transaction.afterFirstByte = request.afterFirstByte;
     transaction.silenceExpected = request.silenceExpected;
+    transaction.collisionsExpected = request.silenceExpected; // scans, probes: servos at once
     if (request.listenOnly) {
         transaction.acceptsReply = [](const QByteArray &) {
             return false;
@@ -232,6 +233,19 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
             return answer;
         };
         transaction.expectedReplySize = kMinimumPacketSize + size;
+        // An answer that comes after the wait is counted late, and tells how slow the line is.
+        transaction.lateAnswer = [this, alive = QPointer<BusExchange>(this),
+                                  link = m_link.generation(), id, alternate,
+                                  size](const QByteArray &frame, std::chrono::microseconds after) {
+            if (!alive || link != m_link.generation())
+                return false;
+            const auto packet = decodePacket(frame);
+            if (!packet || packet->parameters.size() != size
+                || !(packet->id == id || (alternate && packet->id == *alternate)))
+                return false;
+            noteLatency(after);
+            return true;
+        };
     }
     const quint64 generation = m_link.generation();
     // The engine may end the transaction after this object is gone (a link destroyed last).

@@ -47,8 +47,17 @@ std::chrono::microseconds ScanPace::pingWait(qint32 baud, bool echo,
 {
     std::chrono::microseconds extra = extraCap;
     if (measured()) {
-        const auto scaled = std::chrono::microseconds(
-            qint64(double(typicalExtra().count()) * kFactor) + kMargin.count());
+        // Three times the median. Behind a USB adapter that holds answers back for its packet
+        // (FTDI's latency timer), every answer waits about equally long and three times that would
+        // only slow the scan down: half as much again as the slowest is enough there. Below that
+        // the OS's wake-up sets the extra, and it varies too much for the slowest to tell.
+        const auto typical = typicalExtra();
+        qint64 byAnswers = qint64(double(typical.count()) * kFactor);
+        if (typical >= kPacketedExtra) {
+            const auto slowest = *std::max_element(m_extras.begin(), m_extras.end());
+            byAnswers = std::min(byAnswers, qint64(double(slowest.count()) * kSlowestFactor));
+        }
+        const auto scaled = std::chrono::microseconds(byAnswers + kMargin.count());
         extra = std::min(std::max(scaled, kMinimumExtra), extraCap);
     }
     return pingWireTime(baud, echo) + extra;

@@ -12,7 +12,9 @@ namespace feetech {
 // hears (the broadcast probe's, each servo's PING) says how long this port, adapter and machine
 // took beyond the bytes' own wire time. The wait for the first byte of an answer is the wire
 // time of the PING and its answer at the rate, plus three times the median of the recent
-// extras and a margin, at least kMinimumExtra; never more than the caller's cap (what a scan
+// extras (behind a USB adapter's packets, half as much again as the slowest, when that is
+// less) and a margin, at least
+// kMinimumExtra; never more than the caller's cap (what a scan
 // waited before this). An answer that comes later all the same is not lost: the scan hears it
 // during a later wait or between two, by its ID, and asks that ID again with a patient timeout.
 class ScanPace
@@ -22,6 +24,11 @@ public:
     static constexpr std::size_t kWindow = 8;
     // What the median recent extra is multiplied by, and what is added to it.
     static constexpr double kFactor = 3.0;
+    // From this typical extra on, a USB adapter's packets set the pace: the slowest recent
+    // answer times kSlowestFactor is waited for when that is less than kFactor times the median.
+    // (4 ms: well above what a busy machine adds, well below FTDI's 16 ms.)
+    static constexpr std::chrono::microseconds kPacketedExtra {4000};
+    static constexpr double kSlowestFactor = 1.5;
     static constexpr std::chrono::microseconds kMargin {100};
     // The least time allowed beyond the wire time: the OS waking the program up.
     static constexpr std::chrono::microseconds kMinimumExtra {200};

@@ -64,7 +64,8 @@ struct ServoTelemetry
     quint8 id = 0;
     qint32 baud = 0;
     qint64 samples = 0;
-    qint64 missed = 0; // cycles in which it was asked and did not answer
+    qint64 missed = 0; // cycles in which it was asked and its answer never came
+    qint64 late = 0; // answers that came after their wait (still taken as samples)
     bool missing = false; // out of the cycle, asked alone now and then
 };
 
@@ -75,6 +76,7 @@ struct TelemetryStats
     qint64 cycles = 0;
     qint64 samples = 0;
     qint64 missed = 0;
+    qint64 late = 0;
     double elapsedSeconds = 0.0;
     double cyclesPerSecond = 0.0; // over the last second
     double samplesPerSecond = 0.0; // over the last second, all servos together

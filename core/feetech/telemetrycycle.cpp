@@ -24,6 +24,13 @@ struct Tr
 constexpr double kFastestTimedRate = 1000.0;
 // The rates in the statistics are taken over this much of the recent past.
 constexpr qint64 kRateWindowUs = 1'000'000;
+// A read waits half as long again as the slow end of the stream's answers, plus a margin.
+constexpr double kTailFactor = 1.5;
+constexpr std::chrono::microseconds kTailMargin {1000};
+// How many answer times the wait follows.
+constexpr std::size_t kAnswerTimes = 64;
+// At a set rate the reads of a cycle may wait this share of its period between them.
+constexpr double kBudgetShare = 0.9;
 
 } // namespace
 
@@ -114,6 +121,7 @@ bool TelemetryCycle::startIfDue()
     state.steps.clear();
     state.nextStep = 0;
     const qint64 now = steadyMicroseconds();
+    state.cycleStartedUs = now;
     // Servos by baud rate, in the order given; one SYNC READ per rate for those that have it.
     QVector<qint32> bauds;
     for (const Servo &servo : state.servos) {
@@ -212,12 +220,35 @@ void TelemetryCycle::endCycle()
             this, [this] { startIfDue(); }, Qt::QueuedConnection);
 }
 
-std::chrono::microseconds TelemetryCycle::allowance(int servos) const
+std::chrono::microseconds TelemetryCycle::allowance(int servos, qint32 baud, int requestBytes,
+                                                    int replyBytes) const
 {
-    // Replies of a SYNC READ come one after the other, each after its servo's return delay.
-    const auto allowance = m_bus.scanAllowance() + kLongestReturnDelay * std::max(0, servos - 1);
-    return std::clamp(allowance, m_bus.timing().minimumTelemetryAllowance,
-                      m_bus.timing().maximumScanAllowance);
+    using std::chrono::microseconds;
+    const SessionTiming &timing = m_bus.timing();
+    // The slow end of this stream's answers, half as much again, and a return delay for every
+    // servo after the first: a wait that follows the median would end before every answer a
+    // USB adapter holds back a while.
+    std::optional<microseconds> tail;
+    // Before this stream's first answer the wait is the longest: what the port's other
+    // exchanges measured (their first bytes) says little of when a whole SYNC READ is in.
+    microseconds wait = timing.maximumScanAllowance;
+    tail = seriallink::slowEnd(m_state->answerTimes);
+    if (tail)
+        wait = microseconds(qint64(double(tail->count()) * kTailFactor))
+            + kLongestReturnDelay * std::max(0, servos - 1) + kTailMargin;
+    // At a set rate a cycle may spend most of its period waiting: nothing else needs the bus
+    // then, and an answer waited for is a sample not missed.
+    if (m_state->timer && m_state->options.rateHz > 0 && baud > 0) {
+        const bool echo = m_bus.link().engine().echoDetected();
+        const qint64 wireUs =
+            qint64(requestBytes * (echo ? 2 : 1) + replyBytes) * 10'000'000 / baud;
+        const qint64 periodUs = qint64(1e6 / m_state->options.rateHz * kBudgetShare);
+        const auto readsLeft = qint64(m_state->steps.size() - m_state->nextStep) + 1;
+        const qint64 budget =
+            (m_state->cycleStartedUs + periodUs - steadyMicroseconds()) / readsLeft - wireUs;
+        wait = std::max(wait, microseconds(budget));
+    }
+    return std::clamp(wait, timing.minimumTelemetryAllowance, timing.maximumScanAllowance);
 }
 
 TelemetryCycle::CycleStep TelemetryCycle::setBaud(qint32 baud)
@@ -240,9 +271,11 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
         transaction.request = feetech::syncRead(quint8(block.address), quint8(block.size), ids);
         transaction.priority = seriallink::Transaction::Priority::Poll;
         transaction.retryCount = 0; // the next cycle is the retry
-        transaction.replyTimeout = allowance(int(ids.size()));
         transaction.expectedReplySize = int(ids.size()) * (kMinimumPacketSize + block.size);
+        transaction.replyTimeout = allowance(int(ids.size()), baud, int(transaction.request.size()),
+                                             transaction.expectedReplySize);
         transaction.logFailuresOnly = !m_state->options.logEveryFrame;
+        transaction.timeoutIsNote = true;
         auto answered = std::make_shared<QVector<bool>>(ids.size(), false);
         // Each answer is decoded once, as it is accepted, and kept for the end of the read.
         auto answers = std::make_shared<QVector<Packet>>();
@@ -268,16 +301,36 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
         };
         const quint64 link = m_bus.link().generation();
         const quint64 stream = m_generation;
+        // An answer after the wait still belongs to its servo: a sample, counted late.
+        transaction.lateAnswer = [this, alive = QPointer<TelemetryCycle>(this), link, stream, ids,
+                                  size, answered, servoIndexes](const QByteArray &frame,
+                                                                std::chrono::microseconds after) {
+            if (!alive || link != m_bus.link().generation() || stream != m_generation || !m_state)
+                return false;
+            const auto packet = decodePacket(frame);
+            if (!packet || packet->parameters.size() != size)
+                return false;
+            const auto position = ids.indexOf(packet->id);
+            if (position < 0 || answered->at(position))
+                return false;
+            (*answered)[position] = true;
+            noteAnswerTime(after);
+            noteLate(servoIndexes.at(position), *packet);
+            return true;
+        };
+        const auto waited = *transaction.replyTimeout;
         transaction.done = [this, alive = QPointer<TelemetryCycle>(this), link, stream, baud,
-                            servoIndexes, ids, answered, answers,
+                            servoIndexes, ids, answered, answers, waited,
                             next](const seriallink::TransactionResult &result) {
             // Indexes and the cycle belong to the stream that asked: not after a restart, nor
             // once the cycle itself is gone (its link may outlive it).
             if (!alive || link != m_bus.link().generation() || stream != m_generation || !m_state)
                 return;
             const qint64 now = steadyMicroseconds();
-            if (!answers->isEmpty())
+            if (!answers->isEmpty()) {
                 m_bus.noteLatency(result.latency);
+                noteAnswerTime(result.completedAfter);
+            }
             for (const Packet &packet : std::as_const(*answers))
                 noteAnswer(servoIndexes.at(ids.indexOf(packet.id)), packet, now);
             QStringList silent;
@@ -287,11 +340,15 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
                     silent.append(QString::number(ids.at(i)));
                 }
             }
+            // A note, not an error: the answer may still come late, and a servo that stays
+            // silent is reported as stopped once it has missed several cycles.
             if (!silent.isEmpty() && result.failure != seriallink::Failure::LinkDown)
-                m_bus.logNote(Tr::tr("SYNC READ at %1: no answer from ID %2")
-                                  .arg(baudText(baud), silent.join(QStringLiteral(", "))),
-                              true);
-            next();
+                m_bus.logNote(Tr::tr("SYNC READ at %1: no answer in time from ID %2")
+                                  .arg(baudText(baud), silent.join(QStringLiteral(", "))));
+            if (silent.isEmpty() || result.failure != seriallink::Failure::Timeout)
+                next();
+            else
+                settleThen(waited, next);
         };
         m_bus.link().engine().submit(std::move(transaction));
     };
@@ -312,9 +369,11 @@ TelemetryCycle::CycleStep TelemetryCycle::read(int servoIndex, bool probe)
         transaction.request = feetech::read(id, quint8(block.address), quint8(block.size));
         transaction.priority = seriallink::Transaction::Priority::Poll;
         transaction.retryCount = 0;
-        transaction.replyTimeout = allowance(1);
         transaction.expectedReplySize = kMinimumPacketSize + block.size;
+        transaction.replyTimeout = allowance(1, servo.info.baud, int(transaction.request.size()),
+                                             transaction.expectedReplySize);
         transaction.logFailuresOnly = !m_state->options.logEveryFrame;
+        transaction.timeoutIsNote = true;
         // A servo known to be missing is asked quietly: its silence is already reported.
         transaction.silenceExpected = probe;
         const QByteArray sent = transaction.request;
@@ -331,18 +390,36 @@ TelemetryCycle::CycleStep TelemetryCycle::read(int servoIndex, bool probe)
         };
         const quint64 link = m_bus.link().generation();
         const quint64 stream = m_generation;
+        transaction.lateAnswer = [this, alive = QPointer<TelemetryCycle>(this), link, stream,
+                                  servoIndex, id,
+                                  size](const QByteArray &frame, std::chrono::microseconds after) {
+            if (!alive || link != m_bus.link().generation() || stream != m_generation || !m_state)
+                return false;
+            const auto packet = decodePacket(frame);
+            if (!packet || packet->id != id || packet->parameters.size() != size)
+                return false;
+            noteAnswerTime(after);
+            noteLate(servoIndex, *packet);
+            return true;
+        };
+        const auto waited = *transaction.replyTimeout;
         transaction.done = [this, alive = QPointer<TelemetryCycle>(this), link, stream, servoIndex,
-                            accepted, next](const seriallink::TransactionResult &result) {
+                            accepted, probe, waited,
+                            next](const seriallink::TransactionResult &result) {
             if (!alive || link != m_bus.link().generation() || stream != m_generation || !m_state)
                 return;
             const std::optional<Packet> packet = result.ok() ? *accepted : std::nullopt;
             if (packet) {
                 m_bus.noteLatency(result.latency);
+                noteAnswerTime(result.completedAfter);
                 noteAnswer(servoIndex, *packet, steadyMicroseconds());
             } else {
                 noteMiss(servoIndex);
             }
-            next();
+            if (packet || probe || result.failure != seriallink::Failure::Timeout)
+                next();
+            else
+                settleThen(waited, next);
         };
         m_bus.link().engine().submit(std::move(transaction));
     };
@@ -386,6 +463,41 @@ void TelemetryCycle::noteMiss(int servoIndex)
                       true);
         publishStats();
     }
+}
+
+void TelemetryCycle::settleThen(std::chrono::microseconds wait, std::function<void()> next)
+{
+    // An answer that missed its wait may still be on its way. Asked again at once, the servo
+    // would send it while the next request waits, and it would pass for that request's answer.
+    // Waiting as long again lets it land while nothing waits: it is then taken as late.
+    const quint64 stream = m_generation;
+    QTimer::singleShot(std::chrono::ceil<std::chrono::milliseconds>(wait), Qt::PreciseTimer, this,
+                       [this, stream, next = std::move(next)] {
+                           if (m_state && stream == m_generation)
+                               next();
+                       });
+}
+
+void TelemetryCycle::noteLate(int servoIndex, const Packet &reply)
+{
+    Servo &servo = m_state->servos.at(std::size_t(servoIndex));
+    ++servo.stats.late;
+    ++m_state->stats.late;
+    // Counted missed when its wait ended; it came after all.
+    if (servo.stats.missed > 0) {
+        --servo.stats.missed;
+        --m_state->stats.missed;
+    }
+    noteAnswer(servoIndex, reply, steadyMicroseconds());
+}
+
+void TelemetryCycle::noteAnswerTime(std::chrono::microseconds time)
+{
+    if (!m_state)
+        return;
+    m_state->answerTimes.push_back(time);
+    while (m_state->answerTimes.size() > kAnswerTimes)
+        m_state->answerTimes.pop_front();
 }
 
 void TelemetryCycle::flush()

@@ -63,6 +63,9 @@ private:
         std::vector<CycleStep> steps; // of the running cycle
         std::size_t nextStep = 0;
         qint64 startedUs = 0;
+        qint64 cycleStartedUs = 0; // of the running cycle
+        // How long this stream's answers took beyond their wire time, newest last.
+        std::deque<std::chrono::microseconds> answerTimes;
         TelemetryStats stats;
         std::deque<std::pair<qint64, qint64>> history; // (time, samples) at each cycle's end
     };
@@ -77,7 +80,15 @@ private:
     CycleStep read(int servoIndex, bool probe);
     void noteAnswer(int servoIndex, const Packet &reply, qint64 steadyUs);
     void noteMiss(int servoIndex);
-    std::chrono::microseconds allowance(int servos) const;
+    // Calls `next` once late answers to a read that timed out have had `wait` to come.
+    void settleThen(std::chrono::microseconds wait, std::function<void()> next);
+    // An answer that came after its wait: a sample all the same, counted late, not missed.
+    void noteLate(int servoIndex, const Packet &reply);
+    void noteAnswerTime(std::chrono::microseconds time);
+    // The wait beyond the wire time for `servos` answers at `baud` to a request of
+    // `requestBytes` that expects `replyBytes`.
+    std::chrono::microseconds allowance(int servos, qint32 baud, int requestBytes,
+                                        int replyBytes) const;
     void flush();
     void publishStats();
     void updateStats();

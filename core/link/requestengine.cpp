@@ -24,6 +24,8 @@ struct Tr
 constexpr std::chrono::milliseconds kCounterPublishInterval {100};
 // How long a frame may take to leave the program before the port counts as stuck.
 constexpr std::chrono::milliseconds kWriteStallTimeout {500};
+// How many ended transactions are offered late answers.
+constexpr std::size_t kLateAnswerMemory = 8;
 
 TransactionResult failedWith(Failure failure)
 {
@@ -66,6 +68,11 @@ void RequestEngine::setEchoMode(EchoMode mode)
 {
     m_echoMode = mode;
     m_echoSeen = Decision::Unknown;
+    // A new port (or the same one again): what the last one taught about answers is forgotten.
+    m_answerTimes.clear();
+    m_ended.clear();
+    m_framer.discardPending();
+    m_waitedForUnfinished = false;
 }
 
 void RequestEngine::submit(Transaction transaction)
@@ -79,6 +86,10 @@ void RequestEngine::submit(Transaction transaction)
 
 void RequestEngine::cancelAll(Failure failure)
 {
+    // Nothing of this link's past answers anything that follows.
+    m_ended.clear();
+    m_framer.discardPending();
+    m_waitedForUnfinished = false;
     std::deque<Transaction> ended;
     ended.swap(m_commands);
     for (Transaction &poll : m_polls)
@@ -150,14 +161,29 @@ void RequestEngine::send()
     // Input the port has not announced yet is taken in first (and dropped as stray while
     // nothing waits), or it would arrive after the request and pass for its answer.
     m_transport.deliverPendingInput();
-    QByteArray stray = m_transport.discardInput();
-    if (m_framer.pendingBytes() > 0) {
-        m_framer.discardPending();
+    const QString beforeRequest = Tr::tr("stray input discarded before a request");
+    // Also frames still in the framer: an answer that ended its exchange may have had company.
+    onInputBetweenRequests(m_transport.discardInput(), beforeRequest);
+    if (m_framer.pendingBytes() > 0 && !m_waitedForUnfinished && m_current
+        && m_transport.isOpen()) {
+        // The start of a frame is in: a late answer whose rest a USB adapter sends in its next
+        // packet. Once, the request waits for it, so that it lands while nothing waits.
+        m_waitedForUnfinished = true;
+        m_state = State::Settling;
+        const quint64 generation = ++m_generation;
+        QTimer::singleShot(std::chrono::ceil<std::chrono::milliseconds>(replyTimeout()),
+                           Qt::PreciseTimer, this, [this, generation] {
+                               if (generation == m_generation && m_state == State::Settling)
+                                   send();
+                           });
+        return;
     }
-    if (!stray.isEmpty()) {
-        m_counters.discardedBytes += stray.size();
-        log(Direction::Stray, stray, Tr::tr("stray input discarded before a request"));
+    m_waitedForUnfinished = false;
+    if (const auto unfinished = m_framer.flush()) {
+        m_counters.discardedBytes += unfinished->bytes.size();
+        log(Direction::Stray, unfinished->bytes, beforeRequest);
     }
+    m_framer.discardPending();
     if (!m_current || !m_transport.isOpen()) {
         // Reading the port found it gone; whoever handles that ends the transaction.
         if (m_current)
@@ -171,6 +197,7 @@ void RequestEngine::send()
     m_bytesHeard = 0;
     m_rawSinceSend = 0;
     m_firstHeardUs = -1;
+    m_lastAcceptedUs = -1;
     m_echoConsumed = false;
     m_sawFrame = false;
     m_firstByteDeadline = false;
@@ -179,6 +206,7 @@ void RequestEngine::send()
     if (!m_current->logFailuresOnly)
         log(Direction::Out, m_current->request);
     m_sentAtUs = m_clock.nsecsElapsed() / 1000;
+    m_lastRequest = m_current->request;
     m_transport.write(m_current->request);
     publishCounters();
     // A port that never confirms the write must not hang the queue.
@@ -204,8 +232,16 @@ void RequestEngine::onBytesWritten(qint64 count)
     const quint64 generation = m_generation;
     m_writtenAtUs = m_clock.nsecsElapsed() / 1000;
     m_replyWireTime = wireTime(echoSize);
+    if (!m_current->expectsReply() && echoKnown() && m_echoConsumed) {
+        finish(Failure::None); // the echo was back before the port said the frame had left
+        return;
+    }
     std::chrono::microseconds wait;
-    if (!m_current->expectsReply())
+    if (!m_current->expectsReply() && echoKnown())
+        // A frame nothing answers ends when its echo is back: behind a USB adapter that can be
+        // a packet later, and it must not come while the next request waits.
+        wait = wireTime(requestSize + echoSize) + replyTimeout();
+    else if (!m_current->expectsReply())
         wait = wireTime(requestSize + echoSize) + m_timing.writeSettle;
     else if (m_current->afterFirstByte)
         wait = replyTimeout();
@@ -237,11 +273,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
     qCDebug(lcRaw) << "rx" << bytes.toHex(' ');
     if (m_state == State::Idle || m_state == State::Settling || !m_current) {
         // Nothing is waiting for these: a late reply, noise, or an echo after the fact.
-        m_counters.discardedBytes += bytes.size();
-        log(Direction::Stray, bytes,
-            m_state == State::Settling ? Tr::tr("late reply, discarded")
-                                       : Tr::tr("received while no request was waiting"));
-        publishCounters();
+        onInputBetweenRequests(bytes, Tr::tr("received while no request was waiting"));
         return;
     }
     // The first byte beyond what an echo would account for starts the answer: that is when the
@@ -262,8 +294,14 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 m_counters.echoBytes += item->bytes.size();
                 if (!m_current->logFailuresOnly)
                     log(Direction::Echo, item->bytes);
+                if (!m_current->expectsReply() && m_state == State::AwaitingReply) {
+                    finish(Failure::None);
+                    return;
+                }
                 break;
             }
+            if (cameTooSoon(int(item->bytes.size())) && takeLateAnswer(item->bytes))
+                break;
             if (cameTooSoon(int(item->bytes.size()))) {
                 // Nothing can answer before the request and the answer have crossed the wire:
                 // this is a late answer to an earlier request (PTK replies name no query). It
@@ -280,6 +318,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             m_sawFrame = true;
             heard(int(item->bytes.size()));
             if (m_current->acceptsReply && m_current->acceptsReply(item->bytes)) {
+                m_lastAcceptedUs = m_clock.nsecsElapsed() / 1000;
                 ++m_counters.repliesOk;
                 if (!m_current->logFailuresOnly)
                     log(Direction::In, item->bytes);
@@ -289,6 +328,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             const auto answer = m_current->collectsReplies ? m_current->collectsReplies(item->bytes)
                                                            : Transaction::Answer::NotMine;
             if (answer != Transaction::Answer::NotMine) {
+                m_lastAcceptedUs = m_clock.nsecsElapsed() / 1000;
                 if (m_collected.isEmpty())
                     ++m_counters.repliesOk; // one answered request, however many frames
                 if (!m_current->logFailuresOnly)
@@ -300,21 +340,31 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 }
                 break;
             }
+            if (takeLateAnswer(item->bytes))
+                break;
             m_counters.discardedBytes += item->bytes.size();
             log(Direction::In, item->bytes, Tr::tr("unexpected frame, ignored"));
             break;
         }
         case StreamItem::Kind::BadChecksum:
             heard(int(item->bytes.size()));
-            if (!m_current->silenceExpected)
-                ++m_counters.checksumErrors;
+            // A scan asks where several servos may answer at once: garbled answers are what
+            // it looks for there (and asks again), not a fault of the link.
+            if (m_current->collisionsExpected) {
+                log(Direction::In, item->bytes, {}, Tr::tr("garbled: answers at once"));
+                break;
+            }
+            ++m_counters.checksumErrors;
             log(Direction::In, item->bytes, Tr::tr("bad checksum"));
             break;
         case StreamItem::Kind::Garbage:
         case StreamItem::Kind::Incomplete:
             heard(int(item->bytes.size()));
             m_counters.discardedBytes += item->bytes.size();
-            log(Direction::Stray, item->bytes, Tr::tr("bytes that form no frame"));
+            if (m_current->collisionsExpected)
+                log(Direction::Stray, item->bytes, {}, Tr::tr("garbled: answers at once"));
+            else
+                log(Direction::Stray, item->bytes, Tr::tr("bytes that form no frame"));
             break;
         }
     }
@@ -356,7 +406,7 @@ void RequestEngine::onTimeout(quint64 generation)
     const QString noReply =
         Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(retryCount() + 1);
     // A scan's empty ID is an answer, not an error: logged as a note, not in red.
-    if (counted)
+    if (counted && !m_current->timeoutIsNote)
         log(Direction::In, {}, noReply);
     else
         log(Direction::In, {}, {}, noReply);
@@ -379,10 +429,29 @@ void RequestEngine::finish(Failure failure, const QByteArray &reply)
     result.frames.swap(m_collected);
     // Bytes that form no frame yet (two servos answering at once) were heard all the same.
     result.bytesHeard = m_bytesHeard + int(m_framer.pendingBytes());
+    const qint64 now = m_clock.nsecsElapsed() / 1000;
     if (m_firstHeardUs >= 0)
         result.latency =
             std::max(std::chrono::microseconds(0),
                      std::chrono::microseconds(m_firstHeardUs - m_writtenAtUs) - m_replyWireTime);
+    if (m_lastAcceptedUs >= 0) {
+        result.completedAfter = std::max(std::chrono::microseconds(0),
+                                         std::chrono::microseconds(m_lastAcceptedUs - m_writtenAtUs)
+                                             - m_replyWireTime - wireTime(m_bytesHeard));
+        noteAnswerTime(result.completedAfter);
+    }
+    if (done && done->lateAnswer && failure == Failure::Timeout) {
+        Ended ended;
+        ended.lateAnswer = done->lateAnswer;
+        ended.writtenAtUs = m_writtenAtUs;
+        ended.endedAtUs = now;
+        ended.wireTime = m_replyWireTime + wireTime(done->expectedReplySize);
+        ended.request = done->request;
+        ended.several = bool(done->collectsReplies);
+        m_ended.push_back(std::move(ended));
+        while (m_ended.size() > kLateAnswerMemory)
+            m_ended.pop_front();
+    }
     m_state = State::Idle;
     ++m_generation;
     publishCounters();
@@ -400,8 +469,12 @@ void RequestEngine::log(Direction direction, const QByteArray &bytes, const QStr
     entry.bytes = bytes;
     entry.error = error;
     entry.summary = note;
-    if (!bytes.isEmpty() && m_describer && direction != Direction::Stray)
-        entry.summary = m_describer(bytes, m_current ? m_current->request : QByteArray());
+    if (!bytes.isEmpty() && m_describer && direction != Direction::Stray) {
+        const QString described = m_describer(bytes, m_current ? m_current->request : QByteArray());
+        entry.summary = note.isEmpty()
+            ? described
+            : Tr::tr("%1 (%2)", "frame summary (note)").arg(described, note);
+    }
     emit packetLogged(entry);
 }
 
@@ -419,6 +492,12 @@ void RequestEngine::publishCounters()
         m_countersTimer->start();
 }
 
+bool RequestEngine::echoKnown() const
+{
+    return m_echoMode == EchoMode::On
+        || (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Yes);
+}
+
 bool RequestEngine::echoExpected() const
 {
     switch (m_echoMode) {
@@ -430,13 +509,6 @@ bool RequestEngine::echoExpected() const
         return m_echoSeen != Decision::No;
     }
     return false;
-}
-
-std::chrono::microseconds RequestEngine::replyTimeout() const
-{
-    if (m_current && m_current->replyTimeout)
-        return *m_current->replyTimeout;
-    return m_timing.replyTimeout;
 }
 
 int RequestEngine::retryCount() const

@@ -26,7 +26,9 @@ enum class EchoMode { Auto, On, Off };
 
 struct EngineTiming
 {
-    // Time allowed after the request (and any echo and the reply) has crossed the wire.
+    // Time allowed after the request (and any echo and the reply) has crossed the wire. More
+    // when the link's answers have taken longer (a USB adapter's latency timer): half as much
+    // again as the slow end of the recent answers, and a margin.
     std::chrono::milliseconds replyTimeout {25};
     int retryCount = 2;
     // Extra time a request that expects no reply is given to leave the adapter.
@@ -43,6 +45,11 @@ struct EngineTiming
 
 enum class Failure { None, Timeout, LinkDown, Cancelled };
 
+// The 95th percentile of some measured times, none of none: the slow end, which a wait that
+// must not end before an answer follows (not the median).
+std::optional<std::chrono::microseconds>
+slowEnd(const std::deque<std::chrono::microseconds> &times);
+
 struct TransactionResult
 {
     Failure failure = Failure::None;
@@ -53,6 +60,10 @@ struct TransactionResult
     // Measured on the first byte that was not an echo, so a garbled answer (two servos at
     // once) still tells how quickly the line answers.
     std::chrono::microseconds latency {0};
+    // From the moment the request had left to the last accepted answer being complete, minus the
+    // wire time of the echo and of the bytes heard: what an answer needs beyond the wire time.
+    // Zero when nothing was accepted.
+    std::chrono::microseconds completedAfter {0};
     int bytesHeard = 0; // bytes other than the echo that arrived for this request
     // Requests answered by several frames (SYNC READ): every accepted frame, in order of arrival,
     // also those that came before a timeout.
@@ -84,9 +95,21 @@ struct Transaction
     // A scan asks where most IDs are empty and several servos may answer at once: its
     // timeouts and garbled answers say nothing about the link, so the counters skip them.
     bool silenceExpected = false;
+    // Several servos may answer at once (a scan's broadcast, a sweep): garbled answers are what
+    // it looks for, logged as notes, not errors.
+    bool collisionsExpected = false;
     // Frames that went well are counted but not put in the packet log (a telemetry stream of
     // hundreds of frames a second would bury everything else); failures are always logged.
     bool logFailuresOnly = false;
+    // The caller reports a missing answer itself (telemetry: a note each cycle, an error once a
+    // servo stops answering): the engine logs its timeout as a note, and counts it all the same.
+    bool timeoutIsNote = false;
+    // After the transaction has ended without all its answers (a timeout, or a SYNC READ some
+    // servos did not answer in time), the engine offers it every frame no request accounts for,
+    // for a while: true when the frame is a late answer to it (counted late, not an error).
+    // `after`: how long after the request left the frame was complete, beyond the wire time of
+    // the request, its echo and the answer it expected. Must not touch the engine.
+    std::function<bool(const QByteArray &frame, std::chrono::microseconds after)> lateAnswer;
     bool expectsReply() const { return bool(acceptsReply) || bool(collectsReplies); }
     std::function<void(const TransactionResult &)> done;
 };
@@ -140,6 +163,11 @@ private:
     void onBytesWritten(qint64 count);
     void onReceived(const QByteArray &bytes);
     void onTimeout(quint64 generation);
+    // Offers the frame to the transactions that ended lately without all their answers; true
+    // when one took it as its late answer (it is then counted and logged as late).
+    bool takeLateAnswer(const QByteArray &frame);
+    // Bytes heard while no request waits: late answers are taken out, the rest is stray.
+    void onInputBetweenRequests(const QByteArray &bytes, const QString &why);
     void finish(Failure failure, const QByteArray &reply = {});
     void log(Direction direction, const QByteArray &bytes, const QString &error = {},
              const QString &note = {});
@@ -147,10 +175,12 @@ private:
     void heard(int bytes);
     void armAfterFirstByte();
     bool echoExpected() const;
+    bool echoKnown() const; // the adapter echoes, for certain
     std::chrono::microseconds wireTime(int bytes) const;
     // Whether a frame of this size, complete now, came too soon to answer the request in flight.
     bool cameTooSoon(int frameBytes) const;
     std::chrono::microseconds replyTimeout() const;
+    void noteAnswerTime(std::chrono::microseconds time);
     int retryCount() const;
 
     Transport &m_transport;
@@ -161,6 +191,19 @@ private:
     LinkCounters m_counters;
     Decision m_echoSeen = Decision::Unknown;
 
+    struct Ended
+    {
+        std::function<bool(const QByteArray &, std::chrono::microseconds)> lateAnswer;
+        qint64 writtenAtUs = 0;
+        qint64 endedAtUs = 0;
+        std::chrono::microseconds wireTime {0}; // request, echo and expected answer
+        QByteArray request;
+        bool several = false; // answered by several frames (SYNC READ)
+    };
+    std::deque<Ended> m_ended; // newest last
+    // How long the recent answers took beyond their wire time, late ones included.
+    std::deque<std::chrono::microseconds> m_answerTimes;
+
     std::deque<Transaction> m_commands;
     std::deque<Transaction> m_polls;
     std::unique_ptr<Transaction> m_current;
@@ -168,8 +211,10 @@ private:
     int m_attempts = 0;
     qint64 m_writtenBytes = 0;
     qint64 m_sentAtUs = 0; // when the request was handed to the port
+    QByteArray m_lastRequest; // its echo may come after its exchange has ended
     qint64 m_writtenAtUs = 0; // when the whole request had left
     qint64 m_firstHeardUs = -1; // when the first byte other than the echo came
+    qint64 m_lastAcceptedUs = -1; // when the last answer accepted was complete
     int m_bytesHeard = 0;
     int m_rawSinceSend = 0; // bytes of any kind since the request went out
     std::chrono::microseconds m_replyWireTime {0};
@@ -181,6 +226,7 @@ private:
     qint64 m_quietUntilMs = 0; // no request goes out before this: a late reply may be on its way
     quint64 m_generation = 0; // stale timer firings carry an old generation and are ignored
     bool m_nextScheduled = false;
+    bool m_waitedForUnfinished = false; // a request waited once for the rest of a frame
     bool m_countersDirty = false;
     QTimer *m_countersTimer = nullptr; // a child, so it follows the engine to its thread
     PreciseTimer *m_replyTimer = nullptr; // a child too; a scan waits less than a millisecond

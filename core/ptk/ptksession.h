@@ -27,7 +27,9 @@ struct SessionTiming
     std::chrono::milliseconds writeGap {50};
     // How often a port that went away is looked for again.
     std::chrono::milliseconds reconnectInterval {500};
-    seriallink::EngineTiming engine;
+    // 40 ms for an answer: behind an FTDI adapter at its default 16 ms latency timer, the echo
+    // and the answer of one query can come in two of its packets, 32 ms apart.
+    seriallink::EngineTiming engine {std::chrono::milliseconds(40)};
 };
 
 // Where a set of values came from: background polling, an explicit read, or the read-back

@@ -42,6 +42,9 @@ QString simulatorUsage()
         "  --seed N               seed of the fault generator (default 1)\n"
         "  --log FILE             log every frame in and out, hex, timestamped\n"
         "  --reply-delay-us N     extra delay before every reply\n"
+        "  --adapter PROFILE      deliver replies as a USB adapter does: ideal (the pty's own\n"
+        "                         timing, the default), ftdi (16 ms latency timer), ftdi-1ms,\n"
+        "                         ch340, ch343, cp2102\n"
         "\n"
         "Prints \"ready PATH\" once a client can open PATH; runs until SIGINT or SIGTERM;\n"
         "SIGHUP power-cycles the servos. Reads commands on standard input, one a line, and\n"
@@ -91,7 +94,7 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
             QStringLiteral("--reply-delay-us"), QStringLiteral("--values"),
             QStringLiteral("--servo"),          QStringLiteral("--state"),
             QStringLiteral("--robot"),          QStringLiteral("--hand"),
-            QStringLiteral("--command")};
+            QStringLiteral("--command"),        QStringLiteral("--adapter")};
         if (!kWithValue.contains(option))
             return fail(Tr::tr("unknown option \"%1\"").arg(option));
         const auto text = value();
@@ -116,6 +119,15 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
             if (!delay || *delay < 0 || *delay > 10'000'000)
                 return fail(Tr::tr("--reply-delay-us must be 0 to 10000000"));
             options.replyDelayUs = *delay;
+        } else if (option == QLatin1String("--adapter")) {
+            if (*text == QLatin1String("ideal")) {
+                options.adapter.reset();
+            } else if (const auto profile = adapterProfile(*text)) {
+                options.adapter = profile;
+            } else {
+                return fail(Tr::tr("unknown adapter \"%1\": use %2")
+                                .arg(*text, adapterProfileNames().join(QStringLiteral(", "))));
+            }
         } else if (option == QLatin1String("--values")) {
             if (feetech)
                 return fail(Tr::tr("--values is for the PTK servo"));

@@ -63,6 +63,8 @@ Simulator::Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDev
 {
     if (m_options.faults.any())
         m_faults.emplace(m_options.faults, m_options.seed);
+    if (m_options.adapter)
+        m_adapter.emplace(*m_options.adapter, m_options.seed);
     m_framer = std::make_unique<seriallink::StreamFramer>(
         m_device->frameFormat(), seriallink::StreamFramer::BadChecksumPolicy::Resync);
     m_sendTimer->setSingleShot(true);
@@ -100,6 +102,8 @@ void Simulator::stop()
     m_tickTimer->stop();
     m_sendTimer->stop();
     m_outgoing.clear();
+    if (m_adapter)
+        m_adapter->clear();
     m_pty->close();
 }
 
@@ -140,8 +144,10 @@ void Simulator::onReceived(const QByteArray &bytes)
     const qint64 now = nowUs();
     const qint32 hostBaud = m_pty->hostBaudRate();
     const double byteUs = byteTimeUs(hostBaud);
-    // The pty hands the bytes over at once; on a wire they would still be arriving.
-    m_inputEndUs = std::max(now, m_inputEndUs) + qint64(std::ceil(bytes.size() * byteUs));
+    // The pty hands the bytes over at once; on a wire they would still be arriving. Through a
+    // USB adapter they reach the wire with the next USB frame.
+    const qint64 onWire = m_adapter ? m_adapter->requestOnWireUs(now) : now;
+    m_inputEndUs = std::max(onWire, m_inputEndUs) + qint64(std::ceil(bytes.size() * byteUs));
     if (m_options.echo)
         schedule(m_inputEndUs - qint64(bytes.size() * byteUs), bytes, byteUs, "echo", {});
 
@@ -196,6 +202,19 @@ void Simulator::respond(const QVector<Response> &responses, qint32 hostBaud, qin
 void Simulator::schedule(qint64 startUs, const QByteArray &frame, double byteUs,
                          const char *direction, const QString &note)
 {
+    Outgoing logged;
+    logged.direction = direction;
+    logged.frame = frame;
+    logged.note = note;
+    if (m_adapter) {
+        // The adapter holds each byte from the moment it has crossed the wire and decides when
+        // the program gets it; the frame is logged when its last byte is on the wire.
+        for (int i = 0; i < frame.size(); ++i)
+            m_adapter->heard(startUs + qint64(std::ceil((i + 1) * byteUs)), frame.at(i));
+        logged.dueUs = startUs + qint64(std::ceil(frame.size() * byteUs));
+        queue(std::move(logged));
+        return;
+    }
     // Hand the bytes to the pty as they would finish crossing the wire, about a millisecond's
     // worth at a time (a USB adapter delivers in similar batches).
     const int perChunk = std::max(1, int(1000.0 / std::max(byteUs, 1e-3)));
@@ -205,15 +224,20 @@ void Simulator::schedule(qint64 startUs, const QByteArray &frame, double byteUs,
         chunk.dueUs = startUs + qint64(std::ceil((offset + length) * byteUs));
         chunk.bytes = frame.mid(offset, length);
         if (offset + length == frame.size()) {
-            chunk.direction = direction;
-            chunk.frame = frame;
-            chunk.note = note;
+            chunk.direction = logged.direction;
+            chunk.frame = logged.frame;
+            chunk.note = logged.note;
         }
-        // Keep the queue in time order (echo may be scheduled before pending replies end).
-        auto at = std::upper_bound(m_outgoing.begin(), m_outgoing.end(), chunk.dueUs,
-                                   [](qint64 due, const Outgoing &o) { return due < o.dueUs; });
-        m_outgoing.insert(at, chunk);
+        queue(std::move(chunk));
     }
+}
+
+void Simulator::queue(Outgoing chunk)
+{
+    // Kept in time order (echo may be scheduled before pending replies end).
+    auto at = std::upper_bound(m_outgoing.begin(), m_outgoing.end(), chunk.dueUs,
+                               [](qint64 due, const Outgoing &o) { return due < o.dueUs; });
+    m_outgoing.insert(at, std::move(chunk));
     sendDue();
 }
 
@@ -224,18 +248,27 @@ void Simulator::sendDue()
         while (!m_outgoing.empty() && m_outgoing.front().dueUs <= now) {
             const Outgoing chunk = m_outgoing.front();
             m_outgoing.pop_front();
-            m_pty->write(chunk.bytes);
+            if (!chunk.bytes.isEmpty())
+                m_pty->write(chunk.bytes);
             if (chunk.direction)
                 m_log.write(now, chunk.direction, chunk.frame, chunk.note);
         }
-        if (m_outgoing.empty())
+        qint64 next = m_outgoing.empty() ? UsbAdapter::kNever : m_outgoing.front().dueUs;
+        if (m_adapter) {
+            for (QByteArray packet = m_adapter->takeDelivery(now); !packet.isEmpty();
+                 packet = m_adapter->takeDelivery(now))
+                m_pty->write(packet);
+            next = std::min(next, m_adapter->nextDeliveryUs());
+        }
+        if (next == UsbAdapter::kNever)
             return;
-        const qint64 wait = m_outgoing.front().dueUs - now;
+        const qint64 wait = next - now;
         if (wait >= kSpinThresholdUs) {
             m_sendTimer->start(int(wait / 1000));
             return;
         }
-        QThread::usleep(static_cast<unsigned long>(wait));
+        if (wait > 0)
+            QThread::usleep(static_cast<unsigned long>(wait));
     }
 }
 

@@ -7,6 +7,7 @@
 #include "sim/hand.h"
 #include "sim/pseudoterminal.h"
 #include "sim/simlog.h"
+#include "sim/usbadapter.h"
 #include "sim/virtualdevice.h"
 #include "sim/virtualfeetechbus.h"
 
@@ -60,6 +61,9 @@ struct SimulatorOptions
     quint32 seed = 1;
     QString logPath;
     qint64 replyDelayUs = 0; // added to every reply's turnaround
+    // --adapter: replies reach the program as through this USB adapter; none: as a pty gives
+    // them (ideal).
+    std::optional<AdapterProfile> adapter;
     QString ptkValues; // "gain=20,..." starting values of the PTK servo
     QVector<FeetechServoSpec> servos;
     QString statePath; // Feetech: keeps EEPROM across runs
@@ -120,6 +124,7 @@ private:
     void respond(const QVector<Response> &responses, qint32 hostBaud, qint64 requestEndUs);
     void schedule(qint64 startUs, const QByteArray &frame, double byteUs, const char *direction,
                   const QString &note);
+    void queue(Outgoing chunk);
     void sendDue();
 
     SimulatorOptions m_options;
@@ -127,6 +132,7 @@ private:
     PseudoTerminal *m_pty = nullptr;
     SimLog m_log;
     std::optional<FaultInjector> m_faults;
+    std::optional<UsbAdapter> m_adapter;
     std::unique_ptr<seriallink::StreamFramer> m_framer;
     QElapsedTimer m_clock;
     QTimer *m_sendTimer = nullptr;

@@ -452,10 +452,10 @@ void MonitorPage::updateStatusLine()
     const QLocale locale;
     QString text;
     if (isRunning()) {
-        text = tr("Streaming · %1 cycles/s · %2 samples/s · %3 missed")
+        text = tr("Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late")
                    .arg(locale.toString(m_stats.cyclesPerSecond, 'f', 0),
                         locale.toString(m_stats.samplesPerSecond, 'f', 0),
-                        locale.toString(m_stats.missed));
+                        locale.toString(m_stats.missed), locale.toString(m_stats.late));
     } else {
         text = tr("Stopped");
     }
