@@ -1,11 +1,13 @@
 // GUI tests of the guard on the Control page against a simulated bus: the banner says what the
 // guard did to a blocked servo, a latched overload is walked through its recovery, and the
-// settings dialog gives per-servo limits with defaults from the registers.
+// settings dialog gives per-servo limits with defaults from the registers; a servo left unlocked
+// is shown and locked on request.
 #include "feetech/overloadguard.h"
 #include "feetechbus.h"
 #include "feetechgui/controlpage.h"
 #include "feetechgui/guardsettingsdialog.h"
 #include "feetechgui/overloadrecoverydialog.h"
+#include "feetechgui/unlockednotice.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -71,6 +73,22 @@ private slots:
         m_page.reset();
         m_client.reset();
         m_simulator.reset();
+    }
+
+    void anUnlockedServoShowsTheNoticeAndLockClosesIt()
+    {
+        UnlockedNotice notice(m_client.get());
+        notice.showServo(m_index);
+        QVERIFY(notice.isHidden()); // locked, as servos power on
+        setSimulatorValue(1, u"lock", 0); // a write cut short before its relock
+        m_client->readServo(m_index);
+        QTRY_VERIFY_WITH_TIMEOUT(!notice.isHidden(), 10000);
+        QVERIFY2(notice.text().contains(QLatin1String("Servo 1's EEPROM is unlocked")),
+                 qPrintable(notice.text()));
+        QCOMPARE(simulatorValue(1, u"lock"), 0); // shown, not acted on
+        notice.lockButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(notice.isHidden(), 10000);
+        QCOMPARE(simulatorValue(1, u"lock"), 1);
     }
 
     void theBannerSaysTheGuardIsOnBeforeAnythingHappens()

@@ -108,6 +108,7 @@ private:
     int calibrateMiddle(const QString &what, const QStringList &operands);
     int factoryReset(const QString &what, const QStringList &operands);
     int reboot(const QString &what, const QStringList &operands);
+    int lock(const QString &what, const QStringList &operands);
     int recover(const QString &what, const QStringList &operands);
 
     // Setting up one motor of a robot (feetechsetupcommand.cpp).

@@ -46,6 +46,7 @@ int FeetechCommand::run(const QStringList &rest)
         {"factory-reset", &FeetechCommand::factoryReset},
         {"reboot", &FeetechCommand::reboot},
         {"recover", &FeetechCommand::recover},
+        {"lock", &FeetechCommand::lock},
         {"setup-motor", &FeetechCommand::setupMotor},
         {"monitor", &FeetechCommand::monitor},
         {"identify", &FeetechCommand::identify},
@@ -170,7 +171,8 @@ void FeetechCommand::warnIfUnlocked(Target &target)
     m_output.err << "servoctl: "
                  << Tr::tr("warning: servo %1's EEPROM is unlocked (lock = 0): a setting written "
                            "to it now survives a power cut. servoctl locks it again after each "
-                           "of its own EEPROM writes (set, load, set-id...).")
+                           "of its own EEPROM writes (set, load, set-id...); to lock it now: "
+                           "servoctl feetech lock --id %1")
                         .arg(servo.id)
                  << '\n';
     m_output.err.flush();

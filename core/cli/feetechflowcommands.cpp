@@ -185,6 +185,17 @@ int FeetechCommand::reboot(const QString &what, const QStringList &operands)
     return report(*target, [&target] { target->device->session().reboot(target->servo); });
 }
 
+int FeetechCommand::lock(const QString &what, const QStringList &operands)
+{
+    allowOptions(what, {QStringLiteral("id")});
+    expectOperands(what, operands, 0, {});
+    auto target = identifyKnownServo(
+        what, Tr::tr("servo %1 is of an unknown model (%2): its EEPROM lock is not known"));
+    if (!target)
+        return ExitDeviceFailure;
+    return report(*target, [&target] { target->device->session().lockEeprom(target->servo); });
+}
+
 int FeetechCommand::recover(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id"), QStringLiteral("check")});

@@ -65,6 +65,7 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech factory-reset --id N [--backup FILE]\n"
     "                                         save a backup profile, then restore factory values\n"
     "  feetech reboot --id N                  restart the servo and wait for it\n"
+    "  feetech lock --id N                    close an EEPROM lock left open, read it back\n"
     "  feetech recover --id N [--check]       after an overload trip: torque off and on, goal\n"
     "                                         at the present position, the overload bit read;\n"
     "                                         still set: the power-cycle steps (exit 1); after\n"

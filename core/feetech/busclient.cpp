@@ -411,6 +411,14 @@ bool BusClient::clearStatus(int index, QString *error)
                           [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
 }
 
+bool BusClient::lockEeprom(int index, QString *error)
+{
+    if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
+        return false;
+    return startOperation(index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &info) { s.lockEeprom(info); });
+}
+
 // ---- live monitoring and control
 
 bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString *error,

@@ -78,6 +78,11 @@ public:
     bool factoryReset(int index, QString *error = nullptr);
     bool reboot(int index, QString *error = nullptr);
     bool clearStatus(int index, QString *error = nullptr);
+    // Whether servo `index`'s EEPROM lock reads open (lock = 0) in its last read; false when it
+    // is locked, not read yet or has no lock register.
+    bool eepromUnlocked(int index) const;
+    // Closes it and reads it back (Session::lockEeprom).
+    bool lockEeprom(int index, QString *error = nullptr);
 
     // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
 

@@ -34,6 +34,15 @@ void BusClient::connectGuard(Session *session)
     });
 }
 
+bool BusClient::eepromUnlocked(int index) const
+{
+    if (index < 0 || index >= servoCount() || !servo(index).read)
+        return false;
+    const model::ParameterModel *model = servo(index).parameters.get();
+    const auto lock = model ? model->deviceValue(QStringLiteral("lock")) : std::nullopt;
+    return lock && *lock == 0;
+}
+
 GuardLimits BusClient::guardLimits(int index) const
 {
     if (index < 0 || index >= servoCount() || !servo(index).info.hasTable())

@@ -113,7 +113,8 @@ enum class Operation {
     HealthCheck, // reads only
     MoveTest, // the health check's confirmed move, with what it changed put back
     Guard, // the guard's hold or torque off, ahead of the queue; reported as a GuardEvent
-    RecoverOverload // torque off and on again after an overload trip, then the status checked
+    RecoverOverload, // torque off and on again after an overload trip, then the status checked
+    LockEeprom // the EEPROM lock closed and read back (a lock left open)
 };
 
 struct OperationResult

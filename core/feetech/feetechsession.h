@@ -72,6 +72,9 @@ public:
     void factoryReset(const feetech::ServoInfo &servo);
     void reboot(const feetech::ServoInfo &servo);
     void clearStatus(const feetech::ServoInfo &servo);
+    // Closes the servo's EEPROM lock (one left open by a write cut short) and reads it back: ok
+    // only when it reads back locked.
+    void lockEeprom(const feetech::ServoInfo &servo);
     // A small, slow, torque-limited wiggle around where the servo stands, then everything it
     // changed put back (see JointIdentify). Between its moves the bus is free for telemetry
     // and All torque off, which stops it with the torque left off.

@@ -63,10 +63,10 @@ QString listLine(const QVector<SimulatedServo> &servos)
     return entries.join(QLatin1String("; "));
 }
 
-const QStringList kBenchCaseCommands {QStringLiteral("power"),       QStringLiteral("break-chain"),
-                                      QStringLiteral("supply"),      QStringLiteral("heat"),
-                                      QStringLiteral("temperature"), QStringLiteral("block"),
-                                      QStringLiteral("unblock"),     QStringLiteral("latch")};
+const QStringList kBenchCaseCommands {
+    QStringLiteral("power"),   QStringLiteral("break-chain"), QStringLiteral("supply"),
+    QStringLiteral("heat"),    QStringLiteral("temperature"), QStringLiteral("block"),
+    QStringLiteral("unblock"), QStringLiteral("latch"),       QStringLiteral("power-cut")};
 
 std::optional<double> numberIn(const QString &text, double low, double high)
 {
@@ -106,7 +106,8 @@ QString runBenchCase(const QString &command, const QStringList &words, VirtualFe
         {QStringLiteral("temperature"), QStringLiteral("temperature SERVO C")},
         {QStringLiteral("block"), QStringLiteral("block SERVO [PERMILLE]")},
         {QStringLiteral("unblock"), QStringLiteral("unblock SERVO")},
-        {QStringLiteral("latch"), QStringLiteral("latch SERVO")}};
+        {QStringLiteral("latch"), QStringLiteral("latch SERVO")},
+        {QStringLiteral("power-cut"), QStringLiteral("power-cut SERVO after-unlock|after-write")}};
     const bool oneWord = command == QLatin1String("break-chain")
         || command == QLatin1String("unblock") || command == QLatin1String("latch");
     const bool optionalSecond = command == QLatin1String("block");
@@ -126,6 +127,15 @@ QString runBenchCase(const QString &command, const QStringList &words, VirtualFe
         bus.setPowered(*index, second == QLatin1String("on"));
         return ok(second == QLatin1String("on") ? Tr::tr("%1 has power").arg(who)
                                                 : Tr::tr("%1 has no power").arg(who));
+    }
+    if (command == QLatin1String("power-cut")) {
+        const auto cut = powerCutFromName(second);
+        if (!cut)
+            return usage(kForms.value(command));
+        bus.armPowerCut(*index, *cut);
+        return ok(*cut == PowerCut::AfterUnlock
+                      ? Tr::tr("%1 loses power once its EEPROM lock is opened").arg(who)
+                      : Tr::tr("%1 loses power after its next EEPROM write").arg(who));
     }
     if (command == QLatin1String("break-chain")) {
         bus.setChainBreakAfter(*index);
@@ -237,7 +247,8 @@ QString simulatorCommandHelp()
                   "release | plug ID:MODEL[@BAUD] | unplug SERVO | set-id SERVO ID | list | "
                   "power-cycle | power SERVO on|off | break-chain SERVO|none | supply VOLTS | "
                   "heat SERVO C_PER_S | temperature SERVO C | block SERVO [PERMILLE] | "
-                  "unblock SERVO | latch SERVO | help; SERVO is an ID or a place #N from list");
+                  "unblock SERVO | latch SERVO | power-cut SERVO after-unlock|after-write | "
+                  "help; SERVO is an ID or a place #N from list");
 }
 
 QString runSimulatorCommand(const QString &line, Simulator &simulator)

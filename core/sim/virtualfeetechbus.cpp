@@ -248,6 +248,14 @@ bool VirtualFeetechBus::setPowered(int index, bool powered)
     return true;
 }
 
+bool VirtualFeetechBus::armPowerCut(int index, PowerCut cut)
+{
+    if (index < 0 || index >= servoCount())
+        return false;
+    m_slots.at(std::size_t(index)).powerCut = cut;
+    return true;
+}
+
 bool VirtualFeetechBus::setChainBreakAfter(int index)
 {
     if (index < -1 || index >= servoCount())
@@ -358,6 +366,7 @@ QVector<Response> VirtualFeetechBus::handleFrame(const QByteArray &frame, qint32
         }
         QVector<QByteArray> replies;
         QVector<qint64> delays;
+        std::vector<int> losePower;
         for (auto &[slot, silent] : targets) {
             const qint64 delay = slot->servo.returnDelayUs();
             const auto reply = slot->servo.execute(*packet, broadcast || silent);
@@ -367,8 +376,15 @@ QVector<Response> VirtualFeetechBus::handleFrame(const QByteArray &frame, qint32
                 replies.append(*reply);
                 delays.append(delay);
             }
+            if (cutsPower(slot->powerCut, slot->servo, *packet))
+                losePower.push_back(int(slot - m_slots.data()));
         }
         answer(replies, delays);
+        // Its answer is on its way; then the power goes, before the next frame of the sequence.
+        for (const int index : losePower) {
+            m_slots.at(std::size_t(index)).powerCut = PowerCut::None;
+            setPowered(index, false);
+        }
     }
     saveIfChanged();
     return responses;

@@ -4,6 +4,7 @@
 
 #include "feetech/feetechpacket.h"
 #include "sim/hand.h"
+#include "sim/powercut.h"
 #include "sim/virtualdevice.h"
 #include "sim/virtualfeetechservo.h"
 
@@ -79,6 +80,9 @@ public:
     // powered again it starts as after a power cycle. A broken daisy chain after place `index`
     // (-1: whole) takes signal and power from every servo after it.
     bool setPowered(int index, bool powered); // false for a bad index
+    // The servo at `index` loses power in the middle of its next EEPROM write sequence (see
+    // PowerCut); `power SERVO on` brings it back. False for a bad index.
+    bool armPowerCut(int index, PowerCut cut);
     bool isPowered(int index) const; // its own switch and the chain
     bool setChainBreakAfter(int index); // -1 mends; false for an index outside -1..count-1
     int chainBreakAfter() const { return m_chainReach < 0 ? -1 : m_chainReach - 1; }
@@ -112,6 +116,7 @@ private:
         qint64 rebootUntilUs = 0;
         quint64 savedRevision = 0;
         bool switchedOn = true;
+        PowerCut powerCut = PowerCut::None; // armed by armPowerCut, once
     };
 
     // Adds a servo; one that shares an ID and rate with servos already there starts with its

@@ -14,6 +14,7 @@
 #include "feetechgui/registertablemodel.h"
 #include "feetechgui/robotactions.h"
 #include "feetechgui/scandialog.h"
+#include "feetechgui/unlockednotice.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -129,6 +130,9 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_header->setWordWrap(true);
     m_header->setTextInteractionFlags(Qt::TextSelectableByMouse);
     rightLayout->addWidget(m_header);
+    m_unlocked = new UnlockedNotice(client, right);
+    connect(m_unlocked, &UnlockedNotice::problem, this, &FeetechWorkspace::problem);
+    rightLayout->addWidget(m_unlocked);
 
     auto *actions = new QHBoxLayout;
     m_changeId = actionButton(tr("Change ID…"), "changeIdButton",
@@ -465,6 +469,7 @@ void FeetechWorkspace::showServo()
     const int index = currentIndex();
     if (m_control->servo() != index)
         m_control->setServo(index);
+    m_unlocked->showServo(index);
     model::ParameterModel *parameters = m_client->parameters(index);
     if (m_settings->parameterModel() != parameters) {
         if (m_settings->parameterModel())

@@ -24,6 +24,7 @@ class QTimer;
 class QTreeWidget;
 class RegisterTableModel;
 class RobotActions;
+class UnlockedNotice;
 
 namespace feetech {
 class BusClient;
@@ -63,6 +64,7 @@ public:
     HealthPage *healthPage() const { return m_health; }
     QPushButton *allTorqueOffButton() const { return m_allTorqueOff; }
     RobotActions *robotActions() const { return m_robot; }
+    UnlockedNotice *unlockedNotice() const { return m_unlocked; }
 
 signals:
     void problem(const QString &message);
@@ -101,6 +103,7 @@ private:
     QLabel *m_scanState = nullptr;
 
     QLabel *m_header = nullptr;
+    UnlockedNotice *m_unlocked = nullptr;
     QPushButton *m_changeId = nullptr;
     QPushButton *m_changeBaud = nullptr;
     QPushButton *m_calibrate = nullptr;

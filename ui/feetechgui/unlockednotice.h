@@ -1,0 +1,37 @@
+// A bar above a servo's pages when its EEPROM lock reads open, with a button that closes it.
+#pragma once
+
+#include <QFrame>
+
+class QLabel;
+class QPushButton;
+
+namespace feetech {
+class BusClient;
+}
+
+// A servo whose lock is open (a write cut short by a power cut or an unplugged cable, another
+// tool) keeps whatever anything writes to its EEPROM. The bar says so as soon as a read shows
+// it, and Lock closes it and reads it back; nothing is written until the user asks.
+class UnlockedNotice : public QFrame
+{
+    Q_OBJECT
+
+public:
+    explicit UnlockedNotice(feetech::BusClient *client, QWidget *parent = nullptr);
+
+    void showServo(int index); // -1: none
+    QPushButton *lockButton() const { return m_lock; }
+    QString text() const;
+
+signals:
+    void problem(const QString &message);
+
+private:
+    void refresh();
+
+    feetech::BusClient *m_client = nullptr;
+    int m_index = -1;
+    QLabel *m_text = nullptr;
+    QPushButton *m_lock = nullptr;
+};
