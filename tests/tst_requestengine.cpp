@@ -73,6 +73,17 @@ Transaction query(quint8 command, Transaction::Priority priority, QVector<QStrin
     return transaction;
 }
 
+// A PTK write frame (nothing answers it) whose outcome lands in *result.
+Transaction noReplyWrite(quint16 gain, TransactionResult *result)
+{
+    Transaction write;
+    write.request = ptk::encodeRequest({1, gain, 0});
+    write.done = [result](const TransactionResult &outcome) {
+        *result = outcome;
+    };
+    return write;
+}
+
 // A scan's PING: 300 µs for the first byte of the answer, then all the time it needs.
 Transaction firstByteQuery(QVector<QString> *order, TransactionResult *result)
 {
@@ -264,12 +275,8 @@ private slots:
     {
         ScriptedTransport transport;
         auto requests = engine(transport);
-        Transaction write;
-        write.request = ptk::encodeRequest({1, 20, 0});
         TransactionResult result = unfinished();
-        write.done = [&](const TransactionResult &outcome) {
-            result = outcome;
-        };
+        Transaction write = noReplyWrite(20, &result);
         requests->submit(write);
         QTRY_VERIFY(result.ok());
         QCOMPARE(requests->counters().timeouts, 0);
@@ -321,7 +328,9 @@ private slots:
             return true; // would take anything
         };
         TransactionResult result = unfinished();
-        asked.done = [&](const TransactionResult &outcome) { result = outcome; };
+        asked.done = [&](const TransactionResult &outcome) {
+            result = outcome;
+        };
         requests->submit(asked);
         QTRY_COMPARE(result.failure, Failure::Timeout);
         QSignalSpy log(requests.get(), &RequestEngine::packetLogged);
@@ -406,12 +415,8 @@ private slots:
         seriallink::EngineTiming patient = requests->timing();
         patient.replyTimeout = std::chrono::seconds(3);
         QSignalSpy log(requests.get(), &RequestEngine::packetLogged);
-        Transaction write;
-        write.request = ptk::encodeRequest({1, 20, 0});
         TransactionResult result = unfinished();
-        write.done = [&](const TransactionResult &outcome) {
-            result = outcome;
-        };
+        Transaction write = noReplyWrite(20, &result);
         // The adapter gives the echo back only after the write's wait: it is still the echo.
         requests->submit(write);
         QTRY_VERIFY(result.ok());
