@@ -1,13 +1,13 @@
 // servobench: the desktop application's entry point.
+#include "common/languagemenu.h"
 #include "common/startupprobe.h"
 #include "mainwindow.h"
+#include "util/translations.h"
 #include "version.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QLibraryInfo>
-#include <QLocale>
-#include <QTranslator>
+#include <QSettings>
 
 int main(int argc, char *argv[])
 {
@@ -16,10 +16,8 @@ int main(int argc, char *argv[])
     QApplication::setOrganizationName(QStringLiteral("ServoBench"));
     QApplication::setApplicationVersion(QStringLiteral(SERVOBENCH_VERSION));
 
-    QTranslator translator;
-    if (translator.load(QLocale(), QStringLiteral("servobench"), QStringLiteral("_"),
-                        QStringLiteral(":/i18n")))
-        QApplication::installTranslator(&translator);
+    // The language chosen in View > Language, or the system's.
+    util::installTranslations(QSettings().value(LanguageMenu::settingsKey()).toString());
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

@@ -1,5 +1,6 @@
 // servoctl: the command-line tool's entry point.
 #include "cli/servoctl.h"
+#include "util/translations.h"
 #include "version.h"
 
 #include <QCoreApplication>
@@ -12,6 +13,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("servoctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(SERVOBENCH_VERSION));
+    util::installTranslations(); // the system's language (LANG, LC_ALL, LC_MESSAGES)
     QTextStream out(stdout);
     QTextStream err(stderr);
     return cli::runServoctl(QCoreApplication::arguments().mid(1), out, err);

@@ -7,7 +7,8 @@
 #
 # Environment: FUZZ_PARALLEL (targets run at once, default 1; each is one process, one worker),
 # FUZZ_MAX_SECONDS (stop a target after this long even short of EXECUTIONS), CC/CXX (default
-# clang-14/clang++-14). Everything runs under nice -n 19.
+# clang-14/clang++-14), FUZZ_CAMPAIGN (its logs and tables, default build-fuzz/campaign: another
+# directory lets a second campaign run beside the first). Everything runs under nice -n 19.
 set -euo pipefail
 
 runs=${1:-10000000}
@@ -15,7 +16,7 @@ shift || true
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
 build=$root/build-fuzz
-campaign=$build/campaign
+campaign=${FUZZ_CAMPAIGN:-$build/campaign}
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(dirname "$root")}
 
 if [[ $# -gt 0 ]]; then

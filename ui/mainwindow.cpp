@@ -2,6 +2,7 @@
 #include "mainwindow.h"
 
 #include "common/connectionbar.h"
+#include "common/languagemenu.h"
 #include "common/packetlogdock.h"
 #include "common/simulatordock.h"
 #include "feetech/busclient.h"
@@ -22,6 +23,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProcess>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
@@ -243,6 +245,10 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_packetLog->toggleViewAction());
     m_viewMenu->addAction(m_connectionBar->toggleViewAction());
+    m_viewMenu->addSeparator();
+    auto *language = new LanguageMenu(this);
+    m_viewMenu->addMenu(language);
+    connect(language, &LanguageMenu::restartRequested, this, &MainWindow::restart);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *about = help->addAction(tr("&About ServoBench"), this, &MainWindow::showAbout);
@@ -499,6 +505,15 @@ void MainWindow::chooseProfileToLoad()
 void MainWindow::loadProfile(const QString &path)
 {
     m_ptkWorkspace->loadProfile(path);
+}
+
+void MainWindow::restart()
+{
+    // Closed as Quit closes it (unapplied changes are asked about), then started again with
+    // the same arguments.
+    if (close())
+        QProcess::startDetached(QCoreApplication::applicationFilePath(),
+                                QCoreApplication::arguments().mid(1));
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

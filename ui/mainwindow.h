@@ -75,6 +75,8 @@ protected:
 private:
     void createMenus();
     void showAbout();
+    // Closes the window as Quit does and, once it is closed, starts ServoBench again.
+    void restart();
     void connectRequested();
     void disconnectRequested();
     void onStatusChanged(const seriallink::ConnectionStatus &status);

@@ -3,8 +3,6 @@
 
 #include "util/hex.h"
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file (lupdate needs it spelled out).
@@ -14,6 +12,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace cli {
 
 Arguments::Arguments(const QStringList &raw, const QSet<QString> &valueOptions,
                      const QSet<QString> &flagOptions)

@@ -14,8 +14,6 @@
 
 #include <algorithm>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -23,6 +21,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 void allowOnly(const Arguments &args, const QStringList &allowed, const QString &what)
 {

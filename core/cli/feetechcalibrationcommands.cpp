@@ -23,8 +23,6 @@
 #include <unistd.h>
 #endif
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -32,6 +30,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 // How often the live table is redrawn on a terminal.
 constexpr int kLiveRefreshMs = 100;

@@ -10,8 +10,6 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -21,6 +19,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace cli {
 
 int FeetechCommand::calibration(const QString &what, const QStringList &operands)
 {

@@ -13,8 +13,6 @@
 
 #include <limits>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -24,6 +22,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace cli {
 
 int FeetechCommand::run(const QStringList &rest)
 {

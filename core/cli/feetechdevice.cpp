@@ -10,8 +10,6 @@
 
 #include <algorithm>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -19,6 +17,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 // Long enough for the slowest flow: a factory reset that looks for the servo at every rate, or
 // a reboot that waits for the servo to come back.

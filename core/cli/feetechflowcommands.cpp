@@ -10,8 +10,6 @@
 #include <QDir>
 #include <QJsonObject>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -21,6 +19,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace cli {
 
 // Runs one flow and reports it: its message, the servo as it is reached afterwards.
 int FeetechCommand::report(Target &target, const std::function<void()> &start,

@@ -3,8 +3,6 @@
 
 #include <QCoreApplication>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -12,6 +10,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 QString measuredText(const std::optional<double> &value, int decimals, const QString &unit)
 {

@@ -11,8 +11,6 @@
 
 #include <algorithm>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -20,6 +18,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 constexpr double kDefaultMonitorRate = 50.0;
 

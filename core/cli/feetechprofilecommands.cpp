@@ -11,8 +11,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -22,6 +20,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace cli {
 
 // The servo's profile values as read now; registers holding a value outside their range
 // are left out with a warning, since a profile could not be loaded with them.

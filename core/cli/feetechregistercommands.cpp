@@ -7,8 +7,6 @@
 
 #include <algorithm>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -16,6 +14,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 struct Assignment
 {

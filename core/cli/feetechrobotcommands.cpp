@@ -8,8 +8,6 @@
 
 #include <algorithm>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -17,6 +15,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 QJsonObject outcomeJson(const feetech::ProgramOutcome &outcome)
 {

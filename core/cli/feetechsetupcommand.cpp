@@ -9,8 +9,6 @@
 #include <QJsonArray>
 #include <QJsonObject>
 
-namespace cli {
-
 namespace {
 
 // The servoctl translation context, as in every servoctl file.
@@ -18,6 +16,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 QJsonObject addressJson(const ServoInfo &servo)
 {

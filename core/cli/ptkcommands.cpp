@@ -18,14 +18,18 @@
 
 #include <csignal>
 
-namespace cli {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 const QString kFamily = QStringLiteral("ptk");
 // Long enough for a full sweep with every retry, or an Apply with its gaps and read-back.

@@ -20,8 +20,6 @@
 
 #include <functional>
 
-namespace cli {
-
 namespace {
 
 // Translation context for the messages of this file.
@@ -29,6 +27,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
+
+} // namespace
+
+namespace cli {
+
+namespace {
 
 const char *const kUsage = QT_TRANSLATE_NOOP(
     "servoctl",

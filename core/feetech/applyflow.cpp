@@ -10,14 +10,18 @@
 #include <algorithm>
 #include <memory>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 const QString kIdKey = QStringLiteral("id");
 const QString kBaudKey = QStringLiteral("baud_rate");

@@ -7,14 +7,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(ArmCalibration)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // Why nothing may be written from this recording, whichever the order; empty when it may.
 QString recordingRefusal(const JointRecording &joint)

@@ -9,14 +9,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // Whether `why` refuses the request (it is not empty); it goes to *error then.
 bool refused(const QString &why, QString *error)

@@ -4,8 +4,6 @@
 
 #include <QCoreApplication>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -14,6 +12,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace feetech {
 
 void BusClient::connectGuard(Session *session)
 {

@@ -3,8 +3,6 @@
 
 #include <QCoreApplication>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -13,6 +11,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace feetech {
 
 QString BusClient::identifyBlocker(int index) const
 {

@@ -3,14 +3,18 @@
 
 #include <QCoreApplication>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 bool isMotorWork(Operation operation)
 {

@@ -9,14 +9,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(BusDoctor)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 constexpr quint8 kVoltageErrorBit = 0x01;
 

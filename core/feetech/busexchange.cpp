@@ -13,14 +13,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 constexpr std::size_t kLatencyWindow = 8;
 // Blocks at most this far apart are read in one READ: at any rate, 16 unused bytes take less

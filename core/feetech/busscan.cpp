@@ -9,14 +9,18 @@
 #include <algorithm>
 #include <memory>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // After the first byte of the broadcast probe's answers: every servo at the rate answers
 // within its return delay, so the rest of the collided bytes are in well before this.

@@ -8,12 +8,6 @@
 #include <QJsonArray>
 #include <QSet>
 
-namespace feetech {
-
-using seriallink::DecodedFrame;
-using seriallink::hexByte;
-using seriallink::StreamItem;
-
 namespace {
 
 // The context the decoder's messages have always been translated in.
@@ -21,6 +15,16 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Decoder)
 };
+
+} // namespace
+
+namespace feetech {
+
+using seriallink::DecodedFrame;
+using seriallink::hexByte;
+using seriallink::StreamItem;
+
+namespace {
 
 QString idText(quint8 id)
 {

@@ -12,8 +12,6 @@
 #include <algorithm>
 #include <memory>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -22,6 +20,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace feetech {
 
 Session::Session(const SessionTiming &timing, QObject *parent)
     : QObject(parent)

@@ -5,8 +5,6 @@
 
 #include <QCoreApplication>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -15,6 +13,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace feetech {
 
 void Session::checkHealth(const QVector<ServoInfo> &servos, int reads)
 {

@@ -6,8 +6,6 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -16,6 +14,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace feetech {
 
 // ---- identify
 

@@ -10,14 +10,18 @@
 #include <algorithm>
 #include <memory>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechGuard)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // Names the guard's own stream: no client asks for this one.
 constexpr quint64 kGuardStream = ~quint64(0);

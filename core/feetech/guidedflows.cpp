@@ -8,8 +8,6 @@
 
 #include <memory>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -18,6 +16,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace feetech {
 
 GuidedFlows::GuidedFlows(BusExchange &bus, QObject *parent)
     : QObject(parent)

@@ -11,16 +11,20 @@
 
 #include <algorithm>
 
-namespace feetech {
-
-using namespace registerkeys;
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+} // namespace
+
+namespace feetech {
+
+using namespace registerkeys;
+
+namespace {
 
 // The registers the verdict needs, all in EEPROM near the start of every family's table.
 const QStringList kLimitKeys {QStringLiteral("firmware_major"),

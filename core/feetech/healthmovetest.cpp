@@ -13,16 +13,20 @@
 
 #include <cmath>
 
-namespace feetech {
-
-using namespace registerkeys;
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+} // namespace
+
+namespace feetech {
+
+using namespace registerkeys;
+
+namespace {
 
 constexpr qint32 kPositionMode = 0;
 

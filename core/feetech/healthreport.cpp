@@ -9,14 +9,18 @@
 #include <QJsonDocument>
 #include <QLocale>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(HealthReport)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 QString escaped(const QString &text)
 {

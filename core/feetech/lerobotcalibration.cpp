@@ -14,14 +14,18 @@
 #include <algorithm>
 #include <cmath>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(LeRobotCalibration)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 constexpr char kIdKey[] = "id";
 constexpr char kDriveModeKey[] = "drive_mode";

@@ -7,14 +7,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(MotorSetup)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // Reads of the feedback block that decide whether one servo or two answer at an ID: two servos
 // at one ID answer each read in the same instant, and their positions differ.

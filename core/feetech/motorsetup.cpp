@@ -8,14 +8,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(MotorSetup)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // Find, ID, rate, settings written, settings read back.
 constexpr int kSetupSteps = 5;

@@ -6,14 +6,18 @@
 #include <algorithm>
 #include <cmath>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechGuard)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 constexpr double kFallbackLoadPercent = 80.0;
 constexpr double kFallbackMaxTemperature = 70.0;

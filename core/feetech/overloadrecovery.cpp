@@ -7,8 +7,6 @@
 
 #include <QCoreApplication>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -17,6 +15,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace feetech {
 
 Step recoverOverload(BusExchange &bus, std::shared_ptr<ServoInfo> servo, bool checkOnly,
                      std::shared_ptr<std::optional<bool>> latched)

@@ -11,14 +11,18 @@
 #include <QCoreApplication>
 #include <QTimer>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(PortProbe)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 constexpr qint32 kPtkBaud = 115200;
 

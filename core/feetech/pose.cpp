@@ -16,8 +16,6 @@
 #include <cmath>
 #include <iterator>
 
-namespace feetech {
-
 namespace {
 
 // Translation context for the messages of this file.
@@ -25,6 +23,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Pose)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // A whole JSON number, or nothing (strings, booleans, fractions, absurd magnitudes).
 std::optional<qint64> wholeNumber(const QJsonValue &value)

@@ -12,6 +12,16 @@
 #include <cmath>
 #include <map>
 
+namespace {
+
+// Translation context for the messages of this file.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(RegisterTable)
+};
+
+} // namespace
+
 namespace feetech {
 
 QString familyKey(Family family)
@@ -34,6 +44,13 @@ QString familyName(Family family)
     return familyKey(family).toUpper();
 }
 
+QString tableText(const QString &english)
+{
+    return english.isEmpty()
+        ? english
+        : QCoreApplication::translate("FeetechRegister", english.toUtf8().constData());
+}
+
 std::optional<Family> familyFromKey(QStringView key)
 {
     for (const Family family : kAllFamilies) {
@@ -44,12 +61,6 @@ std::optional<Family> familyFromKey(QStringView key)
 }
 
 namespace {
-
-// Translation context for the messages of this file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(RegisterTable)
-};
 
 // Collects the first problem found; the loaders stop at it.
 class Problems

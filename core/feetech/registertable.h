@@ -17,6 +17,11 @@ constexpr Family kAllFamilies[] = {Family::Scs, Family::Sts, Family::Sms, Family
 
 QString familyKey(Family family); // "scs", "sts", "sms", "hls"
 QString familyName(Family family); // "SCS", "STS", ...
+
+// A text of a shipped register table (a label, choice, bit name, note or unit) in the user's
+// language. The tables hold English, which the code also matches on ("Load"); only what is shown
+// goes through this. resources/translations/datastrings.cpp lists the texts for lupdate.
+QString tableText(const QString &english);
 std::optional<Family> familyFromKey(QStringView key);
 
 enum class Storage { Eeprom, Ram };

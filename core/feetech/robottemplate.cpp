@@ -12,14 +12,18 @@
 
 #include <cmath>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(RobotTemplate)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 constexpr char kMarker[] = "servobench-robot";
 constexpr int kVersion = 1;
@@ -292,6 +296,16 @@ QVector<RobotTemplate> availableRobotTemplates(QStringList *problems)
             problems->append(error);
     }
     return templates;
+}
+
+QString robotDisplayName(const QString &name)
+{
+    return QCoreApplication::translate("RobotTemplate", name.toUtf8().constData());
+}
+
+QString jointDisplayName(const QString &name)
+{
+    return QCoreApplication::translate("Joint", name.toUtf8().constData());
 }
 
 } // namespace feetech

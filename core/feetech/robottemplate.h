@@ -49,6 +49,12 @@ std::optional<RobotTemplate> loadRobotTemplate(const QString &path, QString *err
 // Saves atomically; false and *error (naming the file) when it could not.
 bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, QString *error);
 
+// A shipped template's name ("SO-101 follower arm") or joint name ("shoulder_pan") as the user's
+// language shows it. Files, calibration data and lookups keep the names as they are; only what
+// is shown goes through these. resources/translations/datastrings.cpp lists them for lupdate.
+QString robotDisplayName(const QString &name);
+QString jointDisplayName(const QString &name);
+
 // Where templates a user saves live: <app data>/robots (ServoBench lists its *.json files).
 QString userRobotTemplateFolder();
 // The built-in templates, then every valid template in userRobotTemplateFolder() by file name;

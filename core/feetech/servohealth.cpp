@@ -10,14 +10,18 @@
 #include <algorithm>
 #include <cmath>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(ServoHealth)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 QJsonValue optionalJson(const std::optional<double> &value)
 {

@@ -8,8 +8,6 @@
 #include <cmath>
 #include <limits>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
@@ -17,11 +15,11 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(FeetechParameters)
 };
 
-QString registerLabel(const Register &reg)
-{
-    // Labels come from the register tables; a translation can be supplied under this context.
-    return QCoreApplication::translate("FeetechRegister", reg.label.toUtf8().constData());
-}
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 QString groupFor(const Register &reg, const QVector<SettingsGroup> &groups)
 {
@@ -36,9 +34,9 @@ model::Definition definitionFor(const Register &reg, const QVector<SettingsGroup
 {
     model::Definition definition;
     definition.key = reg.key;
-    definition.label = registerLabel(reg);
+    definition.label = tableText(reg.label);
     definition.group = groupFor(reg, groups);
-    definition.unit = reg.unit;
+    definition.unit = tableText(reg.unit);
     definition.scale = reg.scale;
     definition.minimum = reg.minimum;
     definition.maximum = reg.maximum;
@@ -46,8 +44,8 @@ model::Definition definitionFor(const Register &reg, const QVector<SettingsGroup
     definition.storage =
         reg.storage == Storage::Eeprom ? model::Storage::Eeprom : model::Storage::Ram;
     for (const Choice &choice : reg.choices)
-        definition.choices.append({choice.value, choice.label});
-    definition.note = reg.note;
+        definition.choices.append({choice.value, tableText(choice.label)});
+    definition.note = tableText(reg.note);
     return definition;
 }
 
@@ -157,7 +155,9 @@ std::optional<qint32> parseValue(const Register &reg, const QString &text, QStri
     const QString trimmed = text.trimmed();
     std::optional<qint64> parsed;
     for (const Choice &choice : reg.choices) {
-        if (choice.label.compare(trimmed, Qt::CaseInsensitive) == 0)
+        // In English, as the table has it and scripts write it, or as the user's language shows it.
+        if (choice.label.compare(trimmed, Qt::CaseInsensitive) == 0
+            || tableText(choice.label).compare(trimmed, Qt::CaseInsensitive) == 0)
             parsed = choice.value;
     }
     bool whole = false;
@@ -214,7 +214,7 @@ QString bitNames(const Register &reg, qint32 value)
             continue;
         const auto named = std::find_if(reg.bits.begin(), reg.bits.end(),
                                         [bit](const BitName &b) { return b.bit == bit; });
-        names.append(named != reg.bits.end() ? named->label : Tr::tr("bit %1").arg(bit));
+        names.append(named != reg.bits.end() ? tableText(named->label) : Tr::tr("bit %1").arg(bit));
     }
     return names.isEmpty() ? Tr::tr("none") : names.join(QStringLiteral(", "));
 }
@@ -223,13 +223,13 @@ QString displayValue(const Register &reg, qint32 value)
 {
     for (const Choice &choice : reg.choices) {
         if (choice.value == value)
-            return choice.label;
+            return tableText(choice.label);
     }
     if (!reg.bits.isEmpty())
         return bitNames(reg, value);
     const double real = double(value) * reg.scale;
     QString number = reg.scale == 1.0 ? QString::number(value) : QString::number(real, 'g', 10);
-    return reg.unit.isEmpty() ? number : number + u' ' + reg.unit;
+    return reg.unit.isEmpty() ? number : number + u' ' + tableText(reg.unit);
 }
 
 } // namespace feetech

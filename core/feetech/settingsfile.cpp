@@ -13,14 +13,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(SettingsFile)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 const QString kRobotMarker = QStringLiteral("servobench-robot");
 const QString kOffsetKey = QStringLiteral("position_offset");

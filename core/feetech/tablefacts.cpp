@@ -8,14 +8,18 @@
 
 #include <algorithm>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(RegisterTable)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 constexpr std::array<std::pair<TorqueMode, const char *>, 4> kTorqueModeKeys {{
     {TorqueMode::Off, "off"},

@@ -8,14 +8,18 @@
 
 #include <chrono>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechTelemetry)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 struct QuantityInfo
 {

@@ -11,14 +11,18 @@
 #include <limits>
 #include <memory>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 // A rate above this is "as fast as the bus allows": Qt timers count whole milliseconds.
 constexpr double kFastestTimedRate = 1000.0;

@@ -6,14 +6,18 @@
 
 #include <QCoreApplication>
 
-namespace feetech {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+} // namespace
+
+namespace feetech {
+
+namespace {
 
 const QString kTorqueKey = QStringLiteral("torque_enable");
 const QString kGoalKey = QStringLiteral("goal_position");

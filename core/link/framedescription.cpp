@@ -3,8 +3,6 @@
 
 #include <QCoreApplication>
 
-namespace seriallink {
-
 namespace {
 
 // The context the decoder's messages have always been translated in.
@@ -12,6 +10,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Decoder)
 };
+
+} // namespace
+
+namespace seriallink {
+
+namespace {
 
 DecodedFrame stray(const StreamItem &item)
 {

@@ -6,8 +6,6 @@
 #include <QCoreApplication>
 #include <QDateTime>
 
-namespace seriallink {
-
 namespace {
 
 struct Tr
@@ -16,6 +14,8 @@ struct Tr
 };
 
 } // namespace
+
+namespace seriallink {
 
 LinkSession::LinkSession(const FrameFormat &format, RequestEngine::Describer describer,
                          QObject *parent)

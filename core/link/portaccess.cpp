@@ -10,14 +10,18 @@
 #include <unistd.h>
 #endif
 
-namespace seriallink {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(PortAccess)
 };
+
+} // namespace
+
+namespace seriallink {
+
+namespace {
 
 bool userMayOpen(const QString &portPath)
 {

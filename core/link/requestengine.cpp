@@ -9,16 +9,20 @@
 
 #include <algorithm>
 
-namespace seriallink {
-
-Q_LOGGING_CATEGORY(lcRaw, "servobench.link.raw", QtWarningMsg)
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(RequestEngine)
 };
+
+} // namespace
+
+namespace seriallink {
+
+Q_LOGGING_CATEGORY(lcRaw, "servobench.link.raw", QtWarningMsg)
+
+namespace {
 
 // Counters reach the GUI at most this often; a fast bus would otherwise flood it.
 constexpr std::chrono::milliseconds kCounterPublishInterval {100};

@@ -9,14 +9,18 @@
 #include <algorithm>
 #include <vector>
 
-namespace seriallink {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(RequestEngine)
 };
+
+} // namespace
+
+namespace seriallink {
+
+namespace {
 
 // How long ended transactions are offered late answers.
 constexpr qint64 kLateAnswerMemoryUs = 1'000'000;

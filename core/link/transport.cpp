@@ -6,10 +6,6 @@
 
 #include <poll.h>
 
-namespace seriallink {
-
-Q_LOGGING_CATEGORY(lcLink, "servobench.link", QtWarningMsg)
-
 namespace {
 
 struct Tr
@@ -18,6 +14,10 @@ struct Tr
 };
 
 } // namespace
+
+namespace seriallink {
+
+Q_LOGGING_CATEGORY(lcLink, "servobench.link", QtWarningMsg)
 
 SerialTransport::SerialTransport(QObject *parent)
     : Transport(parent)

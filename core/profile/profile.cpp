@@ -11,8 +11,6 @@
 
 #include <cmath>
 
-namespace profile {
-
 namespace {
 
 // Translation context for the messages of this file.
@@ -20,6 +18,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Profile)
 };
+
+} // namespace
+
+namespace profile {
+
+namespace {
 
 constexpr char kFamilyKey[] = "family";
 constexpr char kModelKey[] = "model";

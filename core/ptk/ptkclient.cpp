@@ -6,14 +6,18 @@
 #include <QCoreApplication>
 #include <QDateTime>
 
-namespace ptk {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(PtkClient)
 };
+
+} // namespace
+
+namespace ptk {
+
+namespace {
 
 constexpr qint64 kRateWindowMs = 2000;
 

@@ -6,8 +6,6 @@
 #include <QCoreApplication>
 #include <QJsonArray>
 
-namespace ptk {
-
 namespace {
 
 // The context the decoder's messages have always been translated in.
@@ -15,6 +13,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Decoder)
 };
+
+} // namespace
+
+namespace ptk {
+
+namespace {
 
 using seriallink::DecodedFrame;
 using seriallink::hexByte;

@@ -6,14 +6,18 @@
 
 #include <QCoreApplication>
 
-namespace ptk {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(PtkSession)
 };
+
+} // namespace
+
+namespace ptk {
+
+namespace {
 
 constexpr int kQueryCount = int(std::tuple_size_v<std::decay_t<decltype(queryLayouts())>>);
 constexpr int kWriteCount = int(std::tuple_size_v<std::decay_t<decltype(writeLayouts())>>);

@@ -5,14 +5,16 @@
 #include <QCoreApplication>
 #include <QStringList>
 
-namespace sim {
-
 namespace {
+
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Faults)
 };
+
 } // namespace
+
+namespace sim {
 
 std::optional<FaultSettings> FaultSettings::parse(const QString &text, QString *error)
 {

@@ -8,14 +8,18 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sim {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Hand)
 };
+
+} // namespace
+
+namespace sim {
+
+namespace {
 
 bool fullCircle(const VirtualFeetechServo &servo)
 {

@@ -13,14 +13,18 @@
 #include <termios.h>
 #include <unistd.h>
 
-namespace sim {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(PseudoTerminal)
 };
+
+} // namespace
+
+namespace sim {
+
+namespace {
 
 // While no client holds the slave, the master reads EIO: look again this often.
 constexpr int kHangupPollMs = 20;

@@ -12,14 +12,18 @@
 
 #include <cmath>
 
-namespace sim {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servosim)
 };
+
+} // namespace
+
+namespace sim {
+
+namespace {
 
 QString ok(const QString &text)
 {

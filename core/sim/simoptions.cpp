@@ -5,14 +5,16 @@
 
 #include <QCoreApplication>
 
-namespace sim {
-
 namespace {
+
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servosim)
 };
+
 } // namespace
+
+namespace sim {
 
 QString simulatorUsage()
 {

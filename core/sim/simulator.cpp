@@ -12,14 +12,18 @@
 #include <sys/prctl.h>
 #endif
 
-namespace sim {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(Simulator)
 };
+
+} // namespace
+
+namespace sim {
+
+namespace {
 
 // Motion and temperature advance at least this often even when the host is silent.
 constexpr int kTickMs = 10;

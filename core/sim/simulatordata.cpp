@@ -10,14 +10,18 @@
 #include <cmath>
 #include <limits>
 
-namespace sim {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(SimulatorData)
 };
+
+} // namespace
+
+namespace sim {
+
+namespace {
 
 constexpr int kFormat = 1;
 constexpr char kBuiltInPath[] = ":/feetech/simulator.json";

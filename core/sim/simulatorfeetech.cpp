@@ -6,14 +6,18 @@
 #include <QFileInfo>
 #include <QHash>
 
-namespace sim {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servosim)
 };
+
+} // namespace
+
+namespace sim {
+
+namespace {
 
 // Where an SO-100/SO-101 arm's horns rest when it lies folded, in present positions; a joint
 // the table does not name rests at the middle.

@@ -14,16 +14,20 @@
 
 #include <algorithm>
 
-namespace sim {
-
-using feetech::Instruction;
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(VirtualFeetechBus)
 };
+
+} // namespace
+
+namespace sim {
+
+using feetech::Instruction;
+
+namespace {
 
 QString baudList()
 {

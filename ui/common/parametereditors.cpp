@@ -13,8 +13,6 @@
 #include <cmath>
 #include <limits>
 
-namespace parametereditors {
-
 namespace {
 
 // The parameter page's context: its translations were made there.
@@ -22,6 +20,12 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(ParameterPage)
 };
+
+} // namespace
+
+namespace parametereditors {
+
+namespace {
 
 int toInt(qint64 value)
 {

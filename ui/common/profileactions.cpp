@@ -9,14 +9,18 @@
 #include <QFileDialog>
 #include <QStandardPaths>
 
-namespace profileactions {
-
 namespace {
 
 struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(ProfileActions)
 };
+
+} // namespace
+
+namespace profileactions {
+
+namespace {
 
 QString documents()
 {

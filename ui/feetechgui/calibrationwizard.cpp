@@ -263,7 +263,7 @@ void CalibrationWizard::refreshBars()
         for (int i = 0; i < m_recordings.size(); ++i) {
             const auto position = m_freshPositions.value(i);
             lines.append(tr("%1 (%2): %3")
-                             .arg(m_recordings.at(i).name)
+                             .arg(feetech::jointDisplayName(m_recordings.at(i).name))
                              .arg(m_recordings.at(i).id)
                              .arg(position ? QString::number(*position) : tr("no reading yet")));
         }
@@ -294,7 +294,7 @@ void CalibrationWizard::takeMiddlePose()
         const auto position = m_freshPositions.value(i);
         if (!position)
             return fail(tr("No position has come from %1 (ID %2) yet: check that it answers.")
-                            .arg(m_recordings.at(i).name)
+                            .arg(feetech::jointDisplayName(m_recordings.at(i).name))
                             .arg(m_recordings.at(i).id));
         m_recordings[i].middlePose = int(std::lround(*position));
     }

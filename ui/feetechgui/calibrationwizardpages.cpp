@@ -109,7 +109,7 @@ QWidget *CalibrationWizard::buildJointsPage()
     m_template = new QComboBox(page);
     m_template->setObjectName(QStringLiteral("robotTemplateCombo"));
     for (const feetech::RobotTemplate &robot : std::as_const(m_templates))
-        m_template->addItem(robot.name);
+        m_template->addItem(feetech::robotDisplayName(robot.name));
     m_template->addItem(tr("No template (joints named by ID)"));
     m_template->setCurrentIndex(std::max(0, defaultRobotTemplate(m_templates)));
     m_template->setToolTip(tr("Names the joints whose IDs the arm's template has"));
@@ -287,7 +287,7 @@ void CalibrationWizard::buildBars()
     for (int row = 0; row < m_recordings.size(); ++row) {
         const feetech::JointRecording &joint = m_recordings.at(row);
         auto *name = new QLabel(tr("%1 (%2)%3")
-                                    .arg(joint.name)
+                                    .arg(feetech::jointDisplayName(joint.name))
                                     .arg(joint.id)
                                     .arg(joint.fullTurn ? tr(", full turn") : QString()),
                                 inner);
@@ -356,8 +356,10 @@ void CalibrationWizard::showResults()
     const QColor refused = palette::toneColor(palette::Tone::Error, m_resultTable->palette());
     for (int row = 0; row < m_results.size(); ++row) {
         const feetech::JointCalibration &result = m_results.at(row);
-        m_resultTable->setItem(row, JointColumn,
-                               new QTableWidgetItem(tr("%1 (%2)").arg(result.name).arg(result.id)));
+        m_resultTable->setItem(
+            row, JointColumn,
+            new QTableWidgetItem(
+                tr("%1 (%2)").arg(feetech::jointDisplayName(result.name)).arg(result.id)));
         const auto number = [&result](qint32 value) {
             return new QTableWidgetItem(result.ok() ? QString::number(value) : QString());
         };

@@ -249,7 +249,7 @@ void ControlPage::configureForServo()
         m_mode->clear();
         if (const feetech::Register *mode = table.find(kMode)) {
             for (const feetech::Choice &choice : mode->choices)
-                m_mode->addItem(choice.label, choice.value);
+                m_mode->addItem(feetech::tableText(choice.label), choice.value);
             m_modeNote->setText(tr("Stored in EEPROM: the servo keeps it when powered off."));
         } else {
             m_modeNote->setText(tr("%1 servos have no operating mode register: they hold "

@@ -136,9 +136,9 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
     if (role == Qt::ToolTipRole) {
         QString tip = tr("%1 to %2").arg(reg->minimum).arg(reg->maximum);
         if (!reg->unit.isEmpty())
-            tip += tr(" (× %1 %2)").arg(reg->scale).arg(reg->unit);
+            tip += tr(" (× %1 %2)").arg(reg->scale).arg(feetech::tableText(reg->unit));
         if (!reg->note.isEmpty())
-            tip += u'\n' + reg->note;
+            tip += u'\n' + feetech::tableText(reg->note);
         if (pending && device)
             tip += u'\n' + tr("On the servo: %1").arg(feetech::displayValue(*reg, qint32(*device)));
         return tip;
@@ -159,7 +159,7 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
     case KeyColumn:
         return reg->key;
     case LabelColumn:
-        return QCoreApplication::translate("FeetechRegister", reg->label.toUtf8().constData());
+        return feetech::tableText(reg->label);
     case SizeColumn:
         return reg->size;
     case AreaColumn:

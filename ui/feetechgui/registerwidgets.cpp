@@ -50,11 +50,11 @@ QString unitText(const feetech::Register *reg)
     if (!reg)
         return {};
     if (reg->scale == 1.0)
-        return reg->unit;
+        return feetech::tableText(reg->unit);
     // The Control page's context: the translation was made there.
     return QCoreApplication::translate("ControlPage", "× %1 %2",
                                        "scale and unit of a register value")
-        .arg(QLocale().toString(reg->scale, 'g', 6), reg->unit)
+        .arg(QLocale().toString(reg->scale, 'g', 6), feetech::tableText(reg->unit))
         .trimmed();
 }
 

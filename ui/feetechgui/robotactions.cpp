@@ -200,7 +200,7 @@ void RobotActions::chooseTemplateToApply()
         emit problem(problems.join(u' '));
     QStringList names;
     for (const feetech::RobotTemplate &robot : templates)
-        names.append(robot.name);
+        names.append(feetech::robotDisplayName(robot.name));
     bool chosen = false;
     const QString name =
         QInputDialog::getItem(m_workspace, tr("Apply template settings"),

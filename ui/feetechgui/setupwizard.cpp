@@ -147,7 +147,7 @@ void SetupWizard::loadRobots()
     const QSignalBlocker quiet(m_robotChoice);
     m_robotChoice->clear();
     for (const feetech::RobotTemplate &robot : std::as_const(m_robots))
-        m_robotChoice->addItem(robot.name);
+        m_robotChoice->addItem(feetech::robotDisplayName(robot.name));
     m_templateProblems->setText(problems.join(u'\n'));
     m_templateProblems->setVisible(!problems.isEmpty());
 }
@@ -161,7 +161,7 @@ void SetupWizard::showEvent(QShowEvent *event)
     // while the robot is still there), and the bus may have changed (servos set up elsewhere,
     // the arm built).
     if (!isWorking()) {
-        const QString shown = m_robot.name;
+        const QString shown = feetech::robotDisplayName(m_robot.name);
         loadRobots();
         const int index = m_robotChoice->findText(shown);
         if (index >= 0) {
@@ -185,7 +185,7 @@ void SetupWizard::chooseRobot(int index)
     m_jointList->clear();
     for (const feetech::RobotJoint &joint : std::as_const(m_robot.joints)) {
         auto *item = new QTreeWidgetItem(m_jointList);
-        item->setText(NameColumn, joint.name);
+        item->setText(NameColumn, feetech::jointDisplayName(joint.name));
         item->setText(IdColumn, QString::number(joint.id));
         item->setText(ModelColumn, joint.model);
     }
@@ -269,12 +269,14 @@ void SetupWizard::showCurrent()
         m_instruction->setText(
             tr("Every joint of the %1 is set up. Connect the servos in a chain and press "
                "<i>Check the bus</i> to confirm them together.")
-                .arg(m_robot.name.toHtmlEscaped()));
+                .arg(feetech::robotDisplayName(m_robot.name).toHtmlEscaped()));
         return;
     }
     const feetech::RobotJoint &joint = m_robot.joints.at(m_current);
-    m_currentBox->setTitle(
-        tr("Joint %1 of %2: %3").arg(m_current + 1).arg(m_robot.joints.size()).arg(joint.name));
+    m_currentBox->setTitle(tr("Joint %1 of %2: %3")
+                               .arg(m_current + 1)
+                               .arg(m_robot.joints.size())
+                               .arg(feetech::jointDisplayName(joint.name)));
     m_instruction->setText(
         tr("Connect only the <b>%1</b> servo (ID will be %2) and press <i>Find</i>.<br>"
            "<small>Unplug every other servo from the bus first and keep the power on. A new servo "
