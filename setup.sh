@@ -16,6 +16,8 @@ usage() {
     echo "       ./setup.sh test           build and run every test (offscreen)"
     echo "       ./setup.sh test --sanitize  the same with AddressSanitizer + UBSan"
     echo "       ./setup.sh build          only install what is missing and build"
+    echo "       ./setup.sh package        build the Debian package into build/"
+    echo "       ./setup.sh package --check  the same, then install it and check what it installed"
 }
 
 install_missing() {
@@ -27,13 +29,33 @@ install_missing() {
     done
     [ ${#missing[@]} -eq 0 ] && return 0
     echo "setup: installing ${missing[*]}"
-    local sudo=()
-    if [ "$(id -u)" -ne 0 ]; then
+    as_root apt-get update
+    DEBIAN_FRONTEND=noninteractive as_root apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+as_root() {
+    if [ "$(id -u)" -eq 0 ]; then
+        "$@"
+    else
         command -v sudo >/dev/null || { echo "setup: need root or sudo to install packages" >&2; exit 1; }
-        sudo=(sudo)
+        sudo "$@"
     fi
-    "${sudo[@]}" apt-get update
-    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+# Installs the package just built and checks it: the installed servoctl runs, and the desktop
+# entry and AppStream metainfo pass their validators.
+check_package() {
+    local deb=$1
+    # dpkg alone, as a user would; apt brings in what it depends on if something is missing.
+    as_root dpkg -i "$deb" || DEBIAN_FRONTEND=noninteractive as_root apt-get install -f -y
+    /usr/bin/servoctl --version
+    test -x /usr/bin/servobench && test -x /usr/bin/servosim
+    desktop-file-validate /usr/share/applications/io.github.servobench.ServoBench.desktop
+    appstreamcli validate --no-net /usr/share/metainfo/io.github.servobench.ServoBench.metainfo.xml
+    test -f /usr/lib/udev/rules.d/70-servobench.rules
+    test -f /usr/share/man/man1/servoctl.1 && test -f /usr/share/man/man1/servosim.1
+    bash -c 'source /usr/share/bash-completion/completions/servoctl && complete -p servoctl'
+    echo "setup: $deb installed and checked"
 }
 
 # Optimised, with line tables only (-g1): backtraces and sanitizer reports name file and line, and
@@ -72,6 +94,19 @@ case "$command" in
     build)
         install_missing
         build build
+        ;;
+    package)
+        # dpkg-shlibdeps (dpkg-dev, which needs file) works out the package's dependencies.
+        packages+=(dpkg-dev file)
+        [ "${1:-}" = "--check" ] && packages+=(appstream desktop-file-utils)
+        install_missing
+        build build
+        (cd build && cpack)
+        deb=$(ls -t build/servobench_*.deb | head -1)
+        echo "setup: built $deb"
+        if [ "${1:-}" = "--check" ]; then
+            check_package "$PWD/$deb"
+        fi
         ;;
     *)
         usage

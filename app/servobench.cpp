@@ -7,6 +7,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QSettings>
 
 int main(int argc, char *argv[])
@@ -15,6 +16,12 @@ int main(int argc, char *argv[])
     QApplication::setApplicationName(QStringLiteral("ServoBench"));
     QApplication::setOrganizationName(QStringLiteral("ServoBench"));
     QApplication::setApplicationVersion(QStringLiteral(SERVOBENCH_VERSION));
+    // The installed desktop entry's name: desktops match the window to it (and its icon).
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.servobench.ServoBench"));
+    QIcon icon;
+    for (const int size : {16, 24, 32, 48, 64, 128, 256})
+        icon.addFile(QStringLiteral(":/icons/servobench-%1.png").arg(size), QSize(size, size));
+    QApplication::setWindowIcon(icon);
 
     // The language chosen in View > Language, or the system's.
     util::installTranslations(QSettings().value(LanguageMenu::settingsKey()).toString());
