@@ -25,6 +25,7 @@
 #include <QMessageBox>
 #include <QProcess>
 #include <QStackedWidget>
+#include <QScreen>
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -61,7 +62,10 @@ MainWindow::MainWindow(QWidget *parent)
 {
     setWindowTitle(tr("ServoBench"));
     setObjectName(QStringLiteral("mainWindow"));
-    resize(1180, 820);
+    // 1180x820 where there is room; on a 1366x768 screen what is left under the desktop's
+    // panels and the title bar, so the status bar stays on the screen.
+    const QRect available = screen()->availableGeometry();
+    resize(std::min(1180, available.width() - 16), std::min(820, available.height() - 48));
 
     m_connectionBar = new ConnectionBar(this);
     addToolBar(Qt::TopToolBarArea, m_connectionBar);
