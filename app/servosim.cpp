@@ -10,7 +10,10 @@
 
 #include <csignal>
 #include <cstdio>
+
+#ifdef Q_OS_UNIX
 #include <unistd.h>
+#endif
 
 int main(int argc, char *argv[])
 {
@@ -40,12 +43,18 @@ int main(int argc, char *argv[])
     util::UnixSignalWatcher watcher;
     watcher.watch(SIGINT);
     watcher.watch(SIGTERM);
+#ifdef Q_OS_UNIX
     watcher.watch(SIGHUP);
+#endif
     QObject::connect(&watcher, &util::UnixSignalWatcher::received, &app, [&](int number) {
-        if (number == SIGHUP)
+#ifdef Q_OS_UNIX
+        if (number == SIGHUP) {
             simulator->powerCycle();
-        else
-            QCoreApplication::quit();
+            return;
+        }
+#endif
+        Q_UNUSED(number)
+        QCoreApplication::quit();
     });
 
     if (!simulator->start(&error)) {
@@ -69,6 +78,8 @@ int main(int argc, char *argv[])
         err << "servosim: " << note << '\n';
         err.flush();
     });
+    // (Unix only, as the pseudo-terminal is: elsewhere start() has already said why it failed.)
+#ifdef Q_OS_UNIX
     QByteArray pending;
     QSocketNotifier input(STDIN_FILENO, QSocketNotifier::Read);
     QObject::connect(&input, &QSocketNotifier::activated, &app, [&] {
@@ -89,6 +100,7 @@ int main(int argc, char *argv[])
             }
         }
     });
+#endif
     const int status = QCoreApplication::exec();
     simulator->stop(); // removes the link
     return status;

@@ -4,7 +4,9 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 
+#ifdef Q_OS_UNIX
 #include <poll.h>
+#endif
 
 namespace {
 
@@ -127,10 +129,15 @@ bool SerialTransport::isHungUp() const
 {
     if (!m_port->isOpen())
         return true;
+#ifdef Q_OS_UNIX
+    // A pulled adapter (or a simulator gone) hangs the descriptor up before QSerialPort says so.
     pollfd descriptor {int(m_port->handle()), POLLIN, 0};
     if (::poll(&descriptor, 1, 0) < 0)
         return true;
     return (descriptor.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
+#else
+    return false; // Windows reports a removed port through QSerialPort's ResourceError
+#endif
 }
 
 bool isLostError(QSerialPort::SerialPortError error)

@@ -9,9 +9,12 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+
+#ifdef Q_OS_UNIX
 #include <fcntl.h>
 #include <termios.h>
 #include <unistd.h>
+#endif
 
 namespace {
 
@@ -46,6 +49,8 @@ PseudoTerminal::~PseudoTerminal()
 {
     close();
 }
+
+#ifdef Q_OS_UNIX
 
 bool PseudoTerminal::open(const QString &linkPath, QString *error)
 {
@@ -180,5 +185,32 @@ void PseudoTerminal::flushPending()
     if (m_writeNotifier)
         m_writeNotifier->setEnabled(!m_pending.isEmpty());
 }
+
+#else
+
+// Windows has no pseudo-terminals: the simulated servos cannot be offered as a port there, and
+// whoever starts them (servosim, the GUI's demo) shows this message.
+bool PseudoTerminal::open(const QString &, QString *error)
+{
+    if (error)
+        *error = Tr::tr("Simulated servos need a pseudo-terminal, which this system does not "
+                        "have: they run on Linux and macOS.");
+    return false;
+}
+
+void PseudoTerminal::close() { }
+
+qint32 PseudoTerminal::hostBaudRate() const
+{
+    return 0;
+}
+
+void PseudoTerminal::readAvailable() { }
+
+void PseudoTerminal::write(const QByteArray &) { }
+
+void PseudoTerminal::flushPending() { }
+
+#endif // Q_OS_UNIX
 
 } // namespace sim
