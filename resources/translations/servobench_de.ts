@@ -5260,6 +5260,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <source>cannot create the link %1: %2</source>
         <translation>der Link %1 kann nicht angelegt werden: %2</translation>
     </message>
+    <message>
+        <source>Simulated servos need a pseudo-terminal, which this system does not have: they run on Linux and macOS.</source>
+        <translation>Simulierte Servos brauchen ein Pseudo-Terminal, das dieses System nicht hat: Sie laufen unter Linux und macOS.</translation>
+    </message>
 </context>
 <context>
     <name>PtkClient</name>

@@ -5234,6 +5234,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <source>cannot create the link %1: %2</source>
         <translation>无法创建链接 %1：%2</translation>
     </message>
+    <message>
+        <source>Simulated servos need a pseudo-terminal, which this system does not have: they run on Linux and macOS.</source>
+        <translation>模拟舵机需要伪终端，而本系统没有：模拟舵机可在 Linux 和 macOS 上运行。</translation>
+    </message>
 </context>
 <context>
     <name>PtkClient</name>
