@@ -1,8 +1,12 @@
-// Tests that the main window opens with its menus, connection bar and status bar.
+// Tests that the main window opens with its menus, connection bar and status bar, and that it
+// remembers its size, layout and last connection, and resets its layout.
+#include "common/connectionbar.h"
+#include "common/packetlogdock.h"
 #include "mainwindow.h"
 
 #include <QLabel>
 #include <QMenuBar>
+#include <QSettings>
 #include <QStatusBar>
 #include <QtTest>
 
@@ -11,6 +15,8 @@ class TestMainWindow : public QObject
     Q_OBJECT
 
 private slots:
+    void init() { QSettings().clear(); }
+
     void opensWithTitleMenusAndDisconnectedState()
     {
         MainWindow window;
@@ -38,6 +44,51 @@ private slots:
         QVERIFY(quit);
         quit->trigger();
         QVERIFY(!window.isVisible());
+    }
+
+    void remembersSizeLayoutAndLastConnection()
+    {
+        const QString missing = QDir::temp().filePath(QStringLiteral("servobench-no-such-port"));
+        QSize chosen;
+        {
+            MainWindow window;
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            window.resize(900, 600); // as far as the window's minimum size allows
+            chosen = window.size();
+            QVERIFY(chosen.width() == 900);
+            window.packetLog()->hide();
+            window.connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
+            window.connectionBar()->setBaud(500000);
+            window.connectToPort(missing); // fails (no such port), but was asked for
+            QVERIFY(window.close());
+        }
+        MainWindow again;
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again));
+        QCOMPARE(again.size(), chosen);
+        QVERIFY(again.packetLog()->isHidden());
+        QCOMPARE(again.connectionBar()->port(), missing);
+        QCOMPARE(again.connectionBar()->protocol(), ConnectionBar::Protocol::Feetech);
+        QCOMPARE(again.connectionBar()->baud(), 500000);
+    }
+
+    void resetLayoutBringsBackTheFirstLayout()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QSize first = window.size();
+        window.resize(700, 500);
+        window.packetLog()->hide();
+        window.connectionBar()->hide();
+        auto *reset = window.findChild<QAction *>(QStringLiteral("resetLayoutAction"));
+        QVERIFY(reset);
+        reset->trigger();
+        QCOMPARE(window.size(), first);
+        QVERIFY(window.packetLog()->isVisible());
+        QVERIFY(window.connectionBar()->isVisible());
+        QVERIFY(!QSettings().contains(QStringLiteral("window/layout")));
     }
 };
 

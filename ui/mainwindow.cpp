@@ -24,8 +24,8 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProcess>
-#include <QStackedWidget>
 #include <QScreen>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -145,6 +145,10 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_rateTimer, &QTimer::timeout, this, &MainWindow::updatePollRate);
     m_rateTimer->start();
     updatePollRate();
+
+    m_defaultLayout = saveState();
+    m_defaultSize = size();
+    restoreRemembered();
 }
 
 ParameterPage *MainWindow::ptkPage() const
@@ -249,6 +253,9 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_packetLog->toggleViewAction());
     m_viewMenu->addAction(m_connectionBar->toggleViewAction());
+    QAction *resetLayoutAction =
+        m_viewMenu->addAction(tr("&Reset layout"), this, &MainWindow::resetLayout);
+    resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
     m_viewMenu->addSeparator();
     auto *language = new LanguageMenu(this);
     m_viewMenu->addMenu(language);
@@ -361,6 +368,7 @@ void MainWindow::connectRequested()
         showProblem(tr("Choose a serial port first."));
         return;
     }
+    rememberConnection();
     const bool arm = port == ConnectionBar::kSimulatedArmPort;
     const bool feetechBus = arm || port == ConnectionBar::kSimulatedFeetechPort;
     if (feetechBus || port == ConnectionBar::kSimulatedPtkPort) {
@@ -535,5 +543,6 @@ void MainWindow::closeEvent(QCloseEvent *event)
             return;
         }
     }
+    rememberLayout();
     event->accept();
 }

@@ -77,6 +77,11 @@ private:
     void showAbout();
     // Closes the window as Quit does and, once it is closed, starts ServoBench again.
     void restart();
+    // Its memory (mainwindowlayout.cpp): size and dock layout, the last connection's settings.
+    void restoreRemembered();
+    void rememberLayout();
+    void rememberConnection();
+    void resetLayout();
     void connectRequested();
     void disconnectRequested();
     void onStatusChanged(const seriallink::ConnectionStatus &status);
@@ -127,4 +132,6 @@ private:
     QProgressDialog *m_probeProgress = nullptr;
     // What the probe of the Auto connection heard; none for a protocol chosen by hand.
     std::optional<feetech::PortProbeReport> m_probe;
+    QByteArray m_defaultLayout; // the docks as first built, for View > Reset layout
+    QSize m_defaultSize;
 };

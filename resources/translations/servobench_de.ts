@@ -4100,6 +4100,10 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Nothing answers on %1: the Doctor panel says what to check.</source>
         <translation>An %1 antwortet nichts: Das Diagnosefeld sagt, was zu prüfen ist.</translation>
     </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>Layout &amp;zurücksetzen</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>

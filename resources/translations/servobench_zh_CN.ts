@@ -4084,6 +4084,10 @@ An ID in use is refused.</source>
         <source>Nothing answers on %1: the Doctor panel says what to check.</source>
         <translation>%1 上没有任何应答：“诊断”面板会说明需要检查什么。</translation>
     </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>重置布局(&amp;R)</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>

@@ -152,13 +152,18 @@ seriallink::EchoMode ConnectionBar::echoMode() const
     return seriallink::EchoMode(m_echo->currentData().toInt());
 }
 
-void ConnectionBar::showDetected(qint32 baud, seriallink::EchoMode echo)
+void ConnectionBar::setBaud(qint32 baud)
 {
     const QString rate = QString::number(baud);
     if (m_baud->findText(rate) >= 0)
         m_baud->setCurrentIndex(m_baud->findText(rate));
     else
         m_baud->setEditText(rate);
+}
+
+void ConnectionBar::showDetected(qint32 baud, seriallink::EchoMode echo)
+{
+    setBaud(baud);
     m_echo->setCurrentIndex(m_echo->findData(int(echo)));
 }
 

@@ -27,6 +27,7 @@ public:
     QString port() const; // a system path, or kSimulatedPtkPort
     void setPort(const QString &port);
     qint32 baud() const;
+    void setBaud(qint32 baud);
     seriallink::EchoMode echoMode() const;
     Protocol protocol() const;
     void setProtocol(Protocol protocol); // also offers that protocol's usual baud rate
