@@ -2,12 +2,14 @@
 // remembers its size, layout and last connection, and resets its layout.
 #include "common/connectionbar.h"
 #include "common/packetlogdock.h"
+#include "common/shortcutsdialog.h"
 #include "mainwindow.h"
 
 #include <QLabel>
 #include <QMenuBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QtTest>
 
 class TestMainWindow : public QObject
@@ -44,6 +46,30 @@ private slots:
         QVERIFY(quit);
         quit->trigger();
         QVERIFY(!window.isVisible());
+    }
+
+    void keyboardShortcutsListsTheMenusShortcuts()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.findChild<QAction *>(QStringLiteral("shortcutsAction"))->trigger();
+        auto *dialog = window.findChild<ShortcutsDialog *>();
+        QVERIFY(dialog && dialog->isVisible());
+        QStringList rows;
+        for (int row = 0; row < dialog->table()->rowCount(); ++row)
+            rows.append(dialog->table()->item(row, 0)->text() + QStringLiteral(" = ")
+                        + dialog->table()->item(row, 1)->text());
+        const auto keys = [](const QKeySequence &sequence) {
+            return sequence.toString(QKeySequence::NativeText);
+        };
+        QVERIFY2(
+            rows.contains(keys(QKeySequence::Save) + QStringLiteral(" = File > Save profile…")),
+            qPrintable(rows.join(u'\n')));
+        QVERIFY(rows.contains(keys(QKeySequence(Qt::Key_Escape))
+                              + QStringLiteral(" = Link > All torque off")));
+        QVERIFY(rows.contains(keys(QKeySequence(Qt::CTRL | Qt::Key_F5))
+                              + QStringLiteral(" = Link > Scan the Feetech bus…")));
     }
 
     void remembersSizeLayoutAndLastConnection()

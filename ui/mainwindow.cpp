@@ -4,6 +4,7 @@
 #include "common/connectionbar.h"
 #include "common/languagemenu.h"
 #include "common/packetlogdock.h"
+#include "common/shortcutsdialog.h"
 #include "common/simulatordock.h"
 #include "feetech/busclient.h"
 #include "feetechgui/calibrationfiles.h"
@@ -262,6 +263,13 @@ void MainWindow::createMenus()
     connect(language, &LanguageMenu::restartRequested, this, &MainWindow::restart);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *shortcuts = help->addAction(tr("&Keyboard shortcuts"), this, [this] {
+        auto *dialog = new ShortcutsDialog(menuBar(), this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
+    shortcuts->setObjectName(QStringLiteral("shortcutsAction"));
+    shortcuts->setShortcut(QKeySequence::HelpContents);
     QAction *about = help->addAction(tr("&About ServoBench"), this, &MainWindow::showAbout);
     about->setObjectName(QStringLiteral("aboutAction"));
     help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);

@@ -4104,6 +4104,10 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>&amp;Reset layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>
@@ -6471,6 +6475,21 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
             <numerusform>Bus bei %1 geprüft: %2 von %n Gelenk eingerichtet.</numerusform>
             <numerusform>Bus bei %1 geprüft: %2 von %n Gelenken eingerichtet.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ShortcutsDialog</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Befehl</translation>
     </message>
 </context>
 <context>
