@@ -157,14 +157,22 @@ private slots:
 
     void targetRangeComesFromTheAngleLimitsOnceRead()
     {
+        m_joints->hide(); // another tab is open: nothing is read for the joints
         connectAndScan();
         // Not read yet: the goal register's range.
         QCOMPARE(m_joints->targetRange(0)->minimum, -30719);
         QCOMPARE(m_joints->targetRange(0)->maximum, 30719);
         QVERIFY(!m_joints->targetRange(0)->fromAngleLimits);
         QCOMPARE(m_joints->targetRange(3)->maximum, 1023);
-        readAll();
-        QTRY_VERIFY(m_joints->targetRange(0)->fromAngleLimits);
+        QVERIFY(!m_joints->position(0));
+        // Opening the tab reads every servo by itself: limits, positions and torque.
+        m_joints->show();
+        QTRY_VERIFY_WITH_TIMEOUT(m_joints->targetRange(0)->fromAngleLimits, 10000);
+        for (int row = 0; row < m_joints->rowCount(); ++row) {
+            QTRY_VERIFY(m_joints->position(row).has_value());
+            QCOMPARE(m_joints->table()->item(row, JointTable::TorqueColumn)->text(),
+                     QStringLiteral("Off"));
+        }
         QCOMPARE(m_joints->targetRange(0)->minimum, 0);
         QCOMPARE(m_joints->targetRange(0)->maximum, 4095);
         QCOMPARE(m_joints->targetRange(3)->minimum, 20);

@@ -3718,6 +3718,13 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Wiggle %1 slowly with little torque, then put it back as it was</source>
         <translation>%1 langsam mit wenig Drehmoment wackeln lassen und dann wie zuvor zurückstellen</translation>
     </message>
+    <message numerus="yes">
+        <source>Reading %n servo(s)…</source>
+        <translation>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>LanguageMenu</name>

@@ -3703,6 +3703,12 @@ An ID in use is refused.</source>
         <source>Load pose</source>
         <translation>加载姿态</translation>
     </message>
+    <message numerus="yes">
+        <source>Reading %n servo(s)…</source>
+        <translation>
+            <numerusform></numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>LanguageMenu</name>

@@ -353,6 +353,32 @@ void JointTable::rebuild()
     }
     refreshHint();
     refreshButtons();
+    readWhileShown(false);
+}
+
+void JointTable::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    m_readAsked.clear();
+    readWhileShown(true);
+}
+
+void JointTable::readWhileShown(bool all)
+{
+    if (!isVisible() || !m_client->isConnected())
+        return;
+    int asked = 0;
+    for (int row = 0; row < rowCount(); ++row) {
+        const int index = servoIndex(row);
+        const quint64 key = servoKey(m_rows.at(row).id, m_rows.at(row).baud);
+        if (index < 0 || (!all && (m_client->servo(index).read || m_readAsked.contains(key))))
+            continue;
+        m_readAsked.insert(key);
+        m_client->readServo(index);
+        ++asked;
+    }
+    if (asked > 0)
+        setMessage(tr("Reading %n servo(s)…", nullptr, asked), Tone::Info);
 }
 
 void JointTable::refreshHint()

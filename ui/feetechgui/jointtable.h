@@ -6,6 +6,7 @@
 #include "feetech/pose.h"
 #include "feetech/tablefacts.h"
 
+#include <QSet>
 #include <QVector>
 #include <QWidget>
 
@@ -94,6 +95,11 @@ public:
 
     QString message() const; // the status line under the table
 
+protected:
+    // Opening the tab reads every servo: positions, torque and angle limits are then the
+    // servos' own, not placeholders.
+    void showEvent(QShowEvent *event) override;
+
 private:
     // Torque enable values, all in one place.
 
@@ -111,6 +117,9 @@ private:
     enum class Tone { Info, Success, Warning, Error };
 
     void rebuild();
+    // Reads the rows' servos while the table is on screen: every one (`all`), or those never
+    // read and not asked yet. Nothing is written, nothing moves.
+    void readWhileShown(bool all);
     void refreshRow(int row);
     void refreshPosition(int row);
     void refreshTarget(int row);
@@ -135,6 +144,7 @@ private:
 
     feetech::BusClient *m_client = nullptr;
     QVector<Row> m_rows;
+    QSet<quint64> m_readAsked; // servos (servoKey) read by readWhileShown since the tab opened
     QTableWidget *m_table = nullptr;
     QLabel *m_hint = nullptr;
     QLabel *m_poseLabel = nullptr;
