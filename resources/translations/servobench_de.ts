@@ -3721,8 +3721,8 @@ Eine belegte ID wird abgelehnt.</translation>
     <message numerus="yes">
         <source>Reading %n servo(s)…</source>
         <translation>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+            <numerusform>%n Servo wird gelesen…</numerusform>
+            <numerusform>%n Servos werden gelesen…</numerusform>
         </translation>
     </message>
 </context>

@@ -3706,7 +3706,7 @@ An ID in use is refused.</source>
     <message numerus="yes">
         <source>Reading %n servo(s)…</source>
         <translation>
-            <numerusform></numerusform>
+            <numerusform>正在读取 %n 个舵机…</numerusform>
         </translation>
     </message>
 </context>
