@@ -6,6 +6,7 @@
 #include "common/packetlogdock.h"
 #include "common/shortcutsdialog.h"
 #include "common/simulatordock.h"
+#include "common/welcomepanel.h"
 #include "feetech/busclient.h"
 #include "feetechgui/calibrationfiles.h"
 #include "feetechgui/feetechworkspace.h"
@@ -92,6 +93,11 @@ MainWindow::MainWindow(QWidget *parent)
     m_pages->addWidget(m_ptkWorkspace);
     m_feetechWorkspace = new FeetechWorkspace(m_feetech.get(), m_pages);
     m_pages->addWidget(m_feetechWorkspace);
+    // While nothing is connected: the ports, the simulated servos and the wiring.
+    m_welcome = new WelcomePanel(m_pages);
+    m_pages->addWidget(m_welcome);
+    m_pages->setCurrentWidget(m_welcome);
+    connect(m_welcome, &WelcomePanel::connectRequested, this, &MainWindow::connectToPort);
     layout->addWidget(m_pages);
     setCentralWidget(central);
     connect(m_connectionBar, &ConnectionBar::protocolChanged, this,
@@ -348,8 +354,10 @@ void MainWindow::showSimulatorDock(bool arm)
 void MainWindow::showProtocol(bool feetech)
 {
     m_feetechActive = feetech;
-    m_pages->setCurrentWidget(feetech ? static_cast<QWidget *>(m_feetechWorkspace)
-                                      : static_cast<QWidget *>(m_ptkWorkspace));
+    // The welcome page stays while nothing is open; the workspace shows once a port opens.
+    if (m_pages->currentWidget() != m_welcome)
+        m_pages->setCurrentWidget(feetech ? static_cast<QWidget *>(m_feetechWorkspace)
+                                          : static_cast<QWidget *>(m_ptkWorkspace));
     for (QAction *action : std::as_const(m_ptkActions))
         action->setEnabled(!feetech);
     m_pollRate->setVisible(!feetech);
@@ -464,6 +472,13 @@ void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
         QStringLiteral("QLabel { color: %1; font-weight: 600; }").arg(stateColour(status.state)));
     const bool active = status.state != ConnectionState::Disconnected;
     m_connectionBar->setSessionActive(active);
+    const bool nothingOpen = m_ptk->status().state == ConnectionState::Disconnected
+        && m_feetech->status().state == ConnectionState::Disconnected;
+    if (nothingOpen)
+        m_pages->setCurrentWidget(m_welcome);
+    else if (m_pages->currentWidget() == m_welcome)
+        m_pages->setCurrentWidget(m_feetechActive ? static_cast<QWidget *>(m_feetechWorkspace)
+                                                  : static_cast<QWidget *>(m_ptkWorkspace));
     // One line of explanation in the banner; never a dialog, so an unplugged cable cannot
     // bury the user in message boxes.
     if (status.state == ConnectionState::Connected || status.state == ConnectionState::Connecting)

@@ -25,6 +25,7 @@ class QMenu;
 class QLabel;
 class QTimer;
 class SimulatorDock;
+class WelcomePanel;
 
 namespace ptk {
 class Client;
@@ -132,6 +133,7 @@ private:
     QProgressDialog *m_probeProgress = nullptr;
     // What the probe of the Auto connection heard; none for a protocol chosen by hand.
     std::optional<feetech::PortProbeReport> m_probe;
+    WelcomePanel *m_welcome = nullptr;
     QByteArray m_defaultLayout; // the docks as first built, for View > Reset layout
     QSize m_defaultSize;
 };

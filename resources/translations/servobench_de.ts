@@ -6994,6 +6994,81 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>WelcomePanel</name>
+    <message>
+        <source>&lt;h2&gt;Connect your servos&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Servos verbinden&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Choose the serial port of your USB adapter and press &lt;b&gt;Connect&lt;/b&gt; (or double-click it), or try ServoBench on simulated servos. Nothing is sent to a servo until you connect.</source>
+        <translation>Wählen Sie den seriellen Anschluss Ihres USB-Adapters und drücken Sie &lt;b&gt;Verbinden&lt;/b&gt; (oder doppelklicken Sie ihn), oder probieren Sie ServoBench mit simulierten Servos aus. Bis Sie verbinden, wird nichts an ein Servo gesendet.</translation>
+    </message>
+    <message>
+        <source>Serial ports</source>
+        <translation>Serielle Anschlüsse</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Anschluss</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Manufacturer</source>
+        <translation>Hersteller</translation>
+    </message>
+    <message>
+        <source>Serial number</source>
+        <translation>Seriennummer</translation>
+    </message>
+    <message>
+        <source>USB ID</source>
+        <translation>USB-ID</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Simulated servos</source>
+        <translation>Simulierte Servos</translation>
+    </message>
+    <message>
+        <source>PTK servo</source>
+        <translation>PTK-Servo</translation>
+    </message>
+    <message>
+        <source>Feetech bus (five servos)</source>
+        <translation>Feetech-Bus (fünf Servos)</translation>
+    </message>
+    <message>
+        <source>SO-101 arm (six STS3215)</source>
+        <translation>SO-101-Arm (sechs STS3215)</translation>
+    </message>
+    <message>
+        <source>Wiring</source>
+        <translation>Verkabelung</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;PTK RC servos&lt;/b&gt; (one signal wire, 115200 baud): a 3.3 V or 5 V USB-serial adapter with a 470 Ω resistor from TX to RX. The servo&apos;s signal wire goes to RX, its ground to the adapter&apos;s ground; power the servo from its own supply. The adapter hears its own bytes, and ServoBench expects that.</source>
+        <translation>&lt;b&gt;PTK-RC-Servos&lt;/b&gt; (eine Signalleitung, 115200 Baud): ein USB-Seriell-Adapter mit 3,3 V oder 5 V und einem 470-Ω-Widerstand von TX nach RX. Die Signalleitung des Servos kommt an RX, seine Masse an die Masse des Adapters; versorgen Sie das Servo aus einer eigenen Stromquelle. Der Adapter hört seine eigenen Bytes, und ServoBench rechnet damit.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Feetech serial-bus servos&lt;/b&gt;: Feetech&apos;s URT-1 / FE-URT board, or any half-duplex TTL adapter (SCS, STS, HLS) or RS485 adapter (SMS). Chain the servos with their 3-wire cables; power them from the board&apos;s supply (7.4 V or 12 V as the servos ask), never from USB. New servos all answer at ID 1 and 1 Mbps: set them up one at a time (Robot &gt; Set up motors).</source>
+        <translation>&lt;b&gt;Feetech-Bus-Servos&lt;/b&gt;: Feetechs URT-1-/FE-URT-Platine oder ein beliebiger Halbduplex-TTL-Adapter (SCS, STS, HLS) bzw. RS485-Adapter (SMS). Verketten Sie die Servos mit ihren 3-adrigen Kabeln und versorgen Sie sie über die Platine (7,4 V oder 12 V, wie die Servos es verlangen), nie über USB. Neue Servos antworten alle unter ID 1 mit 1 Mbps: Richten Sie sie einzeln ein (Roboter &gt; Motoren einrichten).</translation>
+    </message>
+    <message>
+        <source>Nothing answers? Leave Protocol on &lt;b&gt;Auto&lt;/b&gt; and connect: ServoBench finds the family and rate, and the Doctor says what is wrong.</source>
+        <translation>Nichts antwortet? Lassen Sie das Protokoll auf &lt;b&gt;Auto&lt;/b&gt; und verbinden Sie: ServoBench findet Familie und Rate, und die Diagnose sagt, was nicht stimmt.</translation>
+    </message>
+    <message>
+        <source>No serial port found. Plug in the USB adapter: it shows up here by itself.</source>
+        <translation>Kein serieller Anschluss gefunden. Stecken Sie den USB-Adapter ein: Er erscheint hier von selbst.</translation>
+    </message>
+</context>
+<context>
     <name>feetech</name>
     <message>
         <source>voltage</source>

@@ -6960,6 +6960,81 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>WelcomePanel</name>
+    <message>
+        <source>&lt;h2&gt;Connect your servos&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;连接舵机&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>Choose the serial port of your USB adapter and press &lt;b&gt;Connect&lt;/b&gt; (or double-click it), or try ServoBench on simulated servos. Nothing is sent to a servo until you connect.</source>
+        <translation>选择 USB 适配器的串口并按&lt;b&gt;连接&lt;/b&gt;（或双击该串口），也可以先用模拟舵机试用 ServoBench。连接之前不会向任何舵机发送数据。</translation>
+    </message>
+    <message>
+        <source>Serial ports</source>
+        <translation>串口</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>端口</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>描述</translation>
+    </message>
+    <message>
+        <source>Manufacturer</source>
+        <translation>制造商</translation>
+    </message>
+    <message>
+        <source>Serial number</source>
+        <translation>序列号</translation>
+    </message>
+    <message>
+        <source>USB ID</source>
+        <translation>USB ID</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Simulated servos</source>
+        <translation>模拟舵机</translation>
+    </message>
+    <message>
+        <source>PTK servo</source>
+        <translation>PTK 舵机</translation>
+    </message>
+    <message>
+        <source>Feetech bus (five servos)</source>
+        <translation>Feetech 总线（五个舵机）</translation>
+    </message>
+    <message>
+        <source>SO-101 arm (six STS3215)</source>
+        <translation>SO-101 机械臂（六个 STS3215）</translation>
+    </message>
+    <message>
+        <source>Wiring</source>
+        <translation>接线</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;PTK RC servos&lt;/b&gt; (one signal wire, 115200 baud): a 3.3 V or 5 V USB-serial adapter with a 470 Ω resistor from TX to RX. The servo&apos;s signal wire goes to RX, its ground to the adapter&apos;s ground; power the servo from its own supply. The adapter hears its own bytes, and ServoBench expects that.</source>
+        <translation>&lt;b&gt;PTK 模型舵机&lt;/b&gt;（单信号线，115200 波特率）：使用 3.3 V 或 5 V 的 USB 转串口适配器，并在 TX 与 RX 之间接一个 470 Ω 电阻。舵机的信号线接 RX，地线接适配器的地；舵机由独立电源供电。适配器会收到自己发出的字节（回显），ServoBench 会按此处理。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Feetech serial-bus servos&lt;/b&gt;: Feetech&apos;s URT-1 / FE-URT board, or any half-duplex TTL adapter (SCS, STS, HLS) or RS485 adapter (SMS). Chain the servos with their 3-wire cables; power them from the board&apos;s supply (7.4 V or 12 V as the servos ask), never from USB. New servos all answer at ID 1 and 1 Mbps: set them up one at a time (Robot &gt; Set up motors).</source>
+        <translation>&lt;b&gt;飞特串行总线舵机&lt;/b&gt;：使用飞特的 URT-1 / FE-URT 板，或任意半双工 TTL 适配器（SCS、STS、HLS）或 RS485 适配器（SMS）。用舵机的三线电缆将舵机串联；由板上的电源供电（按舵机要求 7.4 V 或 12 V），切勿用 USB 供电。新舵机的 ID 都是 1、波特率都是 1 Mbps：请逐个设置（机器人 &gt; 设置舵机）。</translation>
+    </message>
+    <message>
+        <source>Nothing answers? Leave Protocol on &lt;b&gt;Auto&lt;/b&gt; and connect: ServoBench finds the family and rate, and the Doctor says what is wrong.</source>
+        <translation>没有应答？将协议保持为&lt;b&gt;自动&lt;/b&gt;并连接：ServoBench 会找出舵机系列和波特率，诊断会指出问题所在。</translation>
+    </message>
+    <message>
+        <source>No serial port found. Plug in the USB adapter: it shows up here by itself.</source>
+        <translation>未找到串口。请插入 USB 适配器：它会自动出现在这里。</translation>
+    </message>
+</context>
+<context>
     <name>feetech</name>
     <message>
         <source>voltage</source>

@@ -1,0 +1,43 @@
+// The page shown while nothing is connected: the serial ports with their USB descriptions, the
+// simulated servos, and how to wire each servo family.
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+class QTableWidget;
+class QTimer;
+
+class WelcomePanel : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit WelcomePanel(QWidget *parent = nullptr);
+
+    // Lists the system's serial ports again (also every 2 s while the panel is on screen, so
+    // an adapter plugged in shows up by itself).
+    void refreshPorts();
+    QTableWidget *portTable() const { return m_ports; }
+
+signals:
+    // A system port's path, or one of ConnectionBar's simulated port names.
+    void connectRequested(const QString &port);
+
+protected:
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    QWidget *createPortsBox();
+    QWidget *createSimulatedBox();
+    QWidget *createWiringBox();
+    void connectSelected();
+
+    QTableWidget *m_ports = nullptr;
+    QLabel *m_noPorts = nullptr;
+    QPushButton *m_connect = nullptr;
+    QTimer *m_refresh = nullptr;
+    QStringList m_listed; // the ports shown, to rebuild the table only when they change
+};
