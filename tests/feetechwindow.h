@@ -7,6 +7,7 @@
 #include "feetechgui/feetechworkspace.h"
 #include "mainwindow.h"
 
+#include <QSettings>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -25,6 +26,7 @@ protected:
     // For init(): the simulated bus and a main window showing, not yet connected.
     void openWindowOnBus()
     {
+        QSettings().clear(); // nothing remembered from an earlier test (layout, port, choices)
         QString error;
         const auto servos = servosAt(1000000, {u"STS3215", u"STS3215", u"SCS15"});
         QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));

@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QSettings>
 #include <QTableWidget>
 #include <QtTest>
 
@@ -66,6 +67,8 @@ private:
     }
 
 private slots:
+    void init() { QSettings().clear(); } // nothing remembered from an earlier case
+
     void cleanup()
     {
         m_client.reset();

@@ -56,6 +56,9 @@ class TestDoctorPanel : public testsupport::FeetechBusTest
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
+    // The window remembers the last connection's protocol: each case starts from Auto.
+    void init() { QSettings().clear(); }
+
     void cleanup()
     {
         m_window.reset();

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -88,6 +89,7 @@ private:
 private slots:
     void init()
     {
+        QSettings().clear(); // the Monitor remembers its choices
         m_client = std::make_unique<feetech::BusClient>();
         m_page = std::make_unique<MonitorPage>(m_client.get());
         m_page->resize(1180, 820);

@@ -15,6 +15,7 @@
 
 #include <QLabel>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QtTest>
 
@@ -43,6 +44,8 @@ private:
     }
 
 private slots:
+    void init() { QSettings().clear(); } // nothing remembered from an earlier case
+
     void initTestCase()
     {
         QStandardPaths::setTestModeEnabled(true);

@@ -12,6 +12,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QTreeWidget>
 #include <QtTest>
 
@@ -69,6 +70,7 @@ private:
 private slots:
     void init()
     {
+        QSettings().clear(); // nothing remembered from an earlier case
         QString error;
         QVERIFY2(startEmptyBus(&error), qPrintable(error));
         m_client = std::make_unique<feetech::BusClient>();

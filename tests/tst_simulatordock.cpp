@@ -8,6 +8,7 @@
 #include "mainwindow.h"
 
 #include <QPushButton>
+#include <QSettings>
 #include <QSlider>
 #include <QTableWidget>
 #include <QtTest>
@@ -35,6 +36,7 @@ private:
 private slots:
     void init()
     {
+        QSettings().clear(); // nothing remembered from an earlier case
         QVERIFY(m_dir.isValid());
         m_simulator = std::make_unique<sim::SimulatorThread>();
         QString error;

@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <QtTest>
@@ -129,6 +130,8 @@ class TestTranslations : public QObject
     Q_OBJECT
 
 private slots:
+    void init() { QSettings().clear(); } // nothing remembered from an earlier case
+
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
 
     void everyMessageIsTranslated_data()

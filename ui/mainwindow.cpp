@@ -179,6 +179,9 @@ void MainWindow::createMenus()
     load->setShortcut(QKeySequence::Open);
     QAction *save = file->addAction(tr("&Save profile…"), this, &MainWindow::chooseProfileToSave);
     save->setShortcut(QKeySequence::Save);
+    QMenu *recent = file->addMenu(tr("&Recent profiles"));
+    recent->setObjectName(QStringLiteral("recentProfilesMenu"));
+    connect(recent, &QMenu::aboutToShow, this, [this, recent] { fillRecentProfiles(recent); });
     file->addSeparator();
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);

@@ -83,6 +83,7 @@ private:
     void rememberLayout();
     void rememberConnection();
     void resetLayout();
+    void fillRecentProfiles(QMenu *menu);
     void connectRequested();
     void disconnectRequested();
     void onStatusChanged(const seriallink::ConnectionStatus &status);

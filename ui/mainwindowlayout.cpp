@@ -1,9 +1,14 @@
-// The main window's memory: its size and dock layout and the last connection's settings
-// (QSettings), and View > Reset layout.
+// The main window's memory: its size and dock layout, the last connection's settings and the
+// recent profiles (QSettings), and View > Reset layout.
 #include "common/connectionbar.h"
 #include "common/packetlogdock.h"
+#include "common/recentfiles.h"
+#include "feetechgui/feetechworkspace.h"
 #include "mainwindow.h"
+#include "ptkgui/ptkworkspace.h"
 
+#include <QDir>
+#include <QMenu>
 #include <QSettings>
 
 namespace {
@@ -62,6 +67,23 @@ void MainWindow::rememberConnection()
     settings.setValue(QLatin1String(kPortKey), m_connectionBar->port());
     settings.setValue(QLatin1String(kProtocolKey), protocolKey(m_connectionBar->protocol()));
     settings.setValue(QLatin1String(kBaudKey), m_connectionBar->baud());
+}
+
+void MainWindow::fillRecentProfiles(QMenu *menu)
+{
+    menu->clear();
+    const QStringList files = recentfiles::list(recentfiles::Kind::Profile);
+    for (const QString &path : files) {
+        menu->addAction(QDir::toNativeSeparators(path), this, [this, path] {
+            recentfiles::add(recentfiles::Kind::Profile, path);
+            if (m_feetechActive)
+                m_feetechWorkspace->loadProfile(path);
+            else
+                m_ptkWorkspace->loadProfile(path);
+        });
+    }
+    if (files.isEmpty())
+        menu->addAction(tr("No profile opened or saved yet"))->setEnabled(false);
 }
 
 void MainWindow::resetLayout()

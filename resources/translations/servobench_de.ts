@@ -4115,6 +4115,14 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>&amp;Keyboard shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
+    <message>
+        <source>&amp;Recent profiles</source>
+        <translation>&amp;Zuletzt verwendete Profile</translation>
+    </message>
+    <message>
+        <source>No profile opened or saved yet</source>
+        <translation>Noch kein Profil geöffnet oder gespeichert</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>

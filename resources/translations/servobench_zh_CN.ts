@@ -4098,6 +4098,14 @@ An ID in use is refused.</source>
         <source>&amp;Keyboard shortcuts</source>
         <translation>键盘快捷键(&amp;K)</translation>
     </message>
+    <message>
+        <source>&amp;Recent profiles</source>
+        <translation>最近的配置文件(&amp;R)</translation>
+    </message>
+    <message>
+        <source>No profile opened or saved yet</source>
+        <translation>尚未打开或保存过配置文件</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>

@@ -2,12 +2,12 @@
 #include "common/profileactions.h"
 
 #include "common/profilediffdialog.h"
+#include "common/recentfiles.h"
 #include "profile/profile.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileDialog>
-#include <QStandardPaths>
 
 namespace {
 
@@ -20,26 +20,25 @@ struct Tr
 
 namespace profileactions {
 
-namespace {
-
-QString documents()
-{
-    return QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-}
-
-} // namespace
+namespace { } // namespace
 
 QString chooseSavePath(QWidget *parent, const QString &suggestedName)
 {
-    return QFileDialog::getSaveFileName(parent, Tr::tr("Save profile"),
-                                        documents() + u'/' + suggestedName,
-                                        Tr::tr("ServoBench profiles (*.json)"));
+    const QString path = QFileDialog::getSaveFileName(
+        parent, Tr::tr("Save profile"),
+        recentfiles::directory(recentfiles::Kind::Profile) + u'/' + suggestedName,
+        Tr::tr("ServoBench profiles (*.json)"));
+    recentfiles::add(recentfiles::Kind::Profile, path);
+    return path;
 }
 
 QString chooseLoadPath(QWidget *parent)
 {
-    return QFileDialog::getOpenFileName(parent, Tr::tr("Load profile"), documents(),
-                                        Tr::tr("ServoBench profiles (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(
+        parent, Tr::tr("Load profile"), recentfiles::directory(recentfiles::Kind::Profile),
+        Tr::tr("ServoBench profiles (*.json)"));
+    recentfiles::add(recentfiles::Kind::Profile, path);
+    return path;
 }
 
 bool save(const QString &path, const model::ParameterModel &parameters, const QString &family,

@@ -2,6 +2,7 @@
 #include "feetechgui/calibrationfiles.h"
 
 #include "common/palette.h"
+#include "common/recentfiles.h"
 #include "feetech/armcalibration.h"
 #include "feetech/busclient.h"
 #include "feetechgui/calibrationsteps.h"
@@ -348,7 +349,9 @@ void CalibrationActions::saveCalibration()
         emit ok ? message(text) : problem(text);
     });
     QString error;
-    if (!saver->save(path, &error)) {
+    if (saver->save(path, &error)) {
+        recentfiles::add(recentfiles::Kind::Calibration, path);
+    } else {
         saver->deleteLater();
         emit problem(error);
     }
@@ -368,6 +371,7 @@ void CalibrationActions::loadCalibration()
         emit problem(error);
         return;
     }
+    recentfiles::add(recentfiles::Kind::Calibration, path);
     auto *dialog = new LoadCalibrationDialog(m_client, *motors, path, m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     showApplicationModal(dialog);

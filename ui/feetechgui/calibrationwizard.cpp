@@ -3,6 +3,7 @@
 #include "feetechgui/calibrationwizard.h"
 
 #include "common/palette.h"
+#include "common/recentfiles.h"
 #include "feetech/busclient.h"
 #include "feetech/telemetry.h"
 #include "feetechgui/calibrationsteps.h"
@@ -401,10 +402,12 @@ void CalibrationWizard::chooseFileToSave()
     if (path.isEmpty())
         return;
     QString error;
-    if (saveLeRobotFile(path, &error))
+    if (saveLeRobotFile(path, &error)) {
+        recentfiles::add(recentfiles::Kind::Calibration, path);
         m_status->setText(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
-    else
+    } else {
         fail(error);
+    }
 }
 
 void CalibrationWizard::stopRecording()

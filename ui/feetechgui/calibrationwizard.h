@@ -40,8 +40,9 @@ struct ArmJoint
 QVector<ArmJoint> armJoints(const feetech::BusClient &client, const feetech::RobotTemplate *robot);
 // The template ServoBench offers first: the SO-101 follower when it is there.
 int defaultRobotTemplate(const QVector<feetech::RobotTemplate> &templates);
-// Where to offer saving a LeRobot file for `robot`: its folder in LeRobot's calibration folder
-// when that exists, else the nearest folder of it that does.
+// Where to offer saving or loading a LeRobot file for `robot`: its folder in LeRobot's
+// calibration folder when that exists, else the folder of the calibration file used last, else
+// the nearest folder of LeRobot's that exists.
 QString defaultCalibrationFolder(const feetech::RobotTemplate *robot);
 
 class CalibrationWizard : public QDialog

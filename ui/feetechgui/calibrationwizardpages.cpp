@@ -2,6 +2,7 @@
 #include "feetechgui/calibrationwizard.h"
 
 #include "common/palette.h"
+#include "common/recentfiles.h"
 #include "common/widgethelpers.h"
 #include "feetech/busclient.h"
 #include "feetechgui/rangebar.h"
@@ -9,6 +10,7 @@
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QDir>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -93,6 +95,9 @@ QString defaultCalibrationFolder(const feetech::RobotTemplate *robot)
                 return QDir(root).filePath(folder);
         }
     }
+    const QStringList recent = recentfiles::list(recentfiles::Kind::Calibration);
+    if (!recent.isEmpty())
+        return QFileInfo(recent.first()).absolutePath();
     return QDir(root).exists() ? root : QDir::homePath();
 }
 

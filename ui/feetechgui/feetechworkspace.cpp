@@ -25,6 +25,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSet>
+#include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTabWidget>
@@ -57,12 +58,54 @@ QStringList settingsKeys()
 
 } // namespace
 
+namespace {
+
+// The scan options last chosen in the scan dialog, kept across runs.
+constexpr char kScanIdsKey[] = "scan/ids";
+constexpr char kScanBaudsKey[] = "scan/bauds";
+constexpr char kScanSkipSilentKey[] = "scan/skipSilentRates";
+
+feetech::ScanOptions rememberedScanOptions()
+{
+    const QSettings settings;
+    feetech::ScanOptions options;
+    const QList<QVariant> ids = settings.value(QLatin1String(kScanIdsKey)).toList();
+    if (ids.size() == 2 && ids.at(0).toInt() >= 0 && ids.at(1).toInt() <= feetech::kMaxServoId
+        && ids.at(0).toInt() <= ids.at(1).toInt()) {
+        options.firstId = ids.at(0).toInt();
+        options.lastId = ids.at(1).toInt();
+    }
+    QVector<qint32> bauds;
+    for (const QVariant &baud : settings.value(QLatin1String(kScanBaudsKey)).toList()) {
+        if (feetech::baudRates().contains(baud.toInt()))
+            bauds.append(baud.toInt());
+    }
+    if (!bauds.isEmpty())
+        options.bauds = bauds;
+    options.skipSilentRates =
+        settings.value(QLatin1String(kScanSkipSilentKey), options.skipSilentRates).toBool();
+    return options;
+}
+
+void rememberScanOptions(const feetech::ScanOptions &options)
+{
+    QSettings settings;
+    settings.setValue(QLatin1String(kScanIdsKey), QVariantList {options.firstId, options.lastId});
+    QVariantList bauds;
+    for (const qint32 baud : options.bauds)
+        bauds.append(baud);
+    settings.setValue(QLatin1String(kScanBaudsKey), bauds);
+    settings.setValue(QLatin1String(kScanSkipSilentKey), options.skipSilentRates);
+}
+
+} // namespace
+
 FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     : QWidget(parent)
     , m_client(client)
 {
     setObjectName(QStringLiteral("feetechWorkspace"));
-    m_scanOptions.bauds = {1000000};
+    m_scanOptions = rememberedScanOptions();
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     auto *splitter = new QSplitter(Qt::Horizontal, this);
@@ -353,8 +396,10 @@ void FeetechWorkspace::readIfNew()
 void FeetechWorkspace::openScanDialog()
 {
     ScanDialog dialog(m_scanOptions, this);
-    if (dialog.exec() == QDialog::Accepted)
-        startScan(dialog.options());
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    rememberScanOptions(dialog.options());
+    startScan(dialog.options());
 }
 
 void FeetechWorkspace::startScan(const feetech::ScanOptions &options)

@@ -39,7 +39,6 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     , m_client(client)
 {
     setObjectName(QStringLiteral("jointTable"));
-    m_lastFolder = QDir::homePath();
     auto *layout = new QVBoxLayout(this);
 
     // ---- where the positions come from

@@ -155,7 +155,6 @@ private:
     QPushButton *m_load = nullptr;
     QPushButton *m_moveAll = nullptr;
     QString m_poseName;
-    QString m_lastFolder;
     int m_movesInFlight = 0; // SYNC WRITEs sent by Move all whose outcome has not come yet
     bool m_updating = false; // the table is being filled by code, not edited by the user
 };

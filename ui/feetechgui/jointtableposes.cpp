@@ -2,6 +2,7 @@
 // from and loaded into the targets.
 #include "feetechgui/jointtable.h"
 
+#include "common/recentfiles.h"
 #include "feetech/busclient.h"
 #include "feetech/registerkeys.h"
 #include "feetech/servoparameters.h"
@@ -129,7 +130,7 @@ void JointTable::onCaptureClicked()
 void JointTable::onSaveClicked()
 {
     const QString suggestion =
-        QDir(m_lastFolder)
+        QDir(recentfiles::directory(recentfiles::Kind::Pose))
             .filePath(m_poseName.isEmpty() ? tr("pose.json") : QString(m_poseName + u".json"));
     QString path = QFileDialog::getSaveFileName(this, tr("Save pose"), suggestion,
                                                 tr("ServoBench poses (*.json);;All files (*)"));
@@ -137,20 +138,23 @@ void JointTable::onSaveClicked()
         return;
     if (QFileInfo(path).suffix().isEmpty())
         path += QStringLiteral(".json");
-    m_lastFolder = QFileInfo(path).absolutePath();
     QString error;
-    if (!savePose(path, &error))
+    if (savePose(path, &error))
+        recentfiles::add(recentfiles::Kind::Pose, path);
+    else
         setMessage(error, Tone::Error);
 }
 
 void JointTable::onLoadClicked()
 {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Load pose"), m_lastFolder, tr("ServoBench poses (*.json);;All files (*)"));
+        this, tr("Load pose"), recentfiles::directory(recentfiles::Kind::Pose),
+        tr("ServoBench poses (*.json);;All files (*)"));
     if (path.isEmpty())
         return;
-    m_lastFolder = QFileInfo(path).absolutePath();
     QString error;
-    if (!loadPose(path, &error))
+    if (loadPose(path, &error))
+        recentfiles::add(recentfiles::Kind::Pose, path);
+    else
         setMessage(error, Tone::Error);
 }

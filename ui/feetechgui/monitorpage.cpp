@@ -50,7 +50,7 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     auto *splitter = new QSplitter(Qt::Vertical, right);
     splitter->setChildrenCollapsible(false);
     m_plot = new TelemetryPlot(splitter);
-    m_plot->setWindowSeconds(kDefaultWindowSeconds);
+    m_plot->setWindowSeconds(m_windowCombo->currentData().toDouble()); // as last chosen
     connect(m_plot, &TelemetryPlot::pausedChanged, this, &MonitorPage::updateControls);
     connect(m_plot, &TelemetryPlot::zoomedChanged, this, &MonitorPage::updateControls);
     splitter->addWidget(m_plot);

@@ -2,6 +2,7 @@
 #include "feetechgui/monitorpage.h"
 
 #include "common/widgethelpers.h"
+#include "common/widgetmemory.h"
 #include "feetechgui/telemetryplot.h"
 
 #include <QCheckBox>
@@ -65,6 +66,9 @@ QWidget *MonitorPage::buildControls()
         check->setChecked(quantity == feetech::Quantity::Position
                           || quantity == feetech::Quantity::Speed
                           || quantity == feetech::Quantity::Load);
+        // Before the page listens: the plot does not exist yet (it is applied once it does).
+        widgetmemory::remember(
+            check, QStringLiteral("monitor/plot_%1").arg(feetech::quantityKey(quantity)));
         connect(check, &QCheckBox::toggled, this, &MonitorPage::onQuantityToggled);
         quantityLayout->addWidget(check, q / 2, q % 2);
         m_quantityChecks.append(check);
@@ -81,6 +85,7 @@ QWidget *MonitorPage::buildControls()
     m_rateCombo->addItem(tr("As fast as the bus allows"), 0.0);
     m_rateCombo->setCurrentIndex(m_rateCombo->findData(kDefaultRate));
     connect(m_rateCombo, &QComboBox::activated, this, &MonitorPage::onRateChosen);
+    widgetmemory::remember(m_rateCombo, QStringLiteral("monitor/rate"));
     streamLayout->addRow(tr("Rate:"), m_rateCombo);
     m_startButton =
         actionButton(tr("Start"), "monitorStartButton",
@@ -101,6 +106,7 @@ QWidget *MonitorPage::buildControls()
         m_windowCombo->addItem(tr("%1 s").arg(seconds), seconds);
     m_windowCombo->setCurrentIndex(m_windowCombo->findData(kDefaultWindowSeconds));
     connect(m_windowCombo, &QComboBox::activated, this, &MonitorPage::onWindowChosen);
+    widgetmemory::remember(m_windowCombo, QStringLiteral("monitor/window"));
     viewLayout->addRow(tr("Window:"), m_windowCombo);
     m_pauseButton =
         actionButton(tr("Pause"), "monitorPauseButton",

@@ -1,0 +1,113 @@
+// Tests what ServoBench remembers across runs: form values (widgetmemory), the Monitor's
+// choices, and recent files by kind.
+#include "common/recentfiles.h"
+#include "common/widgetmemory.h"
+#include "feetechgui/monitorpage.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QtTest>
+
+class TestFormMemory : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void init() { QSettings().clear(); }
+
+    void formValuesComeBack()
+    {
+        {
+            QSpinBox spin;
+            spin.setRange(0, 253);
+            QCheckBox check;
+            QComboBox combo;
+            combo.addItem(QStringLiteral("10 Hz"), 10.0);
+            combo.addItem(QStringLiteral("50 Hz"), 50.0);
+            widgetmemory::remember(&spin, QStringLiteral("test/spin"));
+            widgetmemory::remember(&check, QStringLiteral("test/check"));
+            widgetmemory::remember(&combo, QStringLiteral("test/combo"));
+            spin.setValue(42);
+            check.setChecked(true);
+            combo.setCurrentIndex(1);
+        }
+        QSpinBox spin;
+        spin.setRange(0, 253);
+        QCheckBox check;
+        QComboBox combo;
+        combo.addItem(QStringLiteral("10 Hz"), 10.0);
+        combo.addItem(QStringLiteral("50 Hz"), 50.0);
+        widgetmemory::remember(&spin, QStringLiteral("test/spin"));
+        widgetmemory::remember(&check, QStringLiteral("test/check"));
+        widgetmemory::remember(&combo, QStringLiteral("test/combo"));
+        QCOMPARE(spin.value(), 42);
+        QVERIFY(check.isChecked());
+        QCOMPARE(combo.currentIndex(), 1);
+
+        // A value the widget can no longer take is ignored, not forced.
+        QSettings().setValue(QStringLiteral("test/small"), 900);
+        QSpinBox small;
+        small.setRange(0, 100);
+        small.setValue(7);
+        widgetmemory::remember(&small, QStringLiteral("test/small"));
+        QCOMPARE(small.value(), 7);
+    }
+
+    void monitorChoicesComeBack()
+    {
+        {
+            MonitorPage page(nullptr);
+            auto *rate = page.findChild<QComboBox *>(QStringLiteral("monitorRateCombo"));
+            auto *window = page.findChild<QComboBox *>(QStringLiteral("monitorWindowCombo"));
+            auto *load = page.findChild<QCheckBox *>(QStringLiteral("plot_load"));
+            auto *voltage = page.findChild<QCheckBox *>(QStringLiteral("plot_voltage"));
+            QVERIFY(rate && window && load && voltage);
+            rate->setCurrentIndex(0);
+            window->setCurrentIndex(window->count() - 1);
+            load->setChecked(false);
+            voltage->setChecked(true);
+        }
+        MonitorPage page(nullptr);
+        QCOMPARE(page.findChild<QComboBox *>(QStringLiteral("monitorRateCombo"))->currentIndex(),
+                 0);
+        auto *window = page.findChild<QComboBox *>(QStringLiteral("monitorWindowCombo"));
+        QCOMPARE(window->currentIndex(), window->count() - 1);
+        QVERIFY(!page.findChild<QCheckBox *>(QStringLiteral("plot_load"))->isChecked());
+        QVERIFY(page.findChild<QCheckBox *>(QStringLiteral("plot_voltage"))->isChecked());
+    }
+
+    void recentFilesAreNewestFirstAndStillThere()
+    {
+        QTemporaryDir folder;
+        QVERIFY(folder.isValid());
+        QStringList files;
+        for (int i = 0; i < recentfiles::kMaxFiles + 2; ++i) {
+            const QString path = folder.filePath(QStringLiteral("profile-%1.json").arg(i));
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly));
+            files.append(path);
+            recentfiles::add(recentfiles::Kind::Profile, path);
+        }
+        QStringList listed = recentfiles::list(recentfiles::Kind::Profile);
+        QCOMPARE(listed.size(), recentfiles::kMaxFiles);
+        QCOMPARE(listed.first(), files.last());
+        QCOMPARE(recentfiles::directory(recentfiles::Kind::Profile), folder.path());
+        // Opened again: back to the top, not listed twice.
+        recentfiles::add(recentfiles::Kind::Profile, files.at(5));
+        listed = recentfiles::list(recentfiles::Kind::Profile);
+        QCOMPARE(listed.first(), files.at(5));
+        QCOMPARE(listed.count(files.at(5)), 1);
+        // A file deleted since is left out; the kinds are kept apart.
+        QVERIFY(QFile::remove(files.at(5)));
+        QVERIFY(!recentfiles::list(recentfiles::Kind::Profile).contains(files.at(5)));
+        QVERIFY(recentfiles::list(recentfiles::Kind::Pose).isEmpty());
+        QCOMPARE(recentfiles::directory(recentfiles::Kind::Pose),
+                 QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+    }
+};
+
+QTEST_MAIN(TestFormMemory)
+#include "tst_formmemory.moc"
