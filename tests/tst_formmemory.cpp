@@ -11,6 +11,28 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+namespace {
+
+// A spin box, a check box and a combo box that remember their values.
+struct RememberedForm
+{
+    QSpinBox spin;
+    QCheckBox check;
+    QComboBox combo;
+
+    RememberedForm()
+    {
+        spin.setRange(0, 253);
+        combo.addItem(QStringLiteral("10 Hz"), 10.0);
+        combo.addItem(QStringLiteral("50 Hz"), 50.0);
+        widgetmemory::remember(&spin, QStringLiteral("test/spin"));
+        widgetmemory::remember(&check, QStringLiteral("test/check"));
+        widgetmemory::remember(&combo, QStringLiteral("test/combo"));
+    }
+};
+
+} // namespace
+
 class TestFormMemory : public QObject
 {
     Q_OBJECT
@@ -21,31 +43,15 @@ private slots:
     void formValuesComeBack()
     {
         {
-            QSpinBox spin;
-            spin.setRange(0, 253);
-            QCheckBox check;
-            QComboBox combo;
-            combo.addItem(QStringLiteral("10 Hz"), 10.0);
-            combo.addItem(QStringLiteral("50 Hz"), 50.0);
-            widgetmemory::remember(&spin, QStringLiteral("test/spin"));
-            widgetmemory::remember(&check, QStringLiteral("test/check"));
-            widgetmemory::remember(&combo, QStringLiteral("test/combo"));
-            spin.setValue(42);
-            check.setChecked(true);
-            combo.setCurrentIndex(1);
+            RememberedForm form;
+            form.spin.setValue(42);
+            form.check.setChecked(true);
+            form.combo.setCurrentIndex(1);
         }
-        QSpinBox spin;
-        spin.setRange(0, 253);
-        QCheckBox check;
-        QComboBox combo;
-        combo.addItem(QStringLiteral("10 Hz"), 10.0);
-        combo.addItem(QStringLiteral("50 Hz"), 50.0);
-        widgetmemory::remember(&spin, QStringLiteral("test/spin"));
-        widgetmemory::remember(&check, QStringLiteral("test/check"));
-        widgetmemory::remember(&combo, QStringLiteral("test/combo"));
-        QCOMPARE(spin.value(), 42);
-        QVERIFY(check.isChecked());
-        QCOMPARE(combo.currentIndex(), 1);
+        RememberedForm form;
+        QCOMPARE(form.spin.value(), 42);
+        QVERIFY(form.check.isChecked());
+        QCOMPARE(form.combo.currentIndex(), 1);
 
         // A value the widget can no longer take is ignored, not forced.
         QSettings().setValue(QStringLiteral("test/small"), 900);
