@@ -2,6 +2,8 @@
 // and after every operation a comparison with the simulator's own state.
 #include "faultsoak.h"
 
+#include "operationwait.h"
+
 #include "feetech/busclient.h"
 #include "ptk/ptkclient.h"
 #include "sim/simulator.h"
@@ -66,22 +68,7 @@ bool runUntil(const std::function<bool()> &done,
 std::optional<feetech::OperationResult> runOperation(feetech::BusClient &client,
                                                      const std::function<bool()> &start)
 {
-    std::optional<feetech::OperationResult> final;
-    QEventLoop loop;
-    const auto connection = QObject::connect(&client, &feetech::BusClient::operationFinished, &loop,
-                                             [&](const feetech::OperationResult &result) {
-                                                 if (result.final) {
-                                                     final = result;
-                                                     loop.quit();
-                                                 }
-                                             });
-    if (start()) {
-        QTimer::singleShot(kOperationTimeoutMs, &loop, &QEventLoop::quit);
-        if (!final)
-            loop.exec();
-    }
-    QObject::disconnect(connection);
-    return final;
+    return soak::runOperation(client, start, kOperationTimeoutMs);
 }
 
 // A value in the register's range other than `current`.

@@ -2,6 +2,8 @@
 // what the client shows checked against the simulator; threads, open files and memory measured.
 #include "unplugcycles.h"
 
+#include "operationwait.h"
+
 #include "cli/servoctl.h"
 #include "feetech/busclient.h"
 #include "ptk/ptkclient.h"
@@ -160,16 +162,7 @@ QString ptkCycle(ptk::Client &client, Bench &bench, bool apply)
 std::optional<feetech::OperationResult> operate(feetech::BusClient &client,
                                                 const std::function<bool()> &start)
 {
-    std::optional<feetech::OperationResult> final;
-    const auto connection = QObject::connect(&client, &feetech::BusClient::operationFinished,
-                                             [&final](const feetech::OperationResult &result) {
-                                                 if (result.final)
-                                                     final = result;
-                                             });
-    if (start())
-        waitUntil([&] { return final.has_value(); });
-    QObject::disconnect(connection);
-    return final;
+    return soak::runOperation(client, start, kWaitMs);
 }
 
 bool scan(feetech::BusClient &client)

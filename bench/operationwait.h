@@ -1,0 +1,20 @@
+// Waiting for a BusClient operation to end, for the fault soak and the unplug cycles.
+#pragma once
+
+#include "feetech/bustypes.h"
+
+#include <functional>
+#include <optional>
+
+namespace feetech {
+class BusClient;
+}
+
+namespace soak {
+
+// Starts an operation (`start` returns whether it was accepted) and runs the event loop until
+// its final result, or `timeoutMs`: nothing when it was refused or did not end in time.
+std::optional<feetech::OperationResult>
+runOperation(feetech::BusClient &client, const std::function<bool()> &start, int timeoutMs);
+
+} // namespace soak
