@@ -36,6 +36,7 @@ namespace {
 
 constexpr int kRateRefreshMs = 500;
 constexpr int kStatusMessageMs = 8000;
+constexpr int kLogStripHeight = 110; // the packet log at first: a few rows
 // The guard's news stays longer: it says what was done to a servo.
 constexpr int kGuardMessageMs = 20000;
 
@@ -64,10 +65,10 @@ MainWindow::MainWindow(QWidget *parent)
 {
     setWindowTitle(tr("ServoBench"));
     setObjectName(QStringLiteral("mainWindow"));
-    // 1180x820 where there is room; on a 1366x768 screen what is left under the desktop's
+    // 1280x820 where there is room; on a 1366x768 screen what is left under the desktop's
     // panels and the title bar, so the status bar stays on the screen.
     const QRect available = screen()->availableGeometry();
-    resize(std::min(1180, available.width() - 16), std::min(820, available.height() - 48));
+    resize(std::min(1280, available.width() - 16), std::min(820, available.height() - 48));
 
     m_connectionBar = new ConnectionBar(this);
     addToolBar(Qt::TopToolBarArea, m_connectionBar);
@@ -116,6 +117,8 @@ MainWindow::MainWindow(QWidget *parent)
 
     m_packetLog = new PacketLogDock(this);
     addDockWidget(Qt::BottomDockWidgetArea, m_packetLog);
+    // A strip at first: the pages above (the Monitor's charts) get the height.
+    resizeDocks({m_packetLog}, {kLogStripHeight}, Qt::Vertical);
 
     createMenus();
     createDoctor();
@@ -344,6 +347,7 @@ void MainWindow::showSimulatorDock(bool arm)
         addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
         // A tab beside the packet log: the pages above keep their height.
         tabifyDockWidget(m_packetLog, m_simulatorDock);
+        resizeDocks({m_simulatorDock}, {m_simulatorDock->minimumSizeHint().height()}, Qt::Vertical);
         m_viewMenu->addAction(m_simulatorDock->toggleViewAction());
         connect(m_simulatorDock, &SimulatorDock::message, this,
                 [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });

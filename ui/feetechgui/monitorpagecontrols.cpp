@@ -95,7 +95,8 @@ QWidget *MonitorPage::buildControls()
     m_startButton->setFont(bold);
     connect(m_startButton, &QPushButton::clicked, this, &MonitorPage::toggleStream);
     streamLayout->addRow(m_startButton);
-    controlsLayout->addWidget(streamGroup);
+    // First: Rate and Start stay in sight on a 1366x768 screen, above the servo list.
+    controlsLayout->insertWidget(0, streamGroup);
 
     auto *viewGroup = new QGroupBox(tr("View"), controls);
     auto *viewLayout = new QFormLayout(viewGroup);
