@@ -44,6 +44,19 @@ class TestParameterPage : public QObject
     Q_OBJECT
 
 private slots:
+    void withoutAModelItShowsItsEmptyStateText()
+    {
+        ParameterPage::Options options;
+        options.emptyText = QStringLiteral("No servo chosen.");
+        ParameterPage page(nullptr, options);
+        auto *empty = page.findChild<QLabel *>(QStringLiteral("emptyState"));
+        QVERIFY(empty);
+        QCOMPARE(empty->text(), options.emptyText);
+        // Given a model, the form replaces it.
+        page.setModel(m_parameters.get());
+        QVERIFY(!page.findChild<QLabel *>(QStringLiteral("emptyState")));
+    }
+
     void init()
     {
         m_parameters = std::make_unique<model::ParameterModel>();

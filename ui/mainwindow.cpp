@@ -4,6 +4,7 @@
 #include "common/connectionbar.h"
 #include "common/languagemenu.h"
 #include "common/packetlogdock.h"
+#include "common/packetwindow.h"
 #include "common/shortcutsdialog.h"
 #include "common/simulatordock.h"
 #include "common/welcomepanel.h"
@@ -218,6 +219,17 @@ void MainWindow::createMenus()
         m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
         m_feetechWorkspace->openScanDialog();
     });
+
+    QAction *packets = link->addAction(tr("Pac&ket window…"), this, [this] {
+        auto *window = findChild<PacketWindow *>();
+        if (!window)
+            window = new PacketWindow(m_feetech.get(), m_ptk.get(), this);
+        window->show();
+        window->raise();
+        window->activateWindow();
+    });
+    packets->setObjectName(QStringLiteral("packetWindowAction"));
+    packets->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
 
     // The emergency stop of the Feetech bus. Esc reaches it from every page of the window; a
     // dialog that is open keeps Esc for itself (and a modal one blocks the bus work anyway).

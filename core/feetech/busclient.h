@@ -83,6 +83,10 @@ public:
     bool eepromUnlocked(int index) const;
     // Closes it and reads it back (Session::lockEeprom).
     bool lockEeprom(int index, QString *error = nullptr);
+    // A frame built by hand (the packet window), queued like any command and sent once at
+    // `baud` (Session::sendPacket). The caller has asked before anything that writes EEPROM.
+    bool sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
+                    int replyDataSize, QString *error = nullptr);
 
     // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
 

@@ -114,7 +114,8 @@ enum class Operation {
     MoveTest, // the health check's confirmed move, with what it changed put back
     Guard, // the guard's hold or torque off, ahead of the queue; reported as a GuardEvent
     RecoverOverload, // torque off and on again after an overload trip, then the status checked
-    LockEeprom // the EEPROM lock closed and read back (a lock left open)
+    LockEeprom, // the EEPROM lock closed and read back (a lock left open)
+    SendPacket // a frame built by hand (the packet window), sent once as it is
 };
 
 struct OperationResult

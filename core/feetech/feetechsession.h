@@ -75,6 +75,11 @@ public:
     // Closes the servo's EEPROM lock (one left open by a write cut short) and reads it back: ok
     // only when it reads back locked.
     void lockEeprom(const feetech::ServoInfo &servo);
+    // A frame built by hand, sent once at `baud` (feetechsessionpacket.cpp): it waits for the
+    // answer of `replyId` (`replyDataSize` data bytes), or, without one, listens for a while;
+    // what comes back is in the packet log.
+    void sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
+                    int replyDataSize);
     // A small, slow, torque-limited wiggle around where the servo stands, then everything it
     // changed put back (see JointIdentify). Between its moves the bus is free for telemetry
     // and All torque off, which stops it with the torque left off.

@@ -40,6 +40,7 @@ Client::Client(const SessionTiming &timing, QObject *parent)
     });
     connect(session, &Session::applyProgress, this, &Client::applyProgress);
     connect(session, &Session::applyFinished, this, &Client::onApplyFinished);
+    connect(session, &Session::frameSent, this, &Client::frameSent);
 }
 
 Client::~Client() = default;
@@ -167,6 +168,18 @@ void Client::onApplyFinished(bool ok, const QString &message)
             m_model.markUnknown(definition.key);
     }
     emit applyFinished(ok, message);
+}
+
+bool Client::sendFrame(const QByteArray &frame, bool expectsReply, QString *error)
+{
+    if (!isConnected()) {
+        if (error)
+            *error = Tr::tr("The servo is not connected.");
+        return false;
+    }
+    m_worker.run(
+        [frame, expectsReply](Session &session) { session.sendFrame(frame, expectsReply); });
+    return true;
 }
 
 } // namespace ptk

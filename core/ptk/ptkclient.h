@@ -45,6 +45,9 @@ public:
     // Sends the full N1..N12 sequence: the edits, and the device values of everything else.
     // Returns false (and *error) when nothing was sent.
     bool apply(QString *error = nullptr);
+    // A frame built by hand (the packet window), sent once (Session::sendFrame); frameSent
+    // follows. Refused, false and *error, when the servo is not connected.
+    bool sendFrame(const QByteArray &frame, bool expectsReply, QString *error = nullptr);
 
     // Answers per second over the last two seconds of polling.
     double pollRate() const;
@@ -54,6 +57,7 @@ signals:
     void readFinished(bool ok, const QString &message);
     void applyProgress(int done, int total);
     void applyFinished(bool ok, const QString &message);
+    void frameSent(bool ok, const QString &message);
     void valuesUpdated();
 
 private:

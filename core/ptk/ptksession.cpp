@@ -350,4 +350,38 @@ void Session::noteAnswer(bool ok)
                                 "powered and plugged into the programmer."));
 }
 
+void Session::sendFrame(const QByteArray &frame, bool expectsReply)
+{
+    seriallink::Transaction transaction;
+    transaction.request = frame;
+    transaction.priority = seriallink::Transaction::Priority::Command;
+    transaction.retryCount = 0; // sent once, as the user built it
+    if (expectsReply) {
+        transaction.acceptsReply = [](const QByteArray &reply) {
+            return decodeReply(reply).has_value();
+        };
+        transaction.expectedReplySize = kReplySize;
+    } // else a write: the servo never acknowledges one
+    const quint64 generation = m_link->generation();
+    transaction.done = [this, generation,
+                        expectsReply](const seriallink::TransactionResult &result) {
+        if (generation != m_link->generation())
+            return;
+        if (result.failure == seriallink::Failure::LinkDown
+            || result.failure == seriallink::Failure::Cancelled) {
+            emit frameSent(false, Tr::tr("The frame was not sent: the link is down."));
+            return;
+        }
+        if (!expectsReply) {
+            emit frameSent(true, Tr::tr("Sent."));
+            return;
+        }
+        const bool answered = decodeReply(result.reply).has_value();
+        emit frameSent(answered,
+                       answered ? Tr::tr("The servo answered.")
+                                : Tr::tr("Sent; the servo did not answer."));
+    };
+    m_engine->submit(std::move(transaction));
+}
+
 } // namespace ptk

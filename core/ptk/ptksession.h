@@ -60,6 +60,9 @@ public:
     void readAll();
     // Writes the full sequence with `values` (complete, in wire units), then reads back.
     void apply(const ptk::ParameterSet &values);
+    // A frame built by hand (the packet window), sent once between the polls; a query waits
+    // for its reply. What comes back is in the packet log; frameSent says how it went.
+    void sendFrame(const QByteArray &frame, bool expectsReply);
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
@@ -67,6 +70,7 @@ signals:
     void readFinished(bool ok, const QString &message);
     void applyProgress(int done, int total);
     void applyFinished(bool ok, const QString &message);
+    void frameSent(bool ok, const QString &message);
     void packetLogged(const seriallink::PacketLogEntry &entry);
     void countersChanged(const seriallink::LinkCounters &counters);
 

@@ -1170,6 +1170,14 @@
         <source>This servo has no goal position register: it cannot be moved.</source>
         <translation>Dieses Servo hat kein Zielpositionsregister: Es kann nicht bewegt werden.</translation>
     </message>
+    <message>
+        <source>That is not a whole Feetech frame (header, length and checksum).</source>
+        <translation>Das ist kein vollständiger Feetech-Frame (Kopf, Länge und Prüfsumme).</translation>
+    </message>
+    <message>
+        <source>%1 bps is not a Feetech baud rate.</source>
+        <translation>%1 bps ist keine Feetech-Baudrate.</translation>
+    </message>
 </context>
 <context>
     <name>FeetechGuard</name>
@@ -2622,6 +2630,18 @@
         <source>Setting the goal to the present position</source>
         <translation>Ziel wird auf die aktuelle Position gesetzt</translation>
     </message>
+    <message>
+        <source>Sent; its answers, if any, are in the packet log.</source>
+        <translation>Gesendet; etwaige Antworten stehen im Paketprotokoll.</translation>
+    </message>
+    <message>
+        <source>Servo %1 answered.</source>
+        <translation>Servo %1 hat geantwortet.</translation>
+    </message>
+    <message>
+        <source>Sent; servo %1 did not answer: %2</source>
+        <translation>Gesendet; Servo %1 hat nicht geantwortet: %2</translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>
@@ -3021,6 +3041,18 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Health</source>
         <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>No servo chosen. Scan the bus (Scan… at the top left), then choose a servo in the tree: its settings show here.</source>
+        <translation>Kein Servo gewählt. Scannen Sie den Bus („Scannen…“ oben links) und wählen Sie dann ein Servo im Baum: Seine Einstellungen erscheinen hier.</translation>
+    </message>
+    <message>
+        <source>Press Scan… to find the servos on the bus.</source>
+        <translation>Drücken Sie „Scannen…“, um die Servos am Bus zu finden.</translation>
+    </message>
+    <message>
+        <source>No servo yet: scan the bus.</source>
+        <translation>Noch kein Servo: Scannen Sie den Bus.</translation>
     </message>
 </context>
 <context>
@@ -4123,6 +4155,10 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>No profile opened or saved yet</source>
         <translation>Noch kein Profil geöffnet oder gespeichert</translation>
     </message>
+    <message>
+        <source>Pac&amp;ket window…</source>
+        <translation>Pa&amp;ketfenster…</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>
@@ -4914,6 +4950,370 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>PacketSequence</name>
+    <message>
+        <source>not a ServoBench packet sequence (the document is not a JSON object)</source>
+        <translation>keine ServoBench-Paketfolge (das Dokument ist kein JSON-Objekt)</translation>
+    </message>
+    <message>
+        <source>not a ServoBench packet sequence (&quot;%1&quot; is not &quot;%2&quot;)</source>
+        <translation>keine ServoBench-Paketfolge („%1“ ist nicht „%2“)</translation>
+    </message>
+    <message>
+        <source>the packet sequence has format version %1 and was written by a newer ServoBench; this version reads format version %2 and older</source>
+        <translation>die Paketfolge hat die Formatversion %1 und stammt von einem neueren ServoBench; diese Version liest Formatversion %2 und älter</translation>
+    </message>
+    <message>
+        <source>It writes to the PTK servo, outside the verified write sequence of its settings page.</source>
+        <translation>Er schreibt auf das PTK-Servo, außerhalb der geprüften Schreibfolge seiner Einstellungsseite.</translation>
+    </message>
+    <message>
+        <source>every servo on the bus</source>
+        <translation>jedes Servo am Bus</translation>
+    </message>
+    <message>
+        <source>servo %1</source>
+        <translation>Servo %1</translation>
+    </message>
+    <message>
+        <source>It restores the factory values of %1 (its settings are lost).</source>
+        <translation>Er stellt die Werkswerte von %1 wieder her (die Einstellungen gehen verloren).</translation>
+    </message>
+    <message>
+        <source>It makes the present position the middle of %1 (written to EEPROM).</source>
+        <translation>Er macht die aktuelle Position zur Mitte von %1 (ins EEPROM geschrieben).</translation>
+    </message>
+    <message>
+        <source>It asks %1 to store its settings (an EEPROM write).</source>
+        <translation>Er lässt %1 seine Einstellungen speichern (ein EEPROM-Schreibvorgang).</translation>
+    </message>
+    <message>
+        <source>It writes %1 of %2, in EEPROM: the servo keeps it when powered off, and a wrong ID or baud rate makes it answer elsewhere.</source>
+        <translation>Er schreibt %1 von %2 ins EEPROM: Das Servo behält es auch ohne Strom, und eine falsche ID oder Baudrate lässt es anderswo antworten.</translation>
+    </message>
+    <message>
+        <source>too large to be a packet sequence</source>
+        <translation>zu groß für eine Paketfolge</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a list of frames</source>
+        <translation>„%1“ muss eine Liste von Frames sein</translation>
+    </message>
+    <message>
+        <source>more than %1 frames</source>
+        <translation>mehr als %1 Frames</translation>
+    </message>
+    <message>
+        <source>frame %1 is not an object of protocol, hex and baud</source>
+        <translation>Frame %1 ist kein Objekt aus protocol, hex und baud</translation>
+    </message>
+    <message>
+        <source>frame %1: its hex is not hexadecimal bytes</source>
+        <translation>Frame %1: sein hex ist keine Folge hexadezimaler Bytes</translation>
+    </message>
+    <message>
+        <source>frame %1: the protocol must be feetech or ptk</source>
+        <translation>Frame %1: das Protokoll muss feetech oder ptk sein</translation>
+    </message>
+    <message>
+        <source>frame %1 is not a whole %2 frame at a known rate</source>
+        <translation>Frame %1 ist kein vollständiger %2-Frame mit bekannter Rate</translation>
+    </message>
+</context>
+<context>
+    <name>PacketWindow</name>
+    <message>
+        <source>Packet window</source>
+        <translation>Paketfenster</translation>
+    </message>
+    <message>
+        <source>Send this frame?</source>
+        <translation>Diesen Frame senden?</translation>
+    </message>
+    <message>
+        <source>Send it?</source>
+        <translation>Senden?</translation>
+    </message>
+    <message>
+        <source>Feetech</source>
+        <translation>Feetech</translation>
+    </message>
+    <message>
+        <source>PTK</source>
+        <translation>PTK</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Frame</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Answer</source>
+        <translation>Antwort</translation>
+    </message>
+    <message>
+        <source>Resend</source>
+        <translation>Erneut senden</translation>
+    </message>
+    <message>
+        <source>Send all</source>
+        <translation>Alle senden</translation>
+    </message>
+    <message>
+        <source>Send every frame of the history again, oldest first</source>
+        <translation>Alle Frames des Verlaufs erneut senden, den ältesten zuerst</translation>
+    </message>
+    <message>
+        <source>Save sequence…</source>
+        <translation>Folge speichern…</translation>
+    </message>
+    <message>
+        <source>Load sequence…</source>
+        <translation>Folge laden…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>History (double-click a frame to send it again):</source>
+        <translation>Verlauf (Doppelklick auf einen Frame sendet ihn erneut):</translation>
+    </message>
+    <message>
+        <source>The connection closed.</source>
+        <translation>Die Verbindung wurde geschlossen.</translation>
+    </message>
+    <message>
+        <source>PING</source>
+        <translation>PING</translation>
+    </message>
+    <message>
+        <source>READ</source>
+        <translation>READ</translation>
+    </message>
+    <message>
+        <source>WRITE</source>
+        <translation>WRITE</translation>
+    </message>
+    <message>
+        <source>REG WRITE</source>
+        <translation>REG WRITE</translation>
+    </message>
+    <message>
+        <source>ACTION</source>
+        <translation>ACTION</translation>
+    </message>
+    <message>
+        <source>SYNC READ</source>
+        <translation>SYNC READ</translation>
+    </message>
+    <message>
+        <source>SYNC WRITE</source>
+        <translation>SYNC WRITE</translation>
+    </message>
+    <message>
+        <source>RECOVERY (factory values)</source>
+        <translation>RECOVERY (Werkswerte)</translation>
+    </message>
+    <message>
+        <source>REBOOT</source>
+        <translation>REBOOT</translation>
+    </message>
+    <message>
+        <source>RESET (clear the status)</source>
+        <translation>RESET (Status löschen)</translation>
+    </message>
+    <message>
+        <source>CALIBRATE (middle)</source>
+        <translation>CALIBRATE (Mitte)</translation>
+    </message>
+    <message>
+        <source>Another code</source>
+        <translation>Anderer Code</translation>
+    </message>
+    <message>
+        <source>254 (0xFE) is the broadcast ID: every servo acts, none answers</source>
+        <translation>254 (0xFE) ist die Broadcast-ID: Jedes Servo führt aus, keines antwortet</translation>
+    </message>
+    <message>
+        <source>hex bytes, e.g. 00 08</source>
+        <translation>Hex-Bytes, z. B. 00 08</translation>
+    </message>
+    <message>
+        <source>e.g. 1,2,3 or 1-6</source>
+        <translation>z. B. 1,2,3 oder 1-6</translation>
+    </message>
+    <message>
+        <source>%L1 bps</source>
+        <translation>%L1 bps</translation>
+    </message>
+    <message>
+        <source>Instruction:</source>
+        <translation>Befehl:</translation>
+    </message>
+    <message>
+        <source>Code:</source>
+        <translation>Code:</translation>
+    </message>
+    <message>
+        <source>ID:</source>
+        <translation>ID:</translation>
+    </message>
+    <message>
+        <source>Address:</source>
+        <translation>Adresse:</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>Länge:</translation>
+    </message>
+    <message>
+        <source>Data:</source>
+        <translation>Daten:</translation>
+    </message>
+    <message>
+        <source>IDs:</source>
+        <translation>IDs:</translation>
+    </message>
+    <message>
+        <source>Baud rate:</source>
+        <translation>Baudrate:</translation>
+    </message>
+    <message>
+        <source>Query %1 (command %2)</source>
+        <translation>Abfrage %1 (Befehl %2)</translation>
+    </message>
+    <message>
+        <source>Write %1 (command %2)</source>
+        <translation>Schreiben %1 (Befehl %2)</translation>
+    </message>
+    <message>
+        <source>Another command</source>
+        <translation>Anderer Befehl</translation>
+    </message>
+    <message>
+        <source>Command:</source>
+        <translation>Befehl:</translation>
+    </message>
+    <message>
+        <source>First word:</source>
+        <translation>Erstes Wort:</translation>
+    </message>
+    <message>
+        <source>Second word:</source>
+        <translation>Zweites Wort:</translation>
+    </message>
+    <message>
+        <source>A query is answered with two words; the servo never acknowledges a write. PTK servos talk at 115200 baud.</source>
+        <translation>Eine Abfrage wird mit zwei Wörtern beantwortet; ein Schreibvorgang wird vom Servo nie bestätigt. PTK-Servos sprechen mit 115200 Baud.</translation>
+    </message>
+    <message>
+        <source>Data: %1</source>
+        <translation>Daten: %1</translation>
+    </message>
+    <message>
+        <source>Data: give the bytes to write.</source>
+        <translation>Daten: Geben Sie die zu schreibenden Bytes an.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Data: %n byte(s) for each of the %1 servo(s), one after the other.</source>
+        <translation>
+            <numerusform>Daten: %n Byte für jedes der %1 Servos, eines nach dem anderen.</numerusform>
+            <numerusform>Daten: %n Bytes für jedes der %1 Servos, eines nach dem anderen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Data: none, or the 2-byte position to make the middle.</source>
+        <translation>Daten: keine, oder die 2-Byte-Position, die zur Mitte werden soll.</translation>
+    </message>
+    <message>
+        <source>The frame would be %1 bytes; a Feetech frame holds at most %2.</source>
+        <translation>Der Frame wäre %1 Bytes lang; ein Feetech-Frame fasst höchstens %2.</translation>
+    </message>
+    <message>
+        <source>The fields do not make a whole frame.</source>
+        <translation>Die Felder ergeben keinen vollständigen Frame.</translation>
+    </message>
+    <message>
+        <source>Connect to a Feetech bus first</source>
+        <translation>Zuerst mit einem Feetech-Bus verbinden</translation>
+    </message>
+    <message>
+        <source>Connect to a PTK servo first</source>
+        <translation>Zuerst mit einem PTK-Servo verbinden</translation>
+    </message>
+    <message>
+        <source>Wait until the frames on their way are answered.</source>
+        <translation>Warten Sie, bis die gesendeten Frames beantwortet sind.</translation>
+    </message>
+    <message>
+        <source>There is nothing to send.</source>
+        <translation>Es gibt nichts zu senden.</translation>
+    </message>
+    <message>
+        <source>Connect to a Feetech bus first.</source>
+        <translation>Verbinden Sie zuerst mit einem Feetech-Bus.</translation>
+    </message>
+    <message>
+        <source>Connect to a PTK servo first.</source>
+        <translation>Verbinden Sie zuerst mit einem PTK-Servo.</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>Es wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>sending…</source>
+        <translation>wird gesendet…</translation>
+    </message>
+    <message>
+        <source>Choose a frame of the history first.</source>
+        <translation>Wählen Sie zuerst einen Frame im Verlauf.</translation>
+    </message>
+    <message>
+        <source>loaded, not sent</source>
+        <translation>geladen, nicht gesendet</translation>
+    </message>
+    <message>
+        <source>The history is empty: there is nothing to save.</source>
+        <translation>Der Verlauf ist leer: Es gibt nichts zu speichern.</translation>
+    </message>
+    <message>
+        <source>Save packet sequence</source>
+        <translation>Paketfolge speichern</translation>
+    </message>
+    <message>
+        <source>ServoBench packet sequences (*.json)</source>
+        <translation>ServoBench-Paketfolgen (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n frame(s).</source>
+        <translation>
+            <numerusform>%n Frame gespeichert.</numerusform>
+            <numerusform>%n Frames gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load packet sequence</source>
+        <translation>Paketfolge laden</translation>
+    </message>
+    <message>
+        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
+        <translation>In den Verlauf geladen: Wählen Sie einen Frame und „Erneut senden“, oder „Alle senden“.</translation>
+    </message>
+</context>
+<context>
     <name>ParameterPage</name>
     <message>
         <source>Load profile…</source>
@@ -5360,6 +5760,22 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>The link went down during Apply: %1</source>
         <translation>Die Verbindung brach während Übernehmen ab: %1</translation>
+    </message>
+    <message>
+        <source>The frame was not sent: the link is down.</source>
+        <translation>Der Frame wurde nicht gesendet: Die Verbindung ist unterbrochen.</translation>
+    </message>
+    <message>
+        <source>Sent.</source>
+        <translation>Gesendet.</translation>
+    </message>
+    <message>
+        <source>The servo answered.</source>
+        <translation>Das Servo hat geantwortet.</translation>
+    </message>
+    <message>
+        <source>Sent; the servo did not answer.</source>
+        <translation>Gesendet; das Servo hat nicht geantwortet.</translation>
     </message>
 </context>
 <context>

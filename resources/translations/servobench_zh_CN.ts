@@ -1165,6 +1165,14 @@
         <source>This servo has no goal position register: it cannot be moved.</source>
         <translation>该舵机没有目标位置寄存器：无法移动。</translation>
     </message>
+    <message>
+        <source>That is not a whole Feetech frame (header, length and checksum).</source>
+        <translation>这不是完整的飞特帧（帧头、长度和校验和）。</translation>
+    </message>
+    <message>
+        <source>%1 bps is not a Feetech baud rate.</source>
+        <translation>%1 bps 不是飞特的波特率。</translation>
+    </message>
 </context>
 <context>
     <name>FeetechGuard</name>
@@ -2609,6 +2617,18 @@
         <source>Setting the goal to the present position</source>
         <translation>正在将目标设为当前位置</translation>
     </message>
+    <message>
+        <source>Sent; its answers, if any, are in the packet log.</source>
+        <translation>已发送；如有应答，见数据包日志。</translation>
+    </message>
+    <message>
+        <source>Servo %1 answered.</source>
+        <translation>舵机 %1 已应答。</translation>
+    </message>
+    <message>
+        <source>Sent; servo %1 did not answer: %2</source>
+        <translation>已发送；舵机 %1 无应答：%2</translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>
@@ -3008,6 +3028,18 @@ An ID in use is refused.</source>
     <message>
         <source>Wait for the running operation to finish before loading a profile.</source>
         <translation>请等待当前操作完成后再加载配置文件。</translation>
+    </message>
+    <message>
+        <source>No servo chosen. Scan the bus (Scan… at the top left), then choose a servo in the tree: its settings show here.</source>
+        <translation>未选择舵机。请扫描总线（左上角的“扫描…”），然后在列表中选择一个舵机：其设置将显示在这里。</translation>
+    </message>
+    <message>
+        <source>Press Scan… to find the servos on the bus.</source>
+        <translation>按“扫描…”查找总线上的舵机。</translation>
+    </message>
+    <message>
+        <source>No servo yet: scan the bus.</source>
+        <translation>还没有舵机：请扫描总线。</translation>
     </message>
 </context>
 <context>
@@ -4106,6 +4138,10 @@ An ID in use is refused.</source>
         <source>No profile opened or saved yet</source>
         <translation>尚未打开或保存过配置文件</translation>
     </message>
+    <message>
+        <source>Pac&amp;ket window…</source>
+        <translation>数据包窗口(&amp;K)…</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>
@@ -4888,6 +4924,368 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>PacketSequence</name>
+    <message>
+        <source>not a ServoBench packet sequence (the document is not a JSON object)</source>
+        <translation>不是 ServoBench 数据包序列（文档不是 JSON 对象）</translation>
+    </message>
+    <message>
+        <source>not a ServoBench packet sequence (&quot;%1&quot; is not &quot;%2&quot;)</source>
+        <translation>不是 ServoBench 数据包序列（“%1”不是“%2”）</translation>
+    </message>
+    <message>
+        <source>the packet sequence has format version %1 and was written by a newer ServoBench; this version reads format version %2 and older</source>
+        <translation>该数据包序列的格式版本为 %1，由更新的 ServoBench 写入；此版本只能读取格式版本 %2 及更早的版本</translation>
+    </message>
+    <message>
+        <source>It writes to the PTK servo, outside the verified write sequence of its settings page.</source>
+        <translation>它会写入 PTK 舵机，不经过设置页经过验证的写入流程。</translation>
+    </message>
+    <message>
+        <source>every servo on the bus</source>
+        <translation>总线上的所有舵机</translation>
+    </message>
+    <message>
+        <source>servo %1</source>
+        <translation>舵机 %1</translation>
+    </message>
+    <message>
+        <source>It restores the factory values of %1 (its settings are lost).</source>
+        <translation>它会恢复%1的出厂值（现有设置将丢失）。</translation>
+    </message>
+    <message>
+        <source>It makes the present position the middle of %1 (written to EEPROM).</source>
+        <translation>它会把%1的当前位置设为中位（写入 EEPROM）。</translation>
+    </message>
+    <message>
+        <source>It asks %1 to store its settings (an EEPROM write).</source>
+        <translation>它会让%1保存其设置（写入 EEPROM）。</translation>
+    </message>
+    <message>
+        <source>It writes %1 of %2, in EEPROM: the servo keeps it when powered off, and a wrong ID or baud rate makes it answer elsewhere.</source>
+        <translation>它会写入%2的 %1（EEPROM）：断电后舵机仍保留该值，错误的 ID 或波特率会使舵机在别处应答。</translation>
+    </message>
+    <message>
+        <source>too large to be a packet sequence</source>
+        <translation>太大，不可能是数据包序列</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a list of frames</source>
+        <translation>“%1”必须是帧列表</translation>
+    </message>
+    <message>
+        <source>more than %1 frames</source>
+        <translation>超过 %1 帧</translation>
+    </message>
+    <message>
+        <source>frame %1 is not an object of protocol, hex and baud</source>
+        <translation>第 %1 帧不是由 protocol、hex 和 baud 组成的对象</translation>
+    </message>
+    <message>
+        <source>frame %1: its hex is not hexadecimal bytes</source>
+        <translation>第 %1 帧：其 hex 不是十六进制字节</translation>
+    </message>
+    <message>
+        <source>frame %1: the protocol must be feetech or ptk</source>
+        <translation>第 %1 帧：协议必须是 feetech 或 ptk</translation>
+    </message>
+    <message>
+        <source>frame %1 is not a whole %2 frame at a known rate</source>
+        <translation>第 %1 帧不是已知波特率下完整的 %2 帧</translation>
+    </message>
+</context>
+<context>
+    <name>PacketWindow</name>
+    <message>
+        <source>Packet window</source>
+        <translation>数据包窗口</translation>
+    </message>
+    <message>
+        <source>Send this frame?</source>
+        <translation>发送此帧？</translation>
+    </message>
+    <message>
+        <source>Send it?</source>
+        <translation>要发送吗？</translation>
+    </message>
+    <message>
+        <source>Feetech</source>
+        <translation>飞特</translation>
+    </message>
+    <message>
+        <source>PTK</source>
+        <translation>PTK</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+    <message>
+        <source>Answer</source>
+        <translation>应答</translation>
+    </message>
+    <message>
+        <source>Resend</source>
+        <translation>重新发送</translation>
+    </message>
+    <message>
+        <source>Send all</source>
+        <translation>全部发送</translation>
+    </message>
+    <message>
+        <source>Send every frame of the history again, oldest first</source>
+        <translation>按从旧到新的顺序重新发送历史中的每一帧</translation>
+    </message>
+    <message>
+        <source>Save sequence…</source>
+        <translation>保存序列…</translation>
+    </message>
+    <message>
+        <source>Load sequence…</source>
+        <translation>加载序列…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>清空</translation>
+    </message>
+    <message>
+        <source>History (double-click a frame to send it again):</source>
+        <translation>历史（双击某帧可再次发送）：</translation>
+    </message>
+    <message>
+        <source>The connection closed.</source>
+        <translation>连接已关闭。</translation>
+    </message>
+    <message>
+        <source>PING</source>
+        <translation>PING（查询状态）</translation>
+    </message>
+    <message>
+        <source>READ</source>
+        <translation>READ（读数据）</translation>
+    </message>
+    <message>
+        <source>WRITE</source>
+        <translation>WRITE（写数据）</translation>
+    </message>
+    <message>
+        <source>REG WRITE</source>
+        <translation>REG WRITE（异步写）</translation>
+    </message>
+    <message>
+        <source>ACTION</source>
+        <translation>ACTION（执行异步写）</translation>
+    </message>
+    <message>
+        <source>SYNC READ</source>
+        <translation>SYNC READ（同步读）</translation>
+    </message>
+    <message>
+        <source>SYNC WRITE</source>
+        <translation>SYNC WRITE（同步写）</translation>
+    </message>
+    <message>
+        <source>RECOVERY (factory values)</source>
+        <translation>RECOVERY（恢复出厂值）</translation>
+    </message>
+    <message>
+        <source>REBOOT</source>
+        <translation>REBOOT（重启）</translation>
+    </message>
+    <message>
+        <source>RESET (clear the status)</source>
+        <translation>RESET（清除状态）</translation>
+    </message>
+    <message>
+        <source>CALIBRATE (middle)</source>
+        <translation>CALIBRATE（中位校准）</translation>
+    </message>
+    <message>
+        <source>Another code</source>
+        <translation>其他指令码</translation>
+    </message>
+    <message>
+        <source>254 (0xFE) is the broadcast ID: every servo acts, none answers</source>
+        <translation>254 (0xFE) 是广播 ID：所有舵机执行，均不应答</translation>
+    </message>
+    <message>
+        <source>hex bytes, e.g. 00 08</source>
+        <translation>十六进制字节，例如 00 08</translation>
+    </message>
+    <message>
+        <source>e.g. 1,2,3 or 1-6</source>
+        <translation>例如 1,2,3 或 1-6</translation>
+    </message>
+    <message>
+        <source>%L1 bps</source>
+        <translation>%L1 bps</translation>
+    </message>
+    <message>
+        <source>Instruction:</source>
+        <translation>指令：</translation>
+    </message>
+    <message>
+        <source>Code:</source>
+        <translation>指令码：</translation>
+    </message>
+    <message>
+        <source>ID:</source>
+        <translation>ID：</translation>
+    </message>
+    <message>
+        <source>Address:</source>
+        <translation>地址：</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>长度：</translation>
+    </message>
+    <message>
+        <source>Data:</source>
+        <translation>数据：</translation>
+    </message>
+    <message>
+        <source>IDs:</source>
+        <translation>ID 列表：</translation>
+    </message>
+    <message>
+        <source>Baud rate:</source>
+        <translation>波特率：</translation>
+    </message>
+    <message>
+        <source>Query %1 (command %2)</source>
+        <translation>查询 %1（命令 %2）</translation>
+    </message>
+    <message>
+        <source>Write %1 (command %2)</source>
+        <translation>写入 %1（命令 %2）</translation>
+    </message>
+    <message>
+        <source>Another command</source>
+        <translation>其他命令</translation>
+    </message>
+    <message>
+        <source>Command:</source>
+        <translation>命令：</translation>
+    </message>
+    <message>
+        <source>First word:</source>
+        <translation>第一个字：</translation>
+    </message>
+    <message>
+        <source>Second word:</source>
+        <translation>第二个字：</translation>
+    </message>
+    <message>
+        <source>A query is answered with two words; the servo never acknowledges a write. PTK servos talk at 115200 baud.</source>
+        <translation>查询的应答为两个字；舵机从不确认写入。PTK 舵机的波特率为 115200。</translation>
+    </message>
+    <message>
+        <source>Data: %1</source>
+        <translation>数据：%1</translation>
+    </message>
+    <message>
+        <source>Data: give the bytes to write.</source>
+        <translation>数据：请给出要写入的字节。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Data: %n byte(s) for each of the %1 servo(s), one after the other.</source>
+        <translation>
+            <numerusform>数据：%1 个舵机依次各 %n 字节。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Data: none, or the 2-byte position to make the middle.</source>
+        <translation>数据：留空，或给出要设为中位的 2 字节位置。</translation>
+    </message>
+    <message>
+        <source>The frame would be %1 bytes; a Feetech frame holds at most %2.</source>
+        <translation>该帧将有 %1 字节；飞特帧最多 %2 字节。</translation>
+    </message>
+    <message>
+        <source>The fields do not make a whole frame.</source>
+        <translation>这些字段无法组成完整的帧。</translation>
+    </message>
+    <message>
+        <source>Connect to a Feetech bus first</source>
+        <translation>请先连接飞特总线</translation>
+    </message>
+    <message>
+        <source>Connect to a PTK servo first</source>
+        <translation>请先连接 PTK 舵机</translation>
+    </message>
+    <message>
+        <source>Wait until the frames on their way are answered.</source>
+        <translation>请等待已发送的帧得到应答。</translation>
+    </message>
+    <message>
+        <source>There is nothing to send.</source>
+        <translation>没有可发送的内容。</translation>
+    </message>
+    <message>
+        <source>Connect to a Feetech bus first.</source>
+        <translation>请先连接飞特总线。</translation>
+    </message>
+    <message>
+        <source>Connect to a PTK servo first.</source>
+        <translation>请先连接 PTK 舵机。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>sending…</source>
+        <translation>正在发送…</translation>
+    </message>
+    <message>
+        <source>Choose a frame of the history first.</source>
+        <translation>请先在历史中选择一帧。</translation>
+    </message>
+    <message>
+        <source>loaded, not sent</source>
+        <translation>已加载，未发送</translation>
+    </message>
+    <message>
+        <source>The history is empty: there is nothing to save.</source>
+        <translation>历史为空：没有可保存的内容。</translation>
+    </message>
+    <message>
+        <source>Save packet sequence</source>
+        <translation>保存数据包序列</translation>
+    </message>
+    <message>
+        <source>ServoBench packet sequences (*.json)</source>
+        <translation>ServoBench 数据包序列 (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n frame(s).</source>
+        <translation>
+            <numerusform>已保存 %n 帧。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load packet sequence</source>
+        <translation>加载数据包序列</translation>
+    </message>
+    <message>
+        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
+        <translation>已加载到历史：选择一帧后点“重新发送”，或点“全部发送”。</translation>
+    </message>
+</context>
+<context>
     <name>ParameterPage</name>
     <message>
         <source>%1: %2</source>
@@ -5333,6 +5731,22 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>The port is open but the servo does not answer. Check that it is powered and plugged into the programmer.</source>
         <translation>端口已打开，但舵机没有应答。请检查舵机是否已通电并已插入编程器。</translation>
+    </message>
+    <message>
+        <source>The frame was not sent: the link is down.</source>
+        <translation>帧未发送：连接已断开。</translation>
+    </message>
+    <message>
+        <source>Sent.</source>
+        <translation>已发送。</translation>
+    </message>
+    <message>
+        <source>The servo answered.</source>
+        <translation>舵机已应答。</translation>
+    </message>
+    <message>
+        <source>Sent; the servo did not answer.</source>
+        <translation>已发送；舵机无应答。</translation>
     </message>
 </context>
 <context>

@@ -186,6 +186,14 @@ void ParameterPage::rebuild()
     }
 
     if (!m_model) {
+        if (!m_options.emptyText.isEmpty()) {
+            auto *empty = new QLabel(m_options.emptyText, this);
+            empty->setObjectName(QStringLiteral("emptyState"));
+            empty->setWordWrap(true);
+            empty->setAlignment(Qt::AlignCenter);
+            empty->setForegroundRole(QPalette::PlaceholderText);
+            m_formLayout->addWidget(empty);
+        }
         updateButtons();
         return;
     }

@@ -32,6 +32,7 @@ public:
         QString intro; // a line above the form; empty: the default explanation
         QStringList keys; // the parameters to show; empty: all of them
         int columns = 2; // of group boxes, side by side
+        QString emptyText; // shown instead of the form while there is no model
     };
 
     // The form follows the model's definitions, and rebuilds itself if they are set again.

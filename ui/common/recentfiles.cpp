@@ -18,9 +18,11 @@ QString key(Kind kind)
     case Kind::Pose:
         return QStringLiteral("recent/poses");
     case Kind::Calibration:
+        return QStringLiteral("recent/calibrations");
+    case Kind::PacketSequence:
         break;
     }
-    return QStringLiteral("recent/calibrations");
+    return QStringLiteral("recent/packets");
 }
 
 } // namespace

@@ -7,7 +7,7 @@
 
 namespace recentfiles {
 
-enum class Kind { Profile, Pose, Calibration };
+enum class Kind { Profile, Pose, Calibration, PacketSequence };
 
 constexpr int kMaxFiles = 8;
 

@@ -210,6 +210,8 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
         tr("The settings changed most, in real units. <b>EEPROM</b> values are written with the "
            "lock opened and closed again and survive power-off. Changing the ID or the baud rate "
            "asks first, then follows the servo.");
+    settingsOptions.emptyText = tr("No servo chosen. Scan the bus (Scan… at the top left), then "
+                                   "choose a servo in the tree: its settings show here.");
     m_settings = new ParameterPage(nullptr, settingsOptions, m_tabs);
     m_tabs->addTab(m_settings, tr("Settings"));
 
@@ -323,7 +325,14 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
             updateHeader();
         updateActions();
     });
-    connect(m_client, &feetech::BusClient::statusChanged, this, [this] { updateActions(); });
+    connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
+        updateActions();
+        updateHeader();
+        if (m_client->servoCount() == 0 && !m_client->isScanning())
+            m_scanState->setText(m_client->isConnected()
+                                     ? tr("Press Scan… to find the servos on the bus.")
+                                     : tr("Connect, then scan to find the servos."));
+    });
     connect(m_client, &feetech::BusClient::busyChanged, this, [this](bool busy) {
         if (!busy || !m_client->isScanning())
             m_settings->setBusy(busy && !m_client->isScanning(), tr("Working…"));
@@ -556,8 +565,9 @@ void FeetechWorkspace::updateHeader()
 {
     const int index = currentIndex();
     if (index < 0) {
-        m_header->setText(m_client->servoCount() > 0
-                              ? tr("Choose a servo in the tree.")
+        m_header->setText(m_client->servoCount() > 0 ? tr("Choose a servo in the tree.")
+                              : m_client->isConnected()
+                              ? tr("No servo yet: scan the bus.")
                               : tr("No servo yet: connect to the bus and scan."));
         return;
     }
