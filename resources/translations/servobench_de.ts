@@ -3054,6 +3054,10 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>No servo yet: scan the bus.</source>
         <translation>Noch kein Servo: Scannen Sie den Bus.</translation>
     </message>
+    <message>
+        <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
+        <translation>Kein Servo gewählt: Scannen Sie den Bus und wählen Sie dann ein Servo im Baum; jedes Register seiner Speichertabelle erscheint hier.</translation>
+    </message>
 </context>
 <context>
     <name>GuardSettingsDialog</name>

@@ -3041,6 +3041,10 @@ An ID in use is refused.</source>
         <source>No servo yet: scan the bus.</source>
         <translation>还没有舵机：请扫描总线。</translation>
     </message>
+    <message>
+        <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
+        <translation>未选择舵机：请扫描总线，然后在列表中选择一个舵机；其内存表的每个寄存器将显示在这里。</translation>
+    </message>
 </context>
 <context>
     <name>GuardSettingsDialog</name>

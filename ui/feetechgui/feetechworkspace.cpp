@@ -14,6 +14,7 @@
 #include "feetechgui/registertablemodel.h"
 #include "feetechgui/robotactions.h"
 #include "feetechgui/scandialog.h"
+#include "feetechgui/scanmemory.h"
 #include "feetechgui/unlockednotice.h"
 
 #include <QCheckBox>
@@ -25,7 +26,6 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSet>
-#include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
 #include <QTabWidget>
@@ -58,54 +58,12 @@ QStringList settingsKeys()
 
 } // namespace
 
-namespace {
-
-// The scan options last chosen in the scan dialog, kept across runs.
-constexpr char kScanIdsKey[] = "scan/ids";
-constexpr char kScanBaudsKey[] = "scan/bauds";
-constexpr char kScanSkipSilentKey[] = "scan/skipSilentRates";
-
-feetech::ScanOptions rememberedScanOptions()
-{
-    const QSettings settings;
-    feetech::ScanOptions options;
-    const QList<QVariant> ids = settings.value(QLatin1String(kScanIdsKey)).toList();
-    if (ids.size() == 2 && ids.at(0).toInt() >= 0 && ids.at(1).toInt() <= feetech::kMaxServoId
-        && ids.at(0).toInt() <= ids.at(1).toInt()) {
-        options.firstId = ids.at(0).toInt();
-        options.lastId = ids.at(1).toInt();
-    }
-    QVector<qint32> bauds;
-    for (const QVariant &baud : settings.value(QLatin1String(kScanBaudsKey)).toList()) {
-        if (feetech::baudRates().contains(baud.toInt()))
-            bauds.append(baud.toInt());
-    }
-    if (!bauds.isEmpty())
-        options.bauds = bauds;
-    options.skipSilentRates =
-        settings.value(QLatin1String(kScanSkipSilentKey), options.skipSilentRates).toBool();
-    return options;
-}
-
-void rememberScanOptions(const feetech::ScanOptions &options)
-{
-    QSettings settings;
-    settings.setValue(QLatin1String(kScanIdsKey), QVariantList {options.firstId, options.lastId});
-    QVariantList bauds;
-    for (const qint32 baud : options.bauds)
-        bauds.append(baud);
-    settings.setValue(QLatin1String(kScanBaudsKey), bauds);
-    settings.setValue(QLatin1String(kScanSkipSilentKey), options.skipSilentRates);
-}
-
-} // namespace
-
 FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     : QWidget(parent)
     , m_client(client)
 {
     setObjectName(QStringLiteral("feetechWorkspace"));
-    m_scanOptions = rememberedScanOptions();
+    m_scanOptions = scanmemory::rememberedScanOptions();
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     auto *splitter = new QSplitter(Qt::Horizontal, this);
@@ -231,6 +189,13 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     memoryTop->addWidget(m_filterEdit, 1);
     memoryTop->addWidget(m_live);
     memoryLayout->addLayout(memoryTop);
+    m_memoryEmpty = new QLabel(tr("No servo chosen: scan the bus, then choose a servo in the "
+                                  "tree; every register of its memory table shows here."),
+                               memory);
+    m_memoryEmpty->setObjectName(QStringLiteral("memoryEmptyState"));
+    m_memoryEmpty->setWordWrap(true);
+    m_memoryEmpty->setForegroundRole(QPalette::PlaceholderText);
+    memoryLayout->addWidget(m_memoryEmpty);
     m_registers = new RegisterTableModel(this);
     m_filter = new QSortFilterProxyModel(this);
     m_filter->setSourceModel(m_registers);
@@ -402,31 +367,6 @@ void FeetechWorkspace::readIfNew()
         m_client->readServo(index);
 }
 
-void FeetechWorkspace::openScanDialog()
-{
-    ScanDialog dialog(m_scanOptions, this);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    rememberScanOptions(dialog.options());
-    startScan(dialog.options());
-}
-
-void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
-{
-    if (!m_client->isConnected()) {
-        emit problem(tr("Connect to the bus before scanning."));
-        return;
-    }
-    m_scanOptions = options;
-    m_current.reset();
-    m_scan->hide();
-    m_cancelScan->show();
-    m_scanProgress->setValue(0);
-    m_scanProgress->show();
-    m_client->scan(options);
-    showServo();
-}
-
 void FeetechWorkspace::rebuildTree()
 {
     const QSignalBlocker quiet(m_tree);
@@ -564,6 +504,7 @@ QString FeetechWorkspace::servoTitle() const
 void FeetechWorkspace::updateHeader()
 {
     const int index = currentIndex();
+    m_memoryEmpty->setVisible(index < 0);
     if (index < 0) {
         m_header->setText(m_client->servoCount() > 0 ? tr("Choose a servo in the tree.")
                               : m_client->isConnected()

@@ -103,6 +103,7 @@ private:
     QLabel *m_scanState = nullptr;
 
     QLabel *m_header = nullptr;
+    QLabel *m_memoryEmpty = nullptr; // the Memory table page's hint while no servo is chosen
     UnlockedNotice *m_unlocked = nullptr;
     QPushButton *m_changeId = nullptr;
     QPushButton *m_changeBaud = nullptr;

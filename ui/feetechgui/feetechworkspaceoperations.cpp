@@ -1,17 +1,47 @@
-// The Feetech workspace's servo operations: Apply with its confirmations, the guided flows
-// (change ID and baud, calibrate middle, factory reset) and profiles of the servo shown.
+// The Feetech workspace's operations: the scan dialog and the scan, Apply with its
+// confirmations, the guided flows (change ID and baud, calibrate middle, factory reset) and
+// profiles of the servo shown.
 #include "feetechgui/feetechworkspace.h"
 
 #include "common/profileactions.h"
 #include "feetech/busclient.h"
 #include "feetech/servoparameters.h"
+#include "feetechgui/scandialog.h"
+#include "feetechgui/scanmemory.h"
 
 #include <QDateTime>
 #include <QDir>
 #include <QInputDialog>
 #include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
 
 #include <algorithm>
+
+void FeetechWorkspace::openScanDialog()
+{
+    ScanDialog dialog(m_scanOptions, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    scanmemory::rememberScanOptions(dialog.options());
+    startScan(dialog.options());
+}
+
+void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
+{
+    if (!m_client->isConnected()) {
+        emit problem(tr("Connect to the bus before scanning."));
+        return;
+    }
+    m_scanOptions = options;
+    m_current.reset();
+    m_scan->hide();
+    m_cancelScan->show();
+    m_scanProgress->setValue(0);
+    m_scanProgress->show();
+    m_client->scan(options);
+    showServo();
+}
 
 void FeetechWorkspace::apply()
 {
