@@ -1,6 +1,7 @@
 // servosim: simulated PTK servo or Feetech bus on a pseudo-terminal, for users and tests.
 #include "sim/simcommands.h"
 #include "sim/simulator.h"
+#include "util/translations.h"
 #include "util/unixsignals.h"
 #include "version.h"
 
@@ -20,6 +21,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("servosim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(SERVOBENCH_VERSION));
+    util::installTranslations(); // the system's language, as servoctl
     QTextStream out(stdout);
     QTextStream err(stderr);
 
