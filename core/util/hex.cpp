@@ -43,44 +43,42 @@ static int hexDigit(QChar c)
 std::optional<QByteArray> parseHex(const QString &text, QString *error)
 {
     QByteArray out;
-    // Split into tokens first so that "0x" prefixes and odd-length tokens can be reported.
-    QString token;
-    const auto flush = [&]() -> bool {
-        QString digits = token;
-        token.clear();
-        if (digits.startsWith(u"0x", Qt::CaseInsensitive))
-            digits = digits.mid(2);
-        if (digits.isEmpty())
+    out.reserve(text.size() / 2);
+    // Token by token (views into the text, nothing copied), so that "0x" prefixes and
+    // odd-length tokens can be reported.
+    const auto take = [&](QStringView token) -> bool {
+        if (token.startsWith(u"0x", Qt::CaseInsensitive))
+            token = token.mid(2);
+        if (token.isEmpty())
             return true;
-        if (digits.size() % 2 != 0) {
+        if (token.size() % 2 != 0) {
             if (error)
                 *error = QCoreApplication::translate("util", "odd number of hex digits in \"%1\"")
-                             .arg(digits);
+                             .arg(token);
             return false;
         }
-        for (int i = 0; i < digits.size(); i += 2) {
-            const int hi = hexDigit(digits.at(i));
-            const int lo = hexDigit(digits.at(i + 1));
+        for (qsizetype i = 0; i < token.size(); i += 2) {
+            const int hi = hexDigit(token.at(i));
+            const int lo = hexDigit(token.at(i + 1));
             if (hi < 0 || lo < 0) {
                 if (error)
                     *error = QCoreApplication::translate("util", "\"%1\" is not hexadecimal")
-                                 .arg(digits);
+                                 .arg(token);
                 return false;
             }
             out.append(char(hi * 16 + lo));
         }
         return true;
     };
-    for (const QChar c : text) {
-        if (isSeparator(c)) {
-            if (!flush())
-                return std::nullopt;
-        } else {
-            token.append(c);
-        }
+    const QStringView all(text);
+    qsizetype start = 0;
+    for (qsizetype i = 0; i <= all.size(); ++i) {
+        if (i < all.size() && !isSeparator(all.at(i)))
+            continue;
+        if (!take(all.sliced(start, i - start)))
+            return std::nullopt;
+        start = i + 1;
     }
-    if (!flush())
-        return std::nullopt;
     return out;
 }
 
