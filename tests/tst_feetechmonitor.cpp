@@ -296,8 +296,10 @@ private slots:
             QVERIFY(client.writeValues(i, {{QStringLiteral("goal_position"), 500 + 100 * i}}));
         }
         QTRY_COMPARE_WITH_TIMEOUT(written.size(), 8, 10000);
-        for (const QVariantList &arguments : std::as_const(written))
-            QVERIFY(arguments.first().value<OperationResult>().ok);
+        for (const QVariantList &arguments : std::as_const(written)) {
+            const auto result = arguments.first().value<OperationResult>();
+            QVERIFY2(result.ok, qPrintable(result.message));
+        }
         samples.clear();
         QTRY_VERIFY_WITH_TIMEOUT(samples.value(4) >= 50, 10000);
         QVERIFY(client.isMonitoring());
