@@ -99,7 +99,14 @@ MainWindow::MainWindow(QWidget *parent)
     m_welcome = new WelcomePanel(m_pages);
     m_pages->addWidget(m_welcome);
     m_pages->setCurrentWidget(m_welcome);
-    connect(m_welcome, &WelcomePanel::connectRequested, this, &MainWindow::connectToPort);
+    connect(m_welcome, &WelcomePanel::connectRequested, this, [this](const QString &port) {
+        // The page stays while Auto probes a port (nothing is open yet): one thing at a time.
+        if (isDetecting()) {
+            showProblem(tr("Wait until the port being probed answers, or Disconnect."));
+            return;
+        }
+        connectToPort(port);
+    });
     layout->addWidget(m_pages);
     setCentralWidget(central);
     connect(m_connectionBar, &ConnectionBar::protocolChanged, this,

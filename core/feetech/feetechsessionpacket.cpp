@@ -21,7 +21,11 @@ namespace feetech {
 void Session::sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
                          int replyDataSize)
 {
-    enqueue(Operation::SendPacket, [this, frame, baud, replyId, replyDataSize] {
+    // Like any write: one asked for before All torque off must not power the servos again.
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::SendPacket, [this, frame, baud, replyId, replyDataSize, epoch] {
+        if (refusedAfterTorqueOff(Operation::SendPacket, epoch))
+            return;
         m_bus->setBaud(
             baud)([this, frame, baud, replyId, replyDataSize](bool ok, const QString &message) {
             OperationResult result {Operation::SendPacket, false, message, {}, {}};

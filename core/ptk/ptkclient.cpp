@@ -172,9 +172,10 @@ void Client::onApplyFinished(bool ok, const QString &message)
 
 bool Client::sendFrame(const QByteArray &frame, bool expectsReply, QString *error)
 {
-    if (!isConnected()) {
+    if (!isConnected() || isBusy()) {
         if (error)
-            *error = Tr::tr("The servo is not connected.");
+            *error = isConnected() ? Tr::tr("Wait until the servo's read or Apply has finished.")
+                                   : Tr::tr("The servo is not connected.");
         return false;
     }
     m_worker.run(

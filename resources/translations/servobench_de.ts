@@ -4163,6 +4163,10 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Pac&amp;ket window…</source>
         <translation>Pa&amp;ketfenster…</translation>
     </message>
+    <message>
+        <source>Wait until the port being probed answers, or Disconnect.</source>
+        <translation>Warten Sie, bis der geprüfte Anschluss antwortet, oder trennen Sie die Verbindung.</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>
@@ -5709,6 +5713,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>%1 has not been read yet.</source>
         <translation>%1 wurde noch nicht gelesen.</translation>
+    </message>
+    <message>
+        <source>Wait until the servo&apos;s read or Apply has finished.</source>
+        <translation>Warten Sie, bis das Lesen oder Übernehmen des Servos fertig ist.</translation>
     </message>
 </context>
 <context>

@@ -4146,6 +4146,10 @@ An ID in use is refused.</source>
         <source>Pac&amp;ket window…</source>
         <translation>数据包窗口(&amp;K)…</translation>
     </message>
+    <message>
+        <source>Wait until the port being probed answers, or Disconnect.</source>
+        <translation>请等待正在探测的端口应答，或断开连接。</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>
@@ -5680,6 +5684,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>%1 has not been read yet.</source>
         <translation>%1 尚未读取。</translation>
+    </message>
+    <message>
+        <source>Wait until the servo&apos;s read or Apply has finished.</source>
+        <translation>请等待舵机的读取或应用完成。</translation>
     </message>
 </context>
 <context>

@@ -141,6 +141,10 @@ PacketWindow::PacketWindow(feetech::BusClient *feetech, ptk::Client *ptk, QWidge
     connect(load, &QPushButton::clicked, this, &PacketWindow::chooseLoad);
     auto *clear = new QPushButton(tr("Clear"), this);
     connect(clear, &QPushButton::clicked, this, [this] {
+        if (m_sending) {
+            showMessage(tr("Wait until the frames on their way are answered."), true);
+            return;
+        }
         m_history->setRowCount(0);
         m_frames.clear();
         m_currentRow = -1;
@@ -163,18 +167,36 @@ PacketWindow::PacketWindow(feetech::BusClient *feetech, ptk::Client *ptk, QWidge
     layout->addLayout(historyButtons);
 
     connect(m_feetech->link(), &seriallink::LinkMirror::packetLogged, this,
-            &PacketWindow::onLogged);
-    connect(m_ptk->link(), &seriallink::LinkMirror::packetLogged, this, &PacketWindow::onLogged);
+            [this](const seriallink::PacketLogEntry &entry) {
+                onLogged(PacketFrame::Protocol::Feetech, entry);
+            });
+    connect(m_ptk->link(), &seriallink::LinkMirror::packetLogged, this,
+            [this](const seriallink::PacketLogEntry &entry) {
+                onLogged(PacketFrame::Protocol::Ptk, entry);
+            });
     connect(m_feetech, &feetech::BusClient::operationFinished, this,
             &PacketWindow::onFeetechFinished);
-    connect(m_ptk, &ptk::Client::frameSent, this, &PacketWindow::finishCurrent);
-    for (seriallink::LinkMirror *link : {m_feetech->link(), m_ptk->link()}) {
-        connect(link, &seriallink::LinkMirror::statusChanged, this, [this] {
-            if (m_sending && !m_feetech->isConnected() && !m_ptk->isConnected())
-                finishCurrent(false, tr("The connection closed."));
-            updatePreview();
-        });
-    }
+    connect(m_ptk, &ptk::Client::frameSent, this, [this](bool ok, const QString &message) {
+        if (m_current.protocol == PacketFrame::Protocol::Ptk)
+            finishCurrent(ok, message);
+    });
+    // All torque off stops a sequence too (a frame already queued is refused by the session).
+    connect(m_feetech, &feetech::BusClient::allTorqueOffRequested, this,
+            [this] { m_queue.clear(); });
+    const auto watch = [this](seriallink::LinkMirror *link, PacketFrame::Protocol protocol) {
+        connect(link, &seriallink::LinkMirror::statusChanged, this,
+                [this, protocol](const seriallink::ConnectionStatus &status) {
+                    // A PTK poll that timed out (No reply) leaves the frame queued: only a
+                    // link closed or lost drops it.
+                    const bool gone = status.state == seriallink::ConnectionState::Disconnected
+                        || status.state == seriallink::ConnectionState::Lost;
+                    if (m_sending && m_current.protocol == protocol && gone)
+                        finishCurrent(false, tr("The connection closed."));
+                    updatePreview();
+                });
+    };
+    watch(m_feetech->link(), PacketFrame::Protocol::Feetech);
+    watch(m_ptk->link(), PacketFrame::Protocol::Ptk);
     updateFields();
     resize(760, 620);
 }
@@ -438,6 +460,8 @@ void PacketWindow::sendNext()
     const PacketFrame frame = m_queue.takeFirst();
     addHistoryRow(frame, tr("sending…"));
     m_currentRow = m_history->rowCount() - 1;
+    m_current = frame;
+    m_currentSeen = false;
     QString error;
     const bool accepted = frame.protocol == PacketFrame::Protocol::Feetech
         ? m_feetech->sendPacket(frame.bytes, frame.baud, frame.replyId, frame.replyDataSize, &error)
@@ -449,20 +473,23 @@ void PacketWindow::sendNext()
 
 void PacketWindow::onFeetechFinished(const feetech::OperationResult &result)
 {
-    if (result.operation == feetech::Operation::SendPacket)
+    if (result.operation == feetech::Operation::SendPacket
+        && m_current.protocol == PacketFrame::Protocol::Feetech)
         finishCurrent(result.ok, result.message);
 }
 
 void PacketWindow::finishCurrent(bool ok, const QString &message)
 {
-    if (!m_sending || m_currentRow < 0 || m_currentRow >= m_history->rowCount())
+    if (!m_sending)
         return;
-    QTableWidgetItem *outcome = m_history->item(m_currentRow, OutcomeColumn);
-    const QString answers = outcome->data(Qt::UserRole).toString();
-    outcome->setText(answers.isEmpty() ? message : answers);
-    outcome->setToolTip(message);
-    if (!ok)
-        outcome->setForeground(palette().brush(QPalette::Disabled, QPalette::Text));
+    if (m_currentRow >= 0 && m_currentRow < m_history->rowCount()) {
+        QTableWidgetItem *outcome = m_history->item(m_currentRow, OutcomeColumn);
+        const QString answers = outcome->data(Qt::UserRole).toString();
+        outcome->setText(answers.isEmpty() ? message : answers);
+        outcome->setToolTip(message);
+        if (!ok)
+            outcome->setForeground(palette().brush(QPalette::Disabled, QPalette::Text));
+    }
     showMessage(message, !ok);
     m_currentRow = -1;
     emit sent(ok, message);
@@ -471,10 +498,17 @@ void PacketWindow::finishCurrent(bool ok, const QString &message)
     sendNext();
 }
 
-void PacketWindow::onLogged(const seriallink::PacketLogEntry &entry)
+void PacketWindow::onLogged(PacketFrame::Protocol link, const seriallink::PacketLogEntry &entry)
 {
-    // What arrives while a frame of ours is in flight is its answer (or a stray the log marks).
-    if (!m_sending || m_currentRow < 0 || entry.direction != seriallink::Direction::In)
+    // On the frame's own link, what arrives after the frame itself went out is its answer (or a
+    // stray the log marks); a poll or an operation queued ahead of it comes before.
+    if (!m_sending || m_currentRow < 0 || link != m_current.protocol)
+        return;
+    if (entry.direction == seriallink::Direction::Out) {
+        m_currentSeen = m_currentSeen || entry.bytes == m_current.bytes;
+        return;
+    }
+    if (!m_currentSeen || entry.direction != seriallink::Direction::In)
         return;
     QTableWidgetItem *outcome = m_history->item(m_currentRow, OutcomeColumn);
     QString answers = outcome->data(Qt::UserRole).toString();

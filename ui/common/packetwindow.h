@@ -56,7 +56,7 @@ private:
     void updateFields();
     void sendNext();
     void finishCurrent(bool ok, const QString &message);
-    void onLogged(const seriallink::PacketLogEntry &entry);
+    void onLogged(PacketFrame::Protocol link, const seriallink::PacketLogEntry &entry);
     void onFeetechFinished(const feetech::OperationResult &result);
     void addHistoryRow(const PacketFrame &frame, const QString &outcome);
     void chooseSave();
@@ -94,4 +94,6 @@ private:
     QVector<PacketFrame> m_queue; // still to send
     bool m_sending = false;
     int m_currentRow = -1; // the history row of the frame in flight
+    PacketFrame m_current; // the frame in flight
+    bool m_currentSeen = false; // its own bytes went by in its link's log: answers follow
 };

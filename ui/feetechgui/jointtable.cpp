@@ -17,6 +17,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSet>
+#include <QShowEvent>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -352,12 +353,16 @@ void JointTable::rebuild()
     }
     refreshHint();
     refreshButtons();
+    // A servo listed again (a new scan, a reconnection) and not read since is read again.
+    m_readAsked.clear();
     readWhileShown(false);
 }
 
 void JointTable::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    if (event->spontaneous())
+        return; // the window shown again (un-minimised), not the tab opened
     m_readAsked.clear();
     readWhileShown(true);
 }
