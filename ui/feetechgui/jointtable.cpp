@@ -165,6 +165,9 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
         refreshHint();
     });
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
+        // Reconnected, the servos found again are read again (asked once per connection).
+        if (!m_client->isConnected())
+            m_readAsked.clear();
         refreshHint();
         refreshButtons();
     });
@@ -353,8 +356,6 @@ void JointTable::rebuild()
     }
     refreshHint();
     refreshButtons();
-    // A servo listed again (a new scan, a reconnection) and not read since is read again.
-    m_readAsked.clear();
     readWhileShown(false);
 }
 
