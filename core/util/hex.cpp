@@ -62,8 +62,8 @@ std::optional<QByteArray> parseHex(const QString &text, QString *error)
             const int lo = hexDigit(token.at(i + 1));
             if (hi < 0 || lo < 0) {
                 if (error)
-                    *error = QCoreApplication::translate("util", "\"%1\" is not hexadecimal")
-                                 .arg(token);
+                    *error =
+                        QCoreApplication::translate("util", "\"%1\" is not hexadecimal").arg(token);
                 return false;
             }
             out.append(char(hi * 16 + lo));

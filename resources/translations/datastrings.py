@@ -5,6 +5,8 @@ or template, then update the .ts files; tst_translations fails while one is miss
 import glob
 import json
 import os
+import shutil
+import subprocess
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESOURCES = os.path.dirname(HERE)
@@ -55,8 +57,12 @@ def main():
         seen.add((context, text))
         lines.append(f"    QT_TRANSLATE_NOOP({quoted(context)}, {quoted(text)}),")
     lines.append("};")
-    with open(os.path.join(HERE, "datastrings.cpp"), "w", encoding="utf-8") as f:
+    path = os.path.join(HERE, "datastrings.cpp")
+    with open(path, "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")
+    # Formatted as the rest of the sources (long texts wrapped), when clang-format is there.
+    if shutil.which("clang-format"):
+        subprocess.run(["clang-format", "-i", path], check=True)
 
 
 if __name__ == "__main__":
