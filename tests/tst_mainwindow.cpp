@@ -1,5 +1,5 @@
 // Tests that the main window opens with its menus, connection bar and status bar, and that it
-// remembers its size, layout and last connection, and resets its layout.
+// remembers its size, layout and last connection, resets its layout and shows what it is (About).
 #include "common/connectionbar.h"
 #include "common/packetlogdock.h"
 #include "common/shortcutsdialog.h"
@@ -7,6 +7,7 @@
 
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTableWidget>
@@ -70,6 +71,28 @@ private slots:
                               + QStringLiteral(" = Link > All torque off")));
         QVERIFY(rows.contains(keys(QKeySequence(Qt::CTRL | Qt::Key_F5))
                               + QStringLiteral(" = Link > Scan the Feetech bus…")));
+    }
+
+    void aboutShowsVersionQtLicenceAndHome()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QString text;
+        // The dialog is modal: read it and close it once it is up.
+        QTimer::singleShot(0, &window, [&text] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            text = box->text();
+            box->accept();
+        });
+        window.findChild<QAction *>(QStringLiteral("aboutAction"))->trigger();
+        QVERIFY2(text.contains(QStringLiteral("Built with Qt " QT_VERSION_STR)), qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("GNU General Public License, version 3")));
+        QVERIFY2(
+            text.contains(QStringLiteral("<a href=\"https://github.com/servobench/servobench\">")),
+            qPrintable(text));
     }
 
     void remembersSizeLayoutAndLastConnection()

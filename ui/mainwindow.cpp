@@ -308,15 +308,17 @@ void MainWindow::createMenus()
 
 void MainWindow::showAbout()
 {
-    QMessageBox::about(this, tr("About ServoBench"),
-                       tr("<p><b>ServoBench %1</b></p>"
-                          "<p>Programs and monitors PTK RC servos and Feetech serial-bus "
-                          "servos on Linux, Windows and macOS.</p>"
-                          "<p>Built with Qt %2, running on Qt %3.</p>"
-                          "<p>Free software under the GNU General Public License, version 3 or "
-                          "(at your option) any later version; it comes with no warranty.</p>")
-                           .arg(QCoreApplication::applicationVersion(),
-                                QStringLiteral(QT_VERSION_STR), QString::fromLatin1(qVersion())));
+    QMessageBox::about(
+        this, tr("About ServoBench"),
+        tr("<p><b>ServoBench %1</b></p>"
+           "<p>Programs and monitors PTK RC servos and Feetech serial-bus "
+           "servos on Linux, Windows and macOS.</p>"
+           "<p>Built with Qt %2, running on Qt %3.</p>"
+           "<p>Free software under the GNU General Public License, version 3 or "
+           "(at your option) any later version; it comes with no warranty.</p>")
+                .arg(QCoreApplication::applicationVersion(), QStringLiteral(QT_VERSION_STR),
+                     QString::fromLatin1(qVersion()))
+            + tr("<p>Home: <a href=\"%1\">%1</a></p>").arg(QStringLiteral(SERVOBENCH_HOMEPAGE)));
 }
 
 void MainWindow::startDemo()

@@ -4167,6 +4167,10 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Wait until the port being probed answers, or Disconnect.</source>
         <translation>Warten Sie, bis der geprüfte Anschluss antwortet, oder trennen Sie die Verbindung.</translation>
     </message>
+    <message>
+        <source>&lt;p&gt;Home: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Website: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>

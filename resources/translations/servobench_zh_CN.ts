@@ -4150,6 +4150,10 @@ An ID in use is refused.</source>
         <source>Wait until the port being probed answers, or Disconnect.</source>
         <translation>请等待正在探测的端口应答，或断开连接。</translation>
     </message>
+    <message>
+        <source>&lt;p&gt;Home: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;项目主页：&lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
 </context>
 <context>
     <name>MonitorPage</name>
