@@ -368,7 +368,7 @@ void MainWindow::showSimulatorDock(bool arm)
         addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
         // A tab beside the packet log: the pages above keep their height.
         tabifyDockWidget(m_packetLog, m_simulatorDock);
-        resizeDocks({m_simulatorDock}, {m_simulatorDock->minimumSizeHint().height()}, Qt::Vertical);
+        resizeDocks({m_simulatorDock}, {m_simulatorDock->startingHeight()}, Qt::Vertical);
         m_viewMenu->addAction(m_simulatorDock->toggleViewAction());
         connect(m_simulatorDock, &SimulatorDock::message, this,
                 [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });

@@ -2,6 +2,7 @@
 #include "common/packetlogdock.h"
 
 #include "common/palette.h"
+#include "common/widgethelpers.h"
 #include "link/packetlogmodel.h"
 
 #include <QAction>
@@ -161,6 +162,7 @@ PacketLogDock::PacketLogDock(QWidget *parent)
     m_view->setColumnWidth(PacketLogModel::ErrorColumn, metrics.averageCharWidth() * 30);
     header->setStretchLastSection(false);
     header->setSectionResizeMode(PacketLogModel::MeaningColumn, QHeaderView::Stretch);
+    widgethelpers::shrinkToOneRow(m_view);
     layout->addWidget(m_view);
     setWidget(content);
 

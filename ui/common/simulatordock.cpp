@@ -13,6 +13,7 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -73,7 +74,13 @@ SimulatorDock::SimulatorDock(QWidget *parent)
     controls->addWidget(m_note);
     controls->addStretch();
     layout->addLayout(controls, 4);
-    setWidget(content);
+    // On a 1366x768 screen the pages above need most of the height: the dock may be shorter than
+    // its controls and scrolls them, rather than push the window's status bar off the screen.
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+    setWidget(scroll);
 
     m_refreshTimer = new QTimer(this);
     m_refreshTimer->setInterval(kRefreshMs);
@@ -82,6 +89,13 @@ SimulatorDock::SimulatorDock(QWidget *parent)
             refresh();
     });
     updateSelection();
+}
+
+int SimulatorDock::startingHeight() const
+{
+    const auto *scroll = static_cast<const QScrollArea *>(widget());
+    return minimumSizeHint().height() - scroll->minimumSizeHint().height()
+        + scroll->widget()->minimumSizeHint().height();
 }
 
 SimulatorDock::~SimulatorDock()

@@ -39,6 +39,10 @@ public:
     void setSimulator(sim::SimulatorThread *simulator);
     sim::SimulatorThread *simulator() const { return m_simulator; }
 
+    // The height that shows every control without scrolling, title included: the dock starts
+    // there where the window has room (it scrolls its controls where it has not).
+    int startingHeight() const;
+
     // What the buttons do, after their dialogs; each says how it went in the dock's note and
     // returns whether it worked.
     bool turnSelected(int position);

@@ -1,7 +1,9 @@
 // Widget factories shared by the pages.
 #include "common/widgethelpers.h"
 
+#include <QHeaderView>
 #include <QPushButton>
+#include <QTableView>
 
 namespace widgethelpers {
 
@@ -13,6 +15,12 @@ QPushButton *actionButton(const QString &text, const char *name, const QString &
     button->setToolTip(tip);
     button->setAutoDefault(false);
     return button;
+}
+
+void shrinkToOneRow(QTableView *view)
+{
+    view->setMinimumHeight(view->horizontalHeader()->sizeHint().height()
+                           + view->verticalHeader()->defaultSectionSize() + 2 * view->frameWidth());
 }
 
 } // namespace widgethelpers

@@ -4,6 +4,7 @@
 #include <QString>
 
 class QPushButton;
+class QTableView;
 class QWidget;
 
 namespace widgethelpers {
@@ -12,5 +13,10 @@ namespace widgethelpers {
 // auto-default button: Return in a spin box or line edit of the page must not press it.
 QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
                           QWidget *parent);
+
+// Lets a table shrink to its header and one row (its own minimum, with room for scroll bars, is
+// some 30 pixels more): on a 1366x768 screen the pages need the height. Call it once the rows'
+// default height is set.
+void shrinkToOneRow(QTableView *view);
 
 } // namespace widgethelpers

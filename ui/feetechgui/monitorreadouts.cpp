@@ -1,6 +1,7 @@
 // Readouts of the Monitor page: the newest sample and the rate of each servo, drawn on demand.
 #include "feetechgui/monitorreadouts.h"
 
+#include "common/widgethelpers.h"
 #include "feetech/busclient.h"
 
 #include <QFontMetrics>
@@ -47,6 +48,7 @@ MonitorReadouts::MonitorReadouts(feetech::BusClient *client, QWidget *parent)
         ->setToolTip(tr("Cycles in which the servo was asked and did not answer"));
     verticalHeader()->hide();
     verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+    widgethelpers::shrinkToOneRow(this);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setAlternatingRowColors(true);
