@@ -256,9 +256,10 @@ private slots:
         QVERIFY2(texts.contains(feetech::tableText(QStringLiteral("Max temperature"))),
                  qPrintable(texts.join(u'|')));
         // Chinese text is taller: the window, with the Feetech pages and the Simulator dock, still
-        // fits what a 1366x768 screen leaves under its panels and a title bar.
+        // fits what a 1366x768 screen leaves under a desktop's panel and a title bar (some 70
+        // pixels).
         QVERIFY(window.simulatorDock() && window.simulatorDock()->isVisible());
-        QVERIFY2(window.minimumSizeHint().height() <= 720,
+        QVERIFY2(window.minimumSizeHint().height() <= 700,
                  qPrintable(QString::number(window.minimumSizeHint().height())));
     }
 };

@@ -93,7 +93,7 @@ SimulatorDock::SimulatorDock(QWidget *parent)
 
 int SimulatorDock::startingHeight() const
 {
-    const auto *scroll = static_cast<const QScrollArea *>(widget());
+    const auto *scroll = qobject_cast<const QScrollArea *>(widget());
     return minimumSizeHint().height() - scroll->minimumSizeHint().height()
         + scroll->widget()->minimumSizeHint().height();
 }

@@ -1,4 +1,4 @@
-// Widget factories shared by the pages.
+// Widget helpers shared by the pages.
 #include "common/widgethelpers.h"
 
 #include <QHeaderView>

@@ -1,4 +1,4 @@
-// Small widget factories shared by the pages, so their buttons look and behave alike.
+// Small widget helpers shared by the pages, so their buttons and tables look and behave alike.
 #pragma once
 
 #include <QString>
