@@ -26,12 +26,6 @@ namespace feetech {
 
 using namespace registerkeys;
 
-namespace {
-
-constexpr qint32 kPositionMode = 0;
-
-} // namespace
-
 struct HealthMoveTest::Run
 {
     std::shared_ptr<ServoInfo> servo;
@@ -103,22 +97,11 @@ void HealthMoveTest::begin(std::shared_ptr<Run> run)
     const ServoInfo &servo = *run->servo;
     const RegisterTable &table = servo.table();
     const QHash<QString, qint32> &before = run->before;
-    if (before.contains(kMode) && before.value(kMode) != kPositionMode) {
-        end(run, false,
-            Tr::tr("%1 is not in position mode (mode %2): it is not moved.")
-                .arg(servoName(servo))
-                .arg(before.value(kMode)));
+    if (const QString refusal = whyNotToMove(servo, before, &run->torqueWasOn);
+        !refusal.isEmpty()) {
+        end(run, false, refusal);
         return;
     }
-    const auto torque = table.torqueMode(before.value(kTorqueEnable));
-    if (torque != TorqueMode::On && torque != TorqueMode::Off) {
-        end(run, false,
-            Tr::tr("%1 holds torque enable %2, neither on nor off: it is not moved.")
-                .arg(servoName(servo))
-                .arg(before.value(kTorqueEnable)));
-        return;
-    }
-    run->torqueWasOn = torque == TorqueMode::On;
     const auto read = [&before](const QString &key) -> std::optional<qint64> {
         if (!before.contains(key))
             return std::nullopt;

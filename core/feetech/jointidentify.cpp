@@ -5,6 +5,7 @@
 #include "feetech/goalrange.h"
 #include "feetech/registerkeys.h"
 #include "feetech/servoparameters.h"
+#include "feetech/torqueonhold.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -29,8 +30,6 @@ using namespace registerkeys;
 namespace {
 
 const QString kTorqueLimit = QStringLiteral("torque_limit");
-
-constexpr qint32 kPositionMode = 0; // register 33: every family's mode 0 holds a position
 
 } // namespace
 
@@ -102,22 +101,11 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
     const ServoInfo &servo = run->servo;
     const RegisterTable &table = servo.table();
     const QHash<QString, qint32> &before = run->before;
-    if (before.contains(kMode) && before.value(kMode) != kPositionMode) {
-        end(run, false,
-            Tr::tr("%1 is not in position mode (mode %2): it is not moved to identify it.")
-                .arg(servoName(servo))
-                .arg(before.value(kMode)));
+    if (const QString refusal = whyNotToMove(servo, before, &run->torqueWasOn);
+        !refusal.isEmpty()) {
+        end(run, false, refusal);
         return;
     }
-    const auto torque = table.torqueMode(before.value(kTorqueEnable));
-    if (torque != TorqueMode::On && torque != TorqueMode::Off) {
-        end(run, false,
-            Tr::tr("%1 holds torque enable %2, neither on nor off: it is not moved.")
-                .arg(servoName(servo))
-                .arg(before.value(kTorqueEnable)));
-        return;
-    }
-    run->torqueWasOn = torque == TorqueMode::On;
     if (m_cancelled) {
         end(run, false,
             Tr::tr("Identifying %1 was stopped; nothing was written.").arg(servoName(servo)));

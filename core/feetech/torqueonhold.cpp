@@ -1,6 +1,7 @@
 // Torque on never jumps: the goal set to the present position before torque is switched on.
 #include "feetech/torqueonhold.h"
 
+#include "feetech/registerkeys.h"
 #include "feetech/registertable.h"
 #include "feetech/servoparameters.h"
 
@@ -176,5 +177,26 @@ Step writeGoalAtPresent(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
 }
 
 } // namespace
+
+QString whyNotToMove(const ServoInfo &servo, const QHash<QString, qint32> &before,
+                     bool *torqueWasOn)
+{
+    using registerkeys::kMode;
+    using registerkeys::kTorqueEnable;
+    // Register 33: every family's mode 0 holds a position.
+    if (before.contains(kMode) && before.value(kMode) != 0) {
+        return Tr::tr("%1 is not in position mode (mode %2): it is not moved.")
+            .arg(servoName(servo))
+            .arg(before.value(kMode));
+    }
+    const auto torque = servo.table().torqueMode(before.value(kTorqueEnable));
+    if (torque != TorqueMode::On && torque != TorqueMode::Off) {
+        return Tr::tr("%1 holds torque enable %2, neither on nor off: it is not moved.")
+            .arg(servoName(servo))
+            .arg(before.value(kTorqueEnable));
+    }
+    *torqueWasOn = torque == TorqueMode::On;
+    return {};
+}
 
 } // namespace feetech

@@ -5,6 +5,8 @@
 #include "feetech/busexchange.h"
 #include "feetech/bustypes.h"
 
+#include <QHash>
+#include <QString>
 #include <QVector>
 
 #include <memory>
@@ -28,5 +30,12 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo);
 Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
                            std::shared_ptr<std::optional<qint32>> heldAt = {},
                            std::shared_ptr<bool> notInPositionMode = {});
+
+// For a test that moves a servo and then puts everything back (the health move test, joint
+// identification), judged on its registers as read before (`before`, by key): why it must be
+// left alone (not in position mode, or a torque enable neither on nor off), or empty when it may
+// be moved; `torqueWasOn` then says whether its torque was on.
+QString whyNotToMove(const ServoInfo &servo, const QHash<QString, qint32> &before,
+                     bool *torqueWasOn);
 
 } // namespace feetech

@@ -2563,10 +2563,6 @@
         <translation>%1 ist von einem Modell, das ServoBench nicht bewegt (%2); es kann nicht identifiziert werden.</translation>
     </message>
     <message>
-        <source>%1 is not in position mode (mode %2): it is not moved to identify it.</source>
-        <translation>%1 ist nicht im Positionsmodus (Modus %2): Es wird zum Identifizieren nicht bewegt.</translation>
-    </message>
-    <message>
         <source>Identifying %1 was stopped; nothing was written.</source>
         <translation>Identifizieren von %1 wurde gestoppt; es wurde nichts geschrieben.</translation>
     </message>

@@ -2542,10 +2542,6 @@
         <translation>%1 的型号是 ServoBench 不会移动的型号（%2）；无法识别它。</translation>
     </message>
     <message>
-        <source>%1 is not in position mode (mode %2): it is not moved to identify it.</source>
-        <translation>%1 不在位置模式（模式 %2）：不会移动它来进行识别。</translation>
-    </message>
-    <message>
         <source>Identifying %1 was stopped; nothing was written.</source>
         <translation>已停止识别 %1；未写入任何内容。</translation>
     </message>
