@@ -1,5 +1,6 @@
 // Tests that switching torque on never moves the horn: the goal is set to the present position
-// first, unless the same write sets a goal or torque is on already (simulated STS3215 and SCS15).
+// first, unless the same write sets a goal or torque is on already (simulated STS3215 and SCS15);
+// and the checks before and after a test that moves a servo and puts it back.
 #include "feetechbus.h"
 
 #include "feetech/busclient.h"
@@ -116,6 +117,32 @@ private slots:
         QVERIFY(!feetech::needsHoldBeforeTorqueOn(servo, encoded({{kGoal, 100}, {kTorque, 1}})));
         QVERIFY(
             !feetech::needsHoldBeforeTorqueOn(servo, encoded({{QStringLiteral("p_gain"), 30}})));
+    }
+
+    // The checks of the tests that move a servo and put it back (health, joint identification).
+    void aMoveTestLeavesAServoAloneOutsidePositionModeOrWithAnOddTorque()
+    {
+        const feetech::ServoInfo &servo = m_client->servo(0).info;
+        const QString mode = QStringLiteral("mode");
+        bool torqueWasOn = false;
+        QVERIFY(feetech::whyNotToMove(servo, {{mode, 0}, {kTorque, 1}}, &torqueWasOn).isEmpty());
+        QVERIFY(torqueWasOn);
+        QVERIFY(feetech::whyNotToMove(servo, {{mode, 0}, {kTorque, 0}}, &torqueWasOn).isEmpty());
+        QVERIFY(!torqueWasOn);
+        const QString wheel = feetech::whyNotToMove(servo, {{mode, 1}, {kTorque, 0}}, &torqueWasOn);
+        QVERIFY2(wheel.contains(QLatin1String("not in position mode (mode 1)")), qPrintable(wheel));
+        const QString odd = feetech::whyNotToMove(servo, {{mode, 0}, {kTorque, 7}}, &torqueWasOn);
+        QVERIFY2(odd.contains(QLatin1String("torque enable 7, neither on nor off")),
+                 qPrintable(odd));
+    }
+
+    void aMoveTestSaysWhatItDidNotPutBack()
+    {
+        const QHash<QString, qint32> before {{kTorque, 0}, {kGoal, 2048}};
+        QVERIFY(feetech::notRestoredAsItWas({kTorque, kGoal}, before, before).isEmpty());
+        QCOMPARE(
+            feetech::notRestoredAsItWas({kTorque, kGoal}, before, {{kTorque, 0}, {kGoal, 2100}}),
+            QStringLiteral("it was not restored as it was: goal_position reads 2100, not 2048."));
     }
 };
 

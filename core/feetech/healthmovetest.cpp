@@ -237,20 +237,9 @@ void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, const QSt
         steps.push_back(std::move(step));
     m_bus.runSteps(
         std::move(steps), [this, run, restored, failure](bool ok, const QString &message) {
-            QStringList differ;
-            for (const QString &key : restored) {
-                if (ok && run->now.value(key) != run->before.value(key))
-                    differ.append(Tr::tr("%1 reads %2, not %3")
-                                      .arg(key)
-                                      .arg(run->now.value(key))
-                                      .arg(run->before.value(key)));
-            }
-            QString problem;
-            if (!ok)
-                problem = Tr::tr("it could not be restored (%1); check its torque.").arg(message);
-            else if (!differ.isEmpty())
-                problem = Tr::tr("it was not restored as it was: %1.")
-                              .arg(differ.join(QStringLiteral(", ")));
+            const QString problem = ok
+                ? notRestoredAsItWas(restored, run->before, run->now)
+                : Tr::tr("it could not be restored (%1); check its torque.").arg(message);
             if (!failure.isEmpty() || !problem.isEmpty()) {
                 end(run, false, QStringList {failure, problem}.join(QLatin1Char(' ')).trimmed());
                 return;

@@ -1,4 +1,5 @@
-// Torque on never jumps: the goal set to the present position before torque is switched on.
+// Torque on never jumps (the goal set to the present position before torque is switched on),
+// and the checks before and after a test that moves a servo and puts it back.
 #include "feetech/torqueonhold.h"
 
 #include "feetech/registerkeys.h"
@@ -197,6 +198,20 @@ QString whyNotToMove(const ServoInfo &servo, const QHash<QString, qint32> &befor
     }
     *torqueWasOn = torque == TorqueMode::On;
     return {};
+}
+
+QString notRestoredAsItWas(const QStringList &keys, const QHash<QString, qint32> &before,
+                           const QHash<QString, qint32> &now)
+{
+    QStringList differ;
+    for (const QString &key : keys) {
+        if (now.value(key) != before.value(key))
+            differ.append(
+                Tr::tr("%1 reads %2, not %3").arg(key).arg(now.value(key)).arg(before.value(key)));
+    }
+    if (differ.isEmpty())
+        return {};
+    return Tr::tr("it was not restored as it was: %1.").arg(differ.join(QStringLiteral(", ")));
 }
 
 } // namespace feetech

@@ -1,5 +1,6 @@
 // Torque on never jumps: before a write switches a servo's torque on, its goal is set to where
-// the horn stands, so the servo holds its place instead of driving to an old goal.
+// the horn stands, so the servo holds its place instead of driving to an old goal. Also the
+// checks around a test that moves a servo and puts it back: whether it may move, and after.
 #pragma once
 
 #include "feetech/busexchange.h"
@@ -7,6 +8,7 @@
 
 #include <QHash>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 
 #include <memory>
@@ -37,5 +39,10 @@ Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
 // be moved; `torqueWasOn` then says whether its torque was on.
 QString whyNotToMove(const ServoInfo &servo, const QHash<QString, qint32> &before,
                      bool *torqueWasOn);
+
+// After such a test has put the registers `keys` back and read them again (`now`): what differs
+// from `before` ("it was not restored as it was: ..."), or empty when every one reads as before.
+QString notRestoredAsItWas(const QStringList &keys, const QHash<QString, qint32> &before,
+                           const QHash<QString, qint32> &now);
 
 } // namespace feetech
