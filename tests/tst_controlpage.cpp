@@ -3,6 +3,7 @@
 #include "feetech/motiontest.h"
 #include "feetechbus.h"
 #include "feetechgui/controlpage.h"
+#include "namedchild.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -83,10 +84,7 @@ private:
     template<typename T>
     T *child(const char *name) const
     {
-        T *widget = m_page->findChild<T *>(QLatin1String(name));
-        if (!widget)
-            qFatal("no widget %s", name);
-        return widget;
+        return testsupport::namedChild<T>(m_page.get(), name);
     }
 
     // Connects, scans IDs 1-5 and shows servo `id` on the page, read in full.

@@ -8,6 +8,7 @@
 #include "feetechgui/guardsettingsdialog.h"
 #include "feetechgui/overloadrecoverydialog.h"
 #include "feetechgui/unlockednotice.h"
+#include "namedchild.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -37,10 +38,7 @@ private:
     template<typename T>
     T *child(const char *name) const
     {
-        T *widget = m_page->findChild<T *>(QLatin1String(name));
-        if (!widget)
-            qFatal("no widget %s", name);
-        return widget;
+        return testsupport::namedChild<T>(m_page.get(), name);
     }
 
     void blockServo()

@@ -3,6 +3,7 @@
 #include "feetech/pose.h"
 #include "feetechbus.h"
 #include "feetechgui/jointtable.h"
+#include "namedchild.h"
 
 #include <QLabel>
 #include <QMap>
@@ -77,7 +78,7 @@ private:
     template<typename T>
     T *child(const char *name) const
     {
-        return m_joints->findChild<T *>(QLatin1String(name));
+        return testsupport::namedChild<T>(m_joints.get(), name);
     }
 
     void connectAndScan()

@@ -3,6 +3,7 @@
 #include "common/packetsequence.h"
 #include "common/packetwindow.h"
 #include "feetechbus.h"
+#include "namedchild.h"
 #include "ptk/ptkclient.h"
 
 #include <QComboBox>
@@ -33,7 +34,7 @@ private:
     template<typename T>
     T *child(const char *name) const
     {
-        return m_window->findChild<T *>(QLatin1String(name));
+        return testsupport::namedChild<T>(m_window.get(), name);
     }
 
     void choose(const char *combo, int data)

@@ -89,9 +89,8 @@ QString ApplyFlow::refusal(const ServoInfo &servo, const QVector<RegisterWrite> 
     const Register *lockRegister = registerAt(servo, u"lock");
     const Register *torque = registerAt(servo, u"torque_enable");
     for (const RegisterWrite &item : writes) {
-        const int end = item.address + int(item.bytes.size());
         for (const Register *guarded : {registerAt(servo, kIdKey), registerAt(servo, kBaudKey)}) {
-            if (guarded && item.address < guarded->end() && guarded->address < end)
+            if (guarded && guarded->overlaps(item.address, int(item.bytes.size())))
                 return Tr::tr("The ID and the baud rate change how the servo is reached; use "
                               "Change ID or Change baud rate.");
         }

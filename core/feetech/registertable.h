@@ -58,6 +58,8 @@ struct Register
     QString note;
 
     int end() const { return address + size; } // one past the last address
+    // Whether bytes [from, from + count) touch this register.
+    bool overlaps(int from, int count) const { return from < end() && address < from + count; }
     bool writable() const { return access == Access::ReadWrite; }
 };
 

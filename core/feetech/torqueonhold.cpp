@@ -19,17 +19,9 @@ struct Tr
 
 namespace feetech {
 
+using namespace registerkeys;
+
 namespace {
-
-const QString kTorqueKey = QStringLiteral("torque_enable");
-const QString kGoalKey = QStringLiteral("goal_position");
-const QString kPresentKey = QStringLiteral("present_position");
-const QString kModeKey = QStringLiteral("mode");
-
-bool overlaps(const RegisterWrite &write, const Register &reg)
-{
-    return write.address < reg.end() && reg.address < write.address + int(write.bytes.size());
-}
 
 // The value `reg` holds in `bytes` read from its own address.
 std::optional<qint32> valueOf(const RegisterTable &table, const Register &reg,
@@ -53,14 +45,14 @@ bool needsHoldBeforeTorqueOn(const ServoInfo &servo, const QVector<RegisterWrite
     if (!servo.hasTable())
         return false;
     const RegisterTable &table = servo.table();
-    const Register *torque = table.find(kTorqueKey);
-    const Register *goal = table.find(kGoalKey);
+    const Register *torque = table.find(kTorqueEnable);
+    const Register *goal = table.find(kGoalPosition);
     const auto on = table.torqueValue(TorqueMode::On);
-    if (!torque || !goal || !table.find(kPresentKey) || !on)
+    if (!torque || !goal || !table.find(kPresentPosition) || !on)
         return false;
     bool switchesOn = false;
     for (const RegisterWrite &write : writes) {
-        if (overlaps(write, *goal))
+        if (goal->overlaps(write.address, int(write.bytes.size())))
             return false; // the goal is set on purpose: that motion was asked for
         const int offset = torque->address - write.address;
         if (offset >= 0 && offset < write.bytes.size())
@@ -73,7 +65,7 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
 {
     return [&bus, servo](StepDone next) {
         const RegisterTable &table = servo->table();
-        const Register &torque = *table.find(kTorqueKey);
+        const Register &torque = *table.find(kTorqueEnable);
         auto torqueNow = std::make_shared<std::optional<qint32>>();
         bus.read(servo, torque.address, torque.size, ReadSource::ReadBack,
                  [&table, &torque, torqueNow](const QByteArray &bytes) {
@@ -107,7 +99,7 @@ Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
 {
     return [&bus, servo, heldAt, notInPositionMode](StepDone next) {
         const RegisterTable &table = servo->table();
-        const Register *mode = table.find(kModeKey);
+        const Register *mode = table.find(kMode);
         if (!mode) {
             writeGoalAtPresent(bus, servo, heldAt)(next);
             return;
@@ -147,8 +139,8 @@ Step writeGoalAtPresent(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
 {
     return [&bus, servo, heldAt](StepDone next) {
         const RegisterTable &table = servo->table();
-        const Register &present = *table.find(kPresentKey);
-        const Register &goal = *table.find(kGoalKey);
+        const Register &present = *table.find(kPresentPosition);
+        const Register &goal = *table.find(kGoalPosition);
         auto where = std::make_shared<std::optional<qint32>>();
         bus.read(
             servo, present.address, present.size, ReadSource::ReadBack,
@@ -182,8 +174,6 @@ Step writeGoalAtPresent(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
 QString whyNotToMove(const ServoInfo &servo, const QHash<QString, qint32> &before,
                      bool *torqueWasOn)
 {
-    using registerkeys::kMode;
-    using registerkeys::kTorqueEnable;
     // Register 33: every family's mode 0 holds a position.
     if (before.contains(kMode) && before.value(kMode) != 0) {
         return Tr::tr("%1 is not in position mode (mode %2): it is not moved.")

@@ -50,9 +50,9 @@ QStringList eepromRegistersIn(int address, int size)
     QStringList names;
     for (const feetech::Family family : feetech::kAllFamilies) {
         for (const feetech::Register &reg : feetech::RegisterTable::forFamily(family).registers()) {
-            const bool overlaps = reg.address < address + size && address < reg.end();
             const QString name = feetech::tableText(reg.label);
-            if (overlaps && reg.storage == feetech::Storage::Eeprom && !names.contains(name))
+            if (reg.overlaps(address, size) && reg.storage == feetech::Storage::Eeprom
+                && !names.contains(name))
                 names.append(name);
         }
     }
