@@ -75,6 +75,8 @@ void RequestEngine::setEchoMode(EchoMode mode)
     // A new port (or the same one again): what the last one taught about answers is forgotten.
     m_answerTimes.clear();
     m_ended.clear();
+    m_answersOwed = 0;
+    m_answersAtOnce = false;
     m_framer.discardPending();
     m_waitedForUnfinished = false;
 }
@@ -92,6 +94,7 @@ void RequestEngine::cancelAll(Failure failure)
 {
     // Nothing of this link's past answers anything that follows.
     m_ended.clear();
+    m_answersOwed = 0;
     m_framer.discardPending();
     m_waitedForUnfinished = false;
     std::deque<Transaction> ended;
@@ -203,6 +206,8 @@ void RequestEngine::send()
     m_firstHeardUs = -1;
     m_lastAcceptedUs = -1;
     m_echoConsumed = false;
+    m_echoUnconfirmed = false;
+    m_lateFrameThisAttempt = false;
     m_sawFrame = false;
     m_firstByteDeadline = false;
     m_collected.clear();
@@ -294,7 +299,13 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 item->bytes == m_current->request && !m_echoConsumed && echoExpected();
             if (isOwnEcho) {
                 m_echoConsumed = true;
-                m_echoSeen = Decision::Yes;
+                // Undecided, a frame the answer could equal proves nothing yet: an answer
+                // after it will (and a second such frame is then that answer).
+                if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown
+                    && m_current->answerMayEqualRequest)
+                    m_echoUnconfirmed = true;
+                else
+                    m_echoSeen = Decision::Yes;
                 m_counters.echoBytes += item->bytes.size();
                 if (!m_current->logFailuresOnly)
                     log(Direction::Echo, item->bytes);
@@ -304,12 +315,17 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 }
                 break;
             }
-            if (cameTooSoon(int(item->bytes.size())) && takeLateAnswer(item->bytes))
+            const bool tooSoon = cameTooSoon(int(item->bytes.size()));
+            if (tooSoon && takeLateAnswer(item->bytes))
                 break;
-            if (cameTooSoon(int(item->bytes.size()))) {
-                // Nothing can answer before the request and the answer have crossed the wire:
-                // this is a late answer to an earlier request (PTK replies name no query). It
-                // says nothing of when this request is answered: no first-byte deadline starts.
+            if (tooSoon && answerOwed()) {
+                // Sooner than the wire could carry the request and an answer, while an earlier
+                // request is owed one: this is that late answer (PTK replies name no query).
+                // It says nothing of when this request is answered: no first-byte deadline
+                // starts. With nothing owed, the frame is the answer of a device that answers
+                // at once.
+                answerPaid();
+                m_lateFrameThisAttempt = true;
                 m_counters.discardedBytes += item->bytes.size();
                 ++m_counters.lateReplies;
                 log(Direction::Stray, item->bytes,
@@ -317,8 +333,10 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                            "to an earlier one, discarded"));
                 break;
             }
+            if (tooSoon)
+                m_answersAtOnce = true;
             if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown && !m_sawFrame)
-                m_echoSeen = Decision::No;
+                m_echoSeen = m_echoUnconfirmed ? Decision::Yes : Decision::No;
             m_sawFrame = true;
             heard(int(item->bytes.size()));
             if (m_current->acceptsReply && m_current->acceptsReply(item->bytes)) {
@@ -404,6 +422,14 @@ void RequestEngine::onTimeout(quint64 generation)
     const bool counted = !m_current->silenceExpected;
     if (counted)
         ++m_counters.timeouts;
+    const bool retrying = m_attempts <= retryCount() && m_transport.isOpen();
+    // Its answer may still come, if nothing came: bytes heard (garbled, or a frame taken for an
+    // earlier request's late answer) were the device answering. A request that recognises its
+    // late answers owes none once it has ended; one that expects silence (a scan, a broadcast)
+    // is owed nothing.
+    if (counted && m_firstHeardUs < 0 && !m_lateFrameThisAttempt
+        && (retrying || !m_current->lateAnswer))
+        oweAnswer();
     if (m_timing.settleAfterTimeout)
         m_quietUntilMs = m_clock.elapsed()
             + std::chrono::duration_cast<std::chrono::milliseconds>(replyTimeout()).count();
@@ -414,7 +440,7 @@ void RequestEngine::onTimeout(quint64 generation)
         log(Direction::In, {}, noReply);
     else
         log(Direction::In, {}, {}, noReply);
-    if (m_attempts <= retryCount() && m_transport.isOpen()) {
+    if (retrying) {
         ++m_counters.retries;
         send();
         return;
@@ -433,6 +459,7 @@ void RequestEngine::finish(Failure failure, const QByteArray &reply)
     result.frames.swap(m_collected);
     // Bytes that form no frame yet (two servos answering at once) were heard all the same.
     result.bytesHeard = m_bytesHeard + int(m_framer.pendingBytes());
+    result.onlyOwnFrame = m_echoUnconfirmed && !m_sawFrame && m_echoSeen == Decision::Unknown;
     const qint64 now = m_clock.nsecsElapsed() / 1000;
     if (m_firstHeardUs >= 0)
         result.latency =
@@ -474,7 +501,9 @@ void RequestEngine::log(Direction direction, const QByteArray &bytes, const QStr
     entry.error = error;
     entry.summary = note;
     if (!bytes.isEmpty() && m_describer && direction != Direction::Stray) {
-        const QString described = m_describer(bytes, m_current ? m_current->request : QByteArray());
+        // Only an answer is described after its request (it may have the request's bytes).
+        const QString described = m_describer(
+            bytes, m_current && direction == Direction::In ? m_current->request : QByteArray());
         entry.summary = note.isEmpty()
             ? described
             : Tr::tr("%1 (%2)", "frame summary (note)").arg(described, note);

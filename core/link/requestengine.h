@@ -38,8 +38,9 @@ struct EngineTiming
     // the servo's ID, so a late one is recognised and discarded without the wait.
     bool settleAfterTimeout = true;
     // A frame complete sooner after the request than the request and the frame take to cross
-    // the wire answers an earlier request (late): it is discarded. Off only for a test
-    // transport that answers instantly.
+    // the wire, while an earlier request is still owed an answer, is that late answer: it is
+    // discarded. While nothing is owed it is the answer, however soon (a virtual port, an
+    // emulator, a USB CDC device that ignores the rate answer at once). Off: never discarded.
     bool discardImpossiblyEarlyAnswers = true;
 };
 
@@ -65,6 +66,10 @@ struct TransactionResult
     // Zero when nothing was accepted.
     std::chrono::microseconds completedAfter {0};
     int bytesHeard = 0; // bytes other than the echo that arrived for this request
+    // Nothing came but a frame equal to the request, taken for the echo while auto detection
+    // had not decided whether the adapter echoes: it may have been the answer (see
+    // Transaction::answerMayEqualRequest). A request whose answer cannot equal it decides.
+    bool onlyOwnFrame = false;
     // Requests answered by several frames (SYNC READ): every accepted frame, in order of arrival,
     // also those that came before a timeout.
     QVector<QByteArray> frames;
@@ -85,6 +90,10 @@ struct Transaction
     enum class Answer { NotMine, More, Complete };
     std::function<Answer(const QByteArray &frame)> collectsReplies;
     int expectedReplySize = 0; // for the wire-time part of the timeout (all answers together)
+    // The answer may have the request's very bytes (a Feetech PING answered with error bit 0):
+    // while auto echo detection is undecided, a frame equal to the request is then no proof of
+    // an echo, and the next frame decides.
+    bool answerMayEqualRequest = false;
     // Overrides of the engine's timing for this transaction (a scan waits less than a write).
     std::optional<std::chrono::microseconds> replyTimeout;
     std::optional<int> retryCount;
@@ -121,8 +130,9 @@ class RequestEngine : public QObject
     Q_OBJECT
 
 public:
-    // Describes a frame for the packet log; `request` is what was sent last (PTK replies carry
-    // no command and mean something only next to their query).
+    // Describes a frame for the packet log; `request` is what was sent last when the frame is
+    // its answer, empty otherwise (PTK replies carry no command and mean something only next
+    // to their query).
     using Describer = std::function<QString(const QByteArray &frame, const QByteArray &request)>;
 
     RequestEngine(Transport &transport, const FrameFormat &format, Describer describer,
@@ -134,6 +144,8 @@ public:
     void setEchoMode(EchoMode mode);
     EchoMode echoMode() const { return m_echoMode; }
     bool echoDetected() const { return m_echoSeen == Decision::Yes; }
+    // Whether a frame equal to the request may be its echo (on, or auto and not known off).
+    bool echoExpected() const;
 
     void submit(Transaction transaction);
     // Ends every queued transaction (and the one in flight) with `failure`.
@@ -174,11 +186,16 @@ private:
     void publishCounters();
     void heard(int bytes);
     void armAfterFirstByte();
-    bool echoExpected() const;
     bool echoKnown() const; // the adapter echoes, for certain
     std::chrono::microseconds wireTime(int bytes) const;
     // Whether a frame of this size, complete now, came too soon to answer the request in flight.
     bool cameTooSoon(int frameBytes) const;
+    // An earlier request's answer may still come: one that timed out having heard nothing, whose
+    // answer a frame that comes too soon for the next request is taken to be. A request that
+    // recognises its late answers (Transaction::lateAnswer) owes none once it has ended.
+    void oweAnswer();
+    bool answerOwed() const;
+    void answerPaid();
     std::chrono::microseconds replyTimeout() const;
     void noteAnswerTime(std::chrono::microseconds time);
     int retryCount() const;
@@ -219,6 +236,16 @@ private:
     int m_rawSinceSend = 0; // bytes of any kind since the request went out
     std::chrono::microseconds m_replyWireTime {0};
     bool m_echoConsumed = false;
+    // Auto echo detection, undecided: a frame equal to a request whose answer may equal it was
+    // taken for the echo; the next frame confirms it.
+    bool m_echoUnconfirmed = false;
+    int m_answersOwed = 0;
+    qint64 m_answersOwedUntilUs = 0;
+    // This link has answered sooner than the wire allows while nothing was owed: the device
+    // answers at once, and such a device sends no late answers (what it does not answer at
+    // once, it never answers).
+    bool m_answersAtOnce = false;
+    bool m_lateFrameThisAttempt = false; // a frame was taken for an earlier request's answer
     bool m_sawFrame = false;
     bool m_firstByteDeadline = false; // afterFirstByte: the wait now runs from the first byte
     QVector<QByteArray> m_collected; // answers so far of a request several servos answer

@@ -88,6 +88,8 @@ void RequestEngine::onInputBetweenRequests(const QByteArray &bytes, const QStrin
             }
             if (takeLateAnswer(item->bytes))
                 continue;
+            // Whatever comes while nothing waits may be the answer an earlier request is owed.
+            answerPaid();
             if (settling) {
                 // The engine holds requests back after a timeout precisely for this answer.
                 noteAnswerTime(std::max(
@@ -107,6 +109,24 @@ void RequestEngine::onInputBetweenRequests(const QByteArray &bytes, const QStrin
         log(Direction::Stray, stray, why);
     }
     publishCounters();
+}
+
+void RequestEngine::oweAnswer()
+{
+    ++m_answersOwed;
+    m_answersOwedUntilUs = m_clock.nsecsElapsed() / 1000 + kLateAnswerMemoryUs;
+}
+
+bool RequestEngine::answerOwed() const
+{
+    return m_answersOwed > 0 && !m_answersAtOnce
+        && m_clock.nsecsElapsed() / 1000 < m_answersOwedUntilUs;
+}
+
+void RequestEngine::answerPaid()
+{
+    if (m_answersOwed > 0)
+        --m_answersOwed;
 }
 
 std::chrono::microseconds RequestEngine::replyTimeout() const

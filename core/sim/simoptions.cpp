@@ -45,8 +45,9 @@ QString simulatorUsage()
         "  --log FILE             log every frame in and out, hex, timestamped\n"
         "  --reply-delay-us N     extra delay before every reply\n"
         "  --adapter PROFILE      deliver replies as a USB adapter does: ideal (the pty's own\n"
-        "                         timing, the default), ftdi (16 ms latency timer), ftdi-1ms,\n"
-        "                         ch340, ch343, cp2102\n"
+        "                         timing, the default), instant (the moment a frame is\n"
+        "                         complete, in no wire time), ftdi (16 ms latency timer),\n"
+        "                         ftdi-1ms, ch340, ch343, cp2102\n"
         "\n"
         "Prints \"ready PATH\" once a client can open PATH; runs until SIGINT or SIGTERM;\n"
         "SIGHUP power-cycles the servos. Reads commands on standard input, one a line, and\n"
@@ -122,13 +123,14 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
                 return fail(Tr::tr("--reply-delay-us must be 0 to 10000000"));
             options.replyDelayUs = *delay;
         } else if (option == QLatin1String("--adapter")) {
-            if (*text == QLatin1String("ideal")) {
-                options.adapter.reset();
-            } else if (const auto profile = adapterProfile(*text)) {
+            options.adapter.reset();
+            options.instant = *text == QLatin1String("instant");
+            if (const auto profile = adapterProfile(*text)) {
                 options.adapter = profile;
-            } else {
+            } else if (*text != QLatin1String("ideal") && !options.instant) {
+                const QStringList names = adapterProfileNames() << QStringLiteral("instant");
                 return fail(Tr::tr("unknown adapter \"%1\": use %2")
-                                .arg(*text, adapterProfileNames().join(QStringLiteral(", "))));
+                                .arg(*text, names.join(QStringLiteral(", "))));
             }
         } else if (option == QLatin1String("--values")) {
             if (feetech)

@@ -147,7 +147,8 @@ void Simulator::onReceived(const QByteArray &bytes)
 {
     const qint64 now = nowUs();
     const qint32 hostBaud = m_pty->hostBaudRate();
-    const double byteUs = byteTimeUs(hostBaud);
+    // An instant device takes no time to hear a frame or to answer it.
+    const double byteUs = m_options.instant ? 0.0 : byteTimeUs(hostBaud);
     // The pty hands the bytes over at once; on a wire they would still be arriving. Through a
     // USB adapter they reach the wire with the next USB frame.
     const qint64 onWire = m_adapter ? m_adapter->requestOnWireUs(now) : now;
@@ -180,7 +181,7 @@ void Simulator::onReceived(const QByteArray &bytes)
 
 void Simulator::respond(const QVector<Response> &responses, qint32 hostBaud, qint64 requestEndUs)
 {
-    const double byteUs = byteTimeUs(hostBaud);
+    const double byteUs = m_options.instant ? 0.0 : byteTimeUs(hostBaud);
     qint64 start = std::max(requestEndUs, m_busFreeUs);
     for (const Response &response : responses) {
         QByteArray bytes = response.bytes;
@@ -196,7 +197,9 @@ void Simulator::respond(const QVector<Response> &responses, qint32 hostBaud, qin
             note = outcome.note;
             extraUs = outcome.extraDelayUs;
         }
-        start += response.turnaroundUs + m_options.replyDelayUs + extraUs;
+        if (!m_options.instant)
+            start += response.turnaroundUs;
+        start += m_options.replyDelayUs + extraUs;
         schedule(start, bytes, byteUs, "out", note);
         start += qint64(std::ceil(bytes.size() * byteUs));
     }

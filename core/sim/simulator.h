@@ -64,6 +64,9 @@ struct SimulatorOptions
     // --adapter: replies reach the program as through this USB adapter; none: as a pty gives
     // them (ideal).
     std::optional<AdapterProfile> adapter;
+    // --adapter instant: a device that answers the moment a frame is complete, in no wire time
+    // and with no return delay (a virtual port, an emulator, a USB CDC device).
+    bool instant = false;
     QString ptkValues; // "gain=20,..." starting values of the PTK servo
     QVector<FeetechServoSpec> servos;
     QString statePath; // Feetech: keeps EEPROM across runs

@@ -33,7 +33,8 @@ struct AdapterProfile
 };
 
 // ftdi (16 ms latency timer, the default), ftdi-1ms, ch340, ch343, cp2102; nothing for another
-// name. "ideal" is no profile: the pty's own timing.
+// name. "ideal" is no profile: the pty's own timing; nor is "instant", a device with no wire
+// time at all (SimulatorOptions::instant).
 std::optional<AdapterProfile> adapterProfile(const QString &name);
 QStringList adapterProfileNames(); // the names adapterProfile() knows, "ideal" first
 
