@@ -60,6 +60,7 @@ inline sim::SimulatorOptions feetechBusOptions(const QTemporaryDir &dir, const Q
 {
     sim::SimulatorOptions options;
     options.kind = sim::SimulatorOptions::Kind::Feetech;
+    options.instant = testsupport::instantTestDevice();
     options.linkPath = dir.filePath(name);
     options.logPath = dir.filePath(name + QStringLiteral(".log"));
     options.servos = std::move(servos);

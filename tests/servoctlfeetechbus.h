@@ -101,7 +101,16 @@ public:
             [&](sim::Simulator &s) { s.feetechBus()->findServo(id)->setValue(key, value); });
     }
 
+    // The mixed bus: STS3215 at 1 and 2, SCS15 at 3 (1 Mbps), an SMS at 5 (115200).
     void start()
+    {
+        start({{1, QStringLiteral("STS3215"), k1M},
+               {2, QStringLiteral("STS3215"), k1M},
+               {3, QStringLiteral("SCS15"), k1M},
+               {5, QStringLiteral("SMS"), k115k}});
+    }
+
+    void start(const QVector<sim::FeetechServoSpec> &servos, bool sharedIds = false)
     {
         QVERIFY(m_dir.isValid());
         static int run = 0;
@@ -111,15 +120,26 @@ public:
         m_logPath = options.linkPath + QStringLiteral(".log");
         options.logPath = m_logPath;
         options.echo = run % 2 == 0; // every other test through a single-wire adapter
-        options.servos = {{1, QStringLiteral("STS3215"), k1M},
-                          {2, QStringLiteral("STS3215"), k1M},
-                          {3, QStringLiteral("SCS15"), k1M},
-                          {5, QStringLiteral("SMS"), k115k}};
+        options.instant = testsupport::instantTestDevice();
+        options.servos = servos;
+        options.allowSharedIds = sharedIds;
         QString error;
         QVERIFY2(m_simulator.start(options, &error), qPrintable(error));
     }
 
     void stop() { m_simulator.stop(); }
+
+    // What the running simulator was started with, the servos aside: a bus of other servos.
+    void restart(const QVector<sim::FeetechServoSpec> &servos, bool sharedIds = false)
+    {
+        stop();
+        start(servos, sharedIds);
+    }
+
+    void setSupplyVoltage(double volts)
+    {
+        m_simulator.call([volts](sim::Simulator &s) { s.feetechBus()->setSupplyVoltage(volts); });
+    }
 };
 
 } // namespace servoctlfeetech

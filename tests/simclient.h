@@ -113,10 +113,20 @@ inline QStringList logLinesStartingWith(const QString &path, const QString &pref
 }
 
 // A simulated PTK servo on `name` in `dir`, logging to `name`.log.
+// The device the end-to-end tests meet: servosim's own wire timing, or with
+// SERVOBENCH_TEST_DEVICE=instant a device that answers the moment a frame is complete, as
+// virtual ports, emulators and USB CDC devices do. CTest runs the timing-sensitive tests both
+// ways (tests/CMakeLists.txt).
+inline bool instantTestDevice()
+{
+    return qEnvironmentVariable("SERVOBENCH_TEST_DEVICE") == QLatin1String("instant");
+}
+
 inline sim::SimulatorOptions ptkOptions(const QTemporaryDir &dir, const QString &name,
                                         bool echo = false)
 {
     sim::SimulatorOptions options;
+    options.instant = instantTestDevice();
     options.kind = sim::SimulatorOptions::Kind::Ptk;
     options.linkPath = dir.filePath(name);
     options.logPath = dir.filePath(name + QStringLiteral(".log"));

@@ -14,8 +14,17 @@ private slots:
     void aRequestIsDescribedAlone()
     {
         const QByteArray read = bytes("FF FF 01 04 02 38 02 BE");
-        QCOMPARE(feetech::describeFrame(read, read),
+        QCOMPARE(feetech::describeFrame(read, {}),
                  QStringLiteral("READ ID 1 address 56 (0x38), length 2"));
+    }
+
+    void anAnswerWithItsRequestsVeryBytesIsAStatus()
+    {
+        // A servo with the voltage bit answers a PING with the PING's bytes.
+        const QByteArray ping = bytes("FF FF 01 02 01 FB");
+        const QString summary = feetech::describeFrame(ping, ping);
+        QVERIFY2(summary.startsWith(QStringLiteral("status from ID 1: error 0x01 (voltage)")),
+                 qPrintable(summary));
     }
 
     void aReplyIsReadAsTheStatusOfTheRequestBeforeIt()

@@ -132,12 +132,14 @@ private slots:
         feetech::TelemetryOptions options;
         options.servos = {found(1), found(2), found(3), found(4)};
         options.rateHz = 50;
+        // The scan read each servo's feedback (whether two servos share its ID): not the stream.
+        const qsizetype beforeStream = packetsReceived().size();
         m_session->startTelemetry(options);
         QTRY_VERIFY_WITH_TIMEOUT(samplesOf(3) >= 5 && samplesOf(1) >= 5, 10000);
         m_session->stopTelemetry();
         int syncReads = 0;
         int scsReads = 0;
-        for (const feetech::Packet &packet : packetsReceived()) {
+        for (const feetech::Packet &packet : packetsReceived().mid(beforeStream)) {
             if (packet.code == quint8(feetech::Instruction::SyncRead)) {
                 ++syncReads;
                 // Address 56, 15 bytes, the SYNC READ families only, in the order asked.

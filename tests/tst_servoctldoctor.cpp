@@ -220,6 +220,38 @@ private slots:
         QVERIFY(!findings.contains(feetech::doctorcodes::kChainBreak));
     }
 
+    void doctorReportsTheSupplyWhenEveryAnswerCarriesTheVoltageBit_data()
+    {
+        QTest::addColumn<bool>("echo");
+        QTest::newRow("plain adapter") << false;
+        QTest::newRow("single-wire adapter") << true;
+    }
+
+    void doctorReportsTheSupplyWhenEveryAnswerCarriesTheVoltageBit()
+    {
+        // A 12 V supply on 7.4 V servos: each answers a PING with the PING's very bytes (error
+        // bit 0), and the two answers to the broadcast PING collide, so nothing has shown yet
+        // whether the adapter echoes.
+        QFETCH(bool, echo);
+        auto options =
+            busOptions({{1, QStringLiteral("STS3215"), k1M}, {2, QStringLiteral("STS3215"), k1M}});
+        options.echo = echo;
+        QString error;
+        QVERIFY2(startSimulator(options, &error), qPrintable(error));
+        onBus([](sim::VirtualFeetechBus &bus) {
+            bus.setSupplyVoltage(12.6);
+            return true;
+        });
+        const auto result = run(QStringLiteral("doctor --json"));
+        QCOMPARE(result.exitCode, 1);
+        const auto findings = findingsByCode(result.out);
+        QVERIFY2(!findings.contains(feetech::doctorcodes::kNoServoFound), qPrintable(result.out));
+        QVERIFY2(findings.contains(feetech::doctorcodes::kVoltage), qPrintable(result.out));
+        QVERIFY(findings.value(feetech::doctorcodes::kVoltage)[QStringLiteral("message")]
+                    .toString()
+                    .contains(QStringLiteral("12.6 V")));
+    }
+
     void doctorFindsAnOverVoltage()
     {
         startBus({{1, QStringLiteral("STS3215"), k1M}, {2, QStringLiteral("STS3215"), k1M}});

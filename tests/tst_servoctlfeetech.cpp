@@ -62,6 +62,51 @@ private slots:
         QCOMPARE(sms.value(QStringLiteral("family")).toString(), QStringLiteral("sms"));
     }
 
+    void aScanFindsServosWhoseAnswersCarryTheVoltageBitAndShowsIt()
+    {
+        // A 12.6 V supply on 7.4 V servos: each STS answers a PING with the PING's very bytes.
+        setSupplyVoltage(12.6);
+        const auto json = run(QStringLiteral("--json scan --ids 0-10"));
+        const QJsonArray servos = QJsonDocument::fromJson(json.out.toUtf8()).array();
+        QCOMPARE(servos.size(), 3);
+        for (const int id : {1, 2}) {
+            const QJsonObject sts = byId(servos, id);
+            QCOMPARE(sts.value(QStringLiteral("error_bits")).toInt() & 0x01, 0x01);
+            QVERIFY(
+                sts.value(QStringLiteral("errors")).toArray().contains(QStringLiteral("voltage")));
+            QCOMPARE(sts.value(QStringLiteral("shared_id")).toBool(), false);
+        }
+        QCOMPARE(json.exitCode, 0);
+        const auto text = run(QStringLiteral("scan --ids 0-10"));
+        QVERIFY2(
+            text.out.contains(QStringLiteral("servo 1 answers with error bits 0x01 (voltage)")),
+            qPrintable(text.out));
+    }
+
+    void aScanSaysWhenTwoServosAnswerAtOneIdAndNothingIsWrittenThere()
+    {
+        restart({{1, QStringLiteral("STS3215"), k1M},
+                 {4, QStringLiteral("STS3215"), k1M},
+                 {4, QStringLiteral("STS3215"), k1M}},
+                true);
+        const auto json = run(QStringLiteral("--json scan --ids 0-10"));
+        QCOMPARE(json.exitCode, 1);
+        const QJsonArray servos = QJsonDocument::fromJson(json.out.toUtf8()).array();
+        QCOMPARE(servos.size(), 2);
+        QCOMPARE(byId(servos, 4).value(QStringLiteral("shared_id")).toBool(), true);
+        QCOMPARE(byId(servos, 1).value(QStringLiteral("shared_id")).toBool(), false);
+        QVERIFY2(json.err.contains(QStringLiteral("ID 4")), qPrintable(json.err));
+        const auto text = run(QStringLiteral("scan --ids 0-10"));
+        QVERIFY2(text.out.contains(QStringLiteral("Two or more servos answer at ID 4")),
+                 qPrintable(text.out));
+        const int writesBefore = writesReceived();
+        const auto set = run(QStringLiteral("set --id 4 max_temperature=70"));
+        QCOMPARE(set.exitCode, 1);
+        QVERIFY2(set.err.contains(QStringLiteral("nothing is written")), qPrintable(set.err));
+        QCOMPARE(writesReceived(), writesBefore);
+        QVERIFY(run(QStringLiteral("set --id 1 max_temperature=70")).exitCode == 0);
+    }
+
     void aScanThatFindsNothingExitsOne()
     {
         const auto result = run(QStringLiteral("--json scan --ids 20-30"));

@@ -50,6 +50,7 @@ private slots:
         m_logPath = options.linkPath + QStringLiteral(".log");
         options.logPath = m_logPath;
         options.echo = run % 2 == 0; // every other test through a single-wire adapter
+        options.instant = testsupport::instantTestDevice();
         QString error;
         QVERIFY2(m_simulator.start(options, &error), qPrintable(error));
     }

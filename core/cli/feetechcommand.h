@@ -12,6 +12,7 @@
 
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QSet>
 #include <QStringList>
 #include <QVector>
 
@@ -54,7 +55,10 @@ private:
     // The servo --id at --baud; nothing, once the failure is printed, when it cannot be reached.
     std::optional<Target> identifyServo(const QString &what);
     // A warning on stderr when the servo's EEPROM lock was found open.
-    void warnIfUnlocked(Target &target);
+    // What a scan row warns of: a shared ID, error bits in the servo's answer.
+    static QStringList scanWarnings(const ServoInfo &servo);
+    // A note, once per servo and command, when its EEPROM lock is open.
+    void noteIfUnlocked(Target &target);
     // The same, refusing a servo of a model no table describes with `unknownModel` (%1: its ID,
     // %2: its model).
     std::optional<Target> identifyKnownServo(const QString &what, const QString &unknownModel);
@@ -140,6 +144,7 @@ private:
 
     const Arguments &m_args;
     const Output &m_output;
+    QSet<quint8> m_unlockedNoted; // servos whose open EEPROM lock was noted
 };
 
 } // namespace cli

@@ -149,16 +149,19 @@ std::optional<FeetechCommand::Target> FeetechCommand::identifyServo(const QStrin
         return std::nullopt;
     }
     target.servo = *servo;
-    warnIfUnlocked(target);
+    noteIfUnlocked(target);
     return target;
 }
 
-void FeetechCommand::warnIfUnlocked(Target &target)
+void FeetechCommand::noteIfUnlocked(Target &target)
 {
-    // A servo whose EEPROM lock is open (a write cut short, another tool that unlocks with
-    // torque off) keeps whatever anything writes into its EEPROM: the user should know before
-    // the command does anything. A servo that does not answer this read is left to the command.
+    // A servo whose EEPROM lock is open (another program such as LeRobot leaves lock = 0 on
+    // every servo it configures; a write cut short does too) keeps whatever anything writes
+    // into its EEPROM: the user should know, once per servo and command, and how to lock it.
+    // A servo that does not answer this read is left to the command.
     const ServoInfo &servo = target.servo;
+    if (m_unlockedNoted.contains(servo.id))
+        return;
     const feetech::Register *lock = servo.hasTable() ? servo.table().find(u"lock") : nullptr;
     if (!lock)
         return;
@@ -168,11 +171,12 @@ void FeetechCommand::warnIfUnlocked(Target &target)
     const qint32 value = valuesByKey(decodeMemory(servo.table(), *memory)).value(lock->key, 1);
     if (value != 0)
         return;
+    m_unlockedNoted.insert(servo.id);
     m_output.err << "servoctl: "
-                 << Tr::tr("warning: servo %1's EEPROM is unlocked (lock = 0): a setting written "
-                           "to it now survives a power cut. servoctl locks it again after each "
-                           "of its own EEPROM writes (set, load, set-id...); to lock it now: "
-                           "servoctl feetech lock --id %1")
+                 << Tr::tr("note: servo %1's EEPROM is unlocked (lock = 0), as some programs "
+                           "(LeRobot among them) leave it: a setting written to it now survives "
+                           "a power cut. servoctl locks it again after each of its own EEPROM "
+                           "writes; to lock it now: servoctl feetech lock --id %1")
                         .arg(servo.id)
                  << '\n';
     m_output.err.flush();
@@ -184,6 +188,15 @@ FeetechCommand::identifyKnownServo(const QString &what, const QString &unknownMo
     auto target = identifyServo(what);
     if (target && !target->servo.hasTable()) {
         fail(unknownModel.arg(target->servo.id).arg(target->servo.model.name));
+        return std::nullopt;
+    }
+    if (!target)
+        return target;
+    // Two servos at one ID would both take whatever is written, and garble every read-back.
+    const auto shared = target->device->operate(
+        [&target] { target->device->session().checkSharedId(target->servo); });
+    if (!shared || !shared->ok || shared->servo.sharedId) {
+        fail(shared ? shared->message : target->device->error());
         return std::nullopt;
     }
     return target;

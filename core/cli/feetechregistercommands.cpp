@@ -1,6 +1,8 @@
 // servoctl feetech scan, ping, read, get and set: finding servos and their registers.
 #include "cli/feetechcommand.h"
 
+#include "feetech/sharedidcheck.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -81,6 +83,8 @@ int FeetechCommand::scan(const QString &what, const QStringList &operands)
                                  -6)
                             .arg(servo.firmware())
                      << '\n';
+        for (const QString &warning : scanWarnings(servo))
+            m_output.out << QStringLiteral("     ! ") << warning << '\n';
         m_output.out.flush();
     });
     if (m_output.json) {
@@ -90,15 +94,40 @@ int FeetechCommand::scan(const QString &what, const QStringList &operands)
             return a.baud != b.baud ? a.baud > b.baud : a.id < b.id;
         });
         QJsonArray array;
-        for (const ServoInfo &servo : std::as_const(found))
-            array.append(servoJson(servo));
+        for (const ServoInfo &servo : std::as_const(found)) {
+            QJsonObject row = servoJson(servo);
+            row.insert(QStringLiteral("shared_id"), servo.sharedId);
+            row.insert(QStringLiteral("error_bits"), servo.statusBits);
+            row.insert(QStringLiteral("errors"),
+                       QJsonArray::fromStringList(feetech::statusBitKeys(servo.statusBits)));
+            array.append(row);
+        }
         printJson(m_output.out, array);
     }
     if (!completed)
         return fail(device.error());
     if (found.isEmpty())
         return fail(Tr::tr("no servo answered (try --baud all, or check power and wiring)"));
+    const auto shared = std::find_if(found.cbegin(), found.cend(),
+                                     [](const ServoInfo &servo) { return servo.sharedId; });
+    if (shared != found.cend())
+        return fail(feetech::sharedIdRefusal(shared->id));
     return ExitOk;
+}
+
+QStringList FeetechCommand::scanWarnings(const ServoInfo &servo)
+{
+    QStringList warnings;
+    if (servo.sharedId)
+        warnings.append(feetech::sharedIdRefusal(servo.id));
+    const QStringList errors = feetech::statusBitNames(servo.statusBits);
+    if (!errors.isEmpty())
+        warnings.append(Tr::tr("servo %1 answers with error bits 0x%2 (%3): servoctl doctor says "
+                               "why")
+                            .arg(servo.id)
+                            .arg(servo.statusBits, 2, 16, QLatin1Char('0'))
+                            .arg(errors.join(QStringLiteral(", "))));
+    return warnings;
 }
 
 int FeetechCommand::ping(const QString &what, const QStringList &operands)

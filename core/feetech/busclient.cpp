@@ -2,6 +2,7 @@
 #include "feetech/busclient.h"
 
 #include "feetech/servoparameters.h"
+#include "feetech/sharedidcheck.h"
 #include "link/linksession.h"
 
 #include <QCoreApplication>
@@ -153,6 +154,8 @@ QString BusClient::writeBlocker(int index) const
         return Tr::tr("Another operation is still running.");
     if (!servo(index).info.hasTable())
         return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+    if (servo(index).info.sharedId)
+        return sharedIdRefusal(servo(index).info.id);
     return {};
 }
 
@@ -160,6 +163,8 @@ void BusClient::onServoFound(const ServoInfo &info)
 {
     auto entry = std::make_unique<Servo>();
     entry->info = info;
+    if (info.statusBits != 0) // the scan's answer showed error bits: the tree shows them
+        entry->statusByte = info.statusBits;
     entry->parameters = std::make_unique<model::ParameterModel>();
     entry->parameters->setDefinitions(modelDefinitions(info.table()));
     m_servos.push_back(std::move(entry));
@@ -503,7 +508,8 @@ void BusClient::onTelemetry(const QVector<FeedbackSample> &samples, quint64 stre
 
 bool BusClient::writeValues(int index, const QVector<model::WriteItem> &values, QString *error)
 {
-    if (!isConnected() || index < 0 || index >= servoCount() || !servo(index).info.hasTable()) {
+    if (!isConnected() || index < 0 || index >= servoCount() || !servo(index).info.hasTable()
+        || servo(index).info.sharedId) {
         // The same reasons as for any write, except a busy bus: control writes queue up.
         const QString blocker = writeBlocker(index);
         if (error)

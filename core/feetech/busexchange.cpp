@@ -212,20 +212,20 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
     // The frame the engine accepts is decoded here, once, and that packet is what `done` gets.
     auto accepted = std::make_shared<std::optional<Packet>>();
     if (!request.listenOnly && request.replyId) {
-        const QByteArray sent = request.request;
+        const QByteArray &sent = request.request;
         const quint8 id = *request.replyId;
         const std::optional<quint8> alternate = request.alternateReplyId;
         const int size = request.replyDataSize;
-        // Our own frame coming back (an echo the engine did not expect) is no answer. But a
-        // PING's answer with the voltage bit set (FF FF id 02 01 ..) has the PING's very bytes:
-        // where the echo is known (On: the engine took it already; Off: there is none), such a
-        // frame is the answer.
-        const bool ownFrameIsEcho = m_link.engine().echoMode() == seriallink::EchoMode::Auto;
+        // An answer whose error byte equals the instruction and whose data equals the request's
+        // parameters has the request's very bytes: a PING, RESET, REBOOT or calibration answered
+        // with those error bits (a PING with the voltage bit: FF FF id 02 01 ..), or a READ of
+        // two bytes that happen to match. The engine accounts for the echo and hands such a
+        // frame here only when it is no echo.
+        const auto asStatus = decodePacket(sent);
+        transaction.answerMayEqualRequest = asStatus && asStatus->parameters.size() == size
+            && (asStatus->id == id || (alternate && asStatus->id == *alternate));
         const auto other = request.otherFrame;
-        transaction.acceptsReply = [sent, id, alternate, size, other, accepted,
-                                    ownFrameIsEcho](const QByteArray &frame) {
-            if (ownFrameIsEcho && frame == sent)
-                return false;
+        transaction.acceptsReply = [id, alternate, size, other, accepted](const QByteArray &frame) {
             auto packet = decodePacket(frame);
             const bool answer = packet
                 && (packet->id == id || (alternate && packet->id == *alternate))
@@ -253,10 +253,14 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
     }
     const quint64 generation = m_link.generation();
     // The engine may end the transaction after this object is gone (a link destroyed last).
-    transaction.done = [this, alive = QPointer<BusExchange>(this), generation, accepted,
+    transaction.done = [this, alive = QPointer<BusExchange>(this), generation, accepted, request,
                         done = std::move(done)](const seriallink::TransactionResult &result) {
         if (!alive || generation != m_link.generation())
             return;
+        if (result.onlyOwnFrame && request.replyId) {
+            settleOwnFrame(request, result, done);
+            return;
+        }
         std::optional<Packet> packet;
         if (result.ok() && !result.reply.isEmpty())
             packet = std::move(*accepted);
@@ -265,6 +269,35 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
         done(result, packet);
     };
     m_link.engine().submit(std::move(transaction));
+}
+
+void BusExchange::settleOwnFrame(const Exchange &request,
+                                 const seriallink::TransactionResult &result, ExchangeDone done)
+{
+    // Nothing came but the request's own bytes, and whether the adapter echoes is not known
+    // yet: the echo, or the answer of a servo whose error bits equal the instruction (a PING
+    // with the voltage bit). A READ of one byte, whose answer cannot equal it, tells: answered,
+    // the servo is there and those bytes were its answer (and the engine now knows the echo).
+    Exchange decide;
+    decide.request = feetech::read(*request.replyId, 0, 1);
+    decide.replyId = request.replyId;
+    decide.replyDataSize = 1;
+    decide.priority = request.priority;
+    decide.silenceExpected = request.silenceExpected;
+    decide.retryCount = 0;
+    exchange(decide,
+             [request, result, done = std::move(done)](const seriallink::TransactionResult &decided,
+                                                       const std::optional<Packet> &reply) {
+                 if (!reply || decided.failure != seriallink::Failure::None) {
+                     done(result, std::nullopt);
+                     return;
+                 }
+                 seriallink::TransactionResult answered = result;
+                 answered.failure = seriallink::Failure::None;
+                 answered.reply = request.request;
+                 answered.onlyOwnFrame = false;
+                 done(answered, decodePacket(request.request));
+             });
 }
 
 Step BusExchange::setBaud(qint32 baud)

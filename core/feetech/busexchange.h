@@ -73,6 +73,8 @@ public:
     // What a missing ID may cost a scan.
     std::chrono::microseconds scanAllowance() const;
 
+    // An answer that may have the request's very bytes (Transaction::answerMayEqualRequest)
+    // is told from the echo here, before `done` hears of it.
     void exchange(const Exchange &exchange, ExchangeDone done);
     // Runs the steps in turn; the first failure ends the run. Nothing is called back once the
     // link has ended or started again in between.
@@ -121,6 +123,9 @@ signals:
                     feetech::ReadSource source, quint8 statusByte);
 
 private:
+    // The request got only its own bytes back while the echo was undecided (see exchange()).
+    void settleOwnFrame(const Exchange &request, const seriallink::TransactionResult &result,
+                        ExchangeDone done);
     // One READ covering `blocks`, handed out block by block; falls back to a READ per block.
     Step readSpan(std::shared_ptr<ServoInfo> servo, QVector<Block> blocks, ReadSource source);
 

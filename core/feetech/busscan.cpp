@@ -1,6 +1,7 @@
 // Feetech bus scan: probe each rate, PING each ID with an adaptive wait, re-ask late answers.
 #include "feetech/busscan.h"
 
+#include "feetech/sharedidcheck.h"
 #include "link/linksession.h"
 #include "link/transport.h"
 
@@ -103,8 +104,10 @@ void BusScan::askAgain(int id)
 void BusScan::onFrameHeard(const QByteArray &frame)
 {
     const auto packet = decodePacket(frame);
-    // A PING's own echo, come late, is no answer.
-    if (packet && frame != feetech::ping(packet->id))
+    // A PING's own bytes may be its echo come late while the engine cannot tell; once it can,
+    // it logs echoes as such, and a frame with those bytes is a servo's answer with the
+    // voltage bit.
+    if (packet && (frame != feetech::ping(packet->id) || m_bus.link().engine().echoDecided()))
         answeredLate(packet->id);
     else if (!packet && !m_scan->probing)
         heardUnnamed();
@@ -319,7 +322,7 @@ void BusScan::scanId(int baudIndex, int id)
                      return;
                  }
                  m_scan->pace.noteAnswer(result.latency, baud);
-                 identifyFound(quint8(id), baud, advance);
+                 identifyFound(quint8(id), baud, quint8(reply->code), advance);
              });
 }
 
@@ -366,29 +369,57 @@ void BusScan::recheck(int baudIndex)
                  if (!reply)
                      recheck(baudIndex);
                  else
-                     identifyFound(quint8(id), baud, [this, baudIndex] { recheck(baudIndex); });
+                     identifyFound(quint8(id), baud, quint8(reply->code),
+                                   [this, baudIndex] { recheck(baudIndex); });
              });
 }
 
-void BusScan::identifyFound(quint8 id, qint32 baud, std::function<void()> then)
+void BusScan::identifyFound(quint8 id, qint32 baud, quint8 statusBits, std::function<void()> then)
 {
     auto servo = std::make_shared<ServoInfo>();
     servo->id = id;
     servo->baud = baud;
-    m_bus.identify(servo)([this, servo, then](bool ok, const QString &) {
+    m_bus.identify(servo)([this, servo, statusBits, then](bool ok, const QString &) {
         if (!m_scan)
             return;
+        servo->statusBits = statusBits; // what the identity says takes the place of the rest
         if (!ok) {
             // It answers PING but not READ: show it, with nothing guessed about it.
             servo->model.name = Tr::tr("unknown (identity unreadable)");
             servo->model.family.reset();
+            reportFound(*servo);
+            then();
+            return;
         }
-        ++m_scan->found;
-        m_scan->foundIds.append(servo->id);
-        m_scan->recheck.removeAll(servo->id);
-        emit servoFound(*servo);
-        then();
+        checkShared(servo, then);
     });
+}
+
+void BusScan::checkShared(std::shared_ptr<ServoInfo> servo, std::function<void()> then)
+{
+    // Two servos at one ID answer PING and identity alike; their feedback tells them apart.
+    checkSharedId(
+        m_bus, *servo, true,
+        [this, servo, then](SharedIdVerdict verdict, const seriallink::TransactionResult &result) {
+            if (!m_scan)
+                return;
+            if (verdict == SharedIdVerdict::Failed
+                && result.failure == seriallink::Failure::LinkDown) {
+                end(false, failureText(result));
+                return;
+            }
+            servo->sharedId = verdict == SharedIdVerdict::Shared;
+            reportFound(*servo);
+            then();
+        });
+}
+
+void BusScan::reportFound(const ServoInfo &servo)
+{
+    ++m_scan->found;
+    m_scan->foundIds.append(servo.id);
+    m_scan->recheck.removeAll(servo.id);
+    emit servoFound(servo);
 }
 
 void BusScan::end(bool completed, const QString &message)

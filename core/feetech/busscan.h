@@ -54,7 +54,11 @@ private:
     // A scan's PING; the scan ends when the link does, otherwise `then` hears the answer.
     void scanPing(int id, std::optional<std::chrono::microseconds> timeout, int retries,
                   ExchangeDone then);
-    void identifyFound(quint8 id, qint32 baud, std::function<void()> then);
+    // Reads the identity of a servo that answered (`statusBits`: its PING answer's error bits)
+    // and whether it shares its ID, then reports it found.
+    void identifyFound(quint8 id, qint32 baud, quint8 statusBits, std::function<void()> then);
+    void checkShared(std::shared_ptr<ServoInfo> servo, std::function<void()> then);
+    void reportFound(const ServoInfo &servo);
     void end(bool completed, const QString &message);
     // An answer named `id` outside its own wait: it is asked again, patiently.
     void answeredLate(quint8 id);

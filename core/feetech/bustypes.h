@@ -37,6 +37,10 @@ struct ServoInfo
     quint8 baudCode = 0; // address 6
     quint8 responseLevel = 1; // address 8: 0 = only READ and PING answer
     ModelInfo model; // no family: no trusted table, the servo gets the raw view
+    quint8 statusBits = 0; // the error bits of its answer to the scan (0x01: voltage)
+    // Its feedback reads came back garbled: two or more servos answer at this ID. Nothing is
+    // written to it while that is so.
+    bool sharedId = false;
 
     quint16 modelNumber() const;
     QString firmware() const; // "3.10"
@@ -115,7 +119,8 @@ enum class Operation {
     Guard, // the guard's hold or torque off, ahead of the queue; reported as a GuardEvent
     RecoverOverload, // torque off and on again after an overload trip, then the status checked
     LockEeprom, // the EEPROM lock closed and read back (a lock left open)
-    SendPacket // a frame built by hand (the packet window), sent once as it is
+    SendPacket, // a frame built by hand (the packet window), sent once as it is
+    CheckSharedId // reads only: whether several servos answer at one ID
 };
 
 struct OperationResult

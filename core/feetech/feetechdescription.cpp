@@ -170,8 +170,8 @@ QVector<DecodedFrame> decodeStream(const QByteArray &stream, seriallink::Detail 
 
 QString describeFrame(const QByteArray &frame, const QByteArray &request)
 {
-    const QByteArray stream = frame == request ? frame : request + frame;
-    const auto frames = decodeStream(stream, seriallink::Detail::Summary);
+    // After its request a frame is an answer, even one with the request's very bytes.
+    const auto frames = decodeStream(request + frame, seriallink::Detail::Summary);
     return frames.isEmpty() ? QString() : frames.last().summary;
 }
 

@@ -18,8 +18,9 @@ decodeStream(const QByteArray &stream,
              seriallink::Detail detail = seriallink::Detail::SummaryAndFields);
 
 // The packet log's one-line summary of a packet the session sent or received. A reply is read
-// next to the request that asked for it (a READ's data then gets its address); the request
-// itself (frame == request) is described alone.
+// next to the request that asked for it (a READ's data then gets its address), even one with
+// the request's very bytes (a PING answered with the voltage bit); a request, or a frame with no
+// request before it, is given an empty `request`.
 QString describeFrame(const QByteArray &frame, const QByteArray &request);
 
 } // namespace feetech

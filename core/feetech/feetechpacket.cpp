@@ -3,6 +3,8 @@
 
 #include <QCoreApplication>
 
+#include <functional>
+
 namespace feetech {
 
 std::optional<QString> instructionName(quint8 code)
@@ -149,20 +151,40 @@ QByteArray status(quint8 id, quint8 error, const QByteArray &data)
     return encodePacket(id, error, data);
 }
 
-QStringList statusBitNames(quint8 error)
+namespace {
+
+// The status error bits, bit 0 first: the names the user reads, the keys JSON carries.
+const char *const kStatusBitNames[8] = {
+    QT_TRANSLATE_NOOP("feetech", "voltage"),     QT_TRANSLATE_NOOP("feetech", "encoder"),
+    QT_TRANSLATE_NOOP("feetech", "temperature"), QT_TRANSLATE_NOOP("feetech", "current"),
+    QT_TRANSLATE_NOOP("feetech", "angle"),       QT_TRANSLATE_NOOP("feetech", "overload"),
+    QT_TRANSLATE_NOOP("feetech", "bit 6"),       QT_TRANSLATE_NOOP("feetech", "bit 7"),
+};
+const char *const kStatusBitKeys[8] = {"voltage", "encoder",  "temperature", "current",
+                                       "angle",   "overload", "bit_6",       "bit_7"};
+
+QStringList statusBits(quint8 error, const std::function<QString(int bit)> &name)
 {
-    static const char *const kNames[8] = {
-        QT_TRANSLATE_NOOP("feetech", "voltage"),     QT_TRANSLATE_NOOP("feetech", "encoder"),
-        QT_TRANSLATE_NOOP("feetech", "temperature"), QT_TRANSLATE_NOOP("feetech", "current"),
-        QT_TRANSLATE_NOOP("feetech", "angle"),       QT_TRANSLATE_NOOP("feetech", "overload"),
-        QT_TRANSLATE_NOOP("feetech", "bit 6"),       QT_TRANSLATE_NOOP("feetech", "bit 7"),
-    };
     QStringList names;
     for (int bit = 0; bit < 8; ++bit) {
         if (error & (1u << bit))
-            names.append(QCoreApplication::translate("feetech", kNames[bit]));
+            names.append(name(bit));
     }
     return names;
+}
+
+} // namespace
+
+QStringList statusBitNames(quint8 error)
+{
+    return statusBits(error, [](int bit) {
+        return QCoreApplication::translate("feetech", kStatusBitNames[bit]);
+    });
+}
+
+QStringList statusBitKeys(quint8 error)
+{
+    return statusBits(error, [](int bit) { return QString::fromLatin1(kStatusBitKeys[bit]); });
 }
 
 int FrameFormat::frameLength(QByteArrayView buffer) const

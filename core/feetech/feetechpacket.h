@@ -74,6 +74,8 @@ QByteArray status(quint8 id, quint8 error, const QByteArray &data = {});
 
 // Names of the status (error) byte's bits, lowest first (spec §7.1, STS/SMS naming).
 QStringList statusBitNames(quint8 error);
+// The same bits as stable keys for JSON ("voltage", "overload", "bit_6").
+QStringList statusBitKeys(quint8 error);
 
 class FrameFormat final : public seriallink::FrameFormat
 {

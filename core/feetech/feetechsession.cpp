@@ -2,6 +2,7 @@
 #include "feetech/feetechsession.h"
 
 #include "feetech/feetechdescription.h"
+#include "feetech/sharedidcheck.h"
 #include "link/linksession.h"
 #include "link/transport.h"
 
@@ -366,6 +367,32 @@ void Session::ping(quint8 id, qint32 baud)
                                                  .arg(failureText(answer));
                     if (reply)
                         emit statusSeen(result.servo.id, result.servo.baud, reply->code);
+                    finishOperation(result);
+                });
+        });
+    });
+}
+
+void Session::checkSharedId(const ServoInfo &servo)
+{
+    enqueue(Operation::CheckSharedId, [this, servo] {
+        m_bus->setBaud(servo.baud)([this, servo](bool ok, const QString &message) {
+            if (!ok) {
+                finishOperation({Operation::CheckSharedId, false, message, servo, {}});
+                return;
+            }
+            feetech::checkSharedId(
+                *m_bus, servo, false,
+                [this, servo](SharedIdVerdict verdict, const seriallink::TransactionResult &last) {
+                    OperationResult result {Operation::CheckSharedId, true, {}, servo, {}};
+                    result.servo.sharedId = verdict == SharedIdVerdict::Shared;
+                    if (result.servo.sharedId)
+                        result.message = sharedIdRefusal(servo.id);
+                    if (verdict == SharedIdVerdict::Failed || verdict == SharedIdVerdict::Silent) {
+                        result.ok = false;
+                        result.message = Tr::tr("%1 stopped answering: %2")
+                                             .arg(servoName(servo), failureText(last));
+                    }
                     finishOperation(result);
                 });
         });

@@ -55,6 +55,9 @@ public:
     void scan(const feetech::ScanOptions &options);
     void cancelScan();
     void ping(quint8 id, qint32 baud);
+    // Whether several servos answer at the servo's ID (sharedidcheck.h): ok with servo.sharedId
+    // set, or not ok when the reads went unanswered.
+    void checkSharedId(const feetech::ServoInfo &servo);
     // Every block of the servo's table (the raw view for an unknown model), or only `blocks`.
     // A Refresh is a background read: it runs only when nothing else does.
     void read(const feetech::ServoInfo &servo, const QVector<feetech::Block> &blocks,

@@ -1,6 +1,7 @@
 // Motor set-up, the search: a broadcast PING per rate, then the one servo identified and read.
 #include "feetech/motorsetup.h"
 
+#include "feetech/sharedidcheck.h"
 #include "link/linksession.h"
 
 #include <QCoreApplication>
@@ -19,11 +20,6 @@ struct Tr
 namespace feetech {
 
 namespace {
-
-// Reads of the feedback block that decide whether one servo or two answer at an ID: two servos
-// at one ID answer each read in the same instant, and their positions differ.
-constexpr int kFeedbackReads = 3;
-constexpr int kMajority = kFeedbackReads / 2 + 1;
 
 QString jointText(const MotorTarget &target)
 {
@@ -47,8 +43,6 @@ struct MotorSetup::Search
     QVector<qint32> rates;
     QVector<Rate> heard;
     MotorSearch result;
-    int cleanReads = 0;
-    int garbledReads = 0;
 };
 
 Exchange MotorSetup::identityRequest(quint8 id, bool quiet)
@@ -193,7 +187,7 @@ void MotorSetup::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud)
                                : std::nullopt;
                            if (info) {
                                search->result.servo = *info;
-                               readFeedback(search, 0);
+                               checkShared(search);
                            } else if (result.bytesHeard > 0) { // their identities differ
                                search->result.count = 2;
                                endSearch(search, MotorSearch::Verdict::SharedId,
@@ -214,51 +208,36 @@ void MotorSetup::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud)
     });
 }
 
-void MotorSetup::readFeedback(std::shared_ptr<Search> search, int round)
+void MotorSetup::checkShared(std::shared_ptr<Search> search)
 {
     const ServoInfo &servo = search->result.servo;
-    if (!servo.hasTable()) { // nothing known to read: its model decides
-        judgeModel(search);
-        return;
-    }
-    if (search->garbledReads >= kMajority) {
-        search->result.count = 2;
-        endSearch(search, MotorSearch::Verdict::SharedId,
-                  Tr::tr("Two servos answer at ID %1; connect them one at a time.").arg(servo.id));
-        return;
-    }
-    if (search->cleanReads >= kMajority) {
-        judgeModel(search);
-        return;
-    }
-    if (round == kFeedbackReads) {
-        endSearch(search, MotorSearch::Verdict::NoServo,
-                  Tr::tr("%1 stopped answering: check the power and the cable, then look again.")
-                      .arg(servoName(servo)));
-        return;
-    }
-    // The same bytes from two servos pass unharmed; the present position, load and current
-    // differ between them, and their replies garble where they differ.
-    const Block feedback = servo.table().feedbackBlock();
-    Exchange ask;
-    ask.request = feetech::read(servo.id, quint8(feedback.address), quint8(feedback.size));
-    ask.replyId = servo.id;
-    ask.replyDataSize = feedback.size;
-    ask.retryCount = 0;
-    m_bus.exchange(ask,
-                   [this, search, round](const seriallink::TransactionResult &result,
-                                         const std::optional<Packet> &reply) {
-                       if (result.failure == seriallink::Failure::LinkDown
-                           || result.failure == seriallink::Failure::Cancelled) {
-                           endSearch(search, MotorSearch::Verdict::Failed, failureText(result));
-                           return;
-                       }
-                       if (reply)
-                           ++search->cleanReads;
-                       else if (result.bytesHeard > 0)
-                           ++search->garbledReads;
-                       readFeedback(search, round + 1);
-                   });
+    checkSharedId(
+        m_bus, servo, false,
+        [this, search](SharedIdVerdict verdict, const seriallink::TransactionResult &result) {
+            const ServoInfo &servo = search->result.servo;
+            switch (verdict) {
+            case SharedIdVerdict::Failed:
+                endSearch(search, MotorSearch::Verdict::Failed, failureText(result));
+                return;
+            case SharedIdVerdict::Shared:
+                search->result.count = 2;
+                endSearch(search, MotorSearch::Verdict::SharedId,
+                          Tr::tr("Two servos answer at ID %1; connect them one at a "
+                                 "time.")
+                              .arg(servo.id));
+                return;
+            case SharedIdVerdict::Silent:
+                endSearch(search, MotorSearch::Verdict::NoServo,
+                          Tr::tr("%1 stopped answering: check the power and the "
+                                 "cable, then look again.")
+                              .arg(servoName(servo)));
+                return;
+            case SharedIdVerdict::One:
+            case SharedIdVerdict::Unknown: // nothing known to read: its model decides
+                judgeModel(search);
+                return;
+            }
+        });
 }
 
 void MotorSetup::judgeModel(std::shared_ptr<Search> search)

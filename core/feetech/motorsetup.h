@@ -134,7 +134,8 @@ private:
     void probeRate(std::shared_ptr<Search> search, int index);
     void decide(std::shared_ptr<Search> search);
     void confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud);
-    void readFeedback(std::shared_ptr<Search> search, int round);
+    // Whether two servos share the one ID found (sharedidcheck.h), then its model.
+    void checkShared(std::shared_ptr<Search> search);
     void judgeModel(std::shared_ptr<Search> search);
     void endSearch(std::shared_ptr<Search> search, MotorSearch::Verdict verdict,
                    const QString &message);

@@ -316,7 +316,9 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 break;
             }
             const bool tooSoon = cameTooSoon(int(item->bytes.size()));
-            if (tooSoon && takeLateAnswer(item->bytes))
+            // On a link that answers at once every answer comes too soon: this request's
+            // answer is not offered to the ended ones first.
+            if (tooSoon && !m_answersAtOnce && takeLateAnswer(item->bytes))
                 break;
             if (tooSoon && answerOwed()) {
                 // Sooner than the wire could carry the request and an answer, while an earlier

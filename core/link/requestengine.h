@@ -146,6 +146,12 @@ public:
     bool echoDetected() const { return m_echoSeen == Decision::Yes; }
     // Whether a frame equal to the request may be its echo (on, or auto and not known off).
     bool echoExpected() const;
+    // Whether the engine knows if the adapter echoes (on, off, or auto and decided): then it
+    // tells each echo from an answer with the same bytes, and logs the echo as such.
+    bool echoDecided() const
+    {
+        return m_echoMode != EchoMode::Auto || m_echoSeen != Decision::Unknown;
+    }
 
     void submit(Transaction transaction);
     // Ends every queued transaction (and the one in flight) with `failure`.

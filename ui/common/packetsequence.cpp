@@ -158,7 +158,7 @@ QString riskOf(const PacketFrame &frame)
 QString describe(const PacketFrame &frame)
 {
     return frame.protocol == PacketFrame::Protocol::Feetech
-        ? feetech::describeFrame(frame.bytes, frame.bytes)
+        ? feetech::describeFrame(frame.bytes, {})
         : ptk::describeFrame(frame.bytes, {});
 }
 

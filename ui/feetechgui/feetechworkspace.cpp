@@ -2,6 +2,7 @@
 // operations on a servo are in feetechworkspaceoperations.cpp.
 #include "feetechgui/feetechworkspace.h"
 
+#include "common/palette.h"
 #include "common/parameterpage.h"
 #include "common/profileactions.h"
 #include "common/widgethelpers.h"
@@ -28,6 +29,7 @@
 #include <QSet>
 #include <QSortFilterProxyModel>
 #include <QSplitter>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTableView>
 #include <QTimer>
@@ -393,8 +395,27 @@ void FeetechWorkspace::rebuildTree()
         }
         const QString family =
             info.model.family ? feetech::familyName(*info.model.family) : tr("unknown");
-        auto *item = new QTreeWidgetItem(
-            baudItem, {tr("ID %1").arg(info.id), info.model.name, family, info.firmware()});
+        const QString idText =
+            info.sharedId ? tr("ID %1 (shared!)").arg(info.id) : tr("ID %1").arg(info.id);
+        auto *item =
+            new QTreeWidgetItem(baudItem, {idText, info.model.name, family, info.firmware()});
+        const std::optional<quint8> status = m_client->servo(i).statusByte;
+        const QStringList errors = status ? feetech::statusBitNames(*status) : QStringList();
+        QStringList warnings;
+        if (info.sharedId)
+            warnings.append(tr("Two or more servos answer at ID %1: their replies come back "
+                               "garbled. Nothing is written to this ID while it is shared; "
+                               "connect them one at a time and give each its own ID.")
+                                .arg(info.id));
+        if (!errors.isEmpty())
+            warnings.append(tr("It answers with error bits: %1 (the Doctor says why).")
+                                .arg(errors.join(QStringLiteral(", "))));
+        if (!warnings.isEmpty()) {
+            item->setIcon(ServoColumn, style()->standardIcon(QStyle::SP_MessageBoxWarning));
+            item->setToolTip(ServoColumn, warnings.join(u'\n'));
+            item->setForeground(ServoColumn,
+                                palette::toneColor(palette::Tone::Error, m_tree->palette()));
+        }
         item->setData(ServoColumn, kIdRole, info.id);
         item->setData(ServoColumn, kBaudRole, info.baud);
         item->setToolTip(ModelColumn,
