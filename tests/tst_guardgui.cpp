@@ -81,12 +81,30 @@ private slots:
         setSimulatorValue(1, u"lock", 0); // a write cut short before its relock
         m_client->readServo(m_index);
         QTRY_VERIFY_WITH_TIMEOUT(!notice.isHidden(), 10000);
-        QVERIFY2(notice.text().contains(QLatin1String("Servo 1's EEPROM is unlocked")),
+        QVERIFY2(notice.text().contains(QLatin1String("Note: servo 1's EEPROM is unlocked")),
                  qPrintable(notice.text()));
         QCOMPARE(simulatorValue(1, u"lock"), 0); // shown, not acted on
         notice.lockButton()->click();
         QTRY_VERIFY_WITH_TIMEOUT(notice.isHidden(), 10000);
         QCOMPARE(simulatorValue(1, u"lock"), 1);
+    }
+
+    void aDismissedNoteStaysAwayForThatServoAndTheLockIsLeftAsItIs()
+    {
+        UnlockedNotice notice(m_client.get());
+        notice.showServo(m_index);
+        setSimulatorValue(1, u"lock", 0); // as LeRobot leaves it
+        m_client->readServo(m_index);
+        QTRY_VERIFY_WITH_TIMEOUT(!notice.isHidden(), 10000);
+        notice.findChild<QPushButton *>(QStringLiteral("dismissUnlockedButton"))->click();
+        QVERIFY(notice.isHidden());
+        // Read again: the servo still reads unlocked, and the note stays away.
+        QSignalSpy updated(m_client.get(), &feetech::BusClient::servoUpdated);
+        m_client->readServo(m_index);
+        QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty(), 10000);
+        QVERIFY(m_client->eepromUnlocked(m_index));
+        QVERIFY(notice.isHidden());
+        QCOMPARE(simulatorValue(1, u"lock"), 0);
     }
 
     void theBannerSaysTheGuardIsOnBeforeAnythingHappens()

@@ -103,6 +103,23 @@ private slots:
         QCOMPARE(present(*bus, 1), 1000);
     }
 
+    void anOffsetChangedMidSweepMovesTheReadingsNotTheHorn()
+    {
+        // As on a real servo: the hand moves the horn; the reading is the horn less the offset.
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 1000, 3000, 2.0));
+        bus->advanceTo(500 * kMs);
+        QCOMPARE(present(*bus, 1), 2000);
+        bus->findServo(1)->setValue(u"position_offset", 1500);
+        bus->advanceTo(1000 * kMs); // the horn at 3000
+        QCOMPARE(qRound(bus->findServo(1)->physicalPosition()), 3000);
+        QCOMPARE(present(*bus, 1), 1500);
+        bus->advanceTo(2000 * kMs); // back at 1000: across the seam in the new coordinates
+        QCOMPARE(present(*bus, 1), 4096 - 500);
+        bus->findServo(1)->setValue(u"position_offset", 0);
+        QCOMPARE(present(*bus, 1), 1000);
+    }
+
     void sweepStartsAtTheBusesCurrentTime()
     {
         auto bus = armBus();

@@ -120,6 +120,49 @@ private slots:
         QVERIFY2(error.contains(QLatin1String("none.json")), qPrintable(error));
     }
 
+    void leRobotsLimitOf4096IsReadAndOnePastItRefused()
+    {
+        QString error;
+        QVERIFY2(leRobotCalibrationFromJson(
+                     R"({"wrist_roll": {"id": 5, "drive_mode": 0, "homing_offset": 0,
+                         "range_min": 0, "range_max": 4096}})",
+                     QStringLiteral("arm.json"), &error),
+                 qPrintable(error));
+        QVERIFY(!leRobotCalibrationFromJson(
+            R"({"wrist_roll": {"id": 5, "drive_mode": 0, "homing_offset": 0,
+                "range_min": 0, "range_max": 4097}})",
+            QStringLiteral("arm.json"), &error));
+        QVERIFY2(error.contains(QLatin1String("outside 0 to 4096")), qPrintable(error));
+    }
+
+    void whatCannotBeLoadedIsNotSaved()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("arm.json"));
+        QString error;
+        QVERIFY(!saveLeRobotCalibration({{QStringLiteral("elbow_flex"), 3, 0, 12, 900, 5000}}, path,
+                                        &error));
+        QVERIFY2(error.contains(QLatin1String("\"range_max\" is 5000")), qPrintable(error));
+        QVERIFY(!QFile::exists(path));
+    }
+
+    void aFileSavedOverAnotherKeepsItsDriveModes()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("arm.json"));
+        QString error;
+        QVERIFY(saveLeRobotCalibration({{QStringLiteral("elbow_flex"), 3, 1, 12, 900, 3100},
+                                        {QStringLiteral("gripper"), 6, 0, 0, 2000, 3400}},
+                                       path, &error));
+        QVector<LeRobotMotor> again {{QStringLiteral("elbow_flex"), 3, 0, 40, 800, 3000},
+                                     {QStringLiteral("wrist_roll"), 5, 0, 0, 0, 4095}};
+        keepDriveModes(again, path);
+        QCOMPARE(again.at(0).driveMode, 1);
+        QCOMPARE(again.at(1).driveMode, 0); // a joint the file did not have
+        keepDriveModes(again, dir.filePath(QStringLiteral("none.json")));
+        QCOMPARE(again.at(0).driveMode, 1);
+    }
+
     void theFolderFollowsLeRobotsEnvironment()
     {
         const QByteArray saved[] = {qgetenv("HF_LEROBOT_CALIBRATION"), qgetenv("HF_LEROBOT_HOME"),

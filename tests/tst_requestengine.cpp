@@ -241,6 +241,26 @@ private slots:
         QCOMPARE(ptk::decodeReply(second.reply)->word0, quint16(2));
     }
 
+    void anEchoAloneStartsNoFirstByteDeadline()
+    {
+        // A scan's wait for the first byte of an answer: the adapter's echo, come on its own,
+        // is no answer begun, and the answer that follows it in time is heard.
+        ScriptedTransport transport;
+        transport.echo = true;
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        Transaction transaction = query(0x38, Transaction::Priority::Command, nullptr, &result);
+        transaction.replyTimeout = std::chrono::milliseconds(2000);
+        transaction.afterFirstByte = std::chrono::microseconds(1);
+        transaction.retryCount = 0;
+        requests->submit(std::move(transaction));
+        QTRY_VERIFY(!transport.written.isEmpty());
+        QTimer::singleShot(20, Qt::PreciseTimer, &transport,
+                           [&transport] { transport.deliver(reply(5)); });
+        QTRY_COMPARE(result.failure, Failure::None);
+        QCOMPARE(ptk::decodeReply(result.reply)->word0, quint16(5));
+    }
+
     void aGarbledAnswerOwesNothing()
     {
         // The servo answered (garbled); the retry's answer at once is no late one.

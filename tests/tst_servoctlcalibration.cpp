@@ -319,6 +319,58 @@ private slots:
                  qPrintable(result.out));
     }
 
+    void whatSaveWritesLoadReadsWithLeRobotsLimitAndDriveMode()
+    {
+        // LeRobot gives a servo the limit 4096 and keeps drive_mode in its file only.
+        startArm(2);
+        setSimulatorValue(1, u"max_angle_limit", 4096);
+        const QString file = path(QStringLiteral("lerobot.json"));
+        QString error;
+        QVERIFY(feetech::saveLeRobotCalibration(
+            {{QStringLiteral("pan"), 1, 1, 0, 0, 4096}, {QStringLiteral("lift"), 2, 0, 0, 0, 4095}},
+            file, &error));
+        auto result =
+            servoctl({QStringLiteral("feetech"), QStringLiteral("calibration"),
+                      QStringLiteral("save"), QStringLiteral("--ids"), QStringLiteral("1,2"),
+                      QStringLiteral("--names"), QStringLiteral("pan,lift"), file});
+        QVERIFY2(result.exitCode == 0, qPrintable(result.err));
+        const auto saved = feetech::loadLeRobotCalibration(file, &error);
+        QVERIFY2(saved, qPrintable(error));
+        QCOMPARE(saved->at(0).name, QStringLiteral("pan"));
+        QCOMPARE(saved->at(0).rangeMax, 4096);
+        QCOMPARE(saved->at(0).driveMode, 1); // kept from the file, not written as 0
+        QCOMPARE(saved->at(1).driveMode, 0);
+
+        const int writesBefore =
+            testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write).size();
+        result = servoctl({QStringLiteral("feetech"), QStringLiteral("calibration"),
+                           QStringLiteral("load"), file});
+        QVERIFY2(result.exitCode == 0, qPrintable(result.err + result.out));
+        QVERIFY2(result.out.contains(QLatin1String("pan (servo 1): already holds")),
+                 qPrintable(result.out));
+        QVERIFY2(result.out.contains(QLatin1String("drive_mode 1 is LeRobot's software setting")),
+                 qPrintable(result.out));
+        QCOMPARE(
+            testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write).size(),
+            writesBefore);
+        QCOMPARE(simulatorValue(1, u"max_angle_limit"), 4096);
+    }
+
+    void aLimitNoFileCanHoldIsSaidAndNothingIsSaved()
+    {
+        startArm(1);
+        setSimulatorValue(1, u"max_angle_limit", 5000);
+        const QString file = path(QStringLiteral("past.json"));
+        const auto result =
+            servoctl({QStringLiteral("feetech"), QStringLiteral("calibration"),
+                      QStringLiteral("save"), QStringLiteral("--ids"), QStringLiteral("1"), file});
+        QCOMPARE(result.exitCode, 1);
+        QVERIFY2(result.err.contains(QLatin1String("\"range_max\" is 5000")),
+                 qPrintable(result.err));
+        QVERIFY2(result.err.contains(QLatin1String("it was not saved")), qPrintable(result.err));
+        QVERIFY(!QFile::exists(file));
+    }
+
     void aLoadIsRefusedForAJointWhoseTorqueIsOn()
     {
         startArm(1);

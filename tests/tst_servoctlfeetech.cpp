@@ -66,9 +66,9 @@ private slots:
     {
         // A 12.6 V supply on 7.4 V servos: each STS answers a PING with the PING's very bytes.
         setSupplyVoltage(12.6);
-        const auto json = run(QStringLiteral("--json scan --ids 0-10"));
+        const auto json = run(QStringLiteral("--json --trace scan --ids 0-10"));
         const QJsonArray servos = QJsonDocument::fromJson(json.out.toUtf8()).array();
-        QCOMPARE(servos.size(), 3);
+        QVERIFY2(servos.size() == 3, qPrintable(json.err));
         for (const int id : {1, 2}) {
             const QJsonObject sts = byId(servos, id);
             QCOMPARE(sts.value(QStringLiteral("error_bits")).toInt() & 0x01, 0x01);
@@ -89,10 +89,10 @@ private slots:
                  {4, QStringLiteral("STS3215"), k1M},
                  {4, QStringLiteral("STS3215"), k1M}},
                 true);
-        const auto json = run(QStringLiteral("--json scan --ids 0-10"));
+        const auto json = run(QStringLiteral("--json --trace scan --ids 0-10"));
         QCOMPARE(json.exitCode, 1);
         const QJsonArray servos = QJsonDocument::fromJson(json.out.toUtf8()).array();
-        QCOMPARE(servos.size(), 2);
+        QVERIFY2(servos.size() == 2, qPrintable(json.err));
         QCOMPARE(byId(servos, 4).value(QStringLiteral("shared_id")).toBool(), true);
         QCOMPARE(byId(servos, 1).value(QStringLiteral("shared_id")).toBool(), false);
         QVERIFY2(json.err.contains(QStringLiteral("ID 4")), qPrintable(json.err));
@@ -245,7 +245,7 @@ private slots:
         }
     }
 
-    void aServoLeftUnlockedIsNamedInAWarning()
+    void aServoLeftUnlockedIsNamedInANoteWithTheWayToLockIt()
     {
         auto result = run(QStringLiteral("get --id 1 max_temperature"));
         QCOMPARE(result.exitCode, 0);
@@ -253,7 +253,9 @@ private slots:
         setServoValue(1, QStringLiteral("lock"), 0); // a write cut short before its relock
         result = run(QStringLiteral("get --id 1 max_temperature"));
         QCOMPARE(result.exitCode, 0);
-        QVERIFY2(result.err.contains(QStringLiteral("servo 1's EEPROM is unlocked")),
+        QVERIFY2(result.err.contains(QStringLiteral("note: servo 1's EEPROM is unlocked")),
+                 qPrintable(result.err));
+        QVERIFY2(result.err.contains(QStringLiteral("servoctl feetech lock --id 1")),
                  qPrintable(result.err));
         QCOMPARE(result.err.count(u'\n'), 1);
         QVERIFY(!result.out.isEmpty()); // and the command still did its work

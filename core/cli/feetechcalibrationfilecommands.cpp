@@ -49,7 +49,6 @@ int FeetechCommand::saveCalibration(const QString &what, const QStringList &oper
     if (!servos)
         return ExitDeviceFailure;
     QVector<feetech::LeRobotMotor> motors;
-    QJsonObject joints;
     for (int i = 0; i < servos->size(); ++i) {
         const ServoInfo &servo = servos->at(i);
         const auto values = readCalibrationRegisters(device, servo);
@@ -71,15 +70,19 @@ int FeetechCommand::saveCalibration(const QString &what, const QStringList &oper
                             .arg(motor.rangeMax)
                             .arg(QDir::toNativeSeparators(path)));
         motors.append(motor);
-        joints.insert(motor.name,
-                      QJsonObject {{QStringLiteral("id"), motor.id},
-                                   {QStringLiteral("homing_offset"), motor.homingOffset},
-                                   {QStringLiteral("range_min"), motor.rangeMin},
-                                   {QStringLiteral("range_max"), motor.rangeMax}});
     }
+    feetech::keepDriveModes(motors, path);
     QString error;
     if (!feetech::saveLeRobotCalibration(motors, path, &error))
         return fail(error);
+    QJsonObject joints;
+    for (const feetech::LeRobotMotor &motor : std::as_const(motors))
+        joints.insert(motor.name,
+                      QJsonObject {{QStringLiteral("id"), motor.id},
+                                   {QStringLiteral("drive_mode"), motor.driveMode},
+                                   {QStringLiteral("homing_offset"), motor.homingOffset},
+                                   {QStringLiteral("range_min"), motor.rangeMin},
+                                   {QStringLiteral("range_max"), motor.rangeMax}});
     if (m_output.json)
         printJson(m_output.out,
                   QJsonObject {{QStringLiteral("file"), path}, {QStringLiteral("joints"), joints}});
@@ -124,7 +127,10 @@ int FeetechCommand::loadCalibration(const QString &what, const QStringList &oper
         QStringList described;
         for (const model::WriteItem &item : wanted) {
             const qint32 now = current->value(item.key);
-            if (now == item.value)
+            // A servo LeRobot gave the limit 4096 holds what the file says.
+            const bool asInFile =
+                item.key == QString::fromUtf16(feetech::kMaximumLimitKey) && now == motor.rangeMax;
+            if (now == item.value || asInFile)
                 continue;
             changes.append(item);
             changesJson.append(QJsonObject {{QStringLiteral("key"), item.key},
@@ -134,8 +140,18 @@ int FeetechCommand::loadCalibration(const QString &what, const QStringList &oper
         }
         QJsonObject report {{QStringLiteral("name"), motor.name},
                             {QStringLiteral("id"), motor.id},
+                            {QStringLiteral("drive_mode"), motor.driveMode},
                             {QStringLiteral("changes"), changesJson}};
         const QString joint = Tr::tr("%1 (servo %2)").arg(motor.name).arg(motor.id);
+        if (motor.driveMode != 0) {
+            const QString kept = Tr::tr("drive_mode %1 is LeRobot's software setting (the "
+                                        "direction inverted), held by no register: it is kept "
+                                        "in the file only")
+                                     .arg(motor.driveMode);
+            report.insert(QStringLiteral("drive_mode_note"), kept);
+            if (!m_output.json)
+                m_output.out << Tr::tr("%1: note: %2").arg(joint, kept) << '\n';
+        }
         // A new offset under torque would move the horn to the old goal in new coordinates.
         const bool torqueOn = current->value(QStringLiteral("torque_enable")) != 0;
         QString line;

@@ -1,6 +1,7 @@
 // Arm calibration: unwrapping the recorded motion and choosing each joint's offset and limits.
 #include "feetech/armcalibration.h"
 
+#include "feetech/lerobotcalibration.h"
 #include "feetech/registertable.h"
 
 #include <QCoreApplication>
@@ -174,10 +175,12 @@ int inCalibratedCoordinates(const JointRecording &joint, const JointCalibration 
 
 QVector<model::WriteItem> calibrationWrites(qint32 offset, qint32 minimumLimit, qint32 maximumLimit)
 {
-    // The offset first: the limits are positions in the coordinates it makes.
-    return {{QString::fromUtf16(kOffsetKey), offset},
-            {QString::fromUtf16(kMinimumLimitKey), minimumLimit},
-            {QString::fromUtf16(kMaximumLimitKey), maximumLimit}};
+    // The offset first: the limits are positions in the coordinates it makes. LeRobot's limit
+    // of 4096 is the register's largest value, 4095: no position reaches either.
+    return {
+        {QString::fromUtf16(kOffsetKey), offset},
+        {QString::fromUtf16(kMinimumLimitKey), minimumLimit},
+        {QString::fromUtf16(kMaximumLimitKey), std::min(maximumLimit, kLeRobotMaximumPosition)}};
 }
 
 QStringList calibrationMismatches(const QVector<model::WriteItem> &items,

@@ -137,7 +137,8 @@ JointCalibration calibrateJoint(const JointRecording &joint, CalibrationOrder or
 int inCalibratedCoordinates(const JointRecording &joint, const JointCalibration &result,
                             int recorded);
 
-// The register writes that give a servo this offset and these limits, in register units.
+// The register writes that give a servo this offset and these limits, in register units (a
+// LeRobot limit of 4096 as 4095, the register's largest value).
 QVector<model::WriteItem> calibrationWrites(qint32 offset, qint32 minimumLimit,
                                             qint32 maximumLimit);
 // What the servo read back differently from `items`, one "key: wrote W, the servo holds R" a

@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
@@ -46,7 +47,7 @@ constexpr Field kFields[] = {
     {kDriveModeKey, 0, 1},
     {kHomingOffsetKey, -kLeRobotMaximumOffset, kLeRobotMaximumOffset},
     {kRangeMinKey, 0, kLeRobotMaximumPosition},
-    {kRangeMaxKey, 0, kLeRobotMaximumPosition},
+    {kRangeMaxKey, 0, kLeRobotLargestLimit},
 };
 
 bool isWhole(const QJsonValue &value)
@@ -184,12 +185,34 @@ std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path,
 bool saveLeRobotCalibration(const QVector<LeRobotMotor> &motors, const QString &path,
                             QString *error)
 {
+    const QByteArray json = leRobotCalibrationToJson(motors);
+    // What is saved can be loaded: a value no file may hold (a limit past 4096 that another
+    // program wrote to a servo) is said instead.
     QString why;
-    if (!util::writeFileAtomically(path, leRobotCalibrationToJson(motors), &why)) {
+    if (!leRobotCalibrationFromJson(json, QDir::toNativeSeparators(path), &why)) {
+        *error = Tr::tr("%1; it was not saved").arg(why);
+        return false;
+    }
+    if (!util::writeFileAtomically(path, json, &why)) {
         *error = util::notSavedError(path, why);
         return false;
     }
     return true;
+}
+
+void keepDriveModes(QVector<LeRobotMotor> &motors, const QString &path)
+{
+    QString ignored;
+    const auto existing =
+        QFileInfo::exists(path) ? loadLeRobotCalibration(path, &ignored) : std::nullopt;
+    if (!existing)
+        return;
+    for (LeRobotMotor &motor : motors) {
+        for (const LeRobotMotor &before : *existing) {
+            if (before.name == motor.name)
+                motor.driveMode = before.driveMode;
+        }
+    }
 }
 
 QString leRobotCalibrationFolder()

@@ -17,7 +17,9 @@ struct LeRobotMotor
 {
     QString name; // "shoulder_pan"
     int id = 1;
-    int driveMode = 0; // LeRobot inverts the direction in software for 1; ServoBench writes 0
+    // LeRobot inverts the direction in software for 1: no register holds it, so it lives in the
+    // file only (ServoBench writes 0 for a new joint and keeps what an existing file says).
+    int driveMode = 0;
     qint32 homingOffset = 0;
     qint32 rangeMin = 0;
     qint32 rangeMax = 4095;
@@ -26,6 +28,9 @@ struct LeRobotMotor
 // The bounds a file's values are checked against: the STS3215's offset register and encoder.
 constexpr qint32 kLeRobotMaximumOffset = 2047;
 constexpr qint32 kLeRobotMaximumPosition = 4095;
+// LeRobot writes a range_max of 4096 (one past the last position) to the servo and its files
+// without complaint; a file may hold it. No position reaches 4095 or 4096: both mean no bound.
+constexpr qint32 kLeRobotLargestLimit = 4096;
 
 // A motor name as LeRobot's robots use them: ASCII letters, digits and _, a letter first
 // ("shoulder_pan").
@@ -41,9 +46,13 @@ QByteArray leRobotCalibrationToJson(const QVector<LeRobotMotor> &motors);
 
 // Reads and checks a file; nothing and *error (naming the file) when it cannot be used.
 std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path, QString *error);
-// Saves atomically; false and *error (naming the file) when it could not.
+// Saves atomically; false and *error (naming the file) when it could not, or when a value is one
+// a file cannot hold (what is saved, loads).
 bool saveLeRobotCalibration(const QVector<LeRobotMotor> &motors, const QString &path,
                             QString *error);
+// drive_mode is LeRobot's software setting, held by no register: a file saved over `path` keeps
+// each joint's drive_mode from the file there, by joint name (nothing when there is none).
+void keepDriveModes(QVector<LeRobotMotor> &motors, const QString &path);
 
 // Where LeRobot keeps calibration files, as it finds it: $HF_LEROBOT_CALIBRATION, else
 // $HF_LEROBOT_HOME/calibration, else $HF_HOME/lerobot/calibration, with HF_HOME defaulting to

@@ -204,6 +204,7 @@ void RequestEngine::send()
     m_bytesHeard = 0;
     m_rawSinceSend = 0;
     m_firstHeardUs = -1;
+    m_firstRawUs = -1;
     m_lastAcceptedUs = -1;
     m_echoConsumed = false;
     m_echoUnconfirmed = false;
@@ -270,10 +271,21 @@ void RequestEngine::armAfterFirstByte()
     if (m_firstByteDeadline || !m_current || !m_current->afterFirstByte
         || m_state != State::AwaitingReply)
         return;
+    // From the first byte beyond the echo: an echo alone is no answer begun. While it is not
+    // known whether the adapter echoes, the first byte may be either: the answer then gets the
+    // echo's wire time on top.
+    qint64 fromUs = m_firstHeardUs;
+    std::chrono::microseconds echoTime {0};
+    if (fromUs < 0 && m_firstRawUs >= 0 && !echoDecided()) {
+        fromUs = m_firstRawUs;
+        echoTime = wireTime(int(m_current->request.size()));
+    }
+    if (fromUs < 0)
+        return;
     m_firstByteDeadline = true;
-    const qint64 elapsed = m_clock.nsecsElapsed() / 1000 - m_firstHeardUs;
+    const qint64 elapsed = m_clock.nsecsElapsed() / 1000 - fromUs;
     const quint64 generation = m_generation;
-    m_replyTimer->start(*m_current->afterFirstByte - std::chrono::microseconds(elapsed),
+    m_replyTimer->start(*m_current->afterFirstByte + echoTime - std::chrono::microseconds(elapsed),
                         [this, generation] { onTimeout(generation); });
 }
 
@@ -285,12 +297,22 @@ void RequestEngine::onReceived(const QByteArray &bytes)
         onInputBetweenRequests(bytes, Tr::tr("received while no request was waiting"));
         return;
     }
-    // The first byte beyond what an echo would account for starts the answer: that is when the
-    // line answered, even if the bytes never make a frame (two servos at once).
+    // The first byte an echo does not account for (one past the request's length, or one that
+    // differs from the request) starts the answer: that is when the line answered, even if the
+    // bytes never make a frame (two servos at once).
+    if (m_firstRawUs < 0)
+        m_firstRawUs = m_clock.nsecsElapsed() / 1000;
+    if (m_firstHeardUs < 0) {
+        const QByteArray &request = m_current->request;
+        bool beyondEcho = !echoExpected();
+        for (qsizetype i = 0; i < bytes.size() && !beyondEcho; ++i) {
+            const qsizetype at = m_rawSinceSend + i;
+            beyondEcho = at >= request.size() || bytes.at(i) != request.at(at);
+        }
+        if (beyondEcho)
+            m_firstHeardUs = m_clock.nsecsElapsed() / 1000;
+    }
     m_rawSinceSend += int(bytes.size());
-    const int echoBudget = echoExpected() ? int(m_current->request.size()) : 0;
-    if (m_rawSinceSend > echoBudget && m_firstHeardUs < 0)
-        m_firstHeardUs = m_clock.nsecsElapsed() / 1000;
     m_framer.append(bytes);
     while (auto item = m_framer.next()) {
         switch (item->kind) {

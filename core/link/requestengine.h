@@ -237,6 +237,7 @@ private:
     QByteArray m_lastRequest; // its echo may come after its exchange has ended
     qint64 m_writtenAtUs = 0; // when the whole request had left
     qint64 m_firstHeardUs = -1; // when the first byte other than the echo came
+    qint64 m_firstRawUs = -1; // when the first byte of any kind came, the echo included
     qint64 m_lastAcceptedUs = -1; // when the last answer accepted was complete
     int m_bytesHeard = 0;
     int m_rawSinceSend = 0; // bytes of any kind since the request went out

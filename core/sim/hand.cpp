@@ -1,4 +1,5 @@
-// The simulator's hand: turns and sweeps of horns whose torque is off, in present positions.
+// The simulator's hand: turns and sweeps of horns whose torque is off, asked for in present
+// positions, carried out on the horns.
 #include "sim/hand.h"
 
 #include "sim/virtualfeetechbus.h"
@@ -80,11 +81,15 @@ bool Hand::holdsTorque(int index, QString *error) const
     return true;
 }
 
-void Hand::place(int index, double position)
+double Hand::hornAngle(int index, double position) const
 {
-    VirtualFeetechServo &servo = m_bus.servo(index);
-    const double offset = fullCircle(servo) ? servo.value(u"position_offset") : 0.0;
-    servo.setPhysicalPosition(position + offset);
+    const VirtualFeetechServo &servo = m_bus.servo(index);
+    return position + (fullCircle(servo) ? servo.value(u"position_offset") : 0.0);
+}
+
+void Hand::place(int index, double horn)
+{
+    m_bus.servo(index).setPhysicalPosition(horn);
 }
 
 bool Hand::turn(quint8 id, int position, QString *error)
@@ -99,7 +104,7 @@ bool Hand::turnServo(int index, int position, QString *error)
         return false;
     // A turn by hand ends a sweep of the same joint: one hand, one gesture.
     letGo(index);
-    place(index, position);
+    place(index, hornAngle(index, position));
     return true;
 }
 
@@ -133,8 +138,11 @@ bool Hand::sweepServo(int index, int from, int to, double seconds, int cycles, W
         end += way == Way::Up ? ServoMotion::kFullCircleSteps : -ServoMotion::kFullCircleSteps;
     }
     letGo(index);
-    m_sweeps.push_back(Sweep {index, double(from), end, seconds * 1e6, cycles, m_bus.nowUs()});
-    place(index, from);
+    // The hand holds the horn: from now on it moves between these angles, whatever the offset
+    // (and so the readings) become.
+    m_sweeps.push_back(Sweep {index, hornAngle(index, from), hornAngle(index, end), seconds * 1e6,
+                              cycles, m_bus.nowUs()});
+    place(index, m_sweeps.back().from);
     return true;
 }
 

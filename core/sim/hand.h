@@ -27,9 +27,11 @@ public:
     Hand(const Hand &) = delete;
     Hand &operator=(const Hand &) = delete;
 
-    // Positions are present positions, what the host reads (the horn less the position offset):
-    // 0-4095 on a full-circle servo, 0-1023 on an SCS. A servo with its torque on holds its
-    // position: the hand refuses it. By ID the servo must be the only one at that ID.
+    // Positions are present positions, what the host reads (the horn less the position offset)
+    // when the hand takes hold: 0-4095 on a full-circle servo, 0-1023 on an SCS. The hand then
+    // holds the horn: an offset changed later changes the readings, not where the horn is, as on
+    // a real servo. A servo with its torque on holds its position: the hand refuses it. By ID
+    // the servo must be the only one at that ID.
     bool turn(quint8 id, int position, QString *error = nullptr);
     bool turnServo(int index, int position, QString *error = nullptr);
     // From FROM to TO and back in `seconds`, `cycles` times (0: until stop()); the horn starts
@@ -54,8 +56,10 @@ private:
     struct Sweep
     {
         int index = 0;
+        // Horn angles (present position plus the offset when the sweep began); `to` may lie
+        // beyond 0-4095: the way across the seam.
         double from = 0.0;
-        double to = 0.0; // may lie beyond 0-4095: the way across the seam
+        double to = 0.0;
         double periodUs = 0.0;
         int cycles = 0;
         qint64 startUs = 0;
@@ -64,7 +68,9 @@ private:
     // The servo exists, its torque is off and every position is in its range.
     bool checkServo(int index, std::initializer_list<int> positions, QString *error) const;
     bool holdsTorque(int index, QString *error) const;
-    void place(int index, double position);
+    // The horn's angle for a present position, with the servo's offset now.
+    double hornAngle(int index, double position) const;
+    void place(int index, double horn);
     void letGo(int index);
     QString describe(int index) const;
 

@@ -3054,6 +3054,18 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
         <translation>Kein Servo gewählt: Scannen Sie den Bus und wählen Sie dann ein Servo im Baum; jedes Register seiner Speichertabelle erscheint hier.</translation>
     </message>
+    <message>
+        <source>ID %1 (shared!)</source>
+        <translation>ID %1 (geteilt!)</translation>
+    </message>
+    <message>
+        <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
+        <translation>Zwei oder mehr Servos antworten unter ID %1: Ihre Antworten kommen verstümmelt zurück. Solange die ID geteilt ist, wird nichts an sie geschrieben; schließen Sie die Servos einzeln an und geben Sie jedem seine eigene ID.</translation>
+    </message>
+    <message>
+        <source>It answers with error bits: %1 (the Doctor says why).</source>
+        <translation>Es antwortet mit Fehlerbits: %1 (der Doktor sagt, warum).</translation>
+    </message>
 </context>
 <context>
     <name>GuardSettingsDialog</name>
@@ -3838,6 +3850,10 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>the file is too large for a calibration</source>
         <translation>die Datei ist zu groß für eine Kalibrierung</translation>
+    </message>
+    <message>
+        <source>%1; it was not saved</source>
+        <translation>%1; sie wurde nicht gespeichert</translation>
     </message>
 </context>
 <context>
@@ -6921,6 +6937,13 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>SharedIdCheck</name>
+    <message>
+        <source>Two or more servos answer at ID %1 (their replies come back garbled): nothing is written to it while it is shared. Connect them one at a time and give each its own ID.</source>
+        <translation>Zwei oder mehr Servos antworten unter ID %1 (ihre Antworten kommen verstümmelt zurück): Solange die ID geteilt ist, wird nichts an sie geschrieben. Schließen Sie die Servos einzeln an und geben Sie jedem seine eigene ID.</translation>
+    </message>
+</context>
+<context>
     <name>ShortcutsDialog</name>
     <message>
         <source>Keyboard shortcuts</source>
@@ -7346,8 +7369,16 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Schreibt das Sperrregister (1) und liest es zurück. Sonst ändert sich nichts.</translation>
     </message>
     <message>
-        <source>Servo %1&apos;s EEPROM is unlocked (lock = 0), as a write cut short leaves it: anything written to its settings now stays after a power cut, a stray write included. ServoBench locks it after each of its own writes.</source>
-        <translation>Das EEPROM von Servo %1 ist entsperrt (lock = 0), wie es ein abgebrochener Schreibvorgang hinterlässt: Alles, was jetzt in seine Einstellungen geschrieben wird, bleibt auch nach einem Stromausfall erhalten, auch ein versehentlicher Schreibzugriff. ServoBench sperrt es nach jedem eigenen Schreibvorgang.</translation>
+        <source>Dismiss</source>
+        <translation>Ausblenden</translation>
+    </message>
+    <message>
+        <source>Hides this note for this servo until the next connection; the lock stays open.</source>
+        <translation>Blendet diesen Hinweis für dieses Servo bis zur nächsten Verbindung aus; die Sperre bleibt offen.</translation>
+    </message>
+    <message>
+        <source>Note: servo %1&apos;s EEPROM is unlocked (lock = 0), as some programs (LeRobot among them) leave it: anything written to its settings now stays after a power cut. ServoBench locks it after each of its own writes; Lock EEPROM locks it now.</source>
+        <translation>Hinweis: Das EEPROM von Servo %1 ist entsperrt (lock = 0), wie manche Programme (darunter LeRobot) es hinterlassen: Alles, was jetzt in seine Einstellungen geschrieben wird, bleibt nach einem Stromausfall erhalten. ServoBench sperrt es nach jedem eigenen Schreibvorgang; „EEPROM sperren“ sperrt es jetzt.</translation>
     </message>
 </context>
 <context>
@@ -8680,10 +8711,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>die Kalibrierung von %1 wurde nicht vollständig geladen: siehe oben</translation>
     </message>
     <message>
-        <source>warning: servo %1&apos;s EEPROM is unlocked (lock = 0): a setting written to it now survives a power cut. servoctl locks it again after each of its own EEPROM writes (set, load, set-id...); to lock it now: servoctl feetech lock --id %1</source>
-        <translation>Warnung: Das EEPROM von Servo %1 ist entsperrt (lock = 0): Eine jetzt geschriebene Einstellung übersteht einen Stromausfall. servoctl sperrt es nach jedem eigenen EEPROM-Schreibvorgang wieder (set, load, set-id...); um es jetzt zu sperren: servoctl feetech lock --id %1</translation>
-    </message>
-    <message>
         <source>interrupted: nothing more was sent</source>
         <translation>unterbrochen: nichts mehr gesendet</translation>
     </message>
@@ -8966,6 +8993,22 @@ Exit-Status: 0 erledigt, 1 Geräte- oder Verbindungsfehler, 2 Aufruffehler (nich
         <source>--echo must be auto, on or off</source>
         <translation>--echo muss auto, on oder off sein</translation>
     </message>
+    <message>
+        <source>drive_mode %1 is LeRobot&apos;s software setting (the direction inverted), held by no register: it is kept in the file only</source>
+        <translation>drive_mode %1 ist eine Software-Einstellung von LeRobot (die Richtung umgekehrt), die kein Register hält: Sie wird nur in der Datei geführt</translation>
+    </message>
+    <message>
+        <source>%1: note: %2</source>
+        <translation>%1: Hinweis: %2</translation>
+    </message>
+    <message>
+        <source>note: servo %1&apos;s EEPROM is unlocked (lock = 0), as some programs (LeRobot among them) leave it: a setting written to it now survives a power cut. servoctl locks it again after each of its own EEPROM writes; to lock it now: servoctl feetech lock --id %1</source>
+        <translation>Hinweis: Das EEPROM von Servo %1 ist entsperrt (lock = 0), wie manche Programme (darunter LeRobot) es hinterlassen: Eine jetzt geschriebene Einstellung übersteht einen Stromausfall. servoctl sperrt es nach jedem eigenen EEPROM-Schreibvorgang wieder; um es jetzt zu sperren: servoctl feetech lock --id %1</translation>
+    </message>
+    <message>
+        <source>servo %1 answers with error bits 0x%2 (%3): servoctl doctor says why</source>
+        <translation>Servo %1 antwortet mit Fehlerbits 0x%2 (%3): servoctl doctor sagt, warum</translation>
+    </message>
 </context>
 <context>
     <name>servosim</name>
@@ -9176,74 +9219,6 @@ Exit-Status: 0 erledigt, 1 Geräte- oder Verbindungsfehler, 2 Aufruffehler (nich
         <translation>Servo #%1 hat jetzt ID %2</translation>
     </message>
     <message>
-        <source>usage: servosim ptk --link PATH [--values KEY=V,...] [options]
-       servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [options]
-       servosim feetech --link PATH --robot so101 [--servo ...] [options]
-
-Feetech options:
-  --servo ID:MODEL[@BAUD]  a servo on the bus (BAUD: the family&apos;s default rate)
-  --allow-shared-ids       let two --servo share an ID at one rate (replies collide)
-  --robot NAME             a set-up arm from a built-in template, horns at rest:
-                           so101, so100 (follower arms), so101-leader, so100-leader
-  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
-                           the hand sweeps a joint whose torque is off from FROM to
-                           TO and back in SECONDS, CYCLES times (0 or none: until
-                           released); up or down crosses the 4095/0 seam if needed
-  --state FILE             keep the servos&apos; EEPROM in FILE across runs
-  --command LINE           a standard-input command run before &quot;ready&quot;, e.g.
-                           &quot;break-chain 2&quot;, &quot;supply 12.6&quot;, &quot;block 3&quot; (repeatable)
-
-options:
-  --echo                 send every host byte back first (single-wire adapter)
-  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P (P: 0-1;
-                         lost: a host frame never reaches the servos)
-  --seed N               seed of the fault generator (default 1)
-  --log FILE             log every frame in and out, hex, timestamped
-  --reply-delay-us N     extra delay before every reply
-  --adapter PROFILE      deliver replies as a USB adapter does: ideal (the pty&apos;s own
-                         timing, the default), ftdi (16 ms latency timer), ftdi-1ms,
-                         ch340, ch343, cp2102
-
-Prints &quot;ready PATH&quot; once a client can open PATH; runs until SIGINT or SIGTERM;
-SIGHUP power-cycles the servos. Reads commands on standard input, one a line, and
-answers each with one line, &quot;ok ...&quot; or &quot;error ...&quot; (&quot;help&quot; lists them); the
-end of standard input does not stop it.
-</source>
-        <translation>Aufruf: servosim ptk --link PATH [--values KEY=V,...] [Optionen]
-        servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [Optionen]
-        servosim feetech --link PATH --robot so101 [--servo ...] [Optionen]
-
-Feetech-Optionen:
-  --servo ID:MODEL[@BAUD]  ein Servo am Bus (BAUD: die Standardrate der Familie)
-  --allow-shared-ids       zwei --servo eine ID bei einer Rate teilen lassen (Antworten kollidieren)
-  --robot NAME             ein eingerichteter Arm aus einer eingebauten Vorlage, Servohörner in Ruhe:
-                           so101, so100 (Folgearme), so101-leader, so100-leader
-  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
-                           die Hand schwenkt ein Gelenk mit abgeschaltetem Drehmoment von FROM
-                           nach TO und zurück in SECONDS, CYCLES-mal (0 oder none: bis
-                           losgelassen); up oder down überquert bei Bedarf die Naht 4095/0
-  --state FILE             das EEPROM der Servos über mehrere Läufe in FILE aufbewahren
-  --command LINE           ein Befehl wie auf der Standardeingabe, ausgeführt vor &quot;ready&quot;, z. B.
-                           &quot;break-chain 2&quot;, &quot;supply 12.6&quot;, &quot;block 3&quot; (wiederholbar)
-
-Optionen:
-  --echo                 jedes Host-Byte zuerst zurücksenden (Eindraht-Adapter)
-  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P (P: 0-1;
-                         lost: ein Host-Frame erreicht die Servos nie)
-  --seed N               Startwert des Fehlergenerators (Standard 1)
-  --log FILE             jeden Frame ein und aus protokollieren, hex, mit Zeitstempel
-  --reply-delay-us N     zusätzliche Verzögerung vor jeder Antwort
-  --adapter PROFILE      Antworten wie ein USB-Adapter liefern: ideal (das eigene Timing
-                         des pty, Standard), ftdi (16-ms-Latenz-Timer), ftdi-1ms,
-                         ch340, ch343, cp2102
-
-Gibt &quot;ready PATH&quot; aus, sobald ein Client PATH öffnen kann; läuft bis SIGINT oder SIGTERM;
-SIGHUP schaltet die Servos aus und wieder ein. Liest Befehle von der Standardeingabe,
-einen pro Zeile, und beantwortet jeden mit einer Zeile, &quot;ok ...&quot; oder &quot;error ...&quot; (&quot;help&quot;
-listet sie auf); das Ende der Standardeingabe beendet es nicht.
-</translation>
-    </message>
-    <message>
         <source>--allow-shared-ids is for a Feetech bus</source>
         <translation>--allow-shared-ids gilt nur für einen Feetech-Bus</translation>
     </message>
@@ -9314,6 +9289,76 @@ listet sie auf); das Ende der Standardeingabe beendet es nicht.
     <message>
         <source>--hand for ID %1: %2</source>
         <translation>--hand für ID %1: %2</translation>
+    </message>
+    <message>
+        <source>usage: servosim ptk --link PATH [--values KEY=V,...] [options]
+       servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [options]
+       servosim feetech --link PATH --robot so101 [--servo ...] [options]
+
+Feetech options:
+  --servo ID:MODEL[@BAUD]  a servo on the bus (BAUD: the family&apos;s default rate)
+  --allow-shared-ids       let two --servo share an ID at one rate (replies collide)
+  --robot NAME             a set-up arm from a built-in template, horns at rest:
+                           so101, so100 (follower arms), so101-leader, so100-leader
+  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
+                           the hand sweeps a joint whose torque is off from FROM to
+                           TO and back in SECONDS, CYCLES times (0 or none: until
+                           released); up or down crosses the 4095/0 seam if needed
+  --state FILE             keep the servos&apos; EEPROM in FILE across runs
+  --command LINE           a standard-input command run before &quot;ready&quot;, e.g.
+                           &quot;break-chain 2&quot;, &quot;supply 12.6&quot;, &quot;block 3&quot; (repeatable)
+
+options:
+  --echo                 send every host byte back first (single-wire adapter)
+  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P (P: 0-1;
+                         lost: a host frame never reaches the servos)
+  --seed N               seed of the fault generator (default 1)
+  --log FILE             log every frame in and out, hex, timestamped
+  --reply-delay-us N     extra delay before every reply
+  --adapter PROFILE      deliver replies as a USB adapter does: ideal (the pty&apos;s own
+                         timing, the default), instant (the moment a frame is
+                         complete, in no wire time), ftdi (16 ms latency timer),
+                         ftdi-1ms, ch340, ch343, cp2102
+
+Prints &quot;ready PATH&quot; once a client can open PATH; runs until SIGINT or SIGTERM;
+SIGHUP power-cycles the servos. Reads commands on standard input, one a line, and
+answers each with one line, &quot;ok ...&quot; or &quot;error ...&quot; (&quot;help&quot; lists them); the
+end of standard input does not stop it.
+</source>
+        <translation>Aufruf: servosim ptk --link PATH [--values KEY=V,...] [Optionen]
+        servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [Optionen]
+        servosim feetech --link PATH --robot so101 [--servo ...] [Optionen]
+
+Feetech-Optionen:
+  --servo ID:MODEL[@BAUD]  ein Servo am Bus (BAUD: die Standardrate der Familie)
+  --allow-shared-ids       zwei --servo eine ID bei einer Rate teilen lassen (Antworten kollidieren)
+  --robot NAME             ein eingerichteter Arm aus einer eingebauten Vorlage, Servohörner in Ruhe:
+                           so101, so100 (Folgearme), so101-leader, so100-leader
+  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
+                           die Hand schwenkt ein Gelenk mit abgeschaltetem Drehmoment von FROM
+                           nach TO und zurück in SECONDS, CYCLES-mal (0 oder none: bis
+                           losgelassen); up oder down überquert bei Bedarf die Naht 4095/0
+  --state FILE             das EEPROM der Servos über mehrere Läufe in FILE aufbewahren
+  --command LINE           ein Befehl wie auf der Standardeingabe, ausgeführt vor &quot;ready&quot;, z. B.
+                           &quot;break-chain 2&quot;, &quot;supply 12.6&quot;, &quot;block 3&quot; (wiederholbar)
+
+Optionen:
+  --echo                 jedes Host-Byte zuerst zurücksenden (Eindraht-Adapter)
+  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P (P: 0-1;
+                         lost: ein Host-Frame erreicht die Servos nie)
+  --seed N               Startwert des Fehlergenerators (Standard 1)
+  --log FILE             jeden Frame ein und aus protokollieren, hex, mit Zeitstempel
+  --reply-delay-us N     zusätzliche Verzögerung vor jeder Antwort
+  --adapter PROFILE      Antworten wie ein USB-Adapter liefern: ideal (das eigene Timing
+                         des pty, Standard), instant (sobald ein Frame vollständig ist,
+                         ohne Leitungszeit), ftdi (16-ms-Latenz-Timer), ftdi-1ms,
+                         ch340, ch343, cp2102
+
+Gibt &quot;ready PATH&quot; aus, sobald ein Client PATH öffnen kann; läuft bis SIGINT oder SIGTERM;
+SIGHUP schaltet die Servos aus und wieder ein. Liest Befehle von der Standardeingabe,
+einen pro Zeile, und beantwortet jeden mit einer Zeile, &quot;ok ...&quot; oder &quot;error ...&quot; (&quot;help&quot;
+listet sie auf); das Ende der Standardeingabe beendet es nicht.
+</translation>
     </message>
 </context>
 <context>

@@ -3041,6 +3041,18 @@ An ID in use is refused.</source>
         <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
         <translation>未选择舵机：请扫描总线，然后在列表中选择一个舵机；其内存表的每个寄存器将显示在这里。</translation>
     </message>
+    <message>
+        <source>ID %1 (shared!)</source>
+        <translation>ID %1（共用！）</translation>
+    </message>
+    <message>
+        <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
+        <translation>有两个或更多舵机在 ID %1 应答：它们的应答是乱码。该 ID 被共用期间不会向其写入任何内容；请逐个连接，并为每个舵机分配各自的 ID。</translation>
+    </message>
+    <message>
+        <source>It answers with error bits: %1 (the Doctor says why).</source>
+        <translation>它的应答带有错误位：%1（诊断会说明原因）。</translation>
+    </message>
 </context>
 <context>
     <name>GuardSettingsDialog</name>
@@ -3822,6 +3834,10 @@ An ID in use is refused.</source>
     <message>
         <source>the file is too large for a calibration</source>
         <translation>文件过大，不可能是校准文件</translation>
+    </message>
+    <message>
+        <source>%1; it was not saved</source>
+        <translation>%1；未保存</translation>
     </message>
 </context>
 <context>
@@ -6885,6 +6901,13 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>SharedIdCheck</name>
+    <message>
+        <source>Two or more servos answer at ID %1 (their replies come back garbled): nothing is written to it while it is shared. Connect them one at a time and give each its own ID.</source>
+        <translation>有两个或更多舵机在 ID %1 应答（它们的应答是乱码）：该 ID 被共用期间不会向其写入任何内容。请逐个连接，并为每个舵机分配各自的 ID。</translation>
+    </message>
+</context>
+<context>
     <name>ShortcutsDialog</name>
     <message>
         <source>Keyboard shortcuts</source>
@@ -7310,8 +7333,16 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>写入锁标志寄存器（1）并回读。不会更改其他任何内容。</translation>
     </message>
     <message>
-        <source>Servo %1&apos;s EEPROM is unlocked (lock = 0), as a write cut short leaves it: anything written to its settings now stays after a power cut, a stray write included. ServoBench locks it after each of its own writes.</source>
-        <translation>舵机 %1 的 EEPROM 未上锁（锁标志 = 0），这是写入中断后留下的状态：此时写入其设置的任何内容（包括意外写入）在断电后都会保留。ServoBench 在自身的每次写入后都会将其上锁。</translation>
+        <source>Dismiss</source>
+        <translation>忽略</translation>
+    </message>
+    <message>
+        <source>Hides this note for this servo until the next connection; the lock stays open.</source>
+        <translation>在下次连接之前不再为此舵机显示本提示；锁仍保持打开。</translation>
+    </message>
+    <message>
+        <source>Note: servo %1&apos;s EEPROM is unlocked (lock = 0), as some programs (LeRobot among them) leave it: anything written to its settings now stays after a power cut. ServoBench locks it after each of its own writes; Lock EEPROM locks it now.</source>
+        <translation>提示：舵机 %1 的 EEPROM 未上锁（lock = 0），一些程序（包括 LeRobot）会这样留下它：现在写入其设置的任何内容在断电后都会保留。ServoBench 在自己的每次写入后都会将其上锁；“锁定 EEPROM”可立即上锁。</translation>
     </message>
 </context>
 <context>
@@ -8235,10 +8266,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>%1 所在的文件夹不存在</translation>
     </message>
     <message>
-        <source>warning: servo %1&apos;s EEPROM is unlocked (lock = 0): a setting written to it now survives a power cut. servoctl locks it again after each of its own EEPROM writes (set, load, set-id...); to lock it now: servoctl feetech lock --id %1</source>
-        <translation>警告：舵机 %1 的 EEPROM 未上锁（锁标志 = 0）：此时写入的设置在断电后仍会保留。servoctl 在自身的每次 EEPROM 写入（set、load、set-id...）后都会重新上锁；如需立即上锁：servoctl feetech lock --id %1</translation>
-    </message>
-    <message>
         <source>servo %1 is of an unknown model (%2); nothing is written to it</source>
         <translation>舵机 %1 为未知型号（%2）；不向其写入任何内容</translation>
     </message>
@@ -8922,6 +8949,22 @@ exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
         <source>--echo must be auto, on or off</source>
         <translation>--echo 必须为 auto、on 或 off</translation>
     </message>
+    <message>
+        <source>drive_mode %1 is LeRobot&apos;s software setting (the direction inverted), held by no register: it is kept in the file only</source>
+        <translation>drive_mode %1 是 LeRobot 的软件设置（方向反转），没有寄存器保存它：它只保留在文件中</translation>
+    </message>
+    <message>
+        <source>%1: note: %2</source>
+        <translation>%1：提示：%2</translation>
+    </message>
+    <message>
+        <source>note: servo %1&apos;s EEPROM is unlocked (lock = 0), as some programs (LeRobot among them) leave it: a setting written to it now survives a power cut. servoctl locks it again after each of its own EEPROM writes; to lock it now: servoctl feetech lock --id %1</source>
+        <translation>提示：舵机 %1 的 EEPROM 未上锁（lock = 0），一些程序（包括 LeRobot）会这样留下它：现在写入的设置在断电后仍会保留。servoctl 在自己的每次 EEPROM 写入后都会重新上锁；要立即上锁：servoctl feetech lock --id %1</translation>
+    </message>
+    <message>
+        <source>servo %1 answers with error bits 0x%2 (%3): servoctl doctor says why</source>
+        <translation>舵机 %1 的应答带有错误位 0x%2（%3）：servoctl doctor 会说明原因</translation>
+    </message>
 </context>
 <context>
     <name>servosim</name>
@@ -9090,74 +9133,6 @@ exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
         <translation>舵机 #%1 现在的 ID 为 %2</translation>
     </message>
     <message>
-        <source>usage: servosim ptk --link PATH [--values KEY=V,...] [options]
-       servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [options]
-       servosim feetech --link PATH --robot so101 [--servo ...] [options]
-
-Feetech options:
-  --servo ID:MODEL[@BAUD]  a servo on the bus (BAUD: the family&apos;s default rate)
-  --allow-shared-ids       let two --servo share an ID at one rate (replies collide)
-  --robot NAME             a set-up arm from a built-in template, horns at rest:
-                           so101, so100 (follower arms), so101-leader, so100-leader
-  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
-                           the hand sweeps a joint whose torque is off from FROM to
-                           TO and back in SECONDS, CYCLES times (0 or none: until
-                           released); up or down crosses the 4095/0 seam if needed
-  --state FILE             keep the servos&apos; EEPROM in FILE across runs
-  --command LINE           a standard-input command run before &quot;ready&quot;, e.g.
-                           &quot;break-chain 2&quot;, &quot;supply 12.6&quot;, &quot;block 3&quot; (repeatable)
-
-options:
-  --echo                 send every host byte back first (single-wire adapter)
-  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P (P: 0-1;
-                         lost: a host frame never reaches the servos)
-  --seed N               seed of the fault generator (default 1)
-  --log FILE             log every frame in and out, hex, timestamped
-  --reply-delay-us N     extra delay before every reply
-  --adapter PROFILE      deliver replies as a USB adapter does: ideal (the pty&apos;s own
-                         timing, the default), ftdi (16 ms latency timer), ftdi-1ms,
-                         ch340, ch343, cp2102
-
-Prints &quot;ready PATH&quot; once a client can open PATH; runs until SIGINT or SIGTERM;
-SIGHUP power-cycles the servos. Reads commands on standard input, one a line, and
-answers each with one line, &quot;ok ...&quot; or &quot;error ...&quot; (&quot;help&quot; lists them); the
-end of standard input does not stop it.
-</source>
-        <translation>用法： servosim ptk --link PATH [--values KEY=V,...] [options]
-       servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [options]
-       servosim feetech --link PATH --robot so101 [--servo ...] [options]
-
-Feetech 选项：
-  --servo ID:MODEL[@BAUD]  总线上的一个舵机（BAUD：默认为该系列的默认波特率）
-  --allow-shared-ids       允许两个 --servo 在同一波特率下共用一个 ID（应答会冲突）
-  --robot NAME             按内置模板设置好的机械臂，舵盘处于静止位置：
-                           so101、so100（从臂）、so101-leader、so100-leader
-  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
-                           手在 SECONDS 秒内将一个扭矩关闭的关节从 FROM 扫动到
-                           TO 再返回，共 CYCLES 次（0 或 none：直到
-                           松开）；up 或 down 在需要时跨越 4095/0 接缝
-  --state FILE             在多次运行之间将舵机的 EEPROM 保存在 FILE 中
-  --command LINE           在 &quot;ready&quot; 之前运行的一条标准输入命令，例如
-                           &quot;break-chain 2&quot;、&quot;supply 12.6&quot;、&quot;block 3&quot;（可重复指定）
-
-选项：
-  --echo                 先将主机发送的每个字节回送（单线适配器）
-  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P（P：0-1；
-                         lost：主机发出的帧从未到达舵机）
-  --seed N               故障生成器的种子（默认 1）
-  --log FILE             以十六进制记录每个收发的帧，带时间戳
-  --reply-delay-us N     每次应答前的额外延时
-  --adapter PROFILE      像 USB 适配器那样传送应答：ideal（pty 自身的
-                         时序，默认值）、ftdi（16 ms 延迟定时器）、ftdi-1ms、
-                         ch340、ch343、cp2102
-
-当客户端可以打开 PATH 时输出 &quot;ready PATH&quot;；一直运行到收到 SIGINT 或 SIGTERM；
-SIGHUP 会使舵机断电重启。从标准输入读取命令，每行一条，并
-对每条命令回复一行 &quot;ok ...&quot; 或 &quot;error ...&quot;（&quot;help&quot; 会列出所有命令）；
-标准输入结束并不会使其停止。
-</translation>
-    </message>
-    <message>
         <source>name a protocol: ptk or feetech</source>
         <translation>请指定协议：ptk 或 feetech</translation>
     </message>
@@ -9268,6 +9243,76 @@ SIGHUP 会使舵机断电重启。从标准输入读取命令，每行一条，�
     <message>
         <source>--hand for ID %1: %2</source>
         <translation>ID %1 的 --hand：%2</translation>
+    </message>
+    <message>
+        <source>usage: servosim ptk --link PATH [--values KEY=V,...] [options]
+       servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [options]
+       servosim feetech --link PATH --robot so101 [--servo ...] [options]
+
+Feetech options:
+  --servo ID:MODEL[@BAUD]  a servo on the bus (BAUD: the family&apos;s default rate)
+  --allow-shared-ids       let two --servo share an ID at one rate (replies collide)
+  --robot NAME             a set-up arm from a built-in template, horns at rest:
+                           so101, so100 (follower arms), so101-leader, so100-leader
+  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
+                           the hand sweeps a joint whose torque is off from FROM to
+                           TO and back in SECONDS, CYCLES times (0 or none: until
+                           released); up or down crosses the 4095/0 seam if needed
+  --state FILE             keep the servos&apos; EEPROM in FILE across runs
+  --command LINE           a standard-input command run before &quot;ready&quot;, e.g.
+                           &quot;break-chain 2&quot;, &quot;supply 12.6&quot;, &quot;block 3&quot; (repeatable)
+
+options:
+  --echo                 send every host byte back first (single-wire adapter)
+  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P (P: 0-1;
+                         lost: a host frame never reaches the servos)
+  --seed N               seed of the fault generator (default 1)
+  --log FILE             log every frame in and out, hex, timestamped
+  --reply-delay-us N     extra delay before every reply
+  --adapter PROFILE      deliver replies as a USB adapter does: ideal (the pty&apos;s own
+                         timing, the default), instant (the moment a frame is
+                         complete, in no wire time), ftdi (16 ms latency timer),
+                         ftdi-1ms, ch340, ch343, cp2102
+
+Prints &quot;ready PATH&quot; once a client can open PATH; runs until SIGINT or SIGTERM;
+SIGHUP power-cycles the servos. Reads commands on standard input, one a line, and
+answers each with one line, &quot;ok ...&quot; or &quot;error ...&quot; (&quot;help&quot; lists them); the
+end of standard input does not stop it.
+</source>
+        <translation>用法： servosim ptk --link PATH [--values KEY=V,...] [options]
+       servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] [--state FILE] [options]
+       servosim feetech --link PATH --robot so101 [--servo ...] [options]
+
+Feetech 选项：
+  --servo ID:MODEL[@BAUD]  总线上的一个舵机（BAUD：默认为该系列的默认波特率）
+  --allow-shared-ids       允许两个 --servo 在同一波特率下共用一个 ID（应答会冲突）
+  --robot NAME             按内置模板设置好的机械臂，舵盘处于静止位置：
+                           so101、so100（从臂）、so101-leader、so100-leader
+  --hand ID:FROM:TO:SECONDS[:CYCLES][:up|down]
+                           手在 SECONDS 秒内将一个扭矩关闭的关节从 FROM 扫动到
+                           TO 再返回，共 CYCLES 次（0 或 none：直到
+                           松开）；up 或 down 在需要时跨越 4095/0 接缝
+  --state FILE             在多次运行之间将舵机的 EEPROM 保存在 FILE 中
+  --command LINE           在 &quot;ready&quot; 之前运行的一条标准输入命令，例如
+                           &quot;break-chain 2&quot;、&quot;supply 12.6&quot;、&quot;block 3&quot;（可重复指定）
+
+选项：
+  --echo                 先将主机发送的每个字节回送（单线适配器）
+  --faults SPEC          drop=P,corrupt=P,truncate=P,noise=P,delay=MS,lost=P（P：0-1；
+                         lost：主机发出的帧从未到达舵机）
+  --seed N               故障生成器的种子（默认 1）
+  --log FILE             以十六进制记录每个收发的帧，带时间戳
+  --reply-delay-us N     每次应答前的额外延时
+  --adapter PROFILE      像 USB 适配器那样传送应答：ideal（pty 自身的
+                         时序，默认值）、instant（帧一完整就应答，
+                         不计线路时间）、ftdi（16 ms 延迟定时器）、ftdi-1ms、
+                         ch340、ch343、cp2102
+
+当客户端可以打开 PATH 时输出 &quot;ready PATH&quot;；一直运行到收到 SIGINT 或 SIGTERM；
+SIGHUP 会使舵机断电重启。从标准输入读取命令，每行一条，并
+对每条命令回复一行 &quot;ok ...&quot; 或 &quot;error ...&quot;（&quot;help&quot; 会列出所有命令）；
+标准输入结束并不会使其停止。
+</translation>
     </message>
 </context>
 <context>

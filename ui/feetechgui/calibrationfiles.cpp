@@ -84,6 +84,7 @@ CalibrationSaver::CalibrationSaver(feetech::BusClient *client, QObject *parent)
             }
             motors.append(motor);
         }
+        feetech::keepDriveModes(motors, m_path);
         QString error;
         if (!feetech::saveLeRobotCalibration(motors, m_path, &error)) {
             emit finished(false, error);

@@ -382,11 +382,12 @@ QVector<feetech::LeRobotMotor> CalibrationWizard::writtenMotors() const
 
 bool CalibrationWizard::saveLeRobotFile(const QString &path, QString *error) const
 {
-    const QVector<feetech::LeRobotMotor> motors = writtenMotors();
+    QVector<feetech::LeRobotMotor> motors = writtenMotors();
     if (motors.isEmpty()) {
         *error = tr("No joint was written: there is nothing to save.");
         return false;
     }
+    feetech::keepDriveModes(motors, path);
     return feetech::saveLeRobotCalibration(motors, path, error);
 }
 

@@ -28,6 +28,21 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
            "changes."),
         this);
     row->addWidget(m_lock);
+    m_dismiss = widgethelpers::actionButton(
+        tr("Dismiss"), "dismissUnlockedButton",
+        tr("Hides this note for this servo until the next connection; the lock stays open."), this);
+    row->addWidget(m_dismiss);
+    connect(m_dismiss, &QPushButton::clicked, this, [this] {
+        if (m_index >= 0 && m_index < m_client->servoCount()) {
+            const feetech::ServoInfo &info = m_client->servo(m_index).info;
+            m_dismissed.insert({info.id, info.baud});
+        }
+        refresh();
+    });
+    connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
+        if (!m_client->isConnected())
+            m_dismissed.clear();
+    });
     connect(m_lock, &QPushButton::clicked, this, [this] {
         QString error;
         if (m_index >= 0 && !m_client->lockEeprom(m_index, &error))
@@ -56,15 +71,18 @@ void UnlockedNotice::refresh()
 {
     const bool unlocked =
         m_index >= 0 && m_index < m_client->servoCount() && m_client->eepromUnlocked(m_index);
-    if (unlocked) {
-        m_text->setText(tr("Servo %1's EEPROM is unlocked (lock = 0), as a write cut short "
-                           "leaves it: anything written to its settings now stays after a power "
-                           "cut, a stray write included. ServoBench locks it after each of its own "
-                           "writes.")
+    const bool noted = unlocked
+        && !m_dismissed.contains(
+            {m_client->servo(m_index).info.id, m_client->servo(m_index).info.baud});
+    if (noted) {
+        m_text->setText(tr("Note: servo %1's EEPROM is unlocked (lock = 0), as some programs "
+                           "(LeRobot among them) leave it: anything written to its settings now "
+                           "stays after a power cut. ServoBench locks it after each of its own "
+                           "writes; Lock EEPROM locks it now.")
                             .arg(m_client->servo(m_index).info.id));
         QPalette tinted = m_text->palette();
-        tinted.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Warning, tinted));
+        tinted.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Accent, tinted));
         m_text->setPalette(tinted);
     }
-    setVisible(unlocked);
+    setVisible(noted);
 }

@@ -2,6 +2,9 @@
 #pragma once
 
 #include <QFrame>
+#include <QSet>
+
+#include <utility>
 
 class QLabel;
 class QPushButton;
@@ -10,9 +13,10 @@ namespace feetech {
 class BusClient;
 }
 
-// A servo whose lock is open (a write cut short by a power cut or an unplugged cable, another
-// tool) keeps whatever anything writes to its EEPROM. The bar says so as soon as a read shows
-// it, and Lock closes it and reads it back; nothing is written until the user asks.
+// A servo whose lock is open (another program such as LeRobot leaves it so, as does a write cut
+// short) keeps whatever anything writes to its EEPROM. The bar says so, as a note, as soon as a
+// read shows it; Lock closes it and reads it back, Dismiss hides the note for that servo until
+// the next connection. Nothing is written until the user asks.
 class UnlockedNotice : public QFrame
 {
     Q_OBJECT
@@ -34,4 +38,6 @@ private:
     int m_index = -1;
     QLabel *m_text = nullptr;
     QPushButton *m_lock = nullptr;
+    QPushButton *m_dismiss = nullptr;
+    QSet<std::pair<quint8, qint32>> m_dismissed; // servos (ID, rate) noted this connection
 };
