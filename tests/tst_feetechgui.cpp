@@ -83,6 +83,42 @@ private slots:
             !m_window->findChild<QPushButton *>(QStringLiteral("calibrateButton"))->isEnabled());
     }
 
+    void aSharedIdIsMarkedInTheTreeAndNothingIsWrittenThere()
+    {
+        // Two servos answer at ID 4: the tree says so and no write reaches that ID.
+        m_window.reset();
+        auto options = busOptions({{1, QStringLiteral("STS3215"), 1000000},
+                                   {4, QStringLiteral("STS3215"), 1000000},
+                                   {4, QStringLiteral("STS3215"), 1000000}});
+        options.allowSharedIds = true;
+        QString error;
+        QVERIFY2(startSimulator(options, &error), qPrintable(error));
+        m_window = std::make_unique<MainWindow>();
+        m_window->show();
+        m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
+        m_window->connectToPort(m_simulator->linkPath());
+        QTRY_VERIFY(client()->isConnected());
+        feetech::ScanOptions scan;
+        scan.lastId = 10;
+        QSignalSpy finished(client(), &feetech::BusClient::scanFinished);
+        workspace()->startScan(scan);
+        QVERIFY(finished.wait(20000));
+        QCOMPARE(client()->servoCount(), 2);
+        QTreeWidgetItem *baud = workspace()->servoTree()->topLevelItem(0)->child(0);
+        QCOMPARE(baud->child(0)->text(0), QStringLiteral("ID 1"));
+        QCOMPARE(baud->child(1)->text(0), QStringLiteral("ID 4 (shared!)"));
+        QVERIFY2(baud->child(1)->toolTip(0).contains(QLatin1String("Nothing is written")),
+                 qPrintable(baud->child(1)->toolTip(0)));
+        const int shared = client()->indexOf(4, 1000000);
+        QString refusal;
+        QVERIFY(!client()->writeValues(shared, {{QStringLiteral("max_temperature"), 70}},
+                                       &refusal));
+        QVERIFY2(refusal.contains(QLatin1String("ID 4")), qPrintable(refusal));
+        QVERIFY(!client()->changeId(shared, 7, &refusal));
+        QVERIFY(testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write)
+                    .isEmpty());
+    }
+
     void escapeSwitchesEveryServosTorqueOffFromAnyTab()
     {
         connectAndScan();

@@ -345,6 +345,61 @@ private slots:
         QCOMPARE(requests->counters().timeouts, 0);
     }
 
+    void anAnswerWithTheRequestsVeryBytesIsTakenOnceTheEchoIsAccountedFor_data()
+    {
+        QTest::addColumn<EchoMode>("mode");
+        QTest::addColumn<bool>("adapterEchoes");
+        QTest::newRow("off, plain adapter") << EchoMode::Off << false;
+        QTest::newRow("on, echoing adapter") << EchoMode::On << true;
+    }
+
+    void anAnswerWithTheRequestsVeryBytesIsTakenOnceTheEchoIsAccountedFor()
+    {
+        // A Feetech servo with the voltage bit answers a PING with the PING itself.
+        QFETCH(EchoMode, mode);
+        QFETCH(bool, adapterEchoes);
+        ScriptedTransport transport;
+        transport.echo = adapterEchoes;
+        const QByteArray request = ptk::encodeQuery(0x38);
+        transport.answers = {request};
+        auto requests = engine(transport);
+        requests->setEchoMode(mode);
+        TransactionResult result = unfinished();
+        Transaction transaction = query(0x38, Transaction::Priority::Command, nullptr, &result);
+        transaction.acceptsReply = [request](const QByteArray &frame) { return frame == request; };
+        transaction.answerMayEqualRequest = true;
+        requests->submit(std::move(transaction));
+        QTRY_COMPARE(result.failure, Failure::None);
+        QCOMPARE(result.reply, request);
+        QCOMPARE(result.attempts, 1);
+    }
+
+    void whileTheEchoIsUndecidedALoneCopyOfTheRequestIsReportedAsSuch()
+    {
+        // Echo or answer: the engine cannot tell, says so, and decides nothing.
+        ScriptedTransport transport;
+        const QByteArray request = ptk::encodeQuery(0x38);
+        transport.answers = {request};
+        auto requests = engine(transport);
+        TransactionResult result = unfinished();
+        Transaction transaction = query(0x38, Transaction::Priority::Command, nullptr, &result);
+        transaction.acceptsReply = [request](const QByteArray &frame) { return frame == request; };
+        transaction.answerMayEqualRequest = true;
+        transaction.retryCount = 0;
+        requests->submit(std::move(transaction));
+        QTRY_COMPARE(result.failure, Failure::Timeout);
+        QVERIFY(result.onlyOwnFrame);
+        QVERIFY(!requests->echoDecided());
+        // A request whose answer cannot equal it decides: an answer and no echo.
+        TransactionResult next = unfinished();
+        // The first is taken for the late answer the timed-out request may still owe.
+        transport.answers = {reply(4), reply(4)};
+        requests->submit(query(0x3D, Transaction::Priority::Command, nullptr, &next));
+        QTRY_VERIFY(next.ok());
+        QVERIFY(requests->echoDecided());
+        QVERIFY(!requests->echoDetected());
+    }
+
     void aWriteThatExpectsNoReplyCompletesAfterItHasLeft()
     {
         ScriptedTransport transport;

@@ -150,12 +150,13 @@ QString BusClient::writeBlocker(int index) const
         return Tr::tr("The bus is not connected.");
     if (index < 0 || index >= servoCount())
         return Tr::tr("No servo is selected.");
-    if (isBusy())
-        return Tr::tr("Another operation is still running.");
-    if (!servo(index).info.hasTable())
-        return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+    // What stays true first: a shared ID or an unknown model is no reason to wait.
     if (servo(index).info.sharedId)
         return sharedIdRefusal(servo(index).info.id);
+    if (!servo(index).info.hasTable())
+        return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+    if (isBusy())
+        return Tr::tr("Another operation is still running.");
     return {};
 }
 
