@@ -8,6 +8,7 @@
 #include "common/widgethelpers.h"
 #include "feetech/busclient.h"
 #include "feetech/servoparameters.h"
+#include "feetech/sharedidcheck.h"
 #include "feetechgui/controlpage.h"
 #include "feetechgui/healthpage.h"
 #include "feetechgui/jointtable.h"
@@ -363,9 +364,11 @@ void FeetechWorkspace::selectServo(quint8 id, qint32 baud)
 
 void FeetechWorkspace::readIfNew()
 {
-    // Once, when a servo is chosen: a servo that cannot be read must not be asked forever.
+    // Once, when a servo is chosen: a servo that cannot be read must not be asked forever, and
+    // a shared ID, whose answers collide, is not asked at all (Read still asks).
     const int index = currentIndex();
-    if (index >= 0 && !m_client->servo(index).read && !m_client->isBusy())
+    if (index >= 0 && !m_client->servo(index).read && !m_client->servo(index).info.sharedId
+        && !m_client->isBusy())
         m_client->readServo(index);
 }
 
@@ -556,6 +559,8 @@ void FeetechWorkspace::updateHeader()
         text += QStringLiteral("<br>")
             + tr("No register table is known for this model, so nothing is guessed: the Memory "
                  "table shows its raw bytes, read-only.");
+    if (info.sharedId)
+        text += QStringLiteral("<br>") + feetech::sharedIdRefusal(info.id).toHtmlEscaped();
     m_header->setText(text);
 }
 
@@ -564,7 +569,9 @@ void FeetechWorkspace::updateActions()
     const int index = currentIndex();
     const bool connected = m_client->isConnected();
     const bool idle = !m_client->isBusy();
-    const bool known = index >= 0 && m_client->servo(index).info.hasTable();
+    // Two servos at one ID would both take a write: nothing is sent to a shared ID.
+    const bool shared = index >= 0 && m_client->servo(index).info.sharedId;
+    const bool known = index >= 0 && m_client->servo(index).info.hasTable() && !shared;
     const bool ready = connected && idle && index >= 0;
     m_scan->setEnabled(connected && idle);
     m_allTorqueOff->setEnabled(connected); // never held back by work in progress
@@ -578,8 +585,8 @@ void FeetechWorkspace::updateActions()
                                 ? tr("Make the horn's present position the middle (2048)")
                                 : tr("SCS servos have no offset register: not available"));
     m_factoryReset->setEnabled(ready && known);
-    m_reboot->setEnabled(ready);
-    m_clearStatus->setEnabled(ready);
+    m_reboot->setEnabled(ready && !shared);
+    m_clearStatus->setEnabled(ready && !shared);
     m_settings->setLinkReady(ready && known);
     model::ParameterModel *parameters = m_client->parameters(index);
     const bool edits = parameters && parameters->hasEdits();
