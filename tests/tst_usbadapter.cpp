@@ -121,13 +121,19 @@ private slots:
             sim::parseSimulatorArguments(base + QStringList {QStringLiteral("ftdi")}, &error);
         QVERIFY(ftdi && ftdi->adapter);
         QCOMPARE(ftdi->adapter->latencyTimerUs, 16000);
+        QVERIFY(!ftdi->instant);
         const auto ideal =
             sim::parseSimulatorArguments(base + QStringList {QStringLiteral("ideal")}, &error);
-        QVERIFY(ideal && !ideal->adapter);
+        QVERIFY(ideal && !ideal->adapter && !ideal->instant);
+        // A device that answers the moment a frame is complete: no adapter, no wire time.
+        const auto instant =
+            sim::parseSimulatorArguments(base + QStringList {QStringLiteral("instant")}, &error);
+        QVERIFY(instant && !instant->adapter && instant->instant);
         QVERIFY(
             !sim::parseSimulatorArguments(base + QStringList {QStringLiteral("pl2303")}, &error));
         QVERIFY2(error.contains(QStringLiteral("unknown adapter \"pl2303\"")), qPrintable(error));
         QVERIFY2(error.contains(QStringLiteral("ftdi-1ms")), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("instant")), qPrintable(error));
         QVERIFY(!sim::parseSimulatorArguments(base, &error));
         QCOMPARE(sim::adapterProfileNames().first(), QStringLiteral("ideal"));
         for (const QString &name : sim::adapterProfileNames().mid(1))
