@@ -56,7 +56,11 @@ private slots:
         auto opts = options(QStringLiteral("read%1").arg(echo), echo);
         opts.ptkValues = QStringLiteral("gain=20,min_pulse_us=900,soft_start=1");
         QVERIFY2(simulator.start(opts, &error), qPrintable(error));
-        ptk::Client client(testsupport::ptkTestTiming());
+        // No timeout is the point here: the wait is long enough that a machine busy with other
+        // tests (the simulator shares it) never stretches an answer past it.
+        auto timing = testsupport::ptkTestTiming();
+        timing.engine.replyTimeout = std::chrono::milliseconds(250);
+        ptk::Client client(timing);
         client.connectTo(simulator.linkPath());
         QTRY_COMPARE(client.status().state, ConnectionState::Connected);
         const ptk::ParameterSet expected = testsupport::ptkServoValues(simulator);

@@ -216,13 +216,14 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
         const quint8 id = *request.replyId;
         const std::optional<quint8> alternate = request.alternateReplyId;
         const int size = request.replyDataSize;
-        // An answer whose error byte equals the instruction and whose data equals the request's
-        // parameters has the request's very bytes: a PING, RESET, REBOOT or calibration answered
-        // with those error bits (a PING with the voltage bit: FF FF id 02 01 ..), or a READ of
-        // two bytes that happen to match. The engine accounts for the echo and hands such a
-        // frame here only when it is no echo.
+        // An answer whose error byte equals the instruction has the request's very bytes when
+        // neither carries data: a PING, RESET, REBOOT or calibration answered with those error
+        // bits (a PING with the voltage bit: FF FF id 02 01 ..). The engine accounts for the
+        // echo and hands such a frame here only when it is no echo. (A READ of two bytes whose
+        // data happen to equal its address and length could too; taking its echo for an answer
+        // would be worse than missing that one.)
         const auto asStatus = decodePacket(sent);
-        transaction.answerMayEqualRequest = asStatus && asStatus->parameters.size() == size
+        transaction.answerMayEqualRequest = asStatus && asStatus->parameters.isEmpty() && size == 0
             && (asStatus->id == id || (alternate && asStatus->id == *alternate));
         const auto other = request.otherFrame;
         transaction.acceptsReply = [id, alternate, size, other, accepted](const QByteArray &frame) {
