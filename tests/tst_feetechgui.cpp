@@ -111,12 +111,12 @@ private slots:
                  qPrintable(baud->child(1)->toolTip(0)));
         const int shared = client()->indexOf(4, 1000000);
         QString refusal;
-        QVERIFY(!client()->writeValues(shared, {{QStringLiteral("max_temperature"), 70}},
-                                       &refusal));
+        QVERIFY(
+            !client()->writeValues(shared, {{QStringLiteral("max_temperature"), 70}}, &refusal));
         QVERIFY2(refusal.contains(QLatin1String("ID 4")), qPrintable(refusal));
         QVERIFY(!client()->changeId(shared, 7, &refusal));
-        QVERIFY(testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write)
-                    .isEmpty());
+        QVERIFY(
+            testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write).isEmpty());
     }
 
     void escapeSwitchesEveryServosTorqueOffFromAnyTab()

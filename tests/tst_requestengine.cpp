@@ -366,7 +366,9 @@ private slots:
         requests->setEchoMode(mode);
         TransactionResult result = unfinished();
         Transaction transaction = query(0x38, Transaction::Priority::Command, nullptr, &result);
-        transaction.acceptsReply = [request](const QByteArray &frame) { return frame == request; };
+        transaction.acceptsReply = [request](const QByteArray &frame) {
+            return frame == request;
+        };
         transaction.answerMayEqualRequest = true;
         requests->submit(std::move(transaction));
         QTRY_COMPARE(result.failure, Failure::None);
@@ -383,7 +385,9 @@ private slots:
         auto requests = engine(transport);
         TransactionResult result = unfinished();
         Transaction transaction = query(0x38, Transaction::Priority::Command, nullptr, &result);
-        transaction.acceptsReply = [request](const QByteArray &frame) { return frame == request; };
+        transaction.acceptsReply = [request](const QByteArray &frame) {
+            return frame == request;
+        };
         transaction.answerMayEqualRequest = true;
         transaction.retryCount = 0;
         requests->submit(std::move(transaction));
