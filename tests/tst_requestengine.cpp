@@ -224,6 +224,44 @@ private slots:
         QCOMPARE(requests->counters().discardedBytes, 0);
     }
 
+    void aQueryThatFailedAfterTakingALateAnswerStillOwesItsOwn()
+    {
+        // Q1's first try goes unanswered; its late answer lands at once on the retry and is
+        // taken for it; the retry's own answer comes late, just after Q2 went out. It must not
+        // pass for Q2's (PTK replies name no query), nor mislead the engine into treating the
+        // link as one that answers at once.
+        ScriptedTransport transport;
+        transport.answers = {QByteArray(), reply(1), reply(2)};
+        auto requests = engine(transport);
+        seriallink::EngineTiming timing = requests->timing();
+        timing.retryCount = 1;
+        requests->setTiming(timing);
+        TransactionResult first = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &first));
+        QTRY_COMPARE(first.failure, Failure::Timeout);
+        TransactionResult second = unfinished();
+        requests->submit(query(0x3D, Transaction::Priority::Command, nullptr, &second));
+        QTRY_COMPARE(transport.written.size(), 3);
+        QTimer::singleShot(20, Qt::PreciseTimer, &transport,
+                           [&transport] { transport.deliver(reply(3)); });
+        QTRY_COMPARE(second.failure, Failure::None);
+        QCOMPARE(ptk::decodeReply(second.reply)->word0, quint16(3));
+        // And so again later: a query that goes unanswered owes its late answer.
+        timing.retryCount = 0;
+        requests->setTiming(timing);
+        transport.answers = {QByteArray(), reply(4)};
+        TransactionResult third = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &third));
+        QTRY_COMPARE(third.failure, Failure::Timeout);
+        TransactionResult fourth = unfinished();
+        requests->submit(query(0x3D, Transaction::Priority::Command, nullptr, &fourth));
+        QTRY_COMPARE(transport.written.size(), 5);
+        QTimer::singleShot(20, Qt::PreciseTimer, &transport,
+                           [&transport] { transport.deliver(reply(5)); });
+        QTRY_COMPARE(fourth.failure, Failure::None);
+        QCOMPARE(ptk::decodeReply(fourth.reply)->word0, quint16(5));
+    }
+
     void aLinkThatAnswersAtOnceIsHeardAgainAfterAMissedQuery()
     {
         // Once the link has answered at once, a query it missed is not answered late: the

@@ -104,6 +104,11 @@ private slots:
         QCOMPARE(set.exitCode, 1);
         QVERIFY2(set.err.contains(QStringLiteral("nothing is written")), qPrintable(set.err));
         QCOMPARE(writesReceived(), writesBefore);
+        // Both would take a new ID: refused too, as every command that sends to the servo.
+        const auto setId = run(QStringLiteral("set-id --id 4 9"));
+        QCOMPARE(setId.exitCode, 1);
+        QVERIFY2(setId.err.contains(QStringLiteral("nothing is written")), qPrintable(setId.err));
+        QCOMPARE(writesReceived(), writesBefore);
         QVERIFY(run(QStringLiteral("set --id 1 max_temperature=70")).exitCode == 0);
     }
 

@@ -158,6 +158,8 @@ int FeetechCommand::loadCalibration(const QString &what, const QStringList &oper
         if (changes.isEmpty()) {
             report.insert(QStringLiteral("verified"), true);
             line = Tr::tr("%1: already holds the file's values").arg(joint);
+        } else if (sharesItsId(device, servo)) {
+            return ExitDeviceFailure;
         } else if (torqueOn) {
             allDone = false;
             const QString refusal = Tr::tr("torque is on: the new offset would move the horn; "

@@ -64,6 +64,9 @@ private:
     std::optional<Target> identifyKnownServo(const QString &what, const QString &unknownModel);
     // The servo set and load write to.
     std::optional<Target> identifyServoToWrite(const QString &what);
+    // Whether several servos answer at the servo's ID (then said, as the command's failure):
+    // nothing is written to a shared ID.
+    bool sharesItsId(FeetechDevice &device, const ServoInfo &servo);
     int program(Target &target, const QVector<model::WriteItem> &items,
                 const QJsonObject &extra = {});
     // What writing `items` to `servo` and reading them back came to.

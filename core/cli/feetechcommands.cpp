@@ -190,22 +190,27 @@ FeetechCommand::identifyKnownServo(const QString &what, const QString &unknownMo
         fail(unknownModel.arg(target->servo.id).arg(target->servo.model.name));
         return std::nullopt;
     }
-    if (!target)
-        return target;
-    // Two servos at one ID would both take whatever is written, and garble every read-back.
-    const auto shared = target->device->operate(
-        [&target] { target->device->session().checkSharedId(target->servo); });
-    if (!shared || !shared->ok || shared->servo.sharedId) {
-        fail(shared ? shared->message : target->device->error());
-        return std::nullopt;
-    }
     return target;
 }
 
 std::optional<FeetechCommand::Target> FeetechCommand::identifyServoToWrite(const QString &what)
 {
-    return identifyKnownServo(
+    auto target = identifyKnownServo(
         what, Tr::tr("servo %1 is of an unknown model (%2); nothing is written to it"));
+    if (target && sharesItsId(*target->device, target->servo))
+        return std::nullopt;
+    return target;
+}
+
+bool FeetechCommand::sharesItsId(FeetechDevice &device, const ServoInfo &servo)
+{
+    // Two servos at one ID would both take whatever is written, and garble every read-back.
+    const auto shared =
+        device.operate([&device, &servo] { device.session().checkSharedId(servo); });
+    if (shared && shared->ok && !shared->servo.sharedId)
+        return false;
+    fail(shared ? shared->message : device.error());
+    return true;
 }
 
 // Writes `items` (register units), reads them back and compares: exit 0 only when every

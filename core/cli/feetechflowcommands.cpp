@@ -78,6 +78,8 @@ int FeetechCommand::setId(const QString &what, const QStringList &operands)
     auto target = identifyServo(what);
     if (!target)
         return ExitDeviceFailure;
+    if (sharesItsId(*target->device, target->servo))
+        return ExitDeviceFailure;
     if (*newId == target->servo.id)
         return alreadyDone(
             target->servo,
@@ -95,6 +97,8 @@ int FeetechCommand::setBaud(const QString &what, const QStringList &operands)
     const qint32 newBaud = parseBaud(what, operands.first());
     auto target = identifyServo(what);
     if (!target)
+        return ExitDeviceFailure;
+    if (sharesItsId(*target->device, target->servo))
         return ExitDeviceFailure;
     const ServoInfo &servo = target->servo;
     if (newBaud == servo.baud)
@@ -118,6 +122,8 @@ int FeetechCommand::calibrateMiddle(const QString &what, const QStringList &oper
     expectOperands(what, operands, 0, {});
     auto target = identifyServo(what);
     if (!target)
+        return ExitDeviceFailure;
+    if (sharesItsId(*target->device, target->servo))
         return ExitDeviceFailure;
     const feetech::RegisterTable &table = target->servo.table();
     return report(
@@ -152,6 +158,8 @@ int FeetechCommand::factoryReset(const QString &what, const QStringList &operand
                "it is not reset"));
     if (!target)
         return ExitDeviceFailure;
+    if (sharesItsId(*target->device, target->servo))
+        return ExitDeviceFailure;
     const ServoInfo &servo = target->servo;
     QString error;
     // The backup first: without it on disk, nothing is reset.
@@ -182,6 +190,8 @@ int FeetechCommand::reboot(const QString &what, const QStringList &operands)
     auto target = identifyServo(what);
     if (!target)
         return ExitDeviceFailure;
+    if (sharesItsId(*target->device, target->servo))
+        return ExitDeviceFailure;
     return report(*target, [&target] { target->device->session().reboot(target->servo); });
 }
 
@@ -192,6 +202,8 @@ int FeetechCommand::lock(const QString &what, const QStringList &operands)
     auto target = identifyKnownServo(
         what, Tr::tr("servo %1 is of an unknown model (%2): its EEPROM lock is not known"));
     if (!target)
+        return ExitDeviceFailure;
+    if (sharesItsId(*target->device, target->servo))
         return ExitDeviceFailure;
     return report(*target, [&target] { target->device->session().lockEeprom(target->servo); });
 }
@@ -204,6 +216,8 @@ int FeetechCommand::recover(const QString &what, const QStringList &operands)
     auto target = identifyKnownServo(
         what, Tr::tr("servo %1 is of an unknown model (%2): its status bits are not known"));
     if (!target)
+        return ExitDeviceFailure;
+    if (!checkOnly && sharesItsId(*target->device, target->servo))
         return ExitDeviceFailure;
     // Still tripped, the result's message is the power-cycle steps: printed as the failure.
     const quint8 id = target->servo.id;

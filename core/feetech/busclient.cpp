@@ -160,6 +160,16 @@ QString BusClient::writeBlocker(int index) const
     return {};
 }
 
+QString BusClient::commandBlocker(int index) const
+{
+    // An unknown model may be rebooted or cleared; a shared ID is not sent anything.
+    if (index >= 0 && index < servoCount() && servo(index).info.sharedId)
+        return sharedIdRefusal(servo(index).info.id);
+    if (isBusy())
+        return Tr::tr("Another operation is still running.");
+    return {};
+}
+
 void BusClient::onServoFound(const ServoInfo &info)
 {
     auto entry = std::make_unique<Servo>();
@@ -407,7 +417,7 @@ bool BusClient::factoryReset(int index, QString *error)
 
 bool BusClient::reboot(int index, QString *error)
 {
-    if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
+    if (refused(commandBlocker(index), error))
         return false;
     return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.reboot(info); });
@@ -415,7 +425,7 @@ bool BusClient::reboot(int index, QString *error)
 
 bool BusClient::clearStatus(int index, QString *error)
 {
-    if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
+    if (refused(commandBlocker(index), error))
         return false;
     return startOperation(index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.clearStatus(info); });

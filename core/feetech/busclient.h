@@ -62,6 +62,9 @@ public:
 
     // Why changes cannot be made to servo `index` now (empty when they can).
     QString writeBlocker(int index) const;
+    // Why a command that is no register write (reboot, clear status) cannot be sent now, or
+    // nothing.
+    QString commandBlocker(int index) const;
 
     void readServo(int index);
     // Present values and other RAM registers, in the background; skipped while busy.

@@ -258,7 +258,8 @@ void BusExchange::exchange(const Exchange &request, ExchangeDone done)
                         done = std::move(done)](const seriallink::TransactionResult &result) {
         if (!alive || generation != m_link.generation())
             return;
-        if (result.onlyOwnFrame && request.replyId) {
+        if (result.failure == seriallink::Failure::Timeout && result.onlyOwnFrame
+            && request.replyId) {
             settleOwnFrame(request, result, done);
             return;
         }
@@ -277,8 +278,8 @@ void BusExchange::settleOwnFrame(const Exchange &request,
 {
     // Nothing came but the request's own bytes, and whether the adapter echoes is not known
     // yet: the echo, or the answer of a servo whose error bits equal the instruction (a PING
-    // with the voltage bit). A READ of one byte, whose answer cannot equal it, tells: answered,
-    // the servo is there and those bytes were its answer (and the engine now knows the echo).
+    // with the voltage bit). A READ of one byte, whose answer cannot equal it, tells: answered
+    // with no echo before it, the servo is there and those bytes were its answer.
     Exchange decide;
     decide.request = feetech::read(*request.replyId, 0, 1);
     decide.replyId = request.replyId;
@@ -287,9 +288,16 @@ void BusExchange::settleOwnFrame(const Exchange &request,
     decide.silenceExpected = request.silenceExpected;
     decide.retryCount = 0;
     exchange(decide,
-             [request, result, done = std::move(done)](const seriallink::TransactionResult &decided,
-                                                       const std::optional<Packet> &reply) {
-                 if (!reply || decided.failure != seriallink::Failure::None) {
+             [this, request, result, done = std::move(done)](
+                 const seriallink::TransactionResult &decided, const std::optional<Packet> &reply) {
+                 if (decided.failure == seriallink::Failure::LinkDown
+                     || decided.failure == seriallink::Failure::Cancelled) {
+                     done(decided, std::nullopt);
+                     return;
+                 }
+                 // Answered, the servo is there; the READ also showed whether the adapter echoes.
+                 // Only where it does not were those bytes the servo's answer.
+                 if (!reply || m_link.engine().echoExpected()) {
                      done(result, std::nullopt);
                      return;
                  }
@@ -297,6 +305,7 @@ void BusExchange::settleOwnFrame(const Exchange &request,
                  answered.failure = seriallink::Failure::None;
                  answered.reply = request.request;
                  answered.onlyOwnFrame = false;
+                 answered.latency = decided.latency;
                  done(answered, decodePacket(request.request));
              });
 }

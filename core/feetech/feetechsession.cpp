@@ -390,8 +390,11 @@ void Session::checkSharedId(const ServoInfo &servo)
                         result.message = sharedIdRefusal(servo.id);
                     if (verdict == SharedIdVerdict::Failed || verdict == SharedIdVerdict::Silent) {
                         result.ok = false;
-                        result.message = Tr::tr("%1 stopped answering: %2")
-                                             .arg(servoName(servo), failureText(last));
+                        result.message = verdict == SharedIdVerdict::Failed
+                            ? failureText(last)
+                            : Tr::tr("%1 stopped answering: check the power and the cable, "
+                                     "then look again.")
+                                  .arg(servoName(servo));
                     }
                     finishOperation(result);
                 });

@@ -206,6 +206,9 @@ void RequestEngine::send()
     m_firstHeardUs = -1;
     m_firstRawUs = -1;
     m_lastAcceptedUs = -1;
+    // The request before: its echo may still come, behind a USB adapter's packet.
+    m_previousRequest = m_lastRequest;
+    m_previousEchoConsumed = m_echoConsumed;
     m_echoConsumed = false;
     m_echoUnconfirmed = false;
     m_lateFrameThisAttempt = false;
@@ -337,6 +340,13 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 }
                 break;
             }
+            if (item->bytes == m_previousRequest && !m_previousEchoConsumed && echoExpected()) {
+                // The echo of the request before, come late (behind a USB adapter's packet).
+                m_previousEchoConsumed = true;
+                m_counters.echoBytes += item->bytes.size();
+                log(Direction::Echo, item->bytes, {}, Tr::tr("late"));
+                break;
+            }
             const bool tooSoon = cameTooSoon(int(item->bytes.size()));
             // On a link that answers at once every answer comes too soon: this request's
             // answer is not offered to the ended ones first.
@@ -357,13 +367,13 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                            "to an earlier one, discarded"));
                 break;
             }
-            if (tooSoon)
-                m_answersAtOnce = true;
             if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown && !m_sawFrame)
                 m_echoSeen = m_echoUnconfirmed ? Decision::Yes : Decision::No;
             m_sawFrame = true;
             heard(int(item->bytes.size()));
             if (m_current->acceptsReply && m_current->acceptsReply(item->bytes)) {
+                // Taken though it came sooner than the wire allows: the device answers at once.
+                m_answersAtOnce = m_answersAtOnce || tooSoon;
                 m_lastAcceptedUs = m_clock.nsecsElapsed() / 1000;
                 ++m_counters.repliesOk;
                 if (!m_current->logFailuresOnly)
@@ -374,6 +384,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             const auto answer = m_current->collectsReplies ? m_current->collectsReplies(item->bytes)
                                                            : Transaction::Answer::NotMine;
             if (answer != Transaction::Answer::NotMine) {
+                m_answersAtOnce = m_answersAtOnce || tooSoon;
                 m_lastAcceptedUs = m_clock.nsecsElapsed() / 1000;
                 if (m_collected.isEmpty())
                     ++m_counters.repliesOk; // one answered request, however many frames
@@ -447,12 +458,15 @@ void RequestEngine::onTimeout(quint64 generation)
     if (counted)
         ++m_counters.timeouts;
     const bool retrying = m_attempts <= retryCount() && m_transport.isOpen();
-    // Its answer may still come, if nothing came: bytes heard (garbled, or a frame taken for an
-    // earlier request's late answer) were the device answering. A request that recognises its
-    // late answers owes none once it has ended; one that expects silence (a scan, a broadcast)
-    // is owed nothing.
-    if (counted && m_firstHeardUs < 0 && !m_lateFrameThisAttempt
-        && (retrying || !m_current->lateAnswer))
+    // Its answer may still come if nothing came (garbled bytes were the device answering), and
+    // if a frame was taken for an earlier request's late answer, which may have been this
+    // one's, from a device that answers at once: its retry, the same request, may take it, the
+    // next request must not. A request that recognises its late answers owes none once it has
+    // ended; one that expects silence (a scan, a broadcast) is owed nothing, nor one that never
+    // left (the port stalled).
+    const bool silent = m_firstHeardUs < 0 && !m_lateFrameThisAttempt;
+    if (counted && m_state == State::AwaitingReply
+        && (retrying ? silent : (silent || m_lateFrameThisAttempt) && !m_current->lateAnswer))
         oweAnswer();
     if (m_timing.settleAfterTimeout)
         m_quietUntilMs = m_clock.elapsed()

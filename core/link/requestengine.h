@@ -235,6 +235,8 @@ private:
     qint64 m_writtenBytes = 0;
     qint64 m_sentAtUs = 0; // when the request was handed to the port
     QByteArray m_lastRequest; // its echo may come after its exchange has ended
+    QByteArray m_previousRequest; // the one before, whose echo may come during the next
+    bool m_previousEchoConsumed = false;
     qint64 m_writtenAtUs = 0; // when the whole request had left
     qint64 m_firstHeardUs = -1; // when the first byte other than the echo came
     qint64 m_firstRawUs = -1; // when the first byte of any kind came, the echo included

@@ -86,11 +86,14 @@ void RequestEngine::onInputBetweenRequests(const QByteArray &bytes, const QStrin
                 log(Direction::Echo, item->bytes, {}, Tr::tr("late"));
                 continue;
             }
-            if (takeLateAnswer(item->bytes))
+            if (takeLateAnswer(item->bytes)) {
+                m_answersAtOnce = false; // this link does answer late
                 continue;
+            }
             // Whatever comes while nothing waits may be the answer an earlier request is owed.
             answerPaid();
             if (settling) {
+                m_answersAtOnce = false;
                 // The engine holds requests back after a timeout precisely for this answer.
                 noteAnswerTime(std::max(
                     std::chrono::microseconds(0),

@@ -2638,6 +2638,10 @@
         <source>Sent; servo %1 did not answer: %2</source>
         <translation>Gesendet; Servo %1 hat nicht geantwortet: %2</translation>
     </message>
+    <message>
+        <source>%1 stopped answering: check the power and the cable, then look again.</source>
+        <translation>%1 antwortet nicht mehr: Prüfen Sie Stromversorgung und Kabel und suchen Sie dann erneut.</translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>

@@ -2625,6 +2625,10 @@
         <source>Sent; servo %1 did not answer: %2</source>
         <translation>已发送；舵机 %1 无应答：%2</translation>
     </message>
+    <message>
+        <source>%1 stopped answering: check the power and the cable, then look again.</source>
+        <translation>%1 已停止应答：请检查电源和电缆，然后重新查找。</translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>
