@@ -19,12 +19,13 @@ class ScriptedTransport final : public seriallink::Transport
 public:
     bool open = true;
     bool echo = false;
+    qint32 baud = 115200;
     QVector<QByteArray> written;
     QVector<QByteArray> answers; // one per write, in order; empty: silence
     QByteArray pendingInput; // what discardInput() finds
 
     bool isOpen() const override { return open; }
-    qint32 baudRate() const override { return 115200; }
+    qint32 baudRate() const override { return baud; }
     void write(const QByteArray &bytes) override
     {
         written.append(bytes);
@@ -113,6 +114,15 @@ private:
         return result;
     }
 
+    // At 9600 bps a query and its reply take 19.8 ms on the wire: an answer the transport hands
+    // over at once is unmistakably sooner than the wire allows, one 60 ms later is not, however
+    // slow the machine (a sanitizer build) is.
+    std::unique_ptr<RequestEngine> engineAt9600(ScriptedTransport &transport)
+    {
+        transport.baud = 9600;
+        return engine(transport);
+    }
+
 private slots:
     void commandsGoBeforeQueuedPolls()
     {
@@ -184,11 +194,10 @@ private slots:
     void anAnswerSoonerThanTheWireAllowsIsTheLateOneAnEarlierQueryIsOwed()
     {
         // The first query is not answered in time; its late reply lands just after the next
-        // query went out, whose real answer comes once query and answer have crossed the wire
-        // (19 bytes: 1.65 ms).
+        // query went out, whose real answer comes once query and answer have crossed the wire.
         ScriptedTransport transport;
         transport.answers = {QByteArray(), reply(7)};
-        auto requests = engine(transport);
+        auto requests = engineAt9600(transport);
         seriallink::EngineTiming timing = requests->timing();
         timing.retryCount = 0;
         requests->setTiming(timing);
@@ -200,7 +209,7 @@ private slots:
         TransactionResult result = unfinished();
         requests->submit(query(0x3D, Transaction::Priority::Command, nullptr, &result));
         QTRY_COMPARE(transport.written.size(), 2);
-        QTimer::singleShot(20, Qt::PreciseTimer, &transport,
+        QTimer::singleShot(60, Qt::PreciseTimer, &transport,
                            [&transport] { transport.deliver(reply(8)); });
         QTRY_VERIFY(result.ok());
         QCOMPARE(ptk::decodeReply(result.reply)->word0, quint16(8));
@@ -214,7 +223,7 @@ private slots:
         // A virtual port or an emulator answers the moment it has the query.
         ScriptedTransport transport;
         transport.answers = {reply(7)};
-        auto requests = engine(transport);
+        auto requests = engineAt9600(transport);
         TransactionResult result = unfinished();
         requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &result));
         QTRY_VERIFY(result.ok());
@@ -232,31 +241,36 @@ private slots:
         // link as one that answers at once.
         ScriptedTransport transport;
         transport.answers = {QByteArray(), reply(1), reply(2)};
-        auto requests = engine(transport);
+        auto requests = engineAt9600(transport);
         seriallink::EngineTiming timing = requests->timing();
         timing.retryCount = 1;
         requests->setTiming(timing);
         TransactionResult first = unfinished();
         requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &first));
         QTRY_COMPARE(first.failure, Failure::Timeout);
+        timing.replyTimeout = std::chrono::milliseconds(2000); // for the real answer
+        requests->setTiming(timing);
         TransactionResult second = unfinished();
         requests->submit(query(0x3D, Transaction::Priority::Command, nullptr, &second));
         QTRY_COMPARE(transport.written.size(), 3);
-        QTimer::singleShot(20, Qt::PreciseTimer, &transport,
+        QTimer::singleShot(60, Qt::PreciseTimer, &transport,
                            [&transport] { transport.deliver(reply(3)); });
         QTRY_COMPARE(second.failure, Failure::None);
         QCOMPARE(ptk::decodeReply(second.reply)->word0, quint16(3));
         // And so again later: a query that goes unanswered owes its late answer.
         timing.retryCount = 0;
+        timing.replyTimeout = std::chrono::milliseconds(5);
         requests->setTiming(timing);
         transport.answers = {QByteArray(), reply(4)};
         TransactionResult third = unfinished();
         requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &third));
         QTRY_COMPARE(third.failure, Failure::Timeout);
+        timing.replyTimeout = std::chrono::milliseconds(2000);
+        requests->setTiming(timing);
         TransactionResult fourth = unfinished();
         requests->submit(query(0x3D, Transaction::Priority::Command, nullptr, &fourth));
         QTRY_COMPARE(transport.written.size(), 5);
-        QTimer::singleShot(20, Qt::PreciseTimer, &transport,
+        QTimer::singleShot(60, Qt::PreciseTimer, &transport,
                            [&transport] { transport.deliver(reply(5)); });
         QTRY_COMPARE(fourth.failure, Failure::None);
         QCOMPARE(ptk::decodeReply(fourth.reply)->word0, quint16(5));
@@ -268,7 +282,7 @@ private slots:
         // retry's answer, at once too, is taken.
         ScriptedTransport transport;
         transport.answers = {reply(1), QByteArray(), reply(2)};
-        auto requests = engine(transport);
+        auto requests = engineAt9600(transport);
         TransactionResult first = unfinished();
         requests->submit(query(0x38, Transaction::Priority::Command, nullptr, &first));
         QTRY_VERIFY(first.ok());
