@@ -382,7 +382,8 @@ void BusScan::identifyFound(quint8 id, qint32 baud, quint8 statusBits, std::func
     m_bus.identify(servo)([this, servo, statusBits, then](bool ok, const QString &) {
         if (!m_scan)
             return;
-        servo->statusBits = statusBits; // what the identity says takes the place of the rest
+        // identify() fills the ServoInfo anew from addresses 0-8: the PING's error bits go back.
+        servo->statusBits = statusBits;
         if (!ok) {
             // It answers PING but not READ: show it, with nothing guessed about it.
             servo->model.name = Tr::tr("unknown (identity unreadable)");
