@@ -1,8 +1,8 @@
 // servobench: the desktop application's entry point.
-#include "common/languagemenu.h"
-#include "common/startupprobe.h"
+#include "languagemenu.h"
 #include "mainwindow.h"
-#include "util/translations.h"
+#include "startupprobe.h"
+#include "translations.h"
 #include "version.h"
 
 #include <QApplication>

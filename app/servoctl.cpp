@@ -1,6 +1,6 @@
 // servoctl: the command-line tool's entry point.
-#include "cli/servoctl.h"
-#include "util/translations.h"
+#include "servoctl.h"
+#include "translations.h"
 #include "version.h"
 
 #include <QCoreApplication>

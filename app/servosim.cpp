@@ -1,8 +1,8 @@
 // servosim: simulated PTK servo or Feetech bus on a pseudo-terminal, for users and tests.
-#include "sim/simcommands.h"
-#include "sim/simulator.h"
-#include "util/translations.h"
-#include "util/unixsignals.h"
+#include "simcommands.h"
+#include "simulator.h"
+#include "translations.h"
+#include "unixsignals.h"
 #include "version.h"
 
 #include <QCoreApplication>

@@ -8,11 +8,11 @@
 // (default: ideal, ftdi, ftdi-1ms, ch340, ch343, cp2102). --demo-seconds N: instead, the demo's
 // own Feetech bus (servobench --demo-feetech), scanned and streamed at 50 Hz for N seconds.
 #include "benchsupport.h"
-#include "feetech/feetechsession.h"
-#include "ptk/ptksession.h"
-#include "sim/demoservos.h"
-#include "sim/simulator.h"
-#include "sim/usbadapter.h"
+#include "demoservos.h"
+#include "feetechsession.h"
+#include "ptksession.h"
+#include "simulator.h"
+#include "usbadapter.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -2,13 +2,13 @@
 // in serial-port-sized chunks, the packet decoders, and the frame decoder behind servoctl decode,
 // per second of CPU time.
 #include "benchsupport.h"
-#include "cli/decoder.h"
-#include "feetech/feetechdescription.h"
-#include "feetech/feetechpacket.h"
-#include "ptk/ptkdescription.h"
-#include "ptk/ptkframe.h"
-#include "ptk/ptkparameters.h"
-#include "util/hex.h"
+#include "decoder.h"
+#include "feetechdescription.h"
+#include "feetechpacket.h"
+#include "hex.h"
+#include "ptkdescription.h"
+#include "ptkframe.h"
+#include "ptkparameters.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

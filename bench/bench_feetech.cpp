@@ -1,10 +1,10 @@
 // Runs the Feetech session against the simulated bus on a pty and prints JSON figures: scan time
 // at one and at every baud rate, and full table reads, each next to its wire-time lower bound.
 #include "benchsupport.h"
-#include "feetech/feetechpacket.h"
-#include "feetech/feetechsession.h"
-#include "feetech/registertable.h"
-#include "sim/simulator.h"
+#include "feetechpacket.h"
+#include "feetechsession.h"
+#include "registertable.h"
+#include "simulator.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -3,10 +3,10 @@
 // resident memory early and late in the run.
 // The simulated servos run in a separate servosim process, so their work is not counted.
 #include "benchsupport.h"
-#include "feetech/busclient.h"
-#include "feetechgui/monitorpage.h"
-#include "feetechgui/telemetryplot.h"
-#include "util/processmemory.h"
+#include "busclient.h"
+#include "monitorpage.h"
+#include "processmemory.h"
+#include "telemetryplot.h"
 
 #include <QApplication>
 #include <QDir>

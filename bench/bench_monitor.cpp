@@ -1,9 +1,9 @@
 // Runs Feetech telemetry against 6 simulated STS3215 at 1 Mbps on a pty and prints JSON figures:
 // samples per second as fast as the bus allows and at set rates, next to the wire limit.
 #include "benchsupport.h"
-#include "feetech/feetechsession.h"
-#include "feetech/telemetry.h"
-#include "sim/simulator.h"
+#include "feetechsession.h"
+#include "simulator.h"
+#include "telemetry.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,10 +1,10 @@
 // Runs the PTK session against the simulated servo at 115200 baud and prints JSON figures: poll
 // interval against PTK's 50 ms, fast-mode sweep time against the wire limit, CPU per second.
 #include "benchsupport.h"
-#include "ptk/ptkframe.h"
-#include "ptk/ptkparameters.h"
-#include "ptk/ptksession.h"
-#include "sim/simulator.h"
+#include "ptkframe.h"
+#include "ptkparameters.h"
+#include "ptksession.h"
+#include "simulator.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -1,7 +1,7 @@
 // Measures request/reply round trips through servosim's pty against the wire-time lower bound.
-#include "feetech/feetechpacket.h"
-#include "ptk/ptkframe.h"
-#include "sim/simulator.h"
+#include "feetechpacket.h"
+#include "ptkframe.h"
+#include "simulator.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

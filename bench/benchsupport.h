@@ -2,8 +2,8 @@
 // timed telemetry stream.
 #pragma once
 
-#include "feetech/feetechsession.h"
-#include "sim/simulator.h"
+#include "feetechsession.h"
+#include "simulator.h"
 
 #include <QElapsedTimer>
 

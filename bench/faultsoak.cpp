@@ -4,11 +4,11 @@
 
 #include "operationwait.h"
 
-#include "feetech/busclient.h"
-#include "ptk/ptkclient.h"
-#include "sim/simulator.h"
-#include "sim/virtualfeetechbus.h"
-#include "sim/virtualptkservo.h"
+#include "busclient.h"
+#include "ptkclient.h"
+#include "simulator.h"
+#include "virtualfeetechbus.h"
+#include "virtualptkservo.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>

@@ -3,7 +3,7 @@
 // shown and every write's outcome checked against what the simulator holds.
 #pragma once
 
-#include "sim/faults.h"
+#include "faults.h"
 
 #include <QJsonObject>
 #include <QStringList>

@@ -1,7 +1,7 @@
 // Waiting for a BusClient operation to end, for the fault soak and the unplug cycles.
 #include "operationwait.h"
 
-#include "feetech/busclient.h"
+#include "busclient.h"
 
 #include <QEventLoop>
 #include <QTimer>

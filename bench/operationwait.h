@@ -1,7 +1,7 @@
 // Waiting for a BusClient operation to end, for the fault soak and the unplug cycles.
 #pragma once
 
-#include "feetech/bustypes.h"
+#include "bustypes.h"
 
 #include <functional>
 #include <optional>

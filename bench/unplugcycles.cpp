@@ -4,12 +4,12 @@
 
 #include "operationwait.h"
 
-#include "cli/servoctl.h"
-#include "feetech/busclient.h"
-#include "ptk/ptkclient.h"
-#include "sim/simulator.h"
-#include "sim/virtualptkservo.h"
-#include "util/processmemory.h"
+#include "busclient.h"
+#include "processmemory.h"
+#include "ptkclient.h"
+#include "servoctl.h"
+#include "simulator.h"
+#include "virtualptkservo.h"
 
 #include <QDeadlineTimer>
 #include <QDir>

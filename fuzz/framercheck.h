@@ -3,7 +3,7 @@
 #pragma once
 
 #include "fuzztarget.h"
-#include "link/streamframer.h"
+#include "streamframer.h"
 
 #include <algorithm>
 #include <functional>

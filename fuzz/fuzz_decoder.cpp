@@ -1,8 +1,8 @@
 // Fuzz target: `servoctl decode`, from the typed hex text to the explained frames of both
 // protocols and their JSON; the frames tile the stream and the hex reads back as it was written.
-#include "cli/decoder.h"
+#include "decoder.h"
 #include "fuzztarget.h"
-#include "util/hex.h"
+#include "hex.h"
 
 #include <QJsonDocument>
 

@@ -1,6 +1,6 @@
 // Fuzz target: the Feetech stream format through the framer; every frame decodes and re-encodes
 // to its own bytes.
-#include "feetech/feetechpacket.h"
+#include "feetechpacket.h"
 #include "framercheck.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)

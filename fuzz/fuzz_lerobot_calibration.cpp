@@ -1,7 +1,7 @@
 // Fuzz target: a LeRobot calibration file (what servoctl's and the GUI's calibration load
 // read); motors read are within the documented bounds and are written and read back unchanged.
-#include "feetech/lerobotcalibration.h"
 #include "fuzztarget.h"
+#include "lerobotcalibration.h"
 
 #include <QSet>
 

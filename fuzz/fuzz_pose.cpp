@@ -1,7 +1,7 @@
 // Fuzz target: a pose file; a pose read is written and read back unchanged.
-#include "feetech/feetechpacket.h"
-#include "feetech/pose.h"
+#include "feetechpacket.h"
 #include "fuzztarget.h"
+#include "pose.h"
 
 #include <cstdlib>
 

@@ -1,10 +1,10 @@
 // Fuzz target: a parameter profile as every family reads it (PTK and the Feetech families); a
 // profile read is written and read back to the same values.
-#include "feetech/registertable.h"
-#include "feetech/servoparameters.h"
 #include "fuzztarget.h"
-#include "profile/profile.h"
-#include "ptk/ptkparameters.h"
+#include "profile.h"
+#include "ptkparameters.h"
+#include "registertable.h"
+#include "servoparameters.h"
 
 namespace {
 

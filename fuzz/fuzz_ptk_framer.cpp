@@ -1,7 +1,7 @@
 // Fuzz target: the PTK stream format through the framer; every frame is a request or a reply
 // that re-encodes to its own bytes.
 #include "framercheck.h"
-#include "ptk/ptkframe.h"
+#include "ptkframe.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

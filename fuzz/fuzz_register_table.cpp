@@ -1,8 +1,8 @@
 // Fuzz target: a register table (resources/feetech/registers-*.json) as the loader reads it; a
 // table accepted keeps the promises the code relies on.
-#include "feetech/feetechvalue.h"
-#include "feetech/registertable.h"
+#include "feetechvalue.h"
 #include "fuzztarget.h"
+#include "registertable.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

@@ -1,8 +1,8 @@
 // Fuzz target: a robot template as a user's file is read; a template accepted names known models
 // with settings inside their registers' ranges, and is written and read back unchanged.
-#include "feetech/registertable.h"
-#include "feetech/robottemplate.h"
 #include "fuzztarget.h"
+#include "registertable.h"
+#include "robottemplate.h"
 
 #include <QSet>
 

@@ -1,9 +1,9 @@
 // Fuzz target: the settings file batch programming and `servoctl feetech load` read (a profile
 // or a robot template); whatever it gives a servo is a writable register of that servo, in
 // range, and a batch never copies a profile's offset.
-#include "feetech/registertable.h"
-#include "feetech/settingsfile.h"
 #include "fuzztarget.h"
+#include "registertable.h"
+#include "settingsfile.h"
 
 namespace {
 

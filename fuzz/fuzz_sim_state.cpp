@@ -1,8 +1,8 @@
 // Fuzz target: the simulator's state file (servosim --state) as VirtualFeetechBus reads it; a
 // refused file changes nothing, an accepted one leaves each servo with the file's EEPROM values.
 #include "fuzztarget.h"
-#include "sim/virtualfeetechbus.h"
-#include "sim/virtualfeetechservo.h"
+#include "virtualfeetechbus.h"
+#include "virtualfeetechservo.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

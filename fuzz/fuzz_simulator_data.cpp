@@ -1,8 +1,8 @@
 // Fuzz target: the simulator's facts file (resources/feetech/simulator.json) as SimulatorData
 // reads it; every family of data accepted answers for its firmware and defaults.
-#include "feetech/registertable.h"
 #include "fuzztarget.h"
-#include "sim/simulatordata.h"
+#include "registertable.h"
+#include "simulatordata.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

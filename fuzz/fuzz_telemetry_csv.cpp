@@ -1,8 +1,8 @@
 // Fuzz target: a telemetry recording (the CSV TelemetryRecorder writes) as parseTelemetryCsv
 // reads it back; every row accepted is a sample of a servo ID with a status byte.
-#include "feetech/feetechpacket.h"
-#include "feetech/telemetry.h"
+#include "feetechpacket.h"
 #include "fuzztarget.h"
+#include "telemetry.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {

@@ -1,7 +1,7 @@
 // Test support for plots and readouts: a plausible feedback sample of one servo at 1 Mbps.
 #pragma once
 
-#include "feetech/telemetry.h"
+#include "telemetry.h"
 
 namespace testsupport {
 

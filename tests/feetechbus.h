@@ -1,14 +1,14 @@
 // Test support for a simulated Feetech bus: its options, test fixtures, scans and logged frames.
 #pragma once
 
-#include "feetech/busclient.h"
-#include "feetech/busexchange.h"
-#include "feetech/feetechpacket.h"
-#include "feetech/feetechsession.h"
-#include "feetech/motiontest.h"
-#include "link/linksession.h"
-#include "sim/virtualfeetechservo.h"
+#include "busclient.h"
+#include "busexchange.h"
+#include "feetechpacket.h"
+#include "feetechsession.h"
+#include "linksession.h"
+#include "motiontest.h"
 #include "simclient.h"
+#include "virtualfeetechservo.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

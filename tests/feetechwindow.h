@@ -2,9 +2,9 @@
 // STS3215 and an SCS15 (IDs 1-3 at 1 Mbps), connected and scanned through the window.
 #pragma once
 
-#include "common/connectionbar.h"
+#include "connectionbar.h"
 #include "feetechbus.h"
-#include "feetechgui/feetechworkspace.h"
+#include "feetechworkspace.h"
 #include "mainwindow.h"
 
 #include <QSettings>

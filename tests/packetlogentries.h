@@ -1,7 +1,7 @@
 // Test helper: numbered packet log entries, alternating out and in, optionally with an error.
 #pragma once
 
-#include "link/linktypes.h"
+#include "linktypes.h"
 
 #include <QString>
 

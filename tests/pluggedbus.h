@@ -2,8 +2,8 @@
 // what their EEPROMs hold.
 #pragma once
 
-#include "feetech/robottemplate.h"
 #include "feetechbus.h"
+#include "robottemplate.h"
 
 #include <QtTest>
 

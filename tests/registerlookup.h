@@ -1,7 +1,7 @@
 // Looks up the Feetech register tables in tests: a family's table, and a register by key.
 #pragma once
 
-#include "feetech/registertable.h"
+#include "registertable.h"
 
 #include <QtGlobal>
 

@@ -1,10 +1,10 @@
 // Test helper: one small valid document of each kind ServoBench saves and reads.
 #pragma once
 
-#include "feetech/lerobotcalibration.h"
-#include "feetech/pose.h"
-#include "profile/profile.h"
-#include "ptk/ptkparameters.h"
+#include "lerobotcalibration.h"
+#include "pose.h"
+#include "profile.h"
+#include "ptkparameters.h"
 
 namespace testsupport {
 

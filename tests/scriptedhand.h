@@ -3,8 +3,8 @@
 #pragma once
 
 #include "feetechbus.h"
-#include "sim/simulator.h"
-#include "sim/virtualfeetechservo.h"
+#include "simulator.h"
+#include "virtualfeetechservo.h"
 
 #include <QMap>
 #include <QObject>

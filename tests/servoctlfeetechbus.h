@@ -5,12 +5,12 @@
 #include "servoctlrun.h"
 #include "simclient.h"
 
-#include "feetech/robottemplate.h"
-#include "feetech/servoparameters.h"
-#include "feetech/telemetry.h"
-#include "profile/profile.h"
-#include "sim/simulator.h"
-#include "sim/virtualfeetechservo.h"
+#include "profile.h"
+#include "robottemplate.h"
+#include "servoparameters.h"
+#include "simulator.h"
+#include "telemetry.h"
+#include "virtualfeetechservo.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

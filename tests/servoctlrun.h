@@ -1,7 +1,7 @@
 // Test helper: runs servoctl in-process and captures its exit code, stdout and stderr.
 #pragma once
 
-#include "cli/servoctl.h"
+#include "servoctl.h"
 
 #include <QStringList>
 #include <QTextStream>

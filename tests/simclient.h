@@ -1,13 +1,13 @@
 // Test helpers: a QSerialPort client on a simulator's pty, and simulator start-up in a temp dir.
 #pragma once
 
-#include "link/linktypes.h"
-#include "ptk/ptkframe.h"
-#include "ptk/ptkparameters.h"
-#include "ptk/ptksession.h"
-#include "sim/simulator.h"
-#include "sim/virtualptkservo.h"
-#include "util/hex.h"
+#include "hex.h"
+#include "linktypes.h"
+#include "ptkframe.h"
+#include "ptkparameters.h"
+#include "ptksession.h"
+#include "simulator.h"
+#include "virtualptkservo.h"
 
 #include <QFile>
 #include <QSerialPort>

@@ -2,7 +2,7 @@
 // samples they were written from.
 #pragma once
 
-#include "feetech/telemetry.h"
+#include "telemetry.h"
 
 #include <QFile>
 #include <QtTest>

@@ -1,10 +1,10 @@
 // End-to-end tests behind simulated USB adapters (servosim --adapter): a Feetech scan, a table
 // read and a 50 Hz stream, and PTK polling and an Apply, with the sessions' own timing, over a
 // real pty. No timeout, no missed sample, and nothing in the packet log reads as an error.
-#include "feetech/feetechsession.h"
-#include "ptk/ptksession.h"
-#include "sim/simulator.h"
+#include "feetechsession.h"
+#include "ptksession.h"
 #include "simclient.h"
+#include "simulator.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

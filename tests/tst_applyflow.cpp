@@ -1,7 +1,7 @@
 // Tests the apply plan: which edits become register writes, and the ID and baud rate after them.
-#include "feetech/applyflow.h"
-#include "feetech/servoparameters.h"
-#include "model/parametermodel.h"
+#include "applyflow.h"
+#include "parametermodel.h"
+#include "servoparameters.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 // Tests of arm calibration: unwrapping across the seam, offsets, limits and refusals.
-#include "feetech/armcalibration.h"
-#include "feetech/registertable.h"
+#include "armcalibration.h"
+#include "registertable.h"
 
 #include <QtTest>
 

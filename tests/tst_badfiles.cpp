@@ -4,10 +4,10 @@
 #include "hostilefiles.h"
 #include "samplefiles.h"
 
-#include "feetech/robottemplate.h"
-#include "feetech/settingsfile.h"
-#include "sim/virtualfeetechbus.h"
-#include "util/processmemory.h"
+#include "processmemory.h"
+#include "robottemplate.h"
+#include "settingsfile.h"
+#include "virtualfeetechbus.h"
 
 #include <QtTest>
 

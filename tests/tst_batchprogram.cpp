@@ -2,7 +2,7 @@
 // the scan fails alone while the others are written and verified, a servo with edits of its own
 // is left alone, a servo with torque on gets no offset or limit change, a profile never copies
 // its position offset, and nothing starts on a bus that is not connected.
-#include "feetech/batchprogram.h"
+#include "batchprogram.h"
 #include "feetechbus.h"
 
 #include <QtTest>

@@ -1,7 +1,7 @@
 // Tests of the Feetech bus client's own bookkeeping: its servo list, edits, work and busy state.
 #include "feetechbus.h"
 
-#include "feetech/busclient.h"
+#include "busclient.h"
 
 #include <QSignalSpy>
 #include <QtTest>

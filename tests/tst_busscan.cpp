@@ -1,8 +1,8 @@
 // Tests of the Feetech bus scan, driven on its own over a link to a simulated bus.
 #include "feetechbus.h"
 
-#include "feetech/busscan.h"
-#include "util/hex.h"
+#include "busscan.h"
+#include "hex.h"
 
 #include <QSignalSpy>
 #include <QtTest>

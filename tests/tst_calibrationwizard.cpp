@@ -3,9 +3,9 @@
 #include "feetechbus.h"
 #include "scriptedhand.h"
 
-#include "feetech/lerobotcalibration.h"
-#include "feetechgui/calibrationfiles.h"
-#include "feetechgui/calibrationwizard.h"
+#include "calibrationfiles.h"
+#include "calibrationwizard.h"
+#include "lerobotcalibration.h"
 #include "mainwindow.h"
 
 #include <QAction>

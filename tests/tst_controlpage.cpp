@@ -1,8 +1,8 @@
 // GUI tests of the Control page against a simulated bus (STS3215 ×2 + SCS15 at 1 Mbps): torque,
 // goals, the throttled slider, operating mode, step and sweep tests, and All torque off.
-#include "feetech/motiontest.h"
+#include "controlpage.h"
 #include "feetechbus.h"
-#include "feetechgui/controlpage.h"
+#include "motiontest.h"
 #include "namedchild.h"
 
 #include <QComboBox>

@@ -1,6 +1,6 @@
 // Tests the packet decoder behind `servoctl decode` on spec streams.
-#include "cli/decoder.h"
-#include "feetech/feetechpacket.h"
+#include "decoder.h"
+#include "feetechpacket.h"
 #include "specvectors.h"
 
 #include <QJsonArray>

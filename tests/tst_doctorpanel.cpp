@@ -3,14 +3,14 @@
 // panel by itself; a servo at an unexpected ID is moved from the panel.
 #include "feetechbus.h"
 
-#include "common/connectionbar.h"
-#include "feetech/busclient.h"
-#include "feetech/busdoctor.h"
-#include "feetechgui/doctorpanel.h"
-#include "feetechgui/feetechworkspace.h"
+#include "busclient.h"
+#include "busdoctor.h"
+#include "connectionbar.h"
+#include "doctorpanel.h"
+#include "feetechworkspace.h"
 #include "mainwindow.h"
-#include "ptk/ptkclient.h"
-#include "ptkgui/ptkworkspace.h"
+#include "ptkclient.h"
+#include "ptkworkspace.h"
 
 #include <QComboBox>
 #include <QLabel>

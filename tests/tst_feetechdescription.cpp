@@ -1,5 +1,5 @@
 // Tests the Feetech packet descriptions the packet log shows, on the spec's frames.
-#include "feetech/feetechdescription.h"
+#include "feetechdescription.h"
 #include "specvectors.h"
 
 #include <QtTest>

@@ -1,6 +1,6 @@
 // Tests seriallink::StreamFramer driven by feetech::FrameFormat on streams of spec frames.
-#include "feetech/feetechpacket.h"
-#include "link/streamframer.h"
+#include "feetechpacket.h"
+#include "streamframer.h"
 
 #include <QtTest>
 

@@ -1,11 +1,11 @@
 // GUI tests of the Feetech workspace against a simulated bus: scan, tree, memory-table edits.
-#include "common/connectionbar.h"
-#include "common/parameterpage.h"
-#include "feetechgui/feetechworkspace.h"
-#include "feetechgui/jointtable.h"
-#include "feetechgui/registertablemodel.h"
+#include "connectionbar.h"
 #include "feetechwindow.h"
+#include "feetechworkspace.h"
+#include "jointtable.h"
 #include "mainwindow.h"
+#include "parameterpage.h"
+#include "registertablemodel.h"
 
 #include <QAbstractItemView>
 #include <QLineEdit>

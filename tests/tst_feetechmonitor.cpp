@@ -1,6 +1,6 @@
 // End-to-end tests of Feetech telemetry and bus-wide control against a simulated bus on a pty.
-#include "feetech/feetechsession.h"
 #include "feetechbus.h"
+#include "feetechsession.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

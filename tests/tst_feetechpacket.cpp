@@ -1,5 +1,5 @@
 // Tests the Feetech packet encoders and decoder against the seed's and the spec's hex frames.
-#include "feetech/feetechpacket.h"
+#include "feetechpacket.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // End-to-end tests of the Feetech session against a simulated mixed bus on a pty.
-#include "feetech/feetechsession.h"
-#include "feetech/servoparameters.h"
 #include "feetechbus.h"
+#include "feetechsession.h"
+#include "servoparameters.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

@@ -1,5 +1,5 @@
 // Tests Feetech register value encoding: SCS big-endian vs STS little-endian, sign-magnitude.
-#include "feetech/feetechvalue.h"
+#include "feetechvalue.h"
 
 #include <QtTest>
 

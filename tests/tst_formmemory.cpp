@@ -1,8 +1,8 @@
 // Tests what ServoBench remembers across runs: form values (widgetmemory), the Monitor's
 // choices, and recent files by kind.
-#include "common/recentfiles.h"
-#include "common/widgetmemory.h"
-#include "feetechgui/monitorpage.h"
+#include "monitorpage.h"
+#include "recentfiles.h"
+#include "widgetmemory.h"
 
 #include <QCheckBox>
 #include <QComboBox>

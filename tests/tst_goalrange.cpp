@@ -1,9 +1,9 @@
 // Tests feetech::goalRange against a scanned simulated bus (STS3215 and SCS15 at 1 Mbps): the
 // goal register's range until angle limits are known, the limits once they are, and the cases
 // in which limits bound nothing.
-#include "feetech/goalrange.h"
-#include "feetech/registerkeys.h"
 #include "feetechbus.h"
+#include "goalrange.h"
+#include "registerkeys.h"
 
 #include <QtTest>
 

@@ -2,13 +2,13 @@
 // guard did to a blocked servo, a latched overload is walked through its recovery, and the
 // settings dialog gives per-servo limits with defaults from the registers; a servo left unlocked
 // is shown and locked on request.
-#include "feetech/overloadguard.h"
+#include "controlpage.h"
 #include "feetechbus.h"
-#include "feetechgui/controlpage.h"
-#include "feetechgui/guardsettingsdialog.h"
-#include "feetechgui/overloadrecoverydialog.h"
-#include "feetechgui/unlockednotice.h"
+#include "guardsettingsdialog.h"
 #include "namedchild.h"
+#include "overloadguard.h"
+#include "overloadrecoverydialog.h"
+#include "unlockednotice.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -2,8 +2,8 @@
 // held (or its torque switched off), a hot servo is held, and a tripped overload is recovered.
 #include "feetechbus.h"
 
-#include "feetech/overloadguard.h"
-#include "feetech/servoparameters.h"
+#include "overloadguard.h"
+#include "servoparameters.h"
 
 #include <QSignalSpy>
 #include <QtTest>

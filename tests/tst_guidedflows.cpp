@@ -1,7 +1,7 @@
 // Tests of each Feetech guided flow on its own, against the simulated servos' register state.
 #include "feetechbus.h"
 
-#include "feetech/guidedflows.h"
+#include "guidedflows.h"
 
 #include <QtTest>
 

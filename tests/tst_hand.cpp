@@ -1,6 +1,6 @@
 // Tests the simulator's hand: turns and sweeps of horns whose torque is off, seam crossing,
 // joints with torque on, and servos put at a shared ID.
-#include "sim/virtualfeetechbus.h"
+#include "virtualfeetechbus.h"
 
 #include <QtTest>
 

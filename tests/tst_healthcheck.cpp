@@ -1,9 +1,9 @@
 // The health check over the simulated bus: verdicts for a healthy, an over-voltage and a hot
 // servo, a firmware mismatch, communication counted on a faulty line, the move test's metrics
 // and restore, reads only without it; and the report saved as HTML and JSON.
-#include "feetech/healthreport.h"
-#include "feetech/servohealth.h"
 #include "feetechbus.h"
+#include "healthreport.h"
+#include "servohealth.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

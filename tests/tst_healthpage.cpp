@@ -1,8 +1,8 @@
 // GUI tests of the Health page against a simulated bus: the empty state, a check with its
 // verdicts in colour, cancelling, the move test's confirmation, and saving the report.
 #include "feetechbus.h"
-#include "feetechgui/feetechworkspace.h"
-#include "feetechgui/healthpage.h"
+#include "feetechworkspace.h"
+#include "healthpage.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

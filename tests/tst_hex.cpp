@@ -1,5 +1,5 @@
 // Tests hex text parsing and formatting as users type frames.
-#include "util/hex.h"
+#include "hex.h"
 
 #include <QtTest>
 

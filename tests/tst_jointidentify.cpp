@@ -2,8 +2,8 @@
 // horn moves only around where it stood and comes back, torque, torque limit, goal and speed are
 // restored whether torque was on or off, a servo held by a motion test is refused, and a servo
 // that stops answering is reported.
-#include "feetech/motiontest.h"
 #include "feetechbus.h"
+#include "motiontest.h"
 #include "servoctlrun.h"
 
 #include <QTimer>

@@ -1,9 +1,9 @@
 // GUI tests of the joint table against a simulated bus: rows, ranges, torque, Move all as one
 // SYNC WRITE, live positions and pose files.
-#include "feetech/pose.h"
 #include "feetechbus.h"
-#include "feetechgui/jointtable.h"
+#include "jointtable.h"
 #include "namedchild.h"
+#include "pose.h"
 
 #include <QLabel>
 #include <QMap>

@@ -1,5 +1,5 @@
 // Tests of LeRobot calibration files: the format, its checks, saving and LeRobot's folder.
-#include "feetech/lerobotcalibration.h"
+#include "lerobotcalibration.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

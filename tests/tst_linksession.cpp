@@ -1,8 +1,8 @@
 // Tests of the link session: opening, closing, a lost port and its reopening, on a simulated bus.
 #include "feetechbus.h"
 
-#include "link/linksession.h"
-#include "link/transport.h"
+#include "linksession.h"
+#include "transport.h"
 
 #include <QSignalSpy>
 #include <QtTest>

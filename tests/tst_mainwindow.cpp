@@ -1,9 +1,9 @@
 // Tests that the main window opens with its menus, connection bar and status bar, and that it
 // remembers its size, layout and last connection, resets its layout and shows what it is (About).
-#include "common/connectionbar.h"
-#include "common/packetlogdock.h"
-#include "common/shortcutsdialog.h"
+#include "connectionbar.h"
 #include "mainwindow.h"
+#include "packetlogdock.h"
+#include "shortcutsdialog.h"
 
 #include <QLabel>
 #include <QMenuBar>

@@ -2,9 +2,9 @@
 // recordings that parse back, PNG export, and live monitoring of a simulated bus.
 #include "feedbacksample.h"
 #include "feetechbus.h"
-#include "feetechgui/monitorpage.h"
-#include "feetechgui/telemetryplot.h"
+#include "monitorpage.h"
 #include "telemetrycsv.h"
+#include "telemetryplot.h"
 
 #include <QImage>
 #include <QLabel>

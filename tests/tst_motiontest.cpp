@@ -1,8 +1,8 @@
 // Tests feetech::MotionTest on a simulated bus (STS3215 ×2 at 1 Mbps): what it refuses before
 // sending anything, a step test's metrics and recording, a sweep's legs, cancelling, and the
 // monitor left as the test found it.
-#include "feetech/motiontest.h"
 #include "feetechbus.h"
+#include "motiontest.h"
 
 #include <QtTest>
 

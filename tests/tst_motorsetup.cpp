@@ -2,7 +2,7 @@
 // other bus, setting up ID, rate and settings, the joints check, all against the simulator.
 #include "pluggedbus.h"
 
-#include "feetech/motorsetup.h"
+#include "motorsetup.h"
 
 #include <QtTest>
 

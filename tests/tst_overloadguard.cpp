@@ -2,8 +2,8 @@
 // act, the thermal margin, the latched-overload bit, and limits per servo from the table.
 #include "feedbacksample.h"
 
-#include "feetech/overloadguard.h"
-#include "feetech/registertable.h"
+#include "overloadguard.h"
+#include "registertable.h"
 
 #include <QtTest>
 

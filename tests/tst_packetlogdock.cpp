@@ -1,8 +1,8 @@
 // Tests the packet log dock: its tool bar pauses, clears and filters the log it shows.
 #include "packetlogentries.h"
 
-#include "common/packetlogdock.h"
-#include "link/packetlogmodel.h"
+#include "packetlogdock.h"
+#include "packetlogmodel.h"
 
 #include <QLabel>
 #include <QScrollBar>

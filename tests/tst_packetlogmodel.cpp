@@ -1,7 +1,7 @@
 // Tests the packet log model: batched appends, the capacity bound, pause, counts and export.
 #include "packetlogentries.h"
 
-#include "link/packetlogmodel.h"
+#include "packetlogmodel.h"
 
 #include <QBuffer>
 #include <QSignalSpy>

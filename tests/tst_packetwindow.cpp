@@ -1,10 +1,10 @@
 // Tests the packet window against a simulated bus: frames built with their checksum, sent and
 // answered, risky writes asked about first, the history resent, sequences saved and loaded.
-#include "common/packetsequence.h"
-#include "common/packetwindow.h"
 #include "feetechbus.h"
 #include "namedchild.h"
-#include "ptk/ptkclient.h"
+#include "packetsequence.h"
+#include "packetwindow.h"
+#include "ptkclient.h"
 
 #include <QComboBox>
 #include <QLineEdit>

@@ -1,5 +1,5 @@
 // Tests the shared parameter model: polls never overwrite edits; writes settle by read-back.
-#include "model/parametermodel.h"
+#include "parametermodel.h"
 
 #include <QSignalSpy>
 #include <QtTest>

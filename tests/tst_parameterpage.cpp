@@ -1,7 +1,7 @@
 // Tests the PTK page: device values beside edits, edits reach the model, polls never overwrite.
-#include "common/parameterpage.h"
-#include "model/parametermodel.h"
-#include "ptk/ptkparameters.h"
+#include "parametermodel.h"
+#include "parameterpage.h"
+#include "ptkparameters.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -3,8 +3,8 @@
 #include "feetechbus.h"
 #include "simclient.h"
 
-#include "feetech/portprobe.h"
-#include "link/portaccess.h"
+#include "portaccess.h"
+#include "portprobe.h"
 
 #include <QFile>
 #include <QSerialPort>

@@ -1,5 +1,5 @@
 // Tests pose files: round trips, every refusal with its reason, atomic saves.
-#include "feetech/pose.h"
+#include "pose.h"
 
 #include <QDir>
 #include <QFile>

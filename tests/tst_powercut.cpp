@@ -1,10 +1,10 @@
 // End-to-end tests of power lost in the middle of an EEPROM write (servosim's power-cut bench
 // case): the EEPROM keeps the old or the new value, never a mix, the write is never reported
 // done, and a servo left unlocked is noticed and locked on request (BusClient and servoctl).
-#include "feetech/busclient.h"
+#include "busclient.h"
 #include "feetechbus.h"
 #include "servoctlrun.h"
-#include "sim/simcommands.h"
+#include "simcommands.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 // Tests JSON profiles: round trips in user units, strict validation, atomic saves, device diff.
-#include "profile/profile.h"
-#include "ptk/ptkparameters.h"
+#include "profile.h"
+#include "ptkparameters.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,12 +1,12 @@
 // End to end over a pty: the PTK session and client against the simulated servo.
 #include "simclient.h"
 
-#include "ptk/ptkclient.h"
-#include "ptk/ptkframe.h"
-#include "ptk/ptkparameters.h"
-#include "sim/simulator.h"
-#include "sim/virtualptkservo.h"
-#include "util/hex.h"
+#include "hex.h"
+#include "ptkclient.h"
+#include "ptkframe.h"
+#include "ptkparameters.h"
+#include "simulator.h"
+#include "virtualptkservo.h"
 
 #include <QtTest>
 

@@ -1,5 +1,5 @@
 // Tests the PTK frame descriptions the packet log shows, on the spec's frames.
-#include "ptk/ptkdescription.h"
+#include "ptkdescription.h"
 #include "specvectors.h"
 
 #include <QtTest>

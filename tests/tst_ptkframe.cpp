@@ -1,5 +1,5 @@
 // Tests PTK frame encoding and decoding against every frame of spec/ptk-protocol.md.
-#include "ptk/ptkframe.h"
+#include "ptkframe.h"
 #include "specvectors.h"
 
 #include <QtTest>

@@ -1,7 +1,7 @@
 // Tests the PTK stream framer: split reads, concatenation, garbage, bad checksums and echo.
-#include "link/streamframer.h"
-#include "ptk/ptkframe.h"
+#include "ptkframe.h"
 #include "specvectors.h"
+#include "streamframer.h"
 
 #include <QtTest>
 

@@ -1,17 +1,17 @@
 // End to end through the GUI (offscreen): the main window against the simulated PTK servo.
 #include "simclient.h"
 
-#include "common/connectionbar.h"
-#include "common/packetlogdock.h"
-#include "common/parameterpage.h"
-#include "link/packetlogmodel.h"
+#include "connectionbar.h"
+#include "hex.h"
 #include "mainwindow.h"
-#include "ptk/ptkclient.h"
-#include "ptk/ptkframe.h"
-#include "ptk/ptkparameters.h"
-#include "sim/simulator.h"
-#include "sim/virtualptkservo.h"
-#include "util/hex.h"
+#include "packetlogdock.h"
+#include "packetlogmodel.h"
+#include "parameterpage.h"
+#include "ptkclient.h"
+#include "ptkframe.h"
+#include "ptkparameters.h"
+#include "simulator.h"
+#include "virtualptkservo.h"
 
 #include <QLabel>
 #include <QPushButton>

@@ -1,5 +1,5 @@
 // Tests the PTK read map, write map and parameter metadata against the seed's frames.
-#include "ptk/ptkparameters.h"
+#include "ptkparameters.h"
 #include "specvectors.h"
 
 #include <QtTest>

@@ -1,8 +1,8 @@
 // Tests of the PTK session in the test thread against the simulated PTK servo on a pty.
 #include "simclient.h"
 
-#include "link/linksession.h"
-#include "ptk/ptksession.h"
+#include "linksession.h"
+#include "ptksession.h"
 
 #include <QSignalSpy>
 #include <QtTest>

@@ -1,5 +1,5 @@
 // Tests the Feetech register tables and model table: built-in data and the JSON validator.
-#include "feetech/registertable.h"
+#include "registertable.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,7 +1,7 @@
 // Unit tests of the request engine over a scripted transport: ordering, timeouts, retries, echo.
-#include "link/requestengine.h"
-#include "link/transport.h"
-#include "ptk/ptkframe.h"
+#include "ptkframe.h"
+#include "requestengine.h"
+#include "transport.h"
 
 #include <QtTest>
 

@@ -2,16 +2,16 @@
 // identify from the joint table (refused with a reason during a motion test), a profile and a
 // template applied to the servos selected in the tree with the result table, and the robot
 // template dialog's round trip to the user's template folder.
-#include "common/connectionbar.h"
-#include "feetech/batchprogram.h"
-#include "feetech/motiontest.h"
-#include "feetechgui/batchresultdialog.h"
-#include "feetechgui/feetechworkspace.h"
-#include "feetechgui/jointtable.h"
-#include "feetechgui/robotactions.h"
-#include "feetechgui/robottemplatedialog.h"
+#include "batchprogram.h"
+#include "batchresultdialog.h"
+#include "connectionbar.h"
 #include "feetechwindow.h"
+#include "feetechworkspace.h"
+#include "jointtable.h"
 #include "mainwindow.h"
+#include "motiontest.h"
+#include "robotactions.h"
+#include "robottemplatedialog.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -1,5 +1,5 @@
 // Tests robot templates: the built-in arms, the checks that name the field at fault, saving.
-#include "feetech/robottemplate.h"
+#include "robottemplate.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

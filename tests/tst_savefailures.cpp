@@ -3,11 +3,11 @@
 #include "packetlogentries.h"
 #include "samplefiles.h"
 
-#include "feetech/healthreport.h"
-#include "feetech/robottemplate.h"
-#include "feetech/telemetryrecorder.h"
-#include "link/packetlogmodel.h"
-#include "sim/virtualfeetechbus.h"
+#include "healthreport.h"
+#include "packetlogmodel.h"
+#include "robottemplate.h"
+#include "telemetryrecorder.h"
+#include "virtualfeetechbus.h"
 
 #include <QtTest>
 

@@ -1,5 +1,5 @@
 // Unit tests of the scan's wait per ID: it follows the answers heard, within its floor and cap.
-#include "feetech/scanpace.h"
+#include "scanpace.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // Tests servoctl's offline commands (decode, packet) in-process: output and exit codes.
+#include "hex.h"
 #include "servoctlrun.h"
 #include "specvectors.h"
-#include "util/hex.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

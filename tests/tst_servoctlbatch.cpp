@@ -5,7 +5,7 @@
 #include "feetechbus.h"
 #include "servoctlrun.h"
 
-#include "feetech/robottemplate.h"
+#include "robottemplate.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

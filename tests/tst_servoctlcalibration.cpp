@@ -4,8 +4,8 @@
 #include "scriptedhand.h"
 #include "servoctlrun.h"
 
-#include "feetech/feetechvalue.h"
-#include "feetech/lerobotcalibration.h"
+#include "feetechvalue.h"
+#include "lerobotcalibration.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -3,7 +3,7 @@
 #include "feetechbus.h"
 #include "servoctlrun.h"
 
-#include "feetech/busdoctor.h"
+#include "busdoctor.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -2,9 +2,9 @@
 #include "servoctlrun.h"
 #include "simclient.h"
 
-#include "ptk/ptkparameters.h"
-#include "sim/simulator.h"
-#include "sim/virtualptkservo.h"
+#include "ptkparameters.h"
+#include "simulator.h"
+#include "virtualptkservo.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

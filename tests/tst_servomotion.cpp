@@ -1,5 +1,5 @@
 // Tests the simulated servo's physics: moves toward the goal, load, current, heat, protections.
-#include "sim/servomotion.h"
+#include "servomotion.h"
 
 #include <QtTest>
 

@@ -1,9 +1,9 @@
 // Tests Feetech register values as parameters: decoding read blocks, encoding checked writes, the
 // definitions built from the tables, and servo identity (parsing and showing values:
 // tst_servovalues).
-#include "feetech/feetechsession.h"
-#include "feetech/servoparameters.h"
+#include "feetechsession.h"
 #include "registerlookup.h"
+#include "servoparameters.h"
 
 #include <QtTest>
 

@@ -4,7 +4,7 @@
 #include "simclient.h"
 #include "specvectors.h"
 
-#include "feetech/feetechpacket.h"
+#include "feetechpacket.h"
 
 #include <QFileInfo>
 #include <QProcess>

@@ -1,7 +1,7 @@
 // Tests Feetech register values as the user reads and types them: parsing text in register or
 // real units, status bit names, and values shown with their choices and units.
-#include "feetech/servoparameters.h"
 #include "registerlookup.h"
+#include "servoparameters.h"
 
 #include <QtTest>
 

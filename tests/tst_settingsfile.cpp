@@ -1,7 +1,7 @@
 // Tests feetech::SettingsFile's reading: a profile or a robot template from a file or from its
 // text gives the same values, and text that is neither is refused naming its source.
-#include "feetech/registertable.h"
-#include "feetech/settingsfile.h"
+#include "registertable.h"
+#include "settingsfile.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -2,9 +2,9 @@
 // one servo at a time, resuming, stopping, every failure shown with nothing written, the menu.
 #include "pluggedbus.h"
 
-#include "common/connectionbar.h"
-#include "feetechgui/setupwizard.h"
+#include "connectionbar.h"
 #include "mainwindow.h"
+#include "setupwizard.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -1,7 +1,7 @@
 // Tests servosim's standard-input commands in-process: every command, its replies and errors,
 // run in the simulator's thread through SimulatorThread::call.
 #include "feetechbus.h"
-#include "sim/simcommands.h"
+#include "simcommands.h"
 
 #include <QtTest>
 

@@ -1,6 +1,6 @@
 // Tests servosim's argument parsing: --hand, --robot and --allow-shared-ids, their bad values,
 // and the bus a --robot or shared IDs make.
-#include "sim/simulator.h"
+#include "simulator.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

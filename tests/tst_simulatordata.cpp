@@ -1,5 +1,5 @@
 // Tests the simulator's data file: built-in firmware and defaults, and malformed files refused.
-#include "sim/simulatordata.h"
+#include "simulatordata.h"
 
 #include <QtTest>
 

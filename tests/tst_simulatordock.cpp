@@ -1,11 +1,11 @@
 // Tests the Simulator dock offscreen: its servo table, turning a horn by hand (refused with
 // torque on), sweeping, plugging and unplugging, putting a servo at an ID, power-cycling and
 // the bench cases, each verified through the SimulatorThread.
-#include "common/packetlogdock.h"
-#include "common/simulatordock.h"
 #include "feetechbus.h"
-#include "feetechgui/feetechworkspace.h"
+#include "feetechworkspace.h"
 #include "mainwindow.h"
+#include "packetlogdock.h"
+#include "simulatordock.h"
 
 #include <QPushButton>
 #include <QSettings>

@@ -1,13 +1,13 @@
 // End to end over a real pty: the simulated Feetech bus as a QSerialPort client sees it.
 #include "simclient.h"
 
-#include "feetech/feetechpacket.h"
-#include "feetech/feetechvalue.h"
-#include "feetech/registertable.h"
-#include "sim/simulator.h"
-#include "sim/virtualfeetechbus.h"
-#include "sim/virtualfeetechservo.h"
-#include "util/hex.h"
+#include "feetechpacket.h"
+#include "feetechvalue.h"
+#include "hex.h"
+#include "registertable.h"
+#include "simulator.h"
+#include "virtualfeetechbus.h"
+#include "virtualfeetechservo.h"
 
 #include <QtTest>
 

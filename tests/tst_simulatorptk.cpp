@@ -2,10 +2,10 @@
 #include "simclient.h"
 #include "specvectors.h"
 
-#include "ptk/ptkframe.h"
-#include "ptk/ptkparameters.h"
-#include "sim/simulator.h"
-#include "sim/virtualptkservo.h"
+#include "ptkframe.h"
+#include "ptkparameters.h"
+#include "simulator.h"
+#include "virtualptkservo.h"
 
 #include <QtTest>
 

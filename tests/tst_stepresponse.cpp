@@ -1,6 +1,6 @@
 // Tests the step-response metrics on synthetic recordings whose rise, overshoot and settling are
 // known in closed form.
-#include "feetech/stepresponse.h"
+#include "stepresponse.h"
 
 #include <QtTest>
 

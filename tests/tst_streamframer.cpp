@@ -1,5 +1,5 @@
 // Tests the generic framer's bookkeeping with a toy format: 'S', length byte, payload, sum.
-#include "link/streamframer.h"
+#include "streamframer.h"
 
 #include <QtTest>
 

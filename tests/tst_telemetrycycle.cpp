@@ -1,7 +1,7 @@
 // Tests of the Feetech telemetry cycle, driven on its own over a link to a simulated bus.
 #include "feetechbus.h"
 
-#include "feetech/telemetrycycle.h"
+#include "telemetrycycle.h"
 
 #include <QSignalSpy>
 #include <QtTest>

@@ -1,8 +1,8 @@
 // Unit tests of the hand-painted telemetry plot: min/max decimation to pixel columns, repaints
 // coalesced to one per frame, a paused plot that stays still, zoom and reset, and PNG export.
 #include "feedbacksample.h"
-#include "feetechgui/telemetrybuffer.h"
-#include "feetechgui/telemetryplot.h"
+#include "telemetrybuffer.h"
+#include "telemetryplot.h"
 
 #include <QImage>
 #include <QSignalSpy>

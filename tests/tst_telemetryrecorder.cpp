@@ -1,7 +1,7 @@
 // Tests the telemetry CSV recorder: rows that parse back, absent values, samples before the
 // start, an unwritable file, a device such as stdout, the flush interval and a failing disk.
-#include "feetech/telemetryrecorder.h"
 #include "telemetrycsv.h"
+#include "telemetryrecorder.h"
 
 #include <QBuffer>
 #include <QDir>

@@ -3,9 +3,9 @@
 // and the checks before and after a test that moves a servo and puts it back.
 #include "feetechbus.h"
 
-#include "feetech/busclient.h"
-#include "feetech/servoparameters.h"
-#include "feetech/torqueonhold.h"
+#include "busclient.h"
+#include "servoparameters.h"
+#include "torqueonhold.h"
 
 #include <QSignalSpy>
 #include <QtTest>

@@ -1,13 +1,13 @@
 // Tests that the German and Chinese translations are complete and well formed, cover the
 // shipped tables' and templates' texts, and show on the window and a settings page under zh_CN.
-#include "common/parameterpage.h"
-#include "common/simulatordock.h"
-#include "feetech/busclient.h"
-#include "feetech/registertable.h"
-#include "feetech/robottemplate.h"
-#include "feetechgui/feetechworkspace.h"
+#include "busclient.h"
+#include "feetechworkspace.h"
 #include "mainwindow.h"
-#include "util/translations.h"
+#include "parameterpage.h"
+#include "registertable.h"
+#include "robottemplate.h"
+#include "simulatordock.h"
+#include "translations.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

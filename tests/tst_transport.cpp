@@ -1,7 +1,7 @@
 // Tests of the serial transport on a simulator's pty, and of its table of port error messages.
 #include "feetechbus.h"
 
-#include "link/transport.h"
+#include "transport.h"
 
 #include <QSignalSpy>
 #include <QtTest>

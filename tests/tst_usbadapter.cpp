@@ -1,7 +1,7 @@
 // Unit tests of the simulated USB adapters: when each profile hands the wire's bytes to the
 // program (FTDI's latency timer, packets, CH34x and CP210x frames), and servosim's --adapter.
-#include "sim/simulator.h"
-#include "sim/usbadapter.h"
+#include "simulator.h"
+#include "usbadapter.h"
 
 #include <QtTest>
 

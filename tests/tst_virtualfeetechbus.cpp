@@ -1,7 +1,7 @@
 // Tests the simulated Feetech bus: routing by ID and baud, broadcast, SYNC READ / SYNC WRITE,
 // collisions, baud changes, reboot silence, the EEPROM state file and spec validation.
-#include "feetech/feetechpacket.h"
-#include "sim/virtualfeetechbus.h"
+#include "feetechpacket.h"
+#include "virtualfeetechbus.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

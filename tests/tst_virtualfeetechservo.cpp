@@ -1,7 +1,7 @@
 // Tests one simulated Feetech servo: registers, lock semantics, instructions and physics.
-#include "feetech/feetechpacket.h"
-#include "feetech/registertable.h"
-#include "sim/virtualfeetechservo.h"
+#include "feetechpacket.h"
+#include "registertable.h"
+#include "virtualfeetechservo.h"
 
 #include <QtTest>
 

@@ -1,10 +1,10 @@
 // servoctl detect and doctor: the port probe, a scan of the rates that answered, the findings.
-#include "cli/detectcommands.h"
+#include "detectcommands.h"
 
-#include "cli/feetechdevice.h"
-#include "cli/servoctl.h"
-#include "feetech/busdoctor.h"
-#include "feetech/portprobe.h"
+#include "busdoctor.h"
+#include "feetechdevice.h"
+#include "portprobe.h"
+#include "servoctl.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>

@@ -1,8 +1,8 @@
 // servoctl detect and servoctl doctor: who is on a port, and what is wrong with the bus.
 #pragma once
 
-#include "cli/arguments.h"
-#include "cli/ptkcommands.h" // Output
+#include "arguments.h"
+#include "commandoutput.h"
 
 #include <QStringList>
 

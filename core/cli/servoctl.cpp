@@ -1,14 +1,14 @@
 // servoctl commands: ports, decode, packet (frame builder) and their argument handling.
-#include "cli/servoctl.h"
+#include "servoctl.h"
 
-#include "cli/arguments.h"
-#include "cli/decoder.h"
-#include "cli/detectcommands.h"
-#include "cli/feetechcommands.h"
-#include "cli/ptkcommands.h"
-#include "feetech/feetechpacket.h"
-#include "ptk/ptkparameters.h"
-#include "util/hex.h"
+#include "arguments.h"
+#include "decoder.h"
+#include "detectcommands.h"
+#include "feetechcommands.h"
+#include "feetechpacket.h"
+#include "hex.h"
+#include "ptkcommands.h"
+#include "ptkparameters.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,5 +1,5 @@
 // Stream splitting and stray-byte entries shared by the PTK and Feetech frame explanations.
-#include "link/framedescription.h"
+#include "framedescription.h"
 
 #include <QCoreApplication>
 

@@ -1,7 +1,7 @@
 // What a frame on the wire means, as the packet log and `servoctl decode` show it.
 #pragma once
 
-#include "link/streamframer.h"
+#include "streamframer.h"
 
 #include <QByteArray>
 #include <QJsonObject>

@@ -1,7 +1,7 @@
 // Link mirror: takes a worker's link news on the GUI thread and keeps the latest of each.
-#include "link/linkmirror.h"
+#include "linkmirror.h"
 
-#include "link/linksession.h"
+#include "linksession.h"
 
 namespace seriallink {
 

@@ -1,7 +1,7 @@
 // The GUI thread's copy of a link's state and counters, with its packet log passed on.
 #pragma once
 
-#include "link/linktypes.h"
+#include "linktypes.h"
 
 #include <QObject>
 

@@ -1,7 +1,7 @@
 // Link session: opening, closing, a failing port and reopening it, for both servo families.
-#include "link/linksession.h"
+#include "linksession.h"
 
-#include "link/transport.h"
+#include "transport.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

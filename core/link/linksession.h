@@ -1,8 +1,8 @@
 // The life of one serial link, shared by both servo families: port, request engine, state, reopen.
 #pragma once
 
-#include "link/linktypes.h"
-#include "link/requestengine.h"
+#include "linktypes.h"
+#include "requestengine.h"
 
 #include <QObject>
 #include <QTimer>

@@ -1,8 +1,8 @@
 // Packet log model: batched inserts, a capacity bound, pause, counts and tab-separated export.
-#include "link/packetlogmodel.h"
+#include "packetlogmodel.h"
 
-#include "util/hex.h"
-#include "util/savefile.h"
+#include "hex.h"
+#include "savefile.h"
 
 #include <QDateTime>
 #include <QIODevice>

@@ -1,7 +1,7 @@
 // A bounded, batched table of every frame in and out of a link, for the packet log view.
 #pragma once
 
-#include "link/linktypes.h"
+#include "linktypes.h"
 
 #include <QAbstractTableModel>
 #include <QTimer>

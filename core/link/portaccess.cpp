@@ -1,5 +1,5 @@
 // Port access diagnosis: permission or lock, and which program holds a busy port (Linux /proc).
-#include "link/portaccess.h"
+#include "portaccess.h"
 
 #include <QCoreApplication>
 #include <QDir>

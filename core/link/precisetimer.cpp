@@ -1,5 +1,5 @@
 // Microsecond single-shot timer: a timerfd watched by the event loop, a QTimer elsewhere.
-#include "link/precisetimer.h"
+#include "precisetimer.h"
 
 #include <QSocketNotifier>
 #include <QTimer>

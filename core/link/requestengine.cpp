@@ -1,7 +1,7 @@
 // Request engine: queueing, timeouts, retries, echo suppression, counters and the packet log.
-#include "link/requestengine.h"
+#include "requestengine.h"
 
-#include "link/transport.h"
+#include "transport.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -2,9 +2,9 @@
 // polls, timeouts from the moment the frame has left, bounded retries, echo suppression.
 #pragma once
 
-#include "link/linktypes.h"
-#include "link/precisetimer.h"
-#include "link/streamframer.h"
+#include "linktypes.h"
+#include "precisetimer.h"
+#include "streamframer.h"
 
 #include <QElapsedTimer>
 #include <QObject>

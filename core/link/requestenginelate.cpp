@@ -1,8 +1,8 @@
 // Request engine: late answers (matched to the requests they answer), input between requests,
 // and the default wait that follows the slow end of the link's answers.
-#include "link/requestengine.h"
+#include "requestengine.h"
 
-#include "link/transport.h"
+#include "transport.h"
 
 #include <QCoreApplication>
 

@@ -1,5 +1,5 @@
 // Generic resynchronising framer shared by the PTK and Feetech codecs.
-#include "link/streamframer.h"
+#include "streamframer.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Serial transport over QSerialPort, and the table of port error messages.
-#include "link/transport.h"
+#include "transport.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>

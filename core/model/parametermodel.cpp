@@ -1,5 +1,5 @@
 // Parameter model: device value vs pending edit, states, range checks and write plans.
-#include "model/parametermodel.h"
+#include "parametermodel.h"
 
 #include <QCoreApplication>
 

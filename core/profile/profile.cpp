@@ -1,7 +1,7 @@
 // JSON parameter profiles: writing in user units, strict validation on reading, the device diff.
-#include "profile/profile.h"
+#include "profile.h"
 
-#include "util/jsonfile.h"
+#include "jsonfile.h"
 
 #include <QCoreApplication>
 #include <QHash>

@@ -1,7 +1,7 @@
 // JSON parameter profiles: a servo's settings saved to a file, validated, diffed with the device.
 #pragma once
 
-#include "model/parametermodel.h"
+#include "parametermodel.h"
 
 #include <QByteArray>
 #include <QDateTime>

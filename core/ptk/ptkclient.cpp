@@ -1,7 +1,7 @@
 // PTK client: the worker thread's lifetime, queued calls into the session, and model updates.
-#include "ptk/ptkclient.h"
+#include "ptkclient.h"
 
-#include "link/linksession.h"
+#include "linksession.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

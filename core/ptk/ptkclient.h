@@ -2,12 +2,12 @@
 // parameter model in step with what the servo reports.
 #pragma once
 
-#include "link/linkmirror.h"
-#include "link/linktypes.h"
-#include "link/requestengine.h"
-#include "link/sessionthread.h"
-#include "model/parametermodel.h"
-#include "ptk/ptksession.h"
+#include "linkmirror.h"
+#include "linktypes.h"
+#include "parametermodel.h"
+#include "ptksession.h"
+#include "requestengine.h"
+#include "sessionthread.h"
 
 #include <QElapsedTimer>
 #include <QObject>

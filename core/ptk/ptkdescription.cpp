@@ -1,7 +1,7 @@
 // PTK frame explanation: which query, write or reply a frame is and the parameter values it holds.
-#include "ptk/ptkdescription.h"
+#include "ptkdescription.h"
 
-#include "ptk/ptkparameters.h"
+#include "ptkparameters.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

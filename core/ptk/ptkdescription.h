@@ -1,7 +1,7 @@
 // What PTK frames mean: queries, writes and replies explained for the packet log and decoder.
 #pragma once
 
-#include "link/framedescription.h"
+#include "framedescription.h"
 
 #include <QByteArray>
 #include <QString>

@@ -1,5 +1,5 @@
 // PTK frame encoding and decoding (spec/ptk-protocol.md, "Frames").
-#include "ptk/ptkframe.h"
+#include "ptkframe.h"
 
 namespace ptk {
 

@@ -1,7 +1,7 @@
 // PTK wire frames: 10-byte requests (queries and writes) and 9-byte replies, big-endian.
 #pragma once
 
-#include "link/streamframer.h"
+#include "streamframer.h"
 
 #include <QByteArray>
 #include <QtGlobal>

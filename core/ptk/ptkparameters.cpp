@@ -1,5 +1,5 @@
 // PTK read map, write map and parameter metadata as data (spec/ptk-protocol.md).
-#include "ptk/ptkparameters.h"
+#include "ptkparameters.h"
 
 #include <QCoreApplication>
 

@@ -1,8 +1,8 @@
 // The thirteen PTK parameters and where each sits in the eight query replies and twelve writes.
 #pragma once
 
-#include "model/parametermodel.h"
-#include "ptk/ptkframe.h"
+#include "parametermodel.h"
+#include "ptkframe.h"
 
 #include <QString>
 #include <QStringList>

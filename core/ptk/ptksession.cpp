@@ -1,8 +1,8 @@
 // PTK session: the poll loop, the Apply sequence with its gaps, read-back and reconnection.
-#include "ptk/ptksession.h"
+#include "ptksession.h"
 
-#include "link/linksession.h"
-#include "ptk/ptkdescription.h"
+#include "linksession.h"
+#include "ptkdescription.h"
 
 #include <QCoreApplication>
 

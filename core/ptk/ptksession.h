@@ -1,10 +1,10 @@
 // The PTK programmer session: polls the eight queries, writes N1..N12 and verifies by reading back.
 #pragma once
 
-#include "link/linktypes.h"
-#include "link/requestengine.h"
-#include "ptk/ptkframe.h"
-#include "ptk/ptkparameters.h"
+#include "linktypes.h"
+#include "ptkframe.h"
+#include "ptkparameters.h"
+#include "requestengine.h"
 
 #include <QElapsedTimer>
 #include <QObject>

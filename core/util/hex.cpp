@@ -1,5 +1,5 @@
 // Hex text <-> bytes conversions shared by the CLI, the packet log and the tests.
-#include "util/hex.h"
+#include "hex.h"
 
 #include <QCoreApplication>
 

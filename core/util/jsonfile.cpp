@@ -1,7 +1,7 @@
 // Reading, checking and saving the JSON files that profiles and poses are kept in.
-#include "util/jsonfile.h"
+#include "jsonfile.h"
 
-#include "util/savefile.h"
+#include "savefile.h"
 
 #include <QCoreApplication>
 #include <QDir>

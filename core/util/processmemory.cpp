@@ -1,5 +1,5 @@
 // Reads VmRSS and VmHWM from /proc/self/status for the benchmarks' memory figures.
-#include "util/processmemory.h"
+#include "processmemory.h"
 
 #include <QFile>
 

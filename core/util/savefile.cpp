@@ -1,5 +1,5 @@
 // SavingFile: QSaveFile for files, a direct write for devices and pipes.
-#include "util/savefile.h"
+#include "savefile.h"
 
 #include <QFile>
 #include <QFileInfo>

@@ -1,5 +1,5 @@
 // Loading ServoBench's translations (and Qt's own) for the language the user or the system asks.
-#include "util/translations.h"
+#include "translations.h"
 
 #include <QCoreApplication>
 #include <QLibraryInfo>

@@ -1,5 +1,5 @@
 // Signal plumbing for servosim and servoctl: a self-pipe on Unix, a polled flag elsewhere.
-#include "util/unixsignals.h"
+#include "unixsignals.h"
 
 #include <QSocketNotifier>
 #include <QTimer>

@@ -1,11 +1,11 @@
 // The PTK workspace: Read and Apply through ptk::Client, the page's busy state while it writes,
 // and profiles saved from and loaded into the form.
-#include "ptkgui/ptkworkspace.h"
+#include "ptkworkspace.h"
 
-#include "common/parameterpage.h"
-#include "common/profileactions.h"
-#include "model/parametermodel.h"
-#include "ptk/ptkclient.h"
+#include "parametermodel.h"
+#include "parameterpage.h"
+#include "profileactions.h"
+#include "ptkclient.h"
 
 #include <QDir>
 #include <QVBoxLayout>

@@ -1,0 +1,166 @@
+// Setting up one motor of a robot: find the one servo on the bus, give it its ID, rate, settings.
+#pragma once
+
+#include "applyflow.h"
+#include "busexchange.h"
+#include "bustypes.h"
+#include "guidedflows.h"
+
+#include <QMap>
+#include <QMetaType>
+#include <QObject>
+#include <QStringList>
+#include <QVector>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace feetech {
+
+// What a motor is to become: its ID, rate and settings, and the model it must be.
+struct MotorTarget
+{
+    QString joint; // for messages ("shoulder_lift"); may be empty
+    int id = 1;
+    qint32 baud = 1000000;
+    QString model; // as the model table names it; empty: any model with a register table
+    QMap<QString, qint32> settings; // register units by key, written and verified
+};
+
+// Whether the servo is of the model the model table names `model` (aliases included).
+bool servoIsModel(const ServoInfo &servo, QStringView model);
+
+// What a look at every baud rate found.
+struct MotorSearch
+{
+    enum class Verdict {
+        NoServo, // nothing answers at any rate (or the one servo stopped answering)
+        OneServo, // exactly one servo, of the right model: `servo`
+        SeveralServos, // answers at several rates, from several IDs, or replies that collide
+        SharedId, // two servos at one ID: clean PING and identity, garbled position reads
+        WrongModel, // one servo, of another model (or one without a register table)
+        Failed // the port closed, or the search was stopped
+    };
+    Verdict verdict = Verdict::NoServo;
+    ServoInfo servo; // OneServo, WrongModel, SharedId: who answers
+    int count = 0; // servos seen; with `collided`, at least that many
+    bool collided = false; // some replies collided, so more may answer than could be counted
+    bool stopped = false; // cancelled before it could decide
+    QStringList answering; // SeveralServos: "ID 1 at 1 Mbps", "several at 500 kbps"...
+    QString message; // for the user: what was found and what to do
+
+    bool foundOne() const { return verdict == Verdict::OneServo; }
+    // The bus is not as a set-up needs it, and the message does not say so itself.
+    bool needsNothingWrittenNote() const
+    {
+        return verdict == Verdict::NoServo || verdict == Verdict::SeveralServos
+            || verdict == Verdict::SharedId;
+    }
+};
+
+// A find or a set-up: what was found, what it became, and each step done.
+struct MotorSetupResult
+{
+    bool ok = false;
+    bool setUp = false; // a set-up (false: only a find)
+    bool stopped = false; // cancelled between two steps
+    MotorSearch search;
+    ServoInfo from; // where the servo was found
+    ServoInfo to; // where it answers afterwards
+    QMap<QString, qint32> verified; // the settings as read back
+    QStringList steps; // what was done, one line each
+    QString message;
+};
+
+// One joint as a check of the bus sees it: is its servo already set up, at its ID and rate?
+struct JointCheck
+{
+    int id = 0;
+    QString model; // the model the joint needs
+    // The joint's settings; those kept in EEPROM are compared (RAM ones start afresh at
+    // power-up, so they say nothing about an earlier set-up).
+    QMap<QString, qint32> settings;
+    std::optional<ServoInfo> found; // who answers at that ID at the template's rate
+    QStringList differing; // "p_gain is 32, not 16": EEPROM settings that do not hold
+
+    bool done() const;
+    // Why a servo at the joint's ID is not set up as the joint (empty when done or nothing
+    // answers).
+    QString problem() const;
+};
+
+// Finds the one servo on the bus and sets it up, from the steps of the exchange, the guided
+// flows and the apply flow; checks which joints of a robot already answer where they should.
+// Nothing is written unless exactly one servo of the right model answers. Lives in the
+// session's thread; the session runs each call as one operation.
+class MotorSetup : public QObject
+{
+    Q_OBJECT
+
+public:
+    using SearchDone = std::function<void(const MotorSearch &search)>;
+    using SetupDone = std::function<void(const MotorSetupResult &result)>;
+    using CheckDone = std::function<void(const QVector<JointCheck> &joints)>;
+
+    MotorSetup(BusExchange &bus, GuidedFlows &flows, ApplyFlow &apply, QObject *parent = nullptr);
+
+    // A broadcast PING at every rate, then the one servo's identity and a few reads of its
+    // feedback (two servos at one ID garble those), then its model against target.model.
+    void find(const MotorTarget &target, SearchDone done);
+    // find, then (only for exactly one servo of the right model) the ID, the rate, the
+    // settings written with the EEPROM unlocked and locked again, every one read back.
+    void setUp(const MotorTarget &target, SetupDone done);
+    // Asks each joint's ID at `baud` who answers there, and reads its EEPROM settings.
+    void check(qint32 baud, const QVector<JointCheck> &joints, CheckDone done);
+    // Stops before the next step (a step under way ends first, so the EEPROM is locked).
+    void cancel() { m_cancelled = true; }
+    // Called when find, setUp or check is queued (not when it starts), so a Stop pressed
+    // while it waits in the queue still stops it.
+    void clearCancel() { m_cancelled = false; }
+
+signals:
+    // Step `step` of `steps` has begun: `text` says what it does.
+    void progress(int step, int steps, const QString &text);
+
+private:
+    // A READ of addresses 0-8 of `id`; a quiet one is no error when nothing answers.
+    static Exchange identityRequest(quint8 id, bool quiet);
+    struct Search;
+    void search(const MotorTarget &target, SearchDone done);
+    void probeRate(std::shared_ptr<Search> search, int index);
+    void decide(std::shared_ptr<Search> search);
+    void confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud);
+    // Whether two servos share the one ID found (sharedidcheck.h), then its model.
+    void checkShared(std::shared_ptr<Search> search);
+    void judgeModel(std::shared_ptr<Search> search);
+    void endSearch(std::shared_ptr<Search> search, MotorSearch::Verdict verdict,
+                   const QString &message);
+
+    struct Run;
+    void changeId(std::shared_ptr<Run> run);
+    void changeBaud(std::shared_ptr<Run> run);
+    void writeSettings(std::shared_ptr<Run> run);
+    void verifySettings(std::shared_ptr<Run> run);
+    // Reads the registers `keys` of the servo into *values (register units by key).
+    void readSettings(const ServoInfo &servo, const QStringList &keys,
+                      std::shared_ptr<QMap<QString, qint32>> values, StepDone next);
+    bool stoppedBefore(std::shared_ptr<Run> run, const QString &step);
+    void finish(std::shared_ptr<Run> run, bool ok, const QString &message);
+
+    void checkNext(qint32 baud, std::shared_ptr<QVector<JointCheck>> joints, int index,
+                   CheckDone done);
+    void compareSettings(JointCheck &joint, std::function<void()> then);
+
+    BusExchange &m_bus;
+    GuidedFlows &m_flows;
+    ApplyFlow &m_apply;
+    bool m_cancelled = false;
+    QMetaObject::Connection m_reading; // collects what readSettings reads
+};
+
+} // namespace feetech
+
+Q_DECLARE_METATYPE(feetech::MotorTarget)
+Q_DECLARE_METATYPE(feetech::MotorSetupResult)
+Q_DECLARE_METATYPE(feetech::JointCheck)

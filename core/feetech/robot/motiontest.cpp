@@ -1,0 +1,487 @@
+// Step and sweep tests: a phase enum advanced by telemetry samples and one deadline timer.
+#include "motiontest.h"
+
+#include "busclient.h"
+#include "goalrange.h"
+#include "registerkeys.h"
+
+#include <QLocale>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace feetech {
+
+using namespace registerkeys;
+
+namespace {
+
+constexpr qint32 kPositionMode = 0; // register 33: every family's mode 0 holds a position
+constexpr double kMicroseconds = 1e6;
+
+std::chrono::milliseconds millisecondsOf(double seconds)
+{
+    return std::chrono::milliseconds(qint64(std::ceil(seconds * 1000.0)));
+}
+
+} // namespace
+
+int SweepSummary::reachedCount() const
+{
+    return int(
+        std::count_if(legs.cbegin(), legs.cend(), [](const SweepLeg &leg) { return leg.reached; }));
+}
+
+std::optional<double> SweepSummary::meanReachedSeconds() const
+{
+    double sum = 0.0;
+    int count = 0;
+    for (const SweepLeg &leg : legs) {
+        if (leg.reached) {
+            sum += leg.seconds;
+            ++count;
+        }
+    }
+    if (count == 0)
+        return std::nullopt;
+    return sum / count;
+}
+
+MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *parent)
+    : QObject(parent)
+    , m_client(client)
+    , m_timing(timing)
+    , m_timer(new QTimer(this))
+{
+    m_timer->setSingleShot(true);
+    connect(m_timer, &QTimer::timeout, this, &MotionTest::onTimeout);
+    connect(m_client, &BusClient::telemetryReceived, this, &MotionTest::onTelemetry);
+    connect(m_client, &BusClient::operationFinished, this, &MotionTest::onOperationFinished);
+    connect(m_client, &BusClient::statusChanged, this, &MotionTest::onStatusChanged);
+    connect(m_client, &BusClient::allTorqueOffRequested, this,
+            [this] { fail(tr("All torque off: the test was stopped.")); });
+    // The guard held the servo or switched it off: the next leg must not drive it again.
+    connect(m_client, &BusClient::guardEvent, this, [this](const GuardEvent &event) {
+        if (isRunning() && event.stage == GuardStage::Acted && event.id == m_id
+            && event.baud == m_baud)
+            fail(tr("The test was stopped: %1").arg(event.message));
+    });
+    connect(m_client, &BusClient::servosChanged, this, [this] {
+        if (isRunning() && servoIndex() < 0)
+            fail(tr("%1 is no longer on the bus: the test was stopped.").arg(servoName()));
+    });
+}
+
+MotionTest::~MotionTest()
+{
+    if (isRunning() && m_client) {
+        m_client->releaseServo(m_id, m_baud);
+        restoreMonitor();
+    }
+}
+
+void MotionTest::setTiming(const MotionTiming &timing)
+{
+    m_timing = timing;
+}
+
+bool MotionTest::validate(const MotionPlan &plan, Kind kind, QString *error) const
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (isRunning())
+        return refuse(tr("A test is already running."));
+    if (!m_client->isConnected())
+        return refuse(tr("The bus is not connected."));
+    if (plan.index < 0 || plan.index >= m_client->servoCount())
+        return refuse(tr("No servo is selected."));
+    const ServoInfo &info = m_client->servo(plan.index).info;
+    if (m_client->isIdentifying(plan.index))
+        return refuse(tr("Servo ID %1 is being identified; wait until it is back.").arg(info.id));
+    if (!info.hasTable())
+        return refuse(tr("This servo's model is unknown: ServoBench does not move it."));
+    const RegisterTable &table = info.table();
+    const auto range = goalRange(*m_client, plan.index);
+    if (!range || !table.find(kTorqueEnable))
+        return refuse(tr("This servo has no goal position register."));
+    const auto mode = m_client->parameters(plan.index)->deviceValue(kMode);
+    if (table.find(kMode) && mode && *mode != kPositionMode)
+        return refuse(tr("Servo ID %1 is not in position mode: set its operating mode to "
+                         "position first.")
+                          .arg(info.id));
+    if (!range->contains(plan.from) || !range->contains(plan.to)) {
+        const QString limits =
+            range->fromAngleLimits ? tr("the servo's angle limits") : tr("the goal position range");
+        return refuse(tr("From (%1) and to (%2) must lie within %3, %4 to %5 steps.")
+                          .arg(plan.from)
+                          .arg(plan.to)
+                          .arg(limits)
+                          .arg(range->minimum)
+                          .arg(range->maximum));
+    }
+    if (std::abs(double(plan.to) - double(plan.from)) <= m_timing.reachTolerance)
+        return refuse(
+            tr("From and to must be more than %1 steps apart.").arg(m_timing.reachTolerance));
+    for (const auto &[key, value] :
+         {std::pair(kGoalSpeed, plan.goalSpeed), std::pair(kAcceleration, plan.acceleration)}) {
+        const Register *reg = table.find(key);
+        if (reg && (value < reg->minimum || value > reg->maximum))
+            return refuse(tr("%1 must lie between %2 and %3.")
+                              .arg(reg->label)
+                              .arg(reg->minimum)
+                              .arg(reg->maximum));
+    }
+    if (kind == Kind::Step
+        && !(plan.recordSeconds > 0.0 && plan.recordSeconds <= MotionPlan::kMaximumRecordSeconds))
+        return refuse(tr("The recording must last more than 0 and at most %1 seconds.")
+                          .arg(MotionPlan::kMaximumRecordSeconds));
+    if (kind == Kind::Sweep && (plan.legs < 1 || plan.legs > MotionPlan::kMaximumLegs))
+        return refuse(tr("A sweep has 1 to %1 legs.").arg(MotionPlan::kMaximumLegs));
+    return true;
+}
+
+bool MotionTest::startStep(const MotionPlan &plan, QString *error)
+{
+    return start(plan, Kind::Step, error);
+}
+
+bool MotionTest::startSweep(const MotionPlan &plan, QString *error)
+{
+    return start(plan, Kind::Sweep, error);
+}
+
+bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
+{
+    if (!validate(plan, kind, error))
+        return false;
+    const ServoInfo &info = m_client->servo(plan.index).info;
+    m_plan = plan;
+    m_kind = kind;
+    m_id = info.id;
+    m_baud = info.baud;
+    m_writesInFlight = 0;
+    m_lastPosition.reset();
+    m_lastSampleUs.reset();
+    m_recording.clear();
+    m_summary = {};
+    m_leg = 0;
+    if (!ensureMonitor(plan.index, error))
+        return false;
+
+    // The goal before the torque: a servo switched on first would head for a stale goal.
+    const RegisterTable &table = info.table();
+    QVector<model::WriteItem> values;
+    if (table.find(kAcceleration))
+        values.append({kAcceleration, plan.acceleration});
+    if (table.find(kGoalSpeed))
+        values.append({kGoalSpeed, plan.goalSpeed});
+    values.append({kGoalPosition, plan.from});
+    const auto on = table.torqueValue(TorqueMode::On);
+    if (on
+        && m_client->parameters(plan.index)->deviceValue(kTorqueEnable)
+            != std::optional<qint64>(*on))
+        values.append({kTorqueEnable, *on});
+    if (!write(values, error)) {
+        restoreMonitor();
+        return false;
+    }
+    startApproach();
+    m_client->holdServo(plan.index, tr("A motion test is running on servo ID %1.").arg(m_id));
+    emit runningChanged(true); // isRunning() is true by now
+    return true;
+}
+
+void MotionTest::cancel()
+{
+    if (!isRunning())
+        return;
+    // Stop where it is rather than let it finish a move nobody watches any more.
+    const int index = servoIndex();
+    if (m_lastPosition && index >= 0) {
+        const auto range = goalRange(*m_client, index);
+        const qint64 here = std::llround(*m_lastPosition);
+        if (range && range->contains(here))
+            m_client->writeValues(index, {{kGoalPosition, here}});
+    }
+    fail(tr("The test was stopped."));
+}
+
+int MotionTest::servoIndex() const
+{
+    return m_client->indexOf(m_id, m_baud);
+}
+
+QString MotionTest::servoName() const
+{
+    return tr("Servo ID %1").arg(m_id);
+}
+
+bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
+{
+    const int index = servoIndex();
+    if (index < 0) {
+        if (error)
+            *error = tr("%1 is no longer on the bus.").arg(servoName());
+        return false;
+    }
+    if (!m_client->writeValues(index, values, error))
+        return false;
+    ++m_writesInFlight;
+    m_commandUs = steadyMicroseconds();
+    return true;
+}
+
+bool MotionTest::ensureMonitor(int index, QString *error)
+{
+    m_monitor = {};
+    const TelemetryOptions &options = m_client->monitorOptions();
+    const bool running = m_client->isMonitoring();
+    const bool fastEnough = options.rateHz == 0.0 || options.rateHz >= m_timing.monitorRateHz;
+    if (running && m_client->isMonitored(index) && fastEnough)
+        return true; // already streaming this servo fast enough: leave it alone
+    m_monitor.wasRunning = running;
+    m_monitor.rateHz = options.rateHz;
+    QVector<int> indexes;
+    if (running) {
+        for (const ServoInfo &servo : options.servos) {
+            m_monitor.servos.append({servo.id, servo.baud});
+            const int other = m_client->indexOf(servo.id, servo.baud);
+            if (other >= 0 && !indexes.contains(other))
+                indexes.append(other);
+        }
+    }
+    if (!indexes.contains(index))
+        indexes.append(index);
+    const double rate = running && fastEnough ? options.rateHz : m_timing.monitorRateHz;
+    if (!m_client->startMonitor(indexes, rate, error))
+        return false;
+    m_monitor.changed = true;
+    return true;
+}
+
+void MotionTest::restoreMonitor()
+{
+    if (!m_monitor.changed)
+        return;
+    m_monitor.changed = false;
+    QVector<int> indexes;
+    for (const auto &[id, baud] : std::as_const(m_monitor.servos)) {
+        const int index = m_client->indexOf(id, baud);
+        if (index >= 0)
+            indexes.append(index);
+    }
+    if (m_monitor.wasRunning && !indexes.isEmpty() && m_client->isConnected()
+        && m_client->startMonitor(indexes, m_monitor.rateHz))
+        return;
+    m_client->stopMonitor();
+}
+
+void MotionTest::setPhase(Phase phase, std::chrono::milliseconds timeout)
+{
+    m_phase = phase;
+    m_timer->start(timeout);
+}
+
+bool MotionTest::isReached(double position, bool moving, double goal) const
+{
+    return !moving && std::abs(position - goal) <= m_timing.reachTolerance;
+}
+
+void MotionTest::startApproach()
+{
+    setPhase(Phase::Approaching, m_timing.reachTimeout);
+    emit progress(tr("Moving to the start position %1…").arg(m_plan.from));
+}
+
+void MotionTest::onTelemetry(const QVector<FeedbackSample> &samples)
+{
+    if (!isRunning())
+        return;
+    for (const FeedbackSample &sample : samples) {
+        if (sample.id != m_id || sample.baud != m_baud)
+            continue;
+        const auto position = sample.value(Quantity::Position);
+        if (!position)
+            continue;
+        // A sample from before the current goal went out says nothing about reaching it.
+        const bool current = sample.steadyUs >= m_commandUs;
+        switch (m_phase) {
+        case Phase::Approaching:
+            if (current && isReached(*position, sample.moving, m_plan.from)) {
+                m_lastPosition = position;
+                m_lastSampleUs = sample.steadyUs;
+                if (m_kind == Kind::Step)
+                    beginStep();
+                else
+                    beginLeg();
+                return; // the rest of the batch belongs to the next phase's clock
+            }
+            break;
+        case Phase::Recording:
+        case Phase::Collecting: {
+            const double seconds = double(sample.steadyUs - m_commandUs) / kMicroseconds;
+            if (seconds >= 0.0 && seconds <= m_plan.recordSeconds)
+                m_recording.append({seconds, *position});
+            break;
+        }
+        case Phase::Leg:
+            m_summary.legs[m_leg].finalPosition = *position;
+            if (current && isReached(*position, sample.moving, m_legTarget)) {
+                m_lastPosition = position;
+                endLeg(true, sample.steadyUs);
+                return;
+            }
+            break;
+        case Phase::Dwell:
+        case Phase::Idle:
+            break;
+        }
+        m_lastPosition = position;
+        m_lastSampleUs = sample.steadyUs;
+    }
+}
+
+void MotionTest::beginStep()
+{
+    // The last position before the step is where the step starts from: a servo held a few
+    // steps off `from` (or one that never got there) is measured from where it really was.
+    m_stepStart = m_lastPosition.value_or(double(m_plan.from));
+    QString error;
+    if (!write({{kGoalPosition, m_plan.to}}, &error)) {
+        fail(error);
+        return;
+    }
+    m_recording.clear();
+    if (m_lastSampleUs)
+        m_recording.append({double(*m_lastSampleUs - m_commandUs) / kMicroseconds, m_stepStart});
+    setPhase(Phase::Recording, millisecondsOf(m_plan.recordSeconds));
+    emit progress(tr("Step to %1: recording for %2 s…")
+                      .arg(m_plan.to)
+                      .arg(QLocale().toString(m_plan.recordSeconds, 'g', 3)));
+}
+
+void MotionTest::finishStep()
+{
+    const auto metrics = analyseStep(m_recording, m_stepStart, double(m_plan.to));
+    if (!metrics) {
+        fail(tr("Too few position samples arrived during the recording (%1): does %2 answer?")
+                 .arg(m_recording.size())
+                 .arg(servoName()));
+        return;
+    }
+    finish();
+    emit progress(tr("Step test done."));
+    emit stepFinished(*metrics);
+}
+
+void MotionTest::beginLeg()
+{
+    // Legs alternate from → to, to → from, starting at `from`.
+    m_legTarget = m_leg % 2 == 0 ? m_plan.to : m_plan.from;
+    SweepLeg leg;
+    leg.target = m_legTarget;
+    m_summary.legs.append(leg);
+    QString error;
+    if (!write({{kGoalPosition, m_legTarget}}, &error)) {
+        fail(error);
+        return;
+    }
+    setPhase(Phase::Leg, m_timing.reachTimeout);
+    emit progress(
+        tr("Sweep leg %1 of %2: moving to %3…").arg(m_leg + 1).arg(m_plan.legs).arg(m_legTarget));
+}
+
+void MotionTest::endLeg(bool reached, qint64 atUs)
+{
+    SweepLeg &leg = m_summary.legs[m_leg];
+    leg.reached = reached;
+    leg.seconds = double(atUs - m_commandUs) / kMicroseconds;
+    ++m_leg;
+    if (m_leg >= m_plan.legs) {
+        const SweepSummary summary = m_summary;
+        finish();
+        emit progress(tr("Sweep done: %1 of %2 legs reached their goal.")
+                          .arg(summary.reachedCount())
+                          .arg(summary.legs.size()));
+        emit sweepFinished(summary);
+        return;
+    }
+    setPhase(Phase::Dwell, m_timing.dwell);
+}
+
+void MotionTest::onTimeout()
+{
+    switch (m_phase) {
+    case Phase::Approaching:
+        if (!m_lastPosition) {
+            fail(tr("No position samples arrived from %1: is it answering?").arg(servoName()));
+            return;
+        }
+        // Held off by a load, say: the test goes on from where the servo is.
+        emit progress(tr("%1 did not settle at %2 within %3 s; going on from %4.")
+                          .arg(servoName())
+                          .arg(m_plan.from)
+                          .arg(double(m_timing.reachTimeout.count()) / 1000.0)
+                          .arg(std::lround(*m_lastPosition)));
+        if (m_kind == Kind::Step)
+            beginStep();
+        else
+            beginLeg();
+        break;
+    case Phase::Recording:
+        setPhase(Phase::Collecting, m_timing.finalSamplesGrace);
+        break;
+    case Phase::Collecting:
+        finishStep();
+        break;
+    case Phase::Leg:
+        endLeg(false, steadyMicroseconds());
+        break;
+    case Phase::Dwell:
+        beginLeg();
+        break;
+    case Phase::Idle:
+        break;
+    }
+}
+
+void MotionTest::onOperationFinished(const OperationResult &result)
+{
+    if (!isRunning() || m_writesInFlight <= 0 || result.operation != Operation::Write
+        || result.servo.id != m_id || result.servo.baud != m_baud)
+        return;
+    --m_writesInFlight;
+    if (!result.ok)
+        fail(tr("Writing to %1 failed: %2").arg(servoName(), result.message));
+}
+
+void MotionTest::onStatusChanged(const seriallink::ConnectionStatus &status)
+{
+    if (status.state == seriallink::ConnectionState::Disconnected
+        || status.state == seriallink::ConnectionState::Lost)
+        fail(tr("The bus was disconnected: the test was stopped."));
+}
+
+void MotionTest::finish()
+{
+    m_timer->stop();
+    m_phase = Phase::Idle;
+    if (m_client)
+        m_client->releaseServo(m_id, m_baud);
+    restoreMonitor();
+    emit runningChanged(false);
+}
+
+void MotionTest::fail(const QString &message)
+{
+    if (!isRunning())
+        return;
+    finish();
+    emit failed(message);
+}
+
+} // namespace feetech

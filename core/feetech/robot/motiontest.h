@@ -1,0 +1,175 @@
+// Step and sweep tests of one Feetech servo: goal writes paced by timers and the telemetry stream,
+// with step-response metrics computed from the recorded positions.
+#pragma once
+
+#include "parametermodel.h"
+#include "stepresponse.h"
+#include "telemetry.h"
+
+#include <QMetaType>
+#include <QObject>
+#include <QPointer>
+#include <QVector>
+
+#include <chrono>
+#include <optional>
+
+class QTimer;
+
+namespace seriallink {
+struct ConnectionStatus;
+}
+
+namespace feetech {
+
+class BusClient;
+struct OperationResult;
+
+// Timing and thresholds of the tests; tests inject short ones.
+struct MotionTiming
+{
+    static constexpr std::chrono::milliseconds kDefaultReachTimeout {8000};
+    static constexpr std::chrono::milliseconds kDefaultDwell {400};
+    static constexpr std::chrono::milliseconds kDefaultFinalSamplesGrace {200};
+    static constexpr double kDefaultMonitorRateHz = 100.0;
+    static constexpr double kDefaultReachTolerance = 10.0; // steps
+
+    // How long to wait for the servo to reach a position (the step's start, a sweep leg's end)
+    // before going on without it.
+    std::chrono::milliseconds reachTimeout = kDefaultReachTimeout;
+    // A sweep's pause at each end.
+    std::chrono::milliseconds dwell = kDefaultDwell;
+    // After a step's recording window: time for the last telemetry batch to arrive.
+    std::chrono::milliseconds finalSamplesGrace = kDefaultFinalSamplesGrace;
+    // The stream rate the tests need; a slower (or absent) stream is raised to it meanwhile.
+    double monitorRateHz = kDefaultMonitorRateHz;
+    // "Reached": this close to the goal and the moving flag clear.
+    double reachTolerance = kDefaultReachTolerance;
+};
+
+// What to move and how; positions, speed and acceleration in register units.
+struct MotionPlan
+{
+    static constexpr double kMaximumRecordSeconds = 30.0;
+    static constexpr int kMaximumLegs = 1000;
+
+    int index = -1; // the servo, as BusClient numbers them
+    qint32 from = 0;
+    qint32 to = 0;
+    qint32 goalSpeed = 0; // written where the family has goal_speed (0: the servo's maximum)
+    qint32 acceleration = 0; // written where the family has acceleration (0: the maximum)
+    double recordSeconds = 2.0; // step test: how long the response is recorded after the step
+    int legs = 4; // sweep: moves, alternating from → to, to → from, ...
+};
+
+struct SweepLeg
+{
+    qint32 target = 0;
+    bool reached = false; // within the tolerance and still before the reach timeout
+    double seconds = 0.0; // from the goal write to reaching it (the timeout when not reached)
+    std::optional<double> finalPosition; // the last position seen during the leg
+};
+
+struct SweepSummary
+{
+    QVector<SweepLeg> legs;
+    int reachedCount() const;
+    std::optional<double> meanReachedSeconds() const;
+};
+
+class MotionTest : public QObject
+{
+    Q_OBJECT
+
+public:
+    enum class Kind { Step, Sweep };
+
+    explicit MotionTest(BusClient *client, const MotionTiming &timing = {},
+                        QObject *parent = nullptr);
+    ~MotionTest() override; // a running test leaves the monitor as it found it
+
+    const MotionTiming &timing() const { return m_timing; }
+    void setTiming(const MotionTiming &timing); // for the next test
+
+    // Whether `plan` can run now; *error says why not (in words for the user).
+    bool validate(const MotionPlan &plan, Kind kind, QString *error = nullptr) const;
+    // Step test: torque on, goal = from, wait until it is there and still, then goal = to at
+    // t0 and record the position for plan.recordSeconds; stepFinished with the metrics.
+    // False and *error when nothing was started (and nothing sent).
+    bool startStep(const MotionPlan &plan, QString *error = nullptr);
+    // Sweep: torque on, goal = from, then plan.legs moves alternating between to and from, each
+    // waiting until it is reached (or the reach timeout), then a dwell; sweepFinished.
+    bool startSweep(const MotionPlan &plan, QString *error = nullptr);
+    // Stops a running test (failed is emitted); the horn is held where it was last seen.
+    void cancel();
+
+    bool isRunning() const { return m_phase != Phase::Idle; }
+    Kind kind() const { return m_kind; }
+    const MotionPlan &plan() const { return m_plan; }
+    // The position samples of the last step test, in seconds since the step command (the one
+    // before the command has a negative time).
+    const QVector<TimedValue> &recording() const { return m_recording; }
+
+signals:
+    void runningChanged(bool running);
+    void progress(const QString &message);
+    void stepFinished(const feetech::StepMetrics &metrics);
+    void sweepFinished(const feetech::SweepSummary &summary);
+    void failed(const QString &message);
+
+private:
+    enum class Phase { Idle, Approaching, Recording, Collecting, Leg, Dwell };
+
+    struct MonitorState
+    {
+        bool changed = false; // we started or raised the stream
+        bool wasRunning = false;
+        QVector<QPair<quint8, qint32>> servos; // ID and baud of what it streamed
+        double rateHz = 0.0;
+    };
+
+    bool start(const MotionPlan &plan, Kind kind, QString *error);
+    int servoIndex() const; // -1 once the servo is gone
+    bool write(const QVector<model::WriteItem> &values, QString *error);
+    bool ensureMonitor(int index, QString *error);
+    void restoreMonitor();
+    void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
+    void onOperationFinished(const feetech::OperationResult &result);
+    void onStatusChanged(const seriallink::ConnectionStatus &status);
+    void onTimeout();
+    void startApproach();
+    void beginStep();
+    void finishStep();
+    void beginLeg();
+    void endLeg(bool reached, qint64 atUs);
+    void finish();
+    void fail(const QString &message);
+    void setPhase(Phase phase, std::chrono::milliseconds timeout);
+    bool isReached(double position, bool moving, double goal) const;
+    QString servoName() const;
+
+    QPointer<BusClient> m_client; // the page may outlive the bus client at shutdown
+    MotionTiming m_timing;
+    QTimer *m_timer = nullptr; // the current phase's deadline
+    Phase m_phase = Phase::Idle;
+    Kind m_kind = Kind::Step;
+    MotionPlan m_plan;
+    quint8 m_id = 0;
+    qint32 m_baud = 0;
+    MonitorState m_monitor;
+    int m_writesInFlight = 0;
+    qint64 m_commandUs = 0; // when the current goal was written (steady clock)
+    std::optional<double> m_lastPosition;
+    std::optional<qint64> m_lastSampleUs;
+    // Step test.
+    QVector<TimedValue> m_recording;
+    double m_stepStart = 0.0;
+    // Sweep.
+    int m_leg = 0;
+    qint32 m_legTarget = 0;
+    SweepSummary m_summary;
+};
+
+} // namespace feetech
+
+Q_DECLARE_METATYPE(feetech::SweepSummary)

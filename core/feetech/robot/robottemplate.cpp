@@ -1,0 +1,324 @@
+// Robot templates: reading and checking them, writing them back, the built-in arms.
+#include "robottemplate.h"
+
+#include "jsonfile.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStandardPaths>
+
+#include <cmath>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(RobotTemplate)
+};
+
+} // namespace
+
+namespace feetech {
+
+namespace {
+
+constexpr char kMarker[] = "servobench-robot";
+constexpr int kVersion = 1;
+constexpr char kNameKey[] = "name";
+constexpr char kBaudKey[] = "baud";
+constexpr char kSettingsKey[] = "settings";
+constexpr char kJointsKey[] = "joints";
+constexpr char kIdKey[] = "id";
+constexpr char kModelKey[] = "model";
+constexpr char kFullTurnKey[] = "full_turn";
+
+// Registers whose writing has a flow of its own: a template never sets them.
+constexpr const char16_t *kFlowOnlyKeys[] = {u"id", u"baud_rate", u"lock", u"torque_enable"};
+
+util::JsonFormat robotFormat()
+{
+    util::JsonFormat format;
+    format.marker = kMarker;
+    format.version = kVersion;
+    format.keys = {kNameKey, kBaudKey, kSettingsKey, kJointsKey};
+    format.notAnObject = Tr::tr("not a ServoBench robot template (the document is not a JSON "
+                                "object)");
+    format.wrongMarker = Tr::tr("not a ServoBench robot template (\"%1\" is not \"%2\")");
+    format.newerVersion = Tr::tr("the template has format version %1 and was written by a newer "
+                                 "ServoBench; this version reads format version %2 and older");
+    return format;
+}
+
+bool isWhole(const QJsonValue &value)
+{
+    return value.isDouble() && std::isfinite(value.toDouble())
+        && value.toDouble() == std::floor(value.toDouble()) && std::abs(value.toDouble()) < 1e9;
+}
+
+bool isJointName(const QString &name)
+{
+    if (name.isEmpty() || name.size() > 64 || !name.at(0).isLetter())
+        return false;
+    return std::all_of(name.begin(), name.end(), [](QChar c) {
+        return (c.isLetterOrNumber() && c.unicode() < 128) || c == u'_';
+    });
+}
+
+// Register values by key, checked against `table`; false and *why naming the first wrong one.
+bool readSettings(const QJsonValue &value, const RegisterTable &table,
+                  QMap<QString, qint32> &settings, QString *why)
+{
+    if (value.isUndefined())
+        return true;
+    if (!value.isObject()) {
+        *why =
+            Tr::tr("\"%1\" must be an object of register values").arg(QLatin1String(kSettingsKey));
+        return false;
+    }
+    const QJsonObject object = value.toObject();
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const Register *reg = table.find(it.key());
+        if (!reg || !reg->writable()) {
+            *why = Tr::tr("settings: \"%1\" is no writable register of %2 servos")
+                       .arg(it.key(), familyName(table.family()));
+            return false;
+        }
+        if (std::any_of(std::begin(kFlowOnlyKeys), std::end(kFlowOnlyKeys),
+                        [&](const char16_t *key) { return it.key() == QStringView(key); })) {
+            *why =
+                Tr::tr("settings: \"%1\" is set by its own flow, not by a template").arg(it.key());
+            return false;
+        }
+        if (!isWhole(it.value())) {
+            *why = Tr::tr("settings: \"%1\" must be a whole number").arg(it.key());
+            return false;
+        }
+        const qint64 number = qint64(it.value().toDouble());
+        if (number < reg->minimum || number > reg->maximum) {
+            *why = Tr::tr("settings: \"%1\" = %2 is out of range (%3 to %4)")
+                       .arg(it.key())
+                       .arg(number)
+                       .arg(reg->minimum)
+                       .arg(reg->maximum);
+            return false;
+        }
+        settings.insert(it.key(), qint32(number));
+    }
+    return true;
+}
+
+bool readJoint(const QJsonValue &value, const QJsonValue &common, RobotJoint &joint, QString *why)
+{
+    if (!value.isObject()) {
+        *why = Tr::tr("every joint must be a JSON object");
+        return false;
+    }
+    const QJsonObject object = value.toObject();
+    QString unknown;
+    if (!util::onlyKnownKeys(object, {kNameKey, kIdKey, kModelKey, kFullTurnKey, kSettingsKey},
+                             &unknown)) {
+        *why = Tr::tr("unknown entry \"%1\"").arg(unknown);
+        return false;
+    }
+    joint.name = object.value(QLatin1String(kNameKey)).toString();
+    if (!isJointName(joint.name)) {
+        *why = Tr::tr("\"%1\" must be a name of letters, digits and _ that starts with a letter")
+                   .arg(QLatin1String(kNameKey));
+        return false;
+    }
+    const QJsonValue id = object.value(QLatin1String(kIdKey));
+    if (!isWhole(id) || id.toInt() < 0 || id.toInt() > kMaxServoId) {
+        *why = Tr::tr("\"%1\" must be a servo ID from 0 to %2")
+                   .arg(QLatin1String(kIdKey))
+                   .arg(kMaxServoId);
+        return false;
+    }
+    joint.id = id.toInt();
+    joint.model = object.value(QLatin1String(kModelKey)).toString();
+    const auto model = ModelTable::builtIn().findByName(joint.model);
+    if (!model || !model->family) {
+        *why = Tr::tr("\"%1\": \"%2\" is no model with a known register table")
+                   .arg(QLatin1String(kModelKey), joint.model);
+        return false;
+    }
+    const QJsonValue fullTurn = object.value(QLatin1String(kFullTurnKey));
+    if (!fullTurn.isUndefined() && !fullTurn.isBool()) {
+        *why = Tr::tr("\"%1\" must be true or false").arg(QLatin1String(kFullTurnKey));
+        return false;
+    }
+    joint.fullTurn = fullTurn.toBool(false);
+    const RegisterTable &table = RegisterTable::forFamily(*model->family);
+    return readSettings(common, table, joint.settings, why)
+        && readSettings(object.value(QLatin1String(kSettingsKey)), table, joint.settings, why);
+}
+
+} // namespace
+
+const RobotJoint *RobotTemplate::joint(QStringView name) const
+{
+    const auto found = std::find_if(joints.begin(), joints.end(),
+                                    [name](const RobotJoint &j) { return j.name == name; });
+    return found == joints.end() ? nullptr : &*found;
+}
+
+std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const QString &source,
+                                                   QString *error)
+{
+    QString why;
+    const auto fail = [&](const QString &what) -> std::optional<RobotTemplate> {
+        if (error)
+            *error = source + QStringLiteral(": ") + what;
+        return std::nullopt;
+    };
+    const auto root = util::parseVersionedObject(json, robotFormat(), &why);
+    if (!root)
+        return fail(why);
+    RobotTemplate robot;
+    robot.name = root->value(QLatin1String(kNameKey)).toString().trimmed();
+    if (robot.name.isEmpty())
+        return fail(Tr::tr("\"%1\" must be a name for the robot").arg(QLatin1String(kNameKey)));
+    const QJsonValue baud = root->value(QLatin1String(kBaudKey));
+    if (!baud.isUndefined()) {
+        if (!isWhole(baud) || !baudCode(qint32(baud.toDouble())))
+            return fail(
+                Tr::tr("\"%1\" must be a Feetech baud rate in bps").arg(QLatin1String(kBaudKey)));
+        robot.baud = qint32(baud.toDouble());
+    }
+    const QJsonArray joints = root->value(QLatin1String(kJointsKey)).toArray();
+    if (joints.isEmpty() || joints.size() > kMaxServoId)
+        return fail(Tr::tr("\"%1\" must list the robot's joints").arg(QLatin1String(kJointsKey)));
+    const QJsonValue common = root->value(QLatin1String(kSettingsKey));
+    for (int i = 0; i < joints.size(); ++i) {
+        RobotJoint joint;
+        const QString where = Tr::tr("joint %1").arg(i + 1);
+        if (!readJoint(joints.at(i), common, joint, &why))
+            return fail(
+                where + (joint.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(joint.name))
+                + QStringLiteral(": ") + why);
+        for (const RobotJoint &other : std::as_const(robot.joints)) {
+            if (other.name == joint.name)
+                return fail(
+                    Tr::tr("joint %1: the name \"%2\" is used twice").arg(i + 1).arg(joint.name));
+            if (other.id == joint.id)
+                return fail(Tr::tr("joint %1 (%2): ID %3 is already %4's")
+                                .arg(i + 1)
+                                .arg(joint.name)
+                                .arg(joint.id)
+                                .arg(other.name));
+        }
+        robot.joints.append(joint);
+    }
+    return robot;
+}
+
+MotorTarget motorTarget(const RobotTemplate &robot, const RobotJoint &joint)
+{
+    return {joint.name, joint.id, robot.baud, joint.model, joint.settings};
+}
+
+QVector<JointCheck> jointChecks(const RobotTemplate &robot)
+{
+    QVector<JointCheck> joints;
+    for (const RobotJoint &joint : robot.joints)
+        joints.append({joint.id, joint.model, joint.settings, std::nullopt, {}});
+    return joints;
+}
+
+QByteArray robotTemplateToJson(const RobotTemplate &robot)
+{
+    QJsonArray joints;
+    for (const RobotJoint &joint : robot.joints) {
+        QJsonObject settings;
+        for (auto it = joint.settings.begin(); it != joint.settings.end(); ++it)
+            settings.insert(it.key(), it.value());
+        joints.append(QJsonObject {{QLatin1String(kNameKey), joint.name},
+                                   {QLatin1String(kIdKey), joint.id},
+                                   {QLatin1String(kModelKey), joint.model},
+                                   {QLatin1String(kFullTurnKey), joint.fullTurn},
+                                   {QLatin1String(kSettingsKey), settings}});
+    }
+    const QJsonObject root {{QLatin1String(util::kFormatKey), QLatin1String(kMarker)},
+                            {QLatin1String(util::kVersionKey), kVersion},
+                            {QLatin1String(kNameKey), robot.name},
+                            {QLatin1String(kBaudKey), robot.baud},
+                            {QLatin1String(kJointsKey), joints}};
+    return QJsonDocument(root).toJson();
+}
+
+const QVector<RobotTemplate> &builtInRobotTemplates()
+{
+    static const QVector<RobotTemplate> templates = [] {
+        QVector<RobotTemplate> loaded;
+        const QDir folder(QStringLiteral(":/robots"));
+        for (const QString &name :
+             folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+            QString error;
+            const QString path = folder.filePath(name);
+            auto robot = loadRobotTemplate(path, &error);
+            if (!robot)
+                qFatal("ServoBench: built-in robot template is invalid: %s", qPrintable(error));
+            loaded.append(std::move(*robot));
+        }
+        return loaded;
+    }();
+    return templates;
+}
+
+std::optional<RobotTemplate> loadRobotTemplate(const QString &path, QString *error)
+{
+    QString why;
+    const auto bytes = util::readFile(path, util::kMaxJsonFileBytes,
+                                      Tr::tr("the file is too large for a robot template"), &why);
+    if (!bytes) {
+        if (error)
+            *error = util::fileError(path, why);
+        return std::nullopt;
+    }
+    return robotTemplateFromJson(*bytes, QDir::toNativeSeparators(path), error);
+}
+
+bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, QString *error)
+{
+    QString why;
+    if (util::writeFileAtomically(path, robotTemplateToJson(robot), &why))
+        return true;
+    if (error)
+        *error = util::notSavedError(path, why);
+    return false;
+}
+
+QString userRobotTemplateFolder()
+{
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+        .filePath(QStringLiteral("robots"));
+}
+
+QVector<RobotTemplate> availableRobotTemplates(QStringList *problems)
+{
+    QVector<RobotTemplate> templates = builtInRobotTemplates();
+    const QDir folder(userRobotTemplateFolder());
+    for (const QString &name :
+         folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        QString error;
+        if (auto robot = loadRobotTemplate(folder.filePath(name), &error))
+            templates.append(std::move(*robot));
+        else if (problems)
+            problems->append(error);
+    }
+    return templates;
+}
+
+QString robotDisplayName(const QString &name)
+{
+    return QCoreApplication::translate("RobotTemplate", name.toUtf8().constData());
+}
+
+QString jointDisplayName(const QString &name)
+{
+    return QCoreApplication::translate("Joint", name.toUtf8().constData());
+}
+
+} // namespace feetech

@@ -1,0 +1,620 @@
+// Feetech bus client: queued calls into the worker's session; servo list and model updates.
+#include "busclient.h"
+
+#include "linksession.h"
+#include "registerkeys.h"
+#include "servoparameters.h"
+#include "sharedidcheck.h"
+
+#include <QCoreApplication>
+#include <QHash>
+
+#include <algorithm>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
+};
+
+} // namespace
+
+namespace feetech {
+
+namespace {
+
+// Whether `why` refuses the request (it is not empty); it goes to *error then.
+bool refused(const QString &why, QString *error)
+{
+    if (why.isEmpty())
+        return false;
+    if (error)
+        *error = why;
+    return true;
+}
+
+} // namespace
+
+BusClient::BusClient(const SessionTiming &timing, QObject *parent)
+    : QObject(parent)
+    , m_worker(QStringLiteral("feetech-link"), timing)
+{
+    m_clock.start();
+    Session *session = m_worker.session();
+    // First, so the client has settled before the main window hears of a change.
+    connect(&m_link, &seriallink::LinkMirror::statusChanged, this, [this](const auto &status) {
+        if (status.state == seriallink::ConnectionState::Disconnected
+            || status.state == seriallink::ConnectionState::Lost)
+            forgetWork(); // a backstop: the session reports what it dropped
+        emit statusChanged(status);
+    });
+    m_link.follow(&session->link());
+    connect(session, &Session::scanProgress, this, &BusClient::scanProgress);
+    connect(session, &Session::servoFound, this, &BusClient::onServoFound);
+    connect(session, &Session::scanFinished, this, [this](bool completed, const QString &m) {
+        m_scanning = false;
+        emit busyChanged(isBusy());
+        emit scanFinished(completed, m);
+    });
+    connect(session, &Session::memoryRead, this, &BusClient::onMemoryRead);
+    connect(session, &Session::statusSeen, this, [this](quint8 id, qint32 baud, quint8 status) {
+        const int index = indexOf(id, baud);
+        if (index < 0)
+            return;
+        m_servos.at(std::size_t(index))->statusByte = status;
+        emit servoUpdated(index);
+    });
+    connect(session, &Session::progress, this, &BusClient::progress);
+    connect(session, &Session::telemetry, this, &BusClient::onTelemetry);
+    connect(session, &Session::telemetryStats, this, [this](const TelemetryStats &stats) {
+        if (stats.stream != m_stream)
+            return; // a stream replaced or stopped since
+        m_telemetryStats = stats;
+        emit telemetryStatsChanged(stats);
+        if (!stats.running && m_monitoring) { // stopped, or the link went down
+            m_monitoring = false;
+            emit monitoringChanged(false);
+        }
+    });
+    connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
+    connectMotorSetup(session);
+    connectHealth(session);
+    connectGuard(session);
+}
+
+BusClient::~BusClient() = default;
+
+bool BusClient::isBusy() const
+{
+    return m_scanning || std::any_of(m_pending.begin(), m_pending.end(), [](const Pending &p) {
+               return p.kind == Work::Foreground;
+           });
+}
+
+void BusClient::connectTo(const QString &portName, qint32 baud, seriallink::EchoMode echo)
+{
+    clearServos();
+    m_worker.run([portName, baud, echo](Session &s) { s.open(portName, baud, echo); });
+}
+
+void BusClient::disconnectFrom()
+{
+    m_worker.run([](Session &s) { s.close(); });
+}
+
+void BusClient::scan(const ScanOptions &options)
+{
+    if (m_scanning)
+        return;
+    clearServos();
+    m_scanning = true;
+    emit busyChanged(true);
+    m_worker.run([options](Session &s) { s.scan(options); });
+}
+
+void BusClient::cancelScan()
+{
+    // Not queued behind the scan: the flag must be seen while it runs.
+    Session *session = m_worker.session();
+    QMetaObject::invokeMethod(
+        session, [session] { session->cancelScan(); }, Qt::QueuedConnection);
+}
+
+model::ParameterModel *BusClient::parameters(int index) const
+{
+    if (index < 0 || index >= servoCount())
+        return nullptr;
+    return m_servos.at(std::size_t(index))->parameters.get();
+}
+
+int BusClient::indexOf(quint8 id, qint32 baud) const
+{
+    for (int i = 0; i < servoCount(); ++i) {
+        if (servo(i).info.id == id && servo(i).info.baud == baud)
+            return i;
+    }
+    return -1;
+}
+
+QVector<int> BusClient::idsInUse() const
+{
+    QVector<int> ids;
+    for (const auto &entry : m_servos)
+        ids.append(entry->info.id);
+    return ids;
+}
+
+QString BusClient::writeBlocker(int index) const
+{
+    if (!isConnected())
+        return Tr::tr("The bus is not connected.");
+    if (index < 0 || index >= servoCount())
+        return Tr::tr("No servo is selected.");
+    // What stays true first: a shared ID or an unknown model is no reason to wait.
+    if (servo(index).info.sharedId)
+        return sharedIdRefusal(servo(index).info.id);
+    if (!servo(index).info.hasTable())
+        return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+    if (isBusy())
+        return Tr::tr("Another operation is still running.");
+    return {};
+}
+
+QString BusClient::commandBlocker(int index) const
+{
+    // An unknown model may be rebooted or cleared; a shared ID is not sent anything.
+    if (index >= 0 && index < servoCount() && servo(index).info.sharedId)
+        return sharedIdRefusal(servo(index).info.id);
+    if (isBusy())
+        return Tr::tr("Another operation is still running.");
+    return {};
+}
+
+void BusClient::onServoFound(const ServoInfo &info)
+{
+    auto entry = std::make_unique<Servo>();
+    entry->info = info;
+    if (info.statusBits != 0) // the scan's answer showed error bits: the tree shows them
+        entry->statusByte = info.statusBits;
+    entry->parameters = std::make_unique<model::ParameterModel>();
+    entry->parameters->setDefinitions(modelDefinitions(info.table()));
+    m_servos.push_back(std::move(entry));
+    // Fastest rate first, then by ID: the order the tree shows.
+    std::stable_sort(m_servos.begin(), m_servos.end(), [](const auto &a, const auto &b) {
+        return a->info.baud != b->info.baud ? a->info.baud > b->info.baud : a->info.id < b->info.id;
+    });
+    emit servosChanged();
+}
+
+void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
+                             ReadSource source, quint8 statusByte)
+{
+    const int index = indexOf(id, baud);
+    if (index < 0)
+        return;
+    Servo &entry = *m_servos.at(std::size_t(index));
+    entry.statusByte = statusByte;
+    const qint64 now = m_clock.elapsed() + 1; // 0 means "never read"
+    for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes)) {
+        // A background refresh may have been read before the write went out: only the
+        // read-back settles what is being written.
+        if (source == ReadSource::Refresh
+            && entry.parameters->state(item.reg->key) == model::State::Writing)
+            continue;
+        entry.parameters->setDeviceValue(item.reg->key, item.value, now);
+    }
+    emit servoUpdated(index);
+}
+
+void BusClient::onOperationFinished(const OperationResult &result)
+{
+    if (result.operation == Operation::Scan)
+        return; // a scan ends through scanFinished
+    if (result.operation == Operation::Guard)
+        return; // the guard's own: reported as a guardEvent
+    if (result.operation == Operation::TorqueOff) {
+        // It overtook everything queued, so it has no place in m_pending.
+        emit operationFinished(result);
+        return;
+    }
+    Pending target;
+    if (!m_pending.empty()) {
+        target = m_pending.front();
+        // A step of an apply chain: the operation goes on, with the servo where it left it.
+        if (result.final)
+            m_pending.pop_front();
+        else
+            m_pending.front() = {result.servo.id, result.servo.baud, target.kind};
+    }
+    const int index = indexOf(target.id, target.baud);
+    if (index >= 0) {
+        Servo &entry = *m_servos.at(std::size_t(index));
+        model::ParameterModel &parameters = *entry.parameters;
+        if (result.operation == Operation::Read && result.ok && target.kind != Work::Background)
+            entry.read = true;
+        // A control write never marks anything Writing: its failure leaves an apply alone.
+        if (result.operation == Operation::Write && !result.ok && target.kind != Work::Control) {
+            // What was on its way and never came back verified keeps its edit: Unknown when it
+            // went out (it may have landed), Failed when it never did.
+            for (const model::Definition &definition : parameters.definitions()) {
+                if (parameters.state(definition.key) != model::State::Writing)
+                    continue;
+                if (result.writesSent)
+                    parameters.markUnknown(definition.key);
+                else
+                    parameters.markFailed(definition.key);
+            }
+        }
+        const bool moved = result.servo.id != entry.info.id || result.servo.baud != entry.info.baud;
+        if (result.ok && moved
+            && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
+                || result.operation == Operation::FactoryReset)) {
+            entry.info = result.servo;
+            emit servosChanged();
+        }
+        if (result.ok && result.operation == Operation::ChangeId)
+            parameters.revert(QStringLiteral("id"));
+        if (result.ok && result.operation == Operation::ChangeBaud)
+            parameters.revert(QStringLiteral("baud_rate"));
+        const bool flow = result.operation == Operation::ChangeId
+            || result.operation == Operation::ChangeBaud
+            || result.operation == Operation::FactoryReset
+            || result.operation == Operation::CalibrateMiddle;
+        if (result.ok && result.operation == Operation::FactoryReset)
+            parameters.revertAll(); // the flow changed the servo under every edit
+        if (result.ok && result.operation == Operation::CalibrateMiddle) {
+            parameters.revert(QStringLiteral("position_offset"));
+            parameters.revert(QStringLiteral("torque_enable"));
+        }
+        if (result.ok && flow && result.final) // what the flow changed shows
+            readServo(indexOf(entry.info.id, entry.info.baud));
+    }
+    if (result.operation == Operation::Identify)
+        m_identifying.reset();
+    if (target.kind == Work::Foreground)
+        emit busyChanged(isBusy());
+    if (target.kind != Work::Background) { // a failed refresh is retried by the next one
+        OperationResult reported = result;
+        reported.control = target.kind == Work::Control;
+        emit operationFinished(reported);
+    }
+    onMotorWorkFinished(result);
+}
+
+void BusClient::forgetWork()
+{
+    const bool wasBusy = isBusy();
+    m_pending.clear();
+    m_scanning = false;
+    m_identifying.reset();
+    // The link went down with writes on their way: whether they landed is not known.
+    for (const auto &entry : m_servos) {
+        model::ParameterModel &parameters = *entry->parameters;
+        for (const model::Definition &definition : parameters.definitions()) {
+            if (parameters.state(definition.key) == model::State::Writing)
+                parameters.markUnknown(definition.key);
+        }
+    }
+    if (wasBusy)
+        emit busyChanged(false);
+}
+
+bool BusClient::applyAll(int index, QString *error)
+{
+    return startApply(index, error, true);
+}
+
+bool BusClient::apply(int index, QString *error)
+{
+    return startApply(index, error, false);
+}
+
+bool BusClient::startApply(int index, QString *error, bool withAddress)
+{
+    if (refused(writeBlocker(index), error))
+        return false;
+    model::ParameterModel &parameters = *this->parameters(index);
+    // Without the address, the ID and baud rate edits stay pending for their own flows.
+    const auto plan =
+        planApply(servo(index).info, parameters, idsInUse(),
+                  withAddress ? ApplyScope::Everything : ApplyScope::Registers, error);
+    if (!plan)
+        return false;
+    // Exactly the planned registers are Writing; an ID or baud edit stays an edit until its
+    // flow has moved the servo.
+    parameters.takeWritePlan({QStringLiteral("id"), QStringLiteral("baud_rate")});
+    return startOperation(
+        index, error, Work::Foreground,
+        [plan = *plan](Session &s, const ServoInfo &info) { s.apply(info, plan); });
+}
+
+bool BusClient::startOperation(int index, QString *error, Work kind,
+                               const std::function<void(Session &, const ServoInfo &)> &work)
+{
+    if (index < 0 || index >= servoCount()) {
+        if (error)
+            *error = Tr::tr("No servo is selected.");
+        return false;
+    }
+    if (!isConnected()) {
+        if (error)
+            *error = Tr::tr("The bus is not connected.");
+        return false;
+    }
+    const ServoInfo info = servo(index).info;
+    const bool wasBusy = isBusy();
+    m_pending.push_back({info.id, info.baud, kind});
+    if (kind == Work::Foreground && !wasBusy)
+        emit busyChanged(true);
+    m_worker.run([work, info](Session &s) { work(s, info); });
+    return true;
+}
+
+void BusClient::readServo(int index)
+{
+    startOperation(index, nullptr, Work::Foreground,
+                   [](Session &s, const ServoInfo &info) { s.read(info, {}, ReadSource::Read); });
+}
+
+void BusClient::refreshRam(int index)
+{
+    if (isBusy() || !m_pending.empty() || index < 0 || index >= servoCount())
+        return; // the next refresh will come; real work goes first
+    const ServoInfo &info = servo(index).info;
+    if (!info.hasTable())
+        return;
+    const QVector<Block> ram = info.table().ramBlocks();
+    startOperation(index, nullptr, Work::Background, [ram](Session &s, const ServoInfo &target) {
+        s.read(target, ram, ReadSource::Refresh);
+    });
+}
+
+bool BusClient::changeId(int index, int newId, QString *error)
+{
+    if (refused(writeBlocker(index), error))
+        return false;
+    const QVector<int> inUse = idsInUse();
+    if (inUse.contains(newId) && newId != servo(index).info.id) {
+        if (error)
+            *error = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
+        return false;
+    }
+    return startOperation(
+        index, error, Work::Foreground,
+        [newId, inUse](Session &s, const ServoInfo &info) { s.changeId(info, newId, inUse); });
+}
+
+bool BusClient::changeBaud(int index, qint32 newBaud, QString *error)
+{
+    if (refused(writeBlocker(index), error))
+        return false;
+    return startOperation(
+        index, error, Work::Foreground,
+        [newBaud](Session &s, const ServoInfo &info) { s.changeBaud(info, newBaud); });
+}
+
+bool BusClient::calibrateMiddle(int index, QString *error)
+{
+    if (refused(writeBlocker(index), error))
+        return false;
+    if (middleCalibration(servo(index).info) == MiddleCalibration::Unsupported) {
+        if (error)
+            *error = Tr::tr("This servo has no middle calibration (SCS servos have no offset "
+                            "register).");
+        return false;
+    }
+    return startOperation(index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &info) { s.calibrateMiddle(info); });
+}
+
+bool BusClient::factoryReset(int index, QString *error)
+{
+    if (refused(writeBlocker(index), error))
+        return false;
+    return startOperation(index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &info) { s.factoryReset(info); });
+}
+
+bool BusClient::reboot(int index, QString *error)
+{
+    if (refused(commandBlocker(index), error))
+        return false;
+    return startOperation(index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &info) { s.reboot(info); });
+}
+
+bool BusClient::clearStatus(int index, QString *error)
+{
+    if (refused(commandBlocker(index), error))
+        return false;
+    return startOperation(index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
+}
+
+bool BusClient::lockEeprom(int index, QString *error)
+{
+    if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
+        return false;
+    return startOperation(index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &info) { s.lockEeprom(info); });
+}
+
+// ---- live monitoring and control
+
+bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString *error,
+                             int missesBeforeMissing)
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!isConnected())
+        return refuse(Tr::tr("The bus is not connected."));
+    if (indexes.isEmpty())
+        return refuse(Tr::tr("Choose at least one servo to monitor."));
+    if (rateHz < 0)
+        return refuse(Tr::tr("The rate cannot be negative."));
+    TelemetryOptions options;
+    options.rateHz = rateHz;
+    options.missesBeforeMissing = std::max(1, missesBeforeMissing);
+    for (const int index : indexes) {
+        if (index < 0 || index >= servoCount())
+            return refuse(Tr::tr("No servo is selected."));
+        const ServoInfo &info = servo(index).info;
+        if (!info.hasTable())
+            return refuse(Tr::tr("Servo %1 is of an unknown model: its feedback cannot be "
+                                 "decoded.")
+                              .arg(info.id));
+        options.servos.append(info);
+    }
+    options.stream = ++m_stream;
+    m_monitorOptions = options;
+    m_worker.run([options](Session &s) { s.startTelemetry(options); });
+    if (!m_monitoring) {
+        m_monitoring = true;
+        emit monitoringChanged(true);
+    }
+    return true;
+}
+
+void BusClient::stopMonitor()
+{
+    ++m_stream;
+    m_worker.run([](Session &s) { s.stopTelemetry(); });
+    if (m_monitoring) {
+        m_monitoring = false;
+        emit monitoringChanged(false);
+    }
+}
+
+bool BusClient::isMonitored(int index) const
+{
+    if (!m_monitoring || index < 0 || index >= servoCount())
+        return false;
+    const ServoInfo &info = servo(index).info;
+    return std::any_of(
+        m_monitorOptions.servos.begin(), m_monitorOptions.servos.end(),
+        [&info](const ServoInfo &s) { return s.id == info.id && s.baud == info.baud; });
+}
+
+std::optional<FeedbackSample> BusClient::latestSample(int index) const
+{
+    if (index < 0 || index >= servoCount())
+        return std::nullopt;
+    return servo(index).latest;
+}
+
+void BusClient::onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream)
+{
+    if (!m_monitoring || stream != m_stream)
+        return; // the last batch of a stream already stopped or replaced
+    for (const FeedbackSample &sample : samples) {
+        const int index = indexOf(sample.id, sample.baud);
+        if (index >= 0)
+            m_servos.at(std::size_t(index))->latest = sample;
+    }
+    emit telemetryReceived(samples);
+}
+
+bool BusClient::writeValues(int index, const QVector<model::WriteItem> &values, QString *error)
+{
+    if (!isConnected() || index < 0 || index >= servoCount() || !servo(index).info.hasTable()
+        || servo(index).info.sharedId) {
+        // The same reasons as for any write, except a busy bus: control writes queue up.
+        const QString blocker = writeBlocker(index);
+        if (error)
+            *error = blocker.isEmpty() ? Tr::tr("No servo is selected.") : blocker;
+        return false;
+    }
+    if (values.isEmpty()) {
+        if (error)
+            *error = Tr::tr("Nothing to write.");
+        return false;
+    }
+    const auto writes = encodeWrites(servo(index).info.table(), values, error);
+    if (!writes)
+        return false;
+    const QVector<RegisterWrite> items = *writes;
+    return startOperation(index, error, Work::Control,
+                          [items](Session &s, const ServoInfo &info) { s.write(info, items); });
+}
+
+void BusClient::allTorqueOff()
+{
+    emit allTorqueOffRequested();
+    QVector<qint32> bauds;
+    QVector<ServoInfo> servos;
+    for (const auto &entry : m_servos) {
+        if (!bauds.contains(entry->info.baud))
+            bauds.append(entry->info.baud);
+        servos.append(entry->info);
+    }
+    if (bauds.isEmpty() && status().baud > 0)
+        bauds.append(status().baud); // nothing scanned yet: the rate the port is at
+    m_worker.run([bauds, servos](Session &s) { s.torqueOffAll(bauds, servos); });
+}
+
+bool BusClient::moveAll(const QVector<Goal> &goals, QString *error)
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!isConnected())
+        return refuse(Tr::tr("The bus is not connected."));
+    if (goals.isEmpty())
+        return refuse(Tr::tr("Nothing to move."));
+    // One SYNC WRITE per baud rate, servos in the order given.
+    QVector<qint32> bauds;
+    QHash<qint32, QVector<SyncWriteEntry>> entries;
+    for (const Goal &goal : goals) {
+        if (goal.index < 0 || goal.index >= servoCount())
+            return refuse(Tr::tr("No servo is selected."));
+        const ServoInfo &info = servo(goal.index).info;
+        if (!info.hasTable())
+            return refuse(
+                Tr::tr("Servo %1 is of an unknown model; nothing is written to it.").arg(info.id));
+        QString why;
+        const auto encoded =
+            encodeWrites(info.table(), {{QStringLiteral("goal_position"), goal.position}}, &why);
+        if (!encoded || encoded->size() != 1)
+            return refuse(Tr::tr("Servo %1: %2").arg(info.id).arg(why));
+        if (!bauds.contains(info.baud))
+            bauds.append(info.baud);
+        entries[info.baud].append({info.id, encoded->first().bytes});
+    }
+    const Register *goal =
+        servo(goals.first().index).info.table().find(QStringLiteral("goal_position"));
+    const int address = goal ? goal->address : 42;
+    for (const qint32 baud : std::as_const(bauds)) {
+        const QVector<SyncWriteEntry> group = entries.value(baud);
+        m_pending.push_back({0, baud, Work::Control});
+        m_worker.run([baud, address, group](Session &s) {
+            s.syncWrite(baud, address, int(group.first().data.size()), group);
+        });
+    }
+    return true;
+}
+
+void BusClient::clearServos()
+{
+    if (m_servos.empty())
+        return;
+    m_servos.clear();
+    emit servosChanged();
+}
+
+std::optional<PositionRange> goalRange(const BusClient &client, int index)
+{
+    if (index < 0 || index >= client.servoCount() || !client.servo(index).info.hasTable())
+        return std::nullopt;
+    const model::ParameterModel *parameters = client.parameters(index);
+    return goalRange(client.servo(index).info.table(),
+                     parameters->deviceValue(registerkeys::kMinAngleLimit),
+                     parameters->deviceValue(registerkeys::kMaxAngleLimit));
+}
+
+} // namespace feetech

@@ -1,0 +1,270 @@
+// The GUI thread's handle on a Feetech bus: the session in its worker thread, the servos found,
+// and one parameter model per servo kept in step with what the servo reports.
+#pragma once
+
+#include "feetechsession.h"
+#include "goalrange.h"
+#include "linkmirror.h"
+#include "linktypes.h"
+#include "parametermodel.h"
+#include "servohealth.h"
+#include "sessionthread.h"
+#include "telemetry.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QObject>
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace feetech {
+
+struct Servo
+{
+    ServoInfo info;
+    std::unique_ptr<model::ParameterModel> parameters;
+    std::optional<quint8> statusByte; // of its last reply
+    bool read = false; // its table has been read at least once
+    std::optional<FeedbackSample> latest; // the newest telemetry sample
+};
+
+class BusClient : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit BusClient(const SessionTiming &timing = {}, QObject *parent = nullptr);
+    ~BusClient() override;
+
+    // The link's state, counters and packet log, on this thread.
+    seriallink::LinkMirror *link() { return &m_link; }
+    const seriallink::ConnectionStatus &status() const { return m_link.status(); }
+    const seriallink::LinkCounters &counters() const { return m_link.counters(); }
+    bool isConnected() const { return m_link.isConnected(); }
+    bool isScanning() const { return m_scanning; }
+    bool isBusy() const;
+
+    void connectTo(const QString &portName, qint32 baud = 1000000,
+                   seriallink::EchoMode echo = seriallink::EchoMode::Auto);
+    void disconnectFrom();
+
+    // Forgets the servos found before, then looks for servos as `options` say.
+    void scan(const ScanOptions &options);
+    void cancelScan();
+
+    int servoCount() const { return int(m_servos.size()); }
+    const Servo &servo(int index) const { return *m_servos.at(std::size_t(index)); }
+    model::ParameterModel *parameters(int index) const;
+    int indexOf(quint8 id, qint32 baud) const; // -1 when not known
+    QVector<int> idsInUse() const; // at every baud rate scanned
+
+    // Why changes cannot be made to servo `index` now (empty when they can).
+    QString writeBlocker(int index) const;
+    // Why a command that is no register write (reboot, clear status) cannot be sent now, or
+    // nothing.
+    QString commandBlocker(int index) const;
+
+    void readServo(int index);
+    // Present values and other RAM registers, in the background; skipped while busy.
+    void refreshRam(int index);
+    // Writes the servo's edits (except ID and baud rate: see changeId / changeBaud) and reads
+    // them back. False and *error when nothing was sent.
+    bool apply(int index, QString *error = nullptr);
+    // Everything pending: the register edits, then an ID edit through changeId, then a baud
+    // edit through changeBaud, each only once the one before has succeeded.
+    bool applyAll(int index, QString *error = nullptr);
+    bool changeId(int index, int newId, QString *error = nullptr);
+    bool changeBaud(int index, qint32 newBaud, QString *error = nullptr);
+    bool calibrateMiddle(int index, QString *error = nullptr);
+    bool factoryReset(int index, QString *error = nullptr);
+    bool reboot(int index, QString *error = nullptr);
+    bool clearStatus(int index, QString *error = nullptr);
+    // Whether servo `index`'s EEPROM lock reads open (lock = 0) in its last read; false when it
+    // is locked, not read yet or has no lock register.
+    bool eepromUnlocked(int index) const;
+    // Closes it and reads it back (Session::lockEeprom).
+    bool lockEeprom(int index, QString *error = nullptr);
+    // A frame built by hand (the packet window), queued like any command and sent once at
+    // `baud` (Session::sendPacket). The caller has asked before anything that writes EEPROM.
+    bool sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
+                    int replyDataSize, QString *error = nullptr);
+
+    // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
+
+    // Why servo `index` cannot be identified now (empty when it can): no bus, an unknown
+    // model, another operation, or something holding the servo (a motion test).
+    QString identifyBlocker(int index) const;
+    bool identifyJoint(int index, QString *error = nullptr);
+    bool isIdentifying(int index) const;
+    // What moves a servo outside the session's operations (a motion test) holds it while it
+    // runs: identifyBlocker gives `reason` meanwhile.
+    void holdServo(int index, const QString &reason);
+    void releaseServo(quint8 id, qint32 baud);
+
+    // ---- live monitoring and control
+
+    // Streams the feedback block of the servos `indexes` at `rateHz` samples per second each
+    // (0: as fast as the bus allows) until stopMonitor; replaces a stream already running.
+    // A servo is taken out after `missesBeforeMissing` missed cycles in a row (TelemetryOptions).
+    // False and *error when nothing was started.
+    bool startMonitor(const QVector<int> &indexes, double rateHz, QString *error = nullptr,
+                      int missesBeforeMissing = kDefaultMissesBeforeMissing);
+    void stopMonitor();
+    bool isMonitoring() const { return m_monitoring; }
+    const TelemetryOptions &monitorOptions() const { return m_monitorOptions; }
+    bool isMonitored(int index) const;
+    // The newest sample of servo `index` (nothing before the first).
+    std::optional<FeedbackSample> latestSample(int index) const;
+    const TelemetryStats &telemetryStats() const { return m_telemetryStats; }
+
+    // Control writes: register values by key, in register units, written and read back (EEPROM
+    // ones unlocked and locked again). Unlike apply() they do not wait for an idle bus and
+    // leave the servo's pending edits alone; the model shows what the read-back says.
+    // False and *error (naming the register) when a value is unknown or out of range.
+    bool writeValues(int index, const QVector<model::WriteItem> &values, QString *error = nullptr);
+    // Torque enable 0 on every servo of the bus: a broadcast WRITE at each baud rate the scan
+    // found servos at, ahead of anything queued (a running scan is cancelled), then a read-back
+    // from each servo found. Emits allTorqueOffRequested at once.
+    void allTorqueOff();
+    struct Goal
+    {
+        int index = 0;
+        qint32 position = 0; // register units (steps)
+    };
+    // One SYNC WRITE of goal positions per baud rate; false and *error when a position is out
+    // of its servo's range or a servo is unknown (nothing sent).
+    bool moveAll(const QVector<Goal> &goals, QString *error = nullptr);
+
+    // ---- the overload and thermal guard (busclientguard.cpp): on from the start
+
+    // The limits of servo `index` now: those set with setGuardSettings, else the defaults from
+    // its own limit registers as last read (the table's factory values before a read).
+    GuardLimits guardLimits(int index) const;
+    // Its defaults alone: from its limit registers, whatever was set.
+    GuardLimits guardDefaults(int index) const;
+    // Replaces the whole guard's settings (limits set for servos not listed are dropped).
+    void setGuardSettings(const GuardSettings &settings);
+    const GuardSettings &guardSettings() const { return m_guardSettings; }
+    // The newest thing the guard said about servo `index`.
+    std::optional<GuardEvent> lastGuardEvent(int index) const;
+    // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
+    // result (operationFinished, RecoverOverload) says stillLatched when a power cycle is due.
+    bool recoverOverload(int index, bool checkOnly, QString *error = nullptr);
+
+    // ---- motor set-up (busclientmotorsetup.cpp): no scan needed, each servo is found alone
+
+    // Looks for the one servo on the bus at every rate. False and *error when not started.
+    bool findMotor(const MotorTarget &target, QString *error = nullptr);
+    // Finds the one servo again and gives it the target's ID, rate and settings, verified.
+    bool setUpMotor(const MotorTarget &target, QString *error = nullptr);
+    // Which joints of `robot` already answer at their ID at its rate, as their model.
+    bool checkJoints(qint32 baud, const QVector<JointCheck> &joints, QString *error = nullptr);
+    // Stops a find, set-up or check before its next step.
+    void cancelMotorSetup();
+
+    // ---- health check (busclienthealth.cpp): reads only, except the confirmed move test
+
+    // Reads each of servos `indexes` in turn (its limits and `reads` feedback blocks); a
+    // healthRead per servo (and progress), then healthCheckFinished. False and *error when
+    // nothing was started.
+    bool checkHealth(const QVector<int> &indexes, int reads = kDefaultHealthReads,
+                     QString *error = nullptr);
+    // The running check stops before its next servo.
+    void cancelHealthCheck();
+    bool isCheckingHealth() const { return m_checkingHealth; }
+    // Why servo `index` cannot take the move test now (empty when it can).
+    QString moveTestBlocker(int index) const;
+    // The move test moves the horn: it runs only when `confirmed` says the user agreed to it;
+    // otherwise, as when blocked, false and *error, and nothing is sent. Ends with moveTested.
+    bool moveTest(int index, bool confirmed, QString *error = nullptr);
+
+signals:
+    void statusChanged(const seriallink::ConnectionStatus &status);
+    void scanProgress(int done, int total, qint32 baud);
+    void scanFinished(bool completed, const QString &message);
+    void servosChanged(); // the list itself: added, removed, or moved to another ID or baud
+    void servoUpdated(int index); // new values or status for this servo
+    void progress(int done, int total);
+    void operationFinished(const feetech::OperationResult &result);
+    void busyChanged(bool busy);
+    // Samples of monitored servos, in batches (at most about 50 a second).
+    void telemetryReceived(const QVector<feetech::FeedbackSample> &samples);
+    void telemetryStatsChanged(const feetech::TelemetryStats &stats);
+    void monitoringChanged(bool monitoring);
+    // Whatever moves servos (sweeps, step tests) stops on this.
+    void allTorqueOffRequested();
+    // Motor set-up: each find or set-up ends with motorSetupFinished, each check with
+    // jointsChecked, also when the link went down meanwhile.
+    void motorSetupProgress(int step, int steps, const QString &text);
+    void motorSetupFinished(const feetech::MotorSetupResult &result);
+    void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
+    void healthRead(const feetech::HealthReading &reading);
+    void healthCheckFinished(bool completed, const QString &message);
+    // Also when the link went down meanwhile (then not ok).
+    void moveTested(const feetech::MoveTestResult &result);
+    // The guard warned or acted (the message names the servo, the figures and the action).
+    void guardEvent(const feetech::GuardEvent &event);
+
+private:
+    void onServoFound(const ServoInfo &info);
+    void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
+                      ReadSource source, quint8 statusByte);
+    void onOperationFinished(const OperationResult &result);
+    void connectMotorSetup(Session *session);
+    void connectHealth(Session *session);
+    void connectGuard(Session *session);
+    // Sends the guard each servo's limits (set, or from its registers) when they changed.
+    void sendGuardSettings();
+    bool startMotorWork(QString *error, const std::function<void(Session &)> &work);
+    void onMotorWorkFinished(const OperationResult &result);
+    enum class Work {
+        Foreground, // the bus is busy until it ends
+        Background, // a refresh: skipped when busy, its failure not reported
+        Control // a control write: reported, but it does not make the bus busy
+    };
+    bool startOperation(int index, QString *error, Work kind,
+                        const std::function<void(Session &, const ServoInfo &)> &work);
+    void onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream);
+    void clearServos();
+    void forgetWork(); // the link went down: nothing is running any more
+    // The pending edits as planApply plans them; with `withAddress` the ID and baud too.
+    bool startApply(int index, QString *error, bool withAddress);
+
+    seriallink::SessionThread<Session> m_worker;
+    seriallink::LinkMirror m_link;
+    std::vector<std::unique_ptr<Servo>> m_servos;
+    bool m_scanning = false;
+    // The session runs operations in the order they were asked for: the servo each one works
+    // on (by its address before it ran), and whether it is a background refresh.
+    struct Pending
+    {
+        quint8 id = 0;
+        qint32 baud = 0;
+        Work kind = Work::Foreground;
+    };
+    std::deque<Pending> m_pending;
+    QElapsedTimer m_clock;
+    bool m_monitoring = false;
+    quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped
+    TelemetryOptions m_monitorOptions;
+    TelemetryStats m_telemetryStats;
+    // What the session reported of the motor set-up work running, until it ends.
+    std::optional<MotorSetupResult> m_motorResult;
+    std::optional<QVector<JointCheck>> m_jointsChecked;
+    std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
+    QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
+    bool m_checkingHealth = false;
+    std::optional<MoveTestResult> m_moveTested; // what the session said of the running test
+    GuardSettings m_guardSettings; // as the user set them
+    std::optional<GuardSettings> m_guardSent; // what the session has now
+    QHash<QPair<quint8, qint32>, GuardEvent> m_lastGuardEvent;
+};
+
+// The goal positions servo `index` accepts (goalrange.h); nothing for an unknown servo or a
+// table without goal_position.
+std::optional<PositionRange> goalRange(const BusClient &client, int index);
+
+} // namespace feetech

@@ -1,0 +1,87 @@
+// Doctor run over the GUI's bus client: read each servo found in turn, then diagnose.
+#include "doctorcheck.h"
+
+#include "busclient.h"
+#include "parametermodel.h"
+
+namespace feetech {
+
+namespace {
+
+// A whole table read takes milliseconds; this is for a read that was never started.
+constexpr std::chrono::seconds kReadGuard {10};
+
+} // namespace
+
+DoctorCheck::DoctorCheck(BusClient *client, QObject *parent)
+    : QObject(parent)
+    , m_client(client)
+{
+    qRegisterMetaType<QVector<feetech::DoctorFinding>>();
+    m_guard.setSingleShot(true);
+    m_guard.setInterval(kReadGuard);
+    connect(&m_guard, &QTimer::timeout, this, [this] {
+        ++m_next; // its condition stays unknown: no finding is made of it
+        readNext();
+    });
+    connect(m_client, &BusClient::operationFinished, this, [this](const OperationResult &result) {
+        // Only the read of the servo being looked at: a page may read another one meanwhile.
+        if (!m_running || !m_guard.isActive() || result.operation != Operation::Read
+            || m_next >= m_seen.found.size())
+            return;
+        const ServoInfo &looking = m_seen.found.at(m_next);
+        if (result.servo.id == looking.id && result.servo.baud == looking.baud)
+            onRead(result.ok);
+    });
+}
+
+void DoctorCheck::start(const BusObservation &seen, const QVector<ExpectedServo> &expected)
+{
+    m_seen = seen;
+    m_seen.found.clear();
+    m_seen.conditions.clear();
+    for (int i = 0; i < m_client->servoCount(); ++i)
+        m_seen.found.append(m_client->servo(i).info);
+    m_expected = expected;
+    m_next = 0;
+    m_running = true;
+    readNext();
+}
+
+void DoctorCheck::readNext()
+{
+    if (!m_running)
+        return;
+    if (m_next >= m_seen.found.size() || !m_client->isConnected()) {
+        m_running = false;
+        m_guard.stop();
+        emit finished(diagnoseBus(m_seen, m_expected));
+        return;
+    }
+    emit progress(m_next, int(m_seen.found.size()));
+    const ServoInfo &servo = m_seen.found.at(m_next);
+    const int index = m_client->indexOf(servo.id, servo.baud);
+    if (index < 0) {
+        ++m_next;
+        readNext();
+        return;
+    }
+    m_guard.start();
+    m_client->readServo(index);
+}
+
+void DoctorCheck::onRead(bool readable)
+{
+    m_guard.stop();
+    const ServoInfo servo = m_seen.found.at(m_next);
+    const int index = m_client->indexOf(servo.id, servo.baud);
+    if (index >= 0) {
+        const model::ParameterModel *values = m_client->parameters(index);
+        m_seen.conditions.append(servoCondition(
+            servo, readable, [values](const QString &key) { return values->deviceValue(key); }));
+    }
+    ++m_next;
+    readNext();
+}
+
+} // namespace feetech

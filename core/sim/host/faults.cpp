@@ -1,0 +1,114 @@
+// Fault injection: drop, corrupt, truncate, noise and delay of replies from one seeded
+// generator, and lost requests from another.
+#include "faults.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(Faults)
+};
+
+} // namespace
+
+namespace sim {
+
+std::optional<FaultSettings> FaultSettings::parse(const QString &text, QString *error)
+{
+    FaultSettings settings;
+    const auto fail = [&](const QString &what) -> std::optional<FaultSettings> {
+        if (error)
+            *error = what;
+        return std::nullopt;
+    };
+    for (const QString &item : text.split(u',', Qt::SkipEmptyParts)) {
+        const int eq = item.indexOf(u'=');
+        if (eq <= 0)
+            return fail(Tr::tr("--faults: \"%1\" is not NAME=VALUE").arg(item));
+        const QString name = item.left(eq).trimmed();
+        bool ok = false;
+        const double value = item.mid(eq + 1).toDouble(&ok);
+        if (!ok)
+            return fail(Tr::tr("--faults: \"%1\" is not a number").arg(item.mid(eq + 1)));
+        if (name == QLatin1String("delay")) {
+            if (value < 0 || value > 60000)
+                return fail(Tr::tr("--faults: delay is in milliseconds, 0 to 60000"));
+            settings.delayMs = int(value);
+            continue;
+        }
+        if (value < 0 || value > 1)
+            return fail(Tr::tr("--faults: %1 is a probability from 0 to 1").arg(name));
+        if (name == QLatin1String("drop"))
+            settings.drop = value;
+        else if (name == QLatin1String("corrupt"))
+            settings.corrupt = value;
+        else if (name == QLatin1String("truncate"))
+            settings.truncate = value;
+        else if (name == QLatin1String("noise"))
+            settings.noise = value;
+        else if (name == QLatin1String("lost"))
+            settings.lost = value;
+        else
+            return fail(Tr::tr("--faults: unknown fault \"%1\" (drop, corrupt, truncate, noise, "
+                               "delay, lost)")
+                            .arg(name));
+    }
+    return settings;
+}
+
+FaultInjector::FaultInjector(const FaultSettings &settings, quint32 seed)
+    : m_settings(settings)
+    , m_random(seed)
+    , m_requestRandom(seed ^ 0x5EEDu)
+{ }
+
+bool FaultInjector::loseRequest()
+{
+    return m_requestRandom.generateDouble() < m_settings.lost;
+}
+
+FaultOutcome FaultInjector::apply(const QByteArray &reply)
+{
+    // Draw everything first, in a fixed order, so outcomes never shift the random sequence.
+    const double dropDraw = m_random.generateDouble();
+    const double corruptDraw = m_random.generateDouble();
+    const double truncateDraw = m_random.generateDouble();
+    const double noiseDraw = m_random.generateDouble();
+    const quint32 position = m_random.generate();
+    const quint32 bit = m_random.generate();
+    const quint32 cut = m_random.generate();
+    const quint32 noise = m_random.generate();
+    const quint32 delay = m_random.generate();
+
+    FaultOutcome outcome {reply, 0, {}};
+    QStringList notes;
+    if (dropDraw < m_settings.drop)
+        return {QByteArray(), 0, QStringLiteral("drop")};
+    if (m_settings.delayMs > 0) {
+        outcome.extraDelayUs = qint64(delay % quint32(m_settings.delayMs * 1000 + 1));
+        notes.append(QStringLiteral("delay %1us").arg(outcome.extraDelayUs));
+    }
+    if (!reply.isEmpty() && corruptDraw < m_settings.corrupt) {
+        const int index = int(position % quint32(reply.size()));
+        outcome.bytes[index] = char(outcome.bytes[index] ^ char(1u << (bit % 8)));
+        notes.append(QStringLiteral("corrupt"));
+    }
+    if (reply.size() > 1 && truncateDraw < m_settings.truncate) {
+        outcome.bytes.truncate(int(1 + cut % quint32(reply.size() - 1)));
+        notes.append(QStringLiteral("truncate"));
+    }
+    if (noiseDraw < m_settings.noise) {
+        QByteArray stray;
+        for (quint32 i = 0; i < 1 + noise % 3; ++i)
+            stray.append(char((noise >> (8 * (i + 1))) & 0xFF));
+        outcome.bytes.prepend(stray);
+        notes.append(QStringLiteral("noise"));
+    }
+    outcome.note = notes.join(u' ');
+    return outcome;
+}
+
+} // namespace sim

@@ -1,0 +1,385 @@
+// The Health page: a check of every servo found, its verdicts in a table, the move test and the
+// report.
+#include "healthpage.h"
+
+#include "busclient.h"
+#include "palette.h"
+#include "widgethelpers.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStackedWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+using feetech::ServoHealth;
+using feetech::Verdict;
+
+namespace {
+
+QString measured(const std::optional<double> &value, int decimals, const QString &unit)
+{
+    return value ? QLocale().toString(*value, 'f', decimals) + QLatin1Char(' ') + unit : QString();
+}
+
+palette::Tone verdictTone(Verdict verdict)
+{
+    switch (verdict) {
+    case Verdict::Ok:
+        return palette::Tone::Good;
+    case Verdict::Warning:
+        return palette::Tone::Warning;
+    case Verdict::Fault:
+        return palette::Tone::Error;
+    }
+    return palette::Tone::Accent;
+}
+
+} // namespace
+
+HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
+    : QWidget(parent)
+    , m_client(client)
+{
+    m_confirm = [this](const QString &question) {
+        return QMessageBox::question(this, tr("Move test"), question,
+                                     QMessageBox::Yes | QMessageBox::No, QMessageBox::No)
+            == QMessageBox::Yes;
+    };
+    auto *layout = new QVBoxLayout(this);
+    auto *intro = new QLabel(
+        tr("Checks each servo: firmware, voltage and temperature against its own limits, status "
+           "bits, load, %1 reads for communication quality, position against its angle limits. "
+           "It only reads; the move test moves a servo 100 steps and back, once you confirm.")
+            .arg(feetech::kDefaultHealthReads),
+        this);
+    intro->setWordWrap(true);
+    layout->addWidget(intro);
+
+    auto *buttons = new QHBoxLayout;
+    m_check = widgethelpers::actionButton(
+        tr("Check"), "healthCheck", tr("Read every servo found and give each a verdict"), this);
+    m_cancel = widgethelpers::actionButton(tr("Cancel"), "healthCancel",
+                                           tr("Stop the check before the next servo"), this);
+    m_move = widgethelpers::actionButton(
+        tr("Move test…"), "healthMoveTest",
+        tr("Move the selected servo a little and back, and measure how it follows"), this);
+    m_save = widgethelpers::actionButton(tr("Save report…"), "healthSave",
+                                         tr("Save the verdicts as an HTML page or as JSON"), this);
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("healthProgress"));
+    m_progress->setVisible(false);
+    for (QWidget *widget : {static_cast<QWidget *>(m_check), static_cast<QWidget *>(m_cancel),
+                            static_cast<QWidget *>(m_move), static_cast<QWidget *>(m_save)})
+        buttons->addWidget(widget);
+    buttons->addWidget(m_progress, 1);
+    layout->addLayout(buttons);
+
+    m_stack = new QStackedWidget(this);
+    m_empty = new QLabel(tr("No servos scanned yet: scan the bus, then check their health here."),
+                         m_stack);
+    m_empty->setObjectName(QStringLiteral("healthEmpty"));
+    m_empty->setAlignment(Qt::AlignCenter);
+    m_empty->setWordWrap(true);
+    m_table = new QTableWidget(0, ColumnCount, m_stack);
+    m_table->setObjectName(QStringLiteral("healthTable"));
+    m_table->setHorizontalHeaderLabels({tr("ID"), tr("Model"), tr("Firmware"), tr("Verdict"),
+                                        tr("Reasons"), tr("Voltage"), tr("Temperature"), tr("Load"),
+                                        tr("Communication"), tr("Move test")});
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setTextElideMode(Qt::ElideNone);
+    m_table->setWordWrap(true);
+    m_stack->addWidget(m_empty);
+    m_stack->addWidget(m_table);
+    layout->addWidget(m_stack, 1);
+    m_state = new QLabel(this);
+    m_state->setObjectName(QStringLiteral("healthState"));
+    m_state->setWordWrap(true);
+    layout->addWidget(m_state);
+
+    connect(m_check, &QPushButton::clicked, this, [this] { check(); });
+    connect(m_cancel, &QPushButton::clicked, this, &HealthPage::cancel);
+    connect(m_move, &QPushButton::clicked, this, [this] { moveTest(); });
+    connect(m_save, &QPushButton::clicked, this, &HealthPage::chooseReportFile);
+    connect(m_table, &QTableWidget::itemSelectionChanged, this, &HealthPage::updateActions);
+    connect(m_client, &feetech::BusClient::servosChanged, this, [this] {
+        m_readings.clear();
+        m_moves.clear();
+        reassess();
+    });
+    connect(m_client, &feetech::BusClient::busyChanged, this, &HealthPage::updateActions);
+    connect(m_client, &feetech::BusClient::statusChanged, this, &HealthPage::updateActions);
+    connect(m_client, &feetech::BusClient::progress, this, [this](int done, int total) {
+        if (!m_checking)
+            return;
+        m_progress->setRange(0, total);
+        m_progress->setValue(done);
+    });
+    connect(m_client, &feetech::BusClient::healthRead, this,
+            [this](const feetech::HealthReading &reading) {
+                m_readings.insert({reading.servo.id, reading.servo.baud}, reading);
+                reassess();
+            });
+    connect(m_client, &feetech::BusClient::healthCheckFinished, this,
+            [this](bool completed, const QString &text) {
+                m_checking = false;
+                m_progress->setVisible(false);
+                m_checkedAt = QDateTime::currentDateTime();
+                showState(text, !completed);
+                updateActions();
+            });
+    connect(m_client, &feetech::BusClient::moveTested, this,
+            [this](const feetech::MoveTestResult &result) {
+                if (!m_moving)
+                    return;
+                m_moving = false;
+                m_moves.insert({result.id, result.baud}, result);
+                reassess();
+                showState(result.message, !result.ok);
+                updateActions();
+            });
+    reassess();
+}
+
+bool HealthPage::check(QString *error)
+{
+    QVector<int> indexes;
+    for (int i = 0; i < m_client->servoCount(); ++i)
+        indexes.append(i);
+    QString why;
+    if (!m_client->checkHealth(indexes, feetech::kDefaultHealthReads, &why)) {
+        showState(why, true);
+        if (error)
+            *error = why;
+        return false;
+    }
+    m_checking = true;
+    m_readings.clear();
+    m_moves.clear();
+    reassess();
+    m_progress->setRange(0, int(indexes.size()));
+    m_progress->setValue(0);
+    m_progress->setVisible(true);
+    showState(tr("Checking %n servo(s)…", nullptr, int(indexes.size())), false);
+    updateActions();
+    return true;
+}
+
+void HealthPage::cancel()
+{
+    if (m_checking)
+        m_client->cancelHealthCheck();
+}
+
+bool HealthPage::moveTest(QString *error)
+{
+    int index = selectedServo();
+    QString why = index < 0 ? tr("Select the servo to move in the table first.")
+                            : m_client->moveTestBlocker(index);
+    if (why.isEmpty()) {
+        // The question runs its own event loop: by its answer the servo list may have changed,
+        // so the servo confirmed is looked up again by its address.
+        const feetech::ServoInfo info = m_client->servo(index).info;
+        const QString question =
+            tr("Servo %1 (%2) will move %3 steps from where it stands and back, with its torque "
+               "on meanwhile. Make sure nothing is in the way. Move it?")
+                .arg(info.id)
+                .arg(info.model.name)
+                .arg(feetech::HealthMoveTest::kAmplitude);
+        const bool confirmed = m_confirm(question);
+        index = m_client->indexOf(info.id, info.baud);
+        if (!confirmed)
+            why = tr("The move test was not confirmed: nothing moved.");
+        else if (index < 0)
+            why = tr("Servo %1 is no longer on the bus: nothing moved.").arg(info.id);
+        else if (m_client->moveTest(index, true, &why))
+            m_moving = true;
+    }
+    if (!m_moving) {
+        showState(why, true);
+        if (error)
+            *error = why;
+        return false;
+    }
+    showState(tr("Moving servo %1…").arg(m_client->servo(index).info.id), false);
+    updateActions();
+    return true;
+}
+
+bool HealthPage::saveReport(const QString &path, QString *error)
+{
+    QString why;
+    const auto format = feetech::reportFormatFor(path);
+    feetech::HealthReport report;
+    report.port = m_client->status().portName;
+    report.checkedAt = m_checkedAt.isValid() ? m_checkedAt : QDateTime::currentDateTime();
+    report.servos = results();
+    if (!format)
+        why = tr("Save the report as .html or .json: %1 is neither.").arg(path);
+    else if (feetech::saveHealthReport(path, *format, report, &why))
+        showState(tr("Report saved to %1.").arg(QDir::toNativeSeparators(path)), false);
+    if (!why.isEmpty()) {
+        showState(why, true);
+        emit problem(why);
+        if (error)
+            *error = why;
+        return false;
+    }
+    return true;
+}
+
+void HealthPage::chooseReportFile()
+{
+    QString filter;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save health report"), QStringLiteral("servo-health.html"),
+        tr("HTML page (*.html);;JSON (*.json)"), &filter);
+    if (path.isEmpty())
+        return;
+    QString chosen = path;
+    if (!feetech::reportFormatFor(chosen))
+        chosen += filter.contains(QLatin1String("json")) ? QStringLiteral(".json")
+                                                         : QStringLiteral(".html");
+    saveReport(chosen);
+}
+
+QVector<ServoHealth> HealthPage::results() const
+{
+    QVector<ServoHealth> checked;
+    for (int i = 0; i < m_client->servoCount(); ++i) {
+        const feetech::ServoInfo &info = m_client->servo(i).info;
+        const auto found = m_health.constFind({info.id, info.baud});
+        if (found != m_health.constEnd())
+            checked.append(*found);
+    }
+    return checked;
+}
+
+void HealthPage::reassess()
+{
+    QVector<ServoHealth> verdicts;
+    for (int i = 0; i < m_client->servoCount(); ++i) {
+        const feetech::ServoInfo &info = m_client->servo(i).info;
+        const auto reading = m_readings.constFind({info.id, info.baud});
+        if (reading == m_readings.constEnd())
+            continue;
+        ServoHealth health = feetech::assessHealth(*reading);
+        const auto move = m_moves.constFind({info.id, info.baud});
+        if (move != m_moves.constEnd())
+            feetech::addMoveTest(health, *move);
+        verdicts.append(health);
+    }
+    feetech::flagFirmwareMismatches(verdicts);
+    m_health.clear();
+    for (const ServoHealth &health : std::as_const(verdicts))
+        m_health.insert({health.id, health.baud}, health);
+    rebuildRows();
+}
+
+void HealthPage::rebuildRows()
+{
+    const int selected = m_table->currentRow();
+    m_table->setRowCount(m_client->servoCount());
+    for (int row = 0; row < m_client->servoCount(); ++row) {
+        const feetech::ServoInfo &info = m_client->servo(row).info;
+        ServoHealth health;
+        const auto found = m_health.constFind({info.id, info.baud});
+        if (found != m_health.constEnd())
+            health = *found;
+        if (found == m_health.constEnd()) { // as the scan found it
+            health.id = info.id;
+            health.model = info.model.name;
+            health.firmware = info.firmware();
+        }
+        fillRow(row, health);
+        if (found == m_health.constEnd()) {
+            m_table->item(row, VerdictColumn)->setText(tr("not checked"));
+            m_table->item(row, VerdictColumn)->setForeground(palette().color(QPalette::Text));
+        }
+    }
+    m_table->resizeColumnsToContents();
+    // The reasons wrap rather than push the measurements out of sight.
+    m_table->setColumnWidth(ReasonsColumn, std::min(m_table->columnWidth(ReasonsColumn), 420));
+    m_table->resizeRowsToContents();
+    if (selected >= 0 && selected < m_table->rowCount())
+        m_table->selectRow(selected);
+    m_stack->setCurrentWidget(m_client->servoCount() == 0 ? static_cast<QWidget *>(m_empty)
+                                                          : m_table);
+    updateActions();
+}
+
+void HealthPage::fillRow(int row, const ServoHealth &health)
+{
+    QStringList reasons;
+    for (const feetech::HealthFinding &finding : health.findings)
+        reasons.append(finding.message);
+    const QStringList cells {QString::number(health.id),
+                             health.model,
+                             health.firmware,
+                             feetech::verdictName(health.verdict),
+                             reasons.join(QLatin1Char('\n')),
+                             measured(health.voltage, 1, QStringLiteral("V")),
+                             measured(health.temperature, 0, QStringLiteral("°C")),
+                             measured(health.load, 1, QStringLiteral("%")),
+                             health.comm.reads > 0 ? feetech::commText(health.comm) : QString(),
+                             health.move ? feetech::moveText(*health.move) : QString()};
+    for (int column = 0; column < ColumnCount; ++column) {
+        auto *item = new QTableWidgetItem(cells.at(column));
+        if (column == ReasonsColumn && !health.findings.isEmpty()) {
+            QStringList codes;
+            for (const feetech::HealthFinding &finding : health.findings)
+                codes.append(finding.code);
+            item->setToolTip(codes.join(QStringLiteral(", ")));
+        }
+        m_table->setItem(row, column, item);
+    }
+    QTableWidgetItem *verdict = m_table->item(row, VerdictColumn);
+    verdict->setForeground(palette::toneColor(verdictTone(health.verdict), palette()));
+    QFont bold = verdict->font();
+    bold.setBold(true);
+    verdict->setFont(bold);
+}
+
+void HealthPage::updateActions()
+{
+    const bool idle = m_client->isConnected() && !m_client->isBusy();
+    m_check->setEnabled(idle && m_client->servoCount() > 0 && !m_checking);
+    m_cancel->setEnabled(m_checking);
+    const int index = selectedServo();
+    m_move->setEnabled(!m_checking && !m_moving && index >= 0
+                       && m_client->moveTestBlocker(index).isEmpty());
+    m_save->setEnabled(!m_health.isEmpty() && !m_checking);
+}
+
+void HealthPage::showState(const QString &text, bool error)
+{
+    m_state->setText(text);
+    QPalette colours = m_state->palette();
+    colours.setColor(QPalette::WindowText,
+                     error ? palette::toneColor(palette::Tone::Error, palette())
+                           : palette().color(QPalette::WindowText));
+    m_state->setPalette(colours);
+    if (!error && !text.isEmpty())
+        emit message(text);
+}
+
+int HealthPage::selectedServo() const
+{
+    const int row = m_table->currentRow();
+    return row >= 0 && row < m_client->servoCount() && m_table->selectionModel()->hasSelection()
+        ? row
+        : -1;
+}

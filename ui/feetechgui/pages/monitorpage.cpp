@@ -1,0 +1,502 @@
+// The Monitor page: stream controls, the live plot, readouts refreshed on a timer rather than per
+// sample, and CSV recording through feetech::TelemetryRecorder.
+#include "monitorpage.h"
+
+#include "busclient.h"
+#include "monitorreadouts.h"
+#include "telemetryplot.h"
+#include "widgethelpers.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QStyle>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+using widgethelpers::actionButton;
+
+namespace {
+
+constexpr int kIdRole = Qt::UserRole + 1;
+constexpr int kBaudRole = Qt::UserRole + 2;
+constexpr int kIndexRole = Qt::UserRole + 3;
+
+} // namespace
+
+MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
+    : QWidget(parent)
+    , m_client(client)
+{
+    setObjectName(QStringLiteral("monitorPage"));
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+
+    layout->addWidget(buildControls());
+
+    // ---- right: plots over readouts, the stream's health below
+    auto *right = new QWidget(this);
+    auto *rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(6, 0, 0, 0);
+    auto *splitter = new QSplitter(Qt::Vertical, right);
+    splitter->setChildrenCollapsible(false);
+    m_plot = new TelemetryPlot(splitter);
+    m_plot->setWindowSeconds(m_windowCombo->currentData().toDouble()); // as last chosen
+    connect(m_plot, &TelemetryPlot::pausedChanged, this, &MonitorPage::updateControls);
+    connect(m_plot, &TelemetryPlot::zoomedChanged, this, &MonitorPage::updateControls);
+    splitter->addWidget(m_plot);
+
+    m_readouts = new MonitorReadouts(m_client, splitter);
+    splitter->addWidget(m_readouts);
+    splitter->setStretchFactor(0, 4);
+    splitter->setStretchFactor(1, 1);
+    rightLayout->addWidget(splitter, 1);
+
+    m_statusLine = new QLabel(right);
+    m_statusLine->setObjectName(QStringLiteral("monitorStatus"));
+    m_statusLine->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    rightLayout->addWidget(m_statusLine);
+    layout->addWidget(right, 1);
+
+    m_readoutTimer = new QTimer(this);
+    m_readoutTimer->setInterval(kReadoutIntervalMs);
+    connect(m_readoutTimer, &QTimer::timeout, this, [this] {
+        if (m_readoutsDirty || isRunning())
+            updateReadouts(); // samples/s falls when a servo stops answering: recount
+    });
+    m_recorder = new feetech::TelemetryRecorder(this);
+    m_recorder->setFlushInterval(kFlushIntervalMs);
+    connect(m_recorder, &feetech::TelemetryRecorder::flushed, this,
+            &MonitorPage::updateRecordingLabel);
+    connect(m_recorder, &feetech::TelemetryRecorder::failed, this, &MonitorPage::failRecording);
+
+    if (m_client) {
+        connect(m_client, &feetech::BusClient::servosChanged, this, &MonitorPage::rebuildServoList);
+        connect(m_client, &feetech::BusClient::telemetryReceived, this, &MonitorPage::addSamples);
+        connect(m_client, &feetech::BusClient::telemetryStatsChanged, this,
+                &MonitorPage::onStatsChanged);
+        connect(m_client, &feetech::BusClient::monitoringChanged, this,
+                &MonitorPage::onMonitoringChanged);
+        connect(m_client, &feetech::BusClient::statusChanged, this, &MonitorPage::onStatusChanged);
+    }
+    onQuantityToggled();
+    rebuildServoList();
+    updateRecordingLabel();
+}
+
+MonitorPage::~MonitorPage()
+{
+    stopRecording(); // what was buffered reaches the disk
+}
+
+void MonitorPage::setSelectedServos(const QVector<int> &indexes)
+{
+    m_updatingList = true;
+    for (int row = 0; row < m_servoList->count(); ++row) {
+        QListWidgetItem *item = m_servoList->item(row);
+        if (item->flags() & Qt::ItemIsUserCheckable) {
+            item->setCheckState(indexes.contains(item->data(kIndexRole).toInt()) ? Qt::Checked
+                                                                                 : Qt::Unchecked);
+        }
+    }
+    m_updatingList = false;
+    onServoItemChanged();
+}
+
+QVector<int> MonitorPage::selectedServos() const
+{
+    QVector<int> indexes;
+    for (int row = 0; row < m_servoList->count(); ++row) {
+        const QListWidgetItem *item = m_servoList->item(row);
+        if (item->checkState() == Qt::Checked)
+            indexes.append(item->data(kIndexRole).toInt());
+    }
+    return indexes;
+}
+
+void MonitorPage::setQuantities(const QVector<feetech::Quantity> &quantities)
+{
+    for (int q = 0; q < feetech::kQuantityCount; ++q) {
+        const QSignalBlocker blocker(m_quantityChecks.at(q));
+        m_quantityChecks.at(q)->setChecked(quantities.contains(feetech::kAllQuantities[q]));
+    }
+    onQuantityToggled();
+}
+
+QVector<feetech::Quantity> MonitorPage::quantities() const
+{
+    QVector<feetech::Quantity> chosen;
+    for (int q = 0; q < feetech::kQuantityCount; ++q) {
+        if (m_quantityChecks.at(q)->isChecked())
+            chosen.append(feetech::kAllQuantities[q]);
+    }
+    return chosen;
+}
+
+void MonitorPage::setRate(double rateHz)
+{
+    // The closest rate offered: the combo box shows what is asked of the bus.
+    int best = 0;
+    for (int i = 1; i < m_rateCombo->count(); ++i) {
+        if (std::abs(m_rateCombo->itemData(i).toDouble() - rateHz)
+            < std::abs(m_rateCombo->itemData(best).toDouble() - rateHz))
+            best = i;
+    }
+    if (best == m_rateCombo->currentIndex())
+        return;
+    m_rateCombo->setCurrentIndex(best);
+    onRateChosen();
+}
+
+double MonitorPage::rate() const
+{
+    return m_rateCombo->currentData().toDouble();
+}
+
+void MonitorPage::setWindowSeconds(double seconds)
+{
+    int best = 0;
+    for (int i = 1; i < m_windowCombo->count(); ++i) {
+        if (std::abs(m_windowCombo->itemData(i).toDouble() - seconds)
+            < std::abs(m_windowCombo->itemData(best).toDouble() - seconds))
+            best = i;
+    }
+    m_windowCombo->setCurrentIndex(best);
+    onWindowChosen();
+}
+
+bool MonitorPage::start(QString *error)
+{
+    QString why;
+    if (!m_client) {
+        why = tr("There is no bus to monitor.");
+    } else if (selectedServos().isEmpty()) {
+        why = tr("Tick at least one servo to monitor.");
+    } else {
+        const bool fresh = !m_client->isMonitoring();
+        if (m_client->startMonitor(selectedServos(), rate(), &why)) {
+            if (fresh) {
+                // A new run starts a new time line (its samples come later, queued); a
+                // restart keeps the present one going.
+                m_plot->clear();
+                m_readouts->clearSamples();
+                m_unlisted.clear();
+                m_stats = {};
+                m_readoutsDirty = true;
+            }
+            showMessage({}, false);
+            updatePlotServos();
+            updateControls();
+            updateStatusLine();
+            return true;
+        }
+    }
+    if (error)
+        *error = why;
+    showMessage(tr("Monitoring did not start: %1").arg(why), true);
+    emit problem(why);
+    updateControls();
+    return false;
+}
+
+void MonitorPage::stop()
+{
+    stopRecording();
+    if (m_client && m_client->isMonitoring())
+        m_client->stopMonitor();
+    updateControls();
+    updateStatusLine();
+}
+
+bool MonitorPage::isRunning() const
+{
+    return m_client && m_client->isMonitoring();
+}
+
+bool MonitorPage::exportPng(const QString &path, QString *error)
+{
+    QString why;
+    if (m_plot->exportPng(path, &why)) {
+        showMessage(tr("Plot saved to %1.").arg(QDir::toNativeSeparators(path)), false);
+        return true;
+    }
+    if (error)
+        *error = why;
+    showMessage(why, true);
+    return false;
+}
+
+void MonitorPage::addSamples(const QVector<feetech::FeedbackSample> &samples)
+{
+    // Ticked or not, for each servo the list names.
+    QHash<Key, bool> listed;
+    for (int row = 0; row < m_servoList->count(); ++row) {
+        const QListWidgetItem *item = m_servoList->item(row);
+        if (item->flags() & Qt::ItemIsUserCheckable) {
+            listed.insert(Key {quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()},
+                          item->checkState() == Qt::Checked);
+        }
+    }
+    QVector<feetech::FeedbackSample> kept;
+    kept.reserve(samples.size());
+    for (const feetech::FeedbackSample &sample : samples) {
+        const Key key {sample.id, sample.baud};
+        // A batch still in flight when a servo was unticked is not shown or recorded; a servo
+        // the list does not name (samples fed from elsewhere) is.
+        const auto entry = listed.constFind(key);
+        if (entry != listed.constEnd() && !entry.value())
+            continue;
+        if (entry == listed.constEnd() && !m_unlisted.contains(key))
+            m_unlisted.append(key);
+        m_readouts->addSample(sample);
+        kept.append(sample);
+        m_recorder->write(sample); // from its start on
+    }
+    if (kept.isEmpty())
+        return;
+    m_plot->addSamples(kept);
+    m_readoutsDirty = true;
+}
+
+void MonitorPage::updateReadouts()
+{
+    m_readoutsDirty = false;
+    QVector<MonitorReadouts::Row> rows;
+    for (const Key &key : readoutKeys())
+        rows.append({key, m_plot->servoColor(key.id, key.baud)});
+    m_readouts->refresh(rows, m_stats, isRunning());
+    updateStatusLine();
+}
+
+void MonitorPage::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    m_readoutTimer->start();
+    updateReadouts();
+}
+
+void MonitorPage::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_readoutTimer->stop();
+}
+
+void MonitorPage::rebuildServoList()
+{
+    // Ticks survive a rescan by ID and baud rate; servos new to the list come ticked.
+    QHash<Key, bool> previous;
+    for (int row = 0; row < m_servoList->count(); ++row) {
+        const QListWidgetItem *item = m_servoList->item(row);
+        previous.insert(Key {quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()},
+                        item->checkState() == Qt::Checked);
+    }
+    m_updatingList = true;
+    m_servoList->clear();
+    const int count = m_client ? m_client->servoCount() : 0;
+    for (int index = 0; index < count; ++index) {
+        const feetech::ServoInfo &info = m_client->servo(index).info;
+        const QString model = info.model.name.isEmpty() ? tr("unknown model") : info.model.name;
+        auto *item = new QListWidgetItem(
+            tr("ID %1 · %2 · %3").arg(info.id).arg(model, feetech::baudText(info.baud)),
+            m_servoList);
+        item->setData(kIdRole, info.id);
+        item->setData(kBaudRole, info.baud);
+        item->setData(kIndexRole, index);
+        if (info.hasTable()) {
+            item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+            item->setCheckState(previous.value(Key {info.id, info.baud}, true) ? Qt::Checked
+                                                                               : Qt::Unchecked);
+        } else {
+            // Without the family's table the feedback block cannot be decoded.
+            item->setFlags(Qt::ItemIsUserCheckable);
+            item->setCheckState(Qt::Unchecked);
+            item->setToolTip(tr("Unknown model: its feedback cannot be decoded"));
+        }
+    }
+    m_updatingList = false;
+    if (m_servoList->count() == 0) {
+        auto *item = new QListWidgetItem(tr("Scan the bus to find servos."), m_servoList);
+        item->setFlags(Qt::NoItemFlags);
+    }
+    m_unlisted.erase(std::remove_if(m_unlisted.begin(), m_unlisted.end(),
+                                    [this](const Key &key) { return isListed(key); }),
+                     m_unlisted.end());
+    onServoItemChanged();
+}
+
+void MonitorPage::onServoItemChanged()
+{
+    if (m_updatingList)
+        return;
+    updatePlotServos();
+    m_readoutsDirty = true;
+    updateReadouts();
+    restartIfRunning();
+    updateControls();
+}
+
+void MonitorPage::onQuantityToggled()
+{
+    m_plot->setQuantities(quantities());
+    m_exportButton->setEnabled(!quantities().isEmpty());
+}
+
+void MonitorPage::onRateChosen()
+{
+    restartIfRunning();
+}
+
+void MonitorPage::onWindowChosen()
+{
+    m_plot->setWindowSeconds(m_windowCombo->currentData().toDouble());
+}
+
+void MonitorPage::onMonitoringChanged(bool monitoring)
+{
+    if (!monitoring)
+        stopRecording(); // the stream ended (Stop, a lost link): the recording with it
+    updateControls();
+    m_readoutsDirty = true;
+    updateReadouts();
+}
+
+void MonitorPage::onStatsChanged(const feetech::TelemetryStats &stats)
+{
+    m_stats = stats;
+    m_readoutsDirty = true;
+    updateStatusLine();
+}
+
+void MonitorPage::onStatusChanged()
+{
+    if (m_client && !m_client->isConnected() && isRecording()) {
+        stopRecording();
+        showMessage(tr("Recording stopped: the bus was disconnected."), true);
+    }
+    updateControls();
+}
+
+void MonitorPage::toggleStream()
+{
+    if (isRunning())
+        stop();
+    else
+        start();
+}
+
+void MonitorPage::togglePause()
+{
+    m_plot->setPaused(!m_plot->isPaused());
+}
+
+void MonitorPage::chooseExportFile()
+{
+    const QString directory = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export plot"), QDir(directory).filePath(QStringLiteral("servobench-monitor.png")),
+        tr("PNG images (*.png)"));
+    if (!path.isEmpty())
+        exportPng(path);
+}
+
+void MonitorPage::restartIfRunning()
+{
+    if (!isRunning())
+        return;
+    if (selectedServos().isEmpty()) {
+        stop();
+        showMessage(tr("Monitoring stopped: no servo is ticked."), false);
+        return;
+    }
+    start();
+}
+
+void MonitorPage::updatePlotServos()
+{
+    QVector<TelemetryPlot::Servo> servos;
+    for (const Key &key : checkedKeys())
+        servos.append({key.id, key.baud});
+    for (const Key &key : std::as_const(m_unlisted))
+        servos.append({key.id, key.baud});
+    m_plot->setServos(servos);
+}
+
+void MonitorPage::updateControls()
+{
+    const bool running = isRunning();
+    const bool connected = m_client && m_client->isConnected();
+    m_startButton->setText(running ? tr("Stop") : tr("Start"));
+    m_startButton->setIcon(
+        style()->standardIcon(running ? QStyle::SP_MediaStop : QStyle::SP_MediaPlay));
+    m_startButton->setEnabled(running || (connected && !selectedServos().isEmpty()));
+    const bool paused = m_plot->isPaused();
+    m_pauseButton->setText(paused ? tr("Resume") : tr("Pause"));
+    m_pauseButton->setIcon(
+        style()->standardIcon(paused ? QStyle::SP_MediaPlay : QStyle::SP_MediaPause));
+    m_resetZoomButton->setEnabled(m_plot->isZoomed());
+    m_recordButton->setText(isRecording() ? tr("Stop recording") : tr("Record CSV…"));
+    updateStatusLine();
+}
+
+void MonitorPage::updateStatusLine()
+{
+    const QLocale locale;
+    QString text;
+    if (isRunning()) {
+        text = tr("Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late")
+                   .arg(locale.toString(m_stats.cyclesPerSecond, 'f', 0),
+                        locale.toString(m_stats.samplesPerSecond, 'f', 0),
+                        locale.toString(m_stats.missed), locale.toString(m_stats.late));
+    } else {
+        text = tr("Stopped");
+    }
+    if (m_plot->isPaused())
+        text += tr(" · plot paused (samples are still received)");
+    if (m_statusLine->text() != text)
+        m_statusLine->setText(text);
+}
+
+void MonitorPage::showMessage(const QString &text, bool isError)
+{
+    m_message->setText(text);
+    m_message->setStyleSheet(
+        isError ? QStringLiteral("color: %1;").arg(MonitorReadouts::kProblemColour.name())
+                : QString());
+    m_message->setVisible(!text.isEmpty());
+}
+
+QVector<MonitorPage::Key> MonitorPage::checkedKeys() const
+{
+    QVector<Key> keys;
+    for (int row = 0; row < m_servoList->count(); ++row) {
+        const QListWidgetItem *item = m_servoList->item(row);
+        if (item->checkState() == Qt::Checked)
+            keys.append({quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()});
+    }
+    return keys;
+}
+
+bool MonitorPage::isListed(const Key &key) const
+{
+    for (int row = 0; row < m_servoList->count(); ++row) {
+        const QListWidgetItem *item = m_servoList->item(row);
+        if ((item->flags() & Qt::ItemIsUserCheckable) && item->data(kIdRole).toInt() == key.id
+            && item->data(kBaudRole).toInt() == key.baud)
+            return true;
+    }
+    return false;
+}
+
+QVector<MonitorPage::Key> MonitorPage::readoutKeys() const
+{
+    return checkedKeys() + m_unlisted;
+}

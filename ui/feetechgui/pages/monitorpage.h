@@ -1,0 +1,135 @@
+// The Monitor page of the Feetech workspace: choose servos and quantities, stream their
+// feedback, plot it live, read the latest values, record CSV and export the plot.
+#pragma once
+
+// telemetry.h names ServoInfo without defining it; feetechsession.h defines it.
+#include "feetechsession.h"
+#include "monitorreadouts.h"
+#include "telemetry.h"
+#include "telemetryrecorder.h"
+
+#include <QHash>
+#include <QPointer>
+#include <QVector>
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QTimer;
+class TelemetryPlot;
+
+namespace feetech {
+class BusClient;
+}
+
+class MonitorPage : public QWidget
+{
+    Q_OBJECT
+
+public:
+    // The plot's history when the page opens.
+    static constexpr int kDefaultWindowSeconds = 10;
+    // Readouts refresh at most this often, however fast samples come.
+    static constexpr int kReadoutIntervalMs = 250;
+    // A recording reaches the disk at least this often.
+    static constexpr int kFlushIntervalMs = feetech::TelemetryRecorder::kDefaultFlushIntervalMs;
+
+    explicit MonitorPage(feetech::BusClient *client, QWidget *parent = nullptr);
+    ~MonitorPage() override;
+
+    // Servos by their index in the bus client; a running stream restarts with the new ones.
+    void setSelectedServos(const QVector<int> &indexes);
+    QVector<int> selectedServos() const;
+    void setQuantities(const QVector<feetech::Quantity> &quantities);
+    QVector<feetech::Quantity> quantities() const;
+    // Samples per second per servo, one of the rates offered (0: as fast as the bus allows);
+    // a running stream restarts at it.
+    void setRate(double rateHz);
+    double rate() const;
+    void setWindowSeconds(double seconds);
+
+    // Streams the selected servos; false and *error (also shown on the page) when refused.
+    bool start(QString *error = nullptr);
+    void stop(); // also ends a recording
+    bool isRunning() const;
+
+    // Writes every sample of the selected servos taken from now on to `path` as CSV.
+    bool startRecording(const QString &path, QString *error = nullptr);
+    void stopRecording();
+    bool isRecording() const { return m_recorder->isRecording(); }
+    qint64 recordedRows() const { return m_recorder->rowCount(); }
+    qint64 recordingStartUs() const { return m_recorder->startUs(); } // time 0 of the recording
+
+    bool exportPng(const QString &path, QString *error = nullptr);
+
+    // The slot telemetryReceived is connected to: samples of unticked servos are dropped, the
+    // rest go to the plot, the readouts and the recording.
+    void addSamples(const QVector<feetech::FeedbackSample> &samples);
+    void updateReadouts(); // now rather than on the next tick
+
+    TelemetryPlot *plot() const { return m_plot; }
+    MonitorReadouts *readouts() const { return m_readouts; }
+    QListWidget *servoList() const { return m_servoList; }
+
+signals:
+    void problem(const QString &message);
+    void recordingChanged(bool recording);
+
+protected:
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    using Key = MonitorServoKey;
+
+    QWidget *buildControls();
+    void rebuildServoList();
+    void onServoItemChanged();
+    void onQuantityToggled();
+    void onRateChosen();
+    void onWindowChosen();
+    void onMonitoringChanged(bool monitoring);
+    void onStatsChanged(const feetech::TelemetryStats &stats);
+    void onStatusChanged();
+    void toggleStream();
+    void togglePause();
+    void chooseExportFile();
+    void toggleRecording();
+    void restartIfRunning();
+    void updatePlotServos();
+    void updateControls();
+    void updateStatusLine();
+    void updateRecordingLabel();
+    void failRecording(const QString &why);
+    void showMessage(const QString &text, bool isError);
+    QVector<Key> checkedKeys() const;
+    bool isListed(const Key &key) const;
+    QVector<Key> readoutKeys() const;
+
+    QPointer<feetech::BusClient> m_client;
+    TelemetryPlot *m_plot = nullptr;
+    QListWidget *m_servoList = nullptr;
+    QVector<QCheckBox *> m_quantityChecks; // in kAllQuantities order
+    QComboBox *m_rateCombo = nullptr;
+    QComboBox *m_windowCombo = nullptr;
+    QPushButton *m_startButton = nullptr;
+    QPushButton *m_pauseButton = nullptr;
+    QPushButton *m_resetZoomButton = nullptr;
+    QPushButton *m_exportButton = nullptr;
+    QPushButton *m_recordButton = nullptr;
+    QLabel *m_recordingLabel = nullptr;
+    QLabel *m_message = nullptr;
+    QLabel *m_statusLine = nullptr;
+    MonitorReadouts *m_readouts = nullptr;
+    QTimer *m_readoutTimer = nullptr;
+
+    bool m_updatingList = false; // our own check-state changes are not the user's
+    bool m_readoutsDirty = true;
+    QVector<Key> m_unlisted; // servos samples came for that the list does not name
+    feetech::TelemetryStats m_stats;
+
+    feetech::TelemetryRecorder *m_recorder = nullptr;
+};

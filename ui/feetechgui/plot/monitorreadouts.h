@@ -1,0 +1,90 @@
+// The Monitor page's readouts: a table with the newest value of every quantity of each servo,
+// its samples per second, missed cycles and state.
+#pragma once
+
+// telemetry.h names ServoInfo without defining it; feetechsession.h defines it.
+#include "feetechsession.h"
+#include "telemetry.h"
+
+#include <QColor>
+#include <QHash>
+#include <QPointer>
+#include <QTableWidget>
+#include <QVector>
+
+#include <deque>
+
+namespace feetech {
+class BusClient;
+}
+
+// A servo on the bus, as the monitor tells them apart.
+struct MonitorServoKey
+{
+    quint8 id = 0;
+    qint32 baud = 0;
+    bool operator==(const MonitorServoKey &other) const
+    {
+        return id == other.id && baud == other.baud;
+    }
+};
+inline size_t qHash(const MonitorServoKey &key, size_t seed = 0)
+{
+    return qHashMulti(seed, key.id, key.baud);
+}
+
+// Samples only update what is kept; the cells change on refresh(), which the page calls on a
+// timer: redrawing a table per sample would cost more than the bus delivers.
+class MonitorReadouts : public QTableWidget
+{
+    Q_OBJECT
+
+public:
+    enum Column {
+        ServoColumn,
+        PositionColumn, // then one column per quantity, in kAllQuantities order
+        SpeedColumn,
+        LoadColumn,
+        VoltageColumn,
+        TemperatureColumn,
+        CurrentColumn,
+        MovingColumn,
+        StatusColumn,
+        RateColumn, // samples per second received
+        MissedColumn,
+        StateColumn, // waiting, receiving, not answering
+        ColumnCount
+    };
+
+    // A tripped protection bit, a servo that stopped answering, a failed stream.
+    static inline const QColor kProblemColour {0xc0, 0x1c, 0x1c};
+
+    struct Row
+    {
+        MonitorServoKey key;
+        QColor colour; // the servo's colour in the plot; invalid: none
+    };
+
+    // `client` names the status bits by each servo's register table.
+    explicit MonitorReadouts(feetech::BusClient *client, QWidget *parent = nullptr);
+
+    void addSample(const feetech::FeedbackSample &sample);
+    void clearSamples(); // a new run: nothing received yet
+    // Shows `rows` in that order; `running`: the stream is on (rates and states are live).
+    void refresh(const QVector<Row> &rows, const feetech::TelemetryStats &stats, bool running);
+
+private:
+    struct Latest
+    {
+        feetech::FeedbackSample sample;
+        std::deque<qint64> recent; // steady times of the last second's samples
+    };
+
+    QString statusText(const MonitorServoKey &key, quint8 bits) const;
+
+    // Widens the columns whose text no longer fits; never narrows them, so they do not jitter.
+    void fitColumns();
+
+    QPointer<feetech::BusClient> m_client;
+    QHash<MonitorServoKey, Latest> m_latest;
+};

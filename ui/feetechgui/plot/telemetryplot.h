@@ -1,0 +1,190 @@
+// The live telemetry plot: one pane per quantity, stacked on a shared time axis, painted by
+// hand from bounded per-series buffers at most once per screen frame and only when it changed.
+#pragma once
+
+// telemetry.h names ServoInfo without defining it; feetechsession.h defines it.
+#include "feetechsession.h"
+#include "telemetry.h"
+#include "telemetrybuffer.h"
+
+#include <QColor>
+#include <QHash>
+#include <QList>
+#include <QPointF>
+#include <QPolygonF>
+#include <QRect>
+#include <QRegion>
+#include <QStaticText>
+#include <QVector>
+#include <QWidget>
+
+#include <utility>
+#include <vector>
+
+class QTimer;
+
+class TelemetryPlot : public QWidget
+{
+    Q_OBJECT
+
+public:
+    // A servo the plot draws, as the stream names it.
+    using Servo = TelemetryBuffer::Servo;
+
+    // No series keeps more points than this, whatever the rate and the window.
+    static constexpr int kHardPointCap = 20000;
+    // The fastest one servo is sampled on a 1 Mbps bus, for sizing a window's buffer.
+    static constexpr double kMaxRateHz = 1000.0;
+    // Frames per second at most: one per screen refresh, and no more than this, which keeps a
+    // scrolling trace smooth (data comes in batches every 20 ms) at half the cost of 60.
+    static constexpr int kMaxFramesPerSecond = 30;
+    // The least height of one quantity's pane, in pixels.
+    static constexpr int kMinimumPaneHeight = 110;
+
+    explicit TelemetryPlot(QWidget *parent = nullptr);
+    ~TelemetryPlot() override;
+
+    // One pane each, in this order.
+    void setQuantities(const QVector<feetech::Quantity> &quantities);
+    QVector<feetech::Quantity> quantities() const { return m_quantities; }
+
+    // The servos drawn, in this order (their colours follow it). Buffers of servos not listed
+    // are dropped; a sample of an unlisted servo adds it at the end.
+    void setServos(const QVector<Servo> &servos);
+    QVector<Servo> servos() const;
+
+    // Seconds of history in view while following live data.
+    void setWindowSeconds(double seconds);
+    double windowSeconds() const { return m_windowSeconds; }
+
+    // Paused: the view stays where it is while samples are still buffered.
+    void setPaused(bool paused);
+    bool isPaused() const { return m_paused; }
+    // Zoomed by the user (drag, wheel or setTimeRange): the view does not follow live.
+    bool isZoomed() const { return m_zoomed; }
+    // Back to following live data over the window.
+    void resetZoom();
+    // Shows [from, to] seconds (of the plot's time line) on every pane, as a zoom would.
+    void setTimeRange(double from, double to);
+    double viewFrom() const { return m_viewFrom; }
+    double viewTo() const { return m_viewTo; }
+
+    // Forgets every buffered point; the next sample becomes time 0.
+    void clear();
+    void addSamples(const QVector<feetech::FeedbackSample> &samples);
+
+    // Brings the view up to date now (the frame timer does this while data comes in).
+    void refresh();
+
+    // The whole stack of panes as one PNG; false and *error when it cannot be written.
+    bool exportPng(const QString &path, QString *error = nullptr);
+
+    // ---- for tests, the page and the benchmark
+    int seriesCount() const; // drawn series: servos × quantities
+    // Points buffered for this servo's quantity (baud 0: the first servo with that ID).
+    int bufferedPointCount(quint8 id, feetech::Quantity quantity, qint32 baud = 0) const;
+    // Points drawn for this servo's quantity at the last refresh (-1: no such series).
+    int shownPointCount(quint8 id, feetech::Quantity quantity, qint32 baud = 0) const;
+    // Those points, in seconds and the quantity's unit.
+    QList<QPointF> shownPoints(quint8 id, feetech::Quantity quantity, qint32 baud = 0) const;
+    qint64 bufferedPoints() const; // every series together
+    int maxPointsPerSeries() const; // for the present window
+    // Where the pane of this quantity draws its traces, in the plot's coordinates (empty when
+    // the quantity is not shown), and the value range its axis spans.
+    QRect plotArea(feetech::Quantity quantity) const;
+    std::pair<double, double> valueRange(feetech::Quantity quantity) const;
+    QColor servoColor(quint8 id, qint32 baud = 0) const;
+    qint64 paintCount() const { return m_paintCount; }
+    // A repaint is due at the next frame.
+    bool isFramePending() const;
+
+    QSize sizeHint() const override;
+
+signals:
+    void pausedChanged(bool paused);
+    void zoomedChanged(bool zoomed);
+    // After each paint: how long bringing the view up to date and painting took.
+    void framePainted(qint64 nanoseconds);
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    void changeEvent(QEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+
+private:
+    // Ticks of one axis: the values labelled, and the step between them.
+    struct Ticks
+    {
+        double from = 0.0;
+        double to = 1.0;
+        double step = 0.5;
+    };
+    struct Pane
+    {
+        feetech::Quantity quantity = feetech::Quantity::Position;
+        QRect frame; // the whole pane
+        QRect area; // where the traces go
+        Ticks values;
+        QVector<QList<QPointF>> shown; // per trace, decimated, at the last refresh
+    };
+
+    // telemetryplot.cpp: state, data and interaction
+    TelemetryBuffer::Retention retention() const;
+    void scheduleFrame();
+    void onFrame();
+    void prepareFrame(); // decimates the traces in view and fits the value axes
+    void rebuildPanes();
+    void onServosChanged();
+    QString seriesName(const Servo &servo) const;
+    int paneAt(const QPoint &position) const; // -1 outside every plot area
+    double timeAt(const Pane &pane, double x) const;
+    void zoomAround(double fraction, double factor);
+    void setFollowing();
+    void setZoomed(bool zoomed);
+
+    // telemetryplotpainter.cpp: layout and painting
+    void layoutPanes();
+    int leftMargin() const;
+    // What stays put as time goes by: frames, titles, legends, value labels.
+    void paintChrome(QPainter &painter);
+    // What moves each frame, inside m_frameRegion: plot areas, grids, traces, time labels.
+    void paintFrame(QPainter &painter);
+    void paintTraces(QPainter &painter, const Pane &pane);
+    const QStaticText &label(const QString &text);
+    void invalidateChrome();
+    void requestPaint(); // of the frame region only, unless the chrome changed too
+
+    QVector<feetech::Quantity> m_quantities;
+    TelemetryBuffer m_buffer;
+    std::vector<Pane> m_panes;
+    QTimer *m_frameTimer = nullptr;
+
+    double m_windowSeconds = 10.0;
+    bool m_paused = false;
+    bool m_zoomed = false;
+    bool m_dirty = false; // new samples since the last refresh
+    bool m_viewDirty = true; // the range, size or series changed: refresh even when frozen
+    bool m_layoutDirty = true; // pane rectangles need placing again
+    double m_viewFrom = 0.0;
+    double m_viewTo = 10.0;
+
+    // Only this is painted again each frame; the rest stays in the backing store until it
+    // changes, so a frame costs a fill of the plot areas and the lines on it.
+    QRegion m_frameRegion;
+    bool m_chromeValid = false;
+    int m_timeLabelTop = 0; // where the time tick labels start, under the lowest pane
+    QHash<QString, QStaticText> m_labels; // laid-out tick texts, reused frame after frame
+    QPolygonF m_polyline; // reused from trace to trace and frame to frame: no allocation
+    qint64 m_paintCount = 0;
+    qint64 m_prepareNs = 0; // the refresh behind the coming paint
+
+    int m_dragPane = -1; // the pane a drag zoom started in
+    int m_dragFromX = 0;
+    int m_dragToX = 0;
+};

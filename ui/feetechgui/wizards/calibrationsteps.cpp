@@ -1,0 +1,87 @@
+// Calibration steps: one servo read or verified write after the other, through the bus client.
+#include "calibrationsteps.h"
+
+#include "armcalibration.h"
+#include "busclient.h"
+
+CalibrationSteps::CalibrationSteps(feetech::BusClient *client, QObject *parent)
+    : QObject(parent)
+    , m_client(client)
+{
+    connect(m_client, &feetech::BusClient::operationFinished, this,
+            &CalibrationSteps::onOperationFinished);
+    connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
+        // The link went down: nothing running will report any more.
+        while (isRunning() && !m_client->isConnected()) {
+            m_allOk = false;
+            emit stepFinished(m_next - 1, false, tr("The bus was disconnected."));
+            startNext();
+        }
+    });
+}
+
+bool CalibrationSteps::start(const QVector<Step> &steps)
+{
+    if (isRunning())
+        return false;
+    m_steps = steps;
+    m_next = 0;
+    m_allOk = true;
+    startNext();
+    return true;
+}
+
+void CalibrationSteps::startNext()
+{
+    while (m_next < m_steps.size()) {
+        const Step &step = m_steps.at(m_next++);
+        emit progress(m_next - 1, int(m_steps.size()));
+        QString error;
+        bool started = true;
+        if (step.writes.isEmpty())
+            m_client->readServo(step.index);
+        else
+            started = m_client->writeValues(step.index, step.writes, &error);
+        if (started && m_client->isConnected())
+            return; // onOperationFinished goes on
+        m_allOk = false;
+        emit stepFinished(m_next - 1, false,
+                          error.isEmpty() ? tr("The bus is not connected.") : error);
+    }
+    m_next = int(m_steps.size()) + 1;
+    emit progress(int(m_steps.size()), int(m_steps.size()));
+    emit finished(m_allOk);
+}
+
+void CalibrationSteps::onOperationFinished(const feetech::OperationResult &result)
+{
+    if (!isRunning())
+        return;
+    const Step &step = m_steps.at(m_next - 1);
+    if (step.index >= m_client->servoCount())
+        return;
+    const feetech::ServoInfo &servo = m_client->servo(step.index).info;
+    const feetech::Operation expected =
+        step.writes.isEmpty() ? feetech::Operation::Read : feetech::Operation::Write;
+    if (result.operation != expected || result.servo.id != servo.id
+        || result.servo.baud != servo.baud)
+        return; // someone else's operation
+    bool ok = result.ok;
+    QString message = result.message;
+    if (ok && !step.writes.isEmpty()) {
+        // The read-back reached the model before the result: compare with what was written.
+        QHash<QString, qint32> readBack;
+        const model::ParameterModel *parameters = m_client->parameters(step.index);
+        for (const model::WriteItem &item : step.writes) {
+            if (const auto value = parameters->deviceValue(item.key))
+                readBack.insert(item.key, qint32(*value));
+        }
+        const QStringList mismatches = feetech::calibrationMismatches(step.writes, readBack);
+        ok = mismatches.isEmpty();
+        message = ok ? tr("Written and verified.")
+                     : tr("Verification failed: %1").arg(mismatches.join(QStringLiteral("; ")));
+    }
+    m_allOk = m_allOk && ok;
+    emit stepFinished(m_next - 1, ok, message);
+    startNext();
+}

@@ -1,0 +1,221 @@
+// Connection bar: port discovery, settings and the Connect button.
+#include "connectionbar.h"
+
+#include <QComboBox>
+#include <QIntValidator>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSerialPortInfo>
+#include <QTimer>
+
+namespace {
+
+// Hot-plugged adapters show up within this time.
+constexpr int kPortRefreshMs = 1000;
+
+} // namespace
+
+const QString ConnectionBar::kSimulatedPtkPort = QStringLiteral("simulated:ptk");
+const QString ConnectionBar::kSimulatedFeetechPort = QStringLiteral("simulated:feetech");
+const QString ConnectionBar::kSimulatedArmPort = QStringLiteral("simulated:so101");
+
+ConnectionBar::ConnectionBar(QWidget *parent)
+    : QToolBar(tr("Connection"), parent)
+{
+    setObjectName(QStringLiteral("connectionBar"));
+    setMovable(false);
+
+    addWidget(new QLabel(tr("Port "), this));
+    m_port = new QComboBox(this);
+    m_port->setObjectName(QStringLiteral("portCombo"));
+    m_port->setEditable(true); // a path the list does not show, e.g. servosim's link
+    m_port->setInsertPolicy(QComboBox::NoInsert);
+    m_port->setMinimumContentsLength(24);
+    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_port->setToolTip(tr("The serial port of the USB programmer, or a simulated servo"));
+    addWidget(m_port);
+    connect(m_port, &QComboBox::activated, this, [this] {
+        if (port() == kSimulatedPtkPort)
+            setProtocol(Protocol::Ptk);
+        else if (port() == kSimulatedFeetechPort || port() == kSimulatedArmPort)
+            setProtocol(Protocol::Feetech);
+    });
+
+    addSeparator();
+    addWidget(new QLabel(tr("Baud "), this));
+    m_baud = new QComboBox(this);
+    m_baud->setObjectName(QStringLiteral("baudCombo"));
+    m_baud->setEditable(true);
+    m_baud->setValidator(new QIntValidator(1200, 4000000, m_baud));
+    for (const int rate : {115200, 57600, 38400, 19200, 9600, 1000000, 500000, 250000, 128000})
+        m_baud->addItem(QString::number(rate));
+    m_baud->setToolTip(tr("PTK servos talk at 115200 baud. On a Feetech bus this is the rate "
+                          "the port opens at; a scan visits the rates it is asked to."));
+    addWidget(m_baud);
+
+    addSeparator();
+    addWidget(new QLabel(tr("Protocol "), this));
+    m_protocol = new QComboBox(this);
+    m_protocol->setObjectName(QStringLiteral("protocolCombo"));
+    m_protocol->addItem(tr("Auto"), int(Protocol::Auto));
+    m_protocol->addItem(tr("PTK RC servo"), int(Protocol::Ptk));
+    m_protocol->addItem(tr("Feetech bus"), int(Protocol::Feetech));
+    m_protocol->setToolTip(tr("Auto: ServoBench asks the port who is there (it only asks, it "
+                              "writes nothing) and opens the right workspace at the right "
+                              "rate. PTK: one RC servo on a USB programmer. Feetech: SCS, STS, "
+                              "SMS and HLS servos on a serial bus."));
+    addWidget(m_protocol);
+    connect(m_protocol, &QComboBox::currentIndexChanged, this, [this] {
+        if (protocol() != Protocol::Auto) {
+            const QString rate =
+                protocol() == Protocol::Ptk ? QStringLiteral("115200") : QStringLiteral("1000000");
+            m_baud->setCurrentIndex(m_baud->findText(rate));
+        }
+        updateEnabled();
+        emit protocolChanged(protocol());
+    });
+
+    addSeparator();
+    addWidget(new QLabel(tr("Echo "), this));
+    m_echo = new QComboBox(this);
+    m_echo->setObjectName(QStringLiteral("echoCombo"));
+    m_echo->addItem(tr("Auto"), int(seriallink::EchoMode::Auto));
+    m_echo->addItem(tr("On"), int(seriallink::EchoMode::On));
+    m_echo->addItem(tr("Off"), int(seriallink::EchoMode::Off));
+    m_echo->setToolTip(tr("Single-wire programmers send every byte back. Auto detects it."));
+    addWidget(m_echo);
+
+    addSeparator();
+    m_connect = new QPushButton(tr("Connect"), this);
+    m_connect->setObjectName(QStringLiteral("connectButton"));
+    m_connect->setDefault(true);
+    addWidget(m_connect);
+    connect(m_connect, &QPushButton::clicked, this, [this] {
+        if (m_active)
+            emit disconnectRequested();
+        else
+            emit connectRequested();
+    });
+
+    m_refresh = new QTimer(this);
+    m_refresh->setInterval(kPortRefreshMs);
+    connect(m_refresh, &QTimer::timeout, this, &ConnectionBar::refreshPorts);
+    m_refresh->start();
+    // Asking the system for its ports can take a while: the window shows first, with the
+    // simulated buses, and the real ports join the list once the event loop runs.
+    showPorts({}, {});
+    QTimer::singleShot(0, this, &ConnectionBar::refreshPorts);
+    updateEnabled();
+}
+
+QString ConnectionBar::port() const
+{
+    const int index = m_port->findText(m_port->currentText());
+    if (index >= 0 && !m_port->itemData(index).toString().isEmpty())
+        return m_port->itemData(index).toString();
+    return m_port->currentText().trimmed();
+}
+
+void ConnectionBar::setPort(const QString &port)
+{
+    m_portSet = true;
+    selectPort(port);
+}
+
+void ConnectionBar::selectPort(const QString &port)
+{
+    const int index = m_port->findData(port);
+    if (index >= 0)
+        m_port->setCurrentIndex(index);
+    else
+        m_port->setEditText(port);
+}
+
+qint32 ConnectionBar::baud() const
+{
+    return m_baud->currentText().toInt();
+}
+
+ConnectionBar::Protocol ConnectionBar::protocol() const
+{
+    return Protocol(m_protocol->currentData().toInt());
+}
+
+void ConnectionBar::setProtocol(Protocol protocol)
+{
+    m_protocol->setCurrentIndex(m_protocol->findData(int(protocol)));
+}
+
+seriallink::EchoMode ConnectionBar::echoMode() const
+{
+    return seriallink::EchoMode(m_echo->currentData().toInt());
+}
+
+void ConnectionBar::setBaud(qint32 baud)
+{
+    const QString rate = QString::number(baud);
+    if (m_baud->findText(rate) >= 0)
+        m_baud->setCurrentIndex(m_baud->findText(rate));
+    else
+        m_baud->setEditText(rate);
+}
+
+void ConnectionBar::showDetected(qint32 baud, seriallink::EchoMode echo)
+{
+    setBaud(baud);
+    m_echo->setCurrentIndex(m_echo->findData(int(echo)));
+}
+
+void ConnectionBar::setSessionActive(bool active)
+{
+    m_active = active;
+    m_connect->setText(active ? tr("Disconnect") : tr("Connect"));
+    updateEnabled();
+}
+
+void ConnectionBar::updateEnabled()
+{
+    const bool chosenByHand = protocol() != Protocol::Auto;
+    m_port->setEnabled(!m_active);
+    m_protocol->setEnabled(!m_active);
+    m_baud->setEnabled(!m_active && chosenByHand);
+    m_echo->setEnabled(!m_active && chosenByHand);
+}
+
+void ConnectionBar::refreshPorts()
+{
+    QStringList ports;
+    QStringList descriptions;
+    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts()) {
+        ports.append(info.systemLocation());
+        descriptions.append(info.description());
+    }
+    if (ports == m_knownPorts && m_port->count() > 0) {
+        m_portsListed = true;
+        return;
+    }
+    showPorts(ports, descriptions);
+    m_portsListed = true;
+}
+
+void ConnectionBar::showPorts(const QStringList &ports, const QStringList &descriptions)
+{
+    m_knownPorts = ports;
+    // Rebuilding the list must not lose what the user chose or is typing; the first list of
+    // the system's ports starts at its first port, unless a port was asked for.
+    const QString chosen = m_portsListed || m_portSet ? port() : QString();
+    const QSignalBlocker quiet(m_port);
+    m_port->clear();
+    for (int i = 0; i < ports.size(); ++i) {
+        const QString text = descriptions.at(i).isEmpty()
+            ? ports.at(i)
+            : QStringLiteral("%1 (%2)").arg(ports.at(i), descriptions.at(i));
+        m_port->addItem(text, ports.at(i));
+    }
+    m_port->addItem(tr("Simulated PTK servo"), kSimulatedPtkPort);
+    m_port->addItem(tr("Simulated Feetech bus"), kSimulatedFeetechPort);
+    m_port->addItem(tr("Simulated SO-101 arm"), kSimulatedArmPort);
+    if (!chosen.isEmpty())
+        selectPort(chosen);
+}

@@ -1,0 +1,66 @@
+// The connection bar: port (refreshed on hot-plug), baud, protocol, echo and Connect/Disconnect.
+#pragma once
+
+#include "requestengine.h"
+
+#include <QToolBar>
+
+class QComboBox;
+class QPushButton;
+class QTimer;
+
+class ConnectionBar : public QToolBar
+{
+    Q_OBJECT
+
+public:
+    // The port list's entries for the in-process simulated servos.
+    static const QString kSimulatedPtkPort;
+    static const QString kSimulatedFeetechPort;
+    static const QString kSimulatedArmPort; // an SO-101 arm's six STS3215, set up
+
+    // Auto: ServoBench probes the port and opens the workspace of what answers.
+    enum class Protocol { Ptk, Feetech, Auto };
+
+    explicit ConnectionBar(QWidget *parent = nullptr);
+
+    QString port() const; // a system path, or kSimulatedPtkPort
+    void setPort(const QString &port);
+    qint32 baud() const;
+    void setBaud(qint32 baud);
+    seriallink::EchoMode echoMode() const;
+    Protocol protocol() const;
+    void setProtocol(Protocol protocol); // also offers that protocol's usual baud rate
+    // The baud rate and echo as a probe found them (Auto): shown, for the user to see.
+    void showDetected(qint32 baud, seriallink::EchoMode echo);
+
+    // Connected (or trying to be): the button offers Disconnect and the settings are locked.
+    void setSessionActive(bool active);
+
+    // Reads the system's ports again, keeping what the user selected or typed.
+    void refreshPorts();
+
+signals:
+    void connectRequested();
+    void disconnectRequested();
+    void protocolChanged(ConnectionBar::Protocol protocol);
+
+private:
+    // The port list: `ports` (with their `descriptions`), then the simulated buses.
+    void showPorts(const QStringList &ports, const QStringList &descriptions);
+    // Selects `port` in the list, or types it when it is not listed.
+    void selectPort(const QString &port);
+    // Auto finds the rate and the echo itself: their boxes are for the explicit protocols.
+    void updateEnabled();
+
+    QComboBox *m_port = nullptr;
+    QComboBox *m_baud = nullptr;
+    QComboBox *m_protocol = nullptr;
+    QComboBox *m_echo = nullptr;
+    QPushButton *m_connect = nullptr;
+    QTimer *m_refresh = nullptr;
+    QStringList m_knownPorts;
+    bool m_portsListed = false; // the system's ports were asked for at least once
+    bool m_portSet = false; // setPort was called: the first listing keeps that port
+    bool m_active = false;
+};

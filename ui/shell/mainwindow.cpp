@@ -1,0 +1,599 @@
+// ServoBench's main window: the connection, the two workspaces, the packet log and the status bar.
+#include "mainwindow.h"
+
+#include "busclient.h"
+#include "calibrationfiles.h"
+#include "connectionbar.h"
+#include "demoservos.h"
+#include "feetechworkspace.h"
+#include "languagemenu.h"
+#include "packetlogdock.h"
+#include "packetlogmodel.h"
+#include "packetwindow.h"
+#include "parametermodel.h"
+#include "ptkclient.h"
+#include "ptkworkspace.h"
+#include "robotactions.h"
+#include "setupwizard.h"
+#include "shortcutsdialog.h"
+#include "simulatordock.h"
+#include "welcomepanel.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QKeySequence>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProcess>
+#include <QScreen>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace {
+
+constexpr int kRateRefreshMs = 500;
+constexpr int kStatusMessageMs = 8000;
+constexpr int kLogStripHeight = 110; // the packet log at first: a few rows
+// The guard's news stays longer: it says what was done to a servo.
+constexpr int kGuardMessageMs = 20000;
+
+QString stateColour(seriallink::ConnectionState state)
+{
+    switch (state) {
+    case seriallink::ConnectionState::Connected:
+        return QStringLiteral("#1b7f3b");
+    case seriallink::ConnectionState::Connecting:
+        return QStringLiteral("#8a6d00");
+    case seriallink::ConnectionState::NoReply:
+    case seriallink::ConnectionState::Lost:
+        return QStringLiteral("#b3261e");
+    case seriallink::ConnectionState::Disconnected:
+        break;
+    }
+    return QStringLiteral("#555555");
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent)
+    , m_ptk(std::make_unique<ptk::Client>())
+    , m_feetech(std::make_unique<feetech::BusClient>())
+{
+    setWindowTitle(tr("ServoBench"));
+    setObjectName(QStringLiteral("mainWindow"));
+    // 1280x820 where there is room; on a 1366x768 screen what is left under the desktop's
+    // panels and the title bar, so the status bar stays on the screen.
+    const QRect available = screen()->availableGeometry();
+    resize(std::min(1280, available.width() - 16), std::min(820, available.height() - 48));
+
+    m_connectionBar = new ConnectionBar(this);
+    addToolBar(Qt::TopToolBarArea, m_connectionBar);
+    connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectRequested);
+    connect(m_connectionBar, &ConnectionBar::disconnectRequested, this,
+            &MainWindow::disconnectRequested);
+
+    auto *central = new QWidget(this);
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(8, 8, 8, 0);
+    m_problem = new QLabel(central);
+    m_problem->setObjectName(QStringLiteral("problemBanner"));
+    m_problem->setWordWrap(true);
+    m_problem->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_problem->setStyleSheet(QStringLiteral("QLabel { background: #fde7e4; color: #7a1d14; "
+                                            "border: 1px solid #e3a59c; border-radius: 4px; "
+                                            "padding: 6px 10px; }"));
+    m_problem->hide();
+    layout->addWidget(m_problem);
+
+    m_pages = new QStackedWidget(central);
+    m_ptkWorkspace = new PtkWorkspace(m_ptk.get(), m_pages);
+    m_pages->addWidget(m_ptkWorkspace);
+    m_feetechWorkspace = new FeetechWorkspace(m_feetech.get(), m_pages);
+    m_pages->addWidget(m_feetechWorkspace);
+    // While nothing is connected: the ports, the simulated servos and the wiring.
+    m_welcome = new WelcomePanel(m_pages);
+    m_pages->addWidget(m_welcome);
+    m_pages->setCurrentWidget(m_welcome);
+    connect(m_welcome, &WelcomePanel::connectRequested, this, [this](const QString &port) {
+        // The page stays while Auto probes a port (nothing is open yet): one thing at a time.
+        if (isDetecting()) {
+            showProblem(tr("Wait until the port being probed answers, or Disconnect."));
+            return;
+        }
+        connectToPort(port);
+    });
+    layout->addWidget(m_pages);
+    setCentralWidget(central);
+    connect(m_connectionBar, &ConnectionBar::protocolChanged, this,
+            [this](ConnectionBar::Protocol protocol) {
+                showProtocol(protocol == ConnectionBar::Protocol::Feetech);
+            });
+    connect(m_ptkWorkspace, &PtkWorkspace::problem, this, &MainWindow::showProblem);
+    connect(m_ptkWorkspace, &PtkWorkspace::actionStarted, m_problem, &QWidget::hide);
+    connect(m_ptkWorkspace, &PtkWorkspace::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    connect(m_feetechWorkspace, &FeetechWorkspace::problem, this, &MainWindow::showProblem);
+    connect(m_feetechWorkspace, &FeetechWorkspace::message, this, [this](const QString &text) {
+        m_problem->hide();
+        statusBar()->showMessage(text, kStatusMessageMs);
+    });
+
+    m_packetLog = new PacketLogDock(this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_packetLog);
+    // A strip at first: the pages above (the Monitor's charts) get the height.
+    resizeDocks({m_packetLog}, {kLogStripHeight}, Qt::Vertical);
+
+    createMenus();
+    createDoctor();
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
+            [this] { updateTorqueOffAction(); });
+    // Whatever page moves the servos, the guard's warnings and actions show here.
+    connect(m_feetech.get(), &feetech::BusClient::guardEvent, this,
+            [this](const feetech::GuardEvent &event) {
+                statusBar()->showMessage(event.message, kGuardMessageMs);
+            });
+
+    m_connectionState = new QLabel(tr("Not connected"), this);
+    m_connectionState->setObjectName(QStringLiteral("connectionState"));
+    m_pollRate = new QLabel(this);
+    m_pollRate->setObjectName(QStringLiteral("pollRate"));
+    m_counters = new QLabel(this);
+    m_counters->setObjectName(QStringLiteral("linkCounters"));
+    // Permanent, so that a passing message never hides whether the servo is connected.
+    statusBar()->addPermanentWidget(m_connectionState);
+    statusBar()->addPermanentWidget(m_pollRate);
+    statusBar()->addPermanentWidget(m_counters);
+    onCountersChanged({});
+
+    // Either family's link is shown the same way: status bar, counters, packet log.
+    for (seriallink::LinkMirror *link : {m_ptk->link(), m_feetech->link()}) {
+        connect(link, &seriallink::LinkMirror::statusChanged, this, &MainWindow::onStatusChanged);
+        connect(link, &seriallink::LinkMirror::countersChanged, this,
+                &MainWindow::onCountersChanged);
+        connect(link, &seriallink::LinkMirror::packetLogged, m_packetLog, &PacketLogDock::append);
+    }
+
+    m_rateTimer = new QTimer(this);
+    m_rateTimer->setInterval(kRateRefreshMs);
+    connect(m_rateTimer, &QTimer::timeout, this, &MainWindow::updatePollRate);
+    m_rateTimer->start();
+    updatePollRate();
+
+    m_defaultLayout = saveState();
+    m_defaultSize = size();
+    restoreRemembered();
+}
+
+ParameterPage *MainWindow::ptkPage() const
+{
+    return m_ptkWorkspace->page();
+}
+
+MainWindow::~MainWindow()
+{
+    // The pages talk to the clients until they are gone, and the clients are members: the
+    // pages go first (QWidget would delete them only after the members).
+    delete m_pages;
+    // It looks at the demo's simulators, which are members too.
+    delete m_simulatorDock;
+}
+
+void MainWindow::createMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *load = file->addAction(tr("&Load profile…"), this, &MainWindow::chooseProfileToLoad);
+    load->setShortcut(QKeySequence::Open);
+    QAction *save = file->addAction(tr("&Save profile…"), this, &MainWindow::chooseProfileToSave);
+    save->setShortcut(QKeySequence::Save);
+    QMenu *recent = file->addMenu(tr("&Recent profiles"));
+    recent->setObjectName(QStringLiteral("recentProfilesMenu"));
+    connect(recent, &QMenu::aboutToShow, this, [this, recent] { fillRecentProfiles(recent); });
+    file->addSeparator();
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    quit->setObjectName(QStringLiteral("quitAction"));
+
+    QMenu *link = menuBar()->addMenu(tr("&Link"));
+    QAction *polling = link->addAction(tr("&Poll the servo"));
+    polling->setObjectName(QStringLiteral("pollingAction"));
+    polling->setCheckable(true);
+    polling->setChecked(true);
+    polling->setToolTip(tr("Keep reading the eight queries so the values stay live"));
+    connect(polling, &QAction::toggled, this, [this](bool on) { m_ptk->setPolling(on); });
+    m_ptkActions.append(polling);
+    QAction *fast = link->addAction(tr("&Fast polling (queries back to back)"));
+    fast->setObjectName(QStringLiteral("fastPollingAction"));
+    fast->setCheckable(true);
+    connect(fast, &QAction::toggled, this, [this](bool on) {
+        m_ptk->setPollInterval(int(ptk::SessionTiming().pollInterval.count()), on);
+    });
+    m_ptkActions.append(fast);
+    link->addSeparator();
+    QAction *scan = link->addAction(tr("&Scan the Feetech bus…"));
+    scan->setObjectName(QStringLiteral("scanAction"));
+    scan->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
+    connect(scan, &QAction::triggered, this, [this] {
+        if (!m_feetechActive
+            && m_ptk->status().state != seriallink::ConnectionState::Disconnected) {
+            showProblem(tr("Disconnect from the PTK servo before scanning a Feetech bus."));
+            return;
+        }
+        m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
+        m_feetechWorkspace->openScanDialog();
+    });
+
+    QAction *packets = link->addAction(tr("Pac&ket window…"), this, [this] {
+        auto *window = findChild<PacketWindow *>();
+        if (!window)
+            window = new PacketWindow(m_feetech.get(), m_ptk.get(), this);
+        window->show();
+        window->raise();
+        window->activateWindow();
+    });
+    packets->setObjectName(QStringLiteral("packetWindowAction"));
+    packets->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+
+    // The emergency stop of the Feetech bus. Esc reaches it from every page of the window; a
+    // dialog that is open keeps Esc for itself (and a modal one blocks the bus work anyway).
+    m_allTorqueOff = link->addAction(tr("All &torque off"));
+    m_allTorqueOff->setObjectName(QStringLiteral("allTorqueOffAction"));
+    m_allTorqueOff->setShortcut(QKeySequence(Qt::Key_Escape));
+    m_allTorqueOff->setShortcutContext(Qt::WindowShortcut);
+    m_allTorqueOff->setToolTip(tr("Switch the torque of every servo on the Feetech bus off"));
+    m_allTorqueOff->setEnabled(false);
+    connect(m_allTorqueOff, &QAction::triggered, this, [this] {
+        if (!m_feetechActive || !m_feetech->isConnected())
+            return;
+        statusBar()->showMessage(tr("Torque off: sent to every servo…"));
+        m_feetech->allTorqueOff();
+    });
+
+    // &Robot: work on a whole arm. Set up motors finds each servo itself, so it needs only an
+    // open Feetech port, no scan.
+    QMenu *robot = menuBar()->addMenu(tr("&Robot"));
+    robot->setObjectName(QStringLiteral("robotMenu"));
+    QAction *setUpMotors = robot->addAction(tr("Set up &motors…"));
+    setUpMotors->setObjectName(QStringLiteral("setUpMotorsAction"));
+    setUpMotors->setEnabled(false);
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, setUpMotors,
+            [this, setUpMotors] { setUpMotors->setEnabled(m_feetech->isConnected()); });
+    connect(setUpMotors, &QAction::triggered, this, [this] {
+        auto *wizard = findChild<SetupWizard *>();
+        if (!wizard)
+            wizard = new SetupWizard(m_feetech.get(), this);
+        wizard->show();
+        wizard->raise();
+        wizard->activateWindow();
+    });
+
+    m_feetechWorkspace->robotActions()->addTo(robot);
+
+    // Calibrating the arm, and its LeRobot calibration files: they need a scanned bus.
+    robot->addSeparator();
+    auto *calibration = new CalibrationActions(robot, m_feetech.get(), this);
+    connect(calibration, &CalibrationActions::problem, this, &MainWindow::showProblem);
+    connect(calibration, &CalibrationActions::message, this, [this](const QString &text) {
+        m_problem->hide();
+        statusBar()->showMessage(text, kStatusMessageMs);
+    });
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(m_packetLog->toggleViewAction());
+    m_viewMenu->addAction(m_connectionBar->toggleViewAction());
+    QAction *resetLayoutAction =
+        m_viewMenu->addAction(tr("&Reset layout"), this, &MainWindow::resetLayout);
+    resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    m_viewMenu->addSeparator();
+    auto *language = new LanguageMenu(this);
+    m_viewMenu->addMenu(language);
+    connect(language, &LanguageMenu::restartRequested, this, &MainWindow::restart);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *shortcuts = help->addAction(tr("&Keyboard shortcuts"), this, [this] {
+        auto *dialog = new ShortcutsDialog(menuBar(), this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
+    shortcuts->setObjectName(QStringLiteral("shortcutsAction"));
+    shortcuts->setShortcut(QKeySequence::HelpContents);
+    QAction *about = help->addAction(tr("&About ServoBench"), this, &MainWindow::showAbout);
+    about->setObjectName(QStringLiteral("aboutAction"));
+    help->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(
+        this, tr("About ServoBench"),
+        tr("<p><b>ServoBench %1</b></p>"
+           "<p>Programs and monitors PTK RC servos and Feetech serial-bus "
+           "servos on Linux, Windows and macOS.</p>"
+           "<p>Built with Qt %2, running on Qt %3.</p>"
+           "<p>Free software under the GNU General Public License, version 3 or "
+           "(at your option) any later version; it comes with no warranty.</p>")
+                .arg(QCoreApplication::applicationVersion(), QStringLiteral(QT_VERSION_STR),
+                     QString::fromLatin1(qVersion()))
+            + tr("<p>Home: <a href=\"%1\">%1</a></p>").arg(QStringLiteral(SERVOBENCH_HOMEPAGE)));
+}
+
+void MainWindow::startDemo()
+{
+    m_connectionBar->setPort(ConnectionBar::kSimulatedPtkPort);
+    connectRequested();
+}
+
+void MainWindow::startFeetechDemo()
+{
+    m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
+    m_connectionBar->setPort(ConnectionBar::kSimulatedFeetechPort);
+    connectRequested();
+    scanOnceConnected();
+}
+
+void MainWindow::startArmDemo()
+{
+    m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
+    m_connectionBar->setPort(ConnectionBar::kSimulatedArmPort);
+    connectRequested();
+    scanOnceConnected();
+}
+
+void MainWindow::scanOnceConnected(const feetech::ScanOptions &options)
+{
+    // Scan as soon as the port is open, so the tree fills by itself.
+    auto *once = new QObject(this);
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, once,
+            [this, once, options](const seriallink::ConnectionStatus &status) {
+                if (status.state == seriallink::ConnectionState::Disconnected) {
+                    once->deleteLater(); // the demo never connected: no scan later
+                    return;
+                }
+                if (status.state != seriallink::ConnectionState::Connected)
+                    return;
+                m_feetechWorkspace->startScan(options);
+                once->deleteLater();
+            });
+}
+
+void MainWindow::showSimulatorDock(bool arm)
+{
+    sim::SimulatorThread *simulator = arm ? m_demo->armSimulator() : m_demo->feetechSimulator();
+    if (!m_simulatorDock) {
+        m_simulatorDock = new SimulatorDock(this);
+        addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
+        // A tab beside the packet log: the pages above keep their height.
+        tabifyDockWidget(m_packetLog, m_simulatorDock);
+        resizeDocks({m_simulatorDock}, {m_simulatorDock->startingHeight()}, Qt::Vertical);
+        m_viewMenu->addAction(m_simulatorDock->toggleViewAction());
+        connect(m_simulatorDock, &SimulatorDock::message, this,
+                [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    }
+    m_simulatorDock->setSimulator(simulator);
+    m_simulatorDock->toggleViewAction()->setEnabled(true);
+    m_simulatorDock->show();
+    m_simulatorDock->raise();
+}
+
+void MainWindow::showProtocol(bool feetech)
+{
+    m_feetechActive = feetech;
+    // The welcome page stays while nothing is open; the workspace shows once a port opens.
+    if (m_pages->currentWidget() != m_welcome)
+        m_pages->setCurrentWidget(feetech ? static_cast<QWidget *>(m_feetechWorkspace)
+                                          : static_cast<QWidget *>(m_ptkWorkspace));
+    for (QAction *action : std::as_const(m_ptkActions))
+        action->setEnabled(!feetech);
+    m_pollRate->setVisible(!feetech);
+    updateTorqueOffAction();
+}
+
+void MainWindow::updateTorqueOffAction()
+{
+    m_allTorqueOff->setEnabled(m_feetechActive && m_feetech->isConnected());
+}
+
+void MainWindow::connectToPort(const QString &port)
+{
+    m_connectionBar->setPort(port);
+    connectRequested();
+}
+
+void MainWindow::connectRequested()
+{
+    m_problem->hide();
+    QString port = m_connectionBar->port();
+    m_portShown = port;
+    if (port.isEmpty()) {
+        showProblem(tr("Choose a serial port first."));
+        return;
+    }
+    rememberConnection();
+    const bool arm = port == ConnectionBar::kSimulatedArmPort;
+    const bool feetechBus = arm || port == ConnectionBar::kSimulatedFeetechPort;
+    if (feetechBus || port == ConnectionBar::kSimulatedPtkPort) {
+        m_connectionBar->setProtocol(feetechBus ? ConnectionBar::Protocol::Feetech
+                                                : ConnectionBar::Protocol::Ptk);
+        if (!m_demo)
+            m_demo = std::make_unique<sim::DemoServos>();
+        QString error;
+        port = arm       ? m_demo->armPort(&error)
+            : feetechBus ? m_demo->feetechPort(&error)
+                         : m_demo->ptkPort(&error);
+        if (port.isEmpty()) {
+            showProblem(tr("The simulated servos could not start: %1").arg(error));
+            return;
+        }
+        m_portShown = arm ? tr("simulated SO-101 arm")
+            : feetechBus  ? tr("simulated Feetech bus")
+                          : tr("simulated PTK servo");
+    }
+    // The Simulator dock goes with a simulated Feetech bus; a PTK servo has nothing to plug.
+    if (feetechBus) {
+        showSimulatorDock(arm);
+    } else if (m_simulatorDock) {
+        m_simulatorDock->setSimulator(nullptr);
+        m_simulatorDock->hide();
+        m_simulatorDock->toggleViewAction()->setEnabled(false);
+    }
+    m_portPath = port;
+    m_probe.reset();
+    if (m_connectionBar->protocol() == ConnectionBar::Protocol::Auto) {
+        detectAndConnect(port);
+        return;
+    }
+    const qint32 baud = m_connectionBar->baud();
+    if (baud <= 0) {
+        showProblem(tr("Enter a baud rate."));
+        return;
+    }
+    m_connectionBar->setSessionActive(true);
+    if (m_connectionBar->protocol() == ConnectionBar::Protocol::Feetech) {
+        m_feetechWorkspace->setPortName(m_portShown);
+        m_feetech->connectTo(port, baud, m_connectionBar->echoMode());
+    } else {
+        m_ptk->connectTo(port, baud, m_connectionBar->echoMode());
+    }
+}
+
+void MainWindow::disconnectRequested()
+{
+    if (m_probeThread) {
+        cancelDetection();
+        return;
+    }
+    if (m_feetechActive)
+        m_feetech->disconnectFrom();
+    else
+        m_ptk->disconnectFrom();
+}
+
+void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
+{
+    using seriallink::ConnectionState;
+    QString text;
+    switch (status.state) {
+    case ConnectionState::Disconnected:
+        text = tr("Not connected");
+        break;
+    case ConnectionState::Connecting:
+        text = tr("Connecting to %1…").arg(m_portShown);
+        break;
+    case ConnectionState::Connected:
+        text = m_feetechActive ? tr("Open: %1").arg(m_portShown)
+                               : tr("Connected: %1 at %2 baud").arg(m_portShown).arg(status.baud);
+        break;
+    case ConnectionState::NoReply:
+        text = tr("No reply on %1").arg(m_portShown);
+        break;
+    case ConnectionState::Lost:
+        text = tr("Disconnected: %1 went away, waiting for it to return").arg(m_portShown);
+        break;
+    }
+    m_connectionState->setText(text);
+    m_connectionState->setToolTip(status.message);
+    m_connectionState->setStyleSheet(
+        QStringLiteral("QLabel { color: %1; font-weight: 600; }").arg(stateColour(status.state)));
+    const bool active = status.state != ConnectionState::Disconnected;
+    m_connectionBar->setSessionActive(active);
+    const bool nothingOpen = m_ptk->status().state == ConnectionState::Disconnected
+        && m_feetech->status().state == ConnectionState::Disconnected;
+    if (nothingOpen)
+        m_pages->setCurrentWidget(m_welcome);
+    else if (m_pages->currentWidget() == m_welcome)
+        m_pages->setCurrentWidget(m_feetechActive ? static_cast<QWidget *>(m_feetechWorkspace)
+                                                  : static_cast<QWidget *>(m_ptkWorkspace));
+    // One line of explanation in the banner; never a dialog, so an unplugged cable cannot
+    // bury the user in message boxes.
+    if (status.state == ConnectionState::Connected || status.state == ConnectionState::Connecting)
+        m_problem->hide();
+    else if (!status.message.isEmpty())
+        showProblem(status.message);
+}
+
+void MainWindow::onCountersChanged(const seriallink::LinkCounters &counters)
+{
+    m_counters->setText(tr("sent %1 · ok %2 · checksum errors %3 · timeouts %4 · retries %5 · "
+                           "discarded %6 B")
+                            .arg(counters.framesSent)
+                            .arg(counters.repliesOk)
+                            .arg(counters.checksumErrors)
+                            .arg(counters.timeouts)
+                            .arg(counters.retries)
+                            .arg(counters.discardedBytes));
+}
+
+void MainWindow::updatePollRate()
+{
+    if (!m_ptk->isConnected()) {
+        m_pollRate->clear();
+        return;
+    }
+    m_pollRate->setText(tr("%1 queries/s").arg(m_ptk->pollRate(), 0, 'f', 1));
+}
+
+void MainWindow::showProblem(const QString &message)
+{
+    m_problem->setText(message);
+    m_problem->show();
+}
+
+void MainWindow::chooseProfileToSave()
+{
+    if (m_feetechActive) {
+        m_feetechWorkspace->chooseProfileToSave();
+        return;
+    }
+    m_ptkWorkspace->chooseProfileToSave();
+}
+
+bool MainWindow::saveProfile(const QString &path)
+{
+    return m_ptkWorkspace->saveProfile(path);
+}
+
+void MainWindow::chooseProfileToLoad()
+{
+    if (m_feetechActive) {
+        m_feetechWorkspace->chooseProfileToLoad();
+        return;
+    }
+    m_ptkWorkspace->chooseProfileToLoad();
+}
+
+void MainWindow::loadProfile(const QString &path)
+{
+    m_ptkWorkspace->loadProfile(path);
+}
+
+void MainWindow::restart()
+{
+    // Closed as Quit closes it (unapplied changes are asked about), then started again with
+    // the same arguments.
+    if (close())
+        QProcess::startDetached(QCoreApplication::applicationFilePath(),
+                                QCoreApplication::arguments().mid(1));
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    bool edits = m_ptk->model()->hasEdits();
+    for (int i = 0; i < m_feetech->servoCount(); ++i)
+        edits = edits || m_feetech->parameters(i)->hasEdits();
+    if (edits) {
+        const auto answer = QMessageBox::question(
+            this, tr("Unapplied changes"),
+            tr("Some changes have not been written to the servos. Quit anyway?"),
+            QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Discard) {
+            event->ignore();
+            return;
+        }
+    }
+    rememberLayout();
+    event->accept();
+}

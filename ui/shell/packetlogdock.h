@@ -1,0 +1,49 @@
+// The packet log dock: every frame in and out, with pause, clear, export and an errors filter.
+#pragma once
+
+#include "linktypes.h"
+
+#include <QDockWidget>
+
+class QAction;
+class QLabel;
+class QTableView;
+
+namespace seriallink {
+class PacketLogModel;
+}
+
+class PacketLogProxy;
+
+class PacketLogDock : public QDockWidget
+{
+    Q_OBJECT
+
+public:
+    explicit PacketLogDock(QWidget *parent = nullptr);
+
+    // The dock owns its model; the main window feeds it from the link's packet log signal.
+    seriallink::PacketLogModel *model() const { return m_model; }
+    void append(const seriallink::PacketLogEntry &entry);
+
+    QTableView *view() const { return m_view; }
+
+private:
+    void exportLog();
+    void showCounts(int total, int errors);
+    void updateCounts();
+    void setErrorsOnly(bool errorsOnly);
+    void followNewRows(int minimum, int maximum);
+
+    seriallink::PacketLogModel *m_model = nullptr;
+    PacketLogProxy *m_proxy = nullptr;
+    QTableView *m_view = nullptr;
+    QAction *m_pause = nullptr;
+    QAction *m_clear = nullptr;
+    QAction *m_export = nullptr;
+    QAction *m_errorsOnly = nullptr;
+    QLabel *m_counts = nullptr;
+    int m_shownTotal = 0;
+    int m_shownErrors = 0;
+    bool m_atBottom = true; // the view follows new rows only while scrolled to the end
+};

@@ -1,0 +1,26 @@
+// Widget helpers shared by the pages.
+#include "widgethelpers.h"
+
+#include <QHeaderView>
+#include <QPushButton>
+#include <QTableView>
+
+namespace widgethelpers {
+
+QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
+                          QWidget *parent)
+{
+    auto *button = new QPushButton(text, parent);
+    button->setObjectName(QLatin1String(name));
+    button->setToolTip(tip);
+    button->setAutoDefault(false);
+    return button;
+}
+
+void shrinkToOneRow(QTableView *view)
+{
+    view->setMinimumHeight(view->horizontalHeader()->sizeHint().height()
+                           + view->verticalHeader()->defaultSectionSize() + 2 * view->frameWidth());
+}
+
+} // namespace widgethelpers
