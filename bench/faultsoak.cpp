@@ -65,10 +65,10 @@ bool runUntil(const std::function<bool()> &done,
 }
 
 // Starts an operation on `client` and waits for its final result.
-std::optional<feetech::OperationResult> runOperation(feetech::BusClient &client,
-                                                     const std::function<bool()> &start)
+std::optional<feetech::OperationResult>
+runOperation(const std::function<feetech::OperationReply *()> &start)
 {
-    return soak::runOperation(client, start, kOperationTimeoutMs);
+    return soak::runOperation(start, kOperationTimeoutMs);
 }
 
 // A value in the register's range other than `current`.
@@ -248,10 +248,7 @@ SoakCounts soakFeetech(const SoakOptions &options)
         return counts;
     }
     for (int index = 0; index < kServos; ++index)
-        runOperation(client, [&] {
-            client.readServo(index);
-            return true;
-        });
+        runOperation([&] { return client.readServo(index); });
 
     simulator.call(
         [&](sim::Simulator &running) { running.setFaults(options.faults, options.seed); });
@@ -272,10 +269,7 @@ SoakCounts soakFeetech(const SoakOptions &options)
             return value;
         };
         if (random.bounded(2u) == 0) {
-            const auto result = runOperation(client, [&] {
-                client.readServo(index);
-                return true;
-            });
+            const auto result = runOperation([&] { return client.readServo(index); });
             if (!result) {
                 ++counts.hangs;
                 note(counts,
@@ -302,7 +296,7 @@ SoakCounts soakFeetech(const SoakOptions &options)
             asked.insert(key, value);
         }
         QString refusal;
-        const auto result = runOperation(client, [&] { return client.apply(index, &refusal); });
+        const auto result = runOperation([&] { return client.apply(index, &refusal); });
         if (!result) {
             ++counts.hangs;
             note(counts, QStringLiteral("%1: an apply never finished (%2)").arg(who, refusal));

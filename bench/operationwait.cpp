@@ -1,7 +1,7 @@
 // Waiting for a BusClient operation to end, for the fault soak and the unplug cycles.
 #include "operationwait.h"
 
-#include "busclient.h"
+#include "operationreply.h"
 
 #include <QEventLoop>
 #include <QTimer>
@@ -9,23 +9,21 @@
 namespace soak {
 
 std::optional<feetech::OperationResult>
-runOperation(feetech::BusClient &client, const std::function<bool()> &start, int timeoutMs)
+runOperation(const std::function<feetech::OperationReply *()> &start, int timeoutMs)
 {
+    feetech::OperationReply *reply = start();
+    if (!reply)
+        return std::nullopt;
+    // The reply finishes through a queued signal: nothing can have been missed yet.
     std::optional<feetech::OperationResult> final;
     QEventLoop loop;
-    const auto connection = QObject::connect(&client, &feetech::BusClient::operationFinished, &loop,
-                                             [&](const feetech::OperationResult &result) {
-                                                 if (result.final) {
-                                                     final = result;
-                                                     loop.quit();
-                                                 }
-                                             });
-    if (start()) {
-        QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-        if (!final)
-            loop.exec();
-    }
-    QObject::disconnect(connection);
+    QObject::connect(reply, &feetech::OperationReply::finished, &loop,
+                     [&](const feetech::OperationResult &result) {
+                         final = result;
+                         loop.quit();
+                     });
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    loop.exec();
     return final;
 }
 

@@ -7,14 +7,14 @@
 #include <optional>
 
 namespace feetech {
-class BusClient;
+class OperationReply;
 }
 
 namespace soak {
 
-// Starts an operation (`start` returns whether it was accepted) and runs the event loop until
-// its final result, or `timeoutMs`: nothing when it was refused or did not end in time.
+// Starts an operation (`start` returns its reply, nullptr when refused) and runs the event loop
+// until its final result, or `timeoutMs`: nothing when it was refused or did not end in time.
 std::optional<feetech::OperationResult>
-runOperation(feetech::BusClient &client, const std::function<bool()> &start, int timeoutMs);
+runOperation(const std::function<feetech::OperationReply *()> &start, int timeoutMs);
 
 } // namespace soak

@@ -159,10 +159,10 @@ QString ptkCycle(ptk::Client &client, Bench &bench, bool apply)
 
 // ---- Feetech, through feetech::BusClient
 
-std::optional<feetech::OperationResult> operate(feetech::BusClient &client,
-                                                const std::function<bool()> &start)
+std::optional<feetech::OperationResult>
+operate(const std::function<feetech::OperationReply *()> &start)
 {
-    return soak::runOperation(client, start, kWaitMs);
+    return soak::runOperation(start, kWaitMs);
 }
 
 bool scan(feetech::BusClient &client)
@@ -180,10 +180,7 @@ bool scan(feetech::BusClient &client)
 
 QString feetechShowsWhatItHolds(feetech::BusClient &client, Bench &bench, int index)
 {
-    if (!operate(client, [&] {
-            client.readServo(index);
-            return true;
-        }))
+    if (!operate([&] { return client.readServo(index); }))
         return QStringLiteral("no full read after reconnecting");
     const feetech::Servo &servo = client.servo(index);
     QString wrong;
@@ -227,23 +224,20 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
     }
     case Work::FeetechApply:
     case Work::FeetechFlow: {
-        const auto connection = QObject::connect(
-            &client, &feetech::BusClient::operationFinished,
-            [&ended](const feetech::OperationResult &r) { ended = ended || r.final; });
         QString error;
-        bool started = false;
+        feetech::OperationReply *reply = nullptr;
         if (work == Work::FeetechApply) {
             const qint64 now =
                 client.parameters(0)->deviceValue(QStringLiteral("max_temperature")).value_or(70);
             client.parameters(0)->edit(QStringLiteral("max_temperature"), now == 70 ? 71 : 70);
-            started = client.apply(0, &error);
+            reply = client.apply(0, &error);
         } else {
-            started = client.reboot(0, &error);
+            reply = client.reboot(0, &error);
         }
-        if (!started) {
-            QObject::disconnect(connection);
+        if (!reply)
             return QStringLiteral("refused: ") + error;
-        }
+        const auto connection =
+            QObject::connect(reply, &feetech::OperationReply::finished, [&ended] { ended = true; });
         pause(cutAfterMs / 10);
         bench.unplug();
         const bool hung = !waitUntil([&] { return ended; });

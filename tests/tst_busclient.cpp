@@ -2,6 +2,7 @@
 #include "feetechbus.h"
 
 #include "busclient.h"
+#include "operationlog.h"
 
 #include <QSignalSpy>
 #include <QtTest>
@@ -35,7 +36,7 @@ private:
         return m_client->servo(index).info.table().find(key)->address;
     }
 
-    // Waits for the next operationFinished; its result, or an empty one after 10 s.
+    // Waits for the next result the operation log reports; it, or an empty one after 10 s.
     OperationResult nextResult(QSignalSpy &finished)
     {
         if (finished.isEmpty() && !finished.wait(10000))
@@ -137,7 +138,8 @@ private slots:
     {
         QVERIFY(parameters(0).edit(kMaxTemperature, 66));
         QVERIFY(parameters(0).edit(QStringLiteral("id"), 9));
-        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QString error;
         QVERIFY2(m_client->applyAll(0, &error), qPrintable(error));
         // Asked while the register write runs: it must not wait for the ID change after it.
@@ -206,7 +208,8 @@ private slots:
     void anEepromWriteWhoseUnlockGoesUnansweredIsFailedAndKeepsTheEdit()
     {
         setSimulatorValue(2, u"id", 30); // servo 2 is no longer there
-        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QVERIFY(parameters(1).edit(kMaxTemperature, 66));
         QVERIFY(m_client->apply(1));
         const OperationResult result = nextResult(finished);
@@ -226,7 +229,8 @@ private slots:
             faults.drop = 1.0;
             simulator.setFaults(faults, 5);
         });
-        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QVERIFY(parameters(0).edit(kMaxTemperature, 68));
         QVERIFY(m_client->apply(0));
         const OperationResult result = nextResult(finished);
@@ -245,7 +249,8 @@ private slots:
     void aRamWriteThatGoesUnansweredIsUnknownUntilAReadSettlesIt()
     {
         setSimulatorValue(2, u"id", 30); // servo 2 is no longer there
-        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QVERIFY(parameters(1).edit(kAcceleration, 40));
         QVERIFY(m_client->apply(1));
         const OperationResult result = nextResult(finished);
@@ -268,7 +273,8 @@ private slots:
             faults.drop = 1.0; // every answer lost; the requests still arrive
             simulator.setFaults(faults, 3);
         });
-        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QVERIFY(parameters(0).edit(kAcceleration, 41));
         QVERIFY(m_client->apply(0));
         const OperationResult result = nextResult(finished);
@@ -286,7 +292,8 @@ private slots:
     {
         QVERIFY(parameters(0).edit(kMaxTemperature, 66));
         QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
-        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QString error;
         QVERIFY2(m_client->writeValues(0, {{kMaxTemperature, 70}}, &error), qPrintable(error));
         const OperationResult result = nextResult(finished);

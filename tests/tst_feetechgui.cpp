@@ -4,6 +4,7 @@
 #include "feetechworkspace.h"
 #include "jointtable.h"
 #include "mainwindow.h"
+#include "operationlog.h"
 #include "parameterpage.h"
 #include "registertablemodel.h"
 
@@ -126,7 +127,8 @@ private slots:
             setSimulatorValue(id, u"torque_enable", 1);
         QTabWidget *tabs = workspace()->tabs();
         tabs->setCurrentWidget(workspace()->jointTable());
-        QSignalSpy finished(client(), &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(client());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QTest::keyClick(m_window.get(), Qt::Key_Escape);
         // The Joints tab's own reads (it reads the servos when it opens) may finish first.
         const auto torqueOff = [&finished]() -> std::optional<feetech::OperationResult> {

@@ -1,6 +1,7 @@
 // End-to-end tests of Feetech telemetry and bus-wide control against a simulated bus on a pty.
 #include "feetechbus.h"
 #include "feetechsession.h"
+#include "operationlog.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -292,7 +293,8 @@ private slots:
         QCOMPARE(client.latestSample(0)->id, quint8(1));
         // Control writes go between the cycles; the stream goes on and the link stays clean.
         QVERIFY(client.startMonitor({0, 1, 2, 3}, 50));
-        QSignalSpy written(&client, &feetech::BusClient::operationFinished);
+        OperationLog writtenLog(&client);
+        QSignalSpy written(&writtenLog, &OperationLog::finished);
         for (int i = 0; i < 4; ++i) {
             QVERIFY(client.writeValues(i, {{QStringLiteral("torque_enable"), 1}}));
             QVERIFY(client.writeValues(i, {{QStringLiteral("goal_position"), 500 + 100 * i}}));

@@ -4,6 +4,7 @@
 // that stops answering is reported.
 #include "feetechbus.h"
 #include "motiontest.h"
+#include "operationlog.h"
 #include "servoctlrun.h"
 
 #include <QTimer>
@@ -57,7 +58,8 @@ private:
                 std::min(watched.lowestTorqueLimit, simulatorValue(id, u"torque_limit"));
         });
         sampler.start(2);
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QString error;
         if (!m_client->identifyJoint(index, &error)) {
             qWarning("identify refused: %s", qPrintable(error));
@@ -175,7 +177,8 @@ private slots:
         QVERIFY2(test.startSweep(testsupport::longSweep(index), &error), qPrintable(error));
         QVERIFY(!m_client->identifyBlocker(index).isEmpty());
         QVERIFY(m_client->identifyBlocker(index).contains(QStringLiteral("motion test")));
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         error.clear();
         QVERIFY(!m_client->identifyJoint(index, &error));
         QVERIFY(error.contains(QStringLiteral("motion test")));
@@ -207,7 +210,8 @@ private slots:
     {
         const int index = readServo(2);
         QVERIFY(index >= 0);
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QVERIFY(m_client->identifyJoint(index));
         // Unplugged once it has started moving.
         QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(2, u"torque_enable") == 1, 10000);
@@ -238,7 +242,8 @@ private slots:
         const int index = readServo(1);
         QVERIFY(index >= 0);
         const qint32 limit = simulatorValue(1, u"torque_limit");
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QVERIFY(m_client->identifyJoint(index));
         QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(1, u"torque_enable") == 1, 10000);
         m_client->allTorqueOff();

@@ -3,6 +3,7 @@
 #include "feetechbus.h"
 #include "jointtable.h"
 #include "namedchild.h"
+#include "operationlog.h"
 #include "pose.h"
 
 #include <QLabel>
@@ -95,7 +96,8 @@ private:
         QVERIFY(read->isEnabled());
         // Operations finish in the order they were asked for: once the four reads are done,
         // everything queued before them has been sent too.
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         read->click();
         QTRY_VERIFY_WITH_TIMEOUT(finished.count() >= m_joints->rowCount(), 10000);
         for (int index = 0; index < m_client->servoCount(); ++index)

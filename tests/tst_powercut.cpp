@@ -3,6 +3,7 @@
 // done, and a servo left unlocked is noticed and locked on request (BusClient and servoctl).
 #include "busclient.h"
 #include "feetechbus.h"
+#include "operationlog.h"
 #include "servoctlrun.h"
 #include "simcommands.h"
 
@@ -39,7 +40,8 @@ private:
         model::ParameterModel *model = client.parameters(index);
         if (!model->edit(QStringLiteral("max_angle_limit"), kNewLimit))
             return std::nullopt;
-        QSignalSpy finished(&client, &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(&client);
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QString error;
         if (!client.apply(index, &error) || !finished.wait(30000))
             return std::nullopt;
@@ -86,7 +88,8 @@ private slots:
         QVERIFY(index >= 0);
         QVERIFY(client.eepromUnlocked(index));
         QCOMPARE(simulatorValue(1, u"lock"), 0); // noticing writes nothing
-        QSignalSpy finished(&client, &feetech::BusClient::operationFinished);
+        OperationLog finishedLog(&client);
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QString error;
         QVERIFY2(client.lockEeprom(index, &error), qPrintable(error));
         QVERIFY(finished.wait(10000));

@@ -4,6 +4,7 @@
 #include "feetechbus.h"
 
 #include "busclient.h"
+#include "operationlog.h"
 #include "servoparameters.h"
 #include "torqueonhold.h"
 
@@ -31,7 +32,8 @@ private:
     // Writes `values` to the servo at `index` and waits for the result.
     OperationResult write(int index, const QVector<model::WriteItem> &values)
     {
-        QSignalSpy finished(m_client.get(), &BusClient::operationFinished);
+        OperationLog finishedLog(m_client.get());
+        QSignalSpy finished(&finishedLog, &OperationLog::finished);
         QString error;
         if (!m_client->writeValues(index, values, &error)) {
             qWarning("refused: %s", qPrintable(error));

@@ -172,8 +172,6 @@ PacketWindow::PacketWindow(feetech::BusClient *feetech, ptk::Client *ptk, QWidge
             [this](const seriallink::PacketLogEntry &entry) {
                 onLogged(PacketFrame::Protocol::Ptk, entry);
             });
-    connect(m_feetech, &feetech::BusClient::operationFinished, this,
-            &PacketWindow::onFeetechFinished);
     connect(m_ptk, &ptk::Client::frameSent, this, [this](bool ok, const QString &message) {
         if (m_current.protocol == PacketFrame::Protocol::Ptk)
             finishCurrent(ok, message);
@@ -461,9 +459,17 @@ void PacketWindow::sendNext()
     m_current = frame;
     m_currentSeen = false;
     QString error;
-    const bool accepted = frame.protocol == PacketFrame::Protocol::Feetech
-        ? m_feetech->sendPacket(frame.bytes, frame.baud, frame.replyId, frame.replyDataSize, &error)
-        : m_ptk->sendFrame(frame.bytes, frame.expectsReply, &error);
+    bool accepted = false;
+    if (frame.protocol == PacketFrame::Protocol::Feetech) {
+        feetech::OperationReply *reply = m_feetech->sendPacket(
+            frame.bytes, frame.baud, frame.replyId, frame.replyDataSize, &error);
+        if (reply)
+            connect(reply, &feetech::OperationReply::finished, this,
+                    &PacketWindow::onFeetechFinished);
+        accepted = reply;
+    } else {
+        accepted = m_ptk->sendFrame(frame.bytes, frame.expectsReply, &error);
+    }
     updatePreview();
     if (!accepted)
         finishCurrent(false, error);
@@ -471,8 +477,7 @@ void PacketWindow::sendNext()
 
 void PacketWindow::onFeetechFinished(const feetech::OperationResult &result)
 {
-    if (result.operation == feetech::Operation::SendPacket
-        && m_current.protocol == PacketFrame::Protocol::Feetech)
+    if (m_current.protocol == PacketFrame::Protocol::Feetech)
         finishCurrent(result.ok, result.message);
 }
 

@@ -12,7 +12,6 @@ BatchProgram::BatchProgram(BusClient *client, QObject *parent)
     , m_client(client)
 {
     qRegisterMetaType<feetech::ProgramOutcome>();
-    connect(m_client, &BusClient::operationFinished, this, &BatchProgram::onOperationFinished);
     connect(m_client, &BusClient::statusChanged, this, &BatchProgram::onStatusChanged);
 }
 
@@ -84,19 +83,17 @@ void BatchProgram::next()
     }
     // A fresh read: the diff is against what the servo holds now.
     m_phase = Phase::Reading;
-    m_client->readServo(index);
-}
-
-bool BatchProgram::isCurrent(const OperationResult &result) const
-{
-    // A refusal or a lost link reports no servo.
-    return (result.servo.id == m_current.id && result.servo.baud == m_current.baud)
-        || (result.servo.id == 0 && result.servo.baud == 0 && !result.ok);
+    OperationReply *reply = m_client->readServo(index);
+    if (!reply) { // the bus went away
+        failCurrent(m_client->writeBlocker(index));
+        return;
+    }
+    connect(reply, &OperationReply::finished, this, &BatchProgram::onOperationFinished);
 }
 
 void BatchProgram::onOperationFinished(const OperationResult &result)
 {
-    if (!isRunning() || result.control || !isCurrent(result))
+    if (!isRunning())
         return;
     if (m_phase == Phase::Reading && result.operation == Operation::Read) {
         if (!result.ok) {
@@ -104,7 +101,7 @@ void BatchProgram::onOperationFinished(const OperationResult &result)
             return;
         }
         diffAndWrite(m_client->indexOf(m_current.id, m_current.baud));
-    } else if (m_phase == Phase::Writing && result.operation == Operation::Write && result.final) {
+    } else if (m_phase == Phase::Writing && result.operation == Operation::Write) {
         settle(result);
     }
 }
@@ -146,11 +143,13 @@ void BatchProgram::diffAndWrite(int index)
             return;
         }
     }
-    if (!m_client->apply(index, &error)) {
+    OperationReply *reply = m_client->apply(index, &error);
+    if (!reply) {
         parameters.revertAll();
         failCurrent(error);
         return;
     }
+    connect(reply, &OperationReply::finished, this, &BatchProgram::onOperationFinished);
     m_phase = Phase::Writing;
 }
 

@@ -51,7 +51,6 @@ private:
     void onOperationFinished(const OperationResult &result);
     void onStatusChanged(const seriallink::ConnectionStatus &status);
     void failCurrent(const QString &error);
-    bool isCurrent(const OperationResult &result) const;
 
     QPointer<BusClient> m_client;
     std::optional<SettingsFile> m_file;

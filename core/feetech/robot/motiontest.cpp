@@ -57,7 +57,6 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
     m_timer->setSingleShot(true);
     connect(m_timer, &QTimer::timeout, this, &MotionTest::onTimeout);
     connect(m_client, &BusClient::telemetryReceived, this, &MotionTest::onTelemetry);
-    connect(m_client, &BusClient::operationFinished, this, &MotionTest::onOperationFinished);
     connect(m_client, &BusClient::statusChanged, this, &MotionTest::onStatusChanged);
     connect(m_client, &BusClient::allTorqueOffRequested, this,
             [this] { fail(tr("All torque off: the test was stopped.")); });
@@ -228,8 +227,10 @@ bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
             *error = tr("%1 is no longer on the bus.").arg(servoName());
         return false;
     }
-    if (!m_client->writeValues(index, values, error))
+    OperationReply *reply = m_client->writeValues(index, values, error);
+    if (!reply)
         return false;
+    connect(reply, &OperationReply::finished, this, &MotionTest::onWriteFinished);
     ++m_writesInFlight;
     m_commandUs = steadyMicroseconds();
     return true;
@@ -449,10 +450,9 @@ void MotionTest::onTimeout()
     }
 }
 
-void MotionTest::onOperationFinished(const OperationResult &result)
+void MotionTest::onWriteFinished(const OperationResult &result)
 {
-    if (!isRunning() || m_writesInFlight <= 0 || result.operation != Operation::Write
-        || result.servo.id != m_id || result.servo.baud != m_baud)
+    if (!isRunning() || m_writesInFlight <= 0)
         return;
     --m_writesInFlight;
     if (!result.ok)

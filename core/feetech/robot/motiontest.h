@@ -134,7 +134,7 @@ private:
     bool ensureMonitor(int index, QString *error);
     void restoreMonitor();
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
-    void onOperationFinished(const feetech::OperationResult &result);
+    void onWriteFinished(const feetech::OperationResult &result);
     void onStatusChanged(const seriallink::ConnectionStatus &status);
     void onTimeout();
     void startApproach();

@@ -87,9 +87,15 @@ BusClient::~BusClient() = default;
 
 bool BusClient::isBusy() const
 {
-    return m_scanning || std::any_of(m_pending.begin(), m_pending.end(), [](const Pending &p) {
-               return p.kind == Work::Foreground;
+    return m_scanning || std::any_of(m_pending.begin(), m_pending.end(), [](const auto &entry) {
+               return entry.second.kind == Work::Foreground && !entry.second.dropped;
            });
+}
+
+bool BusClient::hasLivePending() const
+{
+    return std::any_of(m_pending.begin(), m_pending.end(),
+                       [](const auto &entry) { return !entry.second.dropped; });
 }
 
 void BusClient::connectTo(const QString &portName, qint32 baud, seriallink::EchoMode echo)
@@ -213,19 +219,16 @@ void BusClient::onOperationFinished(const OperationResult &result)
         return; // a scan ends through scanFinished
     if (result.operation == Operation::Guard)
         return; // the guard's own: reported as a guardEvent
-    if (result.operation == Operation::TorqueOff) {
-        // It overtook everything queued, so it has no place in m_pending.
-        emit operationFinished(result);
-        return;
-    }
-    Pending target;
-    if (!m_pending.empty()) {
-        target = m_pending.front();
-        // A step of an apply chain: the operation goes on, with the servo where it left it.
-        if (result.final)
-            m_pending.pop_front();
-        else
-            m_pending.front() = {result.servo.id, result.servo.baud, target.kind};
+    const auto pending = m_pending.find(result.ticket);
+    if (pending == m_pending.end())
+        return; // not one of ours
+    const Pending target = pending->second;
+    // A step of an apply chain: the operation goes on, with the servo where it left it.
+    if (result.final) {
+        m_pending.erase(pending);
+    } else {
+        pending->second.id = result.servo.id;
+        pending->second.baud = result.servo.baud;
     }
     const int index = indexOf(target.id, target.baud);
     if (index >= 0) {
@@ -272,20 +275,24 @@ void BusClient::onOperationFinished(const OperationResult &result)
     }
     if (result.operation == Operation::Identify)
         m_identifying.reset();
-    if (target.kind == Work::Foreground)
+    if (target.kind == Work::Foreground && !target.dropped)
         emit busyChanged(isBusy());
-    if (target.kind != Work::Background) { // a failed refresh is retried by the next one
-        OperationResult reported = result;
-        reported.control = target.kind == Work::Control;
-        emit operationFinished(reported);
+    // A failed refresh has no reply: the next one retries it.
+    if (target.reply) {
+        target.reply->finishStep(result);
+        if (result.final)
+            target.reply->deleteLater();
     }
+    onHealthWorkFinished(result);
     onMotorWorkFinished(result);
 }
 
 void BusClient::forgetWork()
 {
     const bool wasBusy = isBusy();
-    m_pending.clear();
+    // Their replies finish when the session reports what it dropped.
+    for (auto &entry : m_pending)
+        entry.second.dropped = true;
     m_scanning = false;
     m_identifying.reset();
     // The link went down with writes on their way: whether they landed is not known.
@@ -300,143 +307,161 @@ void BusClient::forgetWork()
         emit busyChanged(false);
 }
 
-bool BusClient::applyAll(int index, QString *error)
+OperationReply *BusClient::applyAll(int index, QString *error)
 {
     return startApply(index, error, true);
 }
 
-bool BusClient::apply(int index, QString *error)
+OperationReply *BusClient::apply(int index, QString *error)
 {
     return startApply(index, error, false);
 }
 
-bool BusClient::startApply(int index, QString *error, bool withAddress)
+OperationReply *BusClient::startApply(int index, QString *error, bool withAddress)
 {
     if (refused(writeBlocker(index), error))
-        return false;
+        return nullptr;
     model::ParameterModel &parameters = *this->parameters(index);
     // Without the address, the ID and baud rate edits stay pending for their own flows.
     const auto plan =
         planApply(servo(index).info, parameters, idsInUse(),
                   withAddress ? ApplyScope::Everything : ApplyScope::Registers, error);
     if (!plan)
-        return false;
+        return nullptr;
     // Exactly the planned registers are Writing; an ID or baud edit stays an edit until its
     // flow has moved the servo.
     parameters.takeWritePlan({QStringLiteral("id"), QStringLiteral("baud_rate")});
     return startOperation(
-        index, error, Work::Foreground,
+        Operation::Write, index, error, Work::Foreground,
         [plan = *plan](Session &s, const ServoInfo &info) { s.apply(info, plan); });
 }
 
-bool BusClient::startOperation(int index, QString *error, Work kind,
-                               const std::function<void(Session &, const ServoInfo &)> &work)
+OperationReply *
+BusClient::startOperation(Operation operation, int index, QString *error, Work kind,
+                          const std::function<void(Session &, const ServoInfo &)> &work)
 {
     if (index < 0 || index >= servoCount()) {
         if (error)
             *error = Tr::tr("No servo is selected.");
-        return false;
+        return nullptr;
     }
     if (!isConnected()) {
         if (error)
             *error = Tr::tr("The bus is not connected.");
-        return false;
+        return nullptr;
     }
     const ServoInfo info = servo(index).info;
-    const bool wasBusy = isBusy();
-    m_pending.push_back({info.id, info.baud, kind});
-    if (kind == Work::Foreground && !wasBusy)
-        emit busyChanged(true);
-    m_worker.run([work, info](Session &s) { work(s, info); });
-    return true;
+    return submit(operation, info.id, info.baud, kind, [work, info](Session &s) { work(s, info); });
 }
 
-void BusClient::readServo(int index)
+OperationReply *BusClient::submit(Operation operation, quint8 id, qint32 baud, Work kind,
+                                  const std::function<void(Session &)> &work)
 {
-    startOperation(index, nullptr, Work::Foreground,
-                   [](Session &s, const ServoInfo &info) { s.read(info, {}, ReadSource::Read); });
+    const quint64 ticket = ++m_lastTicket;
+    const bool wasBusy = isBusy();
+    OperationReply *reply = kind == Work::Background
+        ? nullptr
+        : new OperationReply(operation, id, baud, kind == Work::Control, this);
+    m_pending[ticket] = {id, baud, kind, reply, false};
+    if (kind == Work::Foreground && !wasBusy)
+        emit busyChanged(true);
+    if (reply)
+        emit submitted(reply);
+    m_worker.run([ticket, work](Session &s) {
+        s.setNextTicket(ticket);
+        work(s);
+        s.setNextTicket(0);
+    });
+    return reply;
+}
+
+OperationReply *BusClient::readServo(int index)
+{
+    return startOperation(
+        Operation::Read, index, nullptr, Work::Foreground,
+        [](Session &s, const ServoInfo &info) { s.read(info, {}, ReadSource::Read); });
 }
 
 void BusClient::refreshRam(int index)
 {
-    if (isBusy() || !m_pending.empty() || index < 0 || index >= servoCount())
+    if (isBusy() || hasLivePending() || index < 0 || index >= servoCount())
         return; // the next refresh will come; real work goes first
     const ServoInfo &info = servo(index).info;
     if (!info.hasTable())
         return;
     const QVector<Block> ram = info.table().ramBlocks();
-    startOperation(index, nullptr, Work::Background, [ram](Session &s, const ServoInfo &target) {
-        s.read(target, ram, ReadSource::Refresh);
-    });
+    startOperation(
+        Operation::Read, index, nullptr, Work::Background,
+        [ram](Session &s, const ServoInfo &target) { s.read(target, ram, ReadSource::Refresh); });
 }
 
-bool BusClient::changeId(int index, int newId, QString *error)
+OperationReply *BusClient::changeId(int index, int newId, QString *error)
 {
     if (refused(writeBlocker(index), error))
-        return false;
+        return nullptr;
     const QVector<int> inUse = idsInUse();
     if (inUse.contains(newId) && newId != servo(index).info.id) {
         if (error)
             *error = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
-        return false;
+        return nullptr;
     }
     return startOperation(
-        index, error, Work::Foreground,
+        Operation::ChangeId, index, error, Work::Foreground,
         [newId, inUse](Session &s, const ServoInfo &info) { s.changeId(info, newId, inUse); });
 }
 
-bool BusClient::changeBaud(int index, qint32 newBaud, QString *error)
+OperationReply *BusClient::changeBaud(int index, qint32 newBaud, QString *error)
 {
     if (refused(writeBlocker(index), error))
-        return false;
+        return nullptr;
     return startOperation(
-        index, error, Work::Foreground,
+        Operation::ChangeBaud, index, error, Work::Foreground,
         [newBaud](Session &s, const ServoInfo &info) { s.changeBaud(info, newBaud); });
 }
 
-bool BusClient::calibrateMiddle(int index, QString *error)
+OperationReply *BusClient::calibrateMiddle(int index, QString *error)
 {
     if (refused(writeBlocker(index), error))
-        return false;
+        return nullptr;
     if (middleCalibration(servo(index).info) == MiddleCalibration::Unsupported) {
         if (error)
             *error = Tr::tr("This servo has no middle calibration (SCS servos have no offset "
                             "register).");
-        return false;
+        return nullptr;
     }
-    return startOperation(index, error, Work::Foreground,
+    return startOperation(Operation::CalibrateMiddle, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.calibrateMiddle(info); });
 }
 
-bool BusClient::factoryReset(int index, QString *error)
+OperationReply *BusClient::factoryReset(int index, QString *error)
 {
     if (refused(writeBlocker(index), error))
-        return false;
-    return startOperation(index, error, Work::Foreground,
+        return nullptr;
+    return startOperation(Operation::FactoryReset, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.factoryReset(info); });
 }
 
-bool BusClient::reboot(int index, QString *error)
+OperationReply *BusClient::reboot(int index, QString *error)
 {
     if (refused(commandBlocker(index), error))
-        return false;
-    return startOperation(index, error, Work::Foreground,
+        return nullptr;
+    return startOperation(Operation::Reboot, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.reboot(info); });
 }
 
-bool BusClient::clearStatus(int index, QString *error)
+OperationReply *BusClient::clearStatus(int index, QString *error)
 {
     if (refused(commandBlocker(index), error))
-        return false;
-    return startOperation(index, error, Work::Foreground,
+        return nullptr;
+    return startOperation(Operation::ClearStatus, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
 }
 
-bool BusClient::lockEeprom(int index, QString *error)
+OperationReply *BusClient::lockEeprom(int index, QString *error)
 {
     if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
-        return false;
-    return startOperation(index, error, Work::Foreground,
+        return nullptr;
+    return startOperation(Operation::LockEeprom, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &info) { s.lockEeprom(info); });
 }
 
@@ -518,7 +543,8 @@ void BusClient::onTelemetry(const QVector<FeedbackSample> &samples, quint64 stre
     emit telemetryReceived(samples);
 }
 
-bool BusClient::writeValues(int index, const QVector<model::WriteItem> &values, QString *error)
+OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem> &values,
+                                       QString *error)
 {
     if (!isConnected() || index < 0 || index >= servoCount() || !servo(index).info.hasTable()
         || servo(index).info.sharedId) {
@@ -526,22 +552,22 @@ bool BusClient::writeValues(int index, const QVector<model::WriteItem> &values, 
         const QString blocker = writeBlocker(index);
         if (error)
             *error = blocker.isEmpty() ? Tr::tr("No servo is selected.") : blocker;
-        return false;
+        return nullptr;
     }
     if (values.isEmpty()) {
         if (error)
             *error = Tr::tr("Nothing to write.");
-        return false;
+        return nullptr;
     }
     const auto writes = encodeWrites(servo(index).info.table(), values, error);
     if (!writes)
-        return false;
+        return nullptr;
     const QVector<RegisterWrite> items = *writes;
-    return startOperation(index, error, Work::Control,
+    return startOperation(Operation::Write, index, error, Work::Control,
                           [items](Session &s, const ServoInfo &info) { s.write(info, items); });
 }
 
-void BusClient::allTorqueOff()
+OperationReply *BusClient::allTorqueOff()
 {
     emit allTorqueOffRequested();
     QVector<qint32> bauds;
@@ -553,15 +579,16 @@ void BusClient::allTorqueOff()
     }
     if (bauds.isEmpty() && status().baud > 0)
         bauds.append(status().baud); // nothing scanned yet: the rate the port is at
-    m_worker.run([bauds, servos](Session &s) { s.torqueOffAll(bauds, servos); });
+    return submit(Operation::TorqueOff, 0, 0, Work::Emergency,
+                  [bauds, servos](Session &s) { s.torqueOffAll(bauds, servos); });
 }
 
-bool BusClient::moveAll(const QVector<Goal> &goals, QString *error)
+QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString *error)
 {
     const auto refuse = [error](const QString &why) {
         if (error)
             *error = why;
-        return false;
+        return QVector<OperationReply *>();
     };
     if (!isConnected())
         return refuse(Tr::tr("The bus is not connected."));
@@ -589,14 +616,15 @@ bool BusClient::moveAll(const QVector<Goal> &goals, QString *error)
     const Register *goal =
         servo(goals.first().index).info.table().find(QStringLiteral("goal_position"));
     const int address = goal ? goal->address : 42;
+    QVector<OperationReply *> replies;
     for (const qint32 baud : std::as_const(bauds)) {
         const QVector<SyncWriteEntry> group = entries.value(baud);
-        m_pending.push_back({0, baud, Work::Control});
-        m_worker.run([baud, address, group](Session &s) {
-            s.syncWrite(baud, address, int(group.first().data.size()), group);
-        });
+        replies.append(submit(Operation::SyncWrite, 0, baud, Work::Control,
+                              [baud, address, group](Session &s) {
+                                  s.syncWrite(baud, address, int(group.first().data.size()), group);
+                              }));
     }
-    return true;
+    return replies;
 }
 
 void BusClient::clearServos()

@@ -6,6 +6,7 @@
 #include "goalrange.h"
 #include "linkmirror.h"
 #include "linktypes.h"
+#include "operationreply.h"
 #include "parametermodel.h"
 #include "servohealth.h"
 #include "sessionthread.h"
@@ -15,8 +16,8 @@
 #include <QHash>
 #include <QObject>
 
-#include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct Servo
     std::optional<FeedbackSample> latest; // the newest telemetry sample
 };
 
+// Each operation it submits returns an OperationReply (nullptr, with *error, when refused), which
+// finishes with the operation's result; submitted names every reply as it is made, for whoever
+// reports all of them (the status bar). Refreshes in the background have none.
 class BusClient : public QObject
 {
     Q_OBJECT
@@ -67,37 +71,37 @@ public:
     // nothing.
     QString commandBlocker(int index) const;
 
-    void readServo(int index);
+    OperationReply *readServo(int index);
     // Present values and other RAM registers, in the background; skipped while busy.
     void refreshRam(int index);
     // Writes the servo's edits (except ID and baud rate: see changeId / changeBaud) and reads
     // them back. False and *error when nothing was sent.
-    bool apply(int index, QString *error = nullptr);
+    OperationReply *apply(int index, QString *error = nullptr);
     // Everything pending: the register edits, then an ID edit through changeId, then a baud
     // edit through changeBaud, each only once the one before has succeeded.
-    bool applyAll(int index, QString *error = nullptr);
-    bool changeId(int index, int newId, QString *error = nullptr);
-    bool changeBaud(int index, qint32 newBaud, QString *error = nullptr);
-    bool calibrateMiddle(int index, QString *error = nullptr);
-    bool factoryReset(int index, QString *error = nullptr);
-    bool reboot(int index, QString *error = nullptr);
-    bool clearStatus(int index, QString *error = nullptr);
+    OperationReply *applyAll(int index, QString *error = nullptr);
+    OperationReply *changeId(int index, int newId, QString *error = nullptr);
+    OperationReply *changeBaud(int index, qint32 newBaud, QString *error = nullptr);
+    OperationReply *calibrateMiddle(int index, QString *error = nullptr);
+    OperationReply *factoryReset(int index, QString *error = nullptr);
+    OperationReply *reboot(int index, QString *error = nullptr);
+    OperationReply *clearStatus(int index, QString *error = nullptr);
     // Whether servo `index`'s EEPROM lock reads open (lock = 0) in its last read; false when it
     // is locked, not read yet or has no lock register.
     bool eepromUnlocked(int index) const;
     // Closes it and reads it back (Session::lockEeprom).
-    bool lockEeprom(int index, QString *error = nullptr);
+    OperationReply *lockEeprom(int index, QString *error = nullptr);
     // A frame built by hand (the packet window), queued like any command and sent once at
     // `baud` (Session::sendPacket). The caller has asked before anything that writes EEPROM.
-    bool sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
-                    int replyDataSize, QString *error = nullptr);
+    OperationReply *sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
+                               int replyDataSize, QString *error = nullptr);
 
     // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
 
     // Why servo `index` cannot be identified now (empty when it can): no bus, an unknown
     // model, another operation, or something holding the servo (a motion test).
     QString identifyBlocker(int index) const;
-    bool identifyJoint(int index, QString *error = nullptr);
+    OperationReply *identifyJoint(int index, QString *error = nullptr);
     bool isIdentifying(int index) const;
     // What moves a servo outside the session's operations (a motion test) holds it while it
     // runs: identifyBlocker gives `reason` meanwhile.
@@ -124,19 +128,20 @@ public:
     // ones unlocked and locked again). Unlike apply() they do not wait for an idle bus and
     // leave the servo's pending edits alone; the model shows what the read-back says.
     // False and *error (naming the register) when a value is unknown or out of range.
-    bool writeValues(int index, const QVector<model::WriteItem> &values, QString *error = nullptr);
+    OperationReply *writeValues(int index, const QVector<model::WriteItem> &values,
+                                QString *error = nullptr);
     // Torque enable 0 on every servo of the bus: a broadcast WRITE at each baud rate the scan
     // found servos at, ahead of anything queued (a running scan is cancelled), then a read-back
     // from each servo found. Emits allTorqueOffRequested at once.
-    void allTorqueOff();
+    OperationReply *allTorqueOff();
     struct Goal
     {
         int index = 0;
         qint32 position = 0; // register units (steps)
     };
-    // One SYNC WRITE of goal positions per baud rate; false and *error when a position is out
-    // of its servo's range or a servo is unknown (nothing sent).
-    bool moveAll(const QVector<Goal> &goals, QString *error = nullptr);
+    // One SYNC WRITE of goal positions per baud rate, a reply each; none and *error when a
+    // position is out of its servo's range or a servo is unknown (nothing sent).
+    QVector<OperationReply *> moveAll(const QVector<Goal> &goals, QString *error = nullptr);
 
     // ---- the overload and thermal guard (busclientguard.cpp): on from the start
 
@@ -152,16 +157,17 @@ public:
     std::optional<GuardEvent> lastGuardEvent(int index) const;
     // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
     // result (operationFinished, RecoverOverload) says stillLatched when a power cycle is due.
-    bool recoverOverload(int index, bool checkOnly, QString *error = nullptr);
+    OperationReply *recoverOverload(int index, bool checkOnly, QString *error = nullptr);
 
     // ---- motor set-up (busclientmotorsetup.cpp): no scan needed, each servo is found alone
 
     // Looks for the one servo on the bus at every rate. False and *error when not started.
-    bool findMotor(const MotorTarget &target, QString *error = nullptr);
+    OperationReply *findMotor(const MotorTarget &target, QString *error = nullptr);
     // Finds the one servo again and gives it the target's ID, rate and settings, verified.
-    bool setUpMotor(const MotorTarget &target, QString *error = nullptr);
+    OperationReply *setUpMotor(const MotorTarget &target, QString *error = nullptr);
     // Which joints of `robot` already answer at their ID at its rate, as their model.
-    bool checkJoints(qint32 baud, const QVector<JointCheck> &joints, QString *error = nullptr);
+    OperationReply *checkJoints(qint32 baud, const QVector<JointCheck> &joints,
+                                QString *error = nullptr);
     // Stops a find, set-up or check before its next step.
     void cancelMotorSetup();
 
@@ -170,8 +176,8 @@ public:
     // Reads each of servos `indexes` in turn (its limits and `reads` feedback blocks); a
     // healthRead per servo (and progress), then healthCheckFinished. False and *error when
     // nothing was started.
-    bool checkHealth(const QVector<int> &indexes, int reads = kDefaultHealthReads,
-                     QString *error = nullptr);
+    OperationReply *checkHealth(const QVector<int> &indexes, int reads = kDefaultHealthReads,
+                                QString *error = nullptr);
     // The running check stops before its next servo.
     void cancelHealthCheck();
     bool isCheckingHealth() const { return m_checkingHealth; }
@@ -179,7 +185,7 @@ public:
     QString moveTestBlocker(int index) const;
     // The move test moves the horn: it runs only when `confirmed` says the user agreed to it;
     // otherwise, as when blocked, false and *error, and nothing is sent. Ends with moveTested.
-    bool moveTest(int index, bool confirmed, QString *error = nullptr);
+    OperationReply *moveTest(int index, bool confirmed, QString *error = nullptr);
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
@@ -188,7 +194,8 @@ signals:
     void servosChanged(); // the list itself: added, removed, or moved to another ID or baud
     void servoUpdated(int index); // new values or status for this servo
     void progress(int done, int total);
-    void operationFinished(const feetech::OperationResult &result);
+    // A reply was made for an operation just submitted (not for background refreshes).
+    void submitted(feetech::OperationReply *reply);
     void busyChanged(bool busy);
     // Samples of monitored servos, in batches (at most about 50 a second).
     void telemetryReceived(const QVector<feetech::FeedbackSample> &samples);
@@ -213,39 +220,51 @@ private:
     void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
+    void onHealthWorkFinished(const OperationResult &result);
     void connectMotorSetup(Session *session);
     void connectHealth(Session *session);
     void connectGuard(Session *session);
     // Sends the guard each servo's limits (set, or from its registers) when they changed.
     void sendGuardSettings();
-    bool startMotorWork(QString *error, const std::function<void(Session &)> &work);
+    OperationReply *startMotorWork(Operation operation, QString *error,
+                                   const std::function<void(Session &)> &work);
     void onMotorWorkFinished(const OperationResult &result);
     enum class Work {
         Foreground, // the bus is busy until it ends
-        Background, // a refresh: skipped when busy, its failure not reported
-        Control // a control write: reported, but it does not make the bus busy
+        Background, // a refresh: skipped when busy, no reply, its failure not reported
+        Control, // a control write: reported, but it does not make the bus busy
+        Emergency // All torque off: ahead of everything, it does not make the bus busy
     };
-    bool startOperation(int index, QString *error, Work kind,
-                        const std::function<void(Session &, const ServoInfo &)> &work);
+    OperationReply *startOperation(Operation operation, int index, QString *error, Work kind,
+                                   const std::function<void(Session &, const ServoInfo &)> &work);
+    // Queues `work` in the session under a new ticket; its reply (none for a background one).
+    OperationReply *submit(Operation operation, quint8 id, qint32 baud, Work kind,
+                           const std::function<void(Session &)> &work);
     void onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream);
     void clearServos();
     void forgetWork(); // the link went down: nothing is running any more
     // The pending edits as planApply plans them; with `withAddress` the ID and baud too.
-    bool startApply(int index, QString *error, bool withAddress);
+    OperationReply *startApply(int index, QString *error, bool withAddress);
 
     seriallink::SessionThread<Session> m_worker;
     seriallink::LinkMirror m_link;
     std::vector<std::unique_ptr<Servo>> m_servos;
     bool m_scanning = false;
-    // The session runs operations in the order they were asked for: the servo each one works
-    // on (by its address before it ran), and whether it is a background refresh.
+    // The operations submitted and not finished, by ticket: the servo each one works on (by
+    // its address before it ran, and after each step of an apply chain), its kind and reply.
+    // The link going down leaves them `dropped` (no longer busy) until the session reports
+    // their end.
     struct Pending
     {
         quint8 id = 0;
         qint32 baud = 0;
         Work kind = Work::Foreground;
+        OperationReply *reply = nullptr;
+        bool dropped = false;
     };
-    std::deque<Pending> m_pending;
+    std::map<quint64, Pending> m_pending;
+    quint64 m_lastTicket = 0;
+    bool hasLivePending() const;
     QElapsedTimer m_clock;
     bool m_monitoring = false;
     quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped

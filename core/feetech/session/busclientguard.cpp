@@ -98,21 +98,21 @@ std::optional<GuardEvent> BusClient::lastGuardEvent(int index) const
     return *event;
 }
 
-bool BusClient::recoverOverload(int index, bool checkOnly, QString *error)
+OperationReply *BusClient::recoverOverload(int index, bool checkOnly, QString *error)
 {
     const QString blocker = writeBlocker(index);
     if (!blocker.isEmpty()) {
         if (error)
             *error = blocker;
-        return false;
+        return nullptr;
     }
     if (!servo(index).info.table().find(u"status")) {
         if (error)
             *error = Tr::tr("This servo has no status register: there is nothing to recover.");
-        return false;
+        return nullptr;
     }
     return startOperation(
-        index, error, Work::Foreground,
+        Operation::RecoverOverload, index, error, Work::Foreground,
         [checkOnly](Session &s, const ServoInfo &info) { s.recoverOverload(info, checkOnly); });
 }
 

@@ -19,25 +19,27 @@ void BusClient::connectHealth(Session *session)
     connect(session, &Session::healthRead, this, &BusClient::healthRead);
     connect(session, &Session::moveTested, this,
             [this](const MoveTestResult &result) { m_moveTested = result; });
-    // After onOperationFinished: the client is idle again when these are heard.
-    connect(this, &BusClient::operationFinished, this, [this](const OperationResult &result) {
-        if (result.operation == Operation::HealthCheck && m_checkingHealth) {
-            m_checkingHealth = false;
-            emit healthCheckFinished(result.ok, result.message);
-        } else if (result.operation == Operation::MoveTest) {
-            MoveTestResult reported = m_moveTested.value_or(MoveTestResult {});
-            if (!m_moveTested) { // the link went down under it
-                reported.id = result.servo.id;
-                reported.baud = result.servo.baud;
-                reported.message = result.message;
-            }
-            m_moveTested.reset();
-            emit moveTested(reported);
-        }
-    });
 }
 
-bool BusClient::checkHealth(const QVector<int> &indexes, int reads, QString *error)
+void BusClient::onHealthWorkFinished(const OperationResult &result)
+{
+    // After the reply: the client is idle again when these are heard.
+    if (result.operation == Operation::HealthCheck && m_checkingHealth) {
+        m_checkingHealth = false;
+        emit healthCheckFinished(result.ok, result.message);
+    } else if (result.operation == Operation::MoveTest) {
+        MoveTestResult reported = m_moveTested.value_or(MoveTestResult {});
+        if (!m_moveTested) { // the link went down under it
+            reported.id = result.servo.id;
+            reported.baud = result.servo.baud;
+            reported.message = result.message;
+        }
+        m_moveTested.reset();
+        emit moveTested(reported);
+    }
+}
+
+OperationReply *BusClient::checkHealth(const QVector<int> &indexes, int reads, QString *error)
 {
     QString why;
     if (!isConnected())
@@ -56,14 +58,12 @@ bool BusClient::checkHealth(const QVector<int> &indexes, int reads, QString *err
     if (!why.isEmpty()) {
         if (error)
             *error = why;
-        return false;
+        return nullptr;
     }
     m_checkingHealth = true;
     // Several servos, none of them the target: the check reports each on its own.
-    m_pending.push_back({0, 0, Work::Foreground});
-    emit busyChanged(true);
-    m_worker.run([servos, reads](Session &s) { s.checkHealth(servos, reads); });
-    return true;
+    return submit(Operation::HealthCheck, 0, 0, Work::Foreground,
+                  [servos, reads](Session &s) { s.checkHealth(servos, reads); });
 }
 
 void BusClient::cancelHealthCheck()
@@ -79,7 +79,7 @@ QString BusClient::moveTestBlocker(int index) const
     return identifyBlocker(index);
 }
 
-bool BusClient::moveTest(int index, bool confirmed, QString *error)
+OperationReply *BusClient::moveTest(int index, bool confirmed, QString *error)
 {
     QString why = moveTestBlocker(index);
     if (why.isEmpty() && !confirmed)
@@ -88,10 +88,10 @@ bool BusClient::moveTest(int index, bool confirmed, QString *error)
     if (!why.isEmpty()) {
         if (error)
             *error = why;
-        return false;
+        return nullptr;
     }
     m_moveTested.reset();
-    return startOperation(index, error, Work::Foreground,
+    return startOperation(Operation::MoveTest, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &target) { s.moveTest(target); });
 }
 

@@ -28,17 +28,17 @@ QString BusClient::identifyBlocker(int index) const
     return {};
 }
 
-bool BusClient::identifyJoint(int index, QString *error)
+OperationReply *BusClient::identifyJoint(int index, QString *error)
 {
     const QString blocker = identifyBlocker(index);
     if (!blocker.isEmpty()) {
         if (error)
             *error = blocker;
-        return false;
+        return nullptr;
     }
     const ServoInfo &info = servo(index).info;
     m_identifying = std::pair(info.id, info.baud);
-    return startOperation(index, error, Work::Foreground,
+    return startOperation(Operation::Identify, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &target) { s.identifyJoint(target); });
 }
 

@@ -33,7 +33,8 @@ void BusClient::connectMotorSetup(Session *session)
             [this](const QVector<JointCheck> &joints) { m_jointsChecked = joints; });
 }
 
-bool BusClient::startMotorWork(QString *error, const std::function<void(Session &)> &work)
+OperationReply *BusClient::startMotorWork(Operation operation, QString *error,
+                                          const std::function<void(Session &)> &work)
 {
     QString why;
     if (!isConnected())
@@ -43,30 +44,31 @@ bool BusClient::startMotorWork(QString *error, const std::function<void(Session 
     if (!why.isEmpty()) {
         if (error)
             *error = why;
-        return false;
+        return nullptr;
     }
     m_motorResult.reset();
     m_jointsChecked.reset();
     // No servo of the list is its target: the work finds its own servo.
-    m_pending.push_back({0, 0, Work::Foreground});
-    emit busyChanged(true);
-    m_worker.run(work);
-    return true;
+    return submit(operation, 0, 0, Work::Foreground, work);
 }
 
-bool BusClient::findMotor(const MotorTarget &target, QString *error)
+OperationReply *BusClient::findMotor(const MotorTarget &target, QString *error)
 {
-    return startMotorWork(error, [target](Session &s) { s.findMotor(target); });
+    return startMotorWork(Operation::FindMotor, error,
+                          [target](Session &s) { s.findMotor(target); });
 }
 
-bool BusClient::setUpMotor(const MotorTarget &target, QString *error)
+OperationReply *BusClient::setUpMotor(const MotorTarget &target, QString *error)
 {
-    return startMotorWork(error, [target](Session &s) { s.setUpMotor(target); });
+    return startMotorWork(Operation::SetUpMotor, error,
+                          [target](Session &s) { s.setUpMotor(target); });
 }
 
-bool BusClient::checkJoints(qint32 baud, const QVector<JointCheck> &joints, QString *error)
+OperationReply *BusClient::checkJoints(qint32 baud, const QVector<JointCheck> &joints,
+                                       QString *error)
 {
-    return startMotorWork(error, [baud, joints](Session &s) { s.checkJoints(baud, joints); });
+    return startMotorWork(Operation::CheckJoints, error,
+                          [baud, joints](Session &s) { s.checkJoints(baud, joints); });
 }
 
 void BusClient::cancelMotorSetup()

@@ -15,8 +15,9 @@ struct Tr
 
 namespace feetech {
 
-bool BusClient::sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
-                           int replyDataSize, QString *error)
+OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
+                                      std::optional<quint8> replyId, int replyDataSize,
+                                      QString *error)
 {
     QString refusal;
     if (!isConnected())
@@ -28,16 +29,12 @@ bool BusClient::sendPacket(const QByteArray &frame, qint32 baud, std::optional<q
     if (!refusal.isEmpty()) {
         if (error)
             *error = refusal;
-        return false;
+        return nullptr;
     }
-    const bool wasBusy = isBusy();
-    m_pending.push_back({replyId.value_or(kBroadcastId), baud, Work::Foreground});
-    if (!wasBusy)
-        emit busyChanged(true);
-    m_worker.run([frame, baud, replyId, replyDataSize](Session &s) {
-        s.sendPacket(frame, baud, replyId, replyDataSize);
-    });
-    return true;
+    return submit(Operation::SendPacket, replyId.value_or(kBroadcastId), baud, Work::Foreground,
+                  [frame, baud, replyId, replyDataSize](Session &s) {
+                      s.sendPacket(frame, baud, replyId, replyDataSize);
+                  });
 }
 
 } // namespace feetech

@@ -24,15 +24,6 @@ DoctorCheck::DoctorCheck(BusClient *client, QObject *parent)
         ++m_next; // its condition stays unknown: no finding is made of it
         readNext();
     });
-    connect(m_client, &BusClient::operationFinished, this, [this](const OperationResult &result) {
-        // Only the read of the servo being looked at: a page may read another one meanwhile.
-        if (!m_running || !m_guard.isActive() || result.operation != Operation::Read
-            || m_next >= m_seen.found.size())
-            return;
-        const ServoInfo &looking = m_seen.found.at(m_next);
-        if (result.servo.id == looking.id && result.servo.baud == looking.baud)
-            onRead(result.ok);
-    });
 }
 
 void DoctorCheck::start(const BusObservation &seen, const QVector<ExpectedServo> &expected)
@@ -67,7 +58,14 @@ void DoctorCheck::readNext()
         return;
     }
     m_guard.start();
-    m_client->readServo(index);
+    if (OperationReply *reply = m_client->readServo(index)) {
+        // A read that comes after the guard gave up on it is no longer the one looked at.
+        connect(reply, &OperationReply::finished, this,
+                [this, reading = m_next](const OperationResult &result) {
+                    if (m_running && m_guard.isActive() && m_next == reading)
+                        onRead(result.ok);
+                });
+    }
 }
 
 void DoctorCheck::onRead(bool readable)

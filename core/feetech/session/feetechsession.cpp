@@ -136,9 +136,11 @@ void Session::onLinkDown(const QString &message)
     const bool wasScanning = m_scan->isRunning();
     const bool wasRunning = m_running;
     const Operation running = m_currentOperation;
+    const quint64 runningTicket = m_currentTicket;
     // All torque off may have run during the pause: the paused operation ends too.
     const bool wasPaused = m_paused;
     const Operation paused = m_pausedOperation;
+    const quint64 pausedTicket = m_pausedTicket;
     m_paused = false;
     m_identifying = false;
     ++m_pauseGeneration;
@@ -150,25 +152,45 @@ void Session::onLinkDown(const QString &message)
     m_running = false;
     // Whoever waits for an operation hears that it ended, queued ones included, so nothing
     // stays busy.
+    const auto failed = [&message](Operation operation, quint64 ticket) {
+        OperationResult result {operation, false, message, {}, {}};
+        result.ticket = ticket;
+        return result;
+    };
     if (wasScanning)
         emit scanFinished(false, message);
     else if (wasRunning && running != Operation::Guard)
-        emit operationFinished({running, false, message, {}, {}});
+        emit operationFinished(failed(running, runningTicket));
     if (wasPaused)
-        emit operationFinished({paused, false, message, {}, {}});
+        emit operationFinished(failed(paused, pausedTicket));
     for (const Queued &operation : dropped) {
         if (operation.operation == Operation::Scan)
             emit scanFinished(false, message);
         else if (operation.operation != Operation::Guard)
-            emit operationFinished({operation.operation, false, message, {}, {}});
+            emit operationFinished(failed(operation.operation, operation.ticket));
     }
 }
 
 // ---- operation queue
 
+Session::Queued Session::newOperation(Operation operation, std::function<void()> start)
+{
+    Queued queued {operation, std::move(start), m_nextTicket};
+    m_nextTicket = 0;
+    return queued;
+}
+
+std::deque<Session::Queued>::iterator Session::afterTorqueOff()
+{
+    auto at = m_queue.begin();
+    while (at != m_queue.end() && at->operation == Operation::TorqueOff)
+        ++at;
+    return at;
+}
+
 void Session::enqueue(Operation operation, std::function<void()> start)
 {
-    m_queue.push_back({operation, std::move(start)});
+    m_queue.push_back(newOperation(operation, std::move(start)));
     if (!m_running)
         startNextOperation();
 }
@@ -218,6 +240,7 @@ void Session::startQueuedOperation()
     m_queue.pop_front();
     m_running = true;
     m_currentOperation = next.operation;
+    m_currentTicket = next.ticket;
     if (!m_link->isOpen()) {
         if (next.operation == Operation::Scan || next.operation == Operation::Guard) {
             m_running = false;
@@ -235,7 +258,9 @@ void Session::startQueuedOperation()
 void Session::finishOperation(const OperationResult &result)
 {
     m_running = false;
-    emit operationFinished(result);
+    OperationResult reported = result;
+    reported.ticket = m_currentTicket;
+    emit operationFinished(reported);
     // Queued, so a slot reacting to the result sees the session idle before the next starts.
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
 }
@@ -245,10 +270,7 @@ void Session::continueLater(Operation next, std::function<void()> resume)
     // The running operation pauses here: it goes on as the next one, behind an emergency
     // stop asked for meanwhile (All torque off never waits for a whole apply chain).
     m_running = false;
-    auto at = m_queue.begin();
-    while (at != m_queue.end() && at->operation == Operation::TorqueOff)
-        ++at;
-    m_queue.insert(at, {next, std::move(resume)});
+    m_queue.insert(afterTorqueOff(), {next, std::move(resume), m_currentTicket});
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
 }
 
@@ -258,16 +280,14 @@ void Session::pauseFor(Operation operation, std::chrono::milliseconds delay,
     m_running = false;
     m_paused = true;
     m_pausedOperation = operation;
+    m_pausedTicket = m_currentTicket;
     const quint64 generation = ++m_pauseGeneration;
     QTimer::singleShot(delay, this, [this, generation, operation, resume = std::move(resume)] {
         if (!m_paused || generation != m_pauseGeneration)
             return;
         m_paused = false;
         // Not continueLater: All torque off may be running right now, and goes on.
-        auto at = m_queue.begin();
-        while (at != m_queue.end() && at->operation == Operation::TorqueOff)
-            ++at;
-        m_queue.insert(at, {operation, resume});
+        m_queue.insert(afterTorqueOff(), {operation, resume, m_pausedTicket});
         if (!m_running)
             startNextOperation();
     });
@@ -443,7 +463,12 @@ void Session::apply(const ServoInfo &servo, const ApplyPlan &plan)
         m_guard->noteWrites(servo, plan.writes);
         // Each step's result is reported as it comes; the last one ends the operation.
         m_apply->apply(
-            servo, plan, [this](const OperationResult &step) { emit operationFinished(step); },
+            servo, plan,
+            [this](const OperationResult &step) {
+                OperationResult reported = step;
+                reported.ticket = m_currentTicket;
+                emit operationFinished(reported);
+            },
             finisher(),
             [this](Operation next, std::function<void()> resume) {
                 continueLater(next, std::move(resume));
@@ -589,7 +614,7 @@ void Session::torqueOffAll(const QVector<qint32> &bauds, const QVector<ServoInfo
             });
     };
     // Ahead of everything waiting: this is the emergency stop.
-    m_queue.push_front({Operation::TorqueOff, start});
+    m_queue.push_front(newOperation(Operation::TorqueOff, start));
     if (!m_running)
         startNextOperation();
 }

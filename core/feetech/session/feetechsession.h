@@ -48,6 +48,10 @@ public:
     std::optional<std::chrono::microseconds> measuredLatency() const;
     std::chrono::microseconds scanAllowance() const;
 
+    // The operation the next call below queues answers under `ticket`: its results carry it,
+    // including those of a link that went down first (OperationResult::ticket).
+    void setNextTicket(quint64 ticket) { m_nextTicket = ticket; }
+
     // Slots, called through QMetaObject::invokeMethod from other threads.
     void open(const QString &portName, qint32 baud, seriallink::EchoMode echo);
     void close();
@@ -198,12 +202,21 @@ private:
     {
         Operation operation = Operation::Read;
         std::function<void()> start;
+        quint64 ticket = 0;
     };
+    // The queue entry of a new operation, with the ticket set for it (taken: the next call
+    // asks for none unless it is set again).
+    Queued newOperation(Operation operation, std::function<void()> start);
+    // Where a paused or continued operation goes back in: behind any All torque off.
+    std::deque<Queued>::iterator afterTorqueOff();
     std::deque<Queued> m_queue;
+    quint64 m_nextTicket = 0;
     bool m_running = false;
     Operation m_currentOperation = Operation::Read;
+    quint64 m_currentTicket = 0;
     bool m_paused = false; // the current operation waits in pauseFor
     Operation m_pausedOperation = Operation::Read; // the one waiting, while m_paused
+    quint64 m_pausedTicket = 0;
     quint64 m_pauseGeneration = 0; // a pause ended by a lost link never resumes
     quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
     bool m_identifying = false; // an identify runs, paused, or waits to go on

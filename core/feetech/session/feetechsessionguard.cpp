@@ -30,10 +30,7 @@ void Session::runGuardAction(std::function<void(std::function<void()> finished)>
         });
     };
     // Behind All torque off only: a servo pushing against a block must not wait for an apply.
-    auto at = m_queue.begin();
-    while (at != m_queue.end() && at->operation == Operation::TorqueOff)
-        ++at;
-    m_queue.insert(at, {Operation::Guard, start});
+    m_queue.insert(afterTorqueOff(), {Operation::Guard, start, 0});
     if (!m_running)
         startNextOperation();
 }

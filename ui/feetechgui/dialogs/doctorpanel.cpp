@@ -97,9 +97,6 @@ DoctorPanel::DoctorPanel(feetech::BusClient *client, QWidget *parent)
     buttons->addStretch(1);
     layout->addLayout(buttons);
     setWidget(body);
-
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            &DoctorPanel::onOperationFinished);
 }
 
 QVector<feetech::ExpectedServo> DoctorPanel::expected(const QString &port) const
@@ -171,9 +168,12 @@ void DoctorPanel::moveSelected(bool confirm)
         return;
     QString error;
     m_moving = move;
-    const bool started = move.newId >= 0 ? m_client->changeId(index, move.newId, &error)
-                                         : m_client->changeBaud(index, move.newBaud, &error);
-    if (!started) {
+    feetech::OperationReply *reply = move.newId >= 0
+        ? m_client->changeId(index, move.newId, &error)
+        : m_client->changeBaud(index, move.newBaud, &error);
+    if (reply) {
+        connect(reply, &feetech::OperationReply::finished, this, &DoctorPanel::onOperationFinished);
+    } else {
         m_moving.reset();
         emit problem(error);
     }
@@ -183,8 +183,7 @@ void DoctorPanel::moveSelected(bool confirm)
 void DoctorPanel::onOperationFinished(const feetech::OperationResult &result)
 {
     using feetech::Operation;
-    if (!m_moving || !result.final
-        || (result.operation != Operation::ChangeId && result.operation != Operation::ChangeBaud))
+    if (!m_moving)
         return;
     if (!result.ok) {
         m_moving.reset();
@@ -205,11 +204,15 @@ void DoctorPanel::changeBaudIfAsked()
 {
     const int index = m_client->indexOf(quint8(m_moving->newId), m_moving->servo.baud);
     QString error;
-    if (index < 0 || !m_client->changeBaud(index, m_moving->newBaud, &error)) {
+    feetech::OperationReply *reply =
+        index < 0 ? nullptr : m_client->changeBaud(index, m_moving->newBaud, &error);
+    if (!reply) {
         m_moving.reset();
         updateMove();
         emit problem(error.isEmpty() ? tr("The servo moved to its new ID could not be found to "
                                           "change its rate; re-scan.")
                                      : error);
+        return;
     }
+    connect(reply, &feetech::OperationReply::finished, this, &DoctorPanel::onOperationFinished);
 }

@@ -33,8 +33,6 @@ OverloadRecoveryDialog::OverloadRecoveryDialog(feetech::BusClient *client, int i
     m_action->setObjectName(QStringLiteral("recoveryActionButton"));
     connect(m_action, &QPushButton::clicked, this, &OverloadRecoveryDialog::start);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(client, &feetech::BusClient::operationFinished, this,
-            &OverloadRecoveryDialog::onOperationFinished);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_text, 1);
     layout->addWidget(buttons);
@@ -53,10 +51,14 @@ void OverloadRecoveryDialog::start()
         return;
     QString error;
     const int index = m_client->indexOf(m_id, m_baud);
-    if (index < 0 || !m_client->recoverOverload(index, m_checkOnly, &error)) {
+    feetech::OperationReply *reply =
+        index < 0 ? nullptr : m_client->recoverOverload(index, m_checkOnly, &error);
+    if (!reply) {
         m_text->setText(index < 0 ? tr("Servo ID %1 is no longer on the bus.").arg(m_id) : error);
         return;
     }
+    connect(reply, &feetech::OperationReply::finished, this,
+            &OverloadRecoveryDialog::onOperationFinished);
     m_running = true;
     m_action->setEnabled(false);
     m_text->setText(m_checkOnly ? tr("Reading the status…") : tr("Torque off and on…"));
@@ -64,8 +66,7 @@ void OverloadRecoveryDialog::start()
 
 void OverloadRecoveryDialog::onOperationFinished(const feetech::OperationResult &result)
 {
-    if (!m_running || result.operation != feetech::Operation::RecoverOverload
-        || result.servo.id != m_id || result.servo.baud != m_baud)
+    if (!m_running)
         return;
     m_running = false;
     m_action->setEnabled(true);

@@ -163,8 +163,6 @@ RobotTemplateDialog::RobotTemplateDialog(feetech::BusClient *client, QWidget *pa
         validate();
     });
     connect(take, &QPushButton::clicked, this, &RobotTemplateDialog::takeSettingsFromServo);
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            &RobotTemplateDialog::onOperationFinished);
 
     const int em = fontMetrics().horizontalAdvance(u'm');
     m_joints->setColumnWidth(NameColumn, em * 10);
@@ -349,7 +347,9 @@ void RobotTemplateDialog::takeSettingsFromServo()
     const feetech::ServoInfo &info = m_client->servo(index).info;
     m_pendingRead = std::pair(row, std::pair(info.id, info.baud));
     m_error->setText(tr("Reading servo ID %1…").arg(info.id));
-    m_client->readServo(index);
+    if (feetech::OperationReply *reply = m_client->readServo(index))
+        connect(reply, &feetech::OperationReply::finished, this,
+                &RobotTemplateDialog::onOperationFinished);
 }
 
 void RobotTemplateDialog::onOperationFinished(const feetech::OperationResult &result)

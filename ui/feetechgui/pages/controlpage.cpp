@@ -116,15 +116,13 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     connect(m_client, &feetech::BusClient::servoUpdated, this, &ControlPage::onServoUpdated);
     connect(m_client, &feetech::BusClient::telemetryReceived, this, &ControlPage::onTelemetry);
     connect(m_client, &feetech::BusClient::monitoringChanged, this, &ControlPage::updatePresent);
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            &ControlPage::onOperationFinished);
     connect(m_client, &feetech::BusClient::allTorqueOffRequested, this,
             &ControlPage::onAllTorqueOff);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         if (!m_client->isConnected()) {
             // Nothing comes back from writes the link dropped.
-            m_writes.clear();
-            m_goalInFlight = false;
+            m_goalsInFlight = 0;
+            m_torqueWritesInFlight = 0;
             m_queuedGoal.reset();
         }
         updateEnabled();

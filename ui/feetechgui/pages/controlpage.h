@@ -62,12 +62,6 @@ private:
 
     enum class WriteKind { Torque, Goal, Mode };
     enum class Severity { Info, Warning, Error };
-    struct PendingWrite
-    {
-        WriteKind kind = WriteKind::Goal;
-        quint8 id = 0;
-        qint32 baud = 0;
-    };
 
     QGroupBox *buildTorqueGroup();
     QGroupBox *buildModeGroup();
@@ -82,7 +76,7 @@ private:
     void onServosChanged();
     void onServoUpdated(int index);
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
-    void onOperationFinished(const feetech::OperationResult &result);
+    void onWriteFinished(WriteKind kind, quint8 id, const feetech::OperationResult &result);
     void onAllTorqueOff();
     void onTestRunning(bool running);
 
@@ -115,8 +109,8 @@ private:
     bool m_confirmMoves = true;
 
     // Goal writes from the slider: one in flight, only the newest value waits behind it.
-    std::deque<PendingWrite> m_writes;
-    bool m_goalInFlight = false;
+    int m_goalsInFlight = 0;
+    int m_torqueWritesInFlight = 0;
     QElapsedTimer m_goalSentAt;
     std::optional<qint32> m_queuedGoal;
     bool m_goalInitialised = false; // the goal spin has been set from the servo once

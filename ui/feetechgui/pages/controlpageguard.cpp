@@ -41,15 +41,19 @@ QWidget *ControlPage::buildGuardBanner()
     row->addWidget(m_guardSettings);
     m_guardBanner = banner;
     connect(m_client, &feetech::BusClient::guardEvent, this, &ControlPage::onGuardEvent);
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            [this](const feetech::OperationResult &result) {
-                if (result.operation == feetech::Operation::RecoverOverload && result.ok
-                    && m_servo == std::pair(result.servo.id, result.servo.baud)) {
-                    m_guardText->setText(result.message);
-                    m_guardText->setPalette(QPalette());
-                    m_guardRecover->hide();
-                }
-            });
+    // A recovery of the servo shown clears its banner, from the recovery dialog or elsewhere.
+    connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
+        if (reply->operation() != feetech::Operation::RecoverOverload)
+            return;
+        connect(reply, &feetech::OperationReply::finished, this,
+                [this](const feetech::OperationResult &result) {
+                    if (result.ok && m_servo == std::pair(result.servo.id, result.servo.baud)) {
+                        m_guardText->setText(result.message);
+                        m_guardText->setPalette(QPalette());
+                        m_guardRecover->hide();
+                    }
+                });
+    });
     return banner;
 }
 

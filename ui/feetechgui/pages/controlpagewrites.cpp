@@ -31,11 +31,19 @@ constexpr int kGoalWriteStaleMs = 2000;
 bool ControlPage::write(WriteKind kind, const QVector<model::WriteItem> &values)
 {
     QString error;
-    if (!m_client->writeValues(m_index, values, &error)) {
+    feetech::OperationReply *reply = m_client->writeValues(m_index, values, &error);
+    if (!reply) {
         setStatus(tr("%1: %2").arg(servoName(), error), Severity::Error);
         return false;
     }
-    m_writes.push_back({kind, m_servo->first, m_servo->second});
+    if (kind == WriteKind::Goal)
+        ++m_goalsInFlight;
+    else if (kind == WriteKind::Torque)
+        ++m_torqueWritesInFlight;
+    connect(reply, &feetech::OperationReply::finished, this,
+            [this, kind, id = m_servo->first](const feetech::OperationResult &result) {
+                onWriteFinished(kind, id, result);
+            });
     return true;
 }
 
@@ -66,7 +74,8 @@ void ControlPage::onSliderMoved(int value)
     if (!ready() || testRunsHere())
         return;
     // One goal on the wire at a time; a newer one replaces whatever waits behind it.
-    if (m_goalInFlight && m_goalSentAt.isValid() && m_goalSentAt.elapsed() < kGoalWriteStaleMs) {
+    if (m_goalsInFlight > 0 && m_goalSentAt.isValid()
+        && m_goalSentAt.elapsed() < kGoalWriteStaleMs) {
         m_queuedGoal = value;
         return;
     }
@@ -110,9 +119,7 @@ bool ControlPage::moveTo(qint32 position, QString *error)
             *error = statusText();
         return false;
     }
-    const bool torqueWritePending =
-        std::any_of(m_writes.begin(), m_writes.end(),
-                    [](const PendingWrite &w) { return w.kind == WriteKind::Torque; });
+    const bool torqueWritePending = m_torqueWritesInFlight > 0;
     const auto torque = m_client->parameters(m_index)->deviceValue(kTorqueEnable);
     if (!torqueWritePending && torque
         && m_client->servo(m_index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off)
@@ -121,7 +128,6 @@ bool ControlPage::moveTo(qint32 position, QString *error)
                   Severity::Warning);
     else if (m_status->property("severity").toInt() == int(Severity::Error))
         setStatus({}, Severity::Info); // an earlier refusal no longer applies
-    m_goalInFlight = true;
     m_goalSentAt.start();
     m_queuedGoal.reset(); // this one is newer than anything waiting
     {
@@ -164,29 +170,21 @@ void ControlPage::changeMode()
     write(WriteKind::Mode, {{kMode, value}});
 }
 
-void ControlPage::onOperationFinished(const feetech::OperationResult &result)
+void ControlPage::onWriteFinished(WriteKind kind, quint8 id, const feetech::OperationResult &result)
 {
-    if (result.operation != feetech::Operation::Write)
-        return;
-    const auto mine = std::find_if(m_writes.begin(), m_writes.end(), [&](const PendingWrite &w) {
-        return w.id == result.servo.id && w.baud == result.servo.baud;
-    });
-    if (mine == m_writes.end())
-        return; // someone else's write
-    const WriteKind kind = mine->kind;
-    m_writes.erase(mine);
+    // A link that went down set the counts to 0 already.
     if (kind == WriteKind::Goal)
-        m_goalInFlight = std::any_of(m_writes.begin(), m_writes.end(), [](const PendingWrite &w) {
-            return w.kind == WriteKind::Goal;
-        });
+        m_goalsInFlight = std::max(0, m_goalsInFlight - 1);
+    else if (kind == WriteKind::Torque)
+        m_torqueWritesInFlight = std::max(0, m_torqueWritesInFlight - 1);
     if (kind == WriteKind::Mode)
         m_modeEdited = false;
     if (!result.ok) {
         if (kind == WriteKind::Goal)
             m_queuedGoal.reset(); // do not chase a failing servo with stale goals
-        setStatus(tr("Writing to servo ID %1 failed: %2").arg(result.servo.id).arg(result.message),
+        setStatus(tr("Writing to servo ID %1 failed: %2").arg(id).arg(result.message),
                   Severity::Error);
-    } else if (kind == WriteKind::Goal && m_queuedGoal && !m_goalInFlight) {
+    } else if (kind == WriteKind::Goal && m_queuedGoal && m_goalsInFlight == 0) {
         // Queued for the servo shown: a change of servo clears the queue.
         const qint32 next = *m_queuedGoal;
         m_queuedGoal.reset();

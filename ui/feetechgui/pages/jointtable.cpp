@@ -172,8 +172,15 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
         refreshButtons();
     });
     connect(m_client, &feetech::BusClient::busyChanged, this, &JointTable::refreshIdentifyButtons);
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            &JointTable::onOperationFinished);
+    // Whoever started it (this table or the servo tree), an identify's outcome shows here.
+    connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
+        if (reply->operation() != feetech::Operation::Identify)
+            return;
+        connect(reply, &feetech::OperationReply::finished, this,
+                [this](const feetech::OperationResult &result) {
+                    setMessage(result.message, result.ok ? Tone::Success : Tone::Error);
+                });
+    });
 
     rebuild();
     setMessage(tr("Targets only move servos when you press Move all."), Tone::Info);
@@ -447,21 +454,18 @@ void JointTable::onTelemetry(const QVector<feetech::FeedbackSample> &samples)
     refreshHint(); // the first sample of a servo makes its position live
 }
 
-void JointTable::onOperationFinished(const feetech::OperationResult &result)
+void JointTable::onMoveFinished(const feetech::OperationResult &result)
 {
-    if (result.operation == feetech::Operation::Identify) {
-        setMessage(result.message, result.ok ? Tone::Success : Tone::Error);
+    if (m_movesInFlight <= 0)
         return;
-    }
-    if (result.operation == feetech::Operation::SyncWrite && m_movesInFlight > 0) {
-        --m_movesInFlight;
-        if (!result.ok)
-            setMessage(tr("Move all failed: %1").arg(result.message), Tone::Error);
-        return;
-    }
-    if (result.operation != feetech::Operation::Write)
-        return;
-    const int row = rowOf(result.servo.id, result.servo.baud);
+    --m_movesInFlight;
+    if (!result.ok)
+        setMessage(tr("Move all failed: %1").arg(result.message), Tone::Error);
+}
+
+void JointTable::onTorqueWritten(quint8 id, qint32 baud, const feetech::OperationResult &result)
+{
+    const int row = rowOf(id, baud);
     if (row < 0 || !m_rows.at(row).torqueRequested)
         return;
     const bool requestedOn = *m_rows.at(row).torqueRequested == feetech::TorqueMode::On;

@@ -127,7 +127,8 @@ private:
     void refreshButtons();
     void refreshIdentifyButtons();
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
-    void onOperationFinished(const feetech::OperationResult &result);
+    void onMoveFinished(const feetech::OperationResult &result);
+    void onTorqueWritten(quint8 id, qint32 baud, const feetech::OperationResult &result);
     void onItemChanged(QTableWidgetItem *item);
     void setMessage(const QString &text, Tone tone);
     QString servoName(int row) const; // "ID 3 (SCS15)"

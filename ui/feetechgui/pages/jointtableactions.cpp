@@ -24,12 +24,17 @@ bool JointTable::setTorque(int row, bool on, QString *error)
     const feetech::TorqueMode mode = on ? feetech::TorqueMode::On : feetech::TorqueMode::Off;
     const auto value = m_client->servo(index).info.table().torqueValue(mode);
     QString why = tr("its model has no torque enable");
-    if (!value || !m_client->writeValues(index, {{kTorqueEnable, *value}}, &why)) {
+    feetech::OperationReply *reply =
+        value ? m_client->writeValues(index, {{kTorqueEnable, *value}}, &why) : nullptr;
+    if (!reply) {
         if (error)
             *error = tr("%1: torque not switched %2: %3")
                          .arg(servoName(row), on ? tr("on") : tr("off"), why);
         return false;
     }
+    connect(reply, &feetech::OperationReply::finished, this,
+            [this, id = m_rows.at(row).id, baud = m_rows.at(row).baud](
+                const feetech::OperationResult &result) { onTorqueWritten(id, baud, result); });
     m_rows[row].torqueRequested = mode;
     refreshRow(row);
     return true;
@@ -91,9 +96,12 @@ bool JointTable::moveAll(QString *error)
     if (goals.isEmpty())
         return refuse(tr("No servo here can be moved: their models are unknown."));
     QString why;
-    if (!m_client->moveAll(goals, &why))
+    const QVector<feetech::OperationReply *> replies = m_client->moveAll(goals, &why);
+    if (replies.isEmpty())
         return refuse(tr("Nothing was sent: %1").arg(why));
-    m_movesInFlight += int(bauds.size());
+    m_movesInFlight += int(replies.size());
+    for (feetech::OperationReply *reply : replies)
+        connect(reply, &feetech::OperationReply::finished, this, &JointTable::onMoveFinished);
 
     QStringList report;
     report.append(bauds.size() == 1

@@ -8,8 +8,6 @@ CalibrationSteps::CalibrationSteps(feetech::BusClient *client, QObject *parent)
     : QObject(parent)
     , m_client(client)
 {
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            &CalibrationSteps::onOperationFinished);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         // The link went down: nothing running will report any more.
         while (isRunning() && !m_client->isConnected()) {
@@ -37,13 +35,18 @@ void CalibrationSteps::startNext()
         const Step &step = m_steps.at(m_next++);
         emit progress(m_next - 1, int(m_steps.size()));
         QString error;
-        bool started = true;
-        if (step.writes.isEmpty())
-            m_client->readServo(step.index);
-        else
-            started = m_client->writeValues(step.index, step.writes, &error);
-        if (started && m_client->isConnected())
-            return; // onOperationFinished goes on
+        feetech::OperationReply *reply = step.writes.isEmpty()
+            ? m_client->readServo(step.index)
+            : m_client->writeValues(step.index, step.writes, &error);
+        if (reply && m_client->isConnected()) {
+            // A step the lost link already ended is not ended again.
+            connect(reply, &feetech::OperationReply::finished, this,
+                    [this, running = m_next](const feetech::OperationResult &result) {
+                        if (m_next == running)
+                            onOperationFinished(result);
+                    });
+            return;
+        }
         m_allOk = false;
         emit stepFinished(m_next - 1, false,
                           error.isEmpty() ? tr("The bus is not connected.") : error);
@@ -60,12 +63,6 @@ void CalibrationSteps::onOperationFinished(const feetech::OperationResult &resul
     const Step &step = m_steps.at(m_next - 1);
     if (step.index >= m_client->servoCount())
         return;
-    const feetech::ServoInfo &servo = m_client->servo(step.index).info;
-    const feetech::Operation expected =
-        step.writes.isEmpty() ? feetech::Operation::Read : feetech::Operation::Write;
-    if (result.operation != expected || result.servo.id != servo.id
-        || result.servo.baud != servo.baud)
-        return; // someone else's operation
     bool ok = result.ok;
     QString message = result.message;
     if (ok && !step.writes.isEmpty()) {

@@ -307,8 +307,11 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
         updateActions();
     });
     connect(m_client, &feetech::BusClient::progress, m_settings, &ParameterPage::setProgress);
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            &FeetechWorkspace::onOperationFinished);
+    // The status bar tells the outcome of every operation, whoever asked for it.
+    connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
+        connect(reply, &feetech::OperationReply::finished, this,
+                &FeetechWorkspace::onOperationFinished);
+    });
     connect(m_client, &feetech::BusClient::scanProgress, this,
             [this](int done, int total, qint32 baud) {
                 m_scanProgress->setRange(0, std::max(total, 1));

@@ -28,6 +28,7 @@ class UnlockedNotice;
 
 namespace feetech {
 class BusClient;
+class OperationReply;
 }
 
 class FeetechWorkspace : public QWidget
@@ -83,7 +84,8 @@ private:
     void changeBaud();
     void calibrateMiddle();
     void factoryReset();
-    void run(bool (feetech::BusClient::*operation)(int, QString *), const QString &what);
+    void run(feetech::OperationReply *(feetech::BusClient::*operation)(int, QString *),
+             const QString &what);
     QString servoTitle() const;
 
     feetech::BusClient *m_client = nullptr;

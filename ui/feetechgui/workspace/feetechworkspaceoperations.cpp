@@ -75,7 +75,8 @@ void FeetechWorkspace::apply()
         emit problem(tr("Nothing was written: %1").arg(error));
 }
 
-void FeetechWorkspace::run(bool (feetech::BusClient::*operation)(int, QString *),
+void FeetechWorkspace::run(feetech::OperationReply *(feetech::BusClient::*operation)(int,
+                                                                                     QString *),
                            const QString &what)
 {
     QString error;

@@ -49,15 +49,18 @@ RobotActions::RobotActions(feetech::BusClient *client, FeetechWorkspace *workspa
     connect(m_client, &feetech::BusClient::scanFinished, this, &RobotActions::updateActions);
     connect(m_workspace->servoTree(), &QTreeWidget::itemSelectionChanged, this,
             &RobotActions::updateActions);
-    connect(m_client, &feetech::BusClient::operationFinished, this,
-            [this](const feetech::OperationResult &result) {
-                if (result.operation != feetech::Operation::Identify)
-                    return;
-                if (result.ok)
-                    emit message(result.message);
-                else
-                    emit problem(result.message);
-            });
+    // Whoever started it (the servo tree or the joint table), an identify's outcome is told.
+    connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
+        if (reply->operation() != feetech::Operation::Identify)
+            return;
+        connect(reply, &feetech::OperationReply::finished, this,
+                [this](const feetech::OperationResult &result) {
+                    if (result.ok)
+                        emit message(result.message);
+                    else
+                        emit problem(result.message);
+                });
+    });
     connect(m_batch, &feetech::BatchProgram::runningChanged, this, &RobotActions::updateActions);
     connect(m_batch, &feetech::BatchProgram::progress, this,
             [this](int done, int total, const QString &text) {
