@@ -189,9 +189,9 @@ private slots:
         const feetech::GuardLimits limits = settings.servos.value({1, k1M});
         QCOMPARE(limits.loadPercent, 40.0);
         QCOMPARE(limits.action, feetech::GuardAction::TorqueOff);
-        m_client->setGuardSettings(settings);
-        QCOMPARE(m_client->guardLimits(m_index).loadPercent, 40.0);
-        QCOMPARE(m_client->guardLimits(m_client->indexOf(2, k1M)).loadPercent, 80.0);
+        m_client->guard()->setSettings(settings);
+        QCOMPARE(m_client->guard()->limits(m_index).loadPercent, 40.0);
+        QCOMPARE(m_client->guard()->limits(m_client->indexOf(2, k1M)).loadPercent, 80.0);
     }
 };
 

@@ -48,7 +48,7 @@ private:
     // Clicks Check and waits for the verdicts.
     void checkAll()
     {
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::healthCheckFinished);
+        QSignalSpy finished(m_client->health(), &feetech::HealthService::checkFinished);
         QTRY_VERIFY_WITH_TIMEOUT(m_page->checkButton()->isEnabled(), 10000);
         QTest::mouseClick(m_page->checkButton(), Qt::LeftButton);
         QVERIFY(m_page->progressBar()->isVisible());
@@ -129,7 +129,7 @@ private slots:
     void aCheckCanBeCancelled()
     {
         startSimulatorAndScan({u"STS3215", u"STS3215", u"STS3215", u"STS3215"});
-        QSignalSpy finished(m_client.get(), &feetech::BusClient::healthCheckFinished);
+        QSignalSpy finished(m_client->health(), &feetech::HealthService::checkFinished);
         QTRY_VERIFY_WITH_TIMEOUT(m_page->checkButton()->isEnabled(), 10000);
         QVERIFY(m_page->check());
         QVERIFY(m_page->cancelButton()->isEnabled());
@@ -157,7 +157,7 @@ private slots:
         QCOMPARE(writesReceived(), 0);
 
         m_page->setConfirmation([](const QString &) { return true; });
-        QSignalSpy moved(m_client.get(), &feetech::BusClient::moveTested);
+        QSignalSpy moved(m_client->health(), &feetech::HealthService::moveTested);
         QTest::mouseClick(m_page->moveTestButton(), Qt::LeftButton);
         QVERIFY(moved.wait(20000));
         const auto result = moved.first().at(0).value<feetech::MoveTestResult>();

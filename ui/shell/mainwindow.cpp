@@ -133,7 +133,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
             [this] { updateTorqueOffAction(); });
     // Whatever page moves the servos, the guard's warnings and actions show here.
-    connect(m_feetech.get(), &feetech::BusClient::guardEvent, this,
+    connect(m_feetech->guard(), &feetech::BusGuard::event, this,
             [this](const feetech::GuardEvent &event) {
                 statusBar()->showMessage(event.message, kGuardMessageMs);
             });

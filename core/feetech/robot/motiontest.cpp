@@ -61,7 +61,7 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
     connect(m_client, &BusClient::allTorqueOffRequested, this,
             [this] { fail(tr("All torque off: the test was stopped.")); });
     // The guard held the servo or switched it off: the next leg must not drive it again.
-    connect(m_client, &BusClient::guardEvent, this, [this](const GuardEvent &event) {
+    connect(m_client->guard(), &BusGuard::event, this, [this](const GuardEvent &event) {
         if (isRunning() && event.stage == GuardStage::Acted && event.id == m_id
             && event.baud == m_baud)
             fail(tr("The test was stopped: %1").arg(event.message));

@@ -78,9 +78,9 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         }
     });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
-    connectMotorSetup(session);
-    connectHealth(session);
-    connectGuard(session);
+    m_guard = new BusGuard(this);
+    m_motorSetup = new MotorSetupService(this);
+    m_health = new HealthService(this);
 }
 
 BusClient::~BusClient() = default;
@@ -283,8 +283,6 @@ void BusClient::onOperationFinished(const OperationResult &result)
         if (result.final)
             target.reply->deleteLater();
     }
-    onHealthWorkFinished(result);
-    onMotorWorkFinished(result);
 }
 
 void BusClient::forgetWork()
@@ -465,6 +463,15 @@ OperationReply *BusClient::lockEeprom(int index, QString *error)
                           [](Session &s, const ServoInfo &info) { s.lockEeprom(info); });
 }
 
+bool BusClient::eepromUnlocked(int index) const
+{
+    if (index < 0 || index >= servoCount() || !servo(index).read)
+        return false;
+    const model::ParameterModel *model = servo(index).parameters.get();
+    const auto lock = model ? model->deviceValue(QStringLiteral("lock")) : std::nullopt;
+    return lock && *lock == 0;
+}
+
 // ---- live monitoring and control
 
 bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString *error,
@@ -625,6 +632,14 @@ QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString
                               }));
     }
     return replies;
+}
+
+void BusClient::moveServo(int index, const ServoInfo &info)
+{
+    if (index < 0 || index >= servoCount())
+        return;
+    m_servos.at(std::size_t(index))->info = info;
+    emit servosChanged();
 }
 
 void BusClient::clearServos()

@@ -2,10 +2,13 @@
 // and one parameter model per servo kept in step with what the servo reports.
 #pragma once
 
+#include "busguard.h"
 #include "feetechsession.h"
 #include "goalrange.h"
+#include "healthservice.h"
 #include "linkmirror.h"
 #include "linktypes.h"
+#include "motorsetupservice.h"
 #include "operationreply.h"
 #include "parametermodel.h"
 #include "servohealth.h"
@@ -143,49 +146,33 @@ public:
     // position is out of its servo's range or a servo is unknown (nothing sent).
     QVector<OperationReply *> moveAll(const QVector<Goal> &goals, QString *error = nullptr);
 
-    // ---- the overload and thermal guard (busclientguard.cpp): on from the start
+    // ---- the services' access: the session, and submitting operations to it
 
-    // The limits of servo `index` now: those set with setGuardSettings, else the defaults from
-    // its own limit registers as last read (the table's factory values before a read).
-    GuardLimits guardLimits(int index) const;
-    // Its defaults alone: from its limit registers, whatever was set.
-    GuardLimits guardDefaults(int index) const;
-    // Replaces the whole guard's settings (limits set for servos not listed are dropped).
-    void setGuardSettings(const GuardSettings &settings);
-    const GuardSettings &guardSettings() const { return m_guardSettings; }
-    // The newest thing the guard said about servo `index`.
-    std::optional<GuardEvent> lastGuardEvent(int index) const;
-    // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
-    // result (operationFinished, RecoverOverload) says stillLatched when a power cycle is due.
-    OperationReply *recoverOverload(int index, bool checkOnly, QString *error = nullptr);
+    // The session in its worker thread: connect to its signals (queued), never call it.
+    Session *session() const { return m_worker.session(); }
+    // Runs `work` in the session's thread, ahead of nothing: settings and cancels.
+    void runInSession(const std::function<void(Session &)> &work) { m_worker.run(work); }
+    enum class Work {
+        Foreground, // the bus is busy until it ends
+        Background, // a refresh: skipped when busy, no reply, its failure not reported
+        Control, // a control write: reported, but it does not make the bus busy
+        Emergency // All torque off: ahead of everything, it does not make the bus busy
+    };
+    OperationReply *startOperation(Operation operation, int index, QString *error, Work kind,
+                                   const std::function<void(Session &, const ServoInfo &)> &work);
+    // Queues `work` in the session under a new ticket; its reply (none for a background one).
+    OperationReply *submit(Operation operation, quint8 id, qint32 baud, Work kind,
+                           const std::function<void(Session &)> &work);
 
-    // ---- motor set-up (busclientmotorsetup.cpp): no scan needed, each servo is found alone
+    // The overload and thermal guard, on from the start.
+    BusGuard *guard() const { return m_guard; }
 
-    // Looks for the one servo on the bus at every rate. False and *error when not started.
-    OperationReply *findMotor(const MotorTarget &target, QString *error = nullptr);
-    // Finds the one servo again and gives it the target's ID, rate and settings, verified.
-    OperationReply *setUpMotor(const MotorTarget &target, QString *error = nullptr);
-    // Which joints of `robot` already answer at their ID at its rate, as their model.
-    OperationReply *checkJoints(qint32 baud, const QVector<JointCheck> &joints,
-                                QString *error = nullptr);
-    // Stops a find, set-up or check before its next step.
-    void cancelMotorSetup();
-
-    // ---- health check (busclienthealth.cpp): reads only, except the confirmed move test
-
-    // Reads each of servos `indexes` in turn (its limits and `reads` feedback blocks); a
-    // healthRead per servo (and progress), then healthCheckFinished. False and *error when
-    // nothing was started.
-    OperationReply *checkHealth(const QVector<int> &indexes, int reads = kDefaultHealthReads,
-                                QString *error = nullptr);
-    // The running check stops before its next servo.
-    void cancelHealthCheck();
-    bool isCheckingHealth() const { return m_checkingHealth; }
-    // Why servo `index` cannot take the move test now (empty when it can).
-    QString moveTestBlocker(int index) const;
-    // The move test moves the horn: it runs only when `confirmed` says the user agreed to it;
-    // otherwise, as when blocked, false and *error, and nothing is sent. Ends with moveTested.
-    OperationReply *moveTest(int index, bool confirmed, QString *error = nullptr);
+    // Motor set-up: find the one servo on the bus, set it up, check a robot's joints.
+    MotorSetupService *motorSetup() const { return m_motorSetup; }
+    // The health check and its confirmed move test.
+    HealthService *health() const { return m_health; }
+    // Servo `index` answers at `info`'s ID and rate now (a set-up moved it): servosChanged.
+    void moveServo(int index, const ServoInfo &info);
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
@@ -203,43 +190,12 @@ signals:
     void monitoringChanged(bool monitoring);
     // Whatever moves servos (sweeps, step tests) stops on this.
     void allTorqueOffRequested();
-    // Motor set-up: each find or set-up ends with motorSetupFinished, each check with
-    // jointsChecked, also when the link went down meanwhile.
-    void motorSetupProgress(int step, int steps, const QString &text);
-    void motorSetupFinished(const feetech::MotorSetupResult &result);
-    void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
-    void healthRead(const feetech::HealthReading &reading);
-    void healthCheckFinished(bool completed, const QString &message);
-    // Also when the link went down meanwhile (then not ok).
-    void moveTested(const feetech::MoveTestResult &result);
-    // The guard warned or acted (the message names the servo, the figures and the action).
-    void guardEvent(const feetech::GuardEvent &event);
 
 private:
     void onServoFound(const ServoInfo &info);
     void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
-    void onHealthWorkFinished(const OperationResult &result);
-    void connectMotorSetup(Session *session);
-    void connectHealth(Session *session);
-    void connectGuard(Session *session);
-    // Sends the guard each servo's limits (set, or from its registers) when they changed.
-    void sendGuardSettings();
-    OperationReply *startMotorWork(Operation operation, QString *error,
-                                   const std::function<void(Session &)> &work);
-    void onMotorWorkFinished(const OperationResult &result);
-    enum class Work {
-        Foreground, // the bus is busy until it ends
-        Background, // a refresh: skipped when busy, no reply, its failure not reported
-        Control, // a control write: reported, but it does not make the bus busy
-        Emergency // All torque off: ahead of everything, it does not make the bus busy
-    };
-    OperationReply *startOperation(Operation operation, int index, QString *error, Work kind,
-                                   const std::function<void(Session &, const ServoInfo &)> &work);
-    // Queues `work` in the session under a new ticket; its reply (none for a background one).
-    OperationReply *submit(Operation operation, quint8 id, qint32 baud, Work kind,
-                           const std::function<void(Session &)> &work);
     void onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream);
     void clearServos();
     void forgetWork(); // the link went down: nothing is running any more
@@ -270,16 +226,11 @@ private:
     quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped
     TelemetryOptions m_monitorOptions;
     TelemetryStats m_telemetryStats;
-    // What the session reported of the motor set-up work running, until it ends.
-    std::optional<MotorSetupResult> m_motorResult;
-    std::optional<QVector<JointCheck>> m_jointsChecked;
     std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
     QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
-    bool m_checkingHealth = false;
-    std::optional<MoveTestResult> m_moveTested; // what the session said of the running test
-    GuardSettings m_guardSettings; // as the user set them
-    std::optional<GuardSettings> m_guardSent; // what the session has now
-    QHash<QPair<quint8, qint32>, GuardEvent> m_lastGuardEvent;
+    BusGuard *m_guard = nullptr;
+    MotorSetupService *m_motorSetup = nullptr;
+    HealthService *m_health = nullptr;
 };
 
 // The goal positions servo `index` accepts (goalrange.h); nothing for an unknown servo or a

@@ -44,7 +44,7 @@ GuardSettingsDialog::GuardSettingsDialog(feetech::BusClient *client, QWidget *pa
     intro->setWordWrap(true);
     m_enabled = new QCheckBox(tr("Guard the servos of this bus (recommended)"), this);
     m_enabled->setObjectName(QStringLiteral("guardEnabled"));
-    m_enabled->setChecked(client->guardSettings().enabled);
+    m_enabled->setChecked(client->guard()->settings().enabled);
 
     m_table = new QTableWidget(0, ColumnCount, this);
     m_table->setObjectName(QStringLiteral("guardTable"));
@@ -80,7 +80,7 @@ GuardSettingsDialog::GuardSettingsDialog(feetech::BusClient *client, QWidget *pa
         m_table->setCellWidget(row, MaxTemperatureColumn, maxTemperature);
         m_table->setCellWidget(row, MarginColumn, margin);
         m_table->setCellWidget(row, ActionColumn, action);
-        fillRow(row, client->guardLimits(index));
+        fillRow(row, client->guard()->limits(index));
     }
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
 
@@ -89,7 +89,7 @@ GuardSettingsDialog::GuardSettingsDialog(feetech::BusClient *client, QWidget *pa
     defaults->setObjectName(QStringLiteral("guardDefaultsButton"));
     connect(defaults, &QPushButton::clicked, this, &GuardSettingsDialog::restoreDefaults);
     connect(buttons, &QDialogButtonBox::accepted, this, [this] {
-        m_client->setGuardSettings(settings());
+        m_client->guard()->setSettings(settings());
         accept();
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -121,7 +121,7 @@ void GuardSettingsDialog::fillRow(int row, const feetech::GuardLimits &limits)
 feetech::GuardLimits GuardSettingsDialog::rowLimits(int row) const
 {
     // What the dialog does not show (the current limit, the warn margin) stays as it was.
-    feetech::GuardLimits limits = m_client->guardLimits(m_indexes.at(row));
+    feetech::GuardLimits limits = m_client->guard()->limits(m_indexes.at(row));
     limits.enabled = qobject_cast<QCheckBox *>(m_table->cellWidget(row, OnColumn))->isChecked();
     limits.loadPercent =
         qobject_cast<QDoubleSpinBox *>(m_table->cellWidget(row, LoadColumn))->value();
@@ -144,7 +144,7 @@ feetech::GuardSettings GuardSettingsDialog::settings() const
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const int index = m_indexes.at(row);
         const feetech::GuardLimits limits = rowLimits(row);
-        if (limits != m_client->guardDefaults(index)) {
+        if (limits != m_client->guard()->defaults(index)) {
             const feetech::ServoInfo &info = m_client->servo(index).info;
             settings.servos.insert({info.id, info.baud}, limits);
         }
@@ -156,5 +156,5 @@ void GuardSettingsDialog::restoreDefaults()
 {
     m_enabled->setChecked(true);
     for (int row = 0; row < m_table->rowCount(); ++row)
-        fillRow(row, m_client->guardDefaults(m_indexes.at(row)));
+        fillRow(row, m_client->guard()->defaults(m_indexes.at(row)));
 }

@@ -52,7 +52,7 @@ void OverloadRecoveryDialog::start()
     QString error;
     const int index = m_client->indexOf(m_id, m_baud);
     feetech::OperationReply *reply =
-        index < 0 ? nullptr : m_client->recoverOverload(index, m_checkOnly, &error);
+        index < 0 ? nullptr : m_client->guard()->recoverOverload(index, m_checkOnly, &error);
     if (!reply) {
         m_text->setText(index < 0 ? tr("Servo ID %1 is no longer on the bus.").arg(m_id) : error);
         return;

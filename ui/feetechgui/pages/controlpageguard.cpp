@@ -40,7 +40,7 @@ QWidget *ControlPage::buildGuardBanner()
     connect(m_guardSettings, &QPushButton::clicked, this, &ControlPage::openGuardSettings);
     row->addWidget(m_guardSettings);
     m_guardBanner = banner;
-    connect(m_client, &feetech::BusClient::guardEvent, this, &ControlPage::onGuardEvent);
+    connect(m_client->guard(), &feetech::BusGuard::event, this, &ControlPage::onGuardEvent);
     // A recovery of the servo shown clears its banner, from the recovery dialog or elsewhere.
     connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
         if (reply->operation() != feetech::Operation::RecoverOverload)
@@ -70,11 +70,11 @@ void ControlPage::onGuardEvent(const feetech::GuardEvent &event)
 
 void ControlPage::showGuard()
 {
-    const auto event = m_index >= 0 ? m_client->lastGuardEvent(m_index) : std::nullopt;
+    const auto event = m_index >= 0 ? m_client->guard()->lastEvent(m_index) : std::nullopt;
     m_guardBanner->setVisible(m_index >= 0);
     m_guardSettings->setEnabled(m_client->servoCount() > 0);
     if (!event) {
-        m_guardText->setText(m_client->guardSettings().enabled
+        m_guardText->setText(m_client->guard()->settings().enabled
                                  ? tr("Guard on: an overloaded servo is stopped (held where "
                                       "it stands, or its torque switched off, as set under "
                                       "Guard…); a hot one has its torque switched off.")

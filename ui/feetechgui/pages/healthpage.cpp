@@ -128,12 +128,12 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
         m_progress->setRange(0, total);
         m_progress->setValue(done);
     });
-    connect(m_client, &feetech::BusClient::healthRead, this,
+    connect(m_client->health(), &feetech::HealthService::reading, this,
             [this](const feetech::HealthReading &reading) {
                 m_readings.insert({reading.servo.id, reading.servo.baud}, reading);
                 reassess();
             });
-    connect(m_client, &feetech::BusClient::healthCheckFinished, this,
+    connect(m_client->health(), &feetech::HealthService::checkFinished, this,
             [this](bool completed, const QString &text) {
                 m_checking = false;
                 m_progress->setVisible(false);
@@ -141,7 +141,7 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
                 showState(text, !completed);
                 updateActions();
             });
-    connect(m_client, &feetech::BusClient::moveTested, this,
+    connect(m_client->health(), &feetech::HealthService::moveTested, this,
             [this](const feetech::MoveTestResult &result) {
                 if (!m_moving)
                     return;
@@ -160,7 +160,7 @@ bool HealthPage::check(QString *error)
     for (int i = 0; i < m_client->servoCount(); ++i)
         indexes.append(i);
     QString why;
-    if (!m_client->checkHealth(indexes, feetech::kDefaultHealthReads, &why)) {
+    if (!m_client->health()->check(indexes, feetech::kDefaultHealthReads, &why)) {
         showState(why, true);
         if (error)
             *error = why;
@@ -181,14 +181,14 @@ bool HealthPage::check(QString *error)
 void HealthPage::cancel()
 {
     if (m_checking)
-        m_client->cancelHealthCheck();
+        m_client->health()->cancel();
 }
 
 bool HealthPage::moveTest(QString *error)
 {
     int index = selectedServo();
     QString why = index < 0 ? tr("Select the servo to move in the table first.")
-                            : m_client->moveTestBlocker(index);
+                            : m_client->health()->moveTestBlocker(index);
     if (why.isEmpty()) {
         // The question runs its own event loop: by its answer the servo list may have changed,
         // so the servo confirmed is looked up again by its address.
@@ -205,7 +205,7 @@ bool HealthPage::moveTest(QString *error)
             why = tr("The move test was not confirmed: nothing moved.");
         else if (index < 0)
             why = tr("Servo %1 is no longer on the bus: nothing moved.").arg(info.id);
-        else if (m_client->moveTest(index, true, &why))
+        else if (m_client->health()->moveTest(index, true, &why))
             m_moving = true;
     }
     if (!m_moving) {
@@ -360,7 +360,7 @@ void HealthPage::updateActions()
     m_cancel->setEnabled(m_checking);
     const int index = selectedServo();
     m_move->setEnabled(!m_checking && !m_moving && index >= 0
-                       && m_client->moveTestBlocker(index).isEmpty());
+                       && m_client->health()->moveTestBlocker(index).isEmpty());
     m_save->setEnabled(!m_health.isEmpty() && !m_checking);
 }
 

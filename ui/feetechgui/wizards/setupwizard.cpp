@@ -35,9 +35,12 @@ SetupWizard::SetupWizard(feetech::BusClient *client, QWidget *parent)
         if (isVisible())
             checkBus();
     });
-    connect(m_client, &feetech::BusClient::motorSetupProgress, this, &SetupWizard::onProgress);
-    connect(m_client, &feetech::BusClient::motorSetupFinished, this, &SetupWizard::onFinished);
-    connect(m_client, &feetech::BusClient::jointsChecked, this, &SetupWizard::onChecked);
+    connect(m_client->motorSetup(), &feetech::MotorSetupService::progress, this,
+            &SetupWizard::onProgress);
+    connect(m_client->motorSetup(), &feetech::MotorSetupService::finished, this,
+            &SetupWizard::onFinished);
+    connect(m_client->motorSetup(), &feetech::MotorSetupService::jointsChecked, this,
+            &SetupWizard::onChecked);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         showCurrent();
         updateActions();

@@ -51,7 +51,7 @@ void SetupWizard::checkBus()
     if (isWorking() || !m_client->isConnected() || m_client->isBusy() || m_joints.isEmpty())
         return;
     QString error;
-    if (!m_client->checkJoints(m_robot.baud, feetech::jointChecks(m_robot), &error)) {
+    if (!m_client->motorSetup()->checkJoints(m_robot.baud, feetech::jointChecks(m_robot), &error)) {
         showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
         return;
     }
@@ -65,7 +65,7 @@ void SetupWizard::find()
         return;
     m_found.reset();
     QString error;
-    if (!m_client->findMotor(currentTarget(), &error)) {
+    if (!m_client->motorSetup()->find(currentTarget(), &error)) {
         showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
         updateActions();
         return;
@@ -79,7 +79,7 @@ void SetupWizard::setUp()
     if (isWorking() || m_current < 0 || !m_found)
         return;
     QString error;
-    if (!m_client->setUpMotor(currentTarget(), &error)) {
+    if (!m_client->motorSetup()->setUp(currentTarget(), &error)) {
         showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
         return;
     }
@@ -92,7 +92,7 @@ void SetupWizard::stop()
     if (!isWorking() || m_stopping)
         return;
     m_stopping = true;
-    m_client->cancelMotorSetup();
+    m_client->motorSetup()->cancel();
     m_step->setText(tr("Stopping after this step…"));
     updateActions();
 }

@@ -1,0 +1,115 @@
+// The overload and thermal guard's settings for the servos found, its news, and the recovery of
+// a servo whose overload protection tripped.
+#include "busguard.h"
+
+#include "busclient.h"
+
+#include <QCoreApplication>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
+};
+
+} // namespace
+
+namespace feetech {
+
+BusGuard::BusGuard(BusClient *client)
+    : QObject(client)
+    , m_client(client)
+{
+    qRegisterMetaType<feetech::GuardEvent>();
+    qRegisterMetaType<feetech::GuardSettings>();
+    connect(client->session(), &Session::guardEvent, this, [this](const GuardEvent &guarded) {
+        m_lastEvent.insert({guarded.id, guarded.baud}, guarded);
+        emit event(guarded);
+        const int index = m_client->indexOf(guarded.id, guarded.baud);
+        if (index >= 0)
+            emit m_client->servoUpdated(index);
+    });
+    // The servo's own limit registers, once read, give its defaults.
+    connect(client, &BusClient::servoUpdated, this, [this] { send(); });
+    connect(client, &BusClient::servosChanged, this, [this] {
+        m_lastEvent.clear();
+        send();
+    });
+}
+
+GuardLimits BusGuard::limits(int index) const
+{
+    if (index < 0 || index >= m_client->servoCount() || !m_client->servo(index).info.hasTable())
+        return {};
+    const Servo &entry = m_client->servo(index);
+    const auto set = m_settings.servos.constFind({entry.info.id, entry.info.baud});
+    if (set != m_settings.servos.constEnd())
+        return *set;
+    return defaults(index);
+}
+
+GuardLimits BusGuard::defaults(int index) const
+{
+    if (index < 0 || index >= m_client->servoCount() || !m_client->servo(index).info.hasTable())
+        return {};
+    const Servo &entry = m_client->servo(index);
+    const model::ParameterModel *parameters = entry.parameters.get();
+    return defaultGuardLimits(
+        entry.info.table(), [parameters](QStringView key) -> std::optional<qint32> {
+            const auto value = parameters->deviceValue(key.toString());
+            return value ? std::optional<qint32>(qint32(*value)) : std::nullopt;
+        });
+}
+
+void BusGuard::setSettings(const GuardSettings &settings)
+{
+    m_settings = settings;
+    send();
+}
+
+void BusGuard::send()
+{
+    GuardSettings settings;
+    settings.enabled = m_settings.enabled;
+    for (int i = 0; i < m_client->servoCount(); ++i) {
+        if (m_client->servo(i).info.hasTable())
+            settings.servos.insert({m_client->servo(i).info.id, m_client->servo(i).info.baud},
+                                   limits(i));
+    }
+    if (m_sent && m_sent->enabled == settings.enabled && m_sent->servos == settings.servos)
+        return;
+    m_sent = settings;
+    m_client->runInSession([settings](Session &s) { s.setGuardSettings(settings); });
+}
+
+std::optional<GuardEvent> BusGuard::lastEvent(int index) const
+{
+    if (index < 0 || index >= m_client->servoCount())
+        return std::nullopt;
+    const auto event =
+        m_lastEvent.constFind({m_client->servo(index).info.id, m_client->servo(index).info.baud});
+    if (event == m_lastEvent.constEnd())
+        return std::nullopt;
+    return *event;
+}
+
+OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, QString *error)
+{
+    const QString blocker = m_client->writeBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return nullptr;
+    }
+    if (!m_client->servo(index).info.table().find(u"status")) {
+        if (error)
+            *error = Tr::tr("This servo has no status register: there is nothing to recover.");
+        return nullptr;
+    }
+    return m_client->startOperation(
+        Operation::RecoverOverload, index, error, BusClient::Work::Foreground,
+        [checkOnly](Session &s, const ServoInfo &info) { s.recoverOverload(info, checkOnly); });
+}
+
+} // namespace feetech

@@ -1,0 +1,53 @@
+// The GUI thread's side of motor set-up: find the one servo on the bus, set it up, check joints.
+#pragma once
+
+#include "motorsetup.h"
+
+#include <QObject>
+#include <QVector>
+
+#include <optional>
+
+namespace feetech {
+
+class BusClient;
+class OperationReply;
+class Session;
+
+// Belongs to a BusClient (BusClient::motorSetup()). No scan is needed: each servo is found
+// alone. Each find or set-up ends with finished, each check with jointsChecked, also when the
+// link went down meanwhile; a servo of the list that was set up is moved to where it answers.
+class MotorSetupService : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit MotorSetupService(BusClient *client);
+
+    // Looks for the one servo on the bus at every rate. Nullptr and *error when not started.
+    OperationReply *find(const MotorTarget &target, QString *error = nullptr);
+    // Finds the one servo again and gives it the target's ID, rate and settings, verified.
+    OperationReply *setUp(const MotorTarget &target, QString *error = nullptr);
+    // Which of `joints` already answer at their ID at `baud`, as their model.
+    OperationReply *checkJoints(qint32 baud, const QVector<JointCheck> &joints,
+                                QString *error = nullptr);
+    // Stops a find, set-up or check before its next step.
+    void cancel();
+
+signals:
+    void progress(int step, int steps, const QString &text);
+    void finished(const feetech::MotorSetupResult &result);
+    void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
+
+private:
+    OperationReply *start(Operation operation, QString *error,
+                          const std::function<void(Session &)> &work);
+    void onWorkFinished(const OperationResult &result);
+
+    BusClient *m_client;
+    // What the session reported of the work running, until it ends.
+    std::optional<MotorSetupResult> m_result;
+    std::optional<QVector<JointCheck>> m_jointsChecked;
+};
+
+} // namespace feetech
