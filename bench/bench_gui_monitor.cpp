@@ -170,7 +170,7 @@ int main(int argc, char **argv)
     frames.recording = false;
     measure(kSecondHalfSeconds);
     const double memoryLate = residentMegabytes();
-    const feetech::TelemetryStats stats = client.telemetryStats();
+    const feetech::TelemetryStats stats = client.telemetry()->stats();
     page.stop();
 
     QJsonArray quantities;

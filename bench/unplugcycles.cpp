@@ -248,11 +248,11 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
     }
     case Work::FeetechStream: {
         QString error;
-        if (!client.startMonitor({0, 1, 2, 3, 4, 5}, 50.0, &error))
+        if (!client.telemetry()->subscribe(&client, {0, 1, 2, 3, 4, 5}, 50.0, &error))
             return QStringLiteral("the stream did not start: ") + error;
         qint64 samples = 0;
         const auto connection = QObject::connect(
-            &client, &feetech::BusClient::telemetryReceived,
+            client.telemetry(), &feetech::TelemetryHub::samplesReceived,
             [&samples](const QVector<feetech::FeedbackSample> &batch) { samples += batch.size(); });
         waitUntil([&] { return samples > 30; });
         bench.unplug();
@@ -265,10 +265,10 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
             return QStringLiteral("no reconnection");
         }
         // The stream is started again, as the Monitor page's Start does.
-        client.startMonitor({0, 1, 2, 3, 4, 5}, 50.0, &error);
+        client.telemetry()->subscribe(&client, {0, 1, 2, 3, 4, 5}, 50.0, &error);
         samples = 0;
         const bool flowing = waitUntil([&] { return samples > 30; });
-        client.stopMonitor();
+        client.telemetry()->unsubscribe(&client);
         QObject::disconnect(connection);
         return flowing ? QString() : QStringLiteral("no samples after reconnecting");
     }

@@ -166,7 +166,7 @@ private slots:
     {
         QSignalSpy logged(m_client->link(), &seriallink::LinkMirror::packetLogged);
         QString error;
-        QVERIFY2(m_client->startMonitor({0, 1}, 50, &error), qPrintable(error));
+        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1}, 50, &error), qPrintable(error));
         // Servo 2 goes silent: the note that says so is in the log every view shows.
         setSimulatorValue(2, u"id", 20);
         const auto noted = [&logged] {
@@ -176,7 +176,7 @@ private slots:
             });
         };
         QTRY_VERIFY_WITH_TIMEOUT(noted(), 10000);
-        m_client->stopMonitor();
+        m_client->telemetry()->unsubscribe(this);
     }
 
     void aStreamTakesASilentServoOutOnlyAfterTheMissesItWasGiven_data()
@@ -191,9 +191,10 @@ private slots:
         QFETCH(int, misses);
         QString error;
         setSimulatorValue(2, u"id", 22); // servo 2 goes silent before the stream starts
-        QVERIFY2(m_client->startMonitor({0, 1}, 50, &error, misses), qPrintable(error));
+        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1}, 50, &error, misses),
+                 qPrintable(error));
         const auto silent = [this]() -> std::optional<feetech::ServoTelemetry> {
-            for (const feetech::ServoTelemetry &servo : m_client->telemetryStats().servos) {
+            for (const feetech::ServoTelemetry &servo : m_client->telemetry()->stats().servos) {
                 if (servo.id == 2 && servo.missing)
                     return servo;
             }
@@ -202,7 +203,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(silent().has_value(), 10000);
         QVERIFY2(silent()->missed >= misses, qPrintable(QString::number(silent()->missed)));
         QVERIFY2(silent()->missed < misses + 5, qPrintable(QString::number(silent()->missed)));
-        m_client->stopMonitor();
+        m_client->telemetry()->unsubscribe(this);
     }
 
     void anEepromWriteWhoseUnlockGoesUnansweredIsFailedAndKeepsTheEdit()

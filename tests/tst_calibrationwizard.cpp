@@ -146,7 +146,7 @@ private slots:
         QCOMPARE(saved->size(), 6);
         QCOMPARE(saved->at(5).name, QStringLiteral("claw"));
         QCOMPARE(saved->at(1).homingOffset, -1996);
-        QVERIFY(!m_client->isMonitoring());
+        QVERIFY(!m_client->telemetry()->isStreaming());
     }
 
     void leRobotsOrderTakesTheMiddlePoseFirst()
@@ -161,9 +161,9 @@ private slots:
         click(&wizard, "calibrationNextButton");
         click(&wizard, "torqueOffStartButton");
         QTRY_COMPARE_WITH_TIMEOUT(wizard.page(), CalibrationWizard::Page::MiddlePose, 10000);
-        QTRY_VERIFY(m_client->latestSample(5).has_value());
+        QTRY_VERIFY(m_client->telemetry()->latestSample(5).has_value());
         for (int i = 0; i < 6; ++i)
-            QTRY_VERIFY(m_client->latestSample(i).has_value());
+            QTRY_VERIFY(m_client->telemetry()->latestSample(i).has_value());
         hand.start([&wizard] {
             return wizard.page() == CalibrationWizard::Page::Recording
                 && wizard.recordings().first().range.hasSamples();
@@ -200,11 +200,11 @@ private slots:
         hand.script(1, {600, 1600});
         startRecording(*wizard, hand);
         QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
-        QVERIFY(m_client->isMonitoring());
+        QVERIFY(m_client->telemetry()->isStreaming());
         QPointer<CalibrationWizard> alive(wizard);
         click(wizard, "calibrationCancelButton");
         QTRY_VERIFY(alive.isNull());
-        QVERIFY(!m_client->isMonitoring());
+        QVERIFY(!m_client->telemetry()->isStreaming());
         for (quint8 id = 1; id <= 6; ++id)
             QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
     }
@@ -221,10 +221,10 @@ private slots:
         QTRY_COMPARE(wizard.recordings().first().range.maximum(), 1600);
         click(&wizard, "finishRecordingButton");
         QVERIFY(wizard.results().first().ok());
-        QVERIFY(!m_client->isMonitoring());
+        QVERIFY(!m_client->telemetry()->isStreaming());
         click(&wizard, "recordAgainButton");
         QCOMPARE(wizard.page(), CalibrationWizard::Page::Recording);
-        QVERIFY(m_client->isMonitoring());
+        QVERIFY(m_client->telemetry()->isStreaming());
         // The joint rests at 1000 now: that is all the new recording holds.
         QTRY_VERIFY(wizard.recordings().first().range.hasSamples());
         QCOMPARE(wizard.recordings().first().range.maximum(), 1000);

@@ -249,7 +249,7 @@ private slots:
     {
         const int index = showServo(1);
         QVERIFY(index >= 0);
-        QVERIFY(!m_client->isMonitoring());
+        QVERIFY(!m_client->telemetry()->isStreaming());
         m_page->setConfirmMoves(false);
         child<QSpinBox>("testFromSpinBox")->setValue(2000);
         child<QSpinBox>("testToSpinBox")->setValue(2200);
@@ -263,7 +263,7 @@ private slots:
         QVERIFY(test->isRunning());
         QVERIFY(child<QPushButton>("stopTestButton")->isEnabled());
         QVERIFY(!child<QPushButton>("moveButton")->isEnabled()); // the test owns the goal
-        QVERIFY(m_client->isMonitoring()); // the test needs the stream
+        QVERIFY(m_client->telemetry()->isStreaming()); // the test needs the stream
         QTRY_COMPARE_WITH_TIMEOUT(finished.size() + failed.size(), 1, 20000);
         QVERIFY2(failed.isEmpty(),
                  failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
@@ -284,7 +284,7 @@ private slots:
         QVERIFY(child<QLabel>("riseTimeLabel")->text().endsWith(QLatin1String("ms")));
         QVERIFY(child<QLabel>("settlingTimeLabel")->text().endsWith(QLatin1String("ms")));
         QVERIFY(child<QLabel>("steadyStateErrorLabel")->text().contains(QLatin1String("step")));
-        QTRY_VERIFY(!m_client->isMonitoring());
+        QTRY_VERIFY(!m_client->telemetry()->isStreaming());
         QVERIFY(!test->isRunning());
         QVERIFY(child<QPushButton>("moveButton")->isEnabled());
     }
@@ -306,7 +306,7 @@ private slots:
         child<QPushButton>("stepTestButton")->click(); // returns once the box is answered
         QVERIFY(cancelWasDefault);
         QVERIFY(!m_page->motionTest()->isRunning());
-        QVERIFY(!m_client->isMonitoring());
+        QVERIFY(!m_client->telemetry()->isStreaming());
         QVERIFY(writesReceived(1).isEmpty());
     }
 
@@ -344,7 +344,7 @@ private slots:
         QVERIFY(child<QPushButton>("sweepButton")->isEnabled());
         for (quint8 id : {1, 2, 3})
             QTRY_COMPARE_WITH_TIMEOUT(simulatorValue(id, QStringLiteral("torque_enable")), 0, 5000);
-        QTRY_VERIFY(!m_client->isMonitoring()); // as it was before the sweep
+        QTRY_VERIFY(!m_client->telemetry()->isStreaming()); // as it was before the sweep
         QTRY_VERIFY(child<QPushButton>("torqueOffButton")->isChecked());
     }
 
@@ -370,7 +370,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!test->isRunning(), 5000);
         QCOMPARE(failed.size(), 1);
         QVERIFY(failed.first().first().toString().contains(QLatin1String("disconnected")));
-        QVERIFY(!m_client->isMonitoring());
+        QVERIFY(!m_client->telemetry()->isStreaming());
         QVERIFY(!m_page->statusText().isEmpty());
     }
 
@@ -403,7 +403,7 @@ private slots:
         QVERIFY2(failed.first().first().toString().contains(QLatin1String("failed")),
                  qPrintable(failed.first().first().toString()));
         QVERIFY(m_page->statusText().contains(QLatin1String("failed")));
-        QTRY_VERIFY(!m_client->isMonitoring());
+        QTRY_VERIFY(!m_client->telemetry()->isStreaming());
     }
 
     void stopEndsASweepAndKeepsTheMonitorThatWasRunning()
@@ -411,8 +411,8 @@ private slots:
         const int index = showServo(1);
         QVERIFY(index >= 0);
         const int other = m_client->indexOf(2, k1M);
-        QVERIFY(m_client->startMonitor({other}, 20.0));
-        QTRY_VERIFY(m_client->isMonitoring());
+        QVERIFY(m_client->telemetry()->subscribe(this, {other}, 20.0));
+        QTRY_VERIFY(m_client->telemetry()->isStreaming());
         m_page->setConfirmMoves(false);
         child<QSpinBox>("testFromSpinBox")->setValue(1800);
         child<QSpinBox>("testToSpinBox")->setValue(2300);
@@ -423,9 +423,10 @@ private slots:
         child<QPushButton>("sweepButton")->click();
         QVERIFY(test->isRunning());
         // The stream now carries the tested servo too, fast enough for the test.
-        QVERIFY(m_client->isMonitored(index));
-        QVERIFY(m_client->isMonitored(other));
-        QCOMPARE(m_client->monitorOptions().rateHz, feetech::MotionTiming::kDefaultMonitorRateHz);
+        QVERIFY(m_client->telemetry()->isStreamed(index));
+        QVERIFY(m_client->telemetry()->isStreamed(other));
+        QCOMPARE(m_client->telemetry()->options().rateHz,
+                 feetech::MotionTiming::kDefaultMonitorRateHz);
 
         child<QPushButton>("stopTestButton")->click();
         QVERIFY(!test->isRunning());
@@ -433,10 +434,10 @@ private slots:
         QVERIFY(m_page->statusText().isEmpty()); // a stop the user asked for is no error
         QVERIFY(child<QLabel>("testProgressLabel")->text().contains(QLatin1String("stopped")));
         // Back to streaming only servo 2 at 20 Hz.
-        QTRY_VERIFY(m_client->isMonitoring());
-        QVERIFY(!m_client->isMonitored(index));
-        QVERIFY(m_client->isMonitored(other));
-        QCOMPARE(m_client->monitorOptions().rateHz, 20.0);
+        QTRY_VERIFY(m_client->telemetry()->isStreaming());
+        QVERIFY(!m_client->telemetry()->isStreamed(index));
+        QVERIFY(m_client->telemetry()->isStreamed(other));
+        QCOMPARE(m_client->telemetry()->options().rateHz, 20.0);
     }
 
     void operatingModeIsWrittenWhereTheFamilyHasIt()

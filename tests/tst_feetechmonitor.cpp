@@ -3,6 +3,7 @@
 #include "feetechsession.h"
 #include "operationlog.h"
 
+#include <QSet>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -272,27 +273,27 @@ private slots:
                                             seriallink::EchoMode::Off));
         QCOMPARE(client.servoCount(), 4);
         QHash<int, int> samples;
-        connect(&client, &feetech::BusClient::telemetryReceived, this,
+        connect(client.telemetry(), &feetech::TelemetryHub::samplesReceived, this,
                 [&samples](const QVector<FeedbackSample> &batch) {
                     for (const FeedbackSample &sample : batch)
                         ++samples[sample.id];
                 });
-        QVERIFY(client.startMonitor({0, 1, 2, 3}, 50));
+        QVERIFY(client.telemetry()->subscribe(this, {0, 1, 2, 3}, 50));
         QTRY_VERIFY_WITH_TIMEOUT(samples.value(1) >= 5, 10000);
         // A new selection replaces the stream; the old one's last news must not stop it.
-        QVERIFY(client.startMonitor({0, 2}, 0));
-        client.stopMonitor();
-        QVERIFY(client.startMonitor({0, 2}, 0));
+        QVERIFY(client.telemetry()->subscribe(this, {0, 2}, 0));
+        client.telemetry()->unsubscribe(this);
+        QVERIFY(client.telemetry()->subscribe(this, {0, 2}, 0));
         samples.clear();
         QVERIFY(
             runUntil([&] { return samples.value(1) >= 1500 && samples.value(3) >= 1500; }, 30000));
-        QVERIFY(client.isMonitoring());
+        QVERIFY(client.telemetry()->isStreaming());
         QVERIFY(client.isConnected());
         QCOMPARE(samples.value(2), 0); // no longer selected
-        QCOMPARE(client.telemetryStats().servos.size(), 2);
-        QCOMPARE(client.latestSample(0)->id, quint8(1));
+        QCOMPARE(client.telemetry()->stats().servos.size(), 2);
+        QCOMPARE(client.telemetry()->latestSample(0)->id, quint8(1));
         // Control writes go between the cycles; the stream goes on and the link stays clean.
-        QVERIFY(client.startMonitor({0, 1, 2, 3}, 50));
+        QVERIFY(client.telemetry()->subscribe(this, {0, 1, 2, 3}, 50));
         OperationLog writtenLog(&client);
         QSignalSpy written(&writtenLog, &OperationLog::finished);
         for (int i = 0; i < 4; ++i) {
@@ -306,12 +307,59 @@ private slots:
         }
         samples.clear();
         QTRY_VERIFY_WITH_TIMEOUT(samples.value(4) >= 50, 10000);
-        QVERIFY(client.isMonitoring());
+        QVERIFY(client.telemetry()->isStreaming());
         QVERIFY(client.isConnected());
-        for (const feetech::ServoTelemetry &servo : client.telemetryStats().servos)
+        for (const feetech::ServoTelemetry &servo : client.telemetry()->stats().servos)
             QVERIFY(!servo.missing);
-        client.stopMonitor();
-        QVERIFY(!client.isMonitoring());
+        client.telemetry()->unsubscribe(this);
+        QVERIFY(!client.telemetry()->isStreaming());
+    }
+
+    void theHubStreamsWhatEverySubscriberAsksForAtTheFastestRate()
+    {
+        m_session.reset(); // the pty takes one opener: the client's worker thread now
+        feetech::BusClient client;
+        QVERIFY(testsupport::connectAndScan(client, m_simulator->linkPath(), 4,
+                                            seriallink::EchoMode::Off));
+        feetech::TelemetryHub &hub = *client.telemetry();
+        QSet<int> seen;
+        connect(&hub, &feetech::TelemetryHub::samplesReceived, this,
+                [&seen](const QVector<FeedbackSample> &batch) {
+                    for (const FeedbackSample &sample : batch)
+                        seen.insert(sample.id);
+                });
+        QObject monitor;
+        auto test = std::make_unique<QObject>();
+        QString error;
+        QVERIFY(!hub.subscribe(&monitor, {}, 20, &error)); // nothing to stream: refused
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!hub.isStreaming());
+        QVERIFY(hub.subscribe(&monitor, {0, 1}, 20, &error));
+        QCOMPARE(hub.options().rateHz, 20.0);
+        QVERIFY(hub.subscribe(test.get(), {1, 3}, 50, &error));
+        // The union, in the order first asked for, at the faster rate; nobody's stream replaced.
+        QCOMPARE(hub.options().servos.size(), 3);
+        QCOMPARE(hub.options().servos.at(0).id, quint8(1));
+        QCOMPARE(hub.options().servos.at(2).id, quint8(4));
+        QCOMPARE(hub.options().rateHz, 50.0);
+        QVERIFY(hub.isStreamed(0) && hub.isStreamed(3) && !hub.isStreamed(2));
+        QTRY_VERIFY_WITH_TIMEOUT(seen.contains(1) && seen.contains(2) && seen.contains(4), 10000);
+        QVERIFY(!seen.contains(3));
+        // A subscriber that goes away unsubscribes: the other's servos at its rate stream on.
+        test.reset();
+        QVERIFY(hub.isStreaming());
+        QCOMPARE(hub.options().servos.size(), 2);
+        QCOMPARE(hub.options().rateHz, 20.0);
+        QVERIFY(!hub.isStreamed(3));
+        QVERIFY(hub.isSubscribed(&monitor));
+        // As fast as the bus allows (0) is faster than any rate.
+        QObject fastest;
+        QVERIFY(hub.subscribe(&fastest, {0}, 0, &error));
+        QCOMPARE(hub.options().rateHz, 0.0);
+        hub.unsubscribe(&fastest);
+        QCOMPARE(hub.options().rateHz, 20.0);
+        hub.unsubscribe(&monitor);
+        QVERIFY(!hub.isStreaming());
     }
 
     void writesQueuedBeforeTorqueOffAreNotSent()

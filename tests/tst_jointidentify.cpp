@@ -282,12 +282,13 @@ private slots:
         QVERIFY(slow >= 0 && fast >= 0);
         m_client->readServo(slow);
         QTRY_VERIFY_WITH_TIMEOUT(m_client->servo(slow).read, 10000);
-        QVERIFY2(m_client->startMonitor({slow, fast}, 0, &error), qPrintable(error));
+        QVERIFY2(m_client->telemetry()->subscribe(this, {slow, fast}, 0, &error),
+                 qPrintable(error));
         const qint32 start = simulatorValue(1, u"present_position");
         const qint32 limit = simulatorValue(1, u"torque_limit");
 
         const Watched watched = identifyWatching(slow, 1);
-        m_client->stopMonitor();
+        m_client->telemetry()->unsubscribe(this);
         QVERIFY(watched.result);
         QVERIFY2(watched.result->ok, qPrintable(watched.result->message));
         QVERIFY(watched.highest >= start + kAmplitude / 2);

@@ -382,7 +382,8 @@ private slots:
     {
         connectAndScan();
         QString error;
-        QVERIFY2(m_client->startMonitor({0, 1, 2, 3}, 50, &error), qPrintable(error));
+        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1, 2, 3}, 50, &error),
+                 qPrintable(error));
         for (int row = 0; row < 4; ++row)
             QTRY_VERIFY_WITH_TIMEOUT(m_joints->isPositionLive(row), 10000);
         QVERIFY(!child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));
@@ -405,7 +406,7 @@ private slots:
         QVERIFY(m_joints->isPositionLive(1));
         QVERIFY(child<QLabel>("liveHint")->text().contains(QStringLiteral("in grey")));
 
-        m_client->stopMonitor();
+        m_client->telemetry()->unsubscribe(this);
         QVERIFY(!m_joints->isPositionLive(1));
         QVERIFY(child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));
         // The last sample stays the best known position until something newer is read.

@@ -347,7 +347,7 @@ private slots:
         QString error;
         QVERIFY2(m_page->start(&error), qPrintable(error));
         QVERIFY(m_page->isRunning());
-        QCOMPARE(m_client->monitorOptions().rateHz, 100.0);
+        QCOMPARE(m_client->telemetry()->options().rateHz, 100.0);
         for (quint8 id = 1; id <= 4; ++id) {
             QTRY_COMPARE_WITH_TIMEOUT(readout(id, MonitorReadouts::StateColumn),
                                       QStringLiteral("OK"), 10000);
@@ -371,11 +371,11 @@ private slots:
         // Unticking a servo restarts the stream without it.
         list->item(1)->setCheckState(Qt::Unchecked);
         QVERIFY(m_page->isRunning());
-        QCOMPARE(m_client->monitorOptions().servos.size(), 3);
-        QVERIFY(!m_client->isMonitored(1));
+        QCOMPARE(m_client->telemetry()->options().servos.size(), 3);
+        QVERIFY(!m_client->telemetry()->isStreamed(1));
         QCOMPARE(readoutRow(2), -1);
         QCOMPARE(m_page->plot()->seriesCount(), 3 * 3);
-        QSignalSpy received(m_client.get(), &feetech::BusClient::telemetryReceived);
+        QSignalSpy received(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived);
         QTRY_VERIFY_WITH_TIMEOUT(received.count() >= 5, 10000);
 
         // Recorded while streaming, ended by Stop.

@@ -94,7 +94,7 @@ private slots:
     {
         const int index = readServo(1);
         QVERIFY(index >= 0);
-        QVERIFY(!m_client->isMonitoring());
+        QVERIFY(!m_client->telemetry()->isStreaming());
         QSignalSpy running(m_test.get(), &MotionTest::runningChanged);
         QSignalSpy finished(m_test.get(), &MotionTest::stepFinished);
         QSignalSpy failed(m_test.get(), &MotionTest::failed);
@@ -102,7 +102,7 @@ private slots:
         QVERIFY2(m_test->startStep(plan(index, 2000, 2200), &error), qPrintable(error));
         QVERIFY(m_test->isRunning());
         QCOMPARE(m_test->kind(), MotionTest::Kind::Step);
-        QVERIFY(m_client->isMonitoring()); // the test needs the stream
+        QVERIFY(m_client->telemetry()->isStreaming()); // the test needs the stream
         QTRY_COMPARE_WITH_TIMEOUT(finished.size() + failed.size(), 1, 20000);
         QVERIFY2(failed.isEmpty(),
                  failed.isEmpty() ? "" : qPrintable(failed.first().first().toString()));
@@ -119,7 +119,7 @@ private slots:
         QVERIFY(std::abs(recording.last().value - 2200.0)
                 <= testsupport::quickMotionTiming().reachTolerance);
         QCOMPARE(simulatorValue(1, QStringLiteral("goal_position")), 2200);
-        QTRY_VERIFY(!m_client->isMonitoring());
+        QTRY_VERIFY(!m_client->telemetry()->isStreaming());
         QVERIFY(!m_test->isRunning());
         QCOMPARE(running.size(), 2);
         QCOMPARE(running.at(0).at(0).toBool(), true);
@@ -162,7 +162,7 @@ private slots:
         m_test->cancel();
         QVERIFY(!m_test->isRunning());
         QCOMPARE(failed.size(), 1);
-        QTRY_VERIFY(!m_client->isMonitoring());
+        QTRY_VERIFY(!m_client->telemetry()->isStreaming());
         // A second test may start at once.
         QVERIFY(m_test->validate(plan(index, 2000, 2200), MotionTest::Kind::Step, &error));
     }

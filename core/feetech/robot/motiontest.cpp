@@ -56,7 +56,7 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
 {
     m_timer->setSingleShot(true);
     connect(m_timer, &QTimer::timeout, this, &MotionTest::onTimeout);
-    connect(m_client, &BusClient::telemetryReceived, this, &MotionTest::onTelemetry);
+    connect(m_client->telemetry(), &TelemetryHub::samplesReceived, this, &MotionTest::onTelemetry);
     connect(m_client, &BusClient::statusChanged, this, &MotionTest::onStatusChanged);
     connect(m_client, &BusClient::allTorqueOffRequested, this,
             [this] { fail(tr("All torque off: the test was stopped.")); });
@@ -238,47 +238,13 @@ bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
 
 bool MotionTest::ensureMonitor(int index, QString *error)
 {
-    m_monitor = {};
-    const TelemetryOptions &options = m_client->monitorOptions();
-    const bool running = m_client->isMonitoring();
-    const bool fastEnough = options.rateHz == 0.0 || options.rateHz >= m_timing.monitorRateHz;
-    if (running && m_client->isMonitored(index) && fastEnough)
-        return true; // already streaming this servo fast enough: leave it alone
-    m_monitor.wasRunning = running;
-    m_monitor.rateHz = options.rateHz;
-    QVector<int> indexes;
-    if (running) {
-        for (const ServoInfo &servo : options.servos) {
-            m_monitor.servos.append({servo.id, servo.baud});
-            const int other = m_client->indexOf(servo.id, servo.baud);
-            if (other >= 0 && !indexes.contains(other))
-                indexes.append(other);
-        }
-    }
-    if (!indexes.contains(index))
-        indexes.append(index);
-    const double rate = running && fastEnough ? options.rateHz : m_timing.monitorRateHz;
-    if (!m_client->startMonitor(indexes, rate, error))
-        return false;
-    m_monitor.changed = true;
-    return true;
+    // Its servo at its rate, beside whatever else streams; nothing of another's stream changes.
+    return m_client->telemetry()->subscribe(this, {index}, m_timing.monitorRateHz, error);
 }
 
 void MotionTest::restoreMonitor()
 {
-    if (!m_monitor.changed)
-        return;
-    m_monitor.changed = false;
-    QVector<int> indexes;
-    for (const auto &[id, baud] : std::as_const(m_monitor.servos)) {
-        const int index = m_client->indexOf(id, baud);
-        if (index >= 0)
-            indexes.append(index);
-    }
-    if (m_monitor.wasRunning && !indexes.isEmpty() && m_client->isConnected()
-        && m_client->startMonitor(indexes, m_monitor.rateHz))
-        return;
-    m_client->stopMonitor();
+    m_client->telemetry()->unsubscribe(this);
 }
 
 void MotionTest::setPhase(Phase phase, std::chrono::milliseconds timeout)

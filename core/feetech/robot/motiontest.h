@@ -120,17 +120,10 @@ signals:
 private:
     enum class Phase { Idle, Approaching, Recording, Collecting, Leg, Dwell };
 
-    struct MonitorState
-    {
-        bool changed = false; // we started or raised the stream
-        bool wasRunning = false;
-        QVector<QPair<quint8, qint32>> servos; // ID and baud of what it streamed
-        double rateHz = 0.0;
-    };
-
     bool start(const MotionPlan &plan, Kind kind, QString *error);
     int servoIndex() const; // -1 once the servo is gone
     bool write(const QVector<model::WriteItem> &values, QString *error);
+    // The stream of its servo: subscribed while the test runs.
     bool ensureMonitor(int index, QString *error);
     void restoreMonitor();
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
@@ -156,7 +149,6 @@ private:
     MotionPlan m_plan;
     quint8 m_id = 0;
     qint32 m_baud = 0;
-    MonitorState m_monitor;
     int m_writesInFlight = 0;
     qint64 m_commandUs = 0; // when the current goal was written (steady clock)
     std::optional<double> m_lastPosition;

@@ -66,19 +66,9 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         emit servoUpdated(index);
     });
     connect(session, &Session::progress, this, &BusClient::progress);
-    connect(session, &Session::telemetry, this, &BusClient::onTelemetry);
-    connect(session, &Session::telemetryStats, this, [this](const TelemetryStats &stats) {
-        if (stats.stream != m_stream)
-            return; // a stream replaced or stopped since
-        m_telemetryStats = stats;
-        emit telemetryStatsChanged(stats);
-        if (!stats.running && m_monitoring) { // stopped, or the link went down
-            m_monitoring = false;
-            emit monitoringChanged(false);
-        }
-    });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
     m_guard = new BusGuard(this);
+    m_telemetry = new TelemetryHub(this);
     m_motorSetup = new MotorSetupService(this);
     m_health = new HealthService(this);
 }
@@ -473,82 +463,6 @@ bool BusClient::eepromUnlocked(int index) const
 }
 
 // ---- live monitoring and control
-
-bool BusClient::startMonitor(const QVector<int> &indexes, double rateHz, QString *error,
-                             int missesBeforeMissing)
-{
-    const auto refuse = [error](const QString &why) {
-        if (error)
-            *error = why;
-        return false;
-    };
-    if (!isConnected())
-        return refuse(Tr::tr("The bus is not connected."));
-    if (indexes.isEmpty())
-        return refuse(Tr::tr("Choose at least one servo to monitor."));
-    if (rateHz < 0)
-        return refuse(Tr::tr("The rate cannot be negative."));
-    TelemetryOptions options;
-    options.rateHz = rateHz;
-    options.missesBeforeMissing = std::max(1, missesBeforeMissing);
-    for (const int index : indexes) {
-        if (index < 0 || index >= servoCount())
-            return refuse(Tr::tr("No servo is selected."));
-        const ServoInfo &info = servo(index).info;
-        if (!info.hasTable())
-            return refuse(Tr::tr("Servo %1 is of an unknown model: its feedback cannot be "
-                                 "decoded.")
-                              .arg(info.id));
-        options.servos.append(info);
-    }
-    options.stream = ++m_stream;
-    m_monitorOptions = options;
-    m_worker.run([options](Session &s) { s.startTelemetry(options); });
-    if (!m_monitoring) {
-        m_monitoring = true;
-        emit monitoringChanged(true);
-    }
-    return true;
-}
-
-void BusClient::stopMonitor()
-{
-    ++m_stream;
-    m_worker.run([](Session &s) { s.stopTelemetry(); });
-    if (m_monitoring) {
-        m_monitoring = false;
-        emit monitoringChanged(false);
-    }
-}
-
-bool BusClient::isMonitored(int index) const
-{
-    if (!m_monitoring || index < 0 || index >= servoCount())
-        return false;
-    const ServoInfo &info = servo(index).info;
-    return std::any_of(
-        m_monitorOptions.servos.begin(), m_monitorOptions.servos.end(),
-        [&info](const ServoInfo &s) { return s.id == info.id && s.baud == info.baud; });
-}
-
-std::optional<FeedbackSample> BusClient::latestSample(int index) const
-{
-    if (index < 0 || index >= servoCount())
-        return std::nullopt;
-    return servo(index).latest;
-}
-
-void BusClient::onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream)
-{
-    if (!m_monitoring || stream != m_stream)
-        return; // the last batch of a stream already stopped or replaced
-    for (const FeedbackSample &sample : samples) {
-        const int index = indexOf(sample.id, sample.baud);
-        if (index >= 0)
-            m_servos.at(std::size_t(index))->latest = sample;
-    }
-    emit telemetryReceived(samples);
-}
 
 OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem> &values,
                                        QString *error)

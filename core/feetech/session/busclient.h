@@ -14,6 +14,7 @@
 #include "servohealth.h"
 #include "sessionthread.h"
 #include "telemetry.h"
+#include "telemetryhub.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -32,7 +33,6 @@ struct Servo
     std::unique_ptr<model::ParameterModel> parameters;
     std::optional<quint8> statusByte; // of its last reply
     bool read = false; // its table has been read at least once
-    std::optional<FeedbackSample> latest; // the newest telemetry sample
 };
 
 // Each operation it submits returns an OperationReply (nullptr, with *error, when refused), which
@@ -113,19 +113,8 @@ public:
 
     // ---- live monitoring and control
 
-    // Streams the feedback block of the servos `indexes` at `rateHz` samples per second each
-    // (0: as fast as the bus allows) until stopMonitor; replaces a stream already running.
-    // A servo is taken out after `missesBeforeMissing` missed cycles in a row (TelemetryOptions).
-    // False and *error when nothing was started.
-    bool startMonitor(const QVector<int> &indexes, double rateHz, QString *error = nullptr,
-                      int missesBeforeMissing = kDefaultMissesBeforeMissing);
-    void stopMonitor();
-    bool isMonitoring() const { return m_monitoring; }
-    const TelemetryOptions &monitorOptions() const { return m_monitorOptions; }
-    bool isMonitored(int index) const;
-    // The newest sample of servo `index` (nothing before the first).
-    std::optional<FeedbackSample> latestSample(int index) const;
-    const TelemetryStats &telemetryStats() const { return m_telemetryStats; }
+    // Telemetry: one stream of what every subscriber asks for, and the newest samples.
+    TelemetryHub *telemetry() const { return m_telemetry; }
 
     // Control writes: register values by key, in register units, written and read back (EEPROM
     // ones unlocked and locked again). Unlike apply() they do not wait for an idle bus and
@@ -184,10 +173,6 @@ signals:
     // A reply was made for an operation just submitted (not for background refreshes).
     void submitted(feetech::OperationReply *reply);
     void busyChanged(bool busy);
-    // Samples of monitored servos, in batches (at most about 50 a second).
-    void telemetryReceived(const QVector<feetech::FeedbackSample> &samples);
-    void telemetryStatsChanged(const feetech::TelemetryStats &stats);
-    void monitoringChanged(bool monitoring);
     // Whatever moves servos (sweeps, step tests) stops on this.
     void allTorqueOffRequested();
 
@@ -196,7 +181,6 @@ private:
     void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
-    void onTelemetry(const QVector<FeedbackSample> &samples, quint64 stream);
     void clearServos();
     void forgetWork(); // the link went down: nothing is running any more
     // The pending edits as planApply plans them; with `withAddress` the ID and baud too.
@@ -222,13 +206,10 @@ private:
     quint64 m_lastTicket = 0;
     bool hasLivePending() const;
     QElapsedTimer m_clock;
-    bool m_monitoring = false;
-    quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped
-    TelemetryOptions m_monitorOptions;
-    TelemetryStats m_telemetryStats;
     std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
     QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
     BusGuard *m_guard = nullptr;
+    TelemetryHub *m_telemetry = nullptr;
     MotorSetupService *m_motorSetup = nullptr;
     HealthService *m_health = nullptr;
 };

@@ -114,8 +114,10 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
 
     connect(m_client, &feetech::BusClient::servosChanged, this, &ControlPage::onServosChanged);
     connect(m_client, &feetech::BusClient::servoUpdated, this, &ControlPage::onServoUpdated);
-    connect(m_client, &feetech::BusClient::telemetryReceived, this, &ControlPage::onTelemetry);
-    connect(m_client, &feetech::BusClient::monitoringChanged, this, &ControlPage::updatePresent);
+    connect(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived, this,
+            &ControlPage::onTelemetry);
+    connect(m_client->telemetry(), &feetech::TelemetryHub::streamingChanged, this,
+            &ControlPage::updatePresent);
     connect(m_client, &feetech::BusClient::allTorqueOffRequested, this,
             &ControlPage::onAllTorqueOff);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
@@ -410,8 +412,8 @@ void ControlPage::updatePresent()
             if (const auto value = parameters->deviceValue(kPresentPosition))
                 m_presentPosition = double(*value);
         }
-        if (!m_presentPosition && m_client->isMonitored(m_index)) {
-            if (const auto sample = m_client->latestSample(m_index))
+        if (!m_presentPosition && m_client->telemetry()->isStreamed(m_index)) {
+            if (const auto sample = m_client->telemetry()->latestSample(m_index))
                 m_presentPosition = sample->value(feetech::Quantity::Position);
         }
     }
@@ -421,7 +423,8 @@ void ControlPage::updatePresent()
 
 void ControlPage::refreshPresent()
 {
-    if (!isVisible() || !ready() || m_client->isMonitored(m_index) || m_client->isBusy())
+    if (!isVisible() || !ready() || m_client->telemetry()->isStreamed(m_index)
+        || m_client->isBusy())
         return;
     m_client->refreshRam(m_index);
 }

@@ -153,13 +153,14 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
         refreshRow(row);
         refreshIdentifyButtons(); // a motion test may hold the servo now, or have let it go
     });
-    connect(m_client, &feetech::BusClient::telemetryReceived, this, &JointTable::onTelemetry);
-    connect(m_client, &feetech::BusClient::monitoringChanged, this, [this] {
+    connect(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived, this,
+            &JointTable::onTelemetry);
+    connect(m_client->telemetry(), &feetech::TelemetryHub::streamingChanged, this, [this] {
         for (int row = 0; row < rowCount(); ++row)
             refreshPosition(row);
         refreshHint();
     });
-    connect(m_client, &feetech::BusClient::telemetryStatsChanged, this, [this] {
+    connect(m_client->telemetry(), &feetech::TelemetryHub::statsChanged, this, [this] {
         for (int row = 0; row < rowCount(); ++row)
             refreshPosition(row);
         refreshHint();
@@ -213,11 +214,12 @@ std::optional<qint64> JointTable::deviceValue(int row, const QString &key) const
 bool JointTable::isPositionLive(int row) const
 {
     const int index = servoIndex(row);
-    if (index < 0 || !m_client->isMonitored(index) || !m_client->latestSample(index))
+    if (index < 0 || !m_client->telemetry()->isStreamed(index)
+        || !m_client->telemetry()->latestSample(index))
         return false;
     // A servo the stream has given up on keeps its last sample, which is no longer live.
     const Row &entry = m_rows.at(row);
-    for (const feetech::ServoTelemetry &servo : m_client->telemetryStats().servos) {
+    for (const feetech::ServoTelemetry &servo : m_client->telemetry()->stats().servos) {
         if (servo.id == entry.id && servo.baud == entry.baud)
             return !servo.missing;
     }
@@ -229,7 +231,7 @@ std::optional<feetech::FeedbackSample> JointTable::sampleSource(int row) const
     const int index = servoIndex(row);
     if (index < 0)
         return std::nullopt;
-    std::optional<feetech::FeedbackSample> sample = m_client->latestSample(index);
+    std::optional<feetech::FeedbackSample> sample = m_client->telemetry()->latestSample(index);
     if (!sample)
         return std::nullopt;
     // A read after the last sample is the newer news, unless the monitor is still streaming.
@@ -405,7 +407,7 @@ void JointTable::refreshHint()
     if (rowCount() == 0) {
         text = tr("Scan the bus to list its servos here.");
         offerRead = false;
-    } else if (!m_client->isMonitoring()) {
+    } else if (!m_client->telemetry()->isStreaming()) {
         text = tr("<b>Live positions:</b> the monitor is not running, so positions are the last "
                   "values read (grey) and may be stale. Start the monitor to see live positions, "
                   "or read them now.");

@@ -81,10 +81,11 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
 
     if (m_client) {
         connect(m_client, &feetech::BusClient::servosChanged, this, &MonitorPage::rebuildServoList);
-        connect(m_client, &feetech::BusClient::telemetryReceived, this, &MonitorPage::addSamples);
-        connect(m_client, &feetech::BusClient::telemetryStatsChanged, this,
+        connect(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived, this,
+                &MonitorPage::addSamples);
+        connect(m_client->telemetry(), &feetech::TelemetryHub::statsChanged, this,
                 &MonitorPage::onStatsChanged);
-        connect(m_client, &feetech::BusClient::monitoringChanged, this,
+        connect(m_client->telemetry(), &feetech::TelemetryHub::streamingChanged, this,
                 &MonitorPage::onMonitoringChanged);
         connect(m_client, &feetech::BusClient::statusChanged, this, &MonitorPage::onStatusChanged);
     }
@@ -182,8 +183,8 @@ bool MonitorPage::start(QString *error)
     } else if (selectedServos().isEmpty()) {
         why = tr("Tick at least one servo to monitor.");
     } else {
-        const bool fresh = !m_client->isMonitoring();
-        if (m_client->startMonitor(selectedServos(), rate(), &why)) {
+        const bool fresh = !m_client->telemetry()->isSubscribed(this);
+        if (m_client->telemetry()->subscribe(this, selectedServos(), rate(), &why)) {
             if (fresh) {
                 // A new run starts a new time line (its samples come later, queued); a
                 // restart keeps the present one going.
@@ -211,15 +212,15 @@ bool MonitorPage::start(QString *error)
 void MonitorPage::stop()
 {
     stopRecording();
-    if (m_client && m_client->isMonitoring())
-        m_client->stopMonitor();
+    if (m_client)
+        m_client->telemetry()->unsubscribe(this);
     updateControls();
     updateStatusLine();
 }
 
 bool MonitorPage::isRunning() const
 {
-    return m_client && m_client->isMonitoring();
+    return m_client && m_client->telemetry()->isSubscribed(this);
 }
 
 bool MonitorPage::exportPng(const QString &path, QString *error)

@@ -65,8 +65,8 @@ public:
 
     bool exportPng(const QString &path, QString *error = nullptr);
 
-    // The slot telemetryReceived is connected to: samples of unticked servos are dropped, the
-    // rest go to the plot, the readouts and the recording.
+    // The slot the telemetry's samplesReceived is connected to: samples of unticked servos are
+    // dropped, the rest go to the plot, the readouts and the recording.
     void addSamples(const QVector<feetech::FeedbackSample> &samples);
     void updateReadouts(); // now rather than on the next tick
 

@@ -77,8 +77,8 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
                 m_recordings[i].currentOffset = qint32(offset.value_or(0));
             }
             QString error;
-            if (!m_client->startMonitor(m_indexes, feetech::kRecordingRateHz, &error,
-                                        feetech::kRecordingMissesBeforeLost)) {
+            if (!m_client->telemetry()->subscribe(this, m_indexes, feetech::kRecordingRateHz,
+                                                  &error, feetech::kRecordingMissesBeforeLost)) {
                 // Back to the choice: torque is off, so only the recording is to start again.
                 m_stage = Stage::Choosing;
                 m_torqueOff->setEnabled(true);
@@ -103,9 +103,9 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             emit writingFinished(allOk);
         }
     });
-    connect(m_client, &feetech::BusClient::telemetryReceived, this,
+    connect(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived, this,
             &CalibrationWizard::onTelemetry);
-    connect(m_client, &feetech::BusClient::telemetryStatsChanged, this,
+    connect(m_client->telemetry(), &feetech::TelemetryHub::statsChanged, this,
             &CalibrationWizard::onTelemetryStats);
     showPage(Page::Joints);
 }
@@ -355,8 +355,8 @@ void CalibrationWizard::recordAgain()
     if (page() != Page::Results || m_stage != Stage::Choosing)
         return;
     QString error;
-    if (!m_client->startMonitor(m_indexes, feetech::kRecordingRateHz, &error,
-                                feetech::kRecordingMissesBeforeLost))
+    if (!m_client->telemetry()->subscribe(this, m_indexes, feetech::kRecordingRateHz, &error,
+                                          feetech::kRecordingMissesBeforeLost))
         return fail(error);
     for (feetech::JointRecording &joint : m_recordings)
         joint.range = {};
@@ -413,8 +413,8 @@ void CalibrationWizard::chooseFileToSave()
 
 void CalibrationWizard::stopRecording()
 {
-    if (m_client->isMonitoring() && (m_stage == Stage::Recording || m_stage == Stage::Reading))
-        m_client->stopMonitor();
+    if (m_stage == Stage::Recording || m_stage == Stage::Reading)
+        m_client->telemetry()->unsubscribe(this);
 }
 
 void CalibrationWizard::reject()

@@ -29,7 +29,7 @@ class UnlockedNotice;
 namespace feetech {
 class BusClient;
 class OperationReply;
-}
+} // namespace feetech
 
 class FeetechWorkspace : public QWidget
 {

@@ -1,0 +1,191 @@
+// One telemetry stream for every subscriber: the union of their servos at the fastest rate.
+#include "telemetryhub.h"
+
+#include "busclient.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
+};
+
+bool sameServo(const feetech::ServoInfo &a, const feetech::ServoInfo &b)
+{
+    return a.id == b.id && a.baud == b.baud;
+}
+
+bool sameServos(const QVector<feetech::ServoInfo> &a, const QVector<feetech::ServoInfo> &b)
+{
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), sameServo);
+}
+
+} // namespace
+
+namespace feetech {
+
+TelemetryHub::TelemetryHub(BusClient *client)
+    : QObject(client)
+    , m_client(client)
+{
+    Session *session = client->session();
+    connect(session, &Session::telemetry, this, &TelemetryHub::onSamples);
+    connect(session, &Session::telemetryStats, this, &TelemetryHub::onStats);
+    // Samples belong to the servos as scanned: a new list starts without them.
+    connect(client, &BusClient::servosChanged, this, [this] { m_latest.clear(); });
+}
+
+bool TelemetryHub::subscribe(const QObject *subscriber, const QVector<int> &indexes, double rateHz,
+                             QString *error, int missesBeforeMissing)
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!m_client->isConnected())
+        return refuse(Tr::tr("The bus is not connected."));
+    if (indexes.isEmpty())
+        return refuse(Tr::tr("Choose at least one servo to monitor."));
+    if (rateHz < 0)
+        return refuse(Tr::tr("The rate cannot be negative."));
+    Subscription subscription {subscriber, {}, rateHz, std::max(1, missesBeforeMissing)};
+    for (const int index : indexes) {
+        if (index < 0 || index >= m_client->servoCount())
+            return refuse(Tr::tr("No servo is selected."));
+        const ServoInfo &info = m_client->servo(index).info;
+        if (!info.hasTable())
+            return refuse(Tr::tr("Servo %1 is of an unknown model: its feedback cannot be "
+                                 "decoded.")
+                              .arg(info.id));
+        subscription.servos.append(info);
+    }
+    const auto known = std::find_if(
+        m_subscriptions.begin(), m_subscriptions.end(),
+        [subscriber](const Subscription &each) { return each.subscriber == subscriber; });
+    if (known != m_subscriptions.end()) {
+        *known = subscription;
+    } else {
+        m_subscriptions.push_back(subscription);
+        connect(subscriber, &QObject::destroyed, this,
+                [this, subscriber] { unsubscribe(subscriber); });
+    }
+    update();
+    return true;
+}
+
+void TelemetryHub::unsubscribe(const QObject *subscriber)
+{
+    const auto known = std::find_if(
+        m_subscriptions.begin(), m_subscriptions.end(),
+        [subscriber](const Subscription &each) { return each.subscriber == subscriber; });
+    if (known == m_subscriptions.end())
+        return;
+    m_subscriptions.erase(known);
+    disconnect(subscriber, nullptr, this, nullptr);
+    update();
+}
+
+bool TelemetryHub::isSubscribed(const QObject *subscriber) const
+{
+    return std::any_of(
+        m_subscriptions.begin(), m_subscriptions.end(),
+        [subscriber](const Subscription &each) { return each.subscriber == subscriber; });
+}
+
+void TelemetryHub::update()
+{
+    if (m_subscriptions.empty()) {
+        stop();
+        return;
+    }
+    TelemetryOptions options;
+    options.rateHz = 0.0;
+    bool asFastAsPossible = false;
+    options.missesBeforeMissing = 1;
+    for (const Subscription &subscription : m_subscriptions) {
+        for (const ServoInfo &servo : subscription.servos) {
+            const auto same = [&servo](const ServoInfo &s) {
+                return sameServo(s, servo);
+            };
+            if (std::none_of(options.servos.begin(), options.servos.end(), same))
+                options.servos.append(servo);
+        }
+        // 0 asks for as fast as the bus allows: nothing is faster.
+        asFastAsPossible = asFastAsPossible || subscription.rateHz == 0.0;
+        options.rateHz = std::max(options.rateHz, subscription.rateHz);
+        options.missesBeforeMissing =
+            std::max(options.missesBeforeMissing, subscription.missesBeforeMissing);
+    }
+    if (asFastAsPossible)
+        options.rateHz = 0.0;
+    if (m_streaming && sameServos(options.servos, m_options.servos)
+        && options.rateHz == m_options.rateHz
+        && options.missesBeforeMissing == m_options.missesBeforeMissing)
+        return; // what streams already is what is asked
+    options.stream = ++m_stream;
+    m_options = options;
+    m_client->runInSession([options](Session &s) { s.startTelemetry(options); });
+    if (!m_streaming) {
+        m_streaming = true;
+        emit streamingChanged(true);
+    }
+}
+
+void TelemetryHub::stop()
+{
+    ++m_stream;
+    m_client->runInSession([](Session &s) { s.stopTelemetry(); });
+    if (m_streaming) {
+        m_streaming = false;
+        emit streamingChanged(false);
+    }
+}
+
+bool TelemetryHub::isStreamed(int index) const
+{
+    if (!m_streaming || index < 0 || index >= m_client->servoCount())
+        return false;
+    const ServoInfo &info = m_client->servo(index).info;
+    return std::any_of(m_options.servos.begin(), m_options.servos.end(),
+                       [&info](const ServoInfo &s) { return sameServo(s, info); });
+}
+
+std::optional<FeedbackSample> TelemetryHub::latestSample(int index) const
+{
+    if (index < 0 || index >= m_client->servoCount())
+        return std::nullopt;
+    const ServoInfo &info = m_client->servo(index).info;
+    const auto sample = m_latest.constFind({info.id, info.baud});
+    if (sample == m_latest.constEnd())
+        return std::nullopt;
+    return *sample;
+}
+
+void TelemetryHub::onSamples(const QVector<FeedbackSample> &samples, quint64 stream)
+{
+    if (!m_streaming || stream != m_stream)
+        return; // the last batch of a stream already stopped or replaced
+    for (const FeedbackSample &sample : samples)
+        m_latest.insert({sample.id, sample.baud}, sample);
+    emit samplesReceived(samples);
+}
+
+void TelemetryHub::onStats(const TelemetryStats &stats)
+{
+    if (stats.stream != m_stream)
+        return; // a stream replaced or stopped since
+    m_stats = stats;
+    emit statsChanged(stats);
+    if (!stats.running && m_streaming) { // stopped, or the link went down
+        m_streaming = false;
+        m_subscriptions.clear(); // what they asked for ended with it
+        emit streamingChanged(false);
+    }
+}
+
+} // namespace feetech
