@@ -7342,17 +7342,12 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Das Diagramm konnte nicht unter %1 gespeichert werden: %2.</translation>
     </message>
     <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
         <source>Drag across a time span to zoom in, right-click to zoom out, or turn the wheel; Reset zoom goes back to live data</source>
         <translation>Über eine Zeitspanne ziehen zum Vergrößern, Rechtsklick zum Verkleinern, oder das Mausrad drehen; Zoom zurücksetzen kehrt zu den Live-Daten zurück</translation>
     </message>
-    <message>
-        <source>Time (s)</source>
-        <translation>Zeit (s)</translation>
-    </message>
+</context>
+<context>
+    <name>TelemetryPlotPainter</name>
     <message>
         <source>ID %1</source>
         <translation>ID %1</translation>
@@ -7360,6 +7355,14 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>ID %1 · %2</source>
         <translation>ID %1 · %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
     </message>
 </context>
 <context>

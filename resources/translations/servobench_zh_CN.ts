@@ -7309,6 +7309,9 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <source>Could not save the plot to %1: %2.</source>
         <translation>无法将曲线保存到 %1：%2。</translation>
     </message>
+</context>
+<context>
+    <name>TelemetryPlotPainter</name>
     <message>
         <source>ID %1</source>
         <translation>ID %1</translation>
@@ -7319,7 +7322,7 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation>%1（%2）</translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>Time (s)</source>
