@@ -79,6 +79,101 @@
     </message>
 </context>
 <context>
+    <name>BenchCases</name>
+    <message>
+        <source>Cut the selected servo&apos;s power</source>
+        <translation>Strom des ausgewählten Servos trennen</translation>
+    </message>
+    <message>
+        <source>Power the selected servo again</source>
+        <translation>Ausgewähltes Servo wieder mit Strom versorgen</translation>
+    </message>
+    <message>
+        <source>Break the daisy chain after the selected servo</source>
+        <translation>Daisy-Chain nach dem ausgewählten Servo unterbrechen</translation>
+    </message>
+    <message>
+        <source>Mend the daisy chain</source>
+        <translation>Daisy-Chain reparieren</translation>
+    </message>
+    <message>
+        <source>Block the selected servo&apos;s horn</source>
+        <translation>Servohorn des ausgewählten Servos blockieren</translation>
+    </message>
+    <message>
+        <source>Free the selected servo&apos;s horn</source>
+        <translation>Servohorn des ausgewählten Servos freigeben</translation>
+    </message>
+    <message>
+        <source>Heat the selected servo (%1 °C/s)</source>
+        <translation>Ausgewähltes Servo erhitzen (%1 °C/s)</translation>
+    </message>
+    <message>
+        <source>Stop heating the selected servo</source>
+        <translation>Erhitzen des ausgewählten Servos beenden</translation>
+    </message>
+    <message>
+        <source>Latch an overload on the selected servo</source>
+        <translation>Überlastabschaltung am ausgewählten Servo auslösen</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
+        <translation>%1 V an den Bus legen (zu hoch für 7.4-V-Servos)</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too low)</source>
+        <translation>%1 V an den Bus legen (zu niedrig)</translation>
+    </message>
+    <message>
+        <source>Supply each servo its usual voltage</source>
+        <translation>Jedes Servo mit seiner üblichen Spannung versorgen</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has no power: it hears and answers nothing.</source>
+        <translation>Servo #%1 hat keinen Strom: Es hört nichts und antwortet nicht.</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has power again.</source>
+        <translation>Servo #%1 hat wieder Strom.</translation>
+    </message>
+    <message>
+        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
+        <translation>Die Daisy-Chain ist nach Servo #%1 unterbrochen: Die Servos dahinter haben weder Signal noch Strom.</translation>
+    </message>
+    <message>
+        <source>The daisy chain is whole again.</source>
+        <translation>Die Daisy-Chain ist wieder intakt.</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
+        <translation>Das Servohorn von Servo #%1 ist blockiert: Angesteuert steigt seine Last, und es bleibt stehen.</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is free.</source>
+        <translation>Das Servohorn von Servo #%1 ist frei.</translation>
+    </message>
+    <message>
+        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
+        <translation>Servo #%1 erwärmt sich stetig, bis es bei seiner Maximaltemperatur abschaltet.</translation>
+    </message>
+    <message>
+        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
+        <translation>Servo #%1 wird nicht mehr erhitzt: Es kühlt auf Raumtemperatur ab.</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
+        <translation>Die Überlastabschaltung von Servo #%1 ist eingerastet: Sein Drehmoment bleibt weg, bis der Bus aus- und eingeschaltet wird.</translation>
+    </message>
+    <message>
+        <source>The bus has a %1 V supply.</source>
+        <translation>Der Bus hat eine Versorgung von %1 V.</translation>
+    </message>
+    <message>
+        <source>Every servo has its usual supply again.</source>
+        <translation>Jedes Servo hat wieder seine übliche Versorgung.</translation>
+    </message>
+</context>
+<context>
     <name>BusDoctor</name>
     <message>
         <source>You may not open %1. Add yourself to the dialout group (sudo usermod -aG dialout $USER, then log out and back in), or give the adapter a udev rule that lets your account use it.</source>
@@ -7223,104 +7318,12 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Was auf einer echten Werkbank schiefgeht, abgespielt am ausgewählten Servo oder am ganzen Bus</translation>
     </message>
     <message>
-        <source>Cut the selected servo&apos;s power</source>
-        <translation>Strom des ausgewählten Servos trennen</translation>
-    </message>
-    <message>
-        <source>Power the selected servo again</source>
-        <translation>Ausgewähltes Servo wieder mit Strom versorgen</translation>
-    </message>
-    <message>
-        <source>Break the daisy chain after the selected servo</source>
-        <translation>Daisy-Chain nach dem ausgewählten Servo unterbrechen</translation>
-    </message>
-    <message>
-        <source>Mend the daisy chain</source>
-        <translation>Daisy-Chain reparieren</translation>
-    </message>
-    <message>
-        <source>Block the selected servo&apos;s horn</source>
-        <translation>Servohorn des ausgewählten Servos blockieren</translation>
-    </message>
-    <message>
-        <source>Free the selected servo&apos;s horn</source>
-        <translation>Servohorn des ausgewählten Servos freigeben</translation>
-    </message>
-    <message>
-        <source>Heat the selected servo (%1 °C/s)</source>
-        <translation>Ausgewähltes Servo erhitzen (%1 °C/s)</translation>
-    </message>
-    <message>
-        <source>Stop heating the selected servo</source>
-        <translation>Erhitzen des ausgewählten Servos beenden</translation>
-    </message>
-    <message>
-        <source>Latch an overload on the selected servo</source>
-        <translation>Überlastabschaltung am ausgewählten Servo auslösen</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
-        <translation>%1 V an den Bus legen (zu hoch für 7.4-V-Servos)</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too low)</source>
-        <translation>%1 V an den Bus legen (zu niedrig)</translation>
-    </message>
-    <message>
-        <source>Supply each servo its usual voltage</source>
-        <translation>Jedes Servo mit seiner üblichen Spannung versorgen</translation>
-    </message>
-    <message>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
         <source>Plays the chosen bench case now</source>
         <translation>Spielt das gewählte Werkbank-Szenario jetzt ab</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has no power: it hears and answers nothing.</source>
-        <translation>Servo #%1 hat keinen Strom: Es hört nichts und antwortet nicht.</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has power again.</source>
-        <translation>Servo #%1 hat wieder Strom.</translation>
-    </message>
-    <message>
-        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
-        <translation>Die Daisy-Chain ist nach Servo #%1 unterbrochen: Die Servos dahinter haben weder Signal noch Strom.</translation>
-    </message>
-    <message>
-        <source>The daisy chain is whole again.</source>
-        <translation>Die Daisy-Chain ist wieder intakt.</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
-        <translation>Das Servohorn von Servo #%1 ist blockiert: Angesteuert steigt seine Last, und es bleibt stehen.</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is free.</source>
-        <translation>Das Servohorn von Servo #%1 ist frei.</translation>
-    </message>
-    <message>
-        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
-        <translation>Servo #%1 erwärmt sich stetig, bis es bei seiner Maximaltemperatur abschaltet.</translation>
-    </message>
-    <message>
-        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
-        <translation>Servo #%1 wird nicht mehr erhitzt: Es kühlt auf Raumtemperatur ab.</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
-        <translation>Die Überlastabschaltung von Servo #%1 ist eingerastet: Sein Drehmoment bleibt weg, bis der Bus aus- und eingeschaltet wird.</translation>
-    </message>
-    <message>
-        <source>The bus has a %1 V supply.</source>
-        <translation>Der Bus hat eine Versorgung von %1 V.</translation>
-    </message>
-    <message>
-        <source>Every servo has its usual supply again.</source>
-        <translation>Jedes Servo hat wieder seine übliche Versorgung.</translation>
     </message>
 </context>
 <context>

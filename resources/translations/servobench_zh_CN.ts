@@ -78,6 +78,101 @@
     </message>
 </context>
 <context>
+    <name>BenchCases</name>
+    <message>
+        <source>Cut the selected servo&apos;s power</source>
+        <translation>切断所选舵机的电源</translation>
+    </message>
+    <message>
+        <source>Power the selected servo again</source>
+        <translation>给所选舵机重新供电</translation>
+    </message>
+    <message>
+        <source>Break the daisy chain after the selected servo</source>
+        <translation>在所选舵机之后断开菊花链</translation>
+    </message>
+    <message>
+        <source>Mend the daisy chain</source>
+        <translation>修复菊花链</translation>
+    </message>
+    <message>
+        <source>Block the selected servo&apos;s horn</source>
+        <translation>卡住所选舵机的舵盘</translation>
+    </message>
+    <message>
+        <source>Free the selected servo&apos;s horn</source>
+        <translation>释放所选舵机的舵盘</translation>
+    </message>
+    <message>
+        <source>Heat the selected servo (%1 °C/s)</source>
+        <translation>加热所选舵机（%1 °C/s）</translation>
+    </message>
+    <message>
+        <source>Stop heating the selected servo</source>
+        <translation>停止加热所选舵机</translation>
+    </message>
+    <message>
+        <source>Latch an overload on the selected servo</source>
+        <translation>在所选舵机上锁存过载</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
+        <translation>向总线供电 %1 V（对 7.4 V 舵机而言过高）</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too low)</source>
+        <translation>向总线供电 %1 V（过低）</translation>
+    </message>
+    <message>
+        <source>Supply each servo its usual voltage</source>
+        <translation>为每个舵机提供其常规电压</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has no power: it hears and answers nothing.</source>
+        <translation>舵机 #%1 没有电源：它既收不到也不应答任何内容。</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has power again.</source>
+        <translation>舵机 #%1 已重新通电。</translation>
+    </message>
+    <message>
+        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
+        <translation>菊花链在舵机 #%1 之后断开：其后的舵机既没有信号也没有电源。</translation>
+    </message>
+    <message>
+        <source>The daisy chain is whole again.</source>
+        <translation>菊花链已恢复完整。</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
+        <translation>舵机 #%1 的舵盘被卡住：驱动时负载升高，位置保持不动。</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is free.</source>
+        <translation>舵机 #%1 的舵盘已释放。</translation>
+    </message>
+    <message>
+        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
+        <translation>舵机 #%1 持续升温，直到在最高温度处触发保护。</translation>
+    </message>
+    <message>
+        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
+        <translation>舵机 #%1 不再被加热：它会逐渐冷却到室温。</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
+        <translation>舵机 #%1 的过载已锁存：在总线断电重启之前扭矩一直失效。</translation>
+    </message>
+    <message>
+        <source>The bus has a %1 V supply.</source>
+        <translation>总线电源为 %1 V。</translation>
+    </message>
+    <message>
+        <source>Every servo has its usual supply again.</source>
+        <translation>每个舵机都已恢复其常规电源。</translation>
+    </message>
+</context>
+<context>
     <name>BusDoctor</name>
     <message>
         <source>You may not open %1. Add yourself to the dialout group (sudo usermod -aG dialout $USER, then log out and back in), or give the adapter a udev rule that lets your account use it.</source>
@@ -7187,104 +7282,12 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>真实台架上会出现的问题，在所选舵机或整条总线上重现</translation>
     </message>
     <message>
-        <source>Cut the selected servo&apos;s power</source>
-        <translation>切断所选舵机的电源</translation>
-    </message>
-    <message>
-        <source>Power the selected servo again</source>
-        <translation>给所选舵机重新供电</translation>
-    </message>
-    <message>
-        <source>Break the daisy chain after the selected servo</source>
-        <translation>在所选舵机之后断开菊花链</translation>
-    </message>
-    <message>
-        <source>Mend the daisy chain</source>
-        <translation>修复菊花链</translation>
-    </message>
-    <message>
-        <source>Block the selected servo&apos;s horn</source>
-        <translation>卡住所选舵机的舵盘</translation>
-    </message>
-    <message>
-        <source>Free the selected servo&apos;s horn</source>
-        <translation>释放所选舵机的舵盘</translation>
-    </message>
-    <message>
-        <source>Heat the selected servo (%1 °C/s)</source>
-        <translation>加热所选舵机（%1 °C/s）</translation>
-    </message>
-    <message>
-        <source>Stop heating the selected servo</source>
-        <translation>停止加热所选舵机</translation>
-    </message>
-    <message>
-        <source>Latch an overload on the selected servo</source>
-        <translation>在所选舵机上锁存过载</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
-        <translation>向总线供电 %1 V（对 7.4 V 舵机而言过高）</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too low)</source>
-        <translation>向总线供电 %1 V（过低）</translation>
-    </message>
-    <message>
-        <source>Supply each servo its usual voltage</source>
-        <translation>为每个舵机提供其常规电压</translation>
-    </message>
-    <message>
         <source>Play</source>
         <translation>执行</translation>
     </message>
     <message>
         <source>Plays the chosen bench case now</source>
         <translation>立即执行所选的台架情形</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has no power: it hears and answers nothing.</source>
-        <translation>舵机 #%1 没有电源：它既收不到也不应答任何内容。</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has power again.</source>
-        <translation>舵机 #%1 已重新通电。</translation>
-    </message>
-    <message>
-        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
-        <translation>菊花链在舵机 #%1 之后断开：其后的舵机既没有信号也没有电源。</translation>
-    </message>
-    <message>
-        <source>The daisy chain is whole again.</source>
-        <translation>菊花链已恢复完整。</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
-        <translation>舵机 #%1 的舵盘被卡住：驱动时负载升高，位置保持不动。</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is free.</source>
-        <translation>舵机 #%1 的舵盘已释放。</translation>
-    </message>
-    <message>
-        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
-        <translation>舵机 #%1 持续升温，直到在最高温度处触发保护。</translation>
-    </message>
-    <message>
-        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
-        <translation>舵机 #%1 不再被加热：它会逐渐冷却到室温。</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
-        <translation>舵机 #%1 的过载已锁存：在总线断电重启之前扭矩一直失效。</translation>
-    </message>
-    <message>
-        <source>The bus has a %1 V supply.</source>
-        <translation>总线电源为 %1 V。</translation>
-    </message>
-    <message>
-        <source>Every servo has its usual supply again.</source>
-        <translation>每个舵机都已恢复其常规电源。</translation>
     </message>
 </context>
 <context>
