@@ -5144,6 +5144,36 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>PacketSequenceFiles</name>
+    <message>
+        <source>The history is empty: there is nothing to save.</source>
+        <translation>Der Verlauf ist leer: Es gibt nichts zu speichern.</translation>
+    </message>
+    <message>
+        <source>Save packet sequence</source>
+        <translation>Paketfolge speichern</translation>
+    </message>
+    <message>
+        <source>ServoBench packet sequences (*.json)</source>
+        <translation>ServoBench-Paketfolgen (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n frame(s).</source>
+        <translation>
+            <numerusform>%n Frame gespeichert.</numerusform>
+            <numerusform>%n Frames gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load packet sequence</source>
+        <translation>Paketfolge laden</translation>
+    </message>
+    <message>
+        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
+        <translation>In den Verlauf geladen: Wählen Sie einen Frame und „Erneut senden“, oder „Alle senden“.</translation>
+    </message>
+</context>
+<context>
     <name>PacketWindow</name>
     <message>
         <source>Packet window</source>
@@ -5407,33 +5437,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>loaded, not sent</source>
         <translation>geladen, nicht gesendet</translation>
-    </message>
-    <message>
-        <source>The history is empty: there is nothing to save.</source>
-        <translation>Der Verlauf ist leer: Es gibt nichts zu speichern.</translation>
-    </message>
-    <message>
-        <source>Save packet sequence</source>
-        <translation>Paketfolge speichern</translation>
-    </message>
-    <message>
-        <source>ServoBench packet sequences (*.json)</source>
-        <translation>ServoBench-Paketfolgen (*.json)</translation>
-    </message>
-    <message numerus="yes">
-        <source>Saved %n frame(s).</source>
-        <translation>
-            <numerusform>%n Frame gespeichert.</numerusform>
-            <numerusform>%n Frames gespeichert.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Load packet sequence</source>
-        <translation>Paketfolge laden</translation>
-    </message>
-    <message>
-        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
-        <translation>In den Verlauf geladen: Wählen Sie einen Frame und „Erneut senden“, oder „Alle senden“.</translation>
     </message>
 </context>
 <context>

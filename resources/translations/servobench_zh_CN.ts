@@ -5118,6 +5118,35 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>PacketSequenceFiles</name>
+    <message>
+        <source>The history is empty: there is nothing to save.</source>
+        <translation>历史为空：没有可保存的内容。</translation>
+    </message>
+    <message>
+        <source>Save packet sequence</source>
+        <translation>保存数据包序列</translation>
+    </message>
+    <message>
+        <source>ServoBench packet sequences (*.json)</source>
+        <translation>ServoBench 数据包序列 (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n frame(s).</source>
+        <translation>
+            <numerusform>已保存 %n 帧。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load packet sequence</source>
+        <translation>加载数据包序列</translation>
+    </message>
+    <message>
+        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
+        <translation>已加载到历史：选择一帧后点“重新发送”，或点“全部发送”。</translation>
+    </message>
+</context>
+<context>
     <name>PacketWindow</name>
     <message>
         <source>Packet window</source>
@@ -5380,32 +5409,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>loaded, not sent</source>
         <translation>已加载，未发送</translation>
-    </message>
-    <message>
-        <source>The history is empty: there is nothing to save.</source>
-        <translation>历史为空：没有可保存的内容。</translation>
-    </message>
-    <message>
-        <source>Save packet sequence</source>
-        <translation>保存数据包序列</translation>
-    </message>
-    <message>
-        <source>ServoBench packet sequences (*.json)</source>
-        <translation>ServoBench 数据包序列 (*.json)</translation>
-    </message>
-    <message numerus="yes">
-        <source>Saved %n frame(s).</source>
-        <translation>
-            <numerusform>已保存 %n 帧。</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Load packet sequence</source>
-        <translation>加载数据包序列</translation>
-    </message>
-    <message>
-        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
-        <translation>已加载到历史：选择一帧后点“重新发送”，或点“全部发送”。</translation>
     </message>
 </context>
 <context>
