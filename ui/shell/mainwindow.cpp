@@ -13,15 +13,18 @@
 #include "parametermodel.h"
 #include "ptkclient.h"
 #include "ptkworkspace.h"
+#include "recentfiles.h"
 #include "robotactions.h"
 #include "setupwizard.h"
 #include "shortcutsdialog.h"
 #include "simulatordock.h"
 #include "welcomepanel.h"
+#include "windowmemory.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
@@ -164,9 +167,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_rateTimer->start();
     updatePollRate();
 
-    m_defaultLayout = saveState();
-    m_defaultSize = size();
-    restoreRemembered();
+    m_memory = std::make_unique<WindowMemory>(*this, *m_connectionBar);
+    m_memory->restore();
 }
 
 ParameterPage *MainWindow::ptkPage() const
@@ -412,7 +414,7 @@ void MainWindow::connectRequested()
         showProblem(tr("Choose a serial port first."));
         return;
     }
-    rememberConnection();
+    m_memory->rememberConnection();
     const bool arm = port == ConnectionBar::kSimulatedArmPort;
     const bool feetechBus = arm || port == ConnectionBar::kSimulatedFeetechPort;
     if (feetechBus || port == ConnectionBar::kSimulatedPtkPort) {
@@ -594,6 +596,30 @@ void MainWindow::closeEvent(QCloseEvent *event)
             return;
         }
     }
-    rememberLayout();
+    m_memory->rememberLayout();
     event->accept();
+}
+
+void MainWindow::fillRecentProfiles(QMenu *menu)
+{
+    menu->clear();
+    const QStringList files = recentfiles::list(recentfiles::Kind::Profile);
+    for (const QString &path : files) {
+        menu->addAction(QDir::toNativeSeparators(path), this, [this, path] {
+            recentfiles::add(recentfiles::Kind::Profile, path);
+            if (m_feetechActive)
+                m_feetechWorkspace->loadProfile(path);
+            else
+                m_ptkWorkspace->loadProfile(path);
+        });
+    }
+    if (files.isEmpty())
+        menu->addAction(tr("No profile opened or saved yet"))->setEnabled(false);
+}
+
+void MainWindow::resetLayout()
+{
+    m_memory->resetLayout();
+    m_packetLog->show();
+    m_connectionBar->show();
 }

@@ -26,6 +26,7 @@ class QLabel;
 class QTimer;
 class SimulatorDock;
 class WelcomePanel;
+class WindowMemory;
 
 namespace ptk {
 class Client;
@@ -78,10 +79,6 @@ private:
     void showAbout();
     // Closes the window as Quit does and, once it is closed, starts ServoBench again.
     void restart();
-    // Its memory (mainwindowlayout.cpp): size and dock layout, the last connection's settings.
-    void restoreRemembered();
-    void rememberLayout();
-    void rememberConnection();
     void resetLayout();
     void fillRecentProfiles(QMenu *menu);
     void connectRequested();
@@ -135,6 +132,5 @@ private:
     // What the probe of the Auto connection heard; none for a protocol chosen by hand.
     std::optional<feetech::PortProbeReport> m_probe;
     WelcomePanel *m_welcome = nullptr;
-    QByteArray m_defaultLayout; // the docks as first built, for View > Reset layout
-    QSize m_defaultSize;
+    std::unique_ptr<WindowMemory> m_memory;
 };
