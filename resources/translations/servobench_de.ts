@@ -731,6 +731,45 @@
     </message>
 </context>
 <context>
+    <name>ConnectionController</name>
+    <message>
+        <source>Choose a serial port first.</source>
+        <translation>Wählen Sie zuerst einen seriellen Anschluss.</translation>
+    </message>
+    <message>
+        <source>The simulated servos could not start: %1</source>
+        <translation>Die simulierten Servos konnten nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>simulated SO-101 arm</source>
+        <translation>simulierter SO-101-Arm</translation>
+    </message>
+    <message>
+        <source>simulated Feetech bus</source>
+        <translation>simulierter Feetech-Bus</translation>
+    </message>
+    <message>
+        <source>simulated PTK servo</source>
+        <translation>simuliertes PTK-Servo</translation>
+    </message>
+    <message>
+        <source>Enter a baud rate.</source>
+        <translation>Geben Sie eine Baudrate ein.</translation>
+    </message>
+    <message>
+        <source>Auto-detection cancelled; nothing was connected.</source>
+        <translation>Automatische Erkennung abgebrochen; es wurde nichts verbunden.</translation>
+    </message>
+    <message>
+        <source>A PTK servo answers at 115,200 bps.</source>
+        <translation>Ein PTK-Servo antwortet mit 115.200 bps.</translation>
+    </message>
+    <message>
+        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
+        <translation>An %1 antwortet nichts: Das Diagnosefeld sagt, was zu prüfen ist.</translation>
+    </message>
+</context>
+<context>
     <name>ControlPage</name>
     <message>
         <source>× %1 %2</source>
@@ -4159,28 +4198,8 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Über ServoBench</translation>
     </message>
     <message>
-        <source>Choose a serial port first.</source>
-        <translation>Wählen Sie zuerst einen seriellen Anschluss.</translation>
-    </message>
-    <message>
-        <source>The simulated servos could not start: %1</source>
-        <translation>Die simulierten Servos konnten nicht starten: %1</translation>
-    </message>
-    <message>
         <source>Some changes have not been written to the servos. Quit anyway?</source>
         <translation>Einige Änderungen wurden nicht auf die Servos geschrieben. Trotzdem beenden?</translation>
-    </message>
-    <message>
-        <source>simulated PTK servo</source>
-        <translation>simuliertes PTK-Servo</translation>
-    </message>
-    <message>
-        <source>simulated Feetech bus</source>
-        <translation>simulierter Feetech-Bus</translation>
-    </message>
-    <message>
-        <source>Enter a baud rate.</source>
-        <translation>Geben Sie eine Baudrate ein.</translation>
     </message>
     <message>
         <source>Connecting to %1…</source>
@@ -4227,10 +4246,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>&lt;p&gt;&lt;b&gt;ServoBench %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Programmiert und überwacht PTK-RC-Servos und Feetech-Servos am seriellen Bus unter Linux, Windows und macOS.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2, läuft unter Qt %3.&lt;/p&gt;&lt;p&gt;Freie Software unter der GNU General Public License, Version 3 oder (nach Ihrer Wahl) jeder späteren Version; sie wird ohne jede Gewährleistung bereitgestellt.&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>simulated SO-101 arm</source>
-        <translation>simulierter SO-101-Arm</translation>
-    </message>
-    <message>
         <source>Looking for servos on %1…</source>
         <translation>Suche nach Servos an %1…</translation>
     </message>
@@ -4241,18 +4256,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Auto-detection</source>
         <translation>Automatische Erkennung</translation>
-    </message>
-    <message>
-        <source>Auto-detection cancelled; nothing was connected.</source>
-        <translation>Automatische Erkennung abgebrochen; es wurde nichts verbunden.</translation>
-    </message>
-    <message>
-        <source>A PTK servo answers at 115,200 bps.</source>
-        <translation>Ein PTK-Servo antwortet mit 115.200 bps.</translation>
-    </message>
-    <message>
-        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
-        <translation>An %1 antwortet nichts: Das Diagnosefeld sagt, was zu prüfen ist.</translation>
     </message>
     <message>
         <source>&amp;Reset layout</source>

@@ -729,6 +729,45 @@
     </message>
 </context>
 <context>
+    <name>ConnectionController</name>
+    <message>
+        <source>Choose a serial port first.</source>
+        <translation>请先选择一个串口。</translation>
+    </message>
+    <message>
+        <source>The simulated servos could not start: %1</source>
+        <translation>模拟舵机无法启动：%1</translation>
+    </message>
+    <message>
+        <source>simulated SO-101 arm</source>
+        <translation>模拟 SO-101 机械臂</translation>
+    </message>
+    <message>
+        <source>simulated Feetech bus</source>
+        <translation>模拟 Feetech 总线</translation>
+    </message>
+    <message>
+        <source>simulated PTK servo</source>
+        <translation>模拟 PTK 舵机</translation>
+    </message>
+    <message>
+        <source>Enter a baud rate.</source>
+        <translation>请输入波特率。</translation>
+    </message>
+    <message>
+        <source>Auto-detection cancelled; nothing was connected.</source>
+        <translation>自动检测已取消；未建立任何连接。</translation>
+    </message>
+    <message>
+        <source>A PTK servo answers at 115,200 bps.</source>
+        <translation>PTK 舵机在 115,200 bps 下应答。</translation>
+    </message>
+    <message>
+        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
+        <translation>%1 上没有任何应答：“诊断”面板会说明需要检查什么。</translation>
+    </message>
+</context>
+<context>
     <name>ControlPage</name>
     <message>
         <source>Servo ID %1</source>
@@ -4154,30 +4193,6 @@ An ID in use is refused.</source>
         <translation>&lt;p&gt;&lt;b&gt;ServoBench %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;在 Linux、Windows 和 macOS 上编程和监视 PTK RC 舵机与 Feetech 串行总线舵机。&lt;/p&gt;&lt;p&gt;使用 Qt %2 构建，运行于 Qt %3。&lt;/p&gt;&lt;p&gt;本软件是自由软件，依据 GNU 通用公共许可证第 3 版或（由您选择）任何更高版本发布；不提供任何担保。&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>Choose a serial port first.</source>
-        <translation>请先选择一个串口。</translation>
-    </message>
-    <message>
-        <source>The simulated servos could not start: %1</source>
-        <translation>模拟舵机无法启动：%1</translation>
-    </message>
-    <message>
-        <source>simulated SO-101 arm</source>
-        <translation>模拟 SO-101 机械臂</translation>
-    </message>
-    <message>
-        <source>simulated Feetech bus</source>
-        <translation>模拟 Feetech 总线</translation>
-    </message>
-    <message>
-        <source>simulated PTK servo</source>
-        <translation>模拟 PTK 舵机</translation>
-    </message>
-    <message>
-        <source>Enter a baud rate.</source>
-        <translation>请输入波特率。</translation>
-    </message>
-    <message>
         <source>Connecting to %1…</source>
         <translation>正在连接到 %1…</translation>
     </message>
@@ -4224,18 +4239,6 @@ An ID in use is refused.</source>
     <message>
         <source>Auto-detection</source>
         <translation>自动检测</translation>
-    </message>
-    <message>
-        <source>Auto-detection cancelled; nothing was connected.</source>
-        <translation>自动检测已取消；未建立任何连接。</translation>
-    </message>
-    <message>
-        <source>A PTK servo answers at 115,200 bps.</source>
-        <translation>PTK 舵机在 115,200 bps 下应答。</translation>
-    </message>
-    <message>
-        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
-        <translation>%1 上没有任何应答：“诊断”面板会说明需要检查什么。</translation>
     </message>
     <message>
         <source>&amp;Reset layout</source>
