@@ -6,6 +6,7 @@
 #include "busclient.h"
 #include "busdoctor.h"
 #include "connectionbar.h"
+#include "connectioncontroller.h"
 #include "doctorpanel.h"
 #include "feetechworkspace.h"
 #include "mainwindow.h"
@@ -82,7 +83,7 @@ private slots:
         openWindow({{1, QStringLiteral("STS3215"), k1M}, {4, QStringLiteral("STS3215"), k500k}});
         QSignalSpy scanned(m_window->feetechClient(), &feetech::BusClient::scanFinished);
         m_window->connectToPort(m_simulator->linkPath());
-        QVERIFY(m_window->isDetecting());
+        QVERIFY(m_window->connection()->isDetecting());
         QTRY_COMPARE_WITH_TIMEOUT(scanned.size(), 1, 60000);
         QCOMPARE(currentWorkspace(), m_window->feetechWorkspace());
         QCOMPARE(m_window->feetechWorkspace()->scanOptions().bauds, (QVector<qint32> {k1M, k500k}));
@@ -118,12 +119,12 @@ private slots:
     {
         openWindow({{1, QStringLiteral("STS3215"), k1M}});
         m_window->connectToPort(m_simulator->linkPath());
-        QVERIFY(m_window->isDetecting());
+        QVERIFY(m_window->connection()->isDetecting());
         auto *button =
             m_window->connectionBar()->findChild<QPushButton *>(QStringLiteral("connectButton"));
         QCOMPARE(button->text(), QStringLiteral("Disconnect"));
         QTest::mouseClick(button, Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(!m_window->isDetecting(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_window->connection()->isDetecting(), 30000);
         QCOMPARE(button->text(), QStringLiteral("Connect"));
         QVERIFY(!m_window->feetechClient()->isConnected());
         QVERIFY(!m_window->ptkClient()->isConnected());
@@ -136,7 +137,7 @@ private slots:
         QVERIFY(testsupport::onSimulatedBus(
             *m_simulator, [](sim::VirtualFeetechBus &bus) { return bus.setPowered(0, false); }));
         m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY_WITH_TIMEOUT(!m_window->isDetecting(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_window->connection()->isDetecting(), 30000);
         QTRY_VERIFY(m_window->doctorPanel()->isVisible());
         QCOMPARE(codesOf(m_window->doctorPanel()->findings()),
                  QStringList {feetech::doctorcodes::kNoBytes});

@@ -154,9 +154,9 @@ private slots:
 
         const QString path = writeTestFile(QStringLiteral("sequence.json"), {});
         QString error;
-        QVERIFY2(m_window->saveSequence(path, &error), qPrintable(error));
+        QVERIFY2(m_window->sequenceFiles()->save(path, &error), qPrintable(error));
         PacketWindow other(m_feetech.get(), m_ptk.get());
-        QVERIFY2(other.loadSequence(path, &error), qPrintable(error));
+        QVERIFY2(other.sequenceFiles()->load(path, &error), qPrintable(error));
         QCOMPARE(other.historyFrames(), m_window->historyFrames());
         QCOMPARE(other.historyFrames().first().replyId, std::optional<quint8>(2));
     }
@@ -168,9 +168,9 @@ private slots:
             QStringLiteral("wrong.json"),
             R"({"format":"servobench-packets","version":1,"frames":[{"protocol":"feetech","baud":1000000,"hex":"FF FF 01 02 01 00"}]})");
         QString error;
-        QVERIFY(!m_window->loadSequence(garbled, &error));
+        QVERIFY(!m_window->sequenceFiles()->load(garbled, &error));
         QVERIFY(error.contains(QStringLiteral("garbled.json")));
-        QVERIFY(!m_window->loadSequence(wrongFrame, &error));
+        QVERIFY(!m_window->sequenceFiles()->load(wrongFrame, &error));
         QVERIFY2(error.contains(QStringLiteral("frame 1")), qPrintable(error));
         QCOMPARE(m_window->history()->rowCount(), 0);
     }

@@ -146,7 +146,7 @@ private slots:
 
     void everyBenchCaseChangesTheBusAndTheTableSaysSo()
     {
-        using Case = SimulatorDock::BenchCase;
+        using Case = BenchCases::Case;
         m_dock->selectServo(1);
         QVERIFY(m_dock->playBenchCase(Case::CutPower));
         QVERIFY(!onBus([](sim::VirtualFeetechBus &bus) { return bus.isPowered(1); }));
@@ -170,7 +170,7 @@ private slots:
                      return std::make_tuple(servo.externalLoad(), servo.temperatureRise(),
                                             servo.overloadLatched());
                  }),
-                 std::make_tuple(1000, SimulatorDock::kHeatPerSecond, true));
+                 std::make_tuple(1000, BenchCases::kHeatPerSecond, true));
         const QString bench = m_dock->table()->item(0, 6)->text();
         QVERIFY2(bench.contains(QLatin1String("horn blocked"))
                      && bench.contains(QLatin1String("overload latched"))
@@ -186,10 +186,10 @@ private slots:
 
         QVERIFY(m_dock->playBenchCase(Case::SupplyTooHigh));
         QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.servo(1).supplyVoltage(); }),
-                 SimulatorDock::kHighSupplyVolts);
+                 BenchCases::kHighSupplyVolts);
         QVERIFY(m_dock->playBenchCase(Case::SupplyTooLow));
         QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.servo(1).supplyVoltage(); }),
-                 SimulatorDock::kLowSupplyVolts);
+                 BenchCases::kLowSupplyVolts);
         QVERIFY(m_dock->playBenchCase(Case::SupplyNormal));
         QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return bus.servo(1).supplyVoltage(); }),
                  sim::VirtualFeetechServo::kDefaultSupplyVolts);
@@ -198,7 +198,7 @@ private slots:
     void aServoCaseNeedsASelectedServo()
     {
         m_dock->table()->clearSelection();
-        QVERIFY(!m_dock->playBenchCase(SimulatorDock::BenchCase::CutPower));
+        QVERIFY(!m_dock->playBenchCase(BenchCases::Case::CutPower));
         QVERIFY2(m_dock->note().contains(QLatin1String("Select a servo")),
                  qPrintable(m_dock->note()));
     }

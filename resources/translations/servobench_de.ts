@@ -79,6 +79,101 @@
     </message>
 </context>
 <context>
+    <name>BenchCases</name>
+    <message>
+        <source>Cut the selected servo&apos;s power</source>
+        <translation>Strom des ausgewählten Servos trennen</translation>
+    </message>
+    <message>
+        <source>Power the selected servo again</source>
+        <translation>Ausgewähltes Servo wieder mit Strom versorgen</translation>
+    </message>
+    <message>
+        <source>Break the daisy chain after the selected servo</source>
+        <translation>Daisy-Chain nach dem ausgewählten Servo unterbrechen</translation>
+    </message>
+    <message>
+        <source>Mend the daisy chain</source>
+        <translation>Daisy-Chain reparieren</translation>
+    </message>
+    <message>
+        <source>Block the selected servo&apos;s horn</source>
+        <translation>Servohorn des ausgewählten Servos blockieren</translation>
+    </message>
+    <message>
+        <source>Free the selected servo&apos;s horn</source>
+        <translation>Servohorn des ausgewählten Servos freigeben</translation>
+    </message>
+    <message>
+        <source>Heat the selected servo (%1 °C/s)</source>
+        <translation>Ausgewähltes Servo erhitzen (%1 °C/s)</translation>
+    </message>
+    <message>
+        <source>Stop heating the selected servo</source>
+        <translation>Erhitzen des ausgewählten Servos beenden</translation>
+    </message>
+    <message>
+        <source>Latch an overload on the selected servo</source>
+        <translation>Überlastabschaltung am ausgewählten Servo auslösen</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
+        <translation>%1 V an den Bus legen (zu hoch für 7.4-V-Servos)</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too low)</source>
+        <translation>%1 V an den Bus legen (zu niedrig)</translation>
+    </message>
+    <message>
+        <source>Supply each servo its usual voltage</source>
+        <translation>Jedes Servo mit seiner üblichen Spannung versorgen</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has no power: it hears and answers nothing.</source>
+        <translation>Servo #%1 hat keinen Strom: Es hört nichts und antwortet nicht.</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has power again.</source>
+        <translation>Servo #%1 hat wieder Strom.</translation>
+    </message>
+    <message>
+        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
+        <translation>Die Daisy-Chain ist nach Servo #%1 unterbrochen: Die Servos dahinter haben weder Signal noch Strom.</translation>
+    </message>
+    <message>
+        <source>The daisy chain is whole again.</source>
+        <translation>Die Daisy-Chain ist wieder intakt.</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
+        <translation>Das Servohorn von Servo #%1 ist blockiert: Angesteuert steigt seine Last, und es bleibt stehen.</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is free.</source>
+        <translation>Das Servohorn von Servo #%1 ist frei.</translation>
+    </message>
+    <message>
+        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
+        <translation>Servo #%1 erwärmt sich stetig, bis es bei seiner Maximaltemperatur abschaltet.</translation>
+    </message>
+    <message>
+        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
+        <translation>Servo #%1 wird nicht mehr erhitzt: Es kühlt auf Raumtemperatur ab.</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
+        <translation>Die Überlastabschaltung von Servo #%1 ist eingerastet: Sein Drehmoment bleibt weg, bis der Bus aus- und eingeschaltet wird.</translation>
+    </message>
+    <message>
+        <source>The bus has a %1 V supply.</source>
+        <translation>Der Bus hat eine Versorgung von %1 V.</translation>
+    </message>
+    <message>
+        <source>Every servo has its usual supply again.</source>
+        <translation>Jedes Servo hat wieder seine übliche Versorgung.</translation>
+    </message>
+</context>
+<context>
     <name>BusDoctor</name>
     <message>
         <source>You may not open %1. Add yourself to the dialout group (sudo usermod -aG dialout $USER, then log out and back in), or give the adapter a udev rule that lets your account use it.</source>
@@ -633,6 +728,45 @@
     <message>
         <source>Simulated SO-101 arm</source>
         <translation>Simulierter SO-101-Arm</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionController</name>
+    <message>
+        <source>Choose a serial port first.</source>
+        <translation>Wählen Sie zuerst einen seriellen Anschluss.</translation>
+    </message>
+    <message>
+        <source>The simulated servos could not start: %1</source>
+        <translation>Die simulierten Servos konnten nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>simulated SO-101 arm</source>
+        <translation>simulierter SO-101-Arm</translation>
+    </message>
+    <message>
+        <source>simulated Feetech bus</source>
+        <translation>simulierter Feetech-Bus</translation>
+    </message>
+    <message>
+        <source>simulated PTK servo</source>
+        <translation>simuliertes PTK-Servo</translation>
+    </message>
+    <message>
+        <source>Enter a baud rate.</source>
+        <translation>Geben Sie eine Baudrate ein.</translation>
+    </message>
+    <message>
+        <source>Auto-detection cancelled; nothing was connected.</source>
+        <translation>Automatische Erkennung abgebrochen; es wurde nichts verbunden.</translation>
+    </message>
+    <message>
+        <source>A PTK servo answers at 115,200 bps.</source>
+        <translation>Ein PTK-Servo antwortet mit 115.200 bps.</translation>
+    </message>
+    <message>
+        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
+        <translation>An %1 antwortet nichts: Das Diagnosefeld sagt, was zu prüfen ist.</translation>
     </message>
 </context>
 <context>
@@ -4064,28 +4198,8 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Über ServoBench</translation>
     </message>
     <message>
-        <source>Choose a serial port first.</source>
-        <translation>Wählen Sie zuerst einen seriellen Anschluss.</translation>
-    </message>
-    <message>
-        <source>The simulated servos could not start: %1</source>
-        <translation>Die simulierten Servos konnten nicht starten: %1</translation>
-    </message>
-    <message>
         <source>Some changes have not been written to the servos. Quit anyway?</source>
         <translation>Einige Änderungen wurden nicht auf die Servos geschrieben. Trotzdem beenden?</translation>
-    </message>
-    <message>
-        <source>simulated PTK servo</source>
-        <translation>simuliertes PTK-Servo</translation>
-    </message>
-    <message>
-        <source>simulated Feetech bus</source>
-        <translation>simulierter Feetech-Bus</translation>
-    </message>
-    <message>
-        <source>Enter a baud rate.</source>
-        <translation>Geben Sie eine Baudrate ein.</translation>
     </message>
     <message>
         <source>Connecting to %1…</source>
@@ -4132,10 +4246,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>&lt;p&gt;&lt;b&gt;ServoBench %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Programmiert und überwacht PTK-RC-Servos und Feetech-Servos am seriellen Bus unter Linux, Windows und macOS.&lt;/p&gt;&lt;p&gt;Erstellt mit Qt %2, läuft unter Qt %3.&lt;/p&gt;&lt;p&gt;Freie Software unter der GNU General Public License, Version 3 oder (nach Ihrer Wahl) jeder späteren Version; sie wird ohne jede Gewährleistung bereitgestellt.&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>simulated SO-101 arm</source>
-        <translation>simulierter SO-101-Arm</translation>
-    </message>
-    <message>
         <source>Looking for servos on %1…</source>
         <translation>Suche nach Servos an %1…</translation>
     </message>
@@ -4146,18 +4256,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Auto-detection</source>
         <translation>Automatische Erkennung</translation>
-    </message>
-    <message>
-        <source>Auto-detection cancelled; nothing was connected.</source>
-        <translation>Automatische Erkennung abgebrochen; es wurde nichts verbunden.</translation>
-    </message>
-    <message>
-        <source>A PTK servo answers at 115,200 bps.</source>
-        <translation>Ein PTK-Servo antwortet mit 115.200 bps.</translation>
-    </message>
-    <message>
-        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
-        <translation>An %1 antwortet nichts: Das Diagnosefeld sagt, was zu prüfen ist.</translation>
     </message>
     <message>
         <source>&amp;Reset layout</source>
@@ -5049,6 +5147,36 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>PacketSequenceFiles</name>
+    <message>
+        <source>The history is empty: there is nothing to save.</source>
+        <translation>Der Verlauf ist leer: Es gibt nichts zu speichern.</translation>
+    </message>
+    <message>
+        <source>Save packet sequence</source>
+        <translation>Paketfolge speichern</translation>
+    </message>
+    <message>
+        <source>ServoBench packet sequences (*.json)</source>
+        <translation>ServoBench-Paketfolgen (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n frame(s).</source>
+        <translation>
+            <numerusform>%n Frame gespeichert.</numerusform>
+            <numerusform>%n Frames gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load packet sequence</source>
+        <translation>Paketfolge laden</translation>
+    </message>
+    <message>
+        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
+        <translation>In den Verlauf geladen: Wählen Sie einen Frame und „Erneut senden“, oder „Alle senden“.</translation>
+    </message>
+</context>
+<context>
     <name>PacketWindow</name>
     <message>
         <source>Packet window</source>
@@ -5312,33 +5440,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>loaded, not sent</source>
         <translation>geladen, nicht gesendet</translation>
-    </message>
-    <message>
-        <source>The history is empty: there is nothing to save.</source>
-        <translation>Der Verlauf ist leer: Es gibt nichts zu speichern.</translation>
-    </message>
-    <message>
-        <source>Save packet sequence</source>
-        <translation>Paketfolge speichern</translation>
-    </message>
-    <message>
-        <source>ServoBench packet sequences (*.json)</source>
-        <translation>ServoBench-Paketfolgen (*.json)</translation>
-    </message>
-    <message numerus="yes">
-        <source>Saved %n frame(s).</source>
-        <translation>
-            <numerusform>%n Frame gespeichert.</numerusform>
-            <numerusform>%n Frames gespeichert.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Load packet sequence</source>
-        <translation>Paketfolge laden</translation>
-    </message>
-    <message>
-        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
-        <translation>In den Verlauf geladen: Wählen Sie einen Frame und „Erneut senden“, oder „Alle senden“.</translation>
     </message>
 </context>
 <context>
@@ -7223,104 +7324,12 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Was auf einer echten Werkbank schiefgeht, abgespielt am ausgewählten Servo oder am ganzen Bus</translation>
     </message>
     <message>
-        <source>Cut the selected servo&apos;s power</source>
-        <translation>Strom des ausgewählten Servos trennen</translation>
-    </message>
-    <message>
-        <source>Power the selected servo again</source>
-        <translation>Ausgewähltes Servo wieder mit Strom versorgen</translation>
-    </message>
-    <message>
-        <source>Break the daisy chain after the selected servo</source>
-        <translation>Daisy-Chain nach dem ausgewählten Servo unterbrechen</translation>
-    </message>
-    <message>
-        <source>Mend the daisy chain</source>
-        <translation>Daisy-Chain reparieren</translation>
-    </message>
-    <message>
-        <source>Block the selected servo&apos;s horn</source>
-        <translation>Servohorn des ausgewählten Servos blockieren</translation>
-    </message>
-    <message>
-        <source>Free the selected servo&apos;s horn</source>
-        <translation>Servohorn des ausgewählten Servos freigeben</translation>
-    </message>
-    <message>
-        <source>Heat the selected servo (%1 °C/s)</source>
-        <translation>Ausgewähltes Servo erhitzen (%1 °C/s)</translation>
-    </message>
-    <message>
-        <source>Stop heating the selected servo</source>
-        <translation>Erhitzen des ausgewählten Servos beenden</translation>
-    </message>
-    <message>
-        <source>Latch an overload on the selected servo</source>
-        <translation>Überlastabschaltung am ausgewählten Servo auslösen</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
-        <translation>%1 V an den Bus legen (zu hoch für 7.4-V-Servos)</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too low)</source>
-        <translation>%1 V an den Bus legen (zu niedrig)</translation>
-    </message>
-    <message>
-        <source>Supply each servo its usual voltage</source>
-        <translation>Jedes Servo mit seiner üblichen Spannung versorgen</translation>
-    </message>
-    <message>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
         <source>Plays the chosen bench case now</source>
         <translation>Spielt das gewählte Werkbank-Szenario jetzt ab</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has no power: it hears and answers nothing.</source>
-        <translation>Servo #%1 hat keinen Strom: Es hört nichts und antwortet nicht.</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has power again.</source>
-        <translation>Servo #%1 hat wieder Strom.</translation>
-    </message>
-    <message>
-        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
-        <translation>Die Daisy-Chain ist nach Servo #%1 unterbrochen: Die Servos dahinter haben weder Signal noch Strom.</translation>
-    </message>
-    <message>
-        <source>The daisy chain is whole again.</source>
-        <translation>Die Daisy-Chain ist wieder intakt.</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
-        <translation>Das Servohorn von Servo #%1 ist blockiert: Angesteuert steigt seine Last, und es bleibt stehen.</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is free.</source>
-        <translation>Das Servohorn von Servo #%1 ist frei.</translation>
-    </message>
-    <message>
-        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
-        <translation>Servo #%1 erwärmt sich stetig, bis es bei seiner Maximaltemperatur abschaltet.</translation>
-    </message>
-    <message>
-        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
-        <translation>Servo #%1 wird nicht mehr erhitzt: Es kühlt auf Raumtemperatur ab.</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
-        <translation>Die Überlastabschaltung von Servo #%1 ist eingerastet: Sein Drehmoment bleibt weg, bis der Bus aus- und eingeschaltet wird.</translation>
-    </message>
-    <message>
-        <source>The bus has a %1 V supply.</source>
-        <translation>Der Bus hat eine Versorgung von %1 V.</translation>
-    </message>
-    <message>
-        <source>Every servo has its usual supply again.</source>
-        <translation>Jedes Servo hat wieder seine übliche Versorgung.</translation>
     </message>
 </context>
 <context>
@@ -7342,17 +7351,12 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Das Diagramm konnte nicht unter %1 gespeichert werden: %2.</translation>
     </message>
     <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
         <source>Drag across a time span to zoom in, right-click to zoom out, or turn the wheel; Reset zoom goes back to live data</source>
         <translation>Über eine Zeitspanne ziehen zum Vergrößern, Rechtsklick zum Verkleinern, oder das Mausrad drehen; Zoom zurücksetzen kehrt zu den Live-Daten zurück</translation>
     </message>
-    <message>
-        <source>Time (s)</source>
-        <translation>Zeit (s)</translation>
-    </message>
+</context>
+<context>
+    <name>TelemetryPlotPainter</name>
     <message>
         <source>ID %1</source>
         <translation>ID %1</translation>
@@ -7360,6 +7364,14 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>ID %1 · %2</source>
         <translation>ID %1 · %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
     </message>
 </context>
 <context>

@@ -78,6 +78,101 @@
     </message>
 </context>
 <context>
+    <name>BenchCases</name>
+    <message>
+        <source>Cut the selected servo&apos;s power</source>
+        <translation>切断所选舵机的电源</translation>
+    </message>
+    <message>
+        <source>Power the selected servo again</source>
+        <translation>给所选舵机重新供电</translation>
+    </message>
+    <message>
+        <source>Break the daisy chain after the selected servo</source>
+        <translation>在所选舵机之后断开菊花链</translation>
+    </message>
+    <message>
+        <source>Mend the daisy chain</source>
+        <translation>修复菊花链</translation>
+    </message>
+    <message>
+        <source>Block the selected servo&apos;s horn</source>
+        <translation>卡住所选舵机的舵盘</translation>
+    </message>
+    <message>
+        <source>Free the selected servo&apos;s horn</source>
+        <translation>释放所选舵机的舵盘</translation>
+    </message>
+    <message>
+        <source>Heat the selected servo (%1 °C/s)</source>
+        <translation>加热所选舵机（%1 °C/s）</translation>
+    </message>
+    <message>
+        <source>Stop heating the selected servo</source>
+        <translation>停止加热所选舵机</translation>
+    </message>
+    <message>
+        <source>Latch an overload on the selected servo</source>
+        <translation>在所选舵机上锁存过载</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
+        <translation>向总线供电 %1 V（对 7.4 V 舵机而言过高）</translation>
+    </message>
+    <message>
+        <source>Supply %1 V to the bus (too low)</source>
+        <translation>向总线供电 %1 V（过低）</translation>
+    </message>
+    <message>
+        <source>Supply each servo its usual voltage</source>
+        <translation>为每个舵机提供其常规电压</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has no power: it hears and answers nothing.</source>
+        <translation>舵机 #%1 没有电源：它既收不到也不应答任何内容。</translation>
+    </message>
+    <message>
+        <source>Servo #%1 has power again.</source>
+        <translation>舵机 #%1 已重新通电。</translation>
+    </message>
+    <message>
+        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
+        <translation>菊花链在舵机 #%1 之后断开：其后的舵机既没有信号也没有电源。</translation>
+    </message>
+    <message>
+        <source>The daisy chain is whole again.</source>
+        <translation>菊花链已恢复完整。</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
+        <translation>舵机 #%1 的舵盘被卡住：驱动时负载升高，位置保持不动。</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s horn is free.</source>
+        <translation>舵机 #%1 的舵盘已释放。</translation>
+    </message>
+    <message>
+        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
+        <translation>舵机 #%1 持续升温，直到在最高温度处触发保护。</translation>
+    </message>
+    <message>
+        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
+        <translation>舵机 #%1 不再被加热：它会逐渐冷却到室温。</translation>
+    </message>
+    <message>
+        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
+        <translation>舵机 #%1 的过载已锁存：在总线断电重启之前扭矩一直失效。</translation>
+    </message>
+    <message>
+        <source>The bus has a %1 V supply.</source>
+        <translation>总线电源为 %1 V。</translation>
+    </message>
+    <message>
+        <source>Every servo has its usual supply again.</source>
+        <translation>每个舵机都已恢复其常规电源。</translation>
+    </message>
+</context>
+<context>
     <name>BusDoctor</name>
     <message>
         <source>You may not open %1. Add yourself to the dialout group (sudo usermod -aG dialout $USER, then log out and back in), or give the adapter a udev rule that lets your account use it.</source>
@@ -631,6 +726,45 @@
     <message>
         <source>Simulated SO-101 arm</source>
         <translation>模拟 SO-101 机械臂</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionController</name>
+    <message>
+        <source>Choose a serial port first.</source>
+        <translation>请先选择一个串口。</translation>
+    </message>
+    <message>
+        <source>The simulated servos could not start: %1</source>
+        <translation>模拟舵机无法启动：%1</translation>
+    </message>
+    <message>
+        <source>simulated SO-101 arm</source>
+        <translation>模拟 SO-101 机械臂</translation>
+    </message>
+    <message>
+        <source>simulated Feetech bus</source>
+        <translation>模拟 Feetech 总线</translation>
+    </message>
+    <message>
+        <source>simulated PTK servo</source>
+        <translation>模拟 PTK 舵机</translation>
+    </message>
+    <message>
+        <source>Enter a baud rate.</source>
+        <translation>请输入波特率。</translation>
+    </message>
+    <message>
+        <source>Auto-detection cancelled; nothing was connected.</source>
+        <translation>自动检测已取消；未建立任何连接。</translation>
+    </message>
+    <message>
+        <source>A PTK servo answers at 115,200 bps.</source>
+        <translation>PTK 舵机在 115,200 bps 下应答。</translation>
+    </message>
+    <message>
+        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
+        <translation>%1 上没有任何应答：“诊断”面板会说明需要检查什么。</translation>
     </message>
 </context>
 <context>
@@ -4059,30 +4193,6 @@ An ID in use is refused.</source>
         <translation>&lt;p&gt;&lt;b&gt;ServoBench %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;在 Linux、Windows 和 macOS 上编程和监视 PTK RC 舵机与 Feetech 串行总线舵机。&lt;/p&gt;&lt;p&gt;使用 Qt %2 构建，运行于 Qt %3。&lt;/p&gt;&lt;p&gt;本软件是自由软件，依据 GNU 通用公共许可证第 3 版或（由您选择）任何更高版本发布；不提供任何担保。&lt;/p&gt;</translation>
     </message>
     <message>
-        <source>Choose a serial port first.</source>
-        <translation>请先选择一个串口。</translation>
-    </message>
-    <message>
-        <source>The simulated servos could not start: %1</source>
-        <translation>模拟舵机无法启动：%1</translation>
-    </message>
-    <message>
-        <source>simulated SO-101 arm</source>
-        <translation>模拟 SO-101 机械臂</translation>
-    </message>
-    <message>
-        <source>simulated Feetech bus</source>
-        <translation>模拟 Feetech 总线</translation>
-    </message>
-    <message>
-        <source>simulated PTK servo</source>
-        <translation>模拟 PTK 舵机</translation>
-    </message>
-    <message>
-        <source>Enter a baud rate.</source>
-        <translation>请输入波特率。</translation>
-    </message>
-    <message>
         <source>Connecting to %1…</source>
         <translation>正在连接到 %1…</translation>
     </message>
@@ -4129,18 +4239,6 @@ An ID in use is refused.</source>
     <message>
         <source>Auto-detection</source>
         <translation>自动检测</translation>
-    </message>
-    <message>
-        <source>Auto-detection cancelled; nothing was connected.</source>
-        <translation>自动检测已取消；未建立任何连接。</translation>
-    </message>
-    <message>
-        <source>A PTK servo answers at 115,200 bps.</source>
-        <translation>PTK 舵机在 115,200 bps 下应答。</translation>
-    </message>
-    <message>
-        <source>Nothing answers on %1: the Doctor panel says what to check.</source>
-        <translation>%1 上没有任何应答：“诊断”面板会说明需要检查什么。</translation>
     </message>
     <message>
         <source>&amp;Reset layout</source>
@@ -5023,6 +5121,35 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>PacketSequenceFiles</name>
+    <message>
+        <source>The history is empty: there is nothing to save.</source>
+        <translation>历史为空：没有可保存的内容。</translation>
+    </message>
+    <message>
+        <source>Save packet sequence</source>
+        <translation>保存数据包序列</translation>
+    </message>
+    <message>
+        <source>ServoBench packet sequences (*.json)</source>
+        <translation>ServoBench 数据包序列 (*.json)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n frame(s).</source>
+        <translation>
+            <numerusform>已保存 %n 帧。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load packet sequence</source>
+        <translation>加载数据包序列</translation>
+    </message>
+    <message>
+        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
+        <translation>已加载到历史：选择一帧后点“重新发送”，或点“全部发送”。</translation>
+    </message>
+</context>
+<context>
     <name>PacketWindow</name>
     <message>
         <source>Packet window</source>
@@ -5285,32 +5412,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>loaded, not sent</source>
         <translation>已加载，未发送</translation>
-    </message>
-    <message>
-        <source>The history is empty: there is nothing to save.</source>
-        <translation>历史为空：没有可保存的内容。</translation>
-    </message>
-    <message>
-        <source>Save packet sequence</source>
-        <translation>保存数据包序列</translation>
-    </message>
-    <message>
-        <source>ServoBench packet sequences (*.json)</source>
-        <translation>ServoBench 数据包序列 (*.json)</translation>
-    </message>
-    <message numerus="yes">
-        <source>Saved %n frame(s).</source>
-        <translation>
-            <numerusform>已保存 %n 帧。</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Load packet sequence</source>
-        <translation>加载数据包序列</translation>
-    </message>
-    <message>
-        <source>Loaded into the history: select a frame and Resend, or Send all.</source>
-        <translation>已加载到历史：选择一帧后点“重新发送”，或点“全部发送”。</translation>
     </message>
 </context>
 <context>
@@ -7187,104 +7288,12 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>真实台架上会出现的问题，在所选舵机或整条总线上重现</translation>
     </message>
     <message>
-        <source>Cut the selected servo&apos;s power</source>
-        <translation>切断所选舵机的电源</translation>
-    </message>
-    <message>
-        <source>Power the selected servo again</source>
-        <translation>给所选舵机重新供电</translation>
-    </message>
-    <message>
-        <source>Break the daisy chain after the selected servo</source>
-        <translation>在所选舵机之后断开菊花链</translation>
-    </message>
-    <message>
-        <source>Mend the daisy chain</source>
-        <translation>修复菊花链</translation>
-    </message>
-    <message>
-        <source>Block the selected servo&apos;s horn</source>
-        <translation>卡住所选舵机的舵盘</translation>
-    </message>
-    <message>
-        <source>Free the selected servo&apos;s horn</source>
-        <translation>释放所选舵机的舵盘</translation>
-    </message>
-    <message>
-        <source>Heat the selected servo (%1 °C/s)</source>
-        <translation>加热所选舵机（%1 °C/s）</translation>
-    </message>
-    <message>
-        <source>Stop heating the selected servo</source>
-        <translation>停止加热所选舵机</translation>
-    </message>
-    <message>
-        <source>Latch an overload on the selected servo</source>
-        <translation>在所选舵机上锁存过载</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too high for 7.4 V servos)</source>
-        <translation>向总线供电 %1 V（对 7.4 V 舵机而言过高）</translation>
-    </message>
-    <message>
-        <source>Supply %1 V to the bus (too low)</source>
-        <translation>向总线供电 %1 V（过低）</translation>
-    </message>
-    <message>
-        <source>Supply each servo its usual voltage</source>
-        <translation>为每个舵机提供其常规电压</translation>
-    </message>
-    <message>
         <source>Play</source>
         <translation>执行</translation>
     </message>
     <message>
         <source>Plays the chosen bench case now</source>
         <translation>立即执行所选的台架情形</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has no power: it hears and answers nothing.</source>
-        <translation>舵机 #%1 没有电源：它既收不到也不应答任何内容。</translation>
-    </message>
-    <message>
-        <source>Servo #%1 has power again.</source>
-        <translation>舵机 #%1 已重新通电。</translation>
-    </message>
-    <message>
-        <source>The daisy chain is broken after servo #%1: the servos after it have neither signal nor power.</source>
-        <translation>菊花链在舵机 #%1 之后断开：其后的舵机既没有信号也没有电源。</translation>
-    </message>
-    <message>
-        <source>The daisy chain is whole again.</source>
-        <translation>菊花链已恢复完整。</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is blocked: driven, its load rises and it stays put.</source>
-        <translation>舵机 #%1 的舵盘被卡住：驱动时负载升高，位置保持不动。</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s horn is free.</source>
-        <translation>舵机 #%1 的舵盘已释放。</translation>
-    </message>
-    <message>
-        <source>Servo #%1 warms steadily until it trips at its maximum temperature.</source>
-        <translation>舵机 #%1 持续升温，直到在最高温度处触发保护。</translation>
-    </message>
-    <message>
-        <source>Servo #%1 is no longer heated: it cools toward the room&apos;s temperature.</source>
-        <translation>舵机 #%1 不再被加热：它会逐渐冷却到室温。</translation>
-    </message>
-    <message>
-        <source>Servo #%1&apos;s overload is latched: its torque is gone until the bus is power-cycled.</source>
-        <translation>舵机 #%1 的过载已锁存：在总线断电重启之前扭矩一直失效。</translation>
-    </message>
-    <message>
-        <source>The bus has a %1 V supply.</source>
-        <translation>总线电源为 %1 V。</translation>
-    </message>
-    <message>
-        <source>Every servo has its usual supply again.</source>
-        <translation>每个舵机都已恢复其常规电源。</translation>
     </message>
 </context>
 <context>
@@ -7309,6 +7318,9 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <source>Could not save the plot to %1: %2.</source>
         <translation>无法将曲线保存到 %1：%2。</translation>
     </message>
+</context>
+<context>
+    <name>TelemetryPlotPainter</name>
     <message>
         <source>ID %1</source>
         <translation>ID %1</translation>
@@ -7319,7 +7331,7 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation>%1（%2）</translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>Time (s)</source>

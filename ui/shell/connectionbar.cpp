@@ -16,9 +16,12 @@ constexpr int kPortRefreshMs = 1000;
 
 } // namespace
 
-const QString ConnectionBar::kSimulatedPtkPort = QStringLiteral("simulated:ptk");
-const QString ConnectionBar::kSimulatedFeetechPort = QStringLiteral("simulated:feetech");
-const QString ConnectionBar::kSimulatedArmPort = QStringLiteral("simulated:so101");
+const QString ConnectionBar::kSimulatedPtkPort =
+    QLatin1String(ConnectionController::kSimulatedPtkPort);
+const QString ConnectionBar::kSimulatedFeetechPort =
+    QLatin1String(ConnectionController::kSimulatedFeetechPort);
+const QString ConnectionBar::kSimulatedArmPort =
+    QLatin1String(ConnectionController::kSimulatedArmPort);
 
 ConnectionBar::ConnectionBar(QWidget *parent)
     : QToolBar(tr("Connection"), parent)
@@ -36,10 +39,8 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_port->setToolTip(tr("The serial port of the USB programmer, or a simulated servo"));
     addWidget(m_port);
     connect(m_port, &QComboBox::activated, this, [this] {
-        if (port() == kSimulatedPtkPort)
-            setProtocol(Protocol::Ptk);
-        else if (port() == kSimulatedFeetechPort || port() == kSimulatedArmPort)
-            setProtocol(Protocol::Feetech);
+        if (const auto spoken = ConnectionController::simulatedProtocol(port()))
+            setProtocol(*spoken);
     });
 
     addSeparator();

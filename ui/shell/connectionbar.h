@@ -1,6 +1,7 @@
 // The connection bar: port (refreshed on hot-plug), baud, protocol, echo and Connect/Disconnect.
 #pragma once
 
+#include "connectioncontroller.h"
 #include "requestengine.h"
 
 #include <QToolBar>
@@ -19,8 +20,8 @@ public:
     static const QString kSimulatedFeetechPort;
     static const QString kSimulatedArmPort; // an SO-101 arm's six STS3215, set up
 
-    // Auto: ServoBench probes the port and opens the workspace of what answers.
-    enum class Protocol { Ptk, Feetech, Auto };
+    // The bar offers what the connection controller connects with.
+    using Protocol = ConnectionController::Protocol;
 
     explicit ConnectionBar(QWidget *parent = nullptr);
 

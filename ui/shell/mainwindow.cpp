@@ -1,10 +1,12 @@
-// ServoBench's main window: the connection, the two workspaces, the packet log and the status bar.
+// ServoBench's main window: the connection bar and what the connection controller reports, the
+// two workspaces, the Doctor panel, the packet log and the status bar.
 #include "mainwindow.h"
 
 #include "busclient.h"
 #include "calibrationfiles.h"
 #include "connectionbar.h"
-#include "demoservos.h"
+#include "connectioncontroller.h"
+#include "doctorpanel.h"
 #include "feetechworkspace.h"
 #include "languagemenu.h"
 #include "packetlogdock.h"
@@ -13,20 +15,24 @@
 #include "parametermodel.h"
 #include "ptkclient.h"
 #include "ptkworkspace.h"
+#include "recentfiles.h"
 #include "robotactions.h"
 #include "setupwizard.h"
 #include "shortcutsdialog.h"
 #include "simulatordock.h"
 #include "welcomepanel.h"
+#include "windowmemory.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProcess>
+#include <QProgressDialog>
 #include <QScreen>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -40,6 +46,7 @@ constexpr int kStatusMessageMs = 8000;
 constexpr int kLogStripHeight = 110; // the packet log at first: a few rows
 // The guard's news stays longer: it says what was done to a servo.
 constexpr int kGuardMessageMs = 20000;
+constexpr int kDoctorMessageMs = 8000;
 
 QString stateColour(seriallink::ConnectionState state)
 {
@@ -75,7 +82,7 @@ MainWindow::MainWindow(QWidget *parent)
     addToolBar(Qt::TopToolBarArea, m_connectionBar);
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectRequested);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this,
-            &MainWindow::disconnectRequested);
+            [this] { m_connection->disconnectFrom(); });
 
     auto *central = new QWidget(this);
     auto *layout = new QVBoxLayout(central);
@@ -101,7 +108,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_pages->setCurrentWidget(m_welcome);
     connect(m_welcome, &WelcomePanel::connectRequested, this, [this](const QString &port) {
         // The page stays while Auto probes a port (nothing is open yet): one thing at a time.
-        if (isDetecting()) {
+        if (m_connection->isDetecting()) {
             showProblem(tr("Wait until the port being probed answers, or Disconnect."));
             return;
         }
@@ -111,7 +118,7 @@ MainWindow::MainWindow(QWidget *parent)
     setCentralWidget(central);
     connect(m_connectionBar, &ConnectionBar::protocolChanged, this,
             [this](ConnectionBar::Protocol protocol) {
-                showProtocol(protocol == ConnectionBar::Protocol::Feetech);
+                m_connection->setFeetechActive(protocol == ConnectionBar::Protocol::Feetech);
             });
     connect(m_ptkWorkspace, &PtkWorkspace::problem, this, &MainWindow::showProblem);
     connect(m_ptkWorkspace, &PtkWorkspace::actionStarted, m_problem, &QWidget::hide);
@@ -130,6 +137,9 @@ MainWindow::MainWindow(QWidget *parent)
 
     createMenus();
     createDoctor();
+    // After the workspaces and the Doctor panel: they hear of a finished scan first.
+    m_connection = std::make_unique<ConnectionController>(m_ptk.get(), m_feetech.get());
+    followConnection();
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
             [this] { updateTorqueOffAction(); });
     // Whatever page moves the servos, the guard's warnings and actions show here.
@@ -164,9 +174,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_rateTimer->start();
     updatePollRate();
 
-    m_defaultLayout = saveState();
-    m_defaultSize = size();
-    restoreRemembered();
+    m_memory = std::make_unique<WindowMemory>(*this, *m_connectionBar);
+    m_memory->restore();
 }
 
 ParameterPage *MainWindow::ptkPage() const
@@ -218,7 +227,7 @@ void MainWindow::createMenus()
     scan->setObjectName(QStringLiteral("scanAction"));
     scan->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
     connect(scan, &QAction::triggered, this, [this] {
-        if (!m_feetechActive
+        if (!m_connection->isFeetechActive()
             && m_ptk->status().state != seriallink::ConnectionState::Disconnected) {
             showProblem(tr("Disconnect from the PTK servo before scanning a Feetech bus."));
             return;
@@ -247,7 +256,7 @@ void MainWindow::createMenus()
     m_allTorqueOff->setToolTip(tr("Switch the torque of every servo on the Feetech bus off"));
     m_allTorqueOff->setEnabled(false);
     connect(m_allTorqueOff, &QAction::triggered, this, [this] {
-        if (!m_feetechActive || !m_feetech->isConnected())
+        if (!m_connection->isFeetechActive() || !m_feetech->isConnected())
             return;
         statusBar()->showMessage(tr("Torque off: sent to every servo…"));
         m_feetech->allTorqueOff();
@@ -332,7 +341,7 @@ void MainWindow::startFeetechDemo()
     m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
     m_connectionBar->setPort(ConnectionBar::kSimulatedFeetechPort);
     connectRequested();
-    scanOnceConnected();
+    m_connection->scanOnceConnected();
 }
 
 void MainWindow::startArmDemo()
@@ -340,29 +349,19 @@ void MainWindow::startArmDemo()
     m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
     m_connectionBar->setPort(ConnectionBar::kSimulatedArmPort);
     connectRequested();
-    scanOnceConnected();
+    m_connection->scanOnceConnected();
 }
 
-void MainWindow::scanOnceConnected(const feetech::ScanOptions &options)
+void MainWindow::showSimulator(sim::SimulatorThread *simulator)
 {
-    // Scan as soon as the port is open, so the tree fills by itself.
-    auto *once = new QObject(this);
-    connect(m_feetech.get(), &feetech::BusClient::statusChanged, once,
-            [this, once, options](const seriallink::ConnectionStatus &status) {
-                if (status.state == seriallink::ConnectionState::Disconnected) {
-                    once->deleteLater(); // the demo never connected: no scan later
-                    return;
-                }
-                if (status.state != seriallink::ConnectionState::Connected)
-                    return;
-                m_feetechWorkspace->startScan(options);
-                once->deleteLater();
-            });
-}
-
-void MainWindow::showSimulatorDock(bool arm)
-{
-    sim::SimulatorThread *simulator = arm ? m_demo->armSimulator() : m_demo->feetechSimulator();
+    if (!simulator) {
+        if (m_simulatorDock) {
+            m_simulatorDock->setSimulator(nullptr);
+            m_simulatorDock->hide();
+            m_simulatorDock->toggleViewAction()->setEnabled(false);
+        }
+        return;
+    }
     if (!m_simulatorDock) {
         m_simulatorDock = new SimulatorDock(this);
         addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
@@ -381,7 +380,6 @@ void MainWindow::showSimulatorDock(bool arm)
 
 void MainWindow::showProtocol(bool feetech)
 {
-    m_feetechActive = feetech;
     // The welcome page stays while nothing is open; the workspace shows once a port opens.
     if (m_pages->currentWidget() != m_welcome)
         m_pages->setCurrentWidget(feetech ? static_cast<QWidget *>(m_feetechWorkspace)
@@ -394,7 +392,7 @@ void MainWindow::showProtocol(bool feetech)
 
 void MainWindow::updateTorqueOffAction()
 {
-    m_allTorqueOff->setEnabled(m_feetechActive && m_feetech->isConnected());
+    m_allTorqueOff->setEnabled(m_connection->isFeetechActive() && m_feetech->isConnected());
 }
 
 void MainWindow::connectToPort(const QString &port)
@@ -406,92 +404,43 @@ void MainWindow::connectToPort(const QString &port)
 void MainWindow::connectRequested()
 {
     m_problem->hide();
-    QString port = m_connectionBar->port();
-    m_portShown = port;
-    if (port.isEmpty()) {
-        showProblem(tr("Choose a serial port first."));
-        return;
+    const QString port = m_connectionBar->port();
+    if (!port.isEmpty()) {
+        m_memory->rememberConnection();
+        // A simulated servo speaks one protocol: the bar shows it, at its usual rate.
+        if (const auto spoken = ConnectionController::simulatedProtocol(port))
+            m_connectionBar->setProtocol(*spoken);
     }
-    rememberConnection();
-    const bool arm = port == ConnectionBar::kSimulatedArmPort;
-    const bool feetechBus = arm || port == ConnectionBar::kSimulatedFeetechPort;
-    if (feetechBus || port == ConnectionBar::kSimulatedPtkPort) {
-        m_connectionBar->setProtocol(feetechBus ? ConnectionBar::Protocol::Feetech
-                                                : ConnectionBar::Protocol::Ptk);
-        if (!m_demo)
-            m_demo = std::make_unique<sim::DemoServos>();
-        QString error;
-        port = arm       ? m_demo->armPort(&error)
-            : feetechBus ? m_demo->feetechPort(&error)
-                         : m_demo->ptkPort(&error);
-        if (port.isEmpty()) {
-            showProblem(tr("The simulated servos could not start: %1").arg(error));
-            return;
-        }
-        m_portShown = arm ? tr("simulated SO-101 arm")
-            : feetechBus  ? tr("simulated Feetech bus")
-                          : tr("simulated PTK servo");
-    }
-    // The Simulator dock goes with a simulated Feetech bus; a PTK servo has nothing to plug.
-    if (feetechBus) {
-        showSimulatorDock(arm);
-    } else if (m_simulatorDock) {
-        m_simulatorDock->setSimulator(nullptr);
-        m_simulatorDock->hide();
-        m_simulatorDock->toggleViewAction()->setEnabled(false);
-    }
-    m_portPath = port;
-    m_probe.reset();
-    if (m_connectionBar->protocol() == ConnectionBar::Protocol::Auto) {
-        detectAndConnect(port);
-        return;
-    }
-    const qint32 baud = m_connectionBar->baud();
-    if (baud <= 0) {
-        showProblem(tr("Enter a baud rate."));
-        return;
-    }
-    m_connectionBar->setSessionActive(true);
-    if (m_connectionBar->protocol() == ConnectionBar::Protocol::Feetech) {
-        m_feetechWorkspace->setPortName(m_portShown);
-        m_feetech->connectTo(port, baud, m_connectionBar->echoMode());
-    } else {
-        m_ptk->connectTo(port, baud, m_connectionBar->echoMode());
-    }
-}
-
-void MainWindow::disconnectRequested()
-{
-    if (m_probeThread) {
-        cancelDetection();
-        return;
-    }
-    if (m_feetechActive)
-        m_feetech->disconnectFrom();
-    else
-        m_ptk->disconnectFrom();
+    ConnectionController::Request request;
+    request.port = port;
+    request.protocol = m_connectionBar->protocol();
+    request.baud = m_connectionBar->baud();
+    request.echo = m_connectionBar->echoMode();
+    m_connection->connectTo(request);
 }
 
 void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
 {
     using seriallink::ConnectionState;
+    const QString portShown = m_connection->portShown();
+    const bool feetechActive = m_connection->isFeetechActive();
     QString text;
     switch (status.state) {
     case ConnectionState::Disconnected:
         text = tr("Not connected");
         break;
     case ConnectionState::Connecting:
-        text = tr("Connecting to %1…").arg(m_portShown);
+        text = tr("Connecting to %1…").arg(portShown);
         break;
     case ConnectionState::Connected:
-        text = m_feetechActive ? tr("Open: %1").arg(m_portShown)
-                               : tr("Connected: %1 at %2 baud").arg(m_portShown).arg(status.baud);
+        text = feetechActive ? tr("Open: %1").arg(portShown)
+                             : tr("Connected: %1 at %2 baud").arg(portShown).arg(status.baud);
         break;
     case ConnectionState::NoReply:
-        text = tr("No reply on %1").arg(m_portShown);
+        text = tr("No reply on %1").arg(portShown);
         break;
     case ConnectionState::Lost:
-        text = tr("Disconnected: %1 went away, waiting for it to return").arg(m_portShown);
+        text = tr("Disconnected: %1 went away, waiting for it to return").arg(portShown);
         break;
     }
     m_connectionState->setText(text);
@@ -505,8 +454,8 @@ void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
     if (nothingOpen)
         m_pages->setCurrentWidget(m_welcome);
     else if (m_pages->currentWidget() == m_welcome)
-        m_pages->setCurrentWidget(m_feetechActive ? static_cast<QWidget *>(m_feetechWorkspace)
-                                                  : static_cast<QWidget *>(m_ptkWorkspace));
+        m_pages->setCurrentWidget(feetechActive ? static_cast<QWidget *>(m_feetechWorkspace)
+                                                : static_cast<QWidget *>(m_ptkWorkspace));
     // One line of explanation in the banner; never a dialog, so an unplugged cable cannot
     // bury the user in message boxes.
     if (status.state == ConnectionState::Connected || status.state == ConnectionState::Connecting)
@@ -544,7 +493,7 @@ void MainWindow::showProblem(const QString &message)
 
 void MainWindow::chooseProfileToSave()
 {
-    if (m_feetechActive) {
+    if (m_connection->isFeetechActive()) {
         m_feetechWorkspace->chooseProfileToSave();
         return;
     }
@@ -558,7 +507,7 @@ bool MainWindow::saveProfile(const QString &path)
 
 void MainWindow::chooseProfileToLoad()
 {
-    if (m_feetechActive) {
+    if (m_connection->isFeetechActive()) {
         m_feetechWorkspace->chooseProfileToLoad();
         return;
     }
@@ -594,6 +543,113 @@ void MainWindow::closeEvent(QCloseEvent *event)
             return;
         }
     }
-    rememberLayout();
+    m_memory->rememberLayout();
     event->accept();
+}
+
+void MainWindow::followConnection()
+{
+    ConnectionController *connection = m_connection.get();
+    connect(connection, &ConnectionController::problem, this, &MainWindow::showProblem);
+    connect(connection, &ConnectionController::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    connect(connection, &ConnectionController::sessionActiveChanged, m_connectionBar,
+            &ConnectionBar::setSessionActive);
+    connect(connection, &ConnectionController::detected, m_connectionBar,
+            &ConnectionBar::showDetected);
+    connect(connection, &ConnectionController::feetechActiveChanged, this,
+            &MainWindow::showProtocol);
+    connect(connection, &ConnectionController::simulatorChanged, this, &MainWindow::showSimulator);
+    connect(connection, &ConnectionController::feetechPortNamed, m_feetechWorkspace,
+            &FeetechWorkspace::setPortName);
+    connect(connection, &ConnectionController::scanWanted, m_feetechWorkspace,
+            &FeetechWorkspace::startScan);
+    connect(connection, &ConnectionController::detectionStarted, this, &MainWindow::showDetection);
+    connect(connection, &ConnectionController::detectionFinished, this, &MainWindow::endDetection);
+
+    connection->setExpectedServos([this](const QString &port) { return m_doctor->expected(port); });
+    connection->setDoctorShown([this] { return m_doctor->isVisible(); });
+    connection->setLastScanOptions([this] { return m_feetechWorkspace->scanOptions(); });
+    connect(connection, &ConnectionController::doctorChecking, m_doctor,
+            &DoctorPanel::showChecking);
+    connect(connection, &ConnectionController::doctorFindings, m_doctor,
+            &DoctorPanel::showFindings);
+    connect(connection, &ConnectionController::doctorWanted, this, &MainWindow::openDoctor);
+    connect(m_doctor, &DoctorPanel::rescanRequested, connection,
+            &ConnectionController::rescanForDoctor);
+}
+
+void MainWindow::createDoctor()
+{
+    m_doctor = new DoctorPanel(m_feetech.get(), this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_doctor);
+    m_doctor->hide(); // a tab beside the packet log once it first opens
+    m_viewMenu->addAction(m_doctor->toggleViewAction());
+    connect(m_doctor, &DoctorPanel::problem, this, &MainWindow::showProblem);
+    connect(m_doctor, &DoctorPanel::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, kDoctorMessageMs); });
+}
+
+void MainWindow::openDoctor()
+{
+    if (!tabifiedDockWidgets(m_packetLog).contains(m_doctor))
+        tabifyDockWidget(m_packetLog, m_doctor); // the pages above keep their height
+    m_doctor->show();
+    m_doctor->raise();
+}
+
+void MainWindow::showDetection(const QString &port)
+{
+    m_connectionState->setText(tr("Looking for servos on %1…").arg(port));
+    m_probeProgress = new QProgressDialog(tr("Looking for servos on %1…").arg(port), tr("Cancel"),
+                                          0, feetech::PortProbe::stepCount(), this);
+    m_probeProgress->setObjectName(QStringLiteral("probeProgress"));
+    m_probeProgress->setWindowTitle(tr("Auto-detection"));
+    // Not modal: the window stays usable (and its Disconnect stops the probe too).
+    m_probeProgress->setWindowModality(Qt::NonModal);
+    m_probeProgress->setMinimumDuration(0);
+    m_probeProgress->setAutoClose(false);
+    m_probeProgress->setAutoReset(false);
+    m_probeProgress->setValue(0);
+    connect(m_probeProgress, &QProgressDialog::canceled, m_connection.get(),
+            &ConnectionController::cancelDetection);
+    connect(m_connection->portProbe(), &feetech::PortProbe::progress, m_probeProgress,
+            [this](int done, int, const QString &step) {
+                m_probeProgress->setValue(done);
+                if (!step.isEmpty())
+                    m_probeProgress->setLabelText(step);
+            });
+}
+
+void MainWindow::endDetection()
+{
+    if (m_probeProgress) {
+        m_probeProgress->deleteLater();
+        m_probeProgress = nullptr;
+    }
+    m_connectionState->setText(tr("Not connected"));
+}
+
+void MainWindow::fillRecentProfiles(QMenu *menu)
+{
+    menu->clear();
+    const QStringList files = recentfiles::list(recentfiles::Kind::Profile);
+    for (const QString &path : files) {
+        menu->addAction(QDir::toNativeSeparators(path), this, [this, path] {
+            recentfiles::add(recentfiles::Kind::Profile, path);
+            if (m_connection->isFeetechActive())
+                m_feetechWorkspace->loadProfile(path);
+            else
+                m_ptkWorkspace->loadProfile(path);
+        });
+    }
+    if (files.isEmpty())
+        menu->addAction(tr("No profile opened or saved yet"))->setEnabled(false);
+}
+
+void MainWindow::resetLayout()
+{
+    m_memory->resetLayout();
+    m_packetLog->show();
+    m_connectionBar->show();
 }

@@ -1,18 +1,15 @@
-// ServoBench's main window: connection bar, the PTK and Feetech workspaces, the packet log and
-// the status bar.
+// ServoBench's main window: connection bar, the PTK and Feetech workspaces, the packet log, the
+// Doctor panel and the status bar.
 #pragma once
 
-#include "bustypes.h"
 #include "linktypes.h"
-#include "portprobe.h"
-#include "sessionthread.h"
 
 #include <QMainWindow>
 
 #include <memory>
-#include <optional>
 
 class ConnectionBar;
+class ConnectionController;
 class DoctorPanel;
 class QProgressDialog;
 class FeetechWorkspace;
@@ -26,16 +23,16 @@ class QLabel;
 class QTimer;
 class SimulatorDock;
 class WelcomePanel;
+class WindowMemory;
 
 namespace ptk {
 class Client;
 }
 namespace feetech {
 class BusClient;
-class DoctorCheck;
-} // namespace feetech
+}
 namespace sim {
-class DemoServos;
+class SimulatorThread;
 }
 
 class MainWindow : public QMainWindow
@@ -64,7 +61,8 @@ public:
     // Null until a simulated Feetech bus or arm was connected to.
     SimulatorDock *simulatorDock() const { return m_simulatorDock; }
     DoctorPanel *doctorPanel() const { return m_doctor; }
-    bool isDetecting() const { return m_probeThread != nullptr; }
+    // What decides how to connect: the port and protocol, Auto's probe, the demo, the doctor.
+    ConnectionController *connection() const { return m_connection.get(); }
 
     // The PTK workspace's, for the command line and tests.
     void loadProfile(const QString &path);
@@ -75,17 +73,15 @@ protected:
 
 private:
     void createMenus();
+    void createDoctor();
+    // The window shows what the connection controller reports.
+    void followConnection();
     void showAbout();
     // Closes the window as Quit does and, once it is closed, starts ServoBench again.
     void restart();
-    // Its memory (mainwindowlayout.cpp): size and dock layout, the last connection's settings.
-    void restoreRemembered();
-    void rememberLayout();
-    void rememberConnection();
     void resetLayout();
     void fillRecentProfiles(QMenu *menu);
     void connectRequested();
-    void disconnectRequested();
     void onStatusChanged(const seriallink::ConnectionStatus &status);
     void onCountersChanged(const seriallink::LinkCounters &counters);
     void chooseProfileToSave();
@@ -94,21 +90,15 @@ private:
     void showProtocol(bool feetech);
     void updateTorqueOffAction(); // enabled while a Feetech bus is connected
     void updatePollRate();
-    void scanOnceConnected(const feetech::ScanOptions &options = {});
-    // Auto (mainwindowdoctor.cpp): probe the port in a worker thread, then open the workspace
-    // of what answered at the rate and echo it found, and scan the Feetech rates that answered.
-    void detectAndConnect(const QString &port);
-    void cancelDetection();
-    void onProbeFinished(const feetech::PortProbeReport &report);
-    // The doctor: after a scan that came back short (or while the panel is open), each servo
-    // is read and the findings listed in the Doctor panel, which opens by itself.
-    void createDoctor();
-    void onFeetechScanFinished(bool completed);
-    void rescanForDoctor();
+    // Auto's probe runs: its progress in a dialog whose Cancel stops it.
+    void showDetection(const QString &port);
+    void endDetection();
     void openDoctor();
-    void showSimulatorDock(bool arm); // the demo's bus or arm; hidden for anything else
+    // The demo's bus or arm in the Simulator dock; the dock is hidden for anything else (null).
+    void showSimulator(sim::SimulatorThread *simulator);
 
-    std::unique_ptr<sim::DemoServos> m_demo;
+    // Before the clients: it stops the demo's simulated servos once their ports are closed.
+    std::unique_ptr<ConnectionController> m_connection;
     std::unique_ptr<ptk::Client> m_ptk;
     std::unique_ptr<feetech::BusClient> m_feetech;
     ConnectionBar *m_connectionBar = nullptr;
@@ -117,7 +107,6 @@ private:
     QAction *m_allTorqueOff = nullptr; // Esc: torque off on the whole Feetech bus
     QStackedWidget *m_pages = nullptr;
     QList<QAction *> m_ptkActions; // Link menu entries that only mean something for PTK
-    bool m_feetechActive = false;
     PacketLogDock *m_packetLog = nullptr;
     SimulatorDock *m_simulatorDock = nullptr;
     QMenu *m_viewMenu = nullptr;
@@ -126,15 +115,8 @@ private:
     QLabel *m_pollRate = nullptr;
     QLabel *m_counters = nullptr;
     QTimer *m_rateTimer = nullptr;
-    QString m_portShown; // what the user connected to, as they chose it
-    QString m_portPath; // the port actually opened (a simulated bus's pty)
     DoctorPanel *m_doctor = nullptr;
-    feetech::DoctorCheck *m_doctorCheck = nullptr;
-    std::unique_ptr<seriallink::SessionThread<feetech::PortProbe>> m_probeThread;
     QProgressDialog *m_probeProgress = nullptr;
-    // What the probe of the Auto connection heard; none for a protocol chosen by hand.
-    std::optional<feetech::PortProbeReport> m_probe;
     WelcomePanel *m_welcome = nullptr;
-    QByteArray m_defaultLayout; // the docks as first built, for View > Reset layout
-    QSize m_defaultSize;
+    std::unique_ptr<WindowMemory> m_memory;
 };

@@ -133,10 +133,17 @@ PacketWindow::PacketWindow(feetech::BusClient *feetech, ptk::Client *ptk, QWidge
         if (!send(m_frames, &error))
             showMessage(error, true);
     });
+    m_sequenceFiles = new PacketSequenceFiles(m_frames, this);
+    connect(m_sequenceFiles, &PacketSequenceFiles::loaded, this,
+            [this](const QVector<PacketFrame> &frames) {
+                for (const PacketFrame &frame : frames)
+                    addHistoryRow(frame, tr("loaded, not sent"));
+            });
+    connect(m_sequenceFiles, &PacketSequenceFiles::reported, this, &PacketWindow::showMessage);
     auto *save = new QPushButton(tr("Save sequence…"), this);
-    connect(save, &QPushButton::clicked, this, &PacketWindow::chooseSave);
+    connect(save, &QPushButton::clicked, m_sequenceFiles, &PacketSequenceFiles::chooseSave);
     auto *load = new QPushButton(tr("Load sequence…"), this);
-    connect(load, &QPushButton::clicked, this, &PacketWindow::chooseLoad);
+    connect(load, &QPushButton::clicked, m_sequenceFiles, &PacketSequenceFiles::chooseLoad);
     auto *clear = new QPushButton(tr("Clear"), this);
     connect(clear, &QPushButton::clicked, this, [this] {
         if (m_sending) {

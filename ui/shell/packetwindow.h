@@ -4,6 +4,7 @@
 #pragma once
 
 #include "packetsequence.h"
+#include "packetsequencefiles.h"
 
 #include <QDialog>
 
@@ -43,8 +44,8 @@ public:
 
     QTableWidget *history() const { return m_history; }
     QVector<PacketFrame> historyFrames() const { return m_frames; }
-    bool saveSequence(const QString &path, QString *error = nullptr) const;
-    bool loadSequence(const QString &path, QString *error = nullptr);
+    // Where the history is saved to and loaded from.
+    PacketSequenceFiles *sequenceFiles() const { return m_sequenceFiles; }
 
 signals:
     void sent(bool ok, const QString &message); // each frame, once its outcome is known
@@ -59,8 +60,6 @@ private:
     void onLogged(PacketFrame::Protocol link, const seriallink::PacketLogEntry &entry);
     void onFeetechFinished(const feetech::OperationResult &result);
     void addHistoryRow(const PacketFrame &frame, const QString &outcome);
-    void chooseSave();
-    void chooseLoad();
     void resendSelected();
     void showMessage(const QString &text, bool error);
 
@@ -90,6 +89,7 @@ private:
     QLabel *m_message = nullptr;
     QTableWidget *m_history = nullptr;
     QVector<PacketFrame> m_frames; // the history's rows, oldest first
+    PacketSequenceFiles *m_sequenceFiles = nullptr;
 
     QVector<PacketFrame> m_queue; // still to send
     bool m_sending = false;

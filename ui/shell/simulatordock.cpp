@@ -6,6 +6,7 @@
 #include "simulator.h"
 #include "widgethelpers.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -193,6 +194,27 @@ QWidget *SimulatorDock::buildBusButtons()
     for (QPushButton *button : {plug, m_unplug, m_putAtId, cycle})
         row->addWidget(button);
     row->addStretch();
+    return box;
+}
+
+QWidget *SimulatorDock::buildBenchCases()
+{
+    auto *box = new QWidget(this);
+    auto *row = new QHBoxLayout(box);
+    row->setContentsMargins(0, 0, 0, 0);
+    row->addWidget(new QLabel(tr("Bench case"), box));
+    m_benchCase = new QComboBox(box);
+    m_benchCase->setObjectName(QStringLiteral("benchCase"));
+    m_benchCase->setToolTip(tr("What goes wrong on a real bench, played on the selected servo or "
+                               "on the whole bus"));
+    for (const BenchCases::Case benchCase : BenchCases::all())
+        m_benchCase->addItem(BenchCases::title(benchCase), int(benchCase));
+    row->addWidget(m_benchCase, 1);
+    auto *play = widgethelpers::actionButton(tr("Play"), "playBenchCaseButton",
+                                             tr("Plays the chosen bench case now"), box);
+    connect(play, &QPushButton::clicked, this,
+            [this] { playBenchCase(BenchCases::Case(m_benchCase->currentData().toInt())); });
+    row->addWidget(play);
     return box;
 }
 
@@ -384,6 +406,18 @@ bool SimulatorDock::sweepSelected(int from, int to, double seconds, int cycles)
                 .arg(to)
                 .arg(seconds);
         });
+}
+
+bool SimulatorDock::playBenchCase(BenchCases::Case benchCase)
+{
+    if (!BenchCases::needsServo(benchCase)) {
+        return onBus([benchCase](sim::VirtualFeetechBus &bus,
+                                 QString *) { return BenchCases::play(benchCase, bus, -1); },
+                     BenchCases::outcome(benchCase, -1));
+    }
+    return onSelected([benchCase](sim::VirtualFeetechBus &bus, int index,
+                                  QString *) { return BenchCases::play(benchCase, bus, index); },
+                      [benchCase](int index) { return BenchCases::outcome(benchCase, index); });
 }
 
 bool SimulatorDock::letGo()

@@ -1,8 +1,8 @@
 // The Simulator dock of the demo: the simulated Feetech servos, a hand to turn and sweep their
-// horns, plugging, unplugging, re-addressing and power-cycling them, and the bench cases (no
-// power, a broken chain, a wrong supply, heat, a blocked horn, a latched overload).
+// horns, plugging, unplugging, re-addressing and power-cycling them, and the bench cases to play.
 #pragma once
 
+#include "benchcases.h"
 #include "simcommands.h"
 
 #include <QDockWidget>
@@ -53,25 +53,8 @@ public:
     bool putSelectedAtId(int id);
     bool powerCycle();
 
-    // What can go wrong on a bench, played on the selected servo or the whole bus.
-    enum class BenchCase {
-        CutPower, // the selected servo
-        RestorePower,
-        BreakChainAfter, // every servo after the selected one loses signal and power
-        MendChain,
-        BlockHorn, // something holds the selected servo's horn
-        FreeHorn,
-        Heat, // the selected servo warms by kHeatPerSecond
-        StopHeating,
-        LatchOverload, // until the next power cycle
-        SupplyTooHigh, // the bus: kHighSupplyVolts
-        SupplyTooLow, // the bus: kLowSupplyVolts
-        SupplyNormal, // each servo its family's usual supply
-    };
-    static constexpr double kHeatPerSecond = 1.0;
-    static constexpr double kHighSupplyVolts = 12.6;
-    static constexpr double kLowSupplyVolts = 4.5;
-    bool playBenchCase(BenchCase benchCase);
+    // Plays a bench case on the selected servo or the whole bus.
+    bool playBenchCase(BenchCases::Case benchCase);
     QComboBox *benchCaseChoice() const { return m_benchCase; }
 
     void refresh(); // reads the servo list now (a timer does it while the dock is shown)
@@ -91,7 +74,7 @@ signals:
 private:
     QWidget *buildHandControls();
     QWidget *buildBusButtons();
-    QWidget *buildBenchCases(); // simulatordockcases.cpp
+    QWidget *buildBenchCases();
     // Runs `work` on the bus in the simulator's thread and notes how it went: `done`, or the
     // error it gave; false without a bus.
     using BusWork = std::function<bool(sim::VirtualFeetechBus &, QString *error)>;

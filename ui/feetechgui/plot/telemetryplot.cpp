@@ -6,6 +6,8 @@
 #include <QElapsedTimer>
 #include <QImageWriter>
 #include <QMouseEvent>
+#include <QPaintEvent>
+#include <QPainter>
 #include <QScreen>
 #include <QTimer>
 #include <QWheelEvent>
@@ -151,6 +153,48 @@ void TelemetryPlot::refresh()
     requestPaint();
 }
 
+void TelemetryPlot::layoutPanes()
+{
+    m_layoutDirty = false;
+    m_viewDirty = true;
+    m_painter.layoutPanes();
+}
+
+void TelemetryPlot::prepareFrame()
+{
+    m_painter.fitToView(m_viewFrom, m_viewTo);
+}
+
+void TelemetryPlot::requestPaint()
+{
+    if (m_painter.isChromeValid())
+        update(m_painter.frameRegion());
+    else
+        update();
+}
+
+void TelemetryPlot::paintEvent(QPaintEvent *event)
+{
+    QElapsedTimer clock;
+    clock.start();
+    if (m_layoutDirty) {
+        layoutPanes();
+        prepareFrame();
+    }
+    QPainter painter(this);
+    TelemetryPlotPainter::View view;
+    view.from = m_viewFrom;
+    view.to = m_viewTo;
+    view.dragging = m_dragPane >= 0;
+    view.dragFromX = m_dragFromX;
+    view.dragToX = m_dragToX;
+    m_painter.paint(painter, event->region(), view);
+    ++m_paintCount;
+    const qint64 nanoseconds = m_prepareNs + clock.nsecsElapsed();
+    m_prepareNs = 0;
+    emit framePainted(nanoseconds);
+}
+
 bool TelemetryPlot::isFramePending() const
 {
     return m_frameTimer->isActive();
@@ -170,7 +214,7 @@ bool TelemetryPlot::exportPng(const QString &path, QString *error)
             *error = why;
         return false;
     };
-    if (m_panes.empty())
+    if (m_painter.panes().empty())
         return fail(tr("There is nothing to export: choose at least one quantity to plot."));
     if (path.isEmpty())
         return fail(tr("No file name was given for the image."));
@@ -187,9 +231,20 @@ bool TelemetryPlot::exportPng(const QString &path, QString *error)
     return true;
 }
 
+QColor TelemetryPlot::servoColor(quint8 id, qint32 baud) const
+{
+    const int index = m_buffer.findTrace(id, baud);
+    return index < 0 ? QColor() : TelemetryPlotPainter::traceColour(index);
+}
+
+QSize TelemetryPlot::sizeHint() const
+{
+    return {640, std::max(1, int(m_painter.panes().size())) * 2 * kMinimumPaneHeight};
+}
+
 int TelemetryPlot::seriesCount() const
 {
-    return int(m_panes.size()) * m_buffer.traceCount();
+    return int(m_painter.panes().size()) * m_buffer.traceCount();
 }
 
 int TelemetryPlot::bufferedPointCount(quint8 id, feetech::Quantity quantity, qint32 baud) const
@@ -205,7 +260,7 @@ int TelemetryPlot::shownPointCount(quint8 id, feetech::Quantity quantity, qint32
     const int index = m_buffer.findTrace(id, baud);
     if (index < 0)
         return -1;
-    for (const Pane &pane : m_panes) {
+    for (const TelemetryPlotPainter::Pane &pane : m_painter.panes()) {
         if (pane.quantity == quantity && index < pane.shown.size())
             return int(pane.shown.at(index).size());
     }
@@ -215,7 +270,7 @@ int TelemetryPlot::shownPointCount(quint8 id, feetech::Quantity quantity, qint32
 QList<QPointF> TelemetryPlot::shownPoints(quint8 id, feetech::Quantity quantity, qint32 baud) const
 {
     const int index = m_buffer.findTrace(id, baud);
-    for (const Pane &pane : m_panes) {
+    for (const TelemetryPlotPainter::Pane &pane : m_painter.panes()) {
         if (pane.quantity == quantity && index >= 0 && index < pane.shown.size())
             return pane.shown.at(index);
     }
@@ -234,7 +289,7 @@ int TelemetryPlot::maxPointsPerSeries() const
 
 QRect TelemetryPlot::plotArea(feetech::Quantity quantity) const
 {
-    for (const Pane &pane : m_panes) {
+    for (const TelemetryPlotPainter::Pane &pane : m_painter.panes()) {
         if (pane.quantity == quantity)
             return pane.area;
     }
@@ -243,7 +298,7 @@ QRect TelemetryPlot::plotArea(feetech::Quantity quantity) const
 
 std::pair<double, double> TelemetryPlot::valueRange(feetech::Quantity quantity) const
 {
-    for (const Pane &pane : m_panes) {
+    for (const TelemetryPlotPainter::Pane &pane : m_painter.panes()) {
         if (pane.quantity == quantity)
             return {pane.values.from, pane.values.to};
     }
@@ -283,10 +338,10 @@ void TelemetryPlot::changeEvent(QEvent *event)
     QWidget::changeEvent(event);
     if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange
         || event->type() == QEvent::StyleChange) {
-        m_labels.clear();
+        m_painter.forgetLabels();
         m_layoutDirty = true;
         m_viewDirty = true;
-        invalidateChrome();
+        m_painter.invalidateChrome();
         refresh();
     }
 }
@@ -298,7 +353,7 @@ void TelemetryPlot::mousePressEvent(QMouseEvent *event)
         QWidget::mousePressEvent(event);
         return;
     }
-    const Pane &pane = m_panes.at(std::size_t(index));
+    const TelemetryPlotPainter::Pane &pane = m_painter.panes().at(std::size_t(index));
     if (event->button() == Qt::LeftButton) {
         m_dragPane = index;
         m_dragFromX = m_dragToX = event->position().toPoint().x();
@@ -318,7 +373,7 @@ void TelemetryPlot::mouseMoveEvent(QMouseEvent *event)
         QWidget::mouseMoveEvent(event);
         return;
     }
-    const QRect &area = m_panes.at(std::size_t(m_dragPane)).area;
+    const QRect &area = m_painter.panes().at(std::size_t(m_dragPane)).area;
     m_dragToX = std::clamp(event->position().toPoint().x(), area.left(), area.right());
     requestPaint();
 }
@@ -329,7 +384,7 @@ void TelemetryPlot::mouseReleaseEvent(QMouseEvent *event)
         QWidget::mouseReleaseEvent(event);
         return;
     }
-    const Pane &pane = m_panes.at(std::size_t(m_dragPane));
+    const TelemetryPlotPainter::Pane &pane = m_painter.panes().at(std::size_t(m_dragPane));
     m_dragToX = std::clamp(event->position().toPoint().x(), pane.area.left(), pane.area.right());
     const int left = std::min(m_dragFromX, m_dragToX);
     const int right = std::max(m_dragFromX, m_dragToX);
@@ -349,7 +404,7 @@ void TelemetryPlot::wheelEvent(QWheelEvent *event)
         QWidget::wheelEvent(event);
         return;
     }
-    const QRect &area = m_panes.at(std::size_t(index)).area;
+    const QRect &area = m_painter.panes().at(std::size_t(index)).area;
     // One notch (120) zooms in to 80 %; turning back zooms out by as much.
     zoomAround((event->position().x() - area.left()) / std::max(1, area.width()),
                std::pow(0.8, delta / 120.0));
@@ -368,13 +423,8 @@ TelemetryBuffer::Retention TelemetryPlot::retention() const
 
 void TelemetryPlot::rebuildPanes()
 {
-    m_panes.clear();
-    for (const feetech::Quantity quantity : std::as_const(m_quantities)) {
-        Pane pane;
-        pane.quantity = quantity;
-        m_panes.push_back(pane);
-    }
-    setMinimumHeight(int(m_panes.size()) * kMinimumPaneHeight);
+    m_painter.setQuantities(m_quantities);
+    setMinimumHeight(int(m_painter.panes().size()) * kMinimumPaneHeight);
     updateGeometry();
     m_layoutDirty = true;
     onServosChanged();
@@ -382,36 +432,21 @@ void TelemetryPlot::rebuildPanes()
 
 void TelemetryPlot::onServosChanged()
 {
-    for (Pane &pane : m_panes)
-        pane.shown.resize(m_buffer.traceCount());
-    invalidateChrome(); // the legends name the servos
+    m_painter.tracesChanged();
     m_viewDirty = true;
     refresh();
 }
 
-QString TelemetryPlot::seriesName(const Servo &servo) const
-{
-    // Servos on different baud rates may share an ID: only then does the name say the rate.
-    bool shared = false;
-    for (int i = 0; i < m_buffer.traceCount(); ++i) {
-        const Servo &other = m_buffer.servo(i);
-        shared = shared || (other.id == servo.id && other.baud != servo.baud);
-    }
-    if (!shared)
-        return tr("ID %1").arg(servo.id);
-    return tr("ID %1 · %2").arg(servo.id).arg(feetech::baudText(servo.baud));
-}
-
 int TelemetryPlot::paneAt(const QPoint &position) const
 {
-    for (std::size_t i = 0; i < m_panes.size(); ++i) {
-        if (m_panes[i].area.contains(position))
+    for (std::size_t i = 0; i < m_painter.panes().size(); ++i) {
+        if (m_painter.panes()[i].area.contains(position))
             return int(i);
     }
     return -1;
 }
 
-double TelemetryPlot::timeAt(const Pane &pane, double x) const
+double TelemetryPlot::timeAt(const TelemetryPlotPainter::Pane &pane, double x) const
 {
     const double fraction = (x - pane.area.left()) / std::max(1, pane.area.width());
     return m_viewFrom + fraction * (m_viewTo - m_viewFrom);

@@ -1,25 +1,21 @@
 // The live telemetry plot: one pane per quantity, stacked on a shared time axis, painted by
-// hand from bounded per-series buffers at most once per screen frame and only when it changed.
+// TelemetryPlotPainter from bounded per-series buffers at most once per screen frame and only when
+// it changed.
 #pragma once
 
 // telemetry.h names ServoInfo without defining it; feetechsession.h defines it.
 #include "feetechsession.h"
 #include "telemetry.h"
 #include "telemetrybuffer.h"
+#include "telemetryplotpainter.h"
 
-#include <QColor>
-#include <QHash>
 #include <QList>
 #include <QPointF>
-#include <QPolygonF>
 #include <QRect>
-#include <QRegion>
-#include <QStaticText>
 #include <QVector>
 #include <QWidget>
 
 #include <utility>
-#include <vector>
 
 class QTimer;
 
@@ -118,51 +114,22 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
 
 private:
-    // Ticks of one axis: the values labelled, and the step between them.
-    struct Ticks
-    {
-        double from = 0.0;
-        double to = 1.0;
-        double step = 0.5;
-    };
-    struct Pane
-    {
-        feetech::Quantity quantity = feetech::Quantity::Position;
-        QRect frame; // the whole pane
-        QRect area; // where the traces go
-        Ticks values;
-        QVector<QList<QPointF>> shown; // per trace, decimated, at the last refresh
-    };
-
-    // telemetryplot.cpp: state, data and interaction
     TelemetryBuffer::Retention retention() const;
     void scheduleFrame();
-    void onFrame();
+    void layoutPanes();
     void prepareFrame(); // decimates the traces in view and fits the value axes
     void rebuildPanes();
     void onServosChanged();
-    QString seriesName(const Servo &servo) const;
     int paneAt(const QPoint &position) const; // -1 outside every plot area
-    double timeAt(const Pane &pane, double x) const;
+    double timeAt(const TelemetryPlotPainter::Pane &pane, double x) const;
     void zoomAround(double fraction, double factor);
     void setFollowing();
     void setZoomed(bool zoomed);
-
-    // telemetryplotpainter.cpp: layout and painting
-    void layoutPanes();
-    int leftMargin() const;
-    // What stays put as time goes by: frames, titles, legends, value labels.
-    void paintChrome(QPainter &painter);
-    // What moves each frame, inside m_frameRegion: plot areas, grids, traces, time labels.
-    void paintFrame(QPainter &painter);
-    void paintTraces(QPainter &painter, const Pane &pane);
-    const QStaticText &label(const QString &text);
-    void invalidateChrome();
     void requestPaint(); // of the frame region only, unless the chrome changed too
 
     QVector<feetech::Quantity> m_quantities;
     TelemetryBuffer m_buffer;
-    std::vector<Pane> m_panes;
+    TelemetryPlotPainter m_painter {*this, m_buffer};
     QTimer *m_frameTimer = nullptr;
 
     double m_windowSeconds = 10.0;
@@ -174,13 +141,6 @@ private:
     double m_viewFrom = 0.0;
     double m_viewTo = 10.0;
 
-    // Only this is painted again each frame; the rest stays in the backing store until it
-    // changes, so a frame costs a fill of the plot areas and the lines on it.
-    QRegion m_frameRegion;
-    bool m_chromeValid = false;
-    int m_timeLabelTop = 0; // where the time tick labels start, under the lowest pane
-    QHash<QString, QStaticText> m_labels; // laid-out tick texts, reused frame after frame
-    QPolygonF m_polyline; // reused from trace to trace and frame to frame: no allocation
     qint64 m_paintCount = 0;
     qint64 m_prepareNs = 0; // the refresh behind the coming paint
 

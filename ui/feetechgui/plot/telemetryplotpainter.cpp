@@ -1,11 +1,12 @@
 // The telemetry plot's drawing: pane layout, axis ticks, the chrome painted only when it changes
 // (frames, titles, legends, value labels) and, each frame, the plot areas with grids and traces.
-#include "telemetryplot.h"
+#include "telemetryplotpainter.h"
 
 #include <QElapsedTimer>
 #include <QFontMetrics>
 #include <QPaintEvent>
 #include <QPainter>
+#include <QWidget>
 
 #include <algorithm>
 #include <cmath>
@@ -80,18 +81,47 @@ void forEachTick(double from, double to, double step, Visit visit)
 
 } // namespace
 
-QColor TelemetryPlot::servoColor(quint8 id, qint32 baud) const
+TelemetryPlotPainter::TelemetryPlotPainter(const QWidget &surface, const TelemetryBuffer &buffer)
+    : m_surface(surface)
+    , m_buffer(buffer)
+{ }
+
+void TelemetryPlotPainter::setQuantities(const QVector<feetech::Quantity> &quantities)
 {
-    const int index = m_buffer.findTrace(id, baud);
-    return index < 0 ? QColor() : kServoColours[index % kColourCount];
+    m_panes.clear();
+    for (const feetech::Quantity quantity : quantities) {
+        Pane pane;
+        pane.quantity = quantity;
+        m_panes.push_back(pane);
+    }
 }
 
-QSize TelemetryPlot::sizeHint() const
+void TelemetryPlotPainter::tracesChanged()
 {
-    return {640, std::max(1, int(m_panes.size())) * 2 * kMinimumPaneHeight};
+    for (Pane &pane : m_panes)
+        pane.shown.resize(m_buffer.traceCount());
+    invalidateChrome(); // the legends name the servos
 }
 
-void TelemetryPlot::prepareFrame()
+QColor TelemetryPlotPainter::traceColour(int index)
+{
+    return kServoColours[index % kColourCount];
+}
+
+QString TelemetryPlotPainter::seriesName(const TelemetryBuffer::Servo &servo) const
+{
+    // Servos on different baud rates may share an ID: only then does the name say the rate.
+    bool shared = false;
+    for (int i = 0; i < m_buffer.traceCount(); ++i) {
+        const TelemetryBuffer::Servo &other = m_buffer.servo(i);
+        shared = shared || (other.id == servo.id && other.baud != servo.baud);
+    }
+    if (!shared)
+        return tr("ID %1").arg(servo.id);
+    return tr("ID %1 · %2").arg(servo.id).arg(feetech::baudText(servo.baud));
+}
+
+void TelemetryPlotPainter::fitToView(double from, double to)
 {
     // Twice at most: ticks that come out wider than before move the plot areas, and the
     // columns follow the areas' width.
@@ -104,8 +134,8 @@ void TelemetryPlot::prepareFrame()
             double high = -std::numeric_limits<double>::infinity();
             pane.shown.resize(m_buffer.traceCount());
             for (int i = 0; i < m_buffer.traceCount(); ++i) {
-                pane.shown[i] = TelemetryBuffer::pointsInView(
-                    m_buffer.points(i, pane.quantity), m_viewFrom, m_viewTo, buckets, &low, &high);
+                pane.shown[i] = TelemetryBuffer::pointsInView(m_buffer.points(i, pane.quantity),
+                                                              from, to, buckets, &low, &high);
             }
             if (low > high)
                 continue; // nothing in view: the axis stays as it was
@@ -135,9 +165,9 @@ void TelemetryPlot::prepareFrame()
     }
 }
 
-int TelemetryPlot::leftMargin() const
+int TelemetryPlotPainter::leftMargin() const
 {
-    const QFontMetrics metrics(font());
+    const QFontMetrics metrics(m_surface.font());
     int widest = metrics.horizontalAdvance(QStringLiteral("0000"));
     for (const Pane &pane : m_panes) {
         forEachTick(pane.values.from, pane.values.to, pane.values.step, [&](double value) {
@@ -147,26 +177,25 @@ int TelemetryPlot::leftMargin() const
     return widest + kLabelGap + kOuterMargin;
 }
 
-void TelemetryPlot::layoutPanes()
+void TelemetryPlotPainter::layoutPanes()
 {
-    m_layoutDirty = false;
     invalidateChrome();
-    m_viewDirty = true;
     m_frameRegion = QRegion();
     if (m_panes.empty())
         return;
-    const QFontMetrics metrics(font());
+    const QFontMetrics metrics(m_surface.font());
     const int titleHeight = metrics.height() + 8;
     const int timeAxisHeight = 2 * metrics.height() + 14; // tick labels and "Time (s)"
     const int count = int(m_panes.size());
-    const int available = height() - 2 * kOuterMargin - timeAxisHeight - kPaneSpacing * (count - 1);
+    const int available =
+        m_surface.height() - 2 * kOuterMargin - timeAxisHeight - kPaneSpacing * (count - 1);
     const int paneHeight = std::max(titleHeight + 16, available / count);
     const int left = leftMargin();
     int top = kOuterMargin;
     for (int i = 0; i < count; ++i) {
         Pane &pane = m_panes[std::size_t(i)];
         const bool lowest = i == count - 1;
-        pane.frame = QRect(kOuterMargin, top, width() - 2 * kOuterMargin,
+        pane.frame = QRect(kOuterMargin, top, m_surface.width() - 2 * kOuterMargin,
                            paneHeight + (lowest ? timeAxisHeight : 0));
         pane.area = QRect(pane.frame.left() + left, top + titleHeight,
                           std::max(1, pane.frame.width() - left - kRightMargin),
@@ -181,20 +210,12 @@ void TelemetryPlot::layoutPanes()
         QRect(lowest.frame.left(), m_timeLabelTop, lowest.frame.width(), metrics.height() + 2);
 }
 
-void TelemetryPlot::invalidateChrome()
+void TelemetryPlotPainter::invalidateChrome()
 {
     m_chromeValid = false;
 }
 
-void TelemetryPlot::requestPaint()
-{
-    if (m_chromeValid)
-        update(m_frameRegion);
-    else
-        update();
-}
-
-const QStaticText &TelemetryPlot::label(const QString &text)
+const QStaticText &TelemetryPlotPainter::label(const QString &text)
 {
     auto found = m_labels.find(text);
     if (found != m_labels.end())
@@ -203,23 +224,23 @@ const QStaticText &TelemetryPlot::label(const QString &text)
         m_labels.clear(); // the view wandered far: start over rather than grow
     QStaticText laidOut(text);
     laidOut.setTextFormat(Qt::PlainText);
-    laidOut.prepare(QTransform(), font());
+    laidOut.prepare(QTransform(), m_surface.font());
     return *m_labels.insert(text, laidOut);
 }
 
-void TelemetryPlot::paintChrome(QPainter &painter)
+void TelemetryPlotPainter::paintChrome(QPainter &painter)
 {
-    painter.fillRect(rect(), palette().window());
-    const QColor text = palette().color(QPalette::Text);
+    painter.fillRect(m_surface.rect(), m_surface.palette().window());
+    const QColor text = m_surface.palette().color(QPalette::Text);
     QColor axis = text;
     axis.setAlpha(140);
-    QFont titleFont = font();
+    QFont titleFont = m_surface.font();
     titleFont.setBold(true);
-    const QFontMetrics metrics(font());
+    const QFontMetrics metrics(m_surface.font());
     const QFontMetrics titleMetrics(titleFont);
     for (std::size_t p = 0; p < m_panes.size(); ++p) {
         const Pane &pane = m_panes[p];
-        painter.fillRect(pane.frame, palette().base());
+        painter.fillRect(pane.frame, m_surface.palette().base());
 
         // Title on the left, the legend on the same line to the right.
         const int baseline = pane.frame.top() + 4 + titleMetrics.ascent();
@@ -228,7 +249,7 @@ void TelemetryPlot::paintChrome(QPainter &painter)
         painter.setPen(text);
         painter.setFont(titleFont);
         painter.drawText(pane.area.left(), baseline, title);
-        painter.setFont(font());
+        painter.setFont(m_surface.font());
         const int swatch = metrics.ascent() - 2;
         int legendWidth = 0;
         for (int i = 0; i < m_buffer.traceCount(); ++i) {
@@ -244,8 +265,7 @@ void TelemetryPlot::paintChrome(QPainter &painter)
                 painter.drawText(x, baseline, QStringLiteral("…"));
                 break;
             }
-            painter.fillRect(QRect(x, baseline - swatch, swatch, swatch),
-                             kServoColours[i % kColourCount]);
+            painter.fillRect(QRect(x, baseline - swatch, swatch, swatch), traceColour(i));
             painter.drawText(x + swatch + 4, baseline, name);
             x += itemWidth + 12;
         }
@@ -275,43 +295,37 @@ void TelemetryPlot::paintChrome(QPainter &painter)
                 QPointF(pane.area.center().x() - titleMetrics.horizontalAdvance(name) / 2.0,
                         m_timeLabelTop + metrics.height() + 4 + titleMetrics.ascent()),
                 name);
-            painter.setFont(font());
+            painter.setFont(m_surface.font());
         }
     }
 }
 
-void TelemetryPlot::paintEvent(QPaintEvent *event)
+void TelemetryPlotPainter::forgetLabels()
 {
-    QElapsedTimer clock;
-    clock.start();
-    if (m_layoutDirty) {
-        layoutPanes();
-        prepareFrame();
-    }
-    QPainter painter(this);
+    m_labels.clear();
+}
+
+void TelemetryPlotPainter::paint(QPainter &painter, const QRegion &exposed, const View &view)
+{
     // A frame asks for m_frameRegion only; anything beyond it (first show, resize, a covered
     // window exposed again, new ticks or servos) needs the chrome too.
-    if (!m_chromeValid || !(event->region() - m_frameRegion).isEmpty()) {
+    if (!m_chromeValid || !(exposed - m_frameRegion).isEmpty()) {
         paintChrome(painter);
         m_chromeValid = true;
     }
-    paintFrame(painter);
-    ++m_paintCount;
-    const qint64 nanoseconds = m_prepareNs + clock.nsecsElapsed();
-    m_prepareNs = 0;
-    emit framePainted(nanoseconds);
+    paintFrame(painter, view);
 }
 
-void TelemetryPlot::paintFrame(QPainter &painter)
+void TelemetryPlotPainter::paintFrame(QPainter &painter, const View &view)
 {
     if (m_panes.empty())
         return;
-    const QBrush base = palette().base();
-    const QColor text = palette().color(QPalette::Text);
-    const QColor grid = gridColour(palette());
+    const QBrush base = m_surface.palette().base();
+    const QColor text = m_surface.palette().color(QPalette::Text);
+    const QColor grid = gridColour(m_surface.palette());
     const Pane &lowest = m_panes.back();
     painter.fillRect(QRect(lowest.frame.left(), m_timeLabelTop, lowest.frame.width(),
-                           QFontMetrics(font()).height() + 2),
+                           QFontMetrics(m_surface.font()).height() + 2),
                      base);
     // The value grid of each pane, then the time grid across all of them. Grid lines are
     // one-pixel opaque rectangles: plain fills, many times cheaper than blended lines.
@@ -326,16 +340,16 @@ void TelemetryPlot::paintFrame(QPainter &painter)
             painter.fillRect(QRect(pane.area.left(), y, pane.area.width(), 1), grid);
         });
     }
-    const double span = m_viewTo - m_viewFrom;
+    const double span = view.to - view.from;
     if (span > 0.0) {
         // About one time label per 90 pixels; each label's text is laid out once.
         const double step = niceStep(span / std::clamp(lowest.area.width() / 90, 2, 12));
         const double scale = lowest.area.width() / span;
-        painter.setFont(font());
-        forEachTick(m_viewFrom, m_viewTo, step, [&](double value) {
+        painter.setFont(m_surface.font());
+        forEachTick(view.from, view.to, step, [&](double value) {
             const int x =
                 std::min(lowest.area.right(),
-                         int(std::lround(lowest.area.left() + (value - m_viewFrom) * scale)));
+                         int(std::lround(lowest.area.left() + (value - view.from) * scale)));
             for (const Pane &pane : m_panes)
                 painter.fillRect(QRect(x, pane.area.top(), 1, pane.area.height()), grid);
             const QStaticText &label = this->label(tickText(value, step));
@@ -344,20 +358,21 @@ void TelemetryPlot::paintFrame(QPainter &painter)
         });
     }
     for (const Pane &pane : m_panes)
-        paintTraces(painter, pane);
-    if (m_dragPane >= 0) {
-        QColor band = palette().color(QPalette::Highlight);
+        paintTraces(painter, pane, view);
+    if (view.dragging) {
+        QColor band = m_surface.palette().color(QPalette::Highlight);
         band.setAlpha(60);
         for (const Pane &pane : m_panes) {
-            painter.fillRect(QRect(std::min(m_dragFromX, m_dragToX), pane.area.top(),
-                                   std::abs(m_dragToX - m_dragFromX) + 1, pane.area.height()),
+            painter.fillRect(QRect(std::min(view.dragFromX, view.dragToX), pane.area.top(),
+                                   std::abs(view.dragToX - view.dragFromX) + 1, pane.area.height()),
                              band);
         }
     }
 }
-void TelemetryPlot::paintTraces(QPainter &painter, const Pane &pane)
+
+void TelemetryPlotPainter::paintTraces(QPainter &painter, const Pane &pane, const View &view)
 {
-    const double span = m_viewTo - m_viewFrom;
+    const double span = view.to - view.from;
     const double valueSpan = pane.values.to - pane.values.from;
     if (!(span > 0.0) || !(valueSpan > 0.0))
         return;
@@ -374,7 +389,7 @@ void TelemetryPlot::paintTraces(QPainter &painter, const Pane &pane)
             continue;
         m_polyline.clear();
         for (const QPointF &point : points) {
-            const QPointF mapped(area.left() + (point.x() - m_viewFrom) * xScale,
+            const QPointF mapped(area.left() + (point.x() - view.from) * xScale,
                                  bottom - (point.y() - pane.values.from) * yScale);
             // A servo at rest sends the same value again and again: a level run is drawn as
             // one segment from its first point to its last, which looks the same.
@@ -387,7 +402,7 @@ void TelemetryPlot::paintTraces(QPainter &painter, const Pane &pane)
             }
         }
         // One pixel wide: the raster engine's fast path for thin lines, antialiased alike.
-        painter.setPen(QPen(kServoColours[i % kColourCount], 1.0));
+        painter.setPen(QPen(traceColour(i), 1.0));
         if (m_polyline.size() == 1)
             painter.drawPoint(m_polyline.first());
         else
