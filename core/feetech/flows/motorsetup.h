@@ -60,9 +60,9 @@ struct JointCheck
     QString problem() const;
 };
 
-// Finds the one servo on the bus and sets it up, from the steps of the exchange, the guided
-// flows and the apply flow; checks which joints of a robot already answer where they should.
-// Nothing is written unless exactly one servo of the right model answers. Lives in the
+// Finds the one servo on the bus (MotorFinder) and sets it up, from the steps of the exchange,
+// the guided flows and the apply flow; checks which joints of a robot already answer where they
+// should. Nothing is written unless exactly one servo of the right model answers. Lives in the
 // session's thread; the session runs each call as one operation.
 class MotorSetup : public QObject
 {
