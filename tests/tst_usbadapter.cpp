@@ -1,6 +1,6 @@
 // Unit tests of the simulated USB adapters: when each profile hands the wire's bytes to the
 // program (FTDI's latency timer, packets, CH34x and CP210x frames), and servosim's --adapter.
-#include "simulator.h"
+#include "simoptions.h"
 #include "usbadapter.h"
 
 #include <QtTest>

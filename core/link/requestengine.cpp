@@ -1,4 +1,5 @@
-// Request engine: queueing, timeouts, retries, echo suppression, counters and the packet log.
+// Request engine: queueing, timeouts, retries, echo suppression, late answers, the default wait
+// that follows the slow end of the link's answers, counters and the packet log.
 #include "requestengine.h"
 
 #include "transport.h"
@@ -8,6 +9,7 @@
 #include <QLoggingCategory>
 
 #include <algorithm>
+#include <vector>
 
 namespace {
 
@@ -28,8 +30,12 @@ namespace {
 constexpr std::chrono::milliseconds kCounterPublishInterval {100};
 // How long a frame may take to leave the program before the port counts as stuck.
 constexpr std::chrono::milliseconds kWriteStallTimeout {500};
-// How many ended transactions are offered late answers.
-constexpr std::size_t kLateAnswerMemory = 8;
+// The default wait follows this many recent answers, with this factor and margin, and grows to
+// no more than kLongestGrownWait: a link slower than that is broken, not slow.
+constexpr std::size_t kAnswerTimes = 32;
+constexpr double kSlowEndFactor = 1.5;
+constexpr std::chrono::microseconds kSlowEndMargin {2000};
+constexpr std::chrono::microseconds kLongestGrownWait {250000};
 
 TransactionResult failedWith(Failure failure)
 {
@@ -39,6 +45,15 @@ TransactionResult failedWith(Failure failure)
 }
 
 } // namespace
+
+std::optional<std::chrono::microseconds> slowEnd(const std::deque<std::chrono::microseconds> &times)
+{
+    if (times.empty())
+        return std::nullopt;
+    std::vector<std::chrono::microseconds> sorted(times.begin(), times.end());
+    std::sort(sorted.begin(), sorted.end());
+    return sorted.at((sorted.size() - 1) * 95 / 100);
+}
 
 RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, Describer describer,
                              QObject *parent)
@@ -74,9 +89,7 @@ void RequestEngine::setEchoMode(EchoMode mode)
     m_echoSeen = Decision::Unknown;
     // A new port (or the same one again): what the last one taught about answers is forgotten.
     m_answerTimes.clear();
-    m_ended.clear();
-    m_answersOwed = 0;
-    m_answersAtOnce = false;
+    m_lateAnswers.forgetLink();
     m_framer.discardPending();
     m_waitedForUnfinished = false;
 }
@@ -93,8 +106,7 @@ void RequestEngine::submit(Transaction transaction)
 void RequestEngine::cancelAll(Failure failure)
 {
     // Nothing of this link's past answers anything that follows.
-    m_ended.clear();
-    m_answersOwed = 0;
+    m_lateAnswers.forgetRequests();
     m_framer.discardPending();
     m_waitedForUnfinished = false;
     std::deque<Transaction> ended;
@@ -350,15 +362,15 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             const bool tooSoon = cameTooSoon(int(item->bytes.size()));
             // On a link that answers at once every answer comes too soon: this request's
             // answer is not offered to the ended ones first.
-            if (tooSoon && !m_answersAtOnce && takeLateAnswer(item->bytes))
+            if (tooSoon && !m_lateAnswers.answersAtOnce() && takeLateAnswer(item->bytes))
                 break;
-            if (tooSoon && answerOwed()) {
+            if (tooSoon && m_lateAnswers.answerOwed(nowUs())) {
                 // Sooner than the wire could carry the request and an answer, while an earlier
                 // request is owed one: this is that late answer (PTK replies name no query).
                 // It says nothing of when this request is answered: no first-byte deadline
                 // starts. With nothing owed, the frame is the answer of a device that answers
                 // at once.
-                answerPaid();
+                m_lateAnswers.answerPaid();
                 m_lateFrameThisAttempt = true;
                 m_counters.discardedBytes += item->bytes.size();
                 ++m_counters.lateReplies;
@@ -373,7 +385,8 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             heard(int(item->bytes.size()));
             if (m_current->acceptsReply && m_current->acceptsReply(item->bytes)) {
                 // Taken though it came sooner than the wire allows: the device answers at once.
-                m_answersAtOnce = m_answersAtOnce || tooSoon;
+                if (tooSoon)
+                    m_lateAnswers.answeredAtOnce();
                 m_lastAcceptedUs = m_clock.nsecsElapsed() / 1000;
                 ++m_counters.repliesOk;
                 if (!m_current->logFailuresOnly)
@@ -384,7 +397,8 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             const auto answer = m_current->collectsReplies ? m_current->collectsReplies(item->bytes)
                                                            : Transaction::Answer::NotMine;
             if (answer != Transaction::Answer::NotMine) {
-                m_answersAtOnce = m_answersAtOnce || tooSoon;
+                if (tooSoon)
+                    m_lateAnswers.answeredAtOnce();
                 m_lastAcceptedUs = m_clock.nsecsElapsed() / 1000;
                 if (m_collected.isEmpty())
                     ++m_counters.repliesOk; // one answered request, however many frames
@@ -467,7 +481,7 @@ void RequestEngine::onTimeout(quint64 generation)
     const bool silent = m_firstHeardUs < 0 && !m_lateFrameThisAttempt;
     if (counted && m_state == State::AwaitingReply
         && (retrying ? silent : (silent || m_lateFrameThisAttempt) && !m_current->lateAnswer))
-        oweAnswer();
+        m_lateAnswers.oweAnswer(nowUs());
     if (m_timing.settleAfterTimeout)
         m_quietUntilMs = m_clock.elapsed()
             + std::chrono::duration_cast<std::chrono::milliseconds>(replyTimeout()).count();
@@ -510,16 +524,14 @@ void RequestEngine::finish(Failure failure, const QByteArray &reply)
         noteAnswerTime(result.completedAfter);
     }
     if (done && done->lateAnswer && failure == Failure::Timeout) {
-        Ended ended;
+        LateAnswers::EndedRequest ended;
         ended.lateAnswer = done->lateAnswer;
         ended.writtenAtUs = m_writtenAtUs;
         ended.endedAtUs = now;
         ended.wireTime = m_replyWireTime + wireTime(done->expectedReplySize);
         ended.request = done->request;
         ended.several = bool(done->collectsReplies);
-        m_ended.push_back(std::move(ended));
-        while (m_ended.size() > kLateAnswerMemory)
-            m_ended.pop_front();
+        m_lateAnswers.remember(std::move(ended));
     }
     m_state = State::Idle;
     ++m_generation;
@@ -527,6 +539,89 @@ void RequestEngine::finish(Failure failure, const QByteArray &reply)
     if (done && done->done)
         done->done(result);
     scheduleNext();
+}
+
+bool RequestEngine::takeLateAnswer(const QByteArray &frame)
+{
+    const auto after = m_lateAnswers.take(frame, nowUs(), echoExpected());
+    if (!after)
+        return false;
+    noteAnswerTime(*after);
+    ++m_counters.lateReplies;
+    log(Direction::In, frame, {},
+        Tr::tr("late answer, %1 ms after its request")
+            .arg(double(after->count()) / 1000.0, 0, 'f', 1));
+    return true;
+}
+
+void RequestEngine::onInputBetweenRequests(const QByteArray &bytes, const QString &why)
+{
+    // Frame by frame: a late answer is no stray input. What forms no frame yet stays in the
+    // framer (the rest of a late answer may follow) until the next request goes out.
+    const bool settling = m_state == State::Settling;
+    m_framer.append(bytes);
+    QByteArray stray;
+    while (auto item = m_framer.next()) {
+        if (item->kind == StreamItem::Kind::Frame) {
+            if (item->bytes == m_lastRequest && !m_echoConsumed && echoExpected()) {
+                // The echo of the last request, after its exchange had ended.
+                m_echoConsumed = true;
+                m_counters.echoBytes += item->bytes.size();
+                log(Direction::Echo, item->bytes, {}, Tr::tr("late"));
+                continue;
+            }
+            if (takeLateAnswer(item->bytes)) {
+                m_lateAnswers.answeredLate();
+                continue;
+            }
+            // Whatever comes while nothing waits may be the answer an earlier request is owed.
+            m_lateAnswers.answerPaid();
+            if (settling) {
+                m_lateAnswers.answeredLate();
+                // The engine holds requests back after a timeout precisely for this answer.
+                noteAnswerTime(std::max(
+                    std::chrono::microseconds(0),
+                    std::chrono::microseconds(m_clock.nsecsElapsed() / 1000 - m_writtenAtUs)
+                        - m_replyWireTime - wireTime(int(item->bytes.size()))));
+                ++m_counters.lateReplies;
+                m_counters.discardedBytes += item->bytes.size();
+                log(Direction::In, item->bytes, {}, Tr::tr("late answer, discarded"));
+                continue;
+            }
+        }
+        stray += item->bytes;
+    }
+    if (!stray.isEmpty()) {
+        m_counters.discardedBytes += stray.size();
+        log(Direction::Stray, stray, why);
+    }
+    publishCounters();
+}
+
+std::chrono::microseconds RequestEngine::replyTimeout() const
+{
+    if (m_current && m_current->replyTimeout)
+        return *m_current->replyTimeout;
+    // Behind an adapter that holds answers back (FTDI's latency timer, an echo and its answer
+    // in two of its packets), the set time may be too short: the slow end of the answers says.
+    const auto slow = slowEnd(m_answerTimes);
+    if (!slow)
+        return m_timing.replyTimeout;
+    const auto bySlowEnd =
+        std::chrono::microseconds(qint64(double(slow->count()) * kSlowEndFactor)) + kSlowEndMargin;
+    return std::max<std::chrono::microseconds>(m_timing.replyTimeout,
+                                               std::min(bySlowEnd, kLongestGrownWait));
+}
+
+void RequestEngine::noteAnswerTime(std::chrono::microseconds time)
+{
+    // An answer slower than any wait may grow to says nothing about the link's pace (a servo
+    // that was busy, bytes measured from a request long gone).
+    if (time > kLongestGrownWait)
+        return;
+    m_answerTimes.push_back(time);
+    while (m_answerTimes.size() > kAnswerTimes)
+        m_answerTimes.pop_front();
 }
 
 void RequestEngine::log(Direction direction, const QByteArray &bytes, const QString &error,

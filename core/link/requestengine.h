@@ -2,6 +2,7 @@
 // polls, timeouts from the moment the frame has left, bounded retries, echo suppression.
 #pragma once
 
+#include "lateanswers.h"
 #include "linktypes.h"
 #include "precisetimer.h"
 #include "streamframer.h"
@@ -196,12 +197,7 @@ private:
     std::chrono::microseconds wireTime(int bytes) const;
     // Whether a frame of this size, complete now, came too soon to answer the request in flight.
     bool cameTooSoon(int frameBytes) const;
-    // An earlier request's answer may still come: one that timed out having heard nothing, whose
-    // answer a frame that comes too soon for the next request is taken to be. A request that
-    // recognises its late answers (Transaction::lateAnswer) owes none once it has ended.
-    void oweAnswer();
-    bool answerOwed() const;
-    void answerPaid();
+    qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
     std::chrono::microseconds replyTimeout() const;
     void noteAnswerTime(std::chrono::microseconds time);
     int retryCount() const;
@@ -214,16 +210,9 @@ private:
     LinkCounters m_counters;
     Decision m_echoSeen = Decision::Unknown;
 
-    struct Ended
-    {
-        std::function<bool(const QByteArray &, std::chrono::microseconds)> lateAnswer;
-        qint64 writtenAtUs = 0;
-        qint64 endedAtUs = 0;
-        std::chrono::microseconds wireTime {0}; // request, echo and expected answer
-        QByteArray request;
-        bool several = false; // answered by several frames (SYNC READ)
-    };
-    std::deque<Ended> m_ended; // newest last
+    // Earlier requests whose answers may still come. A request that recognises its late answers
+    // (Transaction::lateAnswer) owes none once it has ended.
+    LateAnswers m_lateAnswers;
     // How long the recent answers took beyond their wire time, late ones included.
     std::deque<std::chrono::microseconds> m_answerTimes;
 
@@ -248,12 +237,6 @@ private:
     // Auto echo detection, undecided: a frame equal to a request whose answer may equal it was
     // taken for the echo; the next frame confirms it.
     bool m_echoUnconfirmed = false;
-    int m_answersOwed = 0;
-    qint64 m_answersOwedUntilUs = 0;
-    // This link has answered sooner than the wire allows while nothing was owed: the device
-    // answers at once, and such a device sends no late answers (what it does not answer at
-    // once, it never answers).
-    bool m_answersAtOnce = false;
     bool m_lateFrameThisAttempt = false; // a frame was taken for an earlier request's answer
     bool m_sawFrame = false;
     bool m_firstByteDeadline = false; // afterFirstByte: the wait now runs from the first byte

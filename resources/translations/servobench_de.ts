@@ -4769,7 +4769,7 @@ Eine belegte ID wird abgelehnt.</translation>
     </message>
 </context>
 <context>
-    <name>MotorSetup</name>
+    <name>MotorFinder</name>
     <message>
         <source>this motor</source>
         <translation>dieser Motor</translation>
@@ -4822,6 +4822,9 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Found one servo: %1, model %2.</source>
         <translation>Ein Servo gefunden: %1, Modell %2.</translation>
     </message>
+</context>
+<context>
+    <name>MotorSetup</name>
     <message>
         <source>ID %1 answers as model %2, not %3.</source>
         <translation>ID %1 antwortet als Modell %2, nicht %3.</translation>

@@ -4749,7 +4749,7 @@ An ID in use is refused.</source>
     </message>
 </context>
 <context>
-    <name>MotorSetup</name>
+    <name>MotorFinder</name>
     <message>
         <source>this motor</source>
         <translation>此电机</translation>
@@ -4802,6 +4802,9 @@ An ID in use is refused.</source>
         <source>Found one servo: %1, model %2.</source>
         <translation>找到一个舵机：%1，型号 %2。</translation>
     </message>
+</context>
+<context>
+    <name>MotorSetup</name>
     <message>
         <source>ID %1 answers as model %2, not %3.</source>
         <translation>ID %1 应答的型号为 %2，而不是 %3。</translation>

@@ -55,14 +55,6 @@ QVector<Block> blocksFor(const RegisterTable &table, const QStringList &keys)
 
 } // namespace
 
-bool servoIsModel(const ServoInfo &servo, QStringView model)
-{
-    const auto wanted = ModelTable::builtIn().findByName(model);
-    if (!wanted)
-        return servo.model.name.compare(model, Qt::CaseInsensitive) == 0;
-    return wanted->major == servo.modelMajor && wanted->minor == servo.modelMinor;
-}
-
 bool JointCheck::done() const
 {
     return found && servoIsModel(*found, model) && differing.isEmpty();
@@ -90,7 +82,13 @@ MotorSetup::MotorSetup(BusExchange &bus, GuidedFlows &flows, ApplyFlow &apply, Q
     , m_bus(bus)
     , m_flows(flows)
     , m_apply(apply)
+    , m_finder(bus, [this] { return m_cancelled; })
 { }
+
+void MotorSetup::find(const MotorTarget &target, SearchDone done)
+{
+    m_finder.find(target.model, target.joint, std::move(done));
+}
 
 void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
 {
@@ -109,7 +107,7 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
         return;
     }
     emit progress(1, kSetupSteps, Tr::tr("Looking for the servo at every baud rate…"));
-    search(target, [this, run](const MotorSearch &search) {
+    m_finder.find(target.model, target.joint, [this, run](const MotorSearch &search) {
         run->result.search = search;
         run->result.stopped = search.stopped;
         if (!search.foundOne()) {
@@ -359,7 +357,7 @@ void MotorSetup::checkNext(qint32 baud, std::shared_ptr<QVector<JointCheck>> joi
             next();
             return;
         }
-        m_bus.exchange(identityRequest(quint8(id), true),
+        m_bus.exchange(MotorFinder::identityRequest(quint8(id), true),
                        [this, baud, joints, index, id, next](const seriallink::TransactionResult &,
                                                              const std::optional<Packet> &reply) {
                            const auto info = reply

@@ -5,6 +5,7 @@
 #include "busexchange.h"
 #include "bustypes.h"
 #include "guidedflows.h"
+#include "motorfinder.h"
 
 #include <QMap>
 #include <QMetaType>
@@ -26,37 +27,6 @@ struct MotorTarget
     qint32 baud = 1000000;
     QString model; // as the model table names it; empty: any model with a register table
     QMap<QString, qint32> settings; // register units by key, written and verified
-};
-
-// Whether the servo is of the model the model table names `model` (aliases included).
-bool servoIsModel(const ServoInfo &servo, QStringView model);
-
-// What a look at every baud rate found.
-struct MotorSearch
-{
-    enum class Verdict {
-        NoServo, // nothing answers at any rate (or the one servo stopped answering)
-        OneServo, // exactly one servo, of the right model: `servo`
-        SeveralServos, // answers at several rates, from several IDs, or replies that collide
-        SharedId, // two servos at one ID: clean PING and identity, garbled position reads
-        WrongModel, // one servo, of another model (or one without a register table)
-        Failed // the port closed, or the search was stopped
-    };
-    Verdict verdict = Verdict::NoServo;
-    ServoInfo servo; // OneServo, WrongModel, SharedId: who answers
-    int count = 0; // servos seen; with `collided`, at least that many
-    bool collided = false; // some replies collided, so more may answer than could be counted
-    bool stopped = false; // cancelled before it could decide
-    QStringList answering; // SeveralServos: "ID 1 at 1 Mbps", "several at 500 kbps"...
-    QString message; // for the user: what was found and what to do
-
-    bool foundOne() const { return verdict == Verdict::OneServo; }
-    // The bus is not as a set-up needs it, and the message does not say so itself.
-    bool needsNothingWrittenNote() const
-    {
-        return verdict == Verdict::NoServo || verdict == Verdict::SeveralServos
-            || verdict == Verdict::SharedId;
-    }
 };
 
 // A find or a set-up: what was found, what it became, and each step done.
@@ -90,16 +60,16 @@ struct JointCheck
     QString problem() const;
 };
 
-// Finds the one servo on the bus and sets it up, from the steps of the exchange, the guided
-// flows and the apply flow; checks which joints of a robot already answer where they should.
-// Nothing is written unless exactly one servo of the right model answers. Lives in the
+// Finds the one servo on the bus (MotorFinder) and sets it up, from the steps of the exchange,
+// the guided flows and the apply flow; checks which joints of a robot already answer where they
+// should. Nothing is written unless exactly one servo of the right model answers. Lives in the
 // session's thread; the session runs each call as one operation.
 class MotorSetup : public QObject
 {
     Q_OBJECT
 
 public:
-    using SearchDone = std::function<void(const MotorSearch &search)>;
+    using SearchDone = MotorFinder::SearchDone;
     using SetupDone = std::function<void(const MotorSetupResult &result)>;
     using CheckDone = std::function<void(const QVector<JointCheck> &joints)>;
 
@@ -124,19 +94,6 @@ signals:
     void progress(int step, int steps, const QString &text);
 
 private:
-    // A READ of addresses 0-8 of `id`; a quiet one is no error when nothing answers.
-    static Exchange identityRequest(quint8 id, bool quiet);
-    struct Search;
-    void search(const MotorTarget &target, SearchDone done);
-    void probeRate(std::shared_ptr<Search> search, int index);
-    void decide(std::shared_ptr<Search> search);
-    void confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud);
-    // Whether two servos share the one ID found (sharedidcheck.h), then its model.
-    void checkShared(std::shared_ptr<Search> search);
-    void judgeModel(std::shared_ptr<Search> search);
-    void endSearch(std::shared_ptr<Search> search, MotorSearch::Verdict verdict,
-                   const QString &message);
-
     struct Run;
     void changeId(std::shared_ptr<Run> run);
     void changeBaud(std::shared_ptr<Run> run);
@@ -156,6 +113,7 @@ private:
     GuidedFlows &m_flows;
     ApplyFlow &m_apply;
     bool m_cancelled = false;
+    MotorFinder m_finder;
     QMetaObject::Connection m_reading; // collects what readSettings reads
 };
 

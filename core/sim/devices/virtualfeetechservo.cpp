@@ -42,8 +42,7 @@ qint32 VirtualFeetechServo::defaultBaud(Family family)
 VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8 id, qint32 baud)
     : m_table(&feetech::RegisterTable::forFamily(model.family.value_or(Family::Sts)))
     , m_model(model)
-    , m_motion(model.family != Family::Scs,
-               model.family == Family::Hls ? kDefaultHlsSupplyVolts : kDefaultSupplyVolts)
+    , m_motor(*m_table, model.family == Family::Hls ? kDefaultHlsSupplyVolts : kDefaultSupplyVolts)
 {
     Q_ASSERT(model.family);
     for (const Register &reg : m_table->registers()) {
@@ -59,25 +58,13 @@ VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8
     m_keys.returnDelay = find(u"return_delay");
     m_keys.secondaryId = find(u"secondary_id");
     m_keys.responseLevel = find(u"response_level");
-    m_keys.minAngle = find(u"min_angle_limit");
-    m_keys.maxAngle = find(u"max_angle_limit");
-    m_keys.maxTemperature = find(u"max_temperature");
-    m_keys.maxVoltage = find(u"max_voltage");
-    m_keys.minVoltage = find(u"min_voltage");
     m_keys.maxTorque = find(u"max_torque");
-    m_keys.cwDeadZone = find(u"cw_dead_zone");
-    m_keys.ccwDeadZone = find(u"ccw_dead_zone");
     m_keys.protectionCurrent = find(u"protection_current");
     m_keys.offset = find(u"position_offset");
     m_keys.mode = find(u"mode");
-    m_keys.holdingTorque = find(u"holding_torque");
-    m_keys.protectionTime = find(u"protection_time");
-    m_keys.overloadTorque = find(u"overload_torque");
     m_keys.torqueEnable = find(u"torque_enable");
-    m_keys.acceleration = family() == Family::Scs ? nullptr : find(u"acceleration");
     m_keys.goalPosition = find(u"goal_position");
     m_keys.goalTime = m_table->at(44);
-    m_keys.goalSpeed = find(u"goal_speed");
     m_keys.torqueLimit = find(u"torque_limit");
     m_keys.lock = find(u"lock");
     m_keys.presentPosition = find(u"present_position");
@@ -181,7 +168,7 @@ void VirtualFeetechServo::setValue(QStringView key, qint32 value)
         || reg == m_keys.presentTemperature || reg == m_keys.status || reg == m_keys.moving
         || reg == m_keys.currentGoal || reg == m_keys.presentCurrent;
     if (!derived)
-        refreshRegisters();
+        m_motor.report(m_registers);
 }
 
 quint8 VirtualFeetechServo::id() const
@@ -223,7 +210,7 @@ void VirtualFeetechServo::storeValue(QStringView key, qint32 value)
     put(reg, value);
     if (reg->storage == Storage::Eeprom)
         keepInImage(*reg);
-    refreshRegisters();
+    m_motor.report(m_registers);
 }
 
 bool VirtualFeetechServo::setEepromImage(const QByteArray &image)
@@ -245,7 +232,7 @@ void VirtualFeetechServo::powerCycle()
     for (const Register &reg : m_table->registers())
         putRegisterBytes(reg, reg.storage == Storage::Eeprom ? m_image : m_powerOnRam, m_registers);
     m_pending.reset();
-    m_motion.stop();
+    m_motor.motion().stop();
 
     put(m_keys.lock, 1);
     put(m_keys.torqueEnable, 0);
@@ -258,10 +245,10 @@ void VirtualFeetechServo::powerCycle()
         put(m_table->find(u"live_d_gain"), get(m_table->find(u"d_gain")));
         put(m_table->find(u"live_i_gain"), get(m_table->find(u"i_gain")));
     }
-    refreshRegisters();
+    m_motor.report(m_registers);
     // A servo wakes up holding where it is, not jumping to goal 0 when torque comes on.
     put(m_keys.goalPosition, get(m_keys.presentPosition));
-    refreshRegisters();
+    m_motor.report(m_registers);
 }
 
 // ---- instructions ---------------------------------------------------------------------------
@@ -348,7 +335,7 @@ std::optional<QByteArray> VirtualFeetechServo::execute(const feetech::Packet &pa
     case Instruction::Reset:
         // Clears the alarm latches; multi-turn counts are not simulated. Conditions that still
         // hold (voltage, temperature) show again at once.
-        m_motion.clearOverload();
+        m_motor.motion().clearOverload();
         put(m_keys.status, 0);
         break;
     case Instruction::Calibrate:
@@ -360,7 +347,7 @@ std::optional<QByteArray> VirtualFeetechServo::execute(const feetech::Packet &pa
     default:
         return std::nullopt;
     }
-    refreshRegisters();
+    m_motor.report(m_registers);
     if (!replies(packet.code, broadcast))
         return std::nullopt;
     return statusReply(replyId);
@@ -369,7 +356,7 @@ std::optional<QByteArray> VirtualFeetechServo::execute(const feetech::Packet &pa
 void VirtualFeetechServo::applySyncWrite(quint8 address, const QByteArray &data)
 {
     applyWrite(address, data);
-    refreshRegisters();
+    m_motor.report(m_registers);
 }
 
 bool VirtualFeetechServo::acceptable(const Register &reg, qint32 value) const
@@ -407,7 +394,7 @@ void VirtualFeetechServo::applyWrite(int address, QByteArrayView data)
         if (!acceptable(*reg, value))
             continue;
         if (reg == m_keys.torqueEnable) {
-            m_motion.clearOverload(); // re-arming torque clears an overload trip
+            m_motor.motion().clearOverload(); // re-arming torque clears an overload trip
             if (value == 128) { // STS / SMS: current position becomes the middle, torque off
                 calibratePresentTo(kMiddlePosition);
                 put(m_keys.torqueEnable, 0);
@@ -476,12 +463,57 @@ void VirtualFeetechServo::calibratePresentTo(qint32 target)
         return;
     // LeRobot convention: present = physical − offset, so offset = physical − target, taken
     // as the shortest way round the 4096-step circle.
-    int offset = ServoMotion::wrapFullCircle(int(std::lround(m_motion.position())) - target);
+    int offset =
+        ServoMotion::wrapFullCircle(int(std::lround(m_motor.motion().position())) - target);
     if (offset > kPositionSteps4096 / 2)
         offset -= kPositionSteps4096;
     offset = std::clamp(offset, m_keys.offset->minimum, m_keys.offset->maximum);
     store(m_keys.offset, offset);
-    refreshRegisters();
+    m_motor.report(m_registers);
+}
+
+// ---- time and environment -------------------------------------------------------------------
+
+void VirtualFeetechServo::advanceTo(qint64 nowUs)
+{
+    if (nowUs <= m_nowUs)
+        return;
+    m_motor.advance(m_registers, m_nowUs, nowUs);
+    m_nowUs = nowUs;
+}
+
+void VirtualFeetechServo::setSupplyVoltage(double volts)
+{
+    m_motor.motion().setSupplyVoltage(volts);
+    m_motor.report(m_registers);
+}
+
+void VirtualFeetechServo::setAmbientTemperature(double celsius)
+{
+    m_motor.motion().setAmbientTemperature(celsius);
+}
+
+void VirtualFeetechServo::setExternalLoad(int permille)
+{
+    m_motor.motion().setExternalLoad(permille);
+}
+
+void VirtualFeetechServo::setOverloadLatched(bool latched)
+{
+    m_motor.motion().setOverloadLatched(latched);
+    m_motor.report(m_registers);
+}
+
+void VirtualFeetechServo::setTemperature(double celsius)
+{
+    m_motor.motion().setTemperature(celsius);
+    m_motor.report(m_registers);
+}
+
+void VirtualFeetechServo::setPhysicalPosition(double steps)
+{
+    m_motor.motion().setPosition(steps);
+    m_motor.report(m_registers);
 }
 
 } // namespace sim

@@ -1,11 +1,11 @@
 // One simulated Feetech serial-bus servo: register file, EEPROM lock and instructions, driving
-// the motion / load / thermal model of sim/servomotion.h. Pure logic: no I/O, no timers; time
-// passes through advanceTo().
+// its motor (virtualfeetechmotor.h). Pure logic: no I/O, no timers; time passes through
+// advanceTo().
 #pragma once
 
 #include "feetechpacket.h"
 #include "registertable.h"
-#include "servomotion.h"
+#include "virtualfeetechmotor.h"
 
 #include <QByteArray>
 #include <QString>
@@ -24,13 +24,6 @@ public:
     // Supply defaults: a 2S LiPo (HLS: a 12 V supply).
     static constexpr double kDefaultSupplyVolts = 7.4;
     static constexpr double kDefaultHlsSupplyVolts = 12.0;
-
-    // Integration of the motion model (sim/servomotion.h).
-    static constexpr qint64 kMaxStepUs = 1000; // integration sub-step
-    static constexpr qint64 kMaxCatchUpUs =
-        600'000'000; // longer gaps integrate only the last 10 min
-    static constexpr double kCurrentUnitAmps = 0.0065; // register 69 unit
-    static constexpr double kAccelerationUnit = 100.0; // register 41 unit, step/s²
 
     // Baud-rate codes 0-7 of spec §6.
     static std::optional<int> baudCode(qint32 baud);
@@ -91,17 +84,17 @@ public:
     // maximum temperature it trips as a real one does (torque off, status bit 0x04).
     void setTemperatureRise(double celsiusPerSecond)
     {
-        m_motion.setTemperatureRise(celsiusPerSecond);
+        m_motor.motion().setTemperatureRise(celsiusPerSecond);
     }
-    double temperatureRise() const { return m_motion.temperatureRise(); }
+    double temperatureRise() const { return m_motor.motion().temperatureRise(); }
     // A latched overload: status bit 0x20 stays set and the motor stays limp even when torque is
     // switched on again; only a power cycle clears it.
     void setOverloadLatched(bool latched);
-    bool overloadLatched() const { return m_motion.overloadLatched(); }
-    int externalLoad() const { return m_motion.externalLoad(); }
-    double supplyVoltage() const { return m_motion.supplyVoltage(); }
-    double temperature() const { return m_motion.temperature(); }
-    double physicalPosition() const { return m_motion.position(); }
+    bool overloadLatched() const { return m_motor.motion().overloadLatched(); }
+    int externalLoad() const { return m_motor.motion().externalLoad(); }
+    double supplyVoltage() const { return m_motor.motion().supplyVoltage(); }
+    double temperature() const { return m_motor.motion().temperature(); }
+    double physicalPosition() const { return m_motor.motion().position(); }
 
     // Test hooks: decoded register units; setValue writes the live register, no lock semantics.
     qint32 value(QStringView key) const;
@@ -119,25 +112,13 @@ private:
         const feetech::Register *returnDelay = nullptr;
         const feetech::Register *secondaryId = nullptr;
         const feetech::Register *responseLevel = nullptr;
-        const feetech::Register *minAngle = nullptr;
-        const feetech::Register *maxAngle = nullptr;
-        const feetech::Register *maxTemperature = nullptr;
-        const feetech::Register *maxVoltage = nullptr;
-        const feetech::Register *minVoltage = nullptr;
         const feetech::Register *maxTorque = nullptr;
-        const feetech::Register *cwDeadZone = nullptr;
-        const feetech::Register *ccwDeadZone = nullptr;
         const feetech::Register *protectionCurrent = nullptr;
         const feetech::Register *offset = nullptr;
         const feetech::Register *mode = nullptr;
-        const feetech::Register *holdingTorque = nullptr;
-        const feetech::Register *protectionTime = nullptr;
-        const feetech::Register *overloadTorque = nullptr;
         const feetech::Register *torqueEnable = nullptr;
-        const feetech::Register *acceleration = nullptr;
         const feetech::Register *goalPosition = nullptr;
         const feetech::Register *goalTime = nullptr; // 44: time / PWM / HLS goal current
-        const feetech::Register *goalSpeed = nullptr;
         const feetech::Register *torqueLimit = nullptr;
         const feetech::Register *lock = nullptr;
         const feetech::Register *presentPosition = nullptr;
@@ -173,15 +154,6 @@ private:
     bool calibrate(const QByteArray &parameters);
     void calibratePresentTo(qint32 target);
 
-    bool is4096() const { return family() != feetech::Family::Scs; }
-
-    // Between the registers and the motion model (virtualfeetechservomotion.cpp).
-    MotionControl control() const;
-    double clampedGoal() const;
-    MotionCommand motionCommand() const; // what the registers ask of the motor now
-    void refreshRegisters();
-    quint8 statusBits() const;
-
     const feetech::RegisterTable *m_table = nullptr;
     feetech::ModelInfo m_model;
     Keys m_keys;
@@ -196,7 +168,7 @@ private:
     quint64 m_eepromRevision = 0;
     std::optional<PendingWrite> m_pending;
 
-    ServoMotion m_motion;
+    VirtualFeetechMotor m_motor;
     qint64 m_nowUs = 0;
 };
 

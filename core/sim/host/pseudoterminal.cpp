@@ -1,6 +1,8 @@
 // Pseudo-terminal master with a symlink to its slave, for the simulated servos.
 #include "pseudoterminal.h"
 
+#include "ptybaud.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>

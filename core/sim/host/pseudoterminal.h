@@ -51,8 +51,4 @@ private:
     QByteArray m_pending; // bytes the pty buffer could not take yet
 };
 
-// TCGETS2 through the master: Linux answers a pty master's termios requests with the slave's
-// settings, which are the ones the client set. Returns 0 when unavailable.
-qint32 readSlaveBaudRate(int masterFd);
-
 } // namespace sim

@@ -1,6 +1,6 @@
 // Reads the client's baud rate from a pty with TCGETS2 (kept apart: <asm/termbits.h> and
 // <termios.h> cannot share a translation unit).
-#include <QtGlobal>
+#include "ptybaud.h"
 
 #if defined(Q_OS_LINUX)
 #include <asm/termbits.h>

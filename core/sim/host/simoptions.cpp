@@ -1,5 +1,5 @@
 // servosim's command line: servosim ptk|feetech --link PATH [options].
-#include "simulator.h"
+#include "simoptions.h"
 
 #include "hex.h"
 

@@ -1,6 +1,7 @@
 // Simulator engine: pty transport, wire-rate pacing, echo, faults and log around a device.
 #include "simulator.h"
 
+#include "simulatorfeetech.h"
 #include "virtualptkservo.h"
 
 #include <QCoreApplication>
@@ -38,9 +39,6 @@ double byteTimeUs(qint32 baud)
 }
 
 } // namespace
-
-// In simulatorfeetech.cpp: the bus for the --servo specs, loaded from --state when given.
-std::unique_ptr<VirtualDevice> createFeetechBus(const SimulatorOptions &options, QString *error);
 
 std::unique_ptr<Simulator> Simulator::create(const SimulatorOptions &options, QString *error)
 {
@@ -114,6 +112,11 @@ void Simulator::stop()
 VirtualPtkServo *Simulator::ptkServo()
 {
     return dynamic_cast<VirtualPtkServo *>(m_device.get());
+}
+
+VirtualFeetechBus *Simulator::feetechBus()
+{
+    return dynamic_cast<VirtualFeetechBus *>(m_device.get());
 }
 
 void Simulator::powerCycle()

@@ -1,6 +1,6 @@
 // The simulator's Feetech side: building the bus from --servo specs and its --state file, a
 // --robot arm set up from its template, and the hand's --hand sweeps.
-#include "simulator.h"
+#include "simulatorfeetech.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -48,7 +48,7 @@ void setUpRobot(VirtualFeetechBus &bus, const feetech::RobotTemplate &robot, boo
 
 } // namespace
 
-std::unique_ptr<VirtualDevice> createFeetechBus(const SimulatorOptions &options, QString *error)
+std::unique_ptr<VirtualFeetechBus> createFeetechBus(const SimulatorOptions &options, QString *error)
 {
     const auto sharing = options.allowSharedIds ? VirtualFeetechBus::SharedIds::Allow
                                                 : VirtualFeetechBus::SharedIds::Refuse;
@@ -84,11 +84,6 @@ std::unique_ptr<VirtualDevice> createFeetechBus(const SimulatorOptions &options,
         }
     }
     return bus;
-}
-
-VirtualFeetechBus *Simulator::feetechBus()
-{
-    return dynamic_cast<VirtualFeetechBus *>(m_device.get());
 }
 
 } // namespace sim

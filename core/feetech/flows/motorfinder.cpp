@@ -1,5 +1,5 @@
-// Motor set-up, the search: a broadcast PING per rate, then the one servo identified and read.
-#include "motorsetup.h"
+// The search for the one servo: a broadcast PING per rate, then the one servo identified and read.
+#include "motorfinder.h"
 
 #include "linksession.h"
 #include "sharedidcheck.h"
@@ -12,7 +12,7 @@ namespace {
 
 struct Tr
 {
-    Q_DECLARE_TR_FUNCTIONS(MotorSetup)
+    Q_DECLARE_TR_FUNCTIONS(MotorFinder)
 };
 
 } // namespace
@@ -21,14 +21,14 @@ namespace feetech {
 
 namespace {
 
-QString jointText(const MotorTarget &target)
+QString jointText(const QString &joint)
 {
-    return target.joint.isEmpty() ? Tr::tr("this motor") : target.joint;
+    return joint.isEmpty() ? Tr::tr("this motor") : joint;
 }
 
 } // namespace
 
-struct MotorSetup::Search
+struct MotorFinder::Search
 {
     // What a rate's broadcast PING brought back.
     struct Rate
@@ -38,14 +38,28 @@ struct MotorSetup::Search
         bool collided = false; // more bytes came than the clean replies account for
     };
 
-    MotorTarget target;
+    QString model; // empty: any model with a register table
+    QString joint;
     SearchDone done;
     QVector<qint32> rates;
     QVector<Rate> heard;
     MotorSearch result;
 };
 
-Exchange MotorSetup::identityRequest(quint8 id, bool quiet)
+bool servoIsModel(const ServoInfo &servo, QStringView model)
+{
+    const auto wanted = ModelTable::builtIn().findByName(model);
+    if (!wanted)
+        return servo.model.name.compare(model, Qt::CaseInsensitive) == 0;
+    return wanted->major == servo.modelMajor && wanted->minor == servo.modelMinor;
+}
+
+MotorFinder::MotorFinder(BusExchange &bus, std::function<bool()> stopRequested)
+    : m_bus(bus)
+    , m_stopRequested(std::move(stopRequested))
+{ }
+
+Exchange MotorFinder::identityRequest(quint8 id, bool quiet)
 {
     Exchange ask;
     ask.request = feetech::read(id, kIdentityAddress, kIdentitySize);
@@ -56,23 +70,19 @@ Exchange MotorSetup::identityRequest(quint8 id, bool quiet)
     return ask;
 }
 
-void MotorSetup::find(const MotorTarget &target, SearchDone done)
-{
-    search(target, std::move(done));
-}
-
-void MotorSetup::search(const MotorTarget &target, SearchDone done)
+void MotorFinder::find(const QString &model, const QString &joint, SearchDone done)
 {
     auto search = std::make_shared<Search>();
-    search->target = target;
+    search->model = model;
+    search->joint = joint;
     search->done = std::move(done);
     search->rates = baudRates();
     probeRate(search, 0);
 }
 
-void MotorSetup::probeRate(std::shared_ptr<Search> search, int index)
+void MotorFinder::probeRate(std::shared_ptr<Search> search, int index)
 {
-    if (m_cancelled) {
+    if (m_stopRequested()) {
         search->result.stopped = true;
         endSearch(search, MotorSearch::Verdict::Failed, Tr::tr("Stopped; nothing was written."));
         return;
@@ -118,7 +128,7 @@ void MotorSetup::probeRate(std::shared_ptr<Search> search, int index)
     });
 }
 
-void MotorSetup::decide(std::shared_ptr<Search> search)
+void MotorFinder::decide(std::shared_ptr<Search> search)
 {
     MotorSearch &result = search->result;
     for (const Search::Rate &rate : std::as_const(search->heard)) {
@@ -164,7 +174,7 @@ void MotorSetup::decide(std::shared_ptr<Search> search)
                         .arg(list));
 }
 
-void MotorSetup::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud)
+void MotorFinder::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud)
 {
     search->result.servo.id = id;
     search->result.servo.baud = baud;
@@ -208,7 +218,7 @@ void MotorSetup::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud)
     });
 }
 
-void MotorSetup::checkShared(std::shared_ptr<Search> search)
+void MotorFinder::checkShared(std::shared_ptr<Search> search)
 {
     const ServoInfo &servo = search->result.servo;
     checkSharedId(
@@ -240,10 +250,9 @@ void MotorSetup::checkShared(std::shared_ptr<Search> search)
         });
 }
 
-void MotorSetup::judgeModel(std::shared_ptr<Search> search)
+void MotorFinder::judgeModel(std::shared_ptr<Search> search)
 {
     const ServoInfo &servo = search->result.servo;
-    const MotorTarget &target = search->target;
     if (!servo.hasTable()) {
         endSearch(search, MotorSearch::Verdict::WrongModel,
                   Tr::tr("Found %1, model %2 (model number %3), which ServoBench has no "
@@ -252,19 +261,20 @@ void MotorSetup::judgeModel(std::shared_ptr<Search> search)
                       .arg(servo.modelNumber()));
         return;
     }
-    if (!target.model.isEmpty() && !servoIsModel(servo, target.model)) {
-        endSearch(search, MotorSearch::Verdict::WrongModel,
-                  Tr::tr("Found %1, model %2, but %3 needs model %4. Nothing was written: "
-                         "connect a servo of model %4.")
-                      .arg(servoName(servo), servo.model.name, jointText(target), target.model));
+    if (!search->model.isEmpty() && !servoIsModel(servo, search->model)) {
+        endSearch(
+            search, MotorSearch::Verdict::WrongModel,
+            Tr::tr("Found %1, model %2, but %3 needs model %4. Nothing was written: "
+                   "connect a servo of model %4.")
+                .arg(servoName(servo), servo.model.name, jointText(search->joint), search->model));
         return;
     }
     endSearch(search, MotorSearch::Verdict::OneServo,
               Tr::tr("Found one servo: %1, model %2.").arg(servoName(servo), servo.model.name));
 }
 
-void MotorSetup::endSearch(std::shared_ptr<Search> search, MotorSearch::Verdict verdict,
-                           const QString &message)
+void MotorFinder::endSearch(std::shared_ptr<Search> search, MotorSearch::Verdict verdict,
+                            const QString &message)
 {
     search->result.verdict = verdict;
     search->result.message = message;
