@@ -1,7 +1,6 @@
 // servoctl feetech calibrate and calibration save/load: an arm's joints recorded by hand, and
 // LeRobot calibration files read from and written to the servos.
-#include "feetechcalibration.h"
-#include "feetechcommand.h"
+#include "feetechcalibrationcommands.h"
 
 #include "armcalibration.h"
 #include "lerobotcalibration.h"
@@ -50,8 +49,7 @@ bool isTerminal(FILE *stream)
 #endif
 }
 
-} // namespace
-
+// Register values by key: the position offset, the angle limits and torque enable of `servo`.
 std::optional<QHash<QString, qint32>> readCalibrationRegisters(FeetechDevice &device,
                                                                const ServoInfo &servo)
 {
@@ -68,23 +66,34 @@ std::optional<QHash<QString, qint32>> readCalibrationRegisters(FeetechDevice &de
     return valuesByKey(decodeMemory(servo.table(), *memory));
 }
 
-// --ids LIST: the joints, each once.
-QVector<quint8> FeetechCommand::jointIds(const QString &what) const
+// What FeetechCommandGroup::writeVerified came to, for the calibration commands' reports.
+template<typename Programmed>
+bool isVerified(const Programmed &outcome)
 {
-    if (!m_args.has(QStringLiteral("ids")))
-        throw UsageError {Tr::tr("%1 needs --ids LIST (such as 1-6)").arg(what)};
-    const QVector<quint8> ids = idList(m_args.value(QStringLiteral("ids")), feetech::kMaxServoId);
-    if (ids.isEmpty())
-        throw UsageError {Tr::tr("--ids names no servo")};
-    for (int i = 0; i < ids.size(); ++i) {
-        if (ids.indexOf(ids.at(i)) != i)
-            throw UsageError {Tr::tr("--ids names servo %1 twice").arg(ids.at(i))};
-    }
-    return ids;
+    return outcome.failure.isEmpty() && outcome.mismatches.isEmpty();
+}
+template<typename Programmed>
+QString problemText(const Programmed &outcome)
+{
+    return outcome.failure.isEmpty() ? outcome.described.join(QStringLiteral("; "))
+                                     : outcome.failure;
+}
+// written, verified, mismatches (and error); both false when the write was not attempted.
+template<typename Programmed>
+QJsonObject writeJson(const Programmed &outcome, bool attempted)
+{
+    QJsonObject object {{QStringLiteral("written"), attempted && outcome.failure.isEmpty()},
+                        {QStringLiteral("verified"), attempted && isVerified(outcome)},
+                        {QStringLiteral("mismatches"), outcome.mismatches}};
+    if (!outcome.failure.isEmpty())
+        object.insert(QStringLiteral("error"), outcome.failure);
+    return object;
 }
 
+} // namespace
+
 // --names LIST: one name a joint, in the order of --ids; id_N when not given.
-QStringList FeetechCommand::jointNames(const QVector<quint8> &ids) const
+QStringList FeetechCalibrationCommands::jointNames(const QVector<quint8> &ids) const
 {
     QStringList names;
     if (!m_args.has(QStringLiteral("names"))) {
@@ -111,8 +120,8 @@ QStringList FeetechCommand::jointNames(const QVector<quint8> &ids) const
 
 // Opens the port and identifies the servo of every joint; nothing, once the failure is printed,
 // when the port cannot be opened, or a servo cannot be reached or has no position offset.
-std::optional<QVector<ServoInfo>> FeetechCommand::identifyJoints(FeetechDevice &device,
-                                                                 const QVector<quint8> &ids)
+std::optional<QVector<ServoInfo>>
+FeetechCalibrationCommands::identifyJoints(FeetechDevice &device, const QVector<quint8> &ids)
 {
     if (!device.open(busBaud())) {
         fail(device.error());
@@ -137,7 +146,7 @@ std::optional<QVector<ServoInfo>> FeetechCommand::identifyJoints(FeetechDevice &
     return servos;
 }
 
-int FeetechCommand::calibrate(const QString &what, const QStringList &operands)
+int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList &operands)
 {
     allowOptions(what,
                  {QStringLiteral("ids"), QStringLiteral("names"), QStringLiteral("full-turn"),
@@ -287,9 +296,10 @@ int FeetechCommand::calibrate(const QString &what, const QStringList &operands)
 // Streams the joints' positions into their recorders until --duration has passed, or Enter on
 // the terminal. A servo that misses cycles is marked lost. False, once
 // the failure is printed, when the link went down or the user interrupted.
-bool FeetechCommand::recordJoints(FeetechDevice &device, const QVector<ServoInfo> &servos,
-                                  QVector<feetech::JointRecording> &joints,
-                                  std::optional<double> duration)
+bool FeetechCalibrationCommands::recordJoints(FeetechDevice &device,
+                                              const QVector<ServoInfo> &servos,
+                                              QVector<feetech::JointRecording> &joints,
+                                              std::optional<double> duration)
 {
     feetech::Session &session = device.session();
     feetech::TelemetryOptions options;
@@ -381,7 +391,8 @@ bool FeetechCommand::recordJoints(FeetechDevice &device, const QVector<ServoInfo
 }
 
 // The recorded ranges, one row a joint; `live` clears what an earlier table left on the line.
-void FeetechCommand::printRecording(const QVector<feetech::JointRecording> &joints, bool live)
+void FeetechCalibrationCommands::printRecording(const QVector<feetech::JointRecording> &joints,
+                                                bool live)
 {
     const QString endOfLine = live ? QStringLiteral("\x1b[K\n") : QStringLiteral("\n");
     m_output.out << QStringLiteral("%1  %2  %3  %4  %5")
@@ -406,6 +417,178 @@ void FeetechCommand::printRecording(const QVector<feetech::JointRecording> &join
                      << endOfLine;
     }
     m_output.out.flush();
+}
+
+int FeetechCalibrationCommands::calibration(const QString &what, const QStringList &operands)
+{
+    if (operands.isEmpty())
+        throw UsageError {Tr::tr("%1 needs save or load").arg(what)};
+    const QString sub = operands.first();
+    const QString named = what + u' ' + sub;
+    if (sub == u"save")
+        return saveCalibration(named, operands.mid(1));
+    if (sub == u"load")
+        return loadCalibration(named, operands.mid(1));
+    throw UsageError {Tr::tr("unknown %1 command \"%2\": use save or load").arg(what, sub)};
+}
+
+int FeetechCalibrationCommands::saveCalibration(const QString &what, const QStringList &operands)
+{
+    allowOptions(what, {QStringLiteral("ids"), QStringLiteral("names")});
+    expectOperands(what, operands, 1, Tr::tr("one FILE"));
+    const QVector<quint8> ids = jointIds(what);
+    const QStringList names = jointNames(ids);
+    const QString path = operands.first();
+    checkFolder(path);
+
+    FeetechDevice device(m_args, m_output);
+    const auto servos = identifyJoints(device, ids);
+    if (!servos)
+        return ExitDeviceFailure;
+    QVector<feetech::LeRobotMotor> motors;
+    for (int i = 0; i < servos->size(); ++i) {
+        const ServoInfo &servo = servos->at(i);
+        const auto values = readCalibrationRegisters(device, servo);
+        if (!values)
+            return fail(device.error());
+        const feetech::LeRobotMotor motor {
+            names.at(i),
+            servo.id,
+            0,
+            values->value(QString::fromUtf16(feetech::kOffsetKey)),
+            values->value(QString::fromUtf16(feetech::kMinimumLimitKey)),
+            values->value(QString::fromUtf16(feetech::kMaximumLimitKey))};
+        // A file LeRobot (and load) could not use is not written.
+        if (motor.rangeMin >= motor.rangeMax)
+            return fail(Tr::tr("servo %1 holds the limits %2 to %3, which are no calibrated range "
+                               "(min = max = 0 is multi-turn mode); %4 was not written")
+                            .arg(servo.id)
+                            .arg(motor.rangeMin)
+                            .arg(motor.rangeMax)
+                            .arg(QDir::toNativeSeparators(path)));
+        motors.append(motor);
+    }
+    feetech::keepDriveModes(motors, path);
+    QString error;
+    if (!feetech::saveLeRobotCalibration(motors, path, &error))
+        return fail(error);
+    QJsonObject joints;
+    for (const feetech::LeRobotMotor &motor : std::as_const(motors))
+        joints.insert(motor.name,
+                      QJsonObject {{QStringLiteral("id"), motor.id},
+                                   {QStringLiteral("drive_mode"), motor.driveMode},
+                                   {QStringLiteral("homing_offset"), motor.homingOffset},
+                                   {QStringLiteral("range_min"), motor.rangeMin},
+                                   {QStringLiteral("range_max"), motor.rangeMax}});
+    if (m_output.json)
+        printJson(m_output.out,
+                  QJsonObject {{QStringLiteral("file"), path}, {QStringLiteral("joints"), joints}});
+    else
+        m_output.out << Tr::tr("saved the calibration of %n servo(s) to %1", nullptr,
+                               int(motors.size()))
+                            .arg(QDir::toNativeSeparators(path))
+                     << '\n';
+    m_output.out.flush();
+    return ExitOk;
+}
+
+int FeetechCalibrationCommands::loadCalibration(const QString &what, const QStringList &operands)
+{
+    allowOptions(what, {});
+    expectOperands(what, operands, 1, Tr::tr("one FILE"));
+    const QString path = operands.first();
+    QString error;
+    const auto motors = feetech::loadLeRobotCalibration(path, &error);
+    if (!motors)
+        throw UsageError {error};
+
+    FeetechDevice device(m_args, m_output);
+    QVector<quint8> ids;
+    for (const feetech::LeRobotMotor &motor : *motors)
+        ids.append(quint8(motor.id));
+    const auto servos = identifyJoints(device, ids);
+    if (!servos)
+        return ExitDeviceFailure;
+    bool allDone = true;
+    QJsonArray reports;
+    for (int i = 0; i < motors->size(); ++i) {
+        const feetech::LeRobotMotor &motor = motors->at(i);
+        const ServoInfo &servo = servos->at(i);
+        const auto current = readCalibrationRegisters(device, servo);
+        if (!current)
+            return fail(device.error());
+        const QVector<model::WriteItem> wanted =
+            feetech::calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax);
+        QVector<model::WriteItem> changes;
+        QJsonArray changesJson;
+        QStringList described;
+        for (const model::WriteItem &item : wanted) {
+            const qint32 now = current->value(item.key);
+            // A servo LeRobot gave the limit 4096 holds what the file says.
+            const bool asInFile =
+                item.key == QString::fromUtf16(feetech::kMaximumLimitKey) && now == motor.rangeMax;
+            if (now == item.value || asInFile)
+                continue;
+            changes.append(item);
+            changesJson.append(QJsonObject {{QStringLiteral("key"), item.key},
+                                            {QStringLiteral("from"), now},
+                                            {QStringLiteral("to"), qint64(item.value)}});
+            described.append(QStringLiteral("%1 %2 → %3").arg(item.key).arg(now).arg(item.value));
+        }
+        QJsonObject report {{QStringLiteral("name"), motor.name},
+                            {QStringLiteral("id"), motor.id},
+                            {QStringLiteral("drive_mode"), motor.driveMode},
+                            {QStringLiteral("changes"), changesJson}};
+        const QString joint = Tr::tr("%1 (servo %2)").arg(motor.name).arg(motor.id);
+        if (motor.driveMode != 0) {
+            const QString kept = Tr::tr("drive_mode %1 is LeRobot's software setting (the "
+                                        "direction inverted), held by no register: it is kept "
+                                        "in the file only")
+                                     .arg(motor.driveMode);
+            report.insert(QStringLiteral("drive_mode_note"), kept);
+            if (!m_output.json)
+                m_output.out << Tr::tr("%1: note: %2").arg(joint, kept) << '\n';
+        }
+        // A new offset under torque would move the horn to the old goal in new coordinates.
+        const bool torqueOn = current->value(QStringLiteral("torque_enable")) != 0;
+        QString line;
+        if (changes.isEmpty()) {
+            report.insert(QStringLiteral("verified"), true);
+            line = Tr::tr("%1: already holds the file's values").arg(joint);
+        } else if (sharesItsId(device, servo)) {
+            return ExitDeviceFailure;
+        } else if (torqueOn) {
+            allDone = false;
+            const QString refusal = Tr::tr("torque is on: the new offset would move the horn; "
+                                           "switch torque off (support the arm) and load again");
+            report.insert(QStringLiteral("refusal"), refusal);
+            line = Tr::tr("%1: %2; refused, nothing written: %3")
+                       .arg(joint, described.join(QStringLiteral(", ")), refusal);
+        } else {
+            const Programmed outcome = writeVerified(device, servo, changes);
+            const QJsonObject written = writeJson(outcome, true);
+            for (auto it = written.begin(); it != written.end(); ++it)
+                report.insert(it.key(), it.value());
+            allDone = allDone && isVerified(outcome);
+            line = isVerified(outcome)
+                ? Tr::tr("%1: %2; written and verified")
+                      .arg(joint, described.join(QStringLiteral(", ")))
+                : Tr::tr("%1: %2; NOT verified: %3")
+                      .arg(joint, described.join(QStringLiteral(", ")), problemText(outcome));
+        }
+        reports.append(report);
+        if (!m_output.json)
+            m_output.out << line << '\n';
+    }
+    if (m_output.json)
+        printJson(
+            m_output.out,
+            QJsonObject {{QStringLiteral("file"), path}, {QStringLiteral("joints"), reports}});
+    m_output.out.flush();
+    if (!allDone)
+        return fail(Tr::tr("the calibration of %1 was not loaded whole: see above")
+                        .arg(QDir::toNativeSeparators(path)));
+    return ExitOk;
 }
 
 } // namespace cli

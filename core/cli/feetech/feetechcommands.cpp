@@ -1,17 +1,18 @@
-// servoctl feetech: command dispatch and what every command shares (options, the target servo,
-// writing with read-back).
+// servoctl feetech: picks the command group that runs the command.
 #include "feetechcommands.h"
-#include "feetechcommand.h"
 
-#include "hex.h"
+#include "feetechcalibrationcommands.h"
+#include "feetechflowcommands.h"
+#include "feetechhealthcommand.h"
+#include "feetechmonitorcommand.h"
+#include "feetechprofilecommands.h"
+#include "feetechregistercommands.h"
+#include "feetechsetupcommand.h"
 
 #include <QCoreApplication>
-#include <QDir>
-#include <QFileInfo>
-#include <QJsonArray>
-#include <QJsonObject>
+#include <QVector>
 
-#include <limits>
+#include <utility>
 
 namespace {
 
@@ -25,264 +26,60 @@ struct Tr
 
 namespace cli {
 
-int FeetechCommand::run(const QStringList &rest)
+namespace {
+
+using Runner = int (*)(const Arguments &, const Output &, const QString &, const QStringList &);
+
+// A fresh group for each command: what a group notes (such as an unlocked servo) is noted once
+// per command.
+template<typename Group, int (Group::*command)(const QString &, const QStringList &)>
+int runIn(const Arguments &args, const Output &output, const QString &what,
+          const QStringList &operands)
+{
+    Group group(args, output);
+    return (group.*command)(what, operands);
+}
+
+} // namespace
+
+int runFeetechCommand(const Arguments &args, const QStringList &rest, const Output &output)
 {
     if (rest.isEmpty())
         throw UsageError {Tr::tr("feetech needs a command (try servoctl --help)")};
     const QString command = rest.first();
     const QStringList operands = rest.mid(1);
-    using Handler = int (FeetechCommand::*)(const QString &, const QStringList &);
-    static const QVector<std::pair<const char *, Handler>> kCommands {
-        {"scan", &FeetechCommand::scan},
-        {"ping", &FeetechCommand::ping},
-        {"read", &FeetechCommand::read},
-        {"get", &FeetechCommand::get},
-        {"set", &FeetechCommand::set},
-        {"save", &FeetechCommand::save},
-        {"load", &FeetechCommand::load},
-        {"set-id", &FeetechCommand::setId},
-        {"set-baud", &FeetechCommand::setBaud},
-        {"calibrate-middle", &FeetechCommand::calibrateMiddle},
-        {"factory-reset", &FeetechCommand::factoryReset},
-        {"reboot", &FeetechCommand::reboot},
-        {"recover", &FeetechCommand::recover},
-        {"lock", &FeetechCommand::lock},
-        {"setup-motor", &FeetechCommand::setupMotor},
-        {"monitor", &FeetechCommand::monitor},
-        {"identify", &FeetechCommand::identify},
-        {"health", &FeetechCommand::health},
-        {"calibrate", &FeetechCommand::calibrate},
-        {"calibration", &FeetechCommand::calibration},
+    static const QVector<std::pair<const char *, Runner>> kCommands {
+        {"scan", &runIn<FeetechRegisterCommands, &FeetechRegisterCommands::scan>},
+        {"ping", &runIn<FeetechRegisterCommands, &FeetechRegisterCommands::ping>},
+        {"read", &runIn<FeetechRegisterCommands, &FeetechRegisterCommands::read>},
+        {"get", &runIn<FeetechRegisterCommands, &FeetechRegisterCommands::get>},
+        {"set", &runIn<FeetechRegisterCommands, &FeetechRegisterCommands::set>},
+        {"save", &runIn<FeetechProfileCommands, &FeetechProfileCommands::save>},
+        {"load", &runIn<FeetechProfileCommands, &FeetechProfileCommands::load>},
+        {"set-id", &runIn<FeetechFlowCommands, &FeetechFlowCommands::setId>},
+        {"set-baud", &runIn<FeetechFlowCommands, &FeetechFlowCommands::setBaud>},
+        {"calibrate-middle", &runIn<FeetechFlowCommands, &FeetechFlowCommands::calibrateMiddle>},
+        {"factory-reset", &runIn<FeetechFlowCommands, &FeetechFlowCommands::factoryReset>},
+        {"reboot", &runIn<FeetechFlowCommands, &FeetechFlowCommands::reboot>},
+        {"recover", &runIn<FeetechFlowCommands, &FeetechFlowCommands::recover>},
+        {"lock", &runIn<FeetechFlowCommands, &FeetechFlowCommands::lock>},
+        {"setup-motor", &runIn<FeetechSetupCommand, &FeetechSetupCommand::setupMotor>},
+        {"monitor", &runIn<FeetechMonitorCommand, &FeetechMonitorCommand::monitor>},
+        {"identify", &runIn<FeetechFlowCommands, &FeetechFlowCommands::identify>},
+        {"health", &runIn<FeetechHealthCommand, &FeetechHealthCommand::health>},
+        {"calibrate", &runIn<FeetechCalibrationCommands, &FeetechCalibrationCommands::calibrate>},
+        {"calibration",
+         &runIn<FeetechCalibrationCommands, &FeetechCalibrationCommands::calibration>},
     };
-    for (const auto &[name, handler] : kCommands) {
+    for (const auto &[name, runner] : kCommands) {
         if (command == QLatin1String(name))
-            return (this->*handler)(QStringLiteral("feetech ") + command, operands);
+            return runner(args, output, QStringLiteral("feetech ") + command, operands);
     }
     QStringList names;
     for (const auto &entry : kCommands)
         names.append(QLatin1String(entry.first));
     throw UsageError {Tr::tr("unknown feetech command \"%1\": use %2")
                           .arg(command, names.join(QStringLiteral(", ")))};
-}
-
-int FeetechCommand::fail(const QString &message)
-{
-    m_output.err << "servoctl: " << message << '\n';
-    m_output.err.flush();
-    return ExitDeviceFailure;
-}
-
-// Options `what` accepts besides --port, --baud and --echo.
-void FeetechCommand::allowOptions(const QString &what, const QStringList &allowed) const
-{
-    static const QStringList kGlobal {QStringLiteral("port"), QStringLiteral("baud"),
-                                      QStringLiteral("echo")};
-    for (const QString &name : m_args.valueNames()) {
-        if (!allowed.contains(name) && !kGlobal.contains(name))
-            throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
-    }
-    for (const QString &flag :
-         {QStringLiteral("thorough"), QStringLiteral("csv"), QStringLiteral("dry-run"),
-          QStringLiteral("move-test"), QStringLiteral("check")}) {
-        if (m_args.flag(flag) && !allowed.contains(flag))
-            throw UsageError {Tr::tr("%1 takes no --%2").arg(what, flag)};
-    }
-}
-
-void FeetechCommand::expectOperands(const QString &what, const QStringList &operands, int count,
-                                    const QString &names)
-{
-    if (operands.size() == count)
-        return;
-    if (count == 0)
-        throw UsageError {Tr::tr("%1 takes no arguments").arg(what)};
-    throw UsageError {Tr::tr("%1 needs %2").arg(what, names)};
-}
-
-// The servo's rate on the bus (--baud, 1000000 when not given).
-qint32 FeetechCommand::busBaud() const
-{
-    if (!m_args.has(QStringLiteral("baud")))
-        return kDefaultBaud;
-    return parseBaud(QStringLiteral("--baud"), m_args.value(QStringLiteral("baud")));
-}
-
-qint32 FeetechCommand::parseBaud(const QString &what, const QString &text)
-{
-    const auto value = util::parseInteger(text);
-    if (!value || *value <= 0 || *value > std::numeric_limits<qint32>::max()
-        || !feetech::baudCode(qint32(*value)))
-        throw UsageError {
-            Tr::tr("%1: \"%2\" is not a Feetech baud rate (%3)").arg(what, text, baudList())};
-    return qint32(*value);
-}
-
-quint8 FeetechCommand::servoId(const QString &what) const
-{
-    if (!m_args.has(QStringLiteral("id")))
-        throw UsageError {Tr::tr("%1 needs --id N").arg(what)};
-    return quint8(integerOption(m_args, QStringLiteral("id"), 0, feetech::kMaxServoId));
-}
-
-void FeetechCommand::checkFolder(const QString &path)
-{
-    if (!QFileInfo(path).absoluteDir().exists())
-        throw UsageError {
-            Tr::tr("the folder of %1 does not exist").arg(QDir::toNativeSeparators(path))};
-}
-
-// The servo --id at --baud (usage errors are thrown before the port is opened); nothing, once
-// the failure is printed, when the port cannot be opened or the servo does not answer.
-std::optional<FeetechCommand::Target> FeetechCommand::identifyServo(const QString &what)
-{
-    const quint8 id = servoId(what);
-    const qint32 baud = busBaud();
-    Target target;
-    target.device = std::make_unique<FeetechDevice>(m_args, m_output);
-    if (!target.device->open(baud)) {
-        fail(target.device->error());
-        return std::nullopt;
-    }
-    const auto servo = target.device->identify(id, baud, &target.latency);
-    if (!servo) {
-        fail(target.device->error());
-        return std::nullopt;
-    }
-    target.servo = *servo;
-    noteIfUnlocked(target);
-    return target;
-}
-
-void FeetechCommand::noteIfUnlocked(Target &target)
-{
-    // A servo whose EEPROM lock is open (another program such as LeRobot leaves lock = 0 on
-    // every servo it configures; a write cut short does too) keeps whatever anything writes
-    // into its EEPROM: the user should know, once per servo and command, and how to lock it.
-    // A servo that does not answer this read is left to the command.
-    const ServoInfo &servo = target.servo;
-    if (m_unlockedNoted.contains(servo.id))
-        return;
-    const feetech::Register *lock = servo.hasTable() ? servo.table().find(u"lock") : nullptr;
-    if (!lock)
-        return;
-    const auto memory = target.device->read(servo, {{lock->address, lock->size}});
-    if (!memory)
-        return;
-    const qint32 value = valuesByKey(decodeMemory(servo.table(), *memory)).value(lock->key, 1);
-    if (value != 0)
-        return;
-    m_unlockedNoted.insert(servo.id);
-    m_output.err << "servoctl: "
-                 << Tr::tr("note: servo %1's EEPROM is unlocked (lock = 0), as some programs "
-                           "(LeRobot among them) leave it: a setting written to it now survives "
-                           "a power cut. servoctl locks it again after each of its own EEPROM "
-                           "writes; to lock it now: servoctl feetech lock --id %1")
-                        .arg(servo.id)
-                 << '\n';
-    m_output.err.flush();
-}
-
-std::optional<FeetechCommand::Target>
-FeetechCommand::identifyKnownServo(const QString &what, const QString &unknownModel)
-{
-    auto target = identifyServo(what);
-    if (target && !target->servo.hasTable()) {
-        fail(unknownModel.arg(target->servo.id).arg(target->servo.model.name));
-        return std::nullopt;
-    }
-    return target;
-}
-
-std::optional<FeetechCommand::Target> FeetechCommand::identifyServoToWrite(const QString &what)
-{
-    auto target = identifyKnownServo(
-        what, Tr::tr("servo %1 is of an unknown model (%2); nothing is written to it"));
-    if (target && sharesItsId(*target->device, target->servo))
-        return std::nullopt;
-    return target;
-}
-
-bool FeetechCommand::sharesItsId(FeetechDevice &device, const ServoInfo &servo)
-{
-    // Two servos at one ID would both take whatever is written, and garble every read-back.
-    const auto shared =
-        device.operate([&device, &servo] { device.session().checkSharedId(servo); });
-    if (shared && shared->ok && !shared->servo.sharedId)
-        return false;
-    fail(shared ? shared->message : device.error());
-    return true;
-}
-
-// Writes `items` (register units), reads them back and compares: exit 0 only when every
-// value reads back as written.
-int FeetechCommand::program(Target &target, const QVector<model::WriteItem> &items,
-                            const QJsonObject &extra)
-{
-    const ServoInfo &servo = target.servo;
-    const Programmed written = writeVerified(*target.device, servo, items);
-    if (!written.failure.isEmpty())
-        return fail(written.failure);
-    const bool verified = written.mismatches.isEmpty();
-    if (m_output.json) {
-        QJsonObject report = extra;
-        report.insert(QStringLiteral("servo"), servoJson(servo));
-        report.insert(QStringLiteral("verified"), verified);
-        report.insert(QStringLiteral("values"), written.values);
-        report.insert(QStringLiteral("mismatches"), written.mismatches);
-        printJson(m_output.out, report);
-    } else if (verified) {
-        m_output.out << Tr::tr("written to servo %1 and verified: %n register(s)", nullptr,
-                               int(items.size()))
-                            .arg(servo.id)
-                     << '\n';
-        m_output.out.flush();
-    }
-    if (!verified)
-        return fail(
-            Tr::tr("verification failed: %1").arg(written.described.join(QStringLiteral("; "))));
-    return ExitOk;
-}
-
-FeetechCommand::Programmed FeetechCommand::writeVerified(FeetechDevice &device,
-                                                         const ServoInfo &servo,
-                                                         const QVector<model::WriteItem> &items)
-{
-    QString error;
-    const auto writes = feetech::encodeWrites(servo.table(), items, &error);
-    if (!writes)
-        throw UsageError {error};
-    Programmed written;
-    Memory readBack;
-    const auto result = device.operate(
-        [&device, &servo, writes] { device.session().write(servo, *writes); }, &readBack);
-    if (!result || !result->ok) {
-        written.failure = result ? result->message : device.error();
-        return written;
-    }
-    const QHash<QString, qint32> read = valuesByKey(decodeMemory(servo.table(), readBack));
-    for (const model::WriteItem &item : items) {
-        const auto found = read.constFind(item.key);
-        if (found != read.constEnd())
-            written.values.insert(item.key, *found);
-        if (found != read.constEnd() && *found == item.value)
-            continue;
-        written.mismatches.append(
-            QJsonObject {{QStringLiteral("key"), item.key},
-                         {QStringLiteral("written"), qint64(item.value)},
-                         {QStringLiteral("read"),
-                          found != read.constEnd() ? QJsonValue(*found) : QJsonValue()}});
-        written.described.append(
-            Tr::tr("%1: wrote %2, the servo holds %3")
-                .arg(item.key)
-                .arg(item.value)
-                .arg(found != read.constEnd() ? QString::number(*found) : Tr::tr("nothing")));
-    }
-    return written;
-}
-
-int runFeetechCommand(const Arguments &args, const QStringList &rest, const Output &output)
-{
-    return FeetechCommand(args, output).run(rest);
 }
 
 } // namespace cli

@@ -1,6 +1,6 @@
-// servoctl feetech set-id, set-baud, calibrate-middle, factory-reset, reboot and recover:
-// guided flows.
-#include "feetechcommand.h"
+// servoctl feetech set-id, set-baud, calibrate-middle, factory-reset, reboot, lock, recover and
+// identify: guided flows.
+#include "feetechflowcommands.h"
 
 #include "hex.h"
 #include "profile.h"
@@ -23,8 +23,8 @@ struct Tr
 namespace cli {
 
 // Runs one flow and reports it: its message, the servo as it is reached afterwards.
-int FeetechCommand::report(Target &target, const std::function<void()> &start,
-                           const std::function<void(QJsonObject &, const Memory &)> &more)
+int FeetechFlowCommands::report(Target &target, const std::function<void()> &start,
+                                const std::function<void(QJsonObject &, const Memory &)> &more)
 {
     Memory readBack;
     const auto result = target.device->operate(start, &readBack);
@@ -53,7 +53,7 @@ int FeetechCommand::report(Target &target, const std::function<void()> &start,
 }
 
 // Nothing to do: the servo already is as asked.
-int FeetechCommand::alreadyDone(const ServoInfo &servo, const QString &message)
+int FeetechFlowCommands::alreadyDone(const ServoInfo &servo, const QString &message)
 {
     if (m_output.json)
         printJson(m_output.out,
@@ -66,7 +66,7 @@ int FeetechCommand::alreadyDone(const ServoInfo &servo, const QString &message)
     return ExitOk;
 }
 
-int FeetechCommand::setId(const QString &what, const QStringList &operands)
+int FeetechFlowCommands::setId(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 1, Tr::tr("the NEW ID"));
@@ -90,7 +90,7 @@ int FeetechCommand::setId(const QString &what, const QStringList &operands)
     });
 }
 
-int FeetechCommand::setBaud(const QString &what, const QStringList &operands)
+int FeetechFlowCommands::setBaud(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 1, Tr::tr("the new BAUD rate in bits per second"));
@@ -116,7 +116,7 @@ int FeetechCommand::setBaud(const QString &what, const QStringList &operands)
     });
 }
 
-int FeetechCommand::calibrateMiddle(const QString &what, const QStringList &operands)
+int FeetechFlowCommands::calibrateMiddle(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 0, {});
@@ -136,7 +136,7 @@ int FeetechCommand::calibrateMiddle(const QString &what, const QStringList &oper
         });
 }
 
-int FeetechCommand::factoryReset(const QString &what, const QStringList &operands)
+int FeetechFlowCommands::factoryReset(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id"), QStringLiteral("backup")});
     expectOperands(what, operands, 0, {});
@@ -183,7 +183,7 @@ int FeetechCommand::factoryReset(const QString &what, const QStringList &operand
         });
 }
 
-int FeetechCommand::reboot(const QString &what, const QStringList &operands)
+int FeetechFlowCommands::reboot(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 0, {});
@@ -195,7 +195,7 @@ int FeetechCommand::reboot(const QString &what, const QStringList &operands)
     return report(*target, [&target] { target->device->session().reboot(target->servo); });
 }
 
-int FeetechCommand::lock(const QString &what, const QStringList &operands)
+int FeetechFlowCommands::lock(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 0, {});
@@ -208,7 +208,7 @@ int FeetechCommand::lock(const QString &what, const QStringList &operands)
     return report(*target, [&target] { target->device->session().lockEeprom(target->servo); });
 }
 
-int FeetechCommand::recover(const QString &what, const QStringList &operands)
+int FeetechFlowCommands::recover(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id"), QStringLiteral("check")});
     expectOperands(what, operands, 0, {});
@@ -232,6 +232,21 @@ int FeetechCommand::recover(const QString &what, const QStringList &operands)
         m_output.err.flush();
     }
     return code;
+}
+
+int FeetechFlowCommands::identify(const QString &what, const QStringList &operands)
+{
+    allowOptions(what, {QStringLiteral("id")});
+    expectOperands(what, operands, 0, {});
+    auto target = identifyServoToWrite(what);
+    if (!target)
+        return ExitDeviceFailure;
+    if (!m_output.json) {
+        m_output.out << Tr::tr("moving servo %1 a little each way, slowly…").arg(target->servo.id)
+                     << '\n';
+        m_output.out.flush();
+    }
+    return report(*target, [&target] { target->device->session().identifyJoint(target->servo); });
 }
 
 } // namespace cli

@@ -1,5 +1,5 @@
 // servoctl feetech health: the health check of servos --ids, and with --move-test their move test.
-#include "feetechcommand.h"
+#include "feetechhealthcommand.h"
 
 #include <QCoreApplication>
 
@@ -25,7 +25,7 @@ QString measuredText(const std::optional<double> &value, int decimals, const QSt
 
 } // namespace
 
-int FeetechCommand::health(const QString &what, const QStringList &operands)
+int FeetechHealthCommand::health(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("ids"), QStringLiteral("move-test")});
     expectOperands(what, operands, 0, {});
@@ -115,7 +115,7 @@ int FeetechCommand::health(const QString &what, const QStringList &operands)
     return feetech::anyFault(servos) ? ExitDeviceFailure : ExitOk;
 }
 
-void FeetechCommand::printHealth(const feetech::ServoHealth &health, bool moveAsked)
+void FeetechHealthCommand::printHealth(const feetech::ServoHealth &health, bool moveAsked)
 {
     QTextStream &out = m_output.out;
     if (health.model.isEmpty())

@@ -1,5 +1,5 @@
 // servoctl feetech monitor: streams servos' feedback as text, JSON lines or CSV.
-#include "feetechcommand.h"
+#include "feetechmonitorcommand.h"
 #include "telemetryrecorder.h"
 
 #include <QCoreApplication>
@@ -30,7 +30,7 @@ constexpr double kDefaultMonitorRate = 50.0;
 } // namespace
 
 // Streams the feedback of --ids until --duration has passed or Ctrl-C; one line per sample.
-int FeetechCommand::monitor(const QString &what, const QStringList &operands)
+int FeetechMonitorCommand::monitor(const QString &what, const QStringList &operands)
 {
     allowOptions(what,
                  {QStringLiteral("ids"), QStringLiteral("rate"), QStringLiteral("duration"),
@@ -134,7 +134,7 @@ int FeetechCommand::monitor(const QString &what, const QStringList &operands)
 }
 
 // --rate HZ (1 to 1000) or "max"; 50 when not given.
-double FeetechCommand::monitorRate() const
+double FeetechMonitorCommand::monitorRate() const
 {
     if (!m_args.has(QStringLiteral("rate")))
         return kDefaultMonitorRate;
@@ -149,8 +149,8 @@ double FeetechCommand::monitorRate() const
     return rate;
 }
 
-void FeetechCommand::printSample(const feetech::FeedbackSample &sample, qint64 startUs,
-                                 const QVector<ServoInfo> &servos)
+void FeetechMonitorCommand::printSample(const feetech::FeedbackSample &sample, qint64 startUs,
+                                        const QVector<ServoInfo> &servos)
 {
     const double seconds = double(sample.steadyUs - startUs) / 1e6;
     const auto servo = std::find_if(servos.begin(), servos.end(),

@@ -1,5 +1,6 @@
-// servoctl feetech save and load: a servo's settings to and from a JSON profile.
-#include "feetechcommand.h"
+// servoctl feetech save and load: a servo's settings to and from a JSON profile or a robot
+// template, and load --ids for the servos of an arm.
+#include "feetechprofilecommands.h"
 
 #include "profile.h"
 
@@ -10,6 +11,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+
+#include <algorithm>
 
 namespace {
 
@@ -23,47 +26,9 @@ struct Tr
 
 namespace cli {
 
-// The servo's profile values as read now; registers holding a value outside their range
-// are left out with a warning, since a profile could not be loaded with them.
-std::optional<profile::Profile> FeetechCommand::takeProfile(Target &target, QString *error)
-{
-    const ServoInfo &servo = target.servo;
-    const QVector<model::Definition> definitions = feetech::profileDefinitions(servo.table());
-    // The whole table: a few block READs rather than one per register.
-    const auto memory = target.device->read(servo, {});
-    if (!memory) {
-        *error = target.device->error();
-        return std::nullopt;
-    }
-    const QHash<QString, qint32> values = valuesByKey(decodeMemory(servo.table(), *memory));
-    profile::Profile saved;
-    saved.family = feetech::familyKey(*servo.model.family);
-    saved.model = servo.model.name;
-    // Whole seconds: what the file keeps.
-    const QDateTime now = QDateTime::currentDateTimeUtc();
-    saved.saved = now.addMSecs(-now.time().msec());
-    for (const model::Definition &definition : definitions) {
-        const auto value = values.constFind(definition.key);
-        if (value == values.constEnd())
-            continue;
-        if (*value < definition.minimum || *value > definition.maximum) {
-            m_output.err << "servoctl: "
-                         << Tr::tr("%1 = %2 is outside its range (%3 to %4) and is left out "
-                                   "of the profile")
-                                .arg(definition.key)
-                                .arg(*value)
-                                .arg(definition.minimum)
-                                .arg(definition.maximum)
-                         << '\n';
-            m_output.err.flush();
-            continue;
-        }
-        saved.values.append({definition.key, *value});
-    }
-    return saved;
-}
+namespace {
 
-QJsonObject FeetechCommand::profileJson(const profile::Profile &saved) const
+QJsonObject profileJson(const profile::Profile &saved)
 {
     QJsonObject parameters;
     for (const profile::ProfileValue &value : saved.values)
@@ -71,7 +36,53 @@ QJsonObject FeetechCommand::profileJson(const profile::Profile &saved) const
     return parameters;
 }
 
-int FeetechCommand::save(const QString &what, const QStringList &operands)
+// Refuses, before anything is sent, a file that is neither a robot template nor a valid
+// profile for any Feetech family.
+feetech::SettingsFile checkSettingsFile(const QString &path)
+{
+    QString error;
+    auto file = feetech::SettingsFile::load(path, &error);
+    if (!file)
+        throw UsageError {error};
+    return *file;
+}
+
+QJsonObject outcomeJson(const feetech::ProgramOutcome &outcome)
+{
+    return {{QStringLiteral("id"), int(outcome.id)},
+            {QStringLiteral("status"), feetech::statusKey(outcome.status)},
+            {QStringLiteral("changed"), QJsonArray::fromStringList(outcome.changed)},
+            {QStringLiteral("error"),
+             outcome.error.isEmpty() ? QJsonValue() : QJsonValue(outcome.error)},
+            {QStringLiteral("left_out"), QJsonArray::fromStringList(outcome.leftOut)}};
+}
+
+// The values of `wanted` that `servo` does not hold yet (it is read whole); nothing and *error
+// when it cannot be read.
+std::optional<QVector<model::WriteItem>> changedOn(FeetechDevice &device, const ServoInfo &servo,
+                                                   const QVector<model::WriteItem> &wanted,
+                                                   QString *error,
+                                                   std::optional<qint64> *torque = nullptr)
+{
+    const auto memory = device.read(servo, {});
+    if (!memory) {
+        *error = device.error();
+        return std::nullopt;
+    }
+    const QHash<QString, qint32> current = valuesByKey(decodeMemory(servo.table(), *memory));
+    if (torque && current.contains(QStringLiteral("torque_enable")))
+        *torque = current.value(QStringLiteral("torque_enable"));
+    return feetech::changedValues(wanted, [&current](const QString &key) -> std::optional<qint64> {
+        const auto found = current.constFind(key);
+        if (found == current.constEnd())
+            return std::nullopt;
+        return *found;
+    });
+}
+
+} // namespace
+
+int FeetechProfileCommands::save(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 1, Tr::tr("one FILE"));
@@ -102,18 +113,7 @@ int FeetechCommand::save(const QString &what, const QStringList &operands)
     return ExitOk;
 }
 
-// Refuses, before anything is sent, a file that is neither a robot template nor a valid
-// profile for any Feetech family.
-feetech::SettingsFile FeetechCommand::checkSettingsFile(const QString &path)
-{
-    QString error;
-    auto file = feetech::SettingsFile::load(path, &error);
-    if (!file)
-        throw UsageError {error};
-    return *file;
-}
-
-int FeetechCommand::load(const QString &what, const QStringList &operands)
+int FeetechProfileCommands::load(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id"), QStringLiteral("ids")});
     expectOperands(what, operands, 1, Tr::tr("one FILE"));
@@ -171,6 +171,95 @@ int FeetechCommand::load(const QString &what, const QStringList &operands)
         return ExitOk;
     }
     return program(*target, items, extra);
+}
+
+// One servo of a batch: every failure becomes its entry, never the end of the batch.
+feetech::ProgramOutcome FeetechProfileCommands::programOne(FeetechDevice &device, quint8 id,
+                                                           const feetech::SettingsFile &file)
+{
+    feetech::ProgramOutcome outcome;
+    outcome.id = id;
+    outcome.baud = busBaud();
+    const auto servo = device.identify(id, outcome.baud);
+    if (!servo) {
+        outcome.error = device.error();
+        return outcome;
+    }
+    QString error;
+    const auto wanted = file.batchValuesFor(*servo, &outcome.leftOut, &error);
+    std::optional<qint64> torque;
+    const auto items = wanted ? changedOn(device, *servo, *wanted, &error, &torque) : std::nullopt;
+    if (!items) {
+        outcome.error = error;
+        return outcome;
+    }
+    for (const model::WriteItem &item : *items)
+        outcome.changed.append(item.key);
+    outcome.error = feetech::torqueRefusal(*servo, *items, torque);
+    if (!outcome.error.isEmpty())
+        return outcome;
+    if (items->isEmpty()) {
+        outcome.status = feetech::ProgramOutcome::Status::Unchanged;
+        return outcome;
+    }
+    try {
+        const Programmed written = writeVerified(device, *servo, *items);
+        if (!written.failure.isEmpty())
+            outcome.error = written.failure;
+        else if (!written.mismatches.isEmpty())
+            outcome.error =
+                Tr::tr("verification failed: %1").arg(written.described.join(QStringLiteral("; ")));
+        else
+            outcome.status = feetech::ProgramOutcome::Status::Ok;
+    } catch (const UsageError &refused) {
+        outcome.error = refused.message;
+    }
+    return outcome;
+}
+
+int FeetechProfileCommands::loadMany(const feetech::SettingsFile &file, const QString &path)
+{
+    QVector<quint8> ids = idList(m_args.value(QStringLiteral("ids")), feetech::kMaxServoId);
+    for (int i = 0; i < ids.size(); ++i) {
+        if (ids.indexOf(ids.at(i)) != i)
+            throw UsageError {Tr::tr("--ids names servo %1 twice").arg(ids.at(i))};
+    }
+    FeetechDevice device(m_args, m_output);
+    if (!device.open(busBaud()))
+        return fail(device.error());
+    QVector<feetech::ProgramOutcome> outcomes;
+    for (const quint8 id : std::as_const(ids))
+        outcomes.append(programOne(device, id, file));
+    const bool anyFailed =
+        std::any_of(outcomes.cbegin(), outcomes.cend(), [](const feetech::ProgramOutcome &o) {
+            return o.status == feetech::ProgramOutcome::Status::Failed;
+        });
+    if (m_output.json) {
+        QJsonArray entries;
+        for (const feetech::ProgramOutcome &outcome : std::as_const(outcomes))
+            entries.append(outcomeJson(outcome));
+        printJson(m_output.out, entries);
+        return anyFailed ? ExitDeviceFailure : ExitOk;
+    }
+    m_output.out << Tr::tr("%1 to %n servo(s):", nullptr, int(outcomes.size()))
+                        .arg(QDir::toNativeSeparators(path))
+                 << '\n';
+    const QString idHeader = Tr::tr("ID");
+    const QString statusHeader = Tr::tr("status");
+    m_output.out << idHeader.leftJustified(5) << statusHeader.leftJustified(22)
+                 << Tr::tr("changed / error") << '\n';
+    for (const feetech::ProgramOutcome &outcome : std::as_const(outcomes)) {
+        const QString detail = outcome.status == feetech::ProgramOutcome::Status::Failed
+            ? outcome.error
+            : outcome.changed.join(QStringLiteral(", "));
+        m_output.out << QString::number(outcome.id).leftJustified(5)
+                     << feetech::statusText(outcome.status).leftJustified(22) << detail << '\n';
+    }
+    const QString leftOut = leftOutNote(outcomes);
+    if (!leftOut.isEmpty())
+        m_output.out << leftOut << '\n';
+    m_output.out.flush();
+    return anyFailed ? ExitDeviceFailure : ExitOk;
 }
 
 } // namespace cli

@@ -1,5 +1,5 @@
 // servoctl feetech scan, ping, read, get and set: finding servos and their registers.
-#include "feetechcommand.h"
+#include "feetechregistercommands.h"
 
 #include "sharedidcheck.h"
 
@@ -29,9 +29,25 @@ struct Assignment
     QString value;
 };
 
+// What a scan row warns of: a shared ID, error bits in the servo's answer.
+QStringList scanWarnings(const ServoInfo &servo)
+{
+    QStringList warnings;
+    if (servo.sharedId)
+        warnings.append(feetech::sharedIdRefusal(servo.id));
+    const QStringList errors = feetech::statusBitNames(servo.statusBits);
+    if (!errors.isEmpty())
+        warnings.append(Tr::tr("servo %1 answers with error bits 0x%2 (%3): servoctl doctor says "
+                               "why")
+                            .arg(servo.id)
+                            .arg(servo.statusBits, 2, 16, QLatin1Char('0'))
+                            .arg(errors.join(QStringLiteral(", "))));
+    return warnings;
+}
+
 } // namespace
 
-int FeetechCommand::scan(const QString &what, const QStringList &operands)
+int FeetechRegisterCommands::scan(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("ids"), QStringLiteral("thorough")});
     expectOperands(what, operands, 0, {});
@@ -115,22 +131,7 @@ int FeetechCommand::scan(const QString &what, const QStringList &operands)
     return ExitOk;
 }
 
-QStringList FeetechCommand::scanWarnings(const ServoInfo &servo)
-{
-    QStringList warnings;
-    if (servo.sharedId)
-        warnings.append(feetech::sharedIdRefusal(servo.id));
-    const QStringList errors = feetech::statusBitNames(servo.statusBits);
-    if (!errors.isEmpty())
-        warnings.append(Tr::tr("servo %1 answers with error bits 0x%2 (%3): servoctl doctor says "
-                               "why")
-                            .arg(servo.id)
-                            .arg(servo.statusBits, 2, 16, QLatin1Char('0'))
-                            .arg(errors.join(QStringLiteral(", "))));
-    return warnings;
-}
-
-int FeetechCommand::ping(const QString &what, const QStringList &operands)
+int FeetechRegisterCommands::ping(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 0, {});
@@ -152,7 +153,7 @@ int FeetechCommand::ping(const QString &what, const QStringList &operands)
     return ExitOk;
 }
 
-int FeetechCommand::read(const QString &what, const QStringList &operands)
+int FeetechRegisterCommands::read(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 0, {});
@@ -196,7 +197,7 @@ int FeetechCommand::read(const QString &what, const QStringList &operands)
     return ExitOk;
 }
 
-int FeetechCommand::get(const QString &what, const QStringList &operands)
+int FeetechRegisterCommands::get(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     if (operands.isEmpty())
@@ -242,7 +243,7 @@ int FeetechCommand::get(const QString &what, const QStringList &operands)
     return ExitOk;
 }
 
-int FeetechCommand::set(const QString &what, const QStringList &operands)
+int FeetechRegisterCommands::set(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
     if (operands.isEmpty())

@@ -1,5 +1,5 @@
 // servoctl feetech setup-motor: the one servo on the bus gets an ID, a rate and settings.
-#include "feetechcommand.h"
+#include "feetechsetupcommand.h"
 
 #include "motorsetup.h"
 #include "robottemplate.h"
@@ -30,8 +30,7 @@ QJsonObject addressJson(const ServoInfo &servo)
 
 } // namespace
 
-// What --id, --baud, --model and --settings ask for; usage errors before anything is sent.
-feetech::MotorTarget FeetechCommand::motorTarget(const QString &what) const
+feetech::MotorTarget FeetechSetupCommand::motorTarget(const QString &what) const
 {
     feetech::MotorTarget target;
     target.id = servoId(what);
@@ -68,7 +67,7 @@ feetech::MotorTarget FeetechCommand::motorTarget(const QString &what) const
     return target;
 }
 
-int FeetechCommand::setupMotor(const QString &what, const QStringList &operands)
+int FeetechSetupCommand::setupMotor(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id"), QStringLiteral("model"), QStringLiteral("settings")});
     expectOperands(what, operands, 0, {});
