@@ -1,8 +1,10 @@
-// Feetech bus client: queued calls into the worker's session; servo list and model updates.
+// Feetech bus client: the link, the servos found and their models, and the operations on them,
+// submitted to the session in its worker thread.
 #include "busclient.h"
 
 #include "linksession.h"
 #include "registerkeys.h"
+#include "registertable.h"
 #include "servoparameters.h"
 #include "sharedidcheck.h"
 
@@ -572,6 +574,75 @@ std::optional<PositionRange> goalRange(const BusClient &client, int index)
     return goalRange(client.servo(index).info.table(),
                      parameters->deviceValue(registerkeys::kMinAngleLimit),
                      parameters->deviceValue(registerkeys::kMaxAngleLimit));
+}
+
+QString BusClient::identifyBlocker(int index) const
+{
+    const QString blocker = writeBlocker(index);
+    if (!blocker.isEmpty())
+        return blocker;
+    const ServoInfo &info = servo(index).info;
+    const QString held = m_held.value({info.id, info.baud});
+    if (!held.isEmpty())
+        return held;
+    if (!info.table().find(u"goal_position") || !info.table().find(u"torque_enable"))
+        return Tr::tr("This servo has no goal position register: it cannot be moved.");
+    return {};
+}
+
+OperationReply *BusClient::identifyJoint(int index, QString *error)
+{
+    const QString blocker = identifyBlocker(index);
+    if (!blocker.isEmpty()) {
+        if (error)
+            *error = blocker;
+        return nullptr;
+    }
+    const ServoInfo &info = servo(index).info;
+    m_identifying = std::pair(info.id, info.baud);
+    return startOperation(Operation::Identify, index, error, Work::Foreground,
+                          [](Session &s, const ServoInfo &target) { s.identifyJoint(target); });
+}
+
+bool BusClient::isIdentifying(int index) const
+{
+    return m_identifying && index >= 0 && index < servoCount()
+        && *m_identifying == std::pair(servo(index).info.id, servo(index).info.baud);
+}
+
+void BusClient::holdServo(int index, const QString &reason)
+{
+    if (index < 0 || index >= servoCount())
+        return;
+    m_held.insert({servo(index).info.id, servo(index).info.baud}, reason);
+    emit servoUpdated(index); // what it may do now has changed
+}
+
+void BusClient::releaseServo(quint8 id, qint32 baud)
+{
+    if (m_held.remove({id, baud}) > 0 && indexOf(id, baud) >= 0)
+        emit servoUpdated(indexOf(id, baud));
+}
+OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
+                                      std::optional<quint8> replyId, int replyDataSize,
+                                      QString *error)
+{
+    QString refusal;
+    if (!isConnected())
+        refusal = Tr::tr("The bus is not connected.");
+    else if (!decodePacket(frame))
+        refusal = Tr::tr("That is not a whole Feetech frame (header, length and checksum).");
+    else if (!baudCode(baud))
+        refusal = Tr::tr("%1 bps is not a Feetech baud rate.").arg(baud);
+    if (!refusal.isEmpty()) {
+        if (error)
+            *error = refusal;
+        return nullptr;
+    }
+    return submit(Operation::SendPacket, replyId.value_or(kBroadcastId), baud, Work::Foreground,
+                  [frame, baud, replyId, replyDataSize](Session &s) {
+                      s.sendPacket(frame, baud, replyId, replyDataSize);
+                  });
 }
 
 } // namespace feetech

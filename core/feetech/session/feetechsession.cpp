@@ -3,6 +3,7 @@
 
 #include "feetechdescription.h"
 #include "linksession.h"
+#include "overloadrecovery.h"
 #include "sharedidcheck.h"
 #include "transport.h"
 
@@ -19,6 +20,10 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechSession)
 };
+
+// A hand-built frame whose answers cannot be named in advance (broadcast, SYNC READ) is listened
+// to this long; what comes back shows in the packet log.
+constexpr std::chrono::milliseconds kListenWindow {150};
 
 } // namespace
 
@@ -650,6 +655,292 @@ void Session::syncWrite(qint32 baud, int address, int length,
                  {}});
         });
     });
+}
+
+void Session::setGuardSettings(const GuardSettings &settings)
+{
+    m_guard->setSettings(settings);
+}
+
+void Session::runGuardAction(std::function<void(std::function<void()> finished)> work)
+{
+    const auto start = [this, work = std::move(work)] {
+        work([this] {
+            m_running = false;
+            QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
+        });
+    };
+    // Behind All torque off only: a servo pushing against a block must not wait for an apply.
+    m_queue.insert(afterTorqueOff(), {Operation::Guard, start, 0});
+    if (!m_running)
+        startNextOperation();
+}
+
+void Session::recoverOverload(const ServoInfo &servo, bool checkOnly)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::RecoverOverload, [this, servo, checkOnly, epoch] {
+        if (!checkOnly && refusedAfterTorqueOff(Operation::RecoverOverload, epoch))
+            return;
+        auto target = std::make_shared<ServoInfo>(servo);
+        auto latched = std::make_shared<std::optional<bool>>();
+        m_bus->runSteps(
+            {m_bus->setBaud(servo.baud),
+             feetech::recoverOverload(*m_bus, target, checkOnly, latched)},
+            [this, servo, checkOnly, latched](bool ok, const QString &message) {
+                OperationResult result {Operation::RecoverOverload, ok, message, servo, {}};
+                result.stillLatched = ok && latched->value_or(false);
+                if (result.stillLatched) {
+                    result.ok = false;
+                    result.message = powerCycleSteps(servo).join(QLatin1Char('\n'));
+                } else if (ok) {
+                    result.message = checkOnly
+                        ? Tr::tr("Servo ID %1: the overload bit is clear; switch its torque on "
+                                 "when you are ready.")
+                              .arg(servo.id)
+                        : Tr::tr("Servo ID %1 recovered: the overload bit is clear and it holds "
+                                 "where it stands with torque on.")
+                              .arg(servo.id);
+                    if (!checkOnly) {
+                        const Register *torque = registerAt(servo, u"torque_enable");
+                        const auto on = servo.table().torqueValue(TorqueMode::On);
+                        if (torque && on)
+                            m_guard->noteWrites(servo,
+                                                {{torque->address, QByteArray(1, char(*on))}});
+                    }
+                }
+                m_bus->logNote(result.message, !result.ok);
+                finishOperation(result);
+            });
+    });
+}
+void Session::checkHealth(const QVector<ServoInfo> &servos, int reads)
+{
+    m_health->clearCancel();
+    enqueue(Operation::HealthCheck, [this, servos, reads] { checkNextServo(servos, 0, reads); });
+}
+
+void Session::checkNextServo(QVector<ServoInfo> servos, int done, int reads)
+{
+    const int total = int(servos.size());
+    if (done >= total || m_health->isCancelled()) {
+        const bool stopped = done < total;
+        finishOperation({Operation::HealthCheck,
+                         !stopped,
+                         stopped ? Tr::tr("The health check was stopped after %1 of %n servo(s).",
+                                          nullptr, total)
+                                       .arg(done)
+                                 : Tr::tr("%n servo(s) checked.", nullptr, total),
+                         {},
+                         {}});
+        return;
+    }
+    m_health->read(servos.at(done), reads, [this, servos, done, reads](const HealthReading &r) {
+        if (!m_link->isOpen())
+            return; // onLinkDown has ended the check
+        emit healthRead(r);
+        emit progress(done + 1, int(servos.size()));
+        // Between two servos the bus is free: All torque off never waits for a whole check.
+        continueLater(Operation::HealthCheck,
+                      [this, servos, done, reads] { checkNextServo(servos, done + 1, reads); });
+    });
+}
+
+void Session::cancelHealthCheck()
+{
+    m_health->cancel();
+}
+
+void Session::moveTest(const ServoInfo &servo)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::MoveTest, [this, servo, epoch] {
+        if (refusedAfterTorqueOff(Operation::MoveTest, epoch))
+            return;
+        m_guard->noteDriven(servo); // the guard watches the move as it does any other
+        m_moveTest->run(
+            servo,
+            [this, epoch](std::chrono::milliseconds delay,
+                          std::function<void(bool torqueOff)> resume) {
+                pauseFor(Operation::MoveTest, delay,
+                         [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
+            },
+            [this, servo](const MoveTestResult &result) {
+                emit moveTested(result);
+                finishOperation({Operation::MoveTest, result.ok, result.message, servo, {}});
+            });
+    });
+}
+void Session::lockEeprom(const ServoInfo &servo)
+{
+    enqueue(Operation::LockEeprom, [this, servo] {
+        const Register *lock = registerAt(servo, u"lock");
+        if (!lock) {
+            finishOperation({Operation::LockEeprom,
+                             false,
+                             Tr::tr("The servo's model has no known EEPROM lock register."),
+                             servo,
+                             {}});
+            return;
+        }
+        auto target = std::make_shared<ServoInfo>(servo);
+        // What the servo says after the write, not that the write was answered, is the result.
+        auto readBack = std::make_shared<std::optional<int>>();
+        std::vector<Step> steps {m_bus->setBaud(servo.baud), m_bus->lock(target, true),
+                                 m_bus->read(target, lock->address, lock->size,
+                                             ReadSource::ReadBack,
+                                             [readBack](const QByteArray &bytes) {
+                                                 if (!bytes.isEmpty())
+                                                     *readBack = quint8(bytes.at(0));
+                                             })};
+        m_bus->runSteps(std::move(steps), [this, servo, readBack](bool ok, const QString &message) {
+            const bool locked = ok && readBack->has_value() && **readBack != 0;
+            QString text = message;
+            if (locked)
+                text = Tr::tr("Servo %1's EEPROM is locked (read back).").arg(servo.id);
+            else if (ok)
+                text = Tr::tr("Servo %1 still reads back unlocked after the lock was written.")
+                           .arg(servo.id);
+            finishOperation({Operation::LockEeprom, locked, text, servo, {}});
+        });
+    });
+}
+void Session::sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
+                         int replyDataSize)
+{
+    // Like any write: one asked for before All torque off must not power the servos again.
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::SendPacket, [this, frame, baud, replyId, replyDataSize, epoch] {
+        if (refusedAfterTorqueOff(Operation::SendPacket, epoch))
+            return;
+        m_bus->setBaud(
+            baud)([this, frame, baud, replyId, replyDataSize](bool ok, const QString &message) {
+            OperationResult result {Operation::SendPacket, false, message, {}, {}};
+            result.servo.baud = baud;
+            if (!ok) {
+                finishOperation(result);
+                return;
+            }
+            Exchange ask;
+            ask.request = frame;
+            ask.retryCount = 0; // sent once, as the user built it
+            if (replyId) {
+                ask.replyId = replyId;
+                ask.replyDataSize = replyDataSize;
+                result.servo.id = *replyId;
+            } else {
+                ask.listenOnly = true;
+                ask.silenceExpected = true;
+                ask.replyTimeout = kListenWindow;
+            }
+            m_bus->exchange(ask,
+                            [this, result, replyId](const seriallink::TransactionResult &answer,
+                                                    const std::optional<Packet> &reply) mutable {
+                                result.latency = answer.latency;
+                                if (answer.failure == seriallink::Failure::LinkDown) {
+                                    result.message = failureText(answer);
+                                } else if (!replyId) {
+                                    result.ok = true;
+                                    result.message = Tr::tr("Sent; its answers, if any, are in "
+                                                            "the packet log.");
+                                } else {
+                                    result.ok = reply.has_value();
+                                    result.message = reply
+                                        ? Tr::tr("Servo %1 answered.").arg(*replyId)
+                                        : Tr::tr("Sent; servo %1 did not answer: %2")
+                                              .arg(*replyId)
+                                              .arg(failureText(answer));
+                                }
+                                finishOperation(result);
+                            });
+        });
+    });
+}
+// ---- identify
+
+void Session::identifyJoint(const ServoInfo &servo)
+{
+    const quint64 epoch = m_torqueOffEpoch;
+    m_identify->clearCancel();
+    enqueue(Operation::Identify, [this, servo, epoch] {
+        if (refusedAfterTorqueOff(Operation::Identify, epoch))
+            return;
+        m_guard->noteDriven(servo);
+        m_identifying = true;
+        m_identify->run(
+            servo,
+            [this](const OperationResult &result) {
+                m_identifying = false;
+                finishOperation(result);
+            },
+            [this, epoch](std::chrono::milliseconds delay,
+                          std::function<void(bool torqueOff)> resume) {
+                pauseFor(Operation::Identify, delay,
+                         [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
+            });
+    });
+}
+
+// ---- motor set-up
+
+void Session::findMotor(const MotorTarget &target)
+{
+    m_motorSetup->clearCancel();
+    enqueue(Operation::FindMotor, [this, target] {
+        m_motorSetup->find(target, [this](const MotorSearch &search) {
+            MotorSetupResult result;
+            result.ok = search.foundOne();
+            result.search = search;
+            result.stopped = search.stopped;
+            result.from = result.to = search.servo;
+            result.message = search.message;
+            emit motorSetupFinished(result);
+            finishOperation({Operation::FindMotor, result.ok, result.message, search.servo, {}});
+        });
+    });
+}
+
+void Session::setUpMotor(const MotorTarget &target)
+{
+    m_motorSetup->clearCancel();
+    const quint64 epoch = m_torqueOffEpoch;
+    enqueue(Operation::SetUpMotor, [this, target, epoch] {
+        if (refusedAfterTorqueOff(Operation::SetUpMotor, epoch))
+            return;
+        m_motorSetup->setUp(target, [this](const MotorSetupResult &result) {
+            emit motorSetupFinished(result);
+            finishOperation({Operation::SetUpMotor, result.ok, result.message, result.to, {}});
+        });
+    });
+}
+
+void Session::checkJoints(qint32 baud, const QVector<JointCheck> &joints)
+{
+    m_motorSetup->clearCancel();
+    enqueue(Operation::CheckJoints, [this, baud, joints] {
+        m_motorSetup->check(baud, joints, [this](const QVector<JointCheck> &checked) {
+            emit jointsChecked(checked);
+            const auto done = std::count_if(checked.begin(), checked.end(),
+                                            [](const JointCheck &joint) { return joint.done(); });
+            finishOperation(
+                {Operation::CheckJoints,
+                 true,
+                 Tr::tr("%1 of %n joint(s) already set up.", nullptr, int(checked.size()))
+                     .arg(done),
+                 {},
+                 {}});
+        });
+    });
+}
+
+void Session::cancelMotorSetup()
+{
+    m_motorSetup->cancel();
+}
+
+void Session::cancelIdentify()
+{
+    m_identify->cancel();
 }
 
 } // namespace feetech

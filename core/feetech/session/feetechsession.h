@@ -82,7 +82,7 @@ public:
     // Closes the servo's EEPROM lock (one left open by a write cut short) and reads it back: ok
     // only when it reads back locked.
     void lockEeprom(const feetech::ServoInfo &servo);
-    // A frame built by hand, sent once at `baud` (feetechsessionpacket.cpp): it waits for the
+    // A frame built by hand, sent once at `baud` (Session::sendPacket): it waits for the
     // answer of `replyId` (`replyDataSize` data bytes), or, without one, listens for a while;
     // what comes back is in the packet log.
     void sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
@@ -123,7 +123,7 @@ public:
     // Not queued: stops the running one before its next step.
     void cancelMotorSetup();
 
-    // Health check (feetechsessionhealth.cpp): reads only. Each servo in turn gets its limits
+    // Health check: reads only. Each servo in turn gets its limits
     // and `reads` feedback blocks read (HealthCheck); healthRead and progress follow each one,
     // and the bus is free for All torque off and telemetry between two servos.
     void checkHealth(const QVector<feetech::ServoInfo> &servos, int reads);
