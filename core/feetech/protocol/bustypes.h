@@ -140,6 +140,9 @@ struct OperationResult
     bool writesSent = false;
     // RecoverOverload: the overload bit stayed set; only a power cycle clears it.
     bool stillLatched = false;
+    // Ended by the link going down (running, paused or still queued), not by the servo: whoever
+    // watches the connection reports that once.
+    bool linkLost = false;
     // The submission it answers (Session::setNextTicket), which BusClient turns into its
     // reply; 0 where nobody asked for one (the guard, servoctl).
     quint64 ticket = 0;

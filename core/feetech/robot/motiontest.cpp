@@ -420,6 +420,10 @@ void MotionTest::onWriteFinished(const OperationResult &result)
 {
     if (!isRunning() || m_writesInFlight <= 0)
         return;
+    if (result.linkLost) { // onStatusChanged says so
+        --m_writesInFlight;
+        return;
+    }
     --m_writesInFlight;
     if (!result.ok)
         fail(tr("Writing to %1 failed: %2").arg(servoName(), result.message));

@@ -62,7 +62,8 @@ void DoctorCheck::readNext()
         // A read that comes after the guard gave up on it is no longer the one looked at.
         connect(reply, &OperationReply::finished, this,
                 [this, reading = m_next](const OperationResult &result) {
-                    if (m_running && m_guard.isActive() && m_next == reading)
+                    // A read the lost link dropped leaves the servo's condition unknown.
+                    if (m_running && m_guard.isActive() && m_next == reading && !result.linkLost)
                         onRead(result.ok);
                 });
     }

@@ -160,6 +160,7 @@ void Session::onLinkDown(const QString &message)
     const auto failed = [&message](Operation operation, quint64 ticket) {
         OperationResult result {operation, false, message, {}, {}};
         result.ticket = ticket;
+        result.linkLost = true;
         return result;
     };
     if (wasScanning)

@@ -71,8 +71,16 @@ bool TelemetryHub::subscribe(const QObject *subscriber, const QVector<int> &inde
         *known = subscription;
     } else {
         m_subscriptions.push_back(subscription);
-        connect(subscriber, &QObject::destroyed, this,
-                [this, subscriber] { unsubscribe(subscriber); });
+        // Half destroyed, it must hear nothing more: the stream changes once it is gone.
+        connect(subscriber, &QObject::destroyed, this, [this, subscriber] {
+            const auto gone = std::find_if(
+                m_subscriptions.begin(), m_subscriptions.end(),
+                [subscriber](const Subscription &each) { return each.subscriber == subscriber; });
+            if (gone == m_subscriptions.end())
+                return;
+            m_subscriptions.erase(gone);
+            QMetaObject::invokeMethod(this, &TelemetryHub::update, Qt::QueuedConnection);
+        });
     }
     update();
     return true;

@@ -42,7 +42,8 @@ void CalibrationSteps::startNext()
             // A step the lost link already ended is not ended again.
             connect(reply, &feetech::OperationReply::finished, this,
                     [this, running = m_next](const feetech::OperationResult &result) {
-                        if (m_next == running)
+                        // A lost link is reported by the status handler, once.
+                        if (m_next == running && !result.linkLost)
                             onOperationFinished(result);
                     });
             return;
