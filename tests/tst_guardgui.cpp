@@ -4,6 +4,7 @@
 // is shown and locked on request.
 #include "controlpage.h"
 #include "feetechbus.h"
+#include "guardbanner.h"
 #include "guardsettingsdialog.h"
 #include "namedchild.h"
 #include "overloadguard.h"
@@ -110,8 +111,8 @@ private slots:
     void theBannerSaysTheGuardIsOnBeforeAnythingHappens()
     {
         QVERIFY(child<QWidget>("guardBanner")->isVisible());
-        QVERIFY2(m_page->guardText().contains(QLatin1String("Guard on")),
-                 qPrintable(m_page->guardText()));
+        QVERIFY2(m_page->guardBanner()->text().contains(QLatin1String("Guard on")),
+                 qPrintable(m_page->guardBanner()->text()));
         QVERIFY(!child<QPushButton>("guardRecoverButton")->isVisible());
     }
 
@@ -122,9 +123,9 @@ private slots:
         child<QPushButton>("torqueOnButton")->click();
         QTRY_COMPARE_WITH_TIMEOUT(simulatorValue(1, u"torque_enable"), 1, 10000);
         QVERIFY(m_page->moveTo(start > 2048 ? 600 : 3400));
-        QTRY_VERIFY_WITH_TIMEOUT(m_page->guardText().contains(QLatin1String("was overloaded")),
-                                 15000);
-        const QString text = m_page->guardText();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            m_page->guardBanner()->text().contains(QLatin1String("was overloaded")), 15000);
+        const QString text = m_page->guardBanner()->text();
         QVERIFY2(text.contains(QLatin1String("Servo ID 1")), qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("where it stands (%1)").arg(start)),
                  qPrintable(text));
@@ -142,7 +143,7 @@ private slots:
         const QString message = failed.first().at(0).toString();
         QVERIFY2(message.contains(QLatin1String("Guard")), qPrintable(message));
         QVERIFY(!m_page->motionTest()->isRunning());
-        QVERIFY(m_page->guardText().contains(QLatin1String("was overloaded")));
+        QVERIFY(m_page->guardBanner()->text().contains(QLatin1String("was overloaded")));
     }
 
     void aLatchedOverloadIsWalkedThroughItsRecovery()
@@ -150,7 +151,7 @@ private slots:
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setOverloadLatched(true); }));
         child<QPushButton>("torqueOnButton")->click();
         QTRY_VERIFY_WITH_TIMEOUT(child<QPushButton>("guardRecoverButton")->isVisible(), 15000);
-        QVERIFY(m_page->guardText().contains(QLatin1String("protection tripped")));
+        QVERIFY(m_page->guardBanner()->text().contains(QLatin1String("protection tripped")));
         child<QPushButton>("guardRecoverButton")->click();
         auto *dialog = m_page->findChild<OverloadRecoveryDialog *>();
         QVERIFY(dialog);

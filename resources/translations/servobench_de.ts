@@ -777,96 +777,8 @@
         <translation>× %1 %2</translation>
     </message>
     <message>
-        <source>Torque</source>
-        <translation>Drehmoment</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>Aus</translation>
-    </message>
-    <message>
-        <source>Torque off: the horn turns freely (torque enable 0).</source>
-        <translation>Drehmoment aus: Das Servohorn dreht sich frei (torque enable 0).</translation>
-    </message>
-    <message>
-        <source>On</source>
-        <translation>Ein</translation>
-    </message>
-    <message>
-        <source>Torque on: the servo holds its goal position (torque enable 1).</source>
-        <translation>Drehmoment ein: Das Servo hält seine Zielposition (torque enable 1).</translation>
-    </message>
-    <message>
-        <source>Damping</source>
-        <translation>Dämpfung</translation>
-    </message>
-    <message>
         <source>Damping: the horn can be turned by hand against a resistance (torque enable 2).</source>
         <translation>Dämpfung: Das Servohorn lässt sich von Hand gegen einen Widerstand drehen (torque enable 2).</translation>
-    </message>
-    <message>
-        <source>Operating mode</source>
-        <translation>Betriebsart</translation>
-    </message>
-    <message>
-        <source>How the servo uses its goal registers. Stored in EEPROM.</source>
-        <translation>Wie das Servo seine Zielregister nutzt. Im EEPROM gespeichert.</translation>
-    </message>
-    <message>
-        <source>Set mode…</source>
-        <translation>Betriebsart setzen…</translation>
-    </message>
-    <message>
-        <source>Write the chosen operating mode to the servo&apos;s EEPROM.</source>
-        <translation>Die gewählte Betriebsart ins EEPROM des Servos schreiben.</translation>
-    </message>
-    <message>
-        <source>Goal position</source>
-        <translation>Zielposition</translation>
-    </message>
-    <message>
-        <source>Drag to move the servo: goals are sent as fast as the servo confirms them, always the newest one.</source>
-        <translation>Ziehen, um das Servo zu bewegen: Ziele werden so schnell gesendet, wie das Servo sie bestätigt, immer das neueste.</translation>
-    </message>
-    <message>
-        <source> step</source>
-        <translation> Schritte</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>Bewegen</translation>
-    </message>
-    <message>
-        <source>Send this goal position with the speed and acceleration below.</source>
-        <translation>Diese Zielposition mit der Geschwindigkeit und Beschleunigung unten senden.</translation>
-    </message>
-    <message>
-        <source>Where the horn is: the monitor&apos;s newest sample, or the last read of the present position.</source>
-        <translation>Wo das Servohorn steht: der neueste Messwert des Monitors oder der zuletzt gelesene Wert der aktuellen Position.</translation>
-    </message>
-    <message>
-        <source>Goal</source>
-        <translation>Ziel</translation>
-    </message>
-    <message>
-        <source>Present</source>
-        <translation>Aktuell</translation>
-    </message>
-    <message>
-        <source>Goal speed, in register units (0: the servo&apos;s maximum).</source>
-        <translation>Zielgeschwindigkeit in Registereinheiten (0: Maximum des Servos).</translation>
-    </message>
-    <message>
-        <source>Acceleration, in register units (0: the servo&apos;s maximum).</source>
-        <translation>Beschleunigung in Registereinheiten (0: Maximum des Servos).</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>Geschwindigkeit</translation>
-    </message>
-    <message>
-        <source>Acceleration</source>
-        <translation>Beschleunigung</translation>
     </message>
     <message>
         <source>Servo ID %1</source>
@@ -995,30 +907,6 @@
     <message>
         <source>All torque off: torque is off on every servo of the bus.</source>
         <translation>Alle Drehmomente aus: Das Drehmoment ist an jedem Servo des Busses aus.</translation>
-    </message>
-    <message>
-        <source>Recover…</source>
-        <translation>Wiederherstellen…</translation>
-    </message>
-    <message>
-        <source>Walks you through clearing the servo&apos;s overload trip: torque off and on, then a power cycle if needed.</source>
-        <translation>Führt Sie durch das Zurücksetzen der Überlastauslösung des Servos: Drehmoment aus und ein, bei Bedarf dann Aus- und Einschalten der Stromversorgung.</translation>
-    </message>
-    <message>
-        <source>Guard…</source>
-        <translation>Schutz…</translation>
-    </message>
-    <message>
-        <source>The overload and thermal guard&apos;s limits, hold time and action for each servo.</source>
-        <translation>Grenzen, Haltezeit und Aktion des Überlast- und Temperaturschutzes für jedes Servo.</translation>
-    </message>
-    <message>
-        <source>Guard on: an overloaded servo is stopped (held where it stands, or its torque switched off, as set under Guard…); a hot one has its torque switched off.</source>
-        <translation>Schutz ein: Ein überlastetes Servo wird gestoppt (an der Stelle gehalten oder sein Drehmoment abgeschaltet, wie unter „Schutz…“ eingestellt); bei einem heißen wird das Drehmoment abgeschaltet.</translation>
-    </message>
-    <message>
-        <source>Guard off: nothing stops an overloaded servo but its own protection.</source>
-        <translation>Schutz aus: Nichts stoppt ein überlastetes Servo außer seinem eigenen Schutz.</translation>
     </message>
 </context>
 <context>
@@ -3203,6 +3091,33 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>It answers with error bits: %1 (the Doctor says why).</source>
         <translation>Es antwortet mit Fehlerbits: %1 (der Doktor sagt, warum).</translation>
+    </message>
+</context>
+<context>
+    <name>GuardBanner</name>
+    <message>
+        <source>Recover…</source>
+        <translation>Wiederherstellen…</translation>
+    </message>
+    <message>
+        <source>Walks you through clearing the servo&apos;s overload trip: torque off and on, then a power cycle if needed.</source>
+        <translation>Führt Sie durch das Zurücksetzen der Überlastauslösung des Servos: Drehmoment aus und ein, bei Bedarf dann Aus- und Einschalten der Stromversorgung.</translation>
+    </message>
+    <message>
+        <source>Guard…</source>
+        <translation>Schutz…</translation>
+    </message>
+    <message>
+        <source>The overload and thermal guard&apos;s limits, hold time and action for each servo.</source>
+        <translation>Grenzen, Haltezeit und Aktion des Überlast- und Temperaturschutzes für jedes Servo.</translation>
+    </message>
+    <message>
+        <source>Guard on: an overloaded servo is stopped (held where it stands, or its torque switched off, as set under Guard…); a hot one has its torque switched off.</source>
+        <translation>Schutz ein: Ein überlastetes Servo wird gestoppt (an der Stelle gehalten oder sein Drehmoment abgeschaltet, wie unter „Schutz…“ eingestellt); bei einem heißen wird das Drehmoment abgeschaltet.</translation>
+    </message>
+    <message>
+        <source>Guard off: nothing stops an overloaded servo but its own protection.</source>
+        <translation>Schutz aus: Nichts stoppt ein überlastetes Servo außer seinem eigenen Schutz.</translation>
     </message>
 </context>
 <context>
@@ -6701,6 +6616,101 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ServoControlGroups</name>
+    <message>
+        <source>Torque</source>
+        <translation>Drehmoment</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>Torque off: the horn turns freely (torque enable 0).</source>
+        <translation>Drehmoment aus: Das Servohorn dreht sich frei (torque enable 0).</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <source>Torque on: the servo holds its goal position (torque enable 1).</source>
+        <translation>Drehmoment ein: Das Servo hält seine Zielposition (torque enable 1).</translation>
+    </message>
+    <message>
+        <source>Damping</source>
+        <translation>Dämpfung</translation>
+    </message>
+    <message>
+        <source>Damping: the horn can be turned by hand against a resistance (torque enable 2).</source>
+        <translation>Dämpfung: Das Servohorn lässt sich von Hand gegen einen Widerstand drehen (torque enable 2).</translation>
+    </message>
+    <message>
+        <source>Operating mode</source>
+        <translation>Betriebsart</translation>
+    </message>
+    <message>
+        <source>How the servo uses its goal registers. Stored in EEPROM.</source>
+        <translation>Wie das Servo seine Zielregister nutzt. Im EEPROM gespeichert.</translation>
+    </message>
+    <message>
+        <source>Set mode…</source>
+        <translation>Betriebsart setzen…</translation>
+    </message>
+    <message>
+        <source>Write the chosen operating mode to the servo&apos;s EEPROM.</source>
+        <translation>Die gewählte Betriebsart ins EEPROM des Servos schreiben.</translation>
+    </message>
+    <message>
+        <source>Goal position</source>
+        <translation>Zielposition</translation>
+    </message>
+    <message>
+        <source>Drag to move the servo: goals are sent as fast as the servo confirms them, always the newest one.</source>
+        <translation>Ziehen, um das Servo zu bewegen: Ziele werden so schnell gesendet, wie das Servo sie bestätigt, immer das neueste.</translation>
+    </message>
+    <message>
+        <source> step</source>
+        <translation> Schritte</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Bewegen</translation>
+    </message>
+    <message>
+        <source>Send this goal position with the speed and acceleration below.</source>
+        <translation>Diese Zielposition mit der Geschwindigkeit und Beschleunigung unten senden.</translation>
+    </message>
+    <message>
+        <source>Where the horn is: the monitor&apos;s newest sample, or the last read of the present position.</source>
+        <translation>Wo das Servohorn steht: der neueste Messwert des Monitors oder der zuletzt gelesene Wert der aktuellen Position.</translation>
+    </message>
+    <message>
+        <source>Goal</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Present</source>
+        <translation>Aktuell</translation>
+    </message>
+    <message>
+        <source>Goal speed, in register units (0: the servo&apos;s maximum).</source>
+        <translation>Zielgeschwindigkeit in Registereinheiten (0: Maximum des Servos).</translation>
+    </message>
+    <message>
+        <source>Acceleration, in register units (0: the servo&apos;s maximum).</source>
+        <translation>Beschleunigung in Registereinheiten (0: Maximum des Servos).</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Beschleunigung</translation>
     </message>
 </context>
 <context>

@@ -834,118 +834,6 @@
         <translation>该舵机型号未知：ServoBench 不会移动它。</translation>
     </message>
     <message>
-        <source>Torque</source>
-        <translation>扭矩</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>关</translation>
-    </message>
-    <message>
-        <source>Torque off: the horn turns freely (torque enable 0).</source>
-        <translation>扭矩关闭：舵盘可自由转动（扭矩开关 0）。</translation>
-    </message>
-    <message>
-        <source>On</source>
-        <translation>开</translation>
-    </message>
-    <message>
-        <source>Torque on: the servo holds its goal position (torque enable 1).</source>
-        <translation>扭矩开启：舵机保持其目标位置（扭矩开关 1）。</translation>
-    </message>
-    <message>
-        <source>Damping</source>
-        <translation>阻尼</translation>
-    </message>
-    <message>
-        <source>Operating mode</source>
-        <translation>运行模式</translation>
-    </message>
-    <message>
-        <source>How the servo uses its goal registers. Stored in EEPROM.</source>
-        <translation>舵机如何使用其目标寄存器。保存在 EEPROM 中。</translation>
-    </message>
-    <message>
-        <source>Set mode…</source>
-        <translation>设置模式…</translation>
-    </message>
-    <message>
-        <source>Write the chosen operating mode to the servo&apos;s EEPROM.</source>
-        <translation>将所选的运行模式写入舵机的 EEPROM。</translation>
-    </message>
-    <message>
-        <source>Goal position</source>
-        <translation>目标位置</translation>
-    </message>
-    <message>
-        <source>Drag to move the servo: goals are sent as fast as the servo confirms them, always the newest one.</source>
-        <translation>拖动以移动舵机：目标会以舵机确认的最快速度发送，且总是发送最新的目标。</translation>
-    </message>
-    <message>
-        <source> step</source>
-        <translation> 步</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>移动</translation>
-    </message>
-    <message>
-        <source>Send this goal position with the speed and acceleration below.</source>
-        <translation>以下方的速度和加速度发送此目标位置。</translation>
-    </message>
-    <message>
-        <source>Where the horn is: the monitor&apos;s newest sample, or the last read of the present position.</source>
-        <translation>舵盘所在位置：监视的最新采样，或最后一次读取的当前位置。</translation>
-    </message>
-    <message>
-        <source>Goal</source>
-        <translation>目标</translation>
-    </message>
-    <message>
-        <source>Present</source>
-        <translation>当前</translation>
-    </message>
-    <message>
-        <source>Goal speed, in register units (0: the servo&apos;s maximum).</source>
-        <translation>目标速度，单位为寄存器单位（0：舵机的最大值）。</translation>
-    </message>
-    <message>
-        <source>Acceleration, in register units (0: the servo&apos;s maximum).</source>
-        <translation>加速度，单位为寄存器单位（0：舵机的最大值）。</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <source>Acceleration</source>
-        <translation>加速度</translation>
-    </message>
-    <message>
-        <source>Recover…</source>
-        <translation>恢复…</translation>
-    </message>
-    <message>
-        <source>Walks you through clearing the servo&apos;s overload trip: torque off and on, then a power cycle if needed.</source>
-        <translation>引导您清除舵机的过载保护：先关闭再开启扭矩，必要时再断电重启。</translation>
-    </message>
-    <message>
-        <source>Guard…</source>
-        <translation>监护…</translation>
-    </message>
-    <message>
-        <source>The overload and thermal guard&apos;s limits, hold time and action for each servo.</source>
-        <translation>每个舵机的过载与过热监护的限值、持续时间和动作。</translation>
-    </message>
-    <message>
-        <source>Guard on: an overloaded servo is stopped (held where it stands, or its torque switched off, as set under Guard…); a hot one has its torque switched off.</source>
-        <translation>监护已开启：过载的舵机会被停止（保持在当前位置，或关闭其扭矩，取决于“监护…”中的设置）；过热的舵机会被关闭扭矩。</translation>
-    </message>
-    <message>
-        <source>Guard off: nothing stops an overloaded servo but its own protection.</source>
-        <translation>监护已关闭：除了舵机自身的保护，没有任何机制会停止过载的舵机。</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
@@ -3190,6 +3078,33 @@ An ID in use is refused.</source>
     <message>
         <source>It answers with error bits: %1 (the Doctor says why).</source>
         <translation>它的应答带有错误位：%1（诊断会说明原因）。</translation>
+    </message>
+</context>
+<context>
+    <name>GuardBanner</name>
+    <message>
+        <source>Recover…</source>
+        <translation>恢复…</translation>
+    </message>
+    <message>
+        <source>Walks you through clearing the servo&apos;s overload trip: torque off and on, then a power cycle if needed.</source>
+        <translation>引导您清除舵机的过载保护：先关闭再开启扭矩，必要时再断电重启。</translation>
+    </message>
+    <message>
+        <source>Guard…</source>
+        <translation>监护…</translation>
+    </message>
+    <message>
+        <source>The overload and thermal guard&apos;s limits, hold time and action for each servo.</source>
+        <translation>每个舵机的过载与过热监护的限值、持续时间和动作。</translation>
+    </message>
+    <message>
+        <source>Guard on: an overloaded servo is stopped (held where it stands, or its torque switched off, as set under Guard…); a hot one has its torque switched off.</source>
+        <translation>监护已开启：过载的舵机会被停止（保持在当前位置，或关闭其扭矩，取决于“监护…”中的设置）；过热的舵机会被关闭扭矩。</translation>
+    </message>
+    <message>
+        <source>Guard off: nothing stops an overloaded servo but its own protection.</source>
+        <translation>监护已关闭：除了舵机自身的保护，没有任何机制会停止过载的舵机。</translation>
     </message>
 </context>
 <context>
@@ -6669,6 +6584,101 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>ServoControlGroups</name>
+    <message>
+        <source>Torque</source>
+        <translation>扭矩</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <source>Torque off: the horn turns freely (torque enable 0).</source>
+        <translation>扭矩关闭：舵盘可自由转动（扭矩开关 0）。</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>开</translation>
+    </message>
+    <message>
+        <source>Torque on: the servo holds its goal position (torque enable 1).</source>
+        <translation>扭矩开启：舵机保持其目标位置（扭矩开关 1）。</translation>
+    </message>
+    <message>
+        <source>Damping</source>
+        <translation>阻尼</translation>
+    </message>
+    <message>
+        <source>Damping: the horn can be turned by hand against a resistance (torque enable 2).</source>
+        <translation>阻尼：可以用手转动舵盘，但会感到阻力（扭矩开关 2）。</translation>
+    </message>
+    <message>
+        <source>Operating mode</source>
+        <translation>运行模式</translation>
+    </message>
+    <message>
+        <source>How the servo uses its goal registers. Stored in EEPROM.</source>
+        <translation>舵机如何使用其目标寄存器。保存在 EEPROM 中。</translation>
+    </message>
+    <message>
+        <source>Set mode…</source>
+        <translation>设置模式…</translation>
+    </message>
+    <message>
+        <source>Write the chosen operating mode to the servo&apos;s EEPROM.</source>
+        <translation>将所选的运行模式写入舵机的 EEPROM。</translation>
+    </message>
+    <message>
+        <source>Goal position</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>Drag to move the servo: goals are sent as fast as the servo confirms them, always the newest one.</source>
+        <translation>拖动以移动舵机：目标会以舵机确认的最快速度发送，且总是发送最新的目标。</translation>
+    </message>
+    <message>
+        <source> step</source>
+        <translation> 步</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>移动</translation>
+    </message>
+    <message>
+        <source>Send this goal position with the speed and acceleration below.</source>
+        <translation>以下方的速度和加速度发送此目标位置。</translation>
+    </message>
+    <message>
+        <source>Where the horn is: the monitor&apos;s newest sample, or the last read of the present position.</source>
+        <translation>舵盘所在位置：监视的最新采样，或最后一次读取的当前位置。</translation>
+    </message>
+    <message>
+        <source>Goal</source>
+        <translation>目标</translation>
+    </message>
+    <message>
+        <source>Present</source>
+        <translation>当前</translation>
+    </message>
+    <message>
+        <source>Goal speed, in register units (0: the servo&apos;s maximum).</source>
+        <translation>目标速度，单位为寄存器单位（0：舵机的最大值）。</translation>
+    </message>
+    <message>
+        <source>Acceleration, in register units (0: the servo&apos;s maximum).</source>
+        <translation>加速度，单位为寄存器单位（0：舵机的最大值）。</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>加速度</translation>
     </message>
 </context>
 <context>

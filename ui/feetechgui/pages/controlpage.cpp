@@ -1,9 +1,11 @@
-// Control page: the servo shown, its controls kept in step with the device, and the status line;
-// the groups and the writes are in controlpagegroups.cpp and controlpagewrites.cpp.
+// Control page: the servo shown, its controls kept in step with the device, the writes they make
+// (torque, goals from the slider, mode changes after a warning), and the status line.
 #include "controlpage.h"
 
 #include "busclient.h"
 #include "goalrange.h"
+#include "goalstreamer.h"
+#include "guardbanner.h"
 #include "motiontestpanel.h"
 #include "palette.h"
 #include "registerkeys.h"
@@ -14,7 +16,6 @@
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QFrame>
-#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -60,6 +61,7 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     : QWidget(parent)
     , m_client(client)
     , m_test(new feetech::MotionTest(client, {}, this))
+    , m_goals(new feetech::GoalStreamer(client, this))
 {
     setObjectName(QStringLiteral("controlPage"));
 
@@ -73,7 +75,8 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     m_hint->setMargin(10);
     m_hint->setForegroundRole(QPalette::PlaceholderText);
     outer->addWidget(m_hint);
-    outer->addWidget(buildGuardBanner());
+    m_guardBanner = new GuardBanner(client, this);
+    outer->addWidget(m_guardBanner);
 
     auto *scroll = new QScrollArea(this);
     scroll->setObjectName(QStringLiteral("controlScrollArea"));
@@ -90,9 +93,10 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     columns->setSpacing(10);
     auto *left = new QVBoxLayout;
     left->setSpacing(10);
-    left->addWidget(buildTorqueGroup());
-    left->addWidget(buildGoalGroup());
-    left->addWidget(buildModeGroup());
+    m_controls.setup(this);
+    left->addWidget(m_controls.torqueGroup);
+    left->addWidget(m_controls.goalGroup);
+    left->addWidget(m_controls.modeGroup);
     left->addStretch(1);
     columns->addLayout(left, 0);
     m_testPanel = new MotionTestPanel(m_test, this);
@@ -112,6 +116,22 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     outer->addWidget(m_status);
 
+    connect(m_controls.torqueButtons, &QButtonGroup::idClicked, this, &ControlPage::setTorque);
+    connect(m_controls.mode, &QComboBox::activated, this, [this] {
+        const auto device = m_index >= 0 && m_client->parameters(m_index)
+            ? m_client->parameters(m_index)->deviceValue(kMode)
+            : std::nullopt;
+        m_modeEdited = !device || m_controls.mode->currentData().toLongLong() != *device;
+        updateEnabled();
+    });
+    connect(m_controls.modeApply, &QPushButton::clicked, this, &ControlPage::changeMode);
+    connect(m_controls.slider, &QSlider::valueChanged, this, &ControlPage::onSliderMoved);
+    connect(m_controls.move, &QPushButton::clicked, this,
+            [this] { moveTo(m_controls.goal->value()); });
+    // Queued for the servo shown: a change of servo clears the queue.
+    connect(m_goals, &feetech::GoalStreamer::queuedGoalDue, this,
+            [this](qint32 goal) { moveTo(goal); });
+
     connect(m_client, &feetech::BusClient::servosChanged, this, &ControlPage::onServosChanged);
     connect(m_client, &feetech::BusClient::servoUpdated, this, &ControlPage::onServoUpdated);
     connect(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived, this,
@@ -123,9 +143,8 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         if (!m_client->isConnected()) {
             // Nothing comes back from writes the link dropped.
-            m_goalsInFlight = 0;
+            m_goals->forgetWrites();
             m_torqueWritesInFlight = 0;
-            m_queuedGoal.reset();
         }
         updateEnabled();
         updatePresent();
@@ -165,7 +184,7 @@ void ControlPage::setServo(int index)
     m_index = index;
     m_servo = servo;
     m_testPanel->setServo(index, servoName());
-    showGuard();
+    m_guardBanner->setServo(index);
     if (changed) {
         setStatus({}, Severity::Info);
         configureForServo();
@@ -229,7 +248,7 @@ void ControlPage::configureForServo()
     m_presentReadMs = 0;
     m_goalInitialised = false;
     m_modeEdited = false;
-    m_queuedGoal.reset();
+    m_goals->dropQueued();
     if (!ready()) {
         updateEnabled();
         updatePresent();
@@ -239,31 +258,32 @@ void ControlPage::configureForServo()
     const model::ParameterModel *parameters = m_client->parameters(m_index);
 
     const bool damping = allowsDamping(table);
-    m_torqueDamping->setToolTip(
+    m_controls.torqueDamping->setToolTip(
         damping ? tr("Damping: the horn can be turned by hand against a resistance (torque "
                      "enable 2).")
                 : tr("%1 servos have no damping mode.").arg(feetech::familyName(table.family())));
 
     {
-        const QSignalBlocker blocker(m_mode);
-        m_mode->clear();
+        const QSignalBlocker blocker(m_controls.mode);
+        m_controls.mode->clear();
         if (const feetech::Register *mode = table.find(kMode)) {
             for (const feetech::Choice &choice : mode->choices)
-                m_mode->addItem(feetech::tableText(choice.label), choice.value);
-            m_modeNote->setText(tr("Stored in EEPROM: the servo keeps it when powered off."));
+                m_controls.mode->addItem(feetech::tableText(choice.label), choice.value);
+            m_controls.modeNote->setText(
+                tr("Stored in EEPROM: the servo keeps it when powered off."));
         } else {
-            m_modeNote->setText(tr("%1 servos have no operating mode register: they hold "
-                                   "positions.")
-                                    .arg(feetech::familyName(table.family())));
+            m_controls.modeNote->setText(tr("%1 servos have no operating mode register: they hold "
+                                            "positions.")
+                                             .arg(feetech::familyName(table.family())));
         }
     }
 
     const feetech::Register *speed = table.find(kGoalSpeed);
     const feetech::Register *acceleration = table.find(kAcceleration);
-    setRegisterRange(m_speed, speed, true);
-    setRegisterRange(m_acceleration, acceleration, true);
-    m_speedUnit->setText(unitText(speed));
-    m_accelerationUnit->setText(unitText(acceleration));
+    setRegisterRange(m_controls.speed, speed, true);
+    setRegisterRange(m_controls.acceleration, acceleration, true);
+    m_controls.speedUnit->setText(unitText(speed));
+    m_controls.accelerationUnit->setText(unitText(acceleration));
     // What the servo is set to, or a gentle third of its range (0 would mean flat out).
     const auto deviceSpeed = parameters->deviceValue(kGoalSpeed);
     const int speedValue = deviceSpeed && *deviceSpeed > 0
@@ -273,8 +293,8 @@ void ControlPage::configureForServo()
     const int accelerationValue = deviceAcceleration && *deviceAcceleration > 0
         ? toInt(*deviceAcceleration)
         : (acceleration ? std::max(acceleration->maximum / 5, 1) : 0);
-    m_speed->setValue(speedValue);
-    m_acceleration->setValue(accelerationValue);
+    m_controls.speed->setValue(speedValue);
+    m_controls.acceleration->setValue(accelerationValue);
     m_testPanel->configure(speed, acceleration, speedValue, accelerationValue);
 
     updateRanges();
@@ -287,34 +307,37 @@ void ControlPage::updateRanges()
 {
     const auto range = ready() ? feetech::goalRange(*m_client, m_index) : std::nullopt;
     if (!range) {
-        m_rangeNote->clear();
+        m_controls.rangeNote->clear();
         return;
     }
-    if (m_slider->minimum() != range->minimum || m_slider->maximum() != range->maximum) {
-        const QSignalBlocker blocker(m_slider);
-        m_slider->setRange(range->minimum, range->maximum);
-        m_slider->setPageStep(std::max(1, (range->maximum - range->minimum) / 20));
-        m_slider->setTickInterval(std::max(1, (range->maximum - range->minimum) / 8));
+    if (m_controls.slider->minimum() != range->minimum
+        || m_controls.slider->maximum() != range->maximum) {
+        const QSignalBlocker blocker(m_controls.slider);
+        m_controls.slider->setRange(range->minimum, range->maximum);
+        m_controls.slider->setPageStep(std::max(1, (range->maximum - range->minimum) / 20));
+        m_controls.slider->setTickInterval(std::max(1, (range->maximum - range->minimum) / 8));
     }
-    if (m_goal->minimum() != range->minimum || m_goal->maximum() != range->maximum) {
-        const QSignalBlocker blocker(m_goal);
-        m_goal->setRange(range->minimum, range->maximum);
+    if (m_controls.goal->minimum() != range->minimum
+        || m_controls.goal->maximum() != range->maximum) {
+        const QSignalBlocker blocker(m_controls.goal);
+        m_controls.goal->setRange(range->minimum, range->maximum);
     }
     m_testPanel->setPositionRange(range->minimum, range->maximum);
     {
-        const QSignalBlocker blocker(m_slider);
-        m_slider->setValue(m_goal->value());
+        const QSignalBlocker blocker(m_controls.slider);
+        m_controls.slider->setValue(m_controls.goal->value());
     }
-    m_sliderMinimum->setText(QLocale().toString(range->minimum));
-    m_sliderMaximum->setText(QLocale().toString(range->maximum));
-    m_rangeNote->setText(range->fromAngleLimits
-                             ? tr("Goals are limited to the servo's angle limits, %1 to %2 steps.")
-                                   .arg(range->minimum)
-                                   .arg(range->maximum)
-                             : tr("The servo has no angle limits (multi-turn) or they are not read "
-                                  "yet: goals are limited to the register's range, %1 to %2.")
-                                   .arg(range->minimum)
-                                   .arg(range->maximum));
+    m_controls.sliderMinimum->setText(QLocale().toString(range->minimum));
+    m_controls.sliderMaximum->setText(QLocale().toString(range->maximum));
+    m_controls.rangeNote->setText(
+        range->fromAngleLimits
+            ? tr("Goals are limited to the servo's angle limits, %1 to %2 steps.")
+                  .arg(range->minimum)
+                  .arg(range->maximum)
+            : tr("The servo has no angle limits (multi-turn) or they are not read "
+                 "yet: goals are limited to the register's range, %1 to %2.")
+                  .arg(range->minimum)
+                  .arg(range->maximum));
 }
 
 void ControlPage::onServoUpdated(int index)
@@ -335,30 +358,30 @@ void ControlPage::syncFromDevice()
     const auto torque = parameters->deviceValue(kTorqueEnable);
     const auto mode =
         torque ? m_client->servo(m_index).info.table().torqueMode(*torque) : std::nullopt;
-    QAbstractButton *checked = mode ? m_torqueButtons->button(int(*mode)) : nullptr;
+    QAbstractButton *checked = mode ? m_controls.torqueButtons->button(int(*mode)) : nullptr;
     if (checked) {
         checked->setChecked(true);
-    } else if (QAbstractButton *current = m_torqueButtons->checkedButton()) {
+    } else if (QAbstractButton *current = m_controls.torqueButtons->checkedButton()) {
         // Unknown (not read yet, or a value the buttons do not offer): none is pressed.
-        m_torqueButtons->setExclusive(false);
+        m_controls.torqueButtons->setExclusive(false);
         current->setChecked(false);
-        m_torqueButtons->setExclusive(true);
+        m_controls.torqueButtons->setExclusive(true);
     }
     if (!torque)
-        m_torqueState->setText(tr("Torque state not read yet."));
+        m_controls.torqueState->setText(tr("Torque state not read yet."));
     else if (mode == feetech::TorqueMode::Off)
-        m_torqueState->setText(tr("Off: the horn turns freely."));
+        m_controls.torqueState->setText(tr("Off: the horn turns freely."));
     else if (mode == feetech::TorqueMode::On)
-        m_torqueState->setText(tr("On: the servo holds its goal position."));
+        m_controls.torqueState->setText(tr("On: the servo holds its goal position."));
     else if (mode == feetech::TorqueMode::Damping)
-        m_torqueState->setText(tr("Damping: the horn resists being turned."));
+        m_controls.torqueState->setText(tr("Damping: the horn resists being turned."));
     else
-        m_torqueState->setText(tr("Torque enable is %1.").arg(*torque));
+        m_controls.torqueState->setText(tr("Torque enable is %1.").arg(*torque));
 
     if (!m_modeEdited) {
         const auto mode = parameters->deviceValue(kMode);
-        const QSignalBlocker blocker(m_mode);
-        m_mode->setCurrentIndex(mode ? m_mode->findData(qint32(*mode)) : -1);
+        const QSignalBlocker blocker(m_controls.mode);
+        m_controls.mode->setCurrentIndex(mode ? m_controls.mode->findData(qint32(*mode)) : -1);
     }
 
     // The goal starts where the horn is, so Move or a touch of the slider cannot jump it to a
@@ -369,14 +392,16 @@ void ControlPage::syncFromDevice()
             start = parameters->deviceValue(kGoalPosition);
         if (start) {
             m_goalInitialised = true;
-            const int here = std::clamp(toInt(*start), m_goal->minimum(), m_goal->maximum());
+            const int here =
+                std::clamp(toInt(*start), m_controls.goal->minimum(), m_controls.goal->maximum());
             {
-                const QSignalBlocker spinBlocker(m_goal);
-                const QSignalBlocker sliderBlocker(m_slider);
-                m_goal->setValue(here);
-                m_slider->setValue(here);
+                const QSignalBlocker spinBlocker(m_controls.goal);
+                const QSignalBlocker sliderBlocker(m_controls.slider);
+                m_controls.goal->setValue(here);
+                m_controls.slider->setValue(here);
             }
-            m_testPanel->proposeAround(here, m_goal->minimum(), m_goal->maximum());
+            m_testPanel->proposeAround(here, m_controls.goal->minimum(),
+                                       m_controls.goal->maximum());
         }
     }
 }
@@ -417,8 +442,9 @@ void ControlPage::updatePresent()
                 m_presentPosition = sample->value(feetech::Quantity::Position);
         }
     }
-    m_present->setText(m_presentPosition ? tr("%1 step").arg(std::lround(*m_presentPosition))
-                                         : QStringLiteral("—"));
+    m_controls.present->setText(m_presentPosition
+                                    ? tr("%1 step").arg(std::lround(*m_presentPosition))
+                                    : QStringLiteral("—"));
 }
 
 void ControlPage::refreshPresent()
@@ -451,20 +477,21 @@ void ControlPage::updateEnabled()
     }
 
     const bool torque = has(kTorqueEnable);
-    m_torqueOff->setEnabled(torque);
-    m_torqueOn->setEnabled(torque);
-    m_torqueDamping->setEnabled(torque && allowsDamping(*table));
+    m_controls.torqueOff->setEnabled(torque);
+    m_controls.torqueOn->setEnabled(torque);
+    m_controls.torqueDamping->setEnabled(torque && allowsDamping(*table));
 
     const bool goal = has(kGoalPosition) && !here;
-    for (QWidget *widget : {static_cast<QWidget *>(m_slider), static_cast<QWidget *>(m_goal),
-                            static_cast<QWidget *>(m_move)})
+    for (QWidget *widget :
+         {static_cast<QWidget *>(m_controls.slider), static_cast<QWidget *>(m_controls.goal),
+          static_cast<QWidget *>(m_controls.move)})
         widget->setEnabled(goal);
-    m_speed->setEnabled(goal && has(kGoalSpeed));
-    m_acceleration->setEnabled(goal && has(kAcceleration));
+    m_controls.speed->setEnabled(goal && has(kGoalSpeed));
+    m_controls.acceleration->setEnabled(goal && has(kAcceleration));
 
     const bool mode = has(kMode) && !here;
-    m_mode->setEnabled(mode);
-    m_modeApply->setEnabled(mode && m_modeEdited && m_mode->currentIndex() >= 0);
+    m_controls.mode->setEnabled(mode);
+    m_controls.modeApply->setEnabled(mode && m_modeEdited && m_controls.mode->currentIndex() >= 0);
 
     m_testPanel->updateEnabled(has(kGoalPosition), has(kGoalSpeed), has(kAcceleration));
 }
@@ -472,15 +499,15 @@ void ControlPage::updateEnabled()
 void ControlPage::onTestRunning(bool running)
 {
     if (running) {
-        m_queuedGoal.reset(); // the test owns the goal now
+        m_goals->dropQueued(); // the test owns the goal now
     } else if (ready() && m_test->plan().index == m_index) {
         // The goal controls take over from where the test left the goal, so a touch of the
         // slider does not jump the horn back to an old one.
         if (const auto goal = m_client->parameters(m_index)->deviceValue(kGoalPosition)) {
-            const QSignalBlocker spinBlocker(m_goal);
-            const QSignalBlocker sliderBlocker(m_slider);
-            m_goal->setValue(toInt(*goal));
-            m_slider->setValue(m_goal->value());
+            const QSignalBlocker spinBlocker(m_controls.goal);
+            const QSignalBlocker sliderBlocker(m_controls.slider);
+            m_controls.goal->setValue(toInt(*goal));
+            m_controls.slider->setValue(m_controls.goal->value());
         }
     }
     updateEnabled();
@@ -501,4 +528,167 @@ void ControlPage::setStatus(const QString &text, Severity severity)
         m_status->setPalette(colours);
     }
     m_status->setVisible(!text.isEmpty());
+}
+
+// ---- writes
+
+bool ControlPage::write(WriteKind kind, const QVector<model::WriteItem> &values)
+{
+    QString error;
+    feetech::OperationReply *reply = kind == WriteKind::Goal
+        ? m_goals->send(m_index, values, &error)
+        : m_client->writeValues(m_index, values, &error);
+    if (!reply) {
+        setStatus(tr("%1: %2").arg(servoName(), error), Severity::Error);
+        return false;
+    }
+    if (kind == WriteKind::Torque)
+        ++m_torqueWritesInFlight;
+    connect(reply, &feetech::OperationReply::finished, this,
+            [this, kind, id = m_servo->first](const feetech::OperationResult &result) {
+                onWriteFinished(kind, id, result);
+            });
+    return true;
+}
+
+void ControlPage::setTorque(int modeId)
+{
+    const auto value = ready()
+        ? m_client->servo(m_index).info.table().torqueValue(feetech::TorqueMode(modeId))
+        : std::nullopt;
+    if (!value) {
+        syncFromDevice();
+        return;
+    }
+    setStatus({}, Severity::Info);
+    if (testRunsHere()) {
+        // Switching torque under a running test would leave it measuring nonsense.
+        m_testPanel->stop();
+    }
+    if (!write(WriteKind::Torque, {{kTorqueEnable, *value}}))
+        syncFromDevice(); // the buttons go back to what the servo has
+}
+
+void ControlPage::onSliderMoved(int value)
+{
+    {
+        const QSignalBlocker blocker(m_controls.goal);
+        m_controls.goal->setValue(value);
+    }
+    if (!ready() || testRunsHere())
+        return;
+    // One goal on the wire at a time; a newer one replaces whatever waits behind it.
+    if (!m_goals->queueIfBusy(value))
+        moveTo(value);
+}
+
+bool ControlPage::moveTo(qint32 position, QString *error)
+{
+    const auto refuse = [this, error](const QString &why) {
+        setStatus(why, Severity::Error);
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!ready())
+        return refuse(m_index < 0 ? tr("No servo is selected.")
+                                  : tr("The servo cannot be moved now: the bus is not "
+                                       "connected or its model is unknown."));
+    if (testRunsHere())
+        return refuse(tr("A test is moving %1: stop it first.").arg(servoName()));
+    const auto range = feetech::goalRange(*m_client, m_index);
+    if (!range)
+        return refuse(tr("%1 has no goal position register.").arg(servoName()));
+    if (!range->contains(position))
+        return refuse(tr("Goal %1 is outside %2, %3 to %4 steps: nothing was sent.")
+                          .arg(position)
+                          .arg(range->fromAngleLimits ? tr("the servo's angle limits")
+                                                      : tr("the goal position range"))
+                          .arg(range->minimum)
+                          .arg(range->maximum));
+
+    const feetech::RegisterTable &table = m_client->servo(m_index).info.table();
+    QVector<model::WriteItem> values;
+    if (table.find(kAcceleration))
+        values.append({kAcceleration, m_controls.acceleration->value()});
+    if (table.find(kGoalSpeed))
+        values.append({kGoalSpeed, m_controls.speed->value()});
+    values.append({kGoalPosition, position});
+    if (!write(WriteKind::Goal, values)) {
+        if (error)
+            *error = statusText();
+        return false;
+    }
+    const bool torqueWritePending = m_torqueWritesInFlight > 0;
+    const auto torque = m_client->parameters(m_index)->deviceValue(kTorqueEnable);
+    if (!torqueWritePending && torque
+        && m_client->servo(m_index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off)
+        setStatus(tr("Torque is off: %1 keeps the goal but does not move until torque is on.")
+                      .arg(servoName()),
+                  Severity::Warning);
+    else if (m_status->property("severity").toInt() == int(Severity::Error))
+        setStatus({}, Severity::Info); // an earlier refusal no longer applies
+    {
+        const QSignalBlocker spinBlocker(m_controls.goal);
+        const QSignalBlocker sliderBlocker(m_controls.slider);
+        m_controls.goal->setValue(position);
+        m_controls.slider->setValue(position);
+    }
+    return true;
+}
+
+void ControlPage::changeMode()
+{
+    if (!ready() || m_controls.mode->currentIndex() < 0)
+        return;
+    const qint64 value = m_controls.mode->currentData().toLongLong();
+    const auto device = m_client->parameters(m_index)->deviceValue(kMode);
+    if (device && *device == value) {
+        m_modeEdited = false;
+        updateEnabled();
+        return;
+    }
+    if (m_confirmMoves) {
+        const int deviceIndex = device ? m_controls.mode->findData(qint32(*device)) : -1;
+        const QString from =
+            deviceIndex >= 0 ? m_controls.mode->itemText(deviceIndex) : tr("unknown");
+        QMessageBox box(QMessageBox::Warning, tr("Change the operating mode?"),
+                        tr("%1 will change from “%2” to “%3”.")
+                            .arg(servoName(), from, m_controls.mode->currentText()),
+                        QMessageBox::Ok | QMessageBox::Cancel, this);
+        box.setInformativeText(
+            tr("The servo will move differently from now on: in speed or PWM mode the goal "
+               "registers make it turn continuously instead of holding a position. The mode is "
+               "written to EEPROM and kept after power-off."));
+        box.button(QMessageBox::Ok)->setText(tr("Change mode"));
+        box.setDefaultButton(QMessageBox::Cancel);
+        if (box.exec() != QMessageBox::Ok)
+            return;
+    }
+    setStatus({}, Severity::Info);
+    write(WriteKind::Mode, {{kMode, value}});
+}
+
+void ControlPage::onWriteFinished(WriteKind kind, quint8 id, const feetech::OperationResult &result)
+{
+    // A link that went down set the count to 0 already. GoalStreamer counts the goals, drops
+    // the goal queued behind a failing one and has the one queued behind a good one sent.
+    if (kind == WriteKind::Torque)
+        m_torqueWritesInFlight = std::max(0, m_torqueWritesInFlight - 1);
+    if (kind == WriteKind::Mode)
+        m_modeEdited = false;
+    if (!result.ok)
+        setStatus(tr("Writing to servo ID %1 failed: %2").arg(id).arg(result.message),
+                  Severity::Error);
+    syncFromDevice();
+    updateEnabled();
+}
+
+void ControlPage::onAllTorqueOff()
+{
+    m_goals->dropQueued();
+    if (ready())
+        m_controls.torqueOff->setChecked(true); // the read-back confirms it
+    m_controls.torqueState->setText(tr("Off: All torque off was sent to every servo."));
+    setStatus(tr("All torque off: torque is off on every servo of the bus."), Severity::Warning);
 }

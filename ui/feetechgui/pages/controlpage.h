@@ -3,30 +3,24 @@
 #pragma once
 
 #include "motiontest.h"
+#include "servocontrolgroups.h"
 
-#include <QElapsedTimer>
 #include <QPointer>
 #include <QWidget>
 
-#include <deque>
 #include <optional>
+#include <utility>
 
+class GuardBanner;
 class MotionTestPanel;
-class QButtonGroup;
-class QComboBox;
-class QGroupBox;
 class QLabel;
-class QPushButton;
-class QSlider;
-class QSpinBox;
 class QTimer;
 
 namespace feetech {
 class BusClient;
+class GoalStreamer;
 struct FeedbackSample;
-struct GuardEvent;
 struct OperationResult;
-struct Register;
 } // namespace feetech
 
 class ControlPage : public QWidget
@@ -54,24 +48,12 @@ public:
     bool moveTo(qint32 position, QString *error = nullptr);
 
     QString statusText() const; // the status line: the last error or notice
-    // The guard's banner: what the guard last said about the servo shown (empty: nothing).
-    QString guardText() const;
+    // The guard's banner: what the guard last said about the servo shown.
+    GuardBanner *guardBanner() const { return m_guardBanner; }
 
 private:
-    // Torque enable values, all in one place.
-
     enum class WriteKind { Torque, Goal, Mode };
     enum class Severity { Info, Warning, Error };
-
-    QGroupBox *buildTorqueGroup();
-    QGroupBox *buildModeGroup();
-    QGroupBox *buildGoalGroup();
-    // The guard's banner and its actions (controlpageguard.cpp).
-    QWidget *buildGuardBanner();
-    void onGuardEvent(const feetech::GuardEvent &event);
-    void showGuard(); // the banner for the servo shown
-    void openGuardSettings();
-    void openRecovery();
 
     void onServosChanged();
     void onServoUpdated(int index);
@@ -109,50 +91,18 @@ private:
     bool m_confirmMoves = true;
 
     // Goal writes from the slider: one in flight, only the newest value waits behind it.
-    int m_goalsInFlight = 0;
+    feetech::GoalStreamer *m_goals = nullptr;
     int m_torqueWritesInFlight = 0;
-    QElapsedTimer m_goalSentAt;
-    std::optional<qint32> m_queuedGoal;
     bool m_goalInitialised = false; // the goal spin has been set from the servo once
     bool m_modeEdited = false; // the combo shows the user's choice, not the device's
     std::optional<double> m_presentPosition; // the newest, from telemetry or a register read
     qint64 m_presentReadMs = 0; // the register read m_presentPosition last took in
 
     QLabel *m_hint = nullptr;
+    GuardBanner *m_guardBanner = nullptr;
     QWidget *m_body = nullptr;
-
-    QGroupBox *m_torqueGroup = nullptr;
-    QButtonGroup *m_torqueButtons = nullptr;
-    QPushButton *m_torqueOff = nullptr;
-    QPushButton *m_torqueOn = nullptr;
-    QPushButton *m_torqueDamping = nullptr;
-    QLabel *m_torqueState = nullptr;
-
-    QGroupBox *m_modeGroup = nullptr;
-    QComboBox *m_mode = nullptr;
-    QPushButton *m_modeApply = nullptr;
-    QLabel *m_modeNote = nullptr;
-
-    QGroupBox *m_goalGroup = nullptr;
-    QSlider *m_slider = nullptr;
-    QLabel *m_sliderMinimum = nullptr;
-    QLabel *m_sliderMaximum = nullptr;
-    QSpinBox *m_goal = nullptr;
-    QPushButton *m_move = nullptr;
-    QLabel *m_present = nullptr;
-    QLabel *m_rangeNote = nullptr;
-    QSpinBox *m_speed = nullptr;
-    QLabel *m_speedUnit = nullptr;
-    QSpinBox *m_acceleration = nullptr;
-    QLabel *m_accelerationUnit = nullptr;
-
+    ServoControlGroups m_controls;
     MotionTestPanel *m_testPanel = nullptr;
-
-    QWidget *m_guardBanner = nullptr;
-    QLabel *m_guardText = nullptr;
-    QPushButton *m_guardRecover = nullptr;
-    QPushButton *m_guardSettings = nullptr;
-
     QLabel *m_status = nullptr;
     QTimer *m_refreshTimer = nullptr;
 };
