@@ -677,7 +677,8 @@ void ControlPage::onWriteFinished(WriteKind kind, quint8 id, const feetech::Oper
         m_torqueWritesInFlight = std::max(0, m_torqueWritesInFlight - 1);
     if (kind == WriteKind::Mode)
         m_modeEdited = false;
-    if (!result.ok)
+    // A write the lost link dropped is no failure of the servo's: the page shows the link.
+    if (!result.ok && !result.linkLost)
         setStatus(tr("Writing to servo ID %1 failed: %2").arg(id).arg(result.message),
                   Severity::Error);
     syncFromDevice();
