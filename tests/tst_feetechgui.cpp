@@ -4,9 +4,11 @@
 #include "feetechworkspace.h"
 #include "jointtable.h"
 #include "mainwindow.h"
+#include "memorytablepage.h"
 #include "operationlog.h"
 #include "parameterpage.h"
 #include "registertablemodel.h"
+#include "servotree.h"
 
 #include <QAbstractItemView>
 #include <QLineEdit>
@@ -51,7 +53,7 @@ private:
 
     QModelIndex valueIndex(const QString &key) const
     {
-        QAbstractItemModel *model = workspace()->memoryTable()->model();
+        QAbstractItemModel *model = workspace()->memoryPage()->table()->model();
         for (int row = 0; row < model->rowCount(); ++row) {
             const QModelIndex index = model->index(row, RegisterTableModel::ValueColumn);
             if (index.data(RegisterTableModel::KeyRole).toString() == key)
@@ -154,7 +156,7 @@ private slots:
     {
         connectAndScan();
         workspace()->tabs()->setCurrentIndex(1);
-        QTableView *table = workspace()->memoryTable();
+        QTableView *table = workspace()->memoryPage()->table();
         const QModelIndex cell = valueIndex(QStringLiteral("max_temperature"));
         QVERIFY(cell.isValid());
         QTRY_VERIFY(cell.flags() & Qt::ItemIsEditable);

@@ -12,6 +12,7 @@
 #include "motiontest.h"
 #include "robotactions.h"
 #include "robottemplatedialog.h"
+#include "servotree.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -53,9 +54,9 @@ private:
     BatchResultDialog *applyToAll(const feetech::SettingsFile &file)
     {
         workspace()->servoTree()->selectAll();
-        if (workspace()->selectedServos().size() != 3) {
+        if (workspace()->servoTree()->selectedServos().size() != 3) {
             qWarning("the tree selection holds %d servos",
-                     int(workspace()->selectedServos().size()));
+                     int(workspace()->servoTree()->selectedServos().size()));
             return nullptr;
         }
         QString error;
@@ -163,7 +164,7 @@ private slots:
             QVERIFY(!client()->parameters(client()->indexOf(id, k1M))->hasEdits());
         }
         // Every operation rebuilds the tree: the selection outlives them.
-        QCOMPARE(workspace()->selectedServos().size(), 3);
+        QCOMPARE(workspace()->servoTree()->selectedServos().size(), 3);
         dialog->close();
         QTRY_VERIFY(!actions()->resultDialog());
 

@@ -41,8 +41,8 @@ private:
         QVERIFY(arm >= 0);
         m_wizard->robotChoice()->setCurrentIndex(arm);
         m_wizard->show();
-        QTRY_VERIFY_WITH_TIMEOUT(!m_wizard->isWorking(), 20000);
-        QCOMPARE(m_wizard->robot().name, kArm);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_wizard->flow()->isWorking(), 20000);
+        QCOMPARE(m_wizard->flow()->robot().name, kArm);
     }
 
     // Clicks `button` (which must be enabled) and waits for the work it starts to end.
@@ -50,8 +50,8 @@ private:
     {
         QVERIFY(button->isEnabled());
         QTest::mouseClick(button, Qt::LeftButton);
-        QVERIFY(m_wizard->isWorking());
-        QTRY_VERIFY_WITH_TIMEOUT(!m_wizard->isWorking(), 30000);
+        QVERIFY(m_wizard->flow()->isWorking());
+        QTRY_VERIFY_WITH_TIMEOUT(!m_wizard->flow()->isWorking(), 30000);
     }
 
     QString outcome() const { return m_wizard->outcome()->text(); }
@@ -89,13 +89,13 @@ private slots:
     void aWholeArmIsSetUpOneFactoryServoAtATime()
     {
         openWizard();
-        QCOMPARE(m_wizard->currentJoint(), 0);
+        QCOMPARE(m_wizard->flow()->currentJoint(), 0);
         QCOMPARE(status(0), QStringLiteral("Current"));
         // Factory servos come at 1 Mbps; one set to another rate must be found too.
         const QVector<qint32> factoryRates {k1M, 115200, 500000, k1M, k1M, 57600};
         for (int i = 0; i < m_robot.joints.size(); ++i) {
             const feetech::RobotJoint &joint = m_robot.joints.at(i);
-            QCOMPARE(m_wizard->currentJoint(), i);
+            QCOMPARE(m_wizard->flow()->currentJoint(), i);
             QVERIFY2(m_wizard->instruction()->text().startsWith(
                          QStringLiteral("Connect only the <b>%1</b> servo (ID will be %2) and "
                                         "press <i>Find</i>.")
@@ -110,7 +110,7 @@ private slots:
             QVERIFY(outcome().contains(feetech::baudText(factoryRates.at(i))));
             QVERIFY(pluggedServos().first().id == 1); // a find writes nothing
             clickAndWait(m_wizard->setUpButton());
-            QVERIFY2(m_wizard->jointState(i) == SetupWizard::JointState::Done,
+            QVERIFY2(m_wizard->flow()->jointState(i) == feetech::MotorSetupFlow::JointState::Done,
                      qPrintable(outcome()));
             QCOMPARE(status(i), QStringLiteral("Done"));
             QVERIFY(outcome().contains(joint.name + QStringLiteral(" is set up")));
@@ -118,7 +118,7 @@ private slots:
             powerCycle();
             verifySetUp(0, m_robot, joint, Settings::EepromOnly);
         }
-        QCOMPARE(m_wizard->currentJoint(), -1);
+        QCOMPARE(m_wizard->flow()->currentJoint(), -1);
         QVERIFY(outcome().contains(QLatin1String("Every joint is set up.")));
         QVERIFY(!m_wizard->findButton()->isEnabled());
     }
@@ -129,18 +129,18 @@ private slots:
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
         clickAndWait(m_wizard->findButton());
         clickAndWait(m_wizard->setUpButton());
-        QCOMPARE(m_wizard->jointState(0), SetupWizard::JointState::Done);
+        QCOMPARE(m_wizard->flow()->jointState(0), feetech::MotorSetupFlow::JointState::Done);
         m_wizard.reset(); // closed, its state gone
         // Servos set up before (say with servoctl), and one at elbow_flex's ID straight from
         // the factory.
         plugSetUp(m_robot.joints.at(1));
         QVERIFY(plug(3, QStringLiteral("STS3215"), k1M));
         openWizard();
-        QCOMPARE(m_wizard->jointState(0), SetupWizard::JointState::Done);
-        QCOMPARE(m_wizard->jointState(1), SetupWizard::JointState::Done);
-        QCOMPARE(m_wizard->jointState(2), SetupWizard::JointState::ToDo);
+        QCOMPARE(m_wizard->flow()->jointState(0), feetech::MotorSetupFlow::JointState::Done);
+        QCOMPARE(m_wizard->flow()->jointState(1), feetech::MotorSetupFlow::JointState::Done);
+        QCOMPARE(m_wizard->flow()->jointState(2), feetech::MotorSetupFlow::JointState::ToDo);
         QVERIFY2(status(2).contains(QLatin1String("ID 3 answers, but ")), qPrintable(status(2)));
-        QCOMPARE(m_wizard->currentJoint(), 2);
+        QCOMPARE(m_wizard->flow()->currentJoint(), 2);
         QVERIFY(m_wizard->instruction()->text().contains(QLatin1String("<b>elbow_flex</b>")));
         QVERIFY(outcome().contains(QLatin1String("2 of 6 joint(s) set up")));
     }
@@ -153,8 +153,8 @@ private slots:
         clickAndWait(m_wizard->setUpButton());
         unplugAll();
         clickAndWait(m_wizard->checkButton());
-        QCOMPARE(m_wizard->jointState(0), SetupWizard::JointState::Done);
-        QCOMPARE(m_wizard->currentJoint(), 1);
+        QCOMPARE(m_wizard->flow()->jointState(0), feetech::MotorSetupFlow::JointState::Done);
+        QCOMPARE(m_wizard->flow()->currentJoint(), 1);
     }
 
     void aStopBetweenStepsWritesNothingMoreAndLeavesTheJointToDo()
@@ -166,9 +166,9 @@ private slots:
         QTest::mouseClick(m_wizard->setUpButton(), Qt::LeftButton);
         QVERIFY(m_wizard->stopButton()->isEnabled());
         QTest::mouseClick(m_wizard->stopButton(), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(!m_wizard->isWorking(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_wizard->flow()->isWorking(), 30000);
         QVERIFY2(outcome().contains(QLatin1String("Stopped")), qPrintable(outcome()));
-        QCOMPARE(m_wizard->jointState(0), SetupWizard::JointState::ToDo);
+        QCOMPARE(m_wizard->flow()->jointState(0), feetech::MotorSetupFlow::JointState::ToDo);
         QCOMPARE(pluggedServos().first().revision, revision);
         QVERIFY(m_wizard->findButton()->isEnabled()); // and it can go on
     }
@@ -205,7 +205,7 @@ private slots:
         clickAndWait(m_wizard->findButton());
         QVERIFY2(outcome().contains(message.toHtmlEscaped()), qPrintable(outcome()));
         QVERIFY(outcome().contains(QLatin1String("othing was written")));
-        QCOMPARE(m_wizard->jointState(0), SetupWizard::JointState::Failed);
+        QCOMPARE(m_wizard->flow()->jointState(0), feetech::MotorSetupFlow::JointState::Failed);
         QVERIFY(status(0).contains(message));
         QVERIFY(!m_wizard->setUpButton()->isEnabled());
         const QVector<testsupport::PluggedServo> after = pluggedServos();
@@ -234,7 +234,7 @@ private slots:
         auto *wizard = window.findChild<SetupWizard *>();
         QVERIFY(wizard);
         QVERIFY(wizard->isVisible());
-        QTRY_VERIFY_WITH_TIMEOUT(!wizard->isWorking(), 20000); // its check of the bus
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard->flow()->isWorking(), 20000); // its check of the bus
         QVERIFY(wizard->findButton()->isEnabled());
         wizard->close();
     }

@@ -324,6 +324,160 @@
     </message>
 </context>
 <context>
+    <name>CalibrationJointsPage</name>
+    <message>
+        <source>Choose the joints to calibrate. ServoBench records how far each joint turns, then sets its position offset so that the middle of that range reads 2048, and its angle limits to the range: no joint&apos;s range crosses the encoder&apos;s 0/4095 seam.</source>
+        <translation>Wählen Sie die zu kalibrierenden Gelenke. ServoBench zeichnet auf, wie weit sich jedes Gelenk dreht, setzt dann seinen Positions-Offset so, dass die Mitte dieses Bereichs 2048 ergibt, und seine Winkelgrenzen auf den Bereich: Kein Gelenkbereich überschreitet die 0/4095-Naht des Encoders.</translation>
+    </message>
+    <message>
+        <source>No template (joints named by ID)</source>
+        <translation>Keine Vorlage (Gelenke nach ID benannt)</translation>
+    </message>
+    <message>
+        <source>Names the joints whose IDs the arm&apos;s template has</source>
+        <translation>Benennt die Gelenke, deren IDs die Vorlage des Arms enthält</translation>
+    </message>
+    <message>
+        <source>Robot:</source>
+        <translation>Roboter:</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>Kalibrieren</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Full turn</source>
+        <translation>Volle Umdrehung</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>Reihenfolge</translation>
+    </message>
+    <message>
+        <source>ServoBench: record each joint&apos;s range, then centre it on the encoder (recommended)</source>
+        <translation>ServoBench: Bereich jedes Gelenks aufzeichnen, dann auf dem Encoder zentrieren (empfohlen)</translation>
+    </message>
+    <message>
+        <source>LeRobot: put the arm in its middle pose first (it reads 2047), then record the ranges</source>
+        <translation>LeRobot: Arm zuerst in seine Mittelpose bringen (sie ergibt 2047), dann die Bereiche aufzeichnen</translation>
+    </message>
+    <message>
+        <source>&amp;Next</source>
+        <translation>&amp;Weiter</translation>
+    </message>
+    <message>
+        <source>Check the choice, then switch torque off</source>
+        <translation>Auswahl prüfen, dann Drehmoment abschalten</translation>
+    </message>
+    <message>
+        <source>%1 (no position offset)</source>
+        <translation>%1 (kein Positions-Offset)</translation>
+    </message>
+    <message>
+        <source>This servo has no position offset register: it cannot be calibrated</source>
+        <translation>Dieses Servo hat kein Positions-Offset-Register: Es kann nicht kalibriert werden</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a joint name: use letters, digits and _, a letter first (LeRobot&apos;s motor names, such as shoulder_pan).</source>
+        <translation>„%1“ ist kein Gelenkname: Verwenden Sie Buchstaben, Ziffern und _, beginnend mit einem Buchstaben (die Motornamen von LeRobot, etwa shoulder_pan).</translation>
+    </message>
+    <message>
+        <source>Two joints are named &quot;%1&quot;: give each its own name.</source>
+        <translation>Zwei Gelenke heißen „%1“: Geben Sie jedem einen eigenen Namen.</translation>
+    </message>
+    <message>
+        <source>Servo %1 (%2) has no position offset on a 4096-step encoder: it cannot be calibrated. Leave it out.</source>
+        <translation>Servo %1 (%2) hat keinen Positions-Offset auf einem 4096-Schritt-Encoder: Es kann nicht kalibriert werden. Lassen Sie es weg.</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1 (ID %2)</translation>
+    </message>
+    <message>
+        <source>Choose at least one joint to calibrate.</source>
+        <translation>Wählen Sie mindestens ein Gelenk zum Kalibrieren.</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationResultsPage</name>
+    <message>
+        <source>Each joint&apos;s new position offset and angle limits (in steps, in the new coordinates), or why it is refused. Nothing has been written yet.</source>
+        <translation>Neuer Positions-Offset und neue Winkelgrenzen jedes Gelenks (in Schritten, in den neuen Koordinaten) oder warum es abgelehnt wird. Noch wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <source>Min limit</source>
+        <translation>Min.-Grenze</translation>
+    </message>
+    <message>
+        <source>Max limit</source>
+        <translation>Max.-Grenze</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>&amp;Write to the servos</source>
+        <translation>&amp;Auf die Servos schreiben</translation>
+    </message>
+    <message>
+        <source>Write the offsets and limits to EEPROM and verify them</source>
+        <translation>Offsets und Grenzen ins EEPROM schreiben und verifizieren</translation>
+    </message>
+    <message>
+        <source>&amp;Save LeRobot file…</source>
+        <translation>LeRobot-Datei &amp;speichern…</translation>
+    </message>
+    <message>
+        <source>Save the written calibration as LeRobot&apos;s JSON file</source>
+        <translation>Die geschriebene Kalibrierung als JSON-Datei von LeRobot speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Record again</source>
+        <translation>&amp;Erneut aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Forget this recording and record the ranges again</source>
+        <translation>Diese Aufzeichnung verwerfen und die Bereiche erneut aufzeichnen</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>To write</source>
+        <translation>Zu schreiben</translation>
+    </message>
+    <message>
+        <source>Refused, nothing written: %1</source>
+        <translation>Abgelehnt, nichts geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>Written and verified</source>
+        <translation>Geschrieben und verifiziert</translation>
+    </message>
+</context>
+<context>
     <name>CalibrationSaver</name>
     <message>
         <source>Servo %1 could not be read: %2; nothing was saved.</source>
@@ -391,26 +545,6 @@
         <translation>Nicht jedes Gelenk wurde geschrieben: siehe Statusspalte.</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is not a joint name: use letters, digits and _, a letter first (LeRobot&apos;s motor names, such as shoulder_pan).</source>
-        <translation>„%1“ ist kein Gelenkname: Verwenden Sie Buchstaben, Ziffern und _, beginnend mit einem Buchstaben (die Motornamen von LeRobot, etwa shoulder_pan).</translation>
-    </message>
-    <message>
-        <source>Two joints are named &quot;%1&quot;: give each its own name.</source>
-        <translation>Zwei Gelenke heißen „%1“: Geben Sie jedem einen eigenen Namen.</translation>
-    </message>
-    <message>
-        <source>Servo %1 (%2) has no position offset on a 4096-step encoder: it cannot be calibrated. Leave it out.</source>
-        <translation>Servo %1 (%2) hat keinen Positions-Offset auf einem 4096-Schritt-Encoder: Es kann nicht kalibriert werden. Lassen Sie es weg.</translation>
-    </message>
-    <message>
-        <source>%1 (ID %2)</source>
-        <translation>%1 (ID %2)</translation>
-    </message>
-    <message>
-        <source>Choose at least one joint to calibrate.</source>
-        <translation>Wählen Sie mindestens ein Gelenk zum Kalibrieren.</translation>
-    </message>
-    <message>
         <source>Support the arm: torque goes off on these joints, and the arm will fall under its own weight if nothing holds it.
 
 %1</source>
@@ -425,10 +559,6 @@
     <message>
         <source>Servo %1: %2</source>
         <translation>Servo %1: %2</translation>
-    </message>
-    <message>
-        <source>Written and verified</source>
-        <translation>Geschrieben und verifiziert</translation>
     </message>
     <message>
         <source>%1 (%2): %3</source>
@@ -477,70 +607,6 @@
     <message>
         <source>Saved %1.</source>
         <translation>%1 gespeichert.</translation>
-    </message>
-    <message>
-        <source>Choose the joints to calibrate. ServoBench records how far each joint turns, then sets its position offset so that the middle of that range reads 2048, and its angle limits to the range: no joint&apos;s range crosses the encoder&apos;s 0/4095 seam.</source>
-        <translation>Wählen Sie die zu kalibrierenden Gelenke. ServoBench zeichnet auf, wie weit sich jedes Gelenk dreht, setzt dann seinen Positions-Offset so, dass die Mitte dieses Bereichs 2048 ergibt, und seine Winkelgrenzen auf den Bereich: Kein Gelenkbereich überschreitet die 0/4095-Naht des Encoders.</translation>
-    </message>
-    <message>
-        <source>No template (joints named by ID)</source>
-        <translation>Keine Vorlage (Gelenke nach ID benannt)</translation>
-    </message>
-    <message>
-        <source>Names the joints whose IDs the arm&apos;s template has</source>
-        <translation>Benennt die Gelenke, deren IDs die Vorlage des Arms enthält</translation>
-    </message>
-    <message>
-        <source>Robot:</source>
-        <translation>Roboter:</translation>
-    </message>
-    <message>
-        <source>Calibrate</source>
-        <translation>Kalibrieren</translation>
-    </message>
-    <message>
-        <source>ID</source>
-        <translation>ID</translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation>Modell</translation>
-    </message>
-    <message>
-        <source>Joint</source>
-        <translation>Gelenk</translation>
-    </message>
-    <message>
-        <source>Full turn</source>
-        <translation>Volle Umdrehung</translation>
-    </message>
-    <message>
-        <source>Order</source>
-        <translation>Reihenfolge</translation>
-    </message>
-    <message>
-        <source>ServoBench: record each joint&apos;s range, then centre it on the encoder (recommended)</source>
-        <translation>ServoBench: Bereich jedes Gelenks aufzeichnen, dann auf dem Encoder zentrieren (empfohlen)</translation>
-    </message>
-    <message>
-        <source>LeRobot: put the arm in its middle pose first (it reads 2047), then record the ranges</source>
-        <translation>LeRobot: Arm zuerst in seine Mittelpose bringen (sie ergibt 2047), dann die Bereiche aufzeichnen</translation>
-    </message>
-    <message>
-        <source>&amp;Next</source>
-        <translation>&amp;Weiter</translation>
-    </message>
-    <message>
-        <source>Check the choice, then switch torque off</source>
-        <translation>Auswahl prüfen, dann Drehmoment abschalten</translation>
-    </message>
-    <message>
-        <source>%1 (no position offset)</source>
-        <translation>%1 (kein Positions-Offset)</translation>
-    </message>
-    <message>
-        <source>This servo has no position offset register: it cannot be calibrated</source>
-        <translation>Dieses Servo hat kein Positions-Offset-Register: Es kann nicht kalibriert werden</translation>
     </message>
     <message>
         <source>Nothing is written to the servos until you have seen the results and chosen to write them. Cancel at any point writes nothing (torque stays off).</source>
@@ -593,62 +659,6 @@
     <message>
         <source>, full turn</source>
         <translation>, volle Umdrehung</translation>
-    </message>
-    <message>
-        <source>Each joint&apos;s new position offset and angle limits (in steps, in the new coordinates), or why it is refused. Nothing has been written yet.</source>
-        <translation>Neuer Positions-Offset und neue Winkelgrenzen jedes Gelenks (in Schritten, in den neuen Koordinaten) oder warum es abgelehnt wird. Noch wurde nichts geschrieben.</translation>
-    </message>
-    <message>
-        <source>Offset</source>
-        <translation>Offset</translation>
-    </message>
-    <message>
-        <source>Min limit</source>
-        <translation>Min.-Grenze</translation>
-    </message>
-    <message>
-        <source>Max limit</source>
-        <translation>Max.-Grenze</translation>
-    </message>
-    <message>
-        <source>Status</source>
-        <translation>Status</translation>
-    </message>
-    <message>
-        <source>&amp;Write to the servos</source>
-        <translation>&amp;Auf die Servos schreiben</translation>
-    </message>
-    <message>
-        <source>Write the offsets and limits to EEPROM and verify them</source>
-        <translation>Offsets und Grenzen ins EEPROM schreiben und verifizieren</translation>
-    </message>
-    <message>
-        <source>&amp;Save LeRobot file…</source>
-        <translation>LeRobot-Datei &amp;speichern…</translation>
-    </message>
-    <message>
-        <source>Save the written calibration as LeRobot&apos;s JSON file</source>
-        <translation>Die geschriebene Kalibrierung als JSON-Datei von LeRobot speichern</translation>
-    </message>
-    <message>
-        <source>&amp;Record again</source>
-        <translation>&amp;Erneut aufzeichnen</translation>
-    </message>
-    <message>
-        <source>Forget this recording and record the ranges again</source>
-        <translation>Diese Aufzeichnung verwerfen und die Bereiche erneut aufzeichnen</translation>
-    </message>
-    <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <source>To write</source>
-        <translation>Zu schreiben</translation>
-    </message>
-    <message>
-        <source>Refused, nothing written: %1</source>
-        <translation>Abgelehnt, nichts geschrieben: %1</translation>
     </message>
 </context>
 <context>
@@ -2755,22 +2765,6 @@
         <translation>Verbinden Sie und scannen Sie dann, um die Servos zu finden.</translation>
     </message>
     <message>
-        <source>Servo</source>
-        <translation>Servo</translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation>Modell</translation>
-    </message>
-    <message>
-        <source>Family</source>
-        <translation>Familie</translation>
-    </message>
-    <message>
-        <source>Firmware</source>
-        <translation>Firmware</translation>
-    </message>
-    <message>
         <source>All torque off  (Esc)</source>
         <translation>Alle Drehmomente aus  (Esc)</translation>
     </message>
@@ -2835,42 +2829,6 @@
         <translation>Einstellungen</translation>
     </message>
     <message>
-        <source>Filter registers</source>
-        <translation>Register filtern</translation>
-    </message>
-    <message>
-        <source>Refresh RAM live</source>
-        <translation>RAM live aktualisieren</translation>
-    </message>
-    <message>
-        <source>Read the RAM registers (present position, load, voltage…) several times a second while this table is shown</source>
-        <translation>Die RAM-Register (aktuelle Position, Last, Spannung…) mehrmals pro Sekunde lesen, solange diese Tabelle angezeigt wird</translation>
-    </message>
-    <message>
-        <source>Read</source>
-        <translation>Lesen</translation>
-    </message>
-    <message>
-        <source>Read every register of the servo</source>
-        <translation>Jedes Register des Servos lesen</translation>
-    </message>
-    <message>
-        <source>Revert</source>
-        <translation>Verwerfen</translation>
-    </message>
-    <message>
-        <source>Drop every edit</source>
-        <translation>Alle Änderungen verwerfen</translation>
-    </message>
-    <message>
-        <source>Apply</source>
-        <translation>Übernehmen</translation>
-    </message>
-    <message>
-        <source>Write the edited registers, then read them back</source>
-        <translation>Die geänderten Register schreiben und dann zurücklesen</translation>
-    </message>
-    <message>
         <source>Memory table</source>
         <translation>Speichertabelle</translation>
     </message>
@@ -2905,26 +2863,6 @@
     <message>
         <source>Connect to the bus before scanning.</source>
         <translation>Verbinden Sie sich vor dem Scan mit dem Bus.</translation>
-    </message>
-    <message>
-        <source>Bus</source>
-        <translation>Bus</translation>
-    </message>
-    <message>
-        <source>unknown</source>
-        <translation>unbekannt</translation>
-    </message>
-    <message>
-        <source>ID %1</source>
-        <translation>ID %1</translation>
-    </message>
-    <message>
-        <source>Model number %1 (major %2, minor %3)</source>
-        <translation>Modellnummer %1 (Major %2, Minor %3)</translation>
-    </message>
-    <message>
-        <source>No register table is known for this model: its memory is shown as raw bytes, read-only.</source>
-        <translation>Für dieses Modell ist keine Registertabelle bekannt: Sein Speicher wird als Rohbytes angezeigt, schreibgeschützt.</translation>
     </message>
     <message>
         <source>servo %1 (%2)</source>
@@ -3075,22 +3013,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>No servo yet: scan the bus.</source>
         <translation>Noch kein Servo: Scannen Sie den Bus.</translation>
-    </message>
-    <message>
-        <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
-        <translation>Kein Servo gewählt: Scannen Sie den Bus und wählen Sie dann ein Servo im Baum; jedes Register seiner Speichertabelle erscheint hier.</translation>
-    </message>
-    <message>
-        <source>ID %1 (shared!)</source>
-        <translation>ID %1 (geteilt!)</translation>
-    </message>
-    <message>
-        <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
-        <translation>Zwei oder mehr Servos antworten unter ID %1: Ihre Antworten kommen verstümmelt zurück. Solange die ID geteilt ist, wird nichts an sie geschrieben; schließen Sie die Servos einzeln an und geben Sie jedem seine eigene ID.</translation>
-    </message>
-    <message>
-        <source>It answers with error bits: %1 (the Doctor says why).</source>
-        <translation>Es antwortet mit Fehlerbits: %1 (der Doktor sagt, warum).</translation>
     </message>
 </context>
 <context>
@@ -4199,6 +4121,49 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>&lt;p&gt;Home: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Website: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>MemoryTablePage</name>
+    <message>
+        <source>Filter registers</source>
+        <translation>Register filtern</translation>
+    </message>
+    <message>
+        <source>Refresh RAM live</source>
+        <translation>RAM live aktualisieren</translation>
+    </message>
+    <message>
+        <source>Read the RAM registers (present position, load, voltage…) several times a second while this table is shown</source>
+        <translation>Die RAM-Register (aktuelle Position, Last, Spannung…) mehrmals pro Sekunde lesen, solange diese Tabelle angezeigt wird</translation>
+    </message>
+    <message>
+        <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
+        <translation>Kein Servo gewählt: Scannen Sie den Bus und wählen Sie dann ein Servo im Baum; jedes Register seiner Speichertabelle erscheint hier.</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <source>Read every register of the servo</source>
+        <translation>Jedes Register des Servos lesen</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Drop every edit</source>
+        <translation>Alle Änderungen verwerfen</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+    <message>
+        <source>Write the edited registers, then read them back</source>
+        <translation>Die geänderten Register schreiben und dann zurücklesen</translation>
     </message>
 </context>
 <context>
@@ -6844,6 +6809,57 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>%1 steps</source>
         <translation>%1 Schritte</translation>
+    </message>
+</context>
+<context>
+    <name>ServoTree</name>
+    <message>
+        <source>Servo</source>
+        <translation>Servo</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>Familie</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>Firmware</translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation>Bus</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>ID %1 (shared!)</source>
+        <translation>ID %1 (geteilt!)</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
+        <translation>Zwei oder mehr Servos antworten unter ID %1: Ihre Antworten kommen verstümmelt zurück. Solange die ID geteilt ist, wird nichts an sie geschrieben; schließen Sie die Servos einzeln an und geben Sie jedem seine eigene ID.</translation>
+    </message>
+    <message>
+        <source>It answers with error bits: %1 (the Doctor says why).</source>
+        <translation>Es antwortet mit Fehlerbits: %1 (der Doktor sagt, warum).</translation>
+    </message>
+    <message>
+        <source>Model number %1 (major %2, minor %3)</source>
+        <translation>Modellnummer %1 (Major %2, Minor %3)</translation>
+    </message>
+    <message>
+        <source>No register table is known for this model: its memory is shown as raw bytes, read-only.</source>
+        <translation>Für dieses Modell ist keine Registertabelle bekannt: Sein Speicher wird als Rohbytes angezeigt, schreibgeschützt.</translation>
     </message>
 </context>
 <context>

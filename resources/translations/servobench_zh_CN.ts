@@ -323,6 +323,160 @@
     </message>
 </context>
 <context>
+    <name>CalibrationJointsPage</name>
+    <message>
+        <source>Choose the joints to calibrate. ServoBench records how far each joint turns, then sets its position offset so that the middle of that range reads 2048, and its angle limits to the range: no joint&apos;s range crosses the encoder&apos;s 0/4095 seam.</source>
+        <translation>请选择要校准的关节。ServoBench 会记录每个关节的转动范围，然后设置其位置偏移，使该范围的中间读数为 2048，并将其角度限制设为该范围：任何关节的范围都不会跨越编码器的 0/4095 分界点。</translation>
+    </message>
+    <message>
+        <source>No template (joints named by ID)</source>
+        <translation>无模板（按 ID 命名关节）</translation>
+    </message>
+    <message>
+        <source>Names the joints whose IDs the arm&apos;s template has</source>
+        <translation>按机械臂模板中的 ID 为关节命名</translation>
+    </message>
+    <message>
+        <source>Robot:</source>
+        <translation>机器人：</translation>
+    </message>
+    <message>
+        <source>Calibrate</source>
+        <translation>校准</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>关节</translation>
+    </message>
+    <message>
+        <source>Full turn</source>
+        <translation>整圈</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>顺序</translation>
+    </message>
+    <message>
+        <source>ServoBench: record each joint&apos;s range, then centre it on the encoder (recommended)</source>
+        <translation>ServoBench：先记录每个关节的范围，再使其在编码器上居中（推荐）</translation>
+    </message>
+    <message>
+        <source>LeRobot: put the arm in its middle pose first (it reads 2047), then record the ranges</source>
+        <translation>LeRobot：先将机械臂摆到中位姿态（读数为 2047），再记录范围</translation>
+    </message>
+    <message>
+        <source>&amp;Next</source>
+        <translation>下一步(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Check the choice, then switch torque off</source>
+        <translation>检查所选内容，然后关闭扭矩</translation>
+    </message>
+    <message>
+        <source>%1 (no position offset)</source>
+        <translation>%1（无位置偏移）</translation>
+    </message>
+    <message>
+        <source>This servo has no position offset register: it cannot be calibrated</source>
+        <translation>此舵机没有位置偏移寄存器：无法校准</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a joint name: use letters, digits and _, a letter first (LeRobot&apos;s motor names, such as shoulder_pan).</source>
+        <translation>“%1”不是有效的关节名：请使用字母、数字和 _，并以字母开头（LeRobot 的电机名称，例如 shoulder_pan）。</translation>
+    </message>
+    <message>
+        <source>Two joints are named &quot;%1&quot;: give each its own name.</source>
+        <translation>有两个关节都名为“%1”：请为每个关节取不同的名称。</translation>
+    </message>
+    <message>
+        <source>Servo %1 (%2) has no position offset on a 4096-step encoder: it cannot be calibrated. Leave it out.</source>
+        <translation>舵机 %1（%2）没有 4096 步编码器上的位置偏移：无法校准。请将其排除。</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1 (ID %2)</translation>
+    </message>
+    <message>
+        <source>Choose at least one joint to calibrate.</source>
+        <translation>请至少选择一个要校准的关节。</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationResultsPage</name>
+    <message>
+        <source>Each joint&apos;s new position offset and angle limits (in steps, in the new coordinates), or why it is refused. Nothing has been written yet.</source>
+        <translation>每个关节新的位置偏移和角度限制（单位为步，采用新坐标），或被拒绝的原因。目前尚未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>关节</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>偏移</translation>
+    </message>
+    <message>
+        <source>Min limit</source>
+        <translation>最小限制</translation>
+    </message>
+    <message>
+        <source>Max limit</source>
+        <translation>最大限制</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>&amp;Write to the servos</source>
+        <translation>写入舵机(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Write the offsets and limits to EEPROM and verify them</source>
+        <translation>将位置偏移和限制写入 EEPROM 并验证</translation>
+    </message>
+    <message>
+        <source>&amp;Save LeRobot file…</source>
+        <translation>保存 LeRobot 文件(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save the written calibration as LeRobot&apos;s JSON file</source>
+        <translation>将已写入的校准保存为 LeRobot 的 JSON 文件</translation>
+    </message>
+    <message>
+        <source>&amp;Record again</source>
+        <translation>重新记录(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Forget this recording and record the ranges again</source>
+        <translation>放弃此次记录，重新记录范围</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>To write</source>
+        <translation>待写入</translation>
+    </message>
+    <message>
+        <source>Refused, nothing written: %1</source>
+        <translation>已拒绝，未写入任何内容：%1</translation>
+    </message>
+    <message>
+        <source>Written and verified</source>
+        <translation>已写入并验证</translation>
+    </message>
+</context>
+<context>
     <name>CalibrationSaver</name>
     <message>
         <source>Servo %1 could not be read: %2; nothing was saved.</source>
@@ -389,26 +543,6 @@
         <translation>并非所有关节都已写入：请查看状态列。</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is not a joint name: use letters, digits and _, a letter first (LeRobot&apos;s motor names, such as shoulder_pan).</source>
-        <translation>“%1”不是有效的关节名：请使用字母、数字和 _，并以字母开头（LeRobot 的电机名称，例如 shoulder_pan）。</translation>
-    </message>
-    <message>
-        <source>Two joints are named &quot;%1&quot;: give each its own name.</source>
-        <translation>有两个关节都名为“%1”：请为每个关节取不同的名称。</translation>
-    </message>
-    <message>
-        <source>Servo %1 (%2) has no position offset on a 4096-step encoder: it cannot be calibrated. Leave it out.</source>
-        <translation>舵机 %1（%2）没有 4096 步编码器上的位置偏移：无法校准。请将其排除。</translation>
-    </message>
-    <message>
-        <source>%1 (ID %2)</source>
-        <translation>%1 (ID %2)</translation>
-    </message>
-    <message>
-        <source>Choose at least one joint to calibrate.</source>
-        <translation>请至少选择一个要校准的关节。</translation>
-    </message>
-    <message>
         <source>Support the arm: torque goes off on these joints, and the arm will fall under its own weight if nothing holds it.
 
 %1</source>
@@ -423,10 +557,6 @@
     <message>
         <source>Servo %1: %2</source>
         <translation>舵机 %1：%2</translation>
-    </message>
-    <message>
-        <source>Written and verified</source>
-        <translation>已写入并验证</translation>
     </message>
     <message>
         <source>%1 (%2): %3</source>
@@ -475,70 +605,6 @@
     <message>
         <source>Saved %1.</source>
         <translation>已保存 %1。</translation>
-    </message>
-    <message>
-        <source>Choose the joints to calibrate. ServoBench records how far each joint turns, then sets its position offset so that the middle of that range reads 2048, and its angle limits to the range: no joint&apos;s range crosses the encoder&apos;s 0/4095 seam.</source>
-        <translation>请选择要校准的关节。ServoBench 会记录每个关节的转动范围，然后设置其位置偏移，使该范围的中间读数为 2048，并将其角度限制设为该范围：任何关节的范围都不会跨越编码器的 0/4095 分界点。</translation>
-    </message>
-    <message>
-        <source>No template (joints named by ID)</source>
-        <translation>无模板（按 ID 命名关节）</translation>
-    </message>
-    <message>
-        <source>Names the joints whose IDs the arm&apos;s template has</source>
-        <translation>按机械臂模板中的 ID 为关节命名</translation>
-    </message>
-    <message>
-        <source>Robot:</source>
-        <translation>机器人：</translation>
-    </message>
-    <message>
-        <source>Calibrate</source>
-        <translation>校准</translation>
-    </message>
-    <message>
-        <source>ID</source>
-        <translation>ID</translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation>型号</translation>
-    </message>
-    <message>
-        <source>Joint</source>
-        <translation>关节</translation>
-    </message>
-    <message>
-        <source>Full turn</source>
-        <translation>整圈</translation>
-    </message>
-    <message>
-        <source>Order</source>
-        <translation>顺序</translation>
-    </message>
-    <message>
-        <source>ServoBench: record each joint&apos;s range, then centre it on the encoder (recommended)</source>
-        <translation>ServoBench：先记录每个关节的范围，再使其在编码器上居中（推荐）</translation>
-    </message>
-    <message>
-        <source>LeRobot: put the arm in its middle pose first (it reads 2047), then record the ranges</source>
-        <translation>LeRobot：先将机械臂摆到中位姿态（读数为 2047），再记录范围</translation>
-    </message>
-    <message>
-        <source>&amp;Next</source>
-        <translation>下一步(&amp;N)</translation>
-    </message>
-    <message>
-        <source>Check the choice, then switch torque off</source>
-        <translation>检查所选内容，然后关闭扭矩</translation>
-    </message>
-    <message>
-        <source>%1 (no position offset)</source>
-        <translation>%1（无位置偏移）</translation>
-    </message>
-    <message>
-        <source>This servo has no position offset register: it cannot be calibrated</source>
-        <translation>此舵机没有位置偏移寄存器：无法校准</translation>
     </message>
     <message>
         <source>Nothing is written to the servos until you have seen the results and chosen to write them. Cancel at any point writes nothing (torque stays off).</source>
@@ -591,62 +657,6 @@
     <message>
         <source>, full turn</source>
         <translation>，整圈</translation>
-    </message>
-    <message>
-        <source>Each joint&apos;s new position offset and angle limits (in steps, in the new coordinates), or why it is refused. Nothing has been written yet.</source>
-        <translation>每个关节新的位置偏移和角度限制（单位为步，采用新坐标），或被拒绝的原因。目前尚未写入任何内容。</translation>
-    </message>
-    <message>
-        <source>Offset</source>
-        <translation>偏移</translation>
-    </message>
-    <message>
-        <source>Min limit</source>
-        <translation>最小限制</translation>
-    </message>
-    <message>
-        <source>Max limit</source>
-        <translation>最大限制</translation>
-    </message>
-    <message>
-        <source>Status</source>
-        <translation>状态</translation>
-    </message>
-    <message>
-        <source>&amp;Write to the servos</source>
-        <translation>写入舵机(&amp;W)</translation>
-    </message>
-    <message>
-        <source>Write the offsets and limits to EEPROM and verify them</source>
-        <translation>将位置偏移和限制写入 EEPROM 并验证</translation>
-    </message>
-    <message>
-        <source>&amp;Save LeRobot file…</source>
-        <translation>保存 LeRobot 文件(&amp;S)…</translation>
-    </message>
-    <message>
-        <source>Save the written calibration as LeRobot&apos;s JSON file</source>
-        <translation>将已写入的校准保存为 LeRobot 的 JSON 文件</translation>
-    </message>
-    <message>
-        <source>&amp;Record again</source>
-        <translation>重新记录(&amp;R)</translation>
-    </message>
-    <message>
-        <source>Forget this recording and record the ranges again</source>
-        <translation>放弃此次记录，重新记录范围</translation>
-    </message>
-    <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <source>To write</source>
-        <translation>待写入</translation>
-    </message>
-    <message>
-        <source>Refused, nothing written: %1</source>
-        <translation>已拒绝，未写入任何内容：%1</translation>
     </message>
 </context>
 <context>
@@ -2742,22 +2752,6 @@
         <translation>请先连接，再扫描以查找舵机。</translation>
     </message>
     <message>
-        <source>Servo</source>
-        <translation>舵机</translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation>型号</translation>
-    </message>
-    <message>
-        <source>Family</source>
-        <translation>系列</translation>
-    </message>
-    <message>
-        <source>Firmware</source>
-        <translation>固件</translation>
-    </message>
-    <message>
         <source>All torque off  (Esc)</source>
         <translation>全部关闭扭矩  (Esc)</translation>
     </message>
@@ -2822,42 +2816,6 @@
         <translation>设置</translation>
     </message>
     <message>
-        <source>Filter registers</source>
-        <translation>筛选寄存器</translation>
-    </message>
-    <message>
-        <source>Refresh RAM live</source>
-        <translation>实时刷新 RAM</translation>
-    </message>
-    <message>
-        <source>Read the RAM registers (present position, load, voltage…) several times a second while this table is shown</source>
-        <translation>显示此表时，每秒多次读取 RAM 寄存器（当前位置、负载、电压…）</translation>
-    </message>
-    <message>
-        <source>Read</source>
-        <translation>读取</translation>
-    </message>
-    <message>
-        <source>Read every register of the servo</source>
-        <translation>读取舵机的所有寄存器</translation>
-    </message>
-    <message>
-        <source>Revert</source>
-        <translation>还原</translation>
-    </message>
-    <message>
-        <source>Drop every edit</source>
-        <translation>放弃所有编辑</translation>
-    </message>
-    <message>
-        <source>Apply</source>
-        <translation>应用</translation>
-    </message>
-    <message>
-        <source>Write the edited registers, then read them back</source>
-        <translation>写入已编辑的寄存器，然后回读</translation>
-    </message>
-    <message>
         <source>Memory table</source>
         <translation>内存表</translation>
     </message>
@@ -2896,26 +2854,6 @@
     <message>
         <source>Connect to the bus before scanning.</source>
         <translation>扫描前请先连接总线。</translation>
-    </message>
-    <message>
-        <source>Bus</source>
-        <translation>总线</translation>
-    </message>
-    <message>
-        <source>unknown</source>
-        <translation>未知</translation>
-    </message>
-    <message>
-        <source>ID %1</source>
-        <translation>ID %1</translation>
-    </message>
-    <message>
-        <source>Model number %1 (major %2, minor %3)</source>
-        <translation>型号编号 %1（主 %2，次 %3）</translation>
-    </message>
-    <message>
-        <source>No register table is known for this model: its memory is shown as raw bytes, read-only.</source>
-        <translation>此型号没有已知的寄存器表：其内存以原始字节只读显示。</translation>
     </message>
     <message>
         <source>servo %1 (%2)</source>
@@ -3062,22 +3000,6 @@ An ID in use is refused.</source>
     <message>
         <source>No servo yet: scan the bus.</source>
         <translation>还没有舵机：请扫描总线。</translation>
-    </message>
-    <message>
-        <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
-        <translation>未选择舵机：请扫描总线，然后在列表中选择一个舵机；其内存表的每个寄存器将显示在这里。</translation>
-    </message>
-    <message>
-        <source>ID %1 (shared!)</source>
-        <translation>ID %1（共用！）</translation>
-    </message>
-    <message>
-        <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
-        <translation>有两个或更多舵机在 ID %1 应答：它们的应答是乱码。该 ID 被共用期间不会向其写入任何内容；请逐个连接，并为每个舵机分配各自的 ID。</translation>
-    </message>
-    <message>
-        <source>It answers with error bits: %1 (the Doctor says why).</source>
-        <translation>它的应答带有错误位：%1（诊断会说明原因）。</translation>
     </message>
 </context>
 <context>
@@ -4182,6 +4104,49 @@ An ID in use is refused.</source>
     <message>
         <source>&lt;p&gt;Home: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;项目主页：&lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>MemoryTablePage</name>
+    <message>
+        <source>Filter registers</source>
+        <translation>筛选寄存器</translation>
+    </message>
+    <message>
+        <source>Refresh RAM live</source>
+        <translation>实时刷新 RAM</translation>
+    </message>
+    <message>
+        <source>Read the RAM registers (present position, load, voltage…) several times a second while this table is shown</source>
+        <translation>显示此表时，每秒多次读取 RAM 寄存器（当前位置、负载、电压…）</translation>
+    </message>
+    <message>
+        <source>No servo chosen: scan the bus, then choose a servo in the tree; every register of its memory table shows here.</source>
+        <translation>未选择舵机：请扫描总线，然后在列表中选择一个舵机；其内存表的每个寄存器将显示在这里。</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <source>Read every register of the servo</source>
+        <translation>读取舵机的所有寄存器</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>还原</translation>
+    </message>
+    <message>
+        <source>Drop every edit</source>
+        <translation>放弃所有编辑</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <source>Write the edited registers, then read them back</source>
+        <translation>写入已编辑的寄存器，然后回读</translation>
     </message>
 </context>
 <context>
@@ -6810,6 +6775,57 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>%1 steps</source>
         <translation>%1 步</translation>
+    </message>
+</context>
+<context>
+    <name>ServoTree</name>
+    <message>
+        <source>Servo</source>
+        <translation>舵机</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation>总线</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>ID %1 (shared!)</source>
+        <translation>ID %1（共用！）</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
+        <translation>有两个或更多舵机在 ID %1 应答：它们的应答是乱码。该 ID 被共用期间不会向其写入任何内容；请逐个连接，并为每个舵机分配各自的 ID。</translation>
+    </message>
+    <message>
+        <source>It answers with error bits: %1 (the Doctor says why).</source>
+        <translation>它的应答带有错误位：%1（诊断会说明原因）。</translation>
+    </message>
+    <message>
+        <source>Model number %1 (major %2, minor %3)</source>
+        <translation>型号编号 %1（主 %2，次 %3）</translation>
+    </message>
+    <message>
+        <source>No register table is known for this model: its memory is shown as raw bytes, read-only.</source>
+        <translation>此型号没有已知的寄存器表：其内存以原始字节只读显示。</translation>
     </message>
 </context>
 <context>

@@ -1,24 +1,25 @@
-// The calibration wizard's flow: torque off, recording from the telemetry stream, the results,
-// the verified writes and the LeRobot file.
+// The calibration wizard's flow: torque off, recording from the telemetry stream with its pages,
+// the results, the verified writes and the LeRobot file.
 #include "calibrationwizard.h"
 
 #include "busclient.h"
+#include "calibrationresultspage.h"
 #include "calibrationsteps.h"
 #include "palette.h"
 #include "rangebar.h"
 #include "recentfiles.h"
 #include "telemetry.h"
+#include "widgethelpers.h"
 
-#include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
+#include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QRadioButton>
-#include <QSet>
+#include <QScrollArea>
 #include <QStackedWidget>
-#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -26,8 +27,12 @@
 
 namespace {
 
-enum JointColumn { CalibrateColumn, IdColumn, ModelColumn, NameColumn, FullTurnColumn };
-constexpr int kStatusColumn = 4;
+QLabel *wrappedLabel(const QString &text, QWidget *parent)
+{
+    auto *label = new QLabel(text, parent);
+    label->setWordWrap(true);
+    return label;
+}
 
 } // namespace
 
@@ -35,18 +40,27 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
     : QDialog(parent)
     , m_client(client)
     , m_steps(new CalibrationSteps(client, this))
-    , m_templates(feetech::availableRobotTemplates())
 {
     setWindowTitle(tr("Calibrate the arm"));
     setObjectName(QStringLiteral("calibrationWizard"));
     resize(820, 560);
     auto *layout = new QVBoxLayout(this);
     m_pages = new QStackedWidget(this);
-    m_pages->addWidget(buildJointsPage());
+    m_jointsPage = new CalibrationJointsPage(client, this);
+    connect(m_jointsPage->nextButton(), &QPushButton::clicked, this,
+            &CalibrationWizard::goToWarning);
+    m_pages->addWidget(m_jointsPage);
     m_pages->addWidget(buildWarningPage());
     m_pages->addWidget(buildMiddlePosePage());
     m_pages->addWidget(buildRecordingPage());
-    m_pages->addWidget(buildResultsPage());
+    m_resultsPage = new CalibrationResultsPage(this);
+    connect(m_resultsPage->writeButton(), &QPushButton::clicked, this,
+            &CalibrationWizard::writeToServos);
+    connect(m_resultsPage->saveButton(), &QPushButton::clicked, this,
+            &CalibrationWizard::chooseFileToSave);
+    connect(m_resultsPage->recordAgainButton(), &QPushButton::clicked, this,
+            &CalibrationWizard::recordAgain);
+    m_pages->addWidget(m_resultsPage);
     layout->addWidget(m_pages, 1);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("calibrationStatus"));
@@ -64,8 +78,8 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
 
     connect(m_steps, &CalibrationSteps::stepFinished, this, &CalibrationWizard::onStepFinished);
     connect(m_steps, &CalibrationSteps::progress, this, [this](int done, int total) {
-        m_progress->setRange(0, total);
-        m_progress->setValue(done);
+        m_resultsPage->progress()->setRange(0, total);
+        m_resultsPage->progress()->setValue(done);
     });
     connect(m_steps, &CalibrationSteps::finished, this, [this](bool allOk) {
         if (m_stage == Stage::Reading) {
@@ -89,14 +103,15 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             m_stage = Stage::Recording;
             m_status->clear();
             buildBars();
-            showPage(order() == feetech::CalibrationOrder::MiddlePoseFirst ? Page::MiddlePose
-                                                                           : Page::Recording);
+            showPage(m_jointsPage->order() == feetech::CalibrationOrder::MiddlePoseFirst
+                         ? Page::MiddlePose
+                         : Page::Recording);
         } else if (m_stage == Stage::Writing) {
             m_stage = Stage::Done;
             m_cancel->setText(tr("Close"));
             m_cancel->setEnabled(true);
-            m_save->setEnabled(!writtenMotors().isEmpty());
-            m_again->setEnabled(false);
+            m_resultsPage->saveButton()->setEnabled(!writtenMotors().isEmpty());
+            m_resultsPage->recordAgainButton()->setEnabled(false);
             m_status->setText(allOk ? tr("Every joint was written and verified. Save LeRobot's "
                                          "file if you use LeRobot with this arm.")
                                     : tr("Not every joint was written: see the status column."));
@@ -114,6 +129,125 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
 // Cancel and Close are what stop the recording.
 CalibrationWizard::~CalibrationWizard() = default;
 
+QWidget *CalibrationWizard::buildWarningPage()
+{
+    auto *page = new QWidget(this);
+    auto *layout = new QVBoxLayout(page);
+    m_warning = wrappedLabel(QString(), page);
+    m_warning->setObjectName(QStringLiteral("torqueWarning"));
+    QFont bold = m_warning->font();
+    bold.setBold(true);
+    bold.setPointSizeF(bold.pointSizeF() * 1.2);
+    m_warning->setFont(bold);
+    QPalette colours = m_warning->palette();
+    colours.setColor(QPalette::WindowText,
+                     palette::toneColor(palette::Tone::Warning, m_warning->palette()));
+    m_warning->setPalette(colours);
+    layout->addWidget(m_warning);
+    layout->addWidget(wrappedLabel(
+        tr("Nothing is written to the servos until you have seen the results and chosen to "
+           "write them. Cancel at any point writes nothing (torque stays off)."),
+        page));
+    layout->addStretch(1);
+    m_torqueOff = widgethelpers::actionButton(
+        tr("I am supporting the arm: switch torque &off"), "torqueOffStartButton",
+        tr("Switch torque off on the joints and start"), page);
+    connect(m_torqueOff, &QPushButton::clicked, this, &CalibrationWizard::switchTorqueOffAndStart);
+    auto *back = widgethelpers::actionButton(tr("&Back"), "calibrationBackButton",
+                                             tr("Choose the joints again"), page);
+    connect(back, &QPushButton::clicked, this, [this] {
+        if (m_stage == Stage::Choosing)
+            showPage(Page::Joints);
+    });
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(back);
+    buttons->addStretch(1);
+    buttons->addWidget(m_torqueOff);
+    layout->addLayout(buttons);
+    return page;
+}
+
+QWidget *CalibrationWizard::buildMiddlePosePage()
+{
+    auto *page = new QWidget(this);
+    auto *layout = new QVBoxLayout(page);
+    layout->addWidget(wrappedLabel(
+        tr("Move every joint to the middle of its travel (LeRobot's middle pose: the arm "
+           "stretched out level, the gripper half open), then take the pose. Each joint's "
+           "present position there will read 2047."),
+        page));
+    m_middleList = wrappedLabel(QString(), page);
+    m_middleList->setObjectName(QStringLiteral("middlePoseList"));
+    m_middleList->setTextFormat(Qt::PlainText);
+    layout->addWidget(m_middleList, 1);
+    m_takeMiddle =
+        widgethelpers::actionButton(tr("&Take the middle pose"), "takeMiddlePoseButton",
+                                    tr("Keep the present positions as the middle"), page);
+    connect(m_takeMiddle, &QPushButton::clicked, this, &CalibrationWizard::takeMiddlePose);
+    auto *buttons = new QHBoxLayout;
+    buttons->addStretch(1);
+    buttons->addWidget(m_takeMiddle);
+    layout->addLayout(buttons);
+    return page;
+}
+
+QWidget *CalibrationWizard::buildRecordingPage()
+{
+    auto *page = new QWidget(this);
+    auto *layout = new QVBoxLayout(page);
+    layout->addWidget(wrappedLabel(
+        tr("Move every joint slowly through its whole range, to both end stops, and back to "
+           "the middle. Turn a full-turn joint as far as you want it to go. The bars show one "
+           "turn of the encoder: the filled part is the range recorded so far, the line the "
+           "present position, the dashed line the middle the range will be centred on."),
+        page));
+    auto *scroll = new QScrollArea(page);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *inner = new QWidget(scroll);
+    m_barGrid = new QGridLayout(inner);
+    m_barGrid->setColumnStretch(1, 1);
+    m_barGrid->setRowStretch(100, 1);
+    scroll->setWidget(inner);
+    layout->addWidget(scroll, 1);
+    m_finish = widgethelpers::actionButton(tr("&Finish recording"), "finishRecordingButton",
+                                           tr("Stop recording and compute the calibration"), page);
+    connect(m_finish, &QPushButton::clicked, this, &CalibrationWizard::finishRecording);
+    auto *buttons = new QHBoxLayout;
+    buttons->addStretch(1);
+    buttons->addWidget(m_finish);
+    layout->addLayout(buttons);
+    return page;
+}
+
+void CalibrationWizard::buildBars()
+{
+    QWidget *inner = m_barGrid->parentWidget();
+    qDeleteAll(inner->findChildren<QWidget *>(QString(), Qt::FindDirectChildrenOnly));
+    m_bars.clear();
+    m_barValues.clear();
+    for (int row = 0; row < m_recordings.size(); ++row) {
+        const feetech::JointRecording &joint = m_recordings.at(row);
+        auto *name = new QLabel(tr("%1 (%2)%3")
+                                    .arg(feetech::jointDisplayName(joint.name))
+                                    .arg(joint.id)
+                                    .arg(joint.fullTurn ? tr(", full turn") : QString()),
+                                inner);
+        auto *bar = new RangeBar(inner);
+        bar->setObjectName(QStringLiteral("rangeBar_%1").arg(joint.id));
+        auto *values = new QLabel(inner);
+        values->setObjectName(QStringLiteral("rangeValues_%1").arg(joint.id));
+        values->setMinimumWidth(values->fontMetrics().horizontalAdvance(
+            tr("min %1 · present %2 · max %3").arg(-99999).arg(-99999).arg(-99999)));
+        m_barGrid->addWidget(name, row, 0);
+        m_barGrid->addWidget(bar, row, 1);
+        m_barGrid->addWidget(values, row, 2);
+        m_bars.append(bar);
+        m_barValues.append(values);
+    }
+    refreshBars();
+}
+
 CalibrationWizard::Page CalibrationWizard::page() const
 {
     return Page(m_pages->currentIndex());
@@ -125,12 +259,6 @@ void CalibrationWizard::showPage(Page page)
     emit pageChanged(page);
 }
 
-feetech::CalibrationOrder CalibrationWizard::order() const
-{
-    return m_middleFirst->isChecked() ? feetech::CalibrationOrder::MiddlePoseFirst
-                                      : feetech::CalibrationOrder::RangeFirst;
-}
-
 void CalibrationWizard::fail(const QString &message)
 {
     m_status->setText(message);
@@ -138,45 +266,17 @@ void CalibrationWizard::fail(const QString &message)
 
 void CalibrationWizard::goToWarning()
 {
-    m_indexes.clear();
-    m_recordings.clear();
-    QSet<QString> names;
-    QStringList described;
-    for (int row = 0; row < m_jointTable->rowCount(); ++row) {
-        if (m_jointTable->item(row, CalibrateColumn)->checkState() != Qt::Checked)
-            continue;
-        const int index = m_jointTable->item(row, CalibrateColumn)->data(Qt::UserRole).toInt();
-        const feetech::ServoInfo &info = m_client->servo(index).info;
-        const QString name = m_jointTable->item(row, NameColumn)->text().trimmed();
-        if (!feetech::isLeRobotMotorName(name))
-            return fail(tr("\"%1\" is not a joint name: use letters, digits and _, a letter "
-                           "first (LeRobot's motor names, such as shoulder_pan).")
-                            .arg(name));
-        if (names.contains(name))
-            return fail(tr("Two joints are named \"%1\": give each its own name.").arg(name));
-        names.insert(name);
-        const auto limits =
-            info.hasTable() ? feetech::calibrationLimits(info.table()) : std::nullopt;
-        if (!limits)
-            return fail(tr("Servo %1 (%2) has no position offset on a 4096-step encoder: it "
-                           "cannot be calibrated. Leave it out.")
-                            .arg(info.id)
-                            .arg(info.model.name));
-        feetech::JointRecording joint;
-        joint.name = name;
-        joint.id = info.id;
-        joint.fullTurn = m_jointTable->item(row, FullTurnColumn)->checkState() == Qt::Checked;
-        joint.limits = *limits;
-        m_recordings.append(joint);
-        m_indexes.append(index);
-        described.append(tr("%1 (ID %2)").arg(name).arg(info.id));
-    }
-    if (m_recordings.isEmpty())
-        return fail(tr("Choose at least one joint to calibrate."));
+    CalibrationJointsPage::Choice choice;
+    QString error;
+    const bool chosen = m_jointsPage->choose(&choice, &error);
+    m_indexes = choice.indexes;
+    m_recordings = choice.recordings;
+    if (!chosen)
+        return fail(error);
     m_status->clear();
     m_warning->setText(tr("Support the arm: torque goes off on these joints, and the arm will "
                           "fall under its own weight if nothing holds it.\n\n%1")
-                           .arg(described.join(QStringLiteral(", "))));
+                           .arg(choice.described.join(QStringLiteral(", "))));
     showPage(Page::Warning);
 }
 
@@ -212,10 +312,7 @@ void CalibrationWizard::onStepFinished(int step, bool ok, const QString &message
         return;
     const int row = m_writeRows.at(step);
     m_written[row] = ok;
-    auto *status = new QTableWidgetItem(ok ? tr("Written and verified") : message);
-    if (!ok)
-        status->setForeground(palette::toneColor(palette::Tone::Error, m_resultTable->palette()));
-    m_resultTable->setItem(row, kStatusColumn, status);
+    m_resultsPage->showWritten(row, ok, message);
 }
 
 void CalibrationWizard::onTelemetry(const QVector<feetech::FeedbackSample> &samples)
@@ -312,12 +409,12 @@ void CalibrationWizard::finishRecording()
     m_stage = Stage::Choosing;
     m_results.clear();
     for (const feetech::JointRecording &joint : std::as_const(m_recordings))
-        m_results.append(feetech::calibrateJoint(joint, order()));
+        m_results.append(feetech::calibrateJoint(joint, m_jointsPage->order()));
     m_written = QVector<bool>(m_results.size(), false);
-    showResults();
+    m_resultsPage->showResults(m_results);
     const bool any = std::any_of(m_results.begin(), m_results.end(),
                                  [](const feetech::JointCalibration &r) { return r.ok(); });
-    m_write->setEnabled(any);
+    m_resultsPage->writeButton()->setEnabled(any);
     m_status->setText(any ? tr("Check the results, then write them to the servos.")
                           : tr("No joint can be calibrated from this recording: press Record "
                                "again and move every joint through its range."));
@@ -342,10 +439,10 @@ void CalibrationWizard::writeToServos()
     if (steps.isEmpty())
         return;
     m_stage = Stage::Writing;
-    m_write->setEnabled(false);
-    m_again->setEnabled(false);
+    m_resultsPage->writeButton()->setEnabled(false);
+    m_resultsPage->recordAgainButton()->setEnabled(false);
     m_cancel->setEnabled(false); // what is half written cannot be taken back
-    m_progress->show();
+    m_resultsPage->progress()->show();
     m_status->setText(tr("Writing to EEPROM and verifying…"));
     m_steps->start(steps);
 }
@@ -393,13 +490,11 @@ bool CalibrationWizard::saveLeRobotFile(const QString &path, QString *error) con
 
 void CalibrationWizard::chooseFileToSave()
 {
-    const int chosen = m_template->currentIndex();
-    const feetech::RobotTemplate *robot =
-        chosen >= 0 && chosen < m_templates.size() ? &m_templates.at(chosen) : nullptr;
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save LeRobot calibration"),
-        QDir(defaultCalibrationFolder(robot)).filePath(QStringLiteral("arm.json")),
-        tr("LeRobot calibration (*.json)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save LeRobot calibration"),
+                                     QDir(defaultCalibrationFolder(m_jointsPage->chosenTemplate()))
+                                         .filePath(QStringLiteral("arm.json")),
+                                     tr("LeRobot calibration (*.json)"));
     if (path.isEmpty())
         return;
     QString error;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "armcalibration.h"
+#include "calibrationjointspage.h"
 #include "lerobotcalibration.h"
 #include "robottemplate.h"
 
@@ -18,32 +19,13 @@ struct FeedbackSample;
 struct TelemetryStats;
 } // namespace feetech
 
+class CalibrationResultsPage;
 class CalibrationSteps;
-class QButtonGroup;
-class QComboBox;
 class QGridLayout;
 class QLabel;
-class QProgressBar;
 class QPushButton;
-class QRadioButton;
 class QStackedWidget;
-class QTableWidget;
 class RangeBar;
-
-// The joints of the scanned servos as a robot template names them: a joint whose ID the template
-// has takes its name and full-turn flag, any other servo is "id_N". `index` is the client's.
-struct ArmJoint
-{
-    int index = 0;
-    feetech::RobotJoint joint;
-};
-QVector<ArmJoint> armJoints(const feetech::BusClient &client, const feetech::RobotTemplate *robot);
-// The template ServoBench offers first: the SO-101 follower when it is there.
-int defaultRobotTemplate(const QVector<feetech::RobotTemplate> &templates);
-// Where to offer saving or loading a LeRobot file for `robot`: its folder in LeRobot's
-// calibration folder when that exists, else the folder of the calibration file used last, else
-// the nearest folder of LeRobot's that exists.
-QString defaultCalibrationFolder(const feetech::RobotTemplate *robot);
 
 class CalibrationWizard : public QDialog
 {
@@ -80,19 +62,12 @@ protected:
     void reject() override;
 
 private:
-    // Building the pages (calibrationwizardpages.cpp).
-    QWidget *buildJointsPage();
     QWidget *buildWarningPage();
     QWidget *buildMiddlePosePage();
     QWidget *buildRecordingPage();
-    QWidget *buildResultsPage();
-    void fillJointTable();
     void buildBars();
-    void showResults();
 
-    // The flow (calibrationwizard.cpp).
     void showPage(Page page);
-    feetech::CalibrationOrder order() const;
     void onStepFinished(int step, bool ok, const QString &message);
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
     void onTelemetryStats(const feetech::TelemetryStats &stats);
@@ -105,7 +80,6 @@ private:
 
     feetech::BusClient *m_client = nullptr;
     CalibrationSteps *m_steps = nullptr;
-    QVector<feetech::RobotTemplate> m_templates;
     Stage m_stage = Stage::Choosing;
     QVector<int> m_indexes; // of the joints being calibrated, as the client lists them
     QVector<feetech::JointRecording> m_recordings;
@@ -117,24 +91,16 @@ private:
     QVector<int> m_writeRows; // the result row of each write step
 
     QStackedWidget *m_pages = nullptr;
-    QComboBox *m_template = nullptr;
-    QTableWidget *m_jointTable = nullptr;
-    QRadioButton *m_rangeFirst = nullptr;
-    QRadioButton *m_middleFirst = nullptr;
+    CalibrationJointsPage *m_jointsPage = nullptr;
     QLabel *m_warning = nullptr;
     QLabel *m_middleList = nullptr;
     QGridLayout *m_barGrid = nullptr;
     QVector<RangeBar *> m_bars;
     QVector<QLabel *> m_barValues;
-    QTableWidget *m_resultTable = nullptr;
-    QProgressBar *m_progress = nullptr;
+    CalibrationResultsPage *m_resultsPage = nullptr;
     QLabel *m_status = nullptr;
-    QPushButton *m_next = nullptr;
     QPushButton *m_torqueOff = nullptr;
     QPushButton *m_takeMiddle = nullptr;
     QPushButton *m_finish = nullptr;
-    QPushButton *m_write = nullptr;
-    QPushButton *m_save = nullptr;
-    QPushButton *m_again = nullptr;
     QPushButton *m_cancel = nullptr;
 };

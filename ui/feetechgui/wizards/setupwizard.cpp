@@ -1,4 +1,5 @@
-// Motor set-up wizard: its widgets, the robot and joint shown, and which buttons may be used.
+// Motor set-up wizard: its widgets, the robot and joint shown, what the flow's work reported,
+// and which buttons may be used.
 #include "setupwizard.h"
 
 #include "registertable.h"
@@ -20,11 +21,27 @@ namespace {
 
 enum Column { NameColumn, IdColumn, ModelColumn, StatusColumn };
 
+QString servoDescription(const feetech::ServoInfo &servo)
+{
+    return SetupWizard::tr("servo %1 at %2, model %3, firmware %4")
+        .arg(servo.id)
+        .arg(feetech::baudText(servo.baud), servo.model.name, servo.firmware());
+}
+
+QString stepList(const QStringList &steps)
+{
+    QString html = QStringLiteral("<ul style=\"margin-left: 0px; -qt-list-indent: 1;\">");
+    for (const QString &step : steps)
+        html += QStringLiteral("<li>%1</li>").arg(step.toHtmlEscaped());
+    return html + QStringLiteral("</ul>");
+}
+
 } // namespace
 
 SetupWizard::SetupWizard(feetech::BusClient *client, QWidget *parent)
     : QDialog(parent)
     , m_client(client)
+    , m_flow(new feetech::MotorSetupFlow(client, this))
 {
     setWindowTitle(tr("Set up motors"));
     setObjectName(QStringLiteral("setupWizard"));
@@ -37,10 +54,8 @@ SetupWizard::SetupWizard(feetech::BusClient *client, QWidget *parent)
     });
     connect(m_client->motorSetup(), &feetech::MotorSetupService::progress, this,
             &SetupWizard::onProgress);
-    connect(m_client->motorSetup(), &feetech::MotorSetupService::finished, this,
-            &SetupWizard::onFinished);
-    connect(m_client->motorSetup(), &feetech::MotorSetupService::jointsChecked, this,
-            &SetupWizard::onChecked);
+    connect(m_flow, &feetech::MotorSetupFlow::finished, this, &SetupWizard::onFinished);
+    connect(m_flow, &feetech::MotorSetupFlow::checked, this, &SetupWizard::onChecked);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         showCurrent();
         updateActions();
@@ -163,8 +178,8 @@ void SetupWizard::showEvent(QShowEvent *event)
     // Reopened: templates may have been saved meanwhile (the choice and the joints' states stay
     // while the robot is still there), and the bus may have changed (servos set up elsewhere,
     // the arm built).
-    if (!isWorking()) {
-        const QString shown = feetech::robotDisplayName(m_robot.name);
+    if (!m_flow->isWorking()) {
+        const QString shown = feetech::robotDisplayName(m_flow->robot().name);
         loadRobots();
         const int index = m_robotChoice->findText(shown);
         if (index >= 0) {
@@ -179,14 +194,11 @@ void SetupWizard::showEvent(QShowEvent *event)
 
 void SetupWizard::chooseRobot(int index)
 {
-    if (index < 0 || index >= m_robots.size() || isWorking())
+    if (index < 0 || index >= m_robots.size() || m_flow->isWorking())
         return;
-    m_robot = m_robots.at(index);
-    m_joints = QVector<Joint>(m_robot.joints.size());
-    m_current = m_robot.joints.isEmpty() ? -1 : 0;
-    m_found.reset();
+    m_flow->setRobot(m_robots.at(index));
     m_jointList->clear();
-    for (const feetech::RobotJoint &joint : std::as_const(m_robot.joints)) {
+    for (const feetech::RobotJoint &joint : std::as_const(m_flow->robot().joints)) {
         auto *item = new QTreeWidgetItem(m_jointList);
         item->setText(NameColumn, feetech::jointDisplayName(joint.name));
         item->setText(IdColumn, QString::number(joint.id));
@@ -200,51 +212,42 @@ void SetupWizard::chooseRobot(int index)
 
 void SetupWizard::chooseJoint(int joint)
 {
-    if (joint < 0 || joint >= m_joints.size() || isWorking() || joint == m_current)
+    if (!m_flow->chooseJoint(joint))
         return;
-    m_current = joint;
-    m_found.reset();
     showOutcome({}, palette::Tone::Accent);
     showJoints();
     showCurrent();
     updateActions();
 }
 
-int SetupWizard::nextToDo(int from) const
-{
-    for (int step = 1; step <= m_joints.size(); ++step) {
-        const int joint = (from + step) % int(m_joints.size());
-        if (m_joints.at(joint).state != JointState::Done)
-            return joint;
-    }
-    return -1;
-}
-
 void SetupWizard::showJoints()
 {
-    for (int i = 0; i < m_joints.size(); ++i) {
+    using JointState = feetech::MotorSetupFlow::JointState;
+    const int current = m_flow->currentJoint();
+    for (int i = 0; i < m_flow->jointCount(); ++i) {
         QTreeWidgetItem *item = m_jointList->topLevelItem(i);
-        const Joint &joint = m_joints.at(i);
+        const JointState state = m_flow->jointState(i);
+        const QString reason = m_flow->jointReason(i);
         QString status;
         std::optional<palette::Tone> tone;
-        switch (joint.state) {
+        switch (state) {
         case JointState::Done:
             status = tr("Done");
             tone = palette::Tone::Good;
             break;
         case JointState::Failed:
-            status = tr("Failed: %1").arg(joint.reason);
+            status = tr("Failed: %1").arg(reason);
             tone = palette::Tone::Error;
             break;
         case JointState::ToDo:
-            status = i == m_current ? tr("Current") : tr("To do");
-            if (!joint.reason.isEmpty())
-                status += QStringLiteral(" (%1)").arg(joint.reason);
-            if (i == m_current)
+            status = i == current ? tr("Current") : tr("To do");
+            if (!reason.isEmpty())
+                status += QStringLiteral(" (%1)").arg(reason);
+            if (i == current)
                 tone = palette::Tone::Accent;
             break;
         }
-        if (i == m_current && joint.state != JointState::ToDo)
+        if (i == current && state != JointState::ToDo)
             status = tr("Current, %1").arg(status.left(1).toLower() + status.mid(1));
         item->setText(StatusColumn, status);
         item->setToolTip(StatusColumn, status);
@@ -252,12 +255,12 @@ void SetupWizard::showJoints()
                             tone ? QBrush(palette::toneColor(*tone, m_jointList->palette()))
                                  : m_jointList->palette().text());
         QFont font = item->font(NameColumn);
-        font.setBold(i == m_current);
+        font.setBold(i == current);
         for (int column = NameColumn; column <= StatusColumn; ++column)
             item->setFont(column, font);
     }
-    if (m_current >= 0)
-        m_jointList->setCurrentItem(m_jointList->topLevelItem(m_current));
+    if (current >= 0)
+        m_jointList->setCurrentItem(m_jointList->topLevelItem(current));
 }
 
 void SetupWizard::showCurrent()
@@ -267,18 +270,20 @@ void SetupWizard::showCurrent()
         m_instruction->setText(tr("Open the Feetech port the servos are connected to first."));
         return;
     }
-    if (m_current < 0) {
+    const feetech::RobotTemplate &robot = m_flow->robot();
+    const int current = m_flow->currentJoint();
+    if (current < 0) {
         m_currentBox->setTitle(tr("All done"));
         m_instruction->setText(
             tr("Every joint of the %1 is set up. Connect the servos in a chain and press "
                "<i>Check the bus</i> to confirm them together.")
-                .arg(feetech::robotDisplayName(m_robot.name).toHtmlEscaped()));
+                .arg(feetech::robotDisplayName(robot.name).toHtmlEscaped()));
         return;
     }
-    const feetech::RobotJoint &joint = m_robot.joints.at(m_current);
+    const feetech::RobotJoint &joint = robot.joints.at(current);
     m_currentBox->setTitle(tr("Joint %1 of %2: %3")
-                               .arg(m_current + 1)
-                               .arg(m_robot.joints.size())
+                               .arg(current + 1)
+                               .arg(robot.joints.size())
                                .arg(feetech::jointDisplayName(joint.name)));
     m_instruction->setText(
         tr("Connect only the <b>%1</b> servo (ID will be %2) and press <i>Find</i>.<br>"
@@ -300,27 +305,177 @@ void SetupWizard::showOutcome(const QString &html, palette::Tone tone)
 
 void SetupWizard::updateActions()
 {
-    const bool connected = m_client->isConnected();
-    const bool idle = !isWorking();
-    const bool free = connected && idle && !m_client->isBusy();
+    const bool idle = !m_flow->isWorking();
+    const bool free = m_flow->isBusFree();
+    const bool current = m_flow->currentJoint() >= 0;
     m_robotChoice->setEnabled(idle);
     m_check->setEnabled(free);
-    m_find->setEnabled(free && m_current >= 0);
-    m_setUp->setEnabled(free && m_current >= 0 && m_found.has_value());
-    m_stop->setEnabled(isWorking() && !m_stopping);
+    m_find->setEnabled(free && current);
+    m_setUp->setEnabled(free && current && m_flow->found().has_value());
+    m_stop->setEnabled(m_flow->isWorking() && !m_flow->isStopping());
     m_jointList->setEnabled(idle);
 }
 
-feetech::MotorTarget SetupWizard::currentTarget() const
+void SetupWizard::startWork(const QString &text)
 {
-    return feetech::motorTarget(m_robot, m_robot.joints.at(m_current));
+    m_progress->setRange(0, 0); // busy until the first step reports
+    m_progress->show();
+    m_step->setText(text);
+    m_step->show();
+    updateActions();
 }
 
-int SetupWizard::jointAnsweringAt(const feetech::ServoInfo &servo) const
+void SetupWizard::endWork()
 {
-    for (int i = 0; i < m_robot.joints.size(); ++i) {
-        if (i != m_current && m_robot.joints.at(i).id == servo.id && m_robot.baud == servo.baud)
-            return i;
+    m_progress->hide();
+    m_step->hide();
+    updateActions();
+}
+
+void SetupWizard::checkBus()
+{
+    QString error;
+    if (m_flow->checkBus(&error))
+        startWork(
+            tr("Asking every joint's ID at %1…").arg(feetech::baudText(m_flow->robot().baud)));
+    else if (!error.isEmpty())
+        showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
+}
+
+void SetupWizard::find()
+{
+    QString error;
+    if (m_flow->find(&error)) {
+        showOutcome({}, palette::Tone::Accent);
+        startWork(tr("Looking for the servo at every baud rate…"));
+    } else if (!error.isEmpty()) {
+        showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
+        updateActions();
     }
-    return -1;
+}
+
+void SetupWizard::setUp()
+{
+    QString error;
+    if (m_flow->setUp(&error)) {
+        showOutcome({}, palette::Tone::Accent);
+        startWork(tr("Looking for the servo at every baud rate…"));
+    } else if (!error.isEmpty()) {
+        showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
+    }
+}
+
+void SetupWizard::stop()
+{
+    if (!m_flow->stop())
+        return;
+    m_step->setText(tr("Stopping after this step…"));
+    updateActions();
+}
+
+void SetupWizard::onProgress(int step, int steps, const QString &text)
+{
+    if (!m_flow->isWorking())
+        return;
+    m_progress->setRange(0, steps);
+    m_progress->setValue(step - 1); // the step has begun, not ended
+    if (!m_flow->isStopping())
+        m_step->setText(tr("Step %1 of %2: %3").arg(step).arg(steps).arg(text));
+}
+
+void SetupWizard::onFinished(feetech::MotorSetupFlow::Work work,
+                             const feetech::MotorSetupResult &result)
+{
+    using Work = feetech::MotorSetupFlow::Work;
+    endWork();
+    if (work == Work::Finding && !result.setUp)
+        showFound(result);
+    else if (work == Work::SettingUp && result.setUp)
+        showSetUp(result);
+}
+
+void SetupWizard::showFound(const feetech::MotorSetupResult &result)
+{
+    const feetech::MotorSearch &search = result.search;
+    const int current = m_flow->currentJoint();
+    if (current < 0)
+        return;
+    const feetech::RobotTemplate &robot = m_flow->robot();
+    const feetech::RobotJoint &joint = robot.joints.at(current);
+    if (!result.ok) {
+        // Every message of a search that found no single servo says what to do next.
+        QString html = QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped());
+        if (search.needsNothingWrittenNote())
+            html += QStringLiteral("<br>") + tr("Nothing was written to any servo.");
+        showOutcome(html, result.stopped ? palette::Tone::Warning : palette::Tone::Error);
+        showJoints();
+        updateActions();
+        return;
+    }
+    QString html =
+        tr("<b>Found one servo:</b> %1.").arg(servoDescription(search.servo).toHtmlEscaped());
+    const int other = m_flow->jointAnsweringAt(search.servo);
+    if (other >= 0 && m_flow->jointState(other) == feetech::MotorSetupFlow::JointState::Done) {
+        html += QStringLiteral("<br><span style=\"color: %1\">%2</span>")
+                    .arg(palette::toneColor(palette::Tone::Warning, palette()).name(),
+                         tr("It answers where %1 should: it may be the %1 servo, already set "
+                            "up. Set it up as %2 only if it is the %2 servo.")
+                             .arg(robot.joints.at(other).name, joint.name)
+                             .toHtmlEscaped());
+    }
+    html += QStringLiteral("<br>")
+        + tr("Press <i>Set up</i> to give it ID %2, %3 and the %1 settings (%n value(s), "
+             "each read back).",
+             nullptr, int(joint.settings.size()))
+              .arg(joint.name.toHtmlEscaped())
+              .arg(joint.id)
+              .arg(feetech::baudText(robot.baud));
+    showOutcome(html, palette::Tone::Accent);
+    showJoints();
+    updateActions();
+}
+
+void SetupWizard::showSetUp(const feetech::MotorSetupResult &result)
+{
+    if (!result.ok) {
+        if (m_flow->currentJoint() < 0)
+            return;
+        QString html = QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped());
+        if (result.search.needsNothingWrittenNote())
+            html += QStringLiteral("<br>") + tr("Nothing was written to any servo.");
+        if (result.steps.size() > 1) // more than the find
+            html += QStringLiteral("<br>") + tr("Done before that:") + stepList(result.steps);
+        showOutcome(html, result.stopped ? palette::Tone::Warning : palette::Tone::Error);
+        showJoints();
+        updateActions();
+        return;
+    }
+    // The flow has moved on to the next joint to do, if any.
+    const int next = m_flow->currentJoint();
+    QString html =
+        QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped()) + stepList(result.steps);
+    html += next >= 0 ? tr("Unplug it and connect the next servo: <b>%1</b>.")
+                            .arg(m_flow->robot().joints.at(next).name.toHtmlEscaped())
+                      : tr("Every joint is set up.");
+    showOutcome(html, palette::Tone::Good);
+    showJoints();
+    showCurrent();
+    updateActions();
+}
+
+void SetupWizard::onChecked(bool ok, const QString &message, int done)
+{
+    endWork();
+    if (!ok) {
+        showOutcome(message.toHtmlEscaped(), palette::Tone::Error);
+        return;
+    }
+    showOutcome(
+        tr("Checked the bus at %1: %2 of %n joint(s) set up.", nullptr, m_flow->jointCount())
+            .arg(feetech::baudText(m_flow->robot().baud))
+            .arg(done),
+        palette::Tone::Accent);
+    showJoints();
+    showCurrent();
+    updateActions();
 }

@@ -1,41 +1,37 @@
-// Feetech workspace: the servo tree, the Settings and Memory table pages and the tabs; the
-// operations on a servo are in feetechworkspaceoperations.cpp.
+// Feetech workspace: the servo tree beside the pages of the servo shown, the scan, Apply with
+// its confirmations, the guided flows (change ID and baud, calibrate middle, factory reset) and
+// profiles of the servo shown.
 #include "feetechworkspace.h"
 
 #include "busclient.h"
 #include "controlpage.h"
 #include "healthpage.h"
 #include "jointtable.h"
+#include "memorytablepage.h"
 #include "monitorpage.h"
-#include "palette.h"
 #include "parameterpage.h"
 #include "profileactions.h"
-#include "registertablemodel.h"
 #include "robotactions.h"
 #include "scandialog.h"
 #include "scanmemory.h"
 #include "servoparameters.h"
+#include "servotree.h"
 #include "sharedidcheck.h"
 #include "unlockednotice.h"
 #include "widgethelpers.h"
 
-#include <QCheckBox>
+#include <QDateTime>
+#include <QDir>
 #include <QHBoxLayout>
-#include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMenu>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSet>
-#include <QSortFilterProxyModel>
 #include <QSplitter>
-#include <QStyle>
 #include <QTabWidget>
-#include <QTableView>
 #include <QTimer>
-#include <QTreeWidget>
-#include <QTreeWidgetItemIterator>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -46,10 +42,6 @@ namespace {
 
 // RAM rows of the shown servo are read again this often while the table is on screen.
 constexpr int kLiveRefreshMs = 250;
-
-enum TreeColumn { ServoColumn, ModelColumn, FamilyColumn, FirmwareColumn, TreeColumns };
-constexpr int kIdRole = Qt::UserRole + 1;
-constexpr int kBaudRole = Qt::UserRole + 2;
 
 QStringList settingsKeys()
 {
@@ -95,16 +87,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_scanState->setWordWrap(true);
     m_scanState->setForegroundRole(QPalette::PlaceholderText);
     leftLayout->addWidget(m_scanState);
-    m_tree = new QTreeWidget(left);
-    m_tree->setObjectName(QStringLiteral("servoTree"));
-    m_tree->setColumnCount(TreeColumns);
-    m_tree->setHeaderLabels({tr("Servo"), tr("Model"), tr("Family"), tr("Firmware")});
-    m_tree->setRootIsDecorated(true);
-    m_tree->setUniformRowHeights(true);
-    m_tree->header()->setStretchLastSection(false);
-    m_tree->setIndentation(m_tree->fontMetrics().horizontalAdvance(u'm') * 3 / 2);
-    m_tree->setSelectionMode(QAbstractItemView::ExtendedSelection); // the robot actions take many
-    m_tree->setContextMenuPolicy(Qt::CustomContextMenu);
+    m_tree = new ServoTree(client, left);
     leftLayout->addWidget(m_tree, 1);
     // The emergency stop stays in sight whatever page is open; Esc does the same everywhere.
     m_allTorqueOff = actionButton(tr("All torque off  (Esc)"), "allTorqueOffButton",
@@ -176,62 +159,8 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     m_settings = new ParameterPage(nullptr, settingsOptions, m_tabs);
     m_tabs->addTab(m_settings, tr("Settings"));
 
-    auto *memory = new QWidget(m_tabs);
-    memory->setObjectName(QStringLiteral("memoryTablePage"));
-    auto *memoryLayout = new QVBoxLayout(memory);
-    auto *memoryTop = new QHBoxLayout;
-    m_filterEdit = new QLineEdit(memory);
-    m_filterEdit->setObjectName(QStringLiteral("registerFilter"));
-    m_filterEdit->setPlaceholderText(tr("Filter registers"));
-    m_filterEdit->setClearButtonEnabled(true);
-    m_live = new QCheckBox(tr("Refresh RAM live"), memory);
-    m_live->setObjectName(QStringLiteral("liveCheck"));
-    m_live->setChecked(true);
-    m_live->setToolTip(tr("Read the RAM registers (present position, load, voltage…) "
-                          "several times a second while this table is shown"));
-    memoryTop->addWidget(m_filterEdit, 1);
-    memoryTop->addWidget(m_live);
-    memoryLayout->addLayout(memoryTop);
-    m_memoryEmpty = new QLabel(tr("No servo chosen: scan the bus, then choose a servo in the "
-                                  "tree; every register of its memory table shows here."),
-                               memory);
-    m_memoryEmpty->setObjectName(QStringLiteral("memoryEmptyState"));
-    m_memoryEmpty->setWordWrap(true);
-    m_memoryEmpty->setForegroundRole(QPalette::PlaceholderText);
-    memoryLayout->addWidget(m_memoryEmpty);
-    m_registers = new RegisterTableModel(this);
-    m_filter = new QSortFilterProxyModel(this);
-    m_filter->setSourceModel(m_registers);
-    m_filter->setFilterCaseSensitivity(Qt::CaseInsensitive);
-    m_filter->setFilterKeyColumn(-1);
-    m_table = new QTableView(memory);
-    m_table->setObjectName(QStringLiteral("memoryTable"));
-    m_table->setModel(m_filter);
-    m_table->setAlternatingRowColors(true);
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
-                             | QAbstractItemView::AnyKeyPressed);
-    m_table->verticalHeader()->hide();
-    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 8);
-    m_table->horizontalHeader()->setStretchLastSection(false);
-    m_table->horizontalHeader()->setSectionResizeMode(RegisterTableModel::LabelColumn,
-                                                      QHeaderView::Stretch);
-    memoryLayout->addWidget(m_table, 1);
-    auto *memoryButtons = new QHBoxLayout;
-    m_tableRead =
-        actionButton(tr("Read"), "tableReadButton", tr("Read every register of the servo"), memory);
-    m_tableRevert = actionButton(tr("Revert"), "tableRevertButton", tr("Drop every edit"), memory);
-    m_tableApply = actionButton(tr("Apply"), "tableApplyButton",
-                                tr("Write the edited registers, then read them back"), memory);
-    QFont bold = m_tableApply->font();
-    bold.setBold(true);
-    m_tableApply->setFont(bold);
-    memoryButtons->addStretch(1);
-    memoryButtons->addWidget(m_tableRead);
-    memoryButtons->addWidget(m_tableRevert);
-    memoryButtons->addWidget(m_tableApply);
-    memoryLayout->addLayout(memoryButtons);
-    m_tabs->addTab(memory, tr("Memory table"));
+    m_memory = new MemoryTablePage(m_tabs);
+    m_tabs->addTab(m_memory, tr("Memory table"));
     m_control = new ControlPage(m_client, m_tabs);
     m_tabs->addTab(m_control, tr("Control"));
     m_monitor = new MonitorPage(m_client, m_tabs);
@@ -256,8 +185,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_scan, &QPushButton::clicked, this, &FeetechWorkspace::openScanDialog);
     connect(m_cancelScan, &QPushButton::clicked, m_client, &feetech::BusClient::cancelScan);
     connect(m_allTorqueOff, &QPushButton::clicked, m_client, &feetech::BusClient::allTorqueOff);
-    connect(m_tree, &QTreeWidget::itemSelectionChanged, this,
-            &FeetechWorkspace::onSelectionChanged);
+    connect(m_tree, &ServoTree::servoChosen, this, &FeetechWorkspace::showChosenServo);
     connect(m_changeId, &QPushButton::clicked, this, &FeetechWorkspace::changeId);
     connect(m_changeBaud, &QPushButton::clicked, this, &FeetechWorkspace::changeBaud);
     connect(m_calibrate, &QPushButton::clicked, this, &FeetechWorkspace::calibrateMiddle);
@@ -266,19 +194,17 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
             [this] { run(&feetech::BusClient::reboot, tr("Restarting the servo…")); });
     connect(m_clearStatus, &QPushButton::clicked, this,
             [this] { run(&feetech::BusClient::clearStatus, tr("Clearing the status…")); });
-    connect(m_filterEdit, &QLineEdit::textChanged, m_filter,
-            &QSortFilterProxyModel::setFilterFixedString);
-    connect(m_registers, &RegisterTableModel::editRefused, this, &FeetechWorkspace::problem);
+    connect(m_memory, &MemoryTablePage::problem, this, &FeetechWorkspace::problem);
 
     const auto readCurrent = [this] {
         if (currentIndex() >= 0)
             m_client->readServo(currentIndex());
     };
     connect(m_settings, &ParameterPage::readRequested, this, readCurrent);
-    connect(m_tableRead, &QPushButton::clicked, this, readCurrent);
+    connect(m_memory, &MemoryTablePage::readRequested, this, readCurrent);
     connect(m_settings, &ParameterPage::applyRequested, this, &FeetechWorkspace::apply);
-    connect(m_tableApply, &QPushButton::clicked, this, &FeetechWorkspace::apply);
-    connect(m_tableRevert, &QPushButton::clicked, this, [this] {
+    connect(m_memory, &MemoryTablePage::applyRequested, this, &FeetechWorkspace::apply);
+    connect(m_memory, &MemoryTablePage::revertRequested, this, [this] {
         if (auto *parameters = m_client->parameters(currentIndex()))
             parameters->revertAll();
     });
@@ -349,7 +275,7 @@ int FeetechWorkspace::currentIndex() const
 
 void FeetechWorkspace::setPortName(const QString &name)
 {
-    m_portName = name;
+    m_tree->setPortName(name);
     rebuildTree();
 }
 
@@ -377,110 +303,13 @@ void FeetechWorkspace::readIfNew()
 
 void FeetechWorkspace::rebuildTree()
 {
-    const QSignalBlocker quiet(m_tree);
-    // Servos selected for the robot actions stay selected across a rebuild (one comes after
-    // every operation, a batch's included).
-    QSet<std::pair<quint8, qint32>> wasSelected;
-    for (const int index : selectedServos())
-        wasSelected.insert({m_client->servo(index).info.id, m_client->servo(index).info.baud});
-    m_tree->clear();
-    if (m_client->servoCount() == 0) {
-        updateActions();
-        return;
-    }
-    auto *port = new QTreeWidgetItem(m_tree, {m_portName.isEmpty() ? tr("Bus") : m_portName});
-    QTreeWidgetItem *baudItem = nullptr;
-    qint32 baud = 0;
-    QTreeWidgetItem *selected = nullptr;
-    QList<QTreeWidgetItem *> alsoSelected;
-    for (int i = 0; i < m_client->servoCount(); ++i) {
-        const feetech::ServoInfo &info = m_client->servo(i).info;
-        if (!baudItem || info.baud != baud) {
-            baud = info.baud;
-            baudItem = new QTreeWidgetItem(port, {feetech::baudText(baud)});
-        }
-        const QString family =
-            info.model.family ? feetech::familyName(*info.model.family) : tr("unknown");
-        const QString idText =
-            info.sharedId ? tr("ID %1 (shared!)").arg(info.id) : tr("ID %1").arg(info.id);
-        auto *item =
-            new QTreeWidgetItem(baudItem, {idText, info.model.name, family, info.firmware()});
-        const std::optional<quint8> status = m_client->servo(i).statusByte;
-        const QStringList errors = status ? feetech::statusBitNames(*status) : QStringList();
-        QStringList warnings;
-        if (info.sharedId)
-            warnings.append(tr("Two or more servos answer at ID %1: their replies come back "
-                               "garbled. Nothing is written to this ID while it is shared; "
-                               "connect them one at a time and give each its own ID.")
-                                .arg(info.id));
-        if (!errors.isEmpty())
-            warnings.append(tr("It answers with error bits: %1 (the Doctor says why).")
-                                .arg(errors.join(QStringLiteral(", "))));
-        if (!warnings.isEmpty()) {
-            item->setIcon(ServoColumn, style()->standardIcon(QStyle::SP_MessageBoxWarning));
-            item->setToolTip(ServoColumn, warnings.join(u'\n'));
-            item->setForeground(ServoColumn,
-                                palette::toneColor(palette::Tone::Error, m_tree->palette()));
-        }
-        item->setData(ServoColumn, kIdRole, info.id);
-        item->setData(ServoColumn, kBaudRole, info.baud);
-        item->setToolTip(ModelColumn,
-                         tr("Model number %1 (major %2, minor %3)")
-                             .arg(info.modelNumber())
-                             .arg(info.modelMajor)
-                             .arg(info.modelMinor));
-        if (!info.hasTable())
-            item->setToolTip(FamilyColumn,
-                             tr("No register table is known for this model: its "
-                                "memory is shown as raw bytes, read-only."));
-        if (m_current && m_current->first == info.id && m_current->second == info.baud)
-            selected = item;
-        else if (wasSelected.contains({info.id, info.baud}))
-            alsoSelected.append(item);
-    }
-    m_tree->expandAll();
-    for (int column = 0; column < TreeColumns; ++column)
-        m_tree->resizeColumnToContents(column);
-    if (selected)
-        m_tree->setCurrentItem(selected);
-    for (QTreeWidgetItem *item : std::as_const(alsoSelected))
-        item->setSelected(true);
+    m_tree->rebuild(m_current);
     updateActions();
 }
 
-QVector<int> FeetechWorkspace::selectedServos() const
+void FeetechWorkspace::showChosenServo(quint8 id, qint32 baud)
 {
-    QVector<int> indexes;
-    for (QTreeWidgetItemIterator it(m_tree, QTreeWidgetItemIterator::Selected); *it; ++it) {
-        const QVariant id = (*it)->data(ServoColumn, kIdRole);
-        if (!id.isValid())
-            continue;
-        const int index = m_client->indexOf(quint8(id.toUInt()),
-                                            qint32((*it)->data(ServoColumn, kBaudRole).toInt()));
-        if (index >= 0)
-            indexes.append(index);
-    }
-    return indexes;
-}
-
-void FeetechWorkspace::onSelectionChanged()
-{
-    // The pages show the servo clicked last (the tree's current item) while it is selected,
-    // else the first servo selected.
-    const QTreeWidgetItem *item = m_tree->currentItem();
-    if (!item || !item->isSelected() || !item->data(ServoColumn, kIdRole).isValid()) {
-        item = nullptr;
-        for (QTreeWidgetItem *selected : m_tree->selectedItems()) {
-            if (selected->data(ServoColumn, kIdRole).isValid()) {
-                item = selected;
-                break;
-            }
-        }
-    }
-    if (!item)
-        return;
-    m_current = std::make_pair(quint8(item->data(ServoColumn, kIdRole).toUInt()),
-                               qint32(item->data(ServoColumn, kBaudRole).toInt()));
+    m_current = std::make_pair(id, baud);
     showServo();
     readIfNew();
 }
@@ -500,21 +329,7 @@ void FeetechWorkspace::showServo()
             connect(parameters, &model::ParameterModel::parameterChanged, this,
                     &FeetechWorkspace::updateActions);
     }
-    m_registers->setServo(index >= 0 ? &m_client->servo(index).info.table() : nullptr, parameters);
-    m_table->resizeColumnsToContents();
-    // Bit lists can be long: the value column keeps a reading width (the tooltip and a wider
-    // window show the rest) so the register names keep theirs.
-    m_table->setColumnWidth(RegisterTableModel::ValueColumn,
-                            std::min(m_table->columnWidth(RegisterTableModel::ValueColumn),
-                                     m_table->fontMetrics().horizontalAdvance(u'm') * 15));
-    int stateWidth = 0;
-    for (const model::State state :
-         {model::State::Edited, model::State::Writing, model::State::Verified,
-          model::State::Mismatch, model::State::Failed, model::State::Unknown})
-        stateWidth = std::max(
-            stateWidth,
-            m_table->fontMetrics().horizontalAdvance(model::ParameterModel::stateName(state)));
-    m_table->setColumnWidth(RegisterTableModel::StateColumn, stateWidth + 16);
+    m_memory->showServo(*m_client, index);
     updateHeader();
     updateActions();
 }
@@ -531,7 +346,7 @@ QString FeetechWorkspace::servoTitle() const
 void FeetechWorkspace::updateHeader()
 {
     const int index = currentIndex();
-    m_memoryEmpty->setVisible(index < 0);
+    m_memory->setEmptyStateShown(index < 0);
     if (index < 0) {
         m_header->setText(m_client->servoCount() > 0 ? tr("Choose a servo in the tree.")
                               : m_client->isConnected()
@@ -593,17 +408,257 @@ void FeetechWorkspace::updateActions()
     m_settings->setLinkReady(ready && known);
     model::ParameterModel *parameters = m_client->parameters(index);
     const bool edits = parameters && parameters->hasEdits();
-    m_tableRead->setEnabled(ready);
-    m_tableApply->setEnabled(ready && known && edits);
-    m_tableRevert->setEnabled(idle && edits);
-    m_registers->setEditable(connected && idle && known);
+    m_memory->updateActions(ready, known, edits, idle, connected && idle && known);
 }
 
 void FeetechWorkspace::refreshLive()
 {
     const int index = currentIndex();
-    if (index < 0 || !m_live->isChecked() || !isVisible() || m_tabs->currentIndex() != 1
-        || !m_client->isConnected() || m_client->isBusy() || !m_client->servo(index).read)
+    if (index < 0 || !m_memory->refreshesLive() || !isVisible()
+        || m_tabs->currentWidget() != m_memory || !m_client->isConnected() || m_client->isBusy()
+        || !m_client->servo(index).read)
         return;
     m_client->refreshRam(index);
+}
+
+void FeetechWorkspace::openScanDialog()
+{
+    ScanDialog dialog(m_scanOptions, this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    scanmemory::rememberScanOptions(dialog.options());
+    startScan(dialog.options());
+}
+
+void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
+{
+    if (!m_client->isConnected()) {
+        emit problem(tr("Connect to the bus before scanning."));
+        return;
+    }
+    m_scanOptions = options;
+    m_current.reset();
+    m_scan->hide();
+    m_cancelScan->show();
+    m_scanProgress->setValue(0);
+    m_scanProgress->show();
+    m_client->scan(options);
+    showServo();
+}
+
+void FeetechWorkspace::apply()
+{
+    const int index = currentIndex();
+    model::ParameterModel *parameters = m_client->parameters(index);
+    if (!parameters)
+        return;
+    const auto newId = parameters->pendingValue(QStringLiteral("id"));
+    const auto newBaud = parameters->pendingValue(QStringLiteral("baud_rate"));
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    if (newId || newBaud) {
+        QStringList changes;
+        if (newId)
+            changes.append(tr("its ID from %1 to %2").arg(info.id).arg(*newId));
+        if (newBaud)
+            changes.append(tr("its baud rate from %1 to %2")
+                               .arg(feetech::baudText(info.baud),
+                                    feetech::baudText(feetech::baudForCode(int(*newBaud)))));
+        const auto answer = QMessageBox::question(
+            this, tr("Change how the servo is reached?"),
+            tr("This changes %1.<br><br>ServoBench writes it to EEPROM with the lock opened "
+               "and closed again, then finds the servo at its new address and confirms it "
+               "there. Other programs and robot code must use the new address afterwards.")
+                .arg(changes.join(tr(" and "))),
+            QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Ok)
+            return;
+    }
+    QString error;
+    if (!m_client->applyAll(index, &error))
+        emit problem(tr("Nothing was written: %1").arg(error));
+}
+
+void FeetechWorkspace::run(feetech::OperationReply *(feetech::BusClient::*operation)(int,
+                                                                                     QString *),
+                           const QString &what)
+{
+    QString error;
+    if (!(m_client->*operation)(currentIndex(), &error))
+        emit problem(error);
+    else
+        emit message(what);
+}
+
+void FeetechWorkspace::changeId()
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return;
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    QStringList used;
+    for (const int id : m_client->idsInUse())
+        used.append(QString::number(id));
+    bool ok = false;
+    const int newId = QInputDialog::getInt(
+        this, tr("Change ID"),
+        tr("New ID for %1 (IDs found on this bus: %2).\nAn ID in use is refused.")
+            .arg(servoTitle(), used.join(QStringLiteral(", "))),
+        info.id, 0, feetech::kMaxServoId, 1, &ok);
+    if (!ok || newId == info.id)
+        return;
+    if (m_client->idsInUse().contains(newId)) {
+        emit problem(tr("ID %1 is already in use on this bus; nothing was written.").arg(newId));
+        return;
+    }
+    QString error;
+    if (!m_client->changeId(index, newId, &error))
+        emit problem(error);
+}
+
+void FeetechWorkspace::changeBaud()
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return;
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    QStringList rates;
+    for (const qint32 rate : feetech::baudRates())
+        rates.append(QString::number(rate));
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(
+        this, tr("Change baud rate"),
+        tr("New baud rate for %1 (now %2). ServoBench follows the servo to the new rate and "
+           "confirms it there.")
+            .arg(servoTitle(), feetech::baudText(info.baud)),
+        rates, int(rates.indexOf(QString::number(info.baud))), false, &ok);
+    if (!ok || chosen.toInt() == info.baud)
+        return;
+    QString error;
+    if (!m_client->changeBaud(index, chosen.toInt(), &error))
+        emit problem(error);
+}
+
+void FeetechWorkspace::calibrateMiddle()
+{
+    const auto answer = QMessageBox::question(
+        this, tr("Calibrate middle"),
+        tr("The horn's present position becomes the middle (2048) of %1. Turn the horn to "
+           "where the middle should be first; the new offset is stored in EEPROM.")
+            .arg(servoTitle()),
+        QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer == QMessageBox::Ok)
+        run(&feetech::BusClient::calibrateMiddle, tr("Calibrating the middle…"));
+}
+
+void FeetechWorkspace::factoryReset()
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return;
+    const feetech::ServoInfo info = m_client->servo(index).info;
+    // A backup first, always: a factory reset cannot be undone any other way.
+    const QString suggested =
+        QStringLiteral("servo-%1-backup-%2.json")
+            .arg(info.id)
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss")));
+    QMessageBox::information(this, tr("Factory reset"),
+                             tr("First save a backup profile of %1; the reset only starts once "
+                                "it is saved.")
+                                 .arg(servoTitle()));
+    const QString path = profileactions::chooseSavePath(this, suggested);
+    if (path.isEmpty())
+        return;
+    if (!saveProfile(path, false)) // what the servo holds, not what is being edited
+        return;
+    const auto answer = QMessageBox::warning(
+        this, tr("Factory reset"),
+        tr("Backup saved to %1.<br><br>Restore the factory values of %2? Everything but the ID "
+           "returns to what the servo left the factory with, possibly including its baud "
+           "rate; ServoBench looks for it at every rate afterwards.")
+            .arg(QDir::toNativeSeparators(path).toHtmlEscaped(), servoTitle()),
+        QMessageBox::Reset | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer == QMessageBox::Reset)
+        run(&feetech::BusClient::factoryReset, tr("Restoring factory values…"));
+}
+
+void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &result)
+{
+    using feetech::Operation;
+    if (result.control) {
+        // Goal and torque writes come many a second: the pages show them; only a failure is
+        // worth the status bar, and the servo list has not changed.
+        if (!result.ok)
+            emit problem(result.message);
+        return;
+    }
+    if (result.ok && m_current
+        && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
+            || result.operation == Operation::FactoryReset))
+        m_current = std::make_pair(result.servo.id, result.servo.baud);
+    if (result.ok)
+        emit message(result.message);
+    else
+        emit problem(result.message);
+    rebuildTree();
+    showServo();
+}
+
+void FeetechWorkspace::chooseProfileToSave()
+{
+    const int index = currentIndex();
+    if (index < 0) {
+        emit problem(tr("Choose a servo first."));
+        return;
+    }
+    const QString path = profileactions::chooseSavePath(
+        this, QStringLiteral("servo-%1.json").arg(m_client->servo(index).info.id));
+    if (!path.isEmpty() && saveProfile(path))
+        emit message(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
+}
+
+bool FeetechWorkspace::saveProfile(const QString &path, bool withEdits)
+{
+    const int index = currentIndex();
+    if (index < 0 || !m_client->servo(index).info.hasTable()) {
+        emit problem(tr("Only a servo of a known model can be saved as a profile."));
+        return false;
+    }
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    QString error;
+    if (!profileactions::save(path, *m_client->parameters(index),
+                              feetech::familyKey(*info.model.family), info.model.name,
+                              feetech::profileDefinitions(info.table()), withEdits, &error)) {
+        emit problem(error);
+        return false;
+    }
+    return true;
+}
+
+void FeetechWorkspace::chooseProfileToLoad()
+{
+    const QString path = profileactions::chooseLoadPath(this);
+    if (!path.isEmpty())
+        loadProfile(path);
+}
+
+void FeetechWorkspace::loadProfile(const QString &path)
+{
+    const int index = currentIndex();
+    if (index < 0 || !m_client->servo(index).info.hasTable()) {
+        emit problem(tr("Choose a servo of a known model first."));
+        return;
+    }
+    if (m_client->isBusy()) {
+        emit problem(tr("Wait for the running operation to finish before loading a profile."));
+        return;
+    }
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    QString error;
+    const profileactions::LoadOutcome outcome = profileactions::loadAsEdits(
+        this, path, feetech::familyKey(*info.model.family),
+        feetech::profileDefinitions(info.table()), *m_client->parameters(index), &error);
+    if (outcome == profileactions::LoadOutcome::Failed)
+        emit problem(error);
+    else if (const QString note = profileactions::outcomeMessage(outcome); !note.isEmpty())
+        emit message(note);
 }

@@ -1,4 +1,4 @@
-// The Feetech workspace: servo tree, per-servo Settings and Memory table pages, guided flows.
+// The Feetech workspace: servo tree, per-servo pages, the operations on the servo shown.
 #pragma once
 
 #include "feetechsession.h"
@@ -10,20 +10,16 @@
 class ControlPage;
 class HealthPage;
 class JointTable;
+class MemoryTablePage;
 class MonitorPage;
 class ParameterPage;
-class QCheckBox;
 class QLabel;
-class QLineEdit;
 class QProgressBar;
 class QPushButton;
-class QSortFilterProxyModel;
 class QTabWidget;
-class QTableView;
 class QTimer;
-class QTreeWidget;
-class RegisterTableModel;
 class RobotActions;
+class ServoTree;
 class UnlockedNotice;
 
 namespace feetech {
@@ -40,9 +36,6 @@ public:
 
     // The servo the pages show (-1: none).
     int currentIndex() const;
-    // The servos selected in the tree (BusClient numbering, tree order); several with
-    // Ctrl+click or Shift+click.
-    QVector<int> selectedServos() const;
     void selectServo(quint8 id, qint32 baud);
     void setPortName(const QString &name); // the tree's top item
 
@@ -55,9 +48,9 @@ public:
     bool saveProfile(const QString &path, bool withEdits = true);
     void loadProfile(const QString &path);
 
-    QTreeWidget *servoTree() const { return m_tree; }
+    ServoTree *servoTree() const { return m_tree; }
     ParameterPage *settingsPage() const { return m_settings; }
-    QTableView *memoryTable() const { return m_table; }
+    MemoryTablePage *memoryPage() const { return m_memory; }
     QTabWidget *tabs() const { return m_tabs; }
     MonitorPage *monitorPage() const { return m_monitor; }
     ControlPage *controlPage() const { return m_control; }
@@ -73,7 +66,7 @@ signals:
 
 private:
     void rebuildTree();
-    void onSelectionChanged();
+    void showChosenServo(quint8 id, qint32 baud);
     void showServo();
     void readIfNew();
     void updateHeader();
@@ -91,9 +84,8 @@ private:
     feetech::BusClient *m_client = nullptr;
     feetech::ScanOptions m_scanOptions;
     std::optional<std::pair<quint8, qint32>> m_current; // ID and baud of the servo shown
-    QString m_portName;
 
-    QTreeWidget *m_tree = nullptr;
+    ServoTree *m_tree = nullptr;
     QPushButton *m_allTorqueOff = nullptr;
     MonitorPage *m_monitor = nullptr;
     ControlPage *m_control = nullptr;
@@ -105,7 +97,6 @@ private:
     QLabel *m_scanState = nullptr;
 
     QLabel *m_header = nullptr;
-    QLabel *m_memoryEmpty = nullptr; // the Memory table page's hint while no servo is chosen
     UnlockedNotice *m_unlocked = nullptr;
     QPushButton *m_changeId = nullptr;
     QPushButton *m_changeBaud = nullptr;
@@ -116,14 +107,7 @@ private:
     QTabWidget *m_tabs = nullptr;
     ParameterPage *m_settings = nullptr;
 
-    RegisterTableModel *m_registers = nullptr;
-    QSortFilterProxyModel *m_filter = nullptr;
-    QTableView *m_table = nullptr;
-    QLineEdit *m_filterEdit = nullptr;
-    QCheckBox *m_live = nullptr;
-    QPushButton *m_tableRead = nullptr;
-    QPushButton *m_tableRevert = nullptr;
-    QPushButton *m_tableApply = nullptr;
+    MemoryTablePage *m_memory = nullptr;
     QTimer *m_liveTimer = nullptr;
     RobotActions *m_robot = nullptr;
 };

@@ -9,6 +9,7 @@
 #include "profileactions.h"
 #include "robottemplate.h"
 #include "robottemplatedialog.h"
+#include "servotree.h"
 
 #include <QAction>
 #include <QInputDialog>
@@ -124,7 +125,7 @@ void RobotActions::updateActions()
         batchWhy = tr("Servos are being programmed.");
     else if (batchWhy.isEmpty() && m_client->isBusy())
         batchWhy = tr("Another operation is still running.");
-    else if (batchWhy.isEmpty() && m_workspace->selectedServos().isEmpty())
+    else if (batchWhy.isEmpty() && m_workspace->servoTree()->selectedServos().isEmpty())
         batchWhy = tr("Select servos in the tree first (Ctrl+click or Shift+click for several).");
     for (QAction *action : {m_applyProfile, m_applyTemplate}) {
         action->setEnabled(batchWhy.isEmpty());
@@ -149,7 +150,7 @@ bool RobotActions::identify(int index, QString *error)
 
 bool RobotActions::applyToSelected(const feetech::SettingsFile &file, QString *error)
 {
-    if (!m_batch->start(m_workspace->selectedServos(), file, error))
+    if (!m_batch->start(m_workspace->servoTree()->selectedServos(), file, error))
         return false;
     m_batchSource = file.source();
     m_progress = new QProgressDialog(m_workspace);

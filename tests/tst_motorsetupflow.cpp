@@ -1,0 +1,183 @@
+// Tests of the motor set-up flow against the simulated bus: joints set up one servo at a time,
+// failures and stops, choosing a joint, and a check of the bus marking joints done.
+#include "pluggedbus.h"
+
+#include "busclient.h"
+#include "motorsetupflow.h"
+
+#include <QSettings>
+#include <QSignalSpy>
+#include <QtTest>
+
+namespace {
+
+constexpr qint32 k1M = 1000000;
+
+const QString kArm = QStringLiteral("SO-101 follower arm");
+
+using JointState = feetech::MotorSetupFlow::JointState;
+using Work = feetech::MotorSetupFlow::Work;
+
+} // namespace
+
+class TestMotorSetupFlow : public testsupport::PluggedBusTest
+{
+    Q_OBJECT
+
+private:
+    std::unique_ptr<feetech::BusClient> m_client;
+    std::unique_ptr<feetech::MotorSetupFlow> m_flow;
+    feetech::RobotTemplate m_robot = testsupport::builtInRobot(kArm);
+
+    // Starts `start` (a find, set-up or check) and waits for the flow to be idle again.
+    template<typename Start>
+    void startAndWait(Start start)
+    {
+        QString error;
+        QVERIFY2(start(&error), qPrintable(error));
+        QVERIFY(m_flow->isWorking());
+        QTRY_VERIFY_WITH_TIMEOUT(!m_flow->isWorking(), 30000);
+    }
+    void findAndWait()
+    {
+        startAndWait([this](QString *error) { return m_flow->find(error); });
+    }
+    void setUpAndWait()
+    {
+        startAndWait([this](QString *error) { return m_flow->setUp(error); });
+    }
+    void checkAndWait()
+    {
+        startAndWait([this](QString *error) { return m_flow->checkBus(error); });
+    }
+
+private slots:
+    void init()
+    {
+        QSettings().clear();
+        QString error;
+        QVERIFY2(startEmptyBus(&error), qPrintable(error));
+        m_client = std::make_unique<feetech::BusClient>();
+        m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        m_flow = std::make_unique<feetech::MotorSetupFlow>(m_client.get());
+        m_flow->setRobot(m_robot);
+    }
+
+    void cleanup()
+    {
+        m_flow.reset();
+        m_client.reset();
+        m_simulator.reset();
+        QFile::remove(logPath());
+    }
+
+    void aRobotStartsWithEveryJointToDoAndTheFirstCurrent()
+    {
+        QCOMPARE(m_flow->jointCount(), int(m_robot.joints.size()));
+        QCOMPARE(m_flow->currentJoint(), 0);
+        for (int joint = 0; joint < m_flow->jointCount(); ++joint)
+            QCOMPARE(m_flow->jointState(joint), JointState::ToDo);
+        QVERIFY(!m_flow->isWorking());
+        QVERIFY(m_flow->isBusFree());
+        QString error;
+        QVERIFY(!m_flow->setUp(&error)); // nothing found yet
+        QVERIFY(error.isEmpty());
+    }
+
+    void aFactoryServoIsFoundThenSetUpAndTheNextJointBecomesCurrent()
+    {
+        QSignalSpy finished(m_flow.get(), &feetech::MotorSetupFlow::finished);
+        QVERIFY(plug(1, QStringLiteral("STS3215"), 500000));
+        findAndWait();
+        QCOMPARE(finished.size(), 1);
+        QCOMPARE(finished.at(0).at(0).value<Work>(), Work::Finding);
+        QVERIFY(m_flow->found().has_value());
+        QCOMPARE(m_flow->found()->baud, 500000);
+        QCOMPARE(pluggedServos().first().id, quint8(1)); // a find writes nothing
+        setUpAndWait();
+        QCOMPARE(finished.size(), 2);
+        QCOMPARE(finished.at(1).at(0).value<Work>(), Work::SettingUp);
+        QCOMPARE(m_flow->jointState(0), JointState::Done);
+        QVERIFY(m_flow->jointReason(0).isEmpty());
+        QCOMPARE(m_flow->currentJoint(), 1);
+        QVERIFY(!m_flow->found().has_value());
+        verifySetUp(0, m_robot, m_robot.joints.at(0));
+    }
+
+    void noServoAnsweringFailsTheJointWithTheReason()
+    {
+        findAndWait();
+        QCOMPARE(m_flow->jointState(0), JointState::Failed);
+        QVERIFY2(m_flow->jointReason(0).contains(QLatin1String("No servo answers")),
+                 qPrintable(m_flow->jointReason(0)));
+        QVERIFY(!m_flow->found().has_value());
+        QCOMPARE(m_flow->currentJoint(), 0);
+    }
+
+    void aStopBeforeAnythingIsWrittenLeavesTheJointToDo()
+    {
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        findAndWait();
+        const quint64 revision = pluggedServos().first().revision;
+        QString error;
+        QVERIFY(m_flow->setUp(&error));
+        QVERIFY(m_flow->stop());
+        QVERIFY(m_flow->isStopping());
+        QVERIFY(!m_flow->stop()); // once is enough
+        QTRY_VERIFY_WITH_TIMEOUT(!m_flow->isWorking(), 30000);
+        QVERIFY(!m_flow->isStopping());
+        QCOMPARE(m_flow->jointState(0), JointState::ToDo);
+        QCOMPARE(pluggedServos().first().revision, revision);
+    }
+
+    void aJointChosenBecomesCurrentButNotWhileWorking()
+    {
+        QVERIFY(m_flow->chooseJoint(3));
+        QCOMPARE(m_flow->currentJoint(), 3);
+        QVERIFY(!m_flow->chooseJoint(3)); // already current
+        QVERIFY(!m_flow->chooseJoint(m_flow->jointCount()));
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        QString error;
+        QVERIFY(m_flow->find(&error));
+        QVERIFY(!m_flow->chooseJoint(0));
+        QTRY_VERIFY_WITH_TIMEOUT(!m_flow->isWorking(), 30000);
+        QCOMPARE(m_flow->currentJoint(), 3);
+    }
+
+    void aCheckMarksTheJointsSetUpAtTheirIdAsDone()
+    {
+        const feetech::RobotJoint &pan = m_robot.joints.at(0);
+        QVERIFY(plug(quint8(pan.id), pan.model, m_robot.baud));
+        QVERIFY(withServo(quint8(pan.id), m_robot.baud, [&](sim::VirtualFeetechServo &servo) {
+            for (auto it = pan.settings.cbegin(); it != pan.settings.cend(); ++it)
+                servo.setValue(it.key(), it.value());
+        }));
+        QVERIFY(plug(3, QStringLiteral("STS3215"), k1M)); // at elbow_flex's ID, not set up
+        QSignalSpy checked(m_flow.get(), &feetech::MotorSetupFlow::checked);
+        checkAndWait();
+        QCOMPARE(checked.size(), 1);
+        QCOMPARE(checked.at(0).at(0).toBool(), true);
+        QCOMPARE(checked.at(0).at(2).toInt(), 1);
+        QCOMPARE(m_flow->jointState(0), JointState::Done);
+        QCOMPARE(m_flow->jointState(2), JointState::ToDo);
+        QVERIFY(!m_flow->jointReason(2).isEmpty());
+        QCOMPARE(m_flow->currentJoint(), 1); // the first joint not done
+    }
+
+    void aNewRobotStartsOver()
+    {
+        QVERIFY(m_flow->chooseJoint(2));
+        m_flow->setRobot(m_robot);
+        QCOMPARE(m_flow->currentJoint(), 0);
+        m_flow->setRobot({});
+        QCOMPARE(m_flow->currentJoint(), -1);
+        QString error;
+        QVERIFY(!m_flow->checkBus(&error));
+        QVERIFY(!m_flow->find(&error));
+        QVERIFY(error.isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMotorSetupFlow)
+#include "tst_motorsetupflow.moc"
