@@ -4373,18 +4373,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Die Diagramme wie angezeigt als ein PNG-Bild speichern</translation>
     </message>
     <message>
-        <source>Recording</source>
-        <translation>Aufzeichnung</translation>
-    </message>
-    <message>
-        <source>Record CSV…</source>
-        <translation>CSV aufzeichnen…</translation>
-    </message>
-    <message>
-        <source>Write every sample of the ticked servos to a CSV file</source>
-        <translation>Jeden Messwert der angehakten Servos in eine CSV-Datei schreiben</translation>
-    </message>
-    <message>
         <source>There is no bus to monitor.</source>
         <translation>Es gibt keinen Bus zum Überwachen.</translation>
     </message>
@@ -4395,13 +4383,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Monitoring did not start: %1</source>
         <translation>Überwachung wurde nicht gestartet: %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>%Ln row(s) saved to %1.</source>
-        <translation>
-            <numerusform>%Ln Zeile in %1 gespeichert.</numerusform>
-            <numerusform>%Ln Zeilen in %1 gespeichert.</numerusform>
-        </translation>
     </message>
     <message>
         <source>Plot saved to %1.</source>
@@ -4440,14 +4421,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <source>Record telemetry</source>
-        <translation>Telemetrie aufzeichnen</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV-Dateien (*.csv)</translation>
-    </message>
-    <message>
         <source>Monitoring stopped: no servo is ticked.</source>
         <translation>Überwachung gestoppt: Kein Servo ist angehakt.</translation>
     </message>
@@ -4460,34 +4433,8 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <source>Stop recording</source>
-        <translation>Aufzeichnung stoppen</translation>
-    </message>
-    <message>
         <source> · plot paused (samples are still received)</source>
         <translation> · Diagramm pausiert (Messwerte werden weiter empfangen)</translation>
-    </message>
-    <message>
-        <source>Not recording.</source>
-        <translation>Keine Aufzeichnung.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1: %Ln row(s).</source>
-        <translation>
-            <numerusform>Aufzeichnung in %1: %Ln Zeile.</numerusform>
-            <numerusform>Aufzeichnung in %1: %Ln Zeilen.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1 failed after %Ln row(s): %2</source>
-        <translation>
-            <numerusform>Aufzeichnung in %1 nach %Ln Zeile fehlgeschlagen: %2</numerusform>
-            <numerusform>Aufzeichnung in %1 nach %Ln Zeilen fehlgeschlagen: %2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Recording failed.</source>
-        <translation>Aufzeichnung fehlgeschlagen.</translation>
     </message>
     <message>
         <source>Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late</source>
@@ -4571,6 +4518,62 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorRecording</name>
+    <message>
+        <source>Recording</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Record CSV…</source>
+        <translation>CSV aufzeichnen…</translation>
+    </message>
+    <message>
+        <source>Write every sample of the ticked servos to a CSV file</source>
+        <translation>Jeden Messwert der angehakten Servos in eine CSV-Datei schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln row(s) saved to %1.</source>
+        <translation>
+            <numerusform>%Ln Zeile in %1 gespeichert.</numerusform>
+            <numerusform>%Ln Zeilen in %1 gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Record telemetry</source>
+        <translation>Telemetrie aufzeichnen</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not recording.</source>
+        <translation>Keine Aufzeichnung.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1: %Ln row(s).</source>
+        <translation>
+            <numerusform>Aufzeichnung in %1: %Ln Zeile.</numerusform>
+            <numerusform>Aufzeichnung in %1: %Ln Zeilen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>Aufzeichnung stoppen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1 failed after %Ln row(s): %2</source>
+        <translation>
+            <numerusform>Aufzeichnung in %1 nach %Ln Zeile fehlgeschlagen: %2</numerusform>
+            <numerusform>Aufzeichnung in %1 nach %Ln Zeilen fehlgeschlagen: %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Recording failed.</source>
+        <translation>Aufzeichnung fehlgeschlagen.</translation>
     </message>
 </context>
 <context>

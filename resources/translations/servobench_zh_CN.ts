@@ -4336,14 +4336,6 @@ An ID in use is refused.</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <source>Stop recording</source>
-        <translation>停止记录</translation>
-    </message>
-    <message>
-        <source>Record CSV…</source>
-        <translation>记录 CSV…</translation>
-    </message>
-    <message>
         <source>Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late</source>
         <translation>数据流 · %1 周期/秒 · %2 采样/秒 · 丢失 %3 · 迟到 %4</translation>
     </message>
@@ -4431,48 +4423,6 @@ An ID in use is refused.</source>
         <source>Save the charts as they are shown as one PNG image</source>
         <translation>将当前显示的图表保存为一张 PNG 图像</translation>
     </message>
-    <message>
-        <source>Recording</source>
-        <translation>记录</translation>
-    </message>
-    <message>
-        <source>Write every sample of the ticked servos to a CSV file</source>
-        <translation>将所勾选舵机的每个采样写入 CSV 文件</translation>
-    </message>
-    <message numerus="yes">
-        <source>%Ln row(s) saved to %1.</source>
-        <translation>
-            <numerusform>已将 %Ln 行保存到 %1。</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Record telemetry</source>
-        <translation>记录遥测数据</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV 文件 (*.csv)</translation>
-    </message>
-    <message>
-        <source>Not recording.</source>
-        <translation>未在记录。</translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1: %Ln row(s).</source>
-        <translation>
-            <numerusform>正在记录到 %1：%Ln 行。</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1 failed after %Ln row(s): %2</source>
-        <translation>
-            <numerusform>记录到 %1 时在 %Ln 行后失败：%2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Recording failed.</source>
-        <translation>记录失败。</translation>
-    </message>
 </context>
 <context>
     <name>MonitorReadouts</name>
@@ -4551,6 +4501,59 @@ An ID in use is refused.</source>
     <message>
         <source>none</source>
         <translation>无</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorRecording</name>
+    <message>
+        <source>Recording</source>
+        <translation>记录</translation>
+    </message>
+    <message>
+        <source>Record CSV…</source>
+        <translation>记录 CSV…</translation>
+    </message>
+    <message>
+        <source>Write every sample of the ticked servos to a CSV file</source>
+        <translation>将所勾选舵机的每个采样写入 CSV 文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln row(s) saved to %1.</source>
+        <translation>
+            <numerusform>已将 %Ln 行保存到 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Record telemetry</source>
+        <translation>记录遥测数据</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not recording.</source>
+        <translation>未在记录。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1: %Ln row(s).</source>
+        <translation>
+            <numerusform>正在记录到 %1：%Ln 行。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>停止记录</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1 failed after %Ln row(s): %2</source>
+        <translation>
+            <numerusform>记录到 %1 时在 %Ln 行后失败：%2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Recording failed.</source>
+        <translation>记录失败。</translation>
     </message>
 </context>
 <context>
