@@ -3538,64 +3538,8 @@ An ID in use is refused.</source>
         <translation>立即读取每个舵机的寄存器：位置、限制和扭矩</translation>
     </message>
     <message>
-        <source>ID</source>
-        <translation>ID</translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation>型号</translation>
-    </message>
-    <message>
-        <source>Baud rate</source>
-        <translation>波特率</translation>
-    </message>
-    <message>
-        <source>Position (steps)</source>
-        <translation>位置（步）</translation>
-    </message>
-    <message>
-        <source>Target (steps)</source>
-        <translation>目标（步）</translation>
-    </message>
-    <message>
-        <source>Target range</source>
-        <translation>目标范围</translation>
-    </message>
-    <message>
-        <source>Torque</source>
-        <translation>扭矩</translation>
-    </message>
-    <message>
-        <source>Motion</source>
-        <translation>运动</translation>
-    </message>
-    <message>
         <source>Identify</source>
         <translation>识别</translation>
-    </message>
-    <message>
-        <source>Present position: live while the monitor watches the servo, otherwise the last value read (grey)</source>
-        <translation>当前位置：监视该舵机时为实时值，否则为最后读取的值（灰色）</translation>
-    </message>
-    <message>
-        <source>Where Move all sends the servo: double-click or type to change it</source>
-        <translation>“全部移动”会将舵机移动到的位置：双击或直接输入以更改</translation>
-    </message>
-    <message>
-        <source>The servo&apos;s angle limits, or the goal register&apos;s range when the limits are unknown or both 0</source>
-        <translation>舵机的角度限制；当限制未知或均为 0 时，为目标寄存器的范围</translation>
-    </message>
-    <message>
-        <source>Tick to switch torque on, untick to switch it off</source>
-        <translation>勾选以开启扭矩，取消勾选以关闭扭矩</translation>
-    </message>
-    <message>
-        <source>Whether the servo reports that it is moving</source>
-        <translation>舵机是否报告其正在运动</translation>
-    </message>
-    <message>
-        <source>Wiggle the servo slowly with little torque, then put it back as it was: see which servo of the arm it is</source>
-        <translation>以很小的扭矩缓慢摆动舵机，然后将其恢复原状：看看它是机械臂上的哪个舵机</translation>
     </message>
     <message>
         <source>Targets from present positions</source>
@@ -3604,22 +3548,6 @@ An ID in use is refused.</source>
     <message>
         <source>Copy every servo&apos;s present position into its target</source>
         <translation>将每个舵机的当前位置复制到其目标</translation>
-    </message>
-    <message>
-        <source>Load pose…</source>
-        <translation>加载姿态…</translation>
-    </message>
-    <message>
-        <source>Fill the targets from a pose file; nothing moves until Move all</source>
-        <translation>从姿态文件填入目标；在按下“全部移动”之前不会移动</translation>
-    </message>
-    <message>
-        <source>Save pose…</source>
-        <translation>保存姿态…</translation>
-    </message>
-    <message>
-        <source>Save the targets as a pose file</source>
-        <translation>将目标保存为姿态文件</translation>
     </message>
     <message>
         <source>Move all</source>
@@ -3656,10 +3584,6 @@ An ID in use is refused.</source>
     <message>
         <source>&lt;b&gt;Live positions&lt;/b&gt; from the monitor.</source>
         <translation>来自监视的&lt;b&gt;实时位置&lt;/b&gt;。</translation>
-    </message>
-    <message>
-        <source>Pose: %1</source>
-        <translation>姿态：%1</translation>
     </message>
     <message>
         <source>Move all failed: %1</source>
@@ -3758,6 +3682,154 @@ An ID in use is refused.</source>
         <translation>以很小的扭矩缓慢摆动 %1，然后将其恢复原状</translation>
     </message>
     <message>
+        <source>Targets set to the present positions of %1 servos.</source>
+        <translation>已将 %1 个舵机的目标设为其当前位置。</translation>
+    </message>
+    <message>
+        <source>Targets set for %1 servos. No position is known yet for %2: read the positions first.</source>
+        <translation>已为 %1 个舵机设置目标。%2 的位置尚未知：请先读取位置。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n servo(s)…</source>
+        <translation>
+            <numerusform>正在读取 %n 个舵机…</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>JointTablePoses</name>
+    <message>
+        <source>Load pose…</source>
+        <translation>加载姿态…</translation>
+    </message>
+    <message>
+        <source>Fill the targets from a pose file; nothing moves until Move all</source>
+        <translation>从姿态文件填入目标；在按下“全部移动”之前不会移动</translation>
+    </message>
+    <message>
+        <source>Save pose…</source>
+        <translation>保存姿态…</translation>
+    </message>
+    <message>
+        <source>Save the targets as a pose file</source>
+        <translation>将目标保存为姿态文件</translation>
+    </message>
+    <message>
+        <source>No targets to save: set some first.</source>
+        <translation>没有可保存的目标：请先设置目标。</translation>
+    </message>
+    <message>
+        <source>Saved the pose “%1” with %2 targets to %3.</source>
+        <translation>已将包含 %2 个目标的姿态“%1”保存到 %3。</translation>
+    </message>
+    <message>
+        <source>Pose: %1</source>
+        <translation>姿态：%1</translation>
+    </message>
+    <message>
+        <source>Loaded the pose “%1”: %2 targets filled. Nothing moves until you press Move all.</source>
+        <translation>已加载姿态“%1”：填入了 %2 个目标。在按下“全部移动”之前不会移动。</translation>
+    </message>
+    <message>
+        <source>ID %1 at %2</source>
+        <translation>ID %1，波特率 %2</translation>
+    </message>
+    <message>
+        <source>Not on the bus: %1.</source>
+        <translation>不在总线上：%1。</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、 </translation>
+    </message>
+    <message>
+        <source>Not in the pose (targets unchanged): %1.</source>
+        <translation>不在姿态中（目标未更改）：%1。</translation>
+    </message>
+    <message>
+        <source>Outside their range (shown in red): %1.</source>
+        <translation>超出其范围（以红色显示）：%1。</translation>
+    </message>
+    <message>
+        <source>pose.json</source>
+        <translation>pose.json</translation>
+    </message>
+    <message>
+        <source>Save pose</source>
+        <translation>保存姿态</translation>
+    </message>
+    <message>
+        <source>ServoBench poses (*.json);;All files (*)</source>
+        <translation>ServoBench 姿态 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Load pose</source>
+        <translation>加载姿态</translation>
+    </message>
+</context>
+<context>
+    <name>JointTableView</name>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Position (steps)</source>
+        <translation>位置（步）</translation>
+    </message>
+    <message>
+        <source>Target (steps)</source>
+        <translation>目标（步）</translation>
+    </message>
+    <message>
+        <source>Target range</source>
+        <translation>目标范围</translation>
+    </message>
+    <message>
+        <source>Torque</source>
+        <translation>扭矩</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>Identify</source>
+        <translation>识别</translation>
+    </message>
+    <message>
+        <source>Present position: live while the monitor watches the servo, otherwise the last value read (grey)</source>
+        <translation>当前位置：监视该舵机时为实时值，否则为最后读取的值（灰色）</translation>
+    </message>
+    <message>
+        <source>Where Move all sends the servo: double-click or type to change it</source>
+        <translation>“全部移动”会将舵机移动到的位置：双击或直接输入以更改</translation>
+    </message>
+    <message>
+        <source>The servo&apos;s angle limits, or the goal register&apos;s range when the limits are unknown or both 0</source>
+        <translation>舵机的角度限制；当限制未知或均为 0 时，为目标寄存器的范围</translation>
+    </message>
+    <message>
+        <source>Tick to switch torque on, untick to switch it off</source>
+        <translation>勾选以开启扭矩，取消勾选以关闭扭矩</translation>
+    </message>
+    <message>
+        <source>Whether the servo reports that it is moving</source>
+        <translation>舵机是否报告其正在运动</translation>
+    </message>
+    <message>
+        <source>Wiggle the servo slowly with little torque, then put it back as it was: see which servo of the arm it is</source>
+        <translation>以很小的扭矩缓慢摆动舵机，然后将其恢复原状：看看它是机械臂上的哪个舵机</translation>
+    </message>
+    <message>
         <source>%1 family, firmware %2</source>
         <translation>%1 系列，固件 %2</translation>
     </message>
@@ -3803,7 +3875,7 @@ An ID in use is refused.</source>
     </message>
     <message>
         <source>Moving</source>
-        <translation>运动中</translation>
+        <translation>移动标志</translation>
     </message>
     <message>
         <source>Still</source>
@@ -3832,64 +3904,6 @@ An ID in use is refused.</source>
     <message>
         <source>No target yet: type one, load a pose or take the present position</source>
         <translation>尚无目标：请输入目标、加载姿态或采用当前位置</translation>
-    </message>
-    <message>
-        <source>Targets set to the present positions of %1 servos.</source>
-        <translation>已将 %1 个舵机的目标设为其当前位置。</translation>
-    </message>
-    <message>
-        <source>Targets set for %1 servos. No position is known yet for %2: read the positions first.</source>
-        <translation>已为 %1 个舵机设置目标。%2 的位置尚未知：请先读取位置。</translation>
-    </message>
-    <message>
-        <source>No targets to save: set some first.</source>
-        <translation>没有可保存的目标：请先设置目标。</translation>
-    </message>
-    <message>
-        <source>Saved the pose “%1” with %2 targets to %3.</source>
-        <translation>已将包含 %2 个目标的姿态“%1”保存到 %3。</translation>
-    </message>
-    <message>
-        <source>Loaded the pose “%1”: %2 targets filled. Nothing moves until you press Move all.</source>
-        <translation>已加载姿态“%1”：填入了 %2 个目标。在按下“全部移动”之前不会移动。</translation>
-    </message>
-    <message>
-        <source>ID %1 at %2</source>
-        <translation>ID %1，波特率 %2</translation>
-    </message>
-    <message>
-        <source>Not on the bus: %1.</source>
-        <translation>不在总线上：%1。</translation>
-    </message>
-    <message>
-        <source>Not in the pose (targets unchanged): %1.</source>
-        <translation>不在姿态中（目标未更改）：%1。</translation>
-    </message>
-    <message>
-        <source>Outside their range (shown in red): %1.</source>
-        <translation>超出其范围（以红色显示）：%1。</translation>
-    </message>
-    <message>
-        <source>pose.json</source>
-        <translation>pose.json</translation>
-    </message>
-    <message>
-        <source>Save pose</source>
-        <translation>保存姿态</translation>
-    </message>
-    <message>
-        <source>ServoBench poses (*.json);;All files (*)</source>
-        <translation>ServoBench 姿态 (*.json);;所有文件 (*)</translation>
-    </message>
-    <message>
-        <source>Load pose</source>
-        <translation>加载姿态</translation>
-    </message>
-    <message numerus="yes">
-        <source>Reading %n servo(s)…</source>
-        <translation>
-            <numerusform>正在读取 %n 个舵机…</numerusform>
-        </translation>
     </message>
 </context>
 <context>
