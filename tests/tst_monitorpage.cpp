@@ -4,6 +4,7 @@
 #include "feetechbus.h"
 #include "monitorpage.h"
 #include "monitorrecording.h"
+#include "monitorservolist.h"
 #include "telemetrycsv.h"
 #include "telemetryplot.h"
 

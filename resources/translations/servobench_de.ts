@@ -4307,10 +4307,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Servos</translation>
     </message>
     <message>
-        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
-        <translation>Die zu streamenden Servos; An- oder Abhaken eines Servos während des Streamings startet den Stream neu</translation>
-    </message>
-    <message>
         <source>Plot</source>
         <translation>Diagramm</translation>
     </message>
@@ -4405,22 +4401,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
-    </message>
-    <message>
-        <source>unknown model</source>
-        <translation>unbekanntes Modell</translation>
-    </message>
-    <message>
-        <source>ID %1 · %2 · %3</source>
-        <translation>ID %1 · %2 · %3</translation>
-    </message>
-    <message>
-        <source>Unknown model: its feedback cannot be decoded</source>
-        <translation>Unbekanntes Modell: Seine Rückmeldungen können nicht dekodiert werden</translation>
-    </message>
-    <message>
-        <source>Scan the bus to find servos.</source>
-        <translation>Scannen Sie den Bus, um Servos zu finden.</translation>
     </message>
     <message>
         <source>Recording stopped: the bus was disconnected.</source>
@@ -4588,6 +4568,29 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Recording failed.</source>
         <translation>Aufzeichnung fehlgeschlagen.</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorServoList</name>
+    <message>
+        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
+        <translation>Die zu streamenden Servos; An- oder Abhaken eines Servos während des Streamings startet den Stream neu</translation>
+    </message>
+    <message>
+        <source>unknown model</source>
+        <translation>unbekanntes Modell</translation>
+    </message>
+    <message>
+        <source>ID %1 · %2 · %3</source>
+        <translation>ID %1 · %2 · %3</translation>
+    </message>
+    <message>
+        <source>Unknown model: its feedback cannot be decoded</source>
+        <translation>Unbekanntes Modell: Seine Rückmeldungen können nicht dekodiert werden</translation>
+    </message>
+    <message>
+        <source>Scan the bus to find servos.</source>
+        <translation>Scannen Sie den Bus, um Servos zu finden.</translation>
     </message>
 </context>
 <context>

@@ -4302,22 +4302,6 @@ An ID in use is refused.</source>
         <translation>曲线图已保存到 %1。</translation>
     </message>
     <message>
-        <source>unknown model</source>
-        <translation>未知型号</translation>
-    </message>
-    <message>
-        <source>ID %1 · %2 · %3</source>
-        <translation>ID %1 · %2 · %3</translation>
-    </message>
-    <message>
-        <source>Unknown model: its feedback cannot be decoded</source>
-        <translation>未知型号：无法解码其反馈</translation>
-    </message>
-    <message>
-        <source>Scan the bus to find servos.</source>
-        <translation>扫描总线以查找舵机。</translation>
-    </message>
-    <message>
         <source>Recording stopped: the bus was disconnected.</source>
         <translation>记录已停止：总线已断开。</translation>
     </message>
@@ -4364,10 +4348,6 @@ An ID in use is refused.</source>
     <message>
         <source>Servos</source>
         <translation>舵机</translation>
-    </message>
-    <message>
-        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
-        <translation>要采集数据流的舵机；采集过程中勾选或取消勾选会重新启动数据流</translation>
     </message>
     <message>
         <source>Plot</source>
@@ -4568,6 +4548,29 @@ An ID in use is refused.</source>
     <message>
         <source>Recording failed.</source>
         <translation>记录失败。</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorServoList</name>
+    <message>
+        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
+        <translation>要采集数据流的舵机；采集过程中勾选或取消勾选会重新启动数据流</translation>
+    </message>
+    <message>
+        <source>unknown model</source>
+        <translation>未知型号</translation>
+    </message>
+    <message>
+        <source>ID %1 · %2 · %3</source>
+        <translation>ID %1 · %2 · %3</translation>
+    </message>
+    <message>
+        <source>Unknown model: its feedback cannot be decoded</source>
+        <translation>未知型号：无法解码其反馈</translation>
+    </message>
+    <message>
+        <source>Scan the bus to find servos.</source>
+        <translation>扫描总线以查找舵机。</translation>
     </message>
 </context>
 <context>

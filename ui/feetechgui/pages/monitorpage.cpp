@@ -5,6 +5,7 @@
 #include "busclient.h"
 #include "monitorreadouts.h"
 #include "monitorrecording.h"
+#include "monitorservolist.h"
 #include "telemetryplot.h"
 #include "widgethelpers.h"
 #include "widgetmemory.h"
@@ -18,7 +19,6 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QListWidget>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
@@ -32,10 +32,6 @@
 using widgethelpers::actionButton;
 
 namespace {
-
-constexpr int kIdRole = Qt::UserRole + 1;
-constexpr int kBaudRole = Qt::UserRole + 2;
-constexpr int kIndexRole = Qt::UserRole + 3;
 
 constexpr double kRates[] = {1, 5, 10, 20, 50, 100, 200};
 constexpr double kDefaultRate = 50;
@@ -126,12 +122,8 @@ QWidget *MonitorPage::buildControls()
 
     auto *servoGroup = new QGroupBox(tr("Servos"), controls);
     auto *servoLayout = new QVBoxLayout(servoGroup);
-    m_servoList = new QListWidget(servoGroup);
-    m_servoList->setObjectName(QStringLiteral("monitorServoList"));
-    m_servoList->setToolTip(tr("The servos to stream; ticking or unticking one while streaming "
-                               "restarts the stream"));
-    m_servoList->setMinimumHeight(m_servoList->fontMetrics().height() * 6);
-    connect(m_servoList, &QListWidget::itemChanged, this, &MonitorPage::onServoItemChanged);
+    m_servoList = new MonitorServoList(servoGroup);
+    connect(m_servoList, &MonitorServoList::ticksChanged, this, &MonitorPage::onTicksChanged);
     servoLayout->addWidget(m_servoList);
     controlsLayout->addWidget(servoGroup, 1);
 
@@ -223,27 +215,12 @@ QWidget *MonitorPage::buildControls()
 
 void MonitorPage::setSelectedServos(const QVector<int> &indexes)
 {
-    m_updatingList = true;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        QListWidgetItem *item = m_servoList->item(row);
-        if (item->flags() & Qt::ItemIsUserCheckable) {
-            item->setCheckState(indexes.contains(item->data(kIndexRole).toInt()) ? Qt::Checked
-                                                                                 : Qt::Unchecked);
-        }
-    }
-    m_updatingList = false;
-    onServoItemChanged();
+    m_servoList->setSelectedServos(indexes);
 }
 
 QVector<int> MonitorPage::selectedServos() const
 {
-    QVector<int> indexes;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if (item->checkState() == Qt::Checked)
-            indexes.append(item->data(kIndexRole).toInt());
-    }
-    return indexes;
+    return m_servoList->selectedServos();
 }
 
 void MonitorPage::setQuantities(const QVector<feetech::Quantity> &quantities)
@@ -361,14 +338,7 @@ bool MonitorPage::exportPng(const QString &path, QString *error)
 void MonitorPage::addSamples(const QVector<feetech::FeedbackSample> &samples)
 {
     // Ticked or not, for each servo the list names.
-    QHash<Key, bool> listed;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if (item->flags() & Qt::ItemIsUserCheckable) {
-            listed.insert(Key {quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()},
-                          item->checkState() == Qt::Checked);
-        }
-    }
+    const QHash<Key, bool> listed = m_servoList->ticks();
     QVector<feetech::FeedbackSample> kept;
     kept.reserve(samples.size());
     for (const feetech::FeedbackSample &sample : samples) {
@@ -415,51 +385,15 @@ void MonitorPage::hideEvent(QHideEvent *event)
 
 void MonitorPage::rebuildServoList()
 {
-    // Ticks survive a rescan by ID and baud rate; servos new to the list come ticked.
-    QHash<Key, bool> previous;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        previous.insert(Key {quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()},
-                        item->checkState() == Qt::Checked);
-    }
-    m_updatingList = true;
-    m_servoList->clear();
-    const int count = m_client ? m_client->servoCount() : 0;
-    for (int index = 0; index < count; ++index) {
-        const feetech::ServoInfo &info = m_client->servo(index).info;
-        const QString model = info.model.name.isEmpty() ? tr("unknown model") : info.model.name;
-        auto *item = new QListWidgetItem(
-            tr("ID %1 · %2 · %3").arg(info.id).arg(model, feetech::baudText(info.baud)),
-            m_servoList);
-        item->setData(kIdRole, info.id);
-        item->setData(kBaudRole, info.baud);
-        item->setData(kIndexRole, index);
-        if (info.hasTable()) {
-            item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
-            item->setCheckState(previous.value(Key {info.id, info.baud}, true) ? Qt::Checked
-                                                                               : Qt::Unchecked);
-        } else {
-            // Without the family's table the feedback block cannot be decoded.
-            item->setFlags(Qt::ItemIsUserCheckable);
-            item->setCheckState(Qt::Unchecked);
-            item->setToolTip(tr("Unknown model: its feedback cannot be decoded"));
-        }
-    }
-    m_updatingList = false;
-    if (m_servoList->count() == 0) {
-        auto *item = new QListWidgetItem(tr("Scan the bus to find servos."), m_servoList);
-        item->setFlags(Qt::NoItemFlags);
-    }
+    m_servoList->rebuild(m_client);
     m_unlisted.erase(std::remove_if(m_unlisted.begin(), m_unlisted.end(),
-                                    [this](const Key &key) { return isListed(key); }),
+                                    [this](const Key &key) { return m_servoList->isListed(key); }),
                      m_unlisted.end());
-    onServoItemChanged();
+    onTicksChanged();
 }
 
-void MonitorPage::onServoItemChanged()
+void MonitorPage::onTicksChanged()
 {
-    if (m_updatingList)
-        return;
     updatePlotServos();
     m_readoutsDirty = true;
     updateReadouts();
@@ -546,7 +480,7 @@ void MonitorPage::restartIfRunning()
 void MonitorPage::updatePlotServos()
 {
     QVector<TelemetryPlot::Servo> servos;
-    for (const Key &key : checkedKeys())
+    for (const Key &key : m_servoList->checkedKeys())
         servos.append({key.id, key.baud});
     for (const Key &key : std::as_const(m_unlisted))
         servos.append({key.id, key.baud});
@@ -596,29 +530,7 @@ void MonitorPage::showMessage(const QString &text, bool isError)
     m_message->setVisible(!text.isEmpty());
 }
 
-QVector<MonitorPage::Key> MonitorPage::checkedKeys() const
-{
-    QVector<Key> keys;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if (item->checkState() == Qt::Checked)
-            keys.append({quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()});
-    }
-    return keys;
-}
-
-bool MonitorPage::isListed(const Key &key) const
-{
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if ((item->flags() & Qt::ItemIsUserCheckable) && item->data(kIdRole).toInt() == key.id
-            && item->data(kBaudRole).toInt() == key.baud)
-            return true;
-    }
-    return false;
-}
-
 QVector<MonitorPage::Key> MonitorPage::readoutKeys() const
 {
-    return checkedKeys() + m_unlisted;
+    return m_servoList->checkedKeys() + m_unlisted;
 }

@@ -15,10 +15,10 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QListWidget;
 class QPushButton;
 class QTimer;
 class MonitorRecording;
+class MonitorServoList;
 class TelemetryPlot;
 
 namespace feetech {
@@ -63,7 +63,7 @@ public:
 
     TelemetryPlot *plot() const { return m_plot; }
     MonitorReadouts *readouts() const { return m_readouts; }
-    QListWidget *servoList() const { return m_servoList; }
+    MonitorServoList *servoList() const { return m_servoList; }
     // Every sample of the ticked servos taken while it records goes to its CSV file.
     MonitorRecording *recording() const { return m_recording; }
 
@@ -79,7 +79,7 @@ private:
 
     QWidget *buildControls();
     void rebuildServoList();
-    void onServoItemChanged();
+    void onTicksChanged();
     void onQuantityToggled();
     void onRateChosen();
     void onWindowChosen();
@@ -94,13 +94,11 @@ private:
     void updateControls();
     void updateStatusLine();
     void showMessage(const QString &text, bool isError);
-    QVector<Key> checkedKeys() const;
-    bool isListed(const Key &key) const;
     QVector<Key> readoutKeys() const;
 
     QPointer<feetech::BusClient> m_client;
     TelemetryPlot *m_plot = nullptr;
-    QListWidget *m_servoList = nullptr;
+    MonitorServoList *m_servoList = nullptr;
     QVector<QCheckBox *> m_quantityChecks; // in kAllQuantities order
     QComboBox *m_rateCombo = nullptr;
     QComboBox *m_windowCombo = nullptr;
@@ -114,7 +112,6 @@ private:
     MonitorReadouts *m_readouts = nullptr;
     QTimer *m_readoutTimer = nullptr;
 
-    bool m_updatingList = false; // our own check-state changes are not the user's
     bool m_readoutsDirty = true;
     QVector<Key> m_unlisted; // servos samples came for that the list does not name
     feetech::TelemetryStats m_stats;
