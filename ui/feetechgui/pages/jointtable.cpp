@@ -5,6 +5,7 @@
 #include "busclient.h"
 #include "jointtableposes.h"
 #include "jointtableview.h"
+#include "moveallplan.h"
 #include "palette.h"
 #include "registerkeys.h"
 #include "servoparameters.h"
@@ -517,49 +518,56 @@ bool JointTable::moveAll(QString *error)
     if (rowCount() == 0)
         return refuse(tr("No servos: scan the bus first."));
 
-    QVector<feetech::BusClient::Goal> goals;
-    QSet<qint32> bauds;
-    QStringList skipped;
-    QStringList torqueOff;
-    QStringList ids;
+    QVector<feetech::MoveAllJoint> joints;
     for (int row = 0; row < rowCount(); ++row) {
         const int index = servoIndex(row);
-        const std::optional<feetech::PositionRange> range = targetRange(row);
-        if (index < 0 || !range) {
-            skipped.append(servoName(row));
-            continue;
-        }
-        const std::optional<qint32> target = m_rows.at(row).target;
-        if (!target)
-            return refuse(tr("%1 has no target: type one, load a pose or use “Targets from "
-                             "present positions”. Nothing was sent.")
-                              .arg(servoName(row)));
-        if (!range->contains(*target))
-            return refuse(tr("%1: the target %2 is outside its range %3 to %4. Nothing was "
-                             "sent.")
-                              .arg(servoName(row))
-                              .arg(*target)
-                              .arg(range->minimum)
-                              .arg(range->maximum));
-        // In wheel, PWM or step mode the goal register means something else (or nothing).
-        if (const auto mode = deviceValue(row, kMode); mode && *mode != 0) {
-            const feetech::Register *reg = m_client->servo(index).info.table().find(kMode);
-            return refuse(tr("%1 is in %2 mode; a goal position only moves a servo in position "
-                             "mode. Nothing was sent.")
-                              .arg(servoName(row),
-                                   reg ? feetech::displayValue(*reg, qint32(*mode))
-                                       : QString::number(*mode)));
-        }
+        feetech::MoveAllJoint joint;
+        joint.baud = m_rows.at(row).baud;
+        joint.known = index >= 0;
+        joint.target = m_rows.at(row).target;
+        joint.range = targetRange(row);
+        joint.mode = deviceValue(row, kMode);
         const auto torque = deviceValue(row, kTorqueEnable);
-        if (torque
-            && m_client->servo(index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off)
-            torqueOff.append(servoName(row));
-        goals.append({index, *target});
-        bauds.insert(m_rows.at(row).baud);
+        joint.torqueOff = index >= 0 && torque
+            && m_client->servo(index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off;
+        joints.append(joint);
+    }
+    const feetech::MoveAllPlan plan = feetech::planMoveAll(joints);
+    const int refused = plan.refusedRow;
+    switch (plan.refusal) {
+    case feetech::MoveAllPlan::Refusal::None:
+        break;
+    case feetech::MoveAllPlan::Refusal::NoTarget:
+        return refuse(tr("%1 has no target: type one, load a pose or use “Targets from "
+                         "present positions”. Nothing was sent.")
+                          .arg(servoName(refused)));
+    case feetech::MoveAllPlan::Refusal::OutOfRange:
+        return refuse(tr("%1: the target %2 is outside its range %3 to %4. Nothing was "
+                         "sent.")
+                          .arg(servoName(refused))
+                          .arg(*joints.at(refused).target)
+                          .arg(joints.at(refused).range->minimum)
+                          .arg(joints.at(refused).range->maximum));
+    case feetech::MoveAllPlan::Refusal::NotPositionMode: {
+        const qint64 mode = *joints.at(refused).mode;
+        const feetech::Register *reg =
+            m_client->servo(servoIndex(refused)).info.table().find(kMode);
+        return refuse(
+            tr("%1 is in %2 mode; a goal position only moves a servo in position "
+               "mode. Nothing was sent.")
+                .arg(servoName(refused),
+                     reg ? feetech::displayValue(*reg, qint32(mode)) : QString::number(mode)));
+    }
+    case feetech::MoveAllPlan::Refusal::NothingMovable:
+        return refuse(tr("No servo here can be moved: their models are unknown."));
+    }
+
+    QVector<feetech::BusClient::Goal> goals;
+    QStringList ids;
+    for (const int row : plan.rows) {
+        goals.append({servoIndex(row), *m_rows.at(row).target});
         ids.append(QString::number(m_rows.at(row).id));
     }
-    if (goals.isEmpty())
-        return refuse(tr("No servo here can be moved: their models are unknown."));
     QString why;
     const QVector<feetech::OperationReply *> replies = m_client->moveAll(goals, &why);
     if (replies.isEmpty())
@@ -568,19 +576,25 @@ bool JointTable::moveAll(QString *error)
     for (feetech::OperationReply *reply : replies)
         connect(reply, &feetech::OperationReply::finished, this, &JointTable::onMoveFinished);
 
+    const auto names = [this](const QVector<int> &rows) {
+        QStringList names;
+        for (const int row : rows)
+            names.append(servoName(row));
+        return names.join(tr(", "));
+    };
     QStringList report;
-    report.append(bauds.size() == 1
+    report.append(plan.syncWrites == 1
                       ? tr("Targets sent to IDs %1 in one SYNC WRITE.").arg(ids.join(tr(", ")))
                       : tr("Targets sent to IDs %1 in %2 SYNC WRITEs, one per baud rate.")
                             .arg(ids.join(tr(", ")))
-                            .arg(bauds.size()));
-    if (!torqueOff.isEmpty())
+                            .arg(plan.syncWrites));
+    if (!plan.torqueOff.isEmpty())
         report.append(tr("Torque is off on %1: it will not move until torque is on.")
-                          .arg(torqueOff.join(tr(", "))));
-    if (!skipped.isEmpty())
-        report.append(tr("Not moved (unknown model): %1.").arg(skipped.join(tr(", "))));
+                          .arg(names(plan.torqueOff)));
+    if (!plan.skipped.isEmpty())
+        report.append(tr("Not moved (unknown model): %1.").arg(names(plan.skipped)));
     setMessage(report.join(u' '),
-               torqueOff.isEmpty() && skipped.isEmpty() ? Tone::Success : Tone::Warning);
+               plan.torqueOff.isEmpty() && plan.skipped.isEmpty() ? Tone::Success : Tone::Warning);
     return true;
 }
 
