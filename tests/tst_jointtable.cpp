@@ -2,6 +2,8 @@
 // SYNC WRITE, live positions and pose files.
 #include "feetechbus.h"
 #include "jointtable.h"
+#include "jointtableposes.h"
+#include "jointtableview.h"
 #include "namedchild.h"
 #include "operationlog.h"
 #include "pose.h"
@@ -110,10 +112,10 @@ private:
     {
         // Ticked in the table, as a user would.
         for (int row = 0; row < m_joints->rowCount(); ++row)
-            m_joints->table()->item(row, JointTable::TorqueColumn)->setCheckState(Qt::Checked);
+            m_joints->table()->item(row, JointTableView::TorqueColumn)->setCheckState(Qt::Checked);
         for (int row = 0; row < m_joints->rowCount(); ++row) {
             QTRY_COMPARE_WITH_TIMEOUT(
-                m_joints->table()->item(row, JointTable::TorqueColumn)->text(),
+                m_joints->table()->item(row, JointTableView::TorqueColumn)->text(),
                 QStringLiteral("On"), 10000);
             QCOMPARE(simulatorValue(quint8(row + 1), QStringLiteral("torque_enable")), 1);
         }
@@ -146,13 +148,14 @@ private slots:
         connectAndScan();
         QTableWidget *table = m_joints->table();
         for (int row = 0; row < 4; ++row) {
-            QCOMPARE(table->item(row, JointTable::IdColumn)->text(), QString::number(row + 1));
-            QCOMPARE(table->item(row, JointTable::BaudColumn)->text(), QStringLiteral("1 Mbps"));
+            QCOMPARE(table->item(row, JointTableView::IdColumn)->text(), QString::number(row + 1));
+            QCOMPARE(table->item(row, JointTableView::BaudColumn)->text(),
+                     QStringLiteral("1 Mbps"));
             QCOMPARE(m_joints->rowOf(quint8(row + 1), k1M), row);
             QVERIFY(!m_joints->target(row));
         }
-        QCOMPARE(table->item(0, JointTable::ModelColumn)->text(), QStringLiteral("STS3215"));
-        QCOMPARE(table->item(3, JointTable::ModelColumn)->text(), QStringLiteral("SCS15"));
+        QCOMPARE(table->item(0, JointTableView::ModelColumn)->text(), QStringLiteral("STS3215"));
+        QCOMPARE(table->item(3, JointTableView::ModelColumn)->text(), QStringLiteral("SCS15"));
         // Without the monitor the table says its positions are not live and offers a read.
         QVERIFY(child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));
         QVERIFY(child<QPushButton>("readPositionsButton")->isVisible());
@@ -173,14 +176,14 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(m_joints->targetRange(0)->fromAngleLimits, 10000);
         for (int row = 0; row < m_joints->rowCount(); ++row) {
             QTRY_VERIFY(m_joints->position(row).has_value());
-            QCOMPARE(m_joints->table()->item(row, JointTable::TorqueColumn)->text(),
+            QCOMPARE(m_joints->table()->item(row, JointTableView::TorqueColumn)->text(),
                      QStringLiteral("Off"));
         }
         QCOMPARE(m_joints->targetRange(0)->minimum, 0);
         QCOMPARE(m_joints->targetRange(0)->maximum, 4095);
         QCOMPARE(m_joints->targetRange(3)->minimum, 20);
         QCOMPARE(m_joints->targetRange(3)->maximum, 1003);
-        QCOMPARE(m_joints->table()->item(3, JointTable::RangeColumn)->text(),
+        QCOMPARE(m_joints->table()->item(3, JointTableView::RangeColumn)->text(),
                  QStringLiteral("20 to 1003"));
 
         // Both limits 0 (multi-turn mode) bound nothing: back to the register's range.
@@ -191,7 +194,7 @@ private slots:
 
         // The editor only goes as far as the servo may be sent.
         QTableWidget *table = m_joints->table();
-        const QModelIndex cell = table->model()->index(3, JointTable::TargetColumn);
+        const QModelIndex cell = table->model()->index(3, JointTableView::TargetColumn);
         table->setCurrentIndex(cell);
         table->edit(cell);
         auto *editor = table->findChild<QSpinBox *>(QStringLiteral("targetEditor"));
@@ -260,7 +263,7 @@ private slots:
 
         // Inside the SCS register's range (0-1023) but beyond the servo's angle limit.
         m_joints->setTarget(3, 1010);
-        QCOMPARE(m_joints->table()->item(3, JointTable::TargetColumn)->data(Qt::DisplayRole),
+        QCOMPARE(m_joints->table()->item(3, JointTableView::TargetColumn)->data(Qt::DisplayRole),
                  QVariant(1010));
         QString error;
         QVERIFY(!m_joints->moveAll(&error));
@@ -309,7 +312,7 @@ private slots:
             m_joints->setTarget(row, targets.at(row));
         const QString path = m_dir.filePath(QStringLiteral("arm.json"));
         QString error;
-        QVERIFY2(m_joints->savePose(path, &error), qPrintable(error));
+        QVERIFY2(m_joints->poses()->savePose(path, &error), qPrintable(error));
 
         const std::optional<feetech::Pose> saved = feetech::loadPose(path, &error);
         QVERIFY2(saved, qPrintable(error));
@@ -318,7 +321,7 @@ private slots:
 
         for (int row = 0; row < 4; ++row)
             m_joints->setTarget(row, 10);
-        const auto match = m_joints->loadPose(path, &error);
+        const auto match = m_joints->poses()->loadPose(path, &error);
         QVERIFY2(match, qPrintable(error));
         QCOMPARE(match->filled, 4);
         QVERIFY(match->notOnBus.isEmpty());
@@ -343,7 +346,7 @@ private slots:
         QVERIFY(feetech::savePose(path, pose));
 
         QString error;
-        const auto match = m_joints->loadPose(path, &error);
+        const auto match = m_joints->poses()->loadPose(path, &error);
         QVERIFY2(match, qPrintable(error));
         QCOMPARE(match->filled, 1);
         QCOMPARE(match->notOnBus.size(), 2);
@@ -373,7 +376,7 @@ private slots:
                    R"({"id": 1, "baud": 1000000, "position": 10.5}]})");
         file.close();
         QString error;
-        QVERIFY(!m_joints->loadPose(path, &error));
+        QVERIFY(!m_joints->poses()->loadPose(path, &error));
         QVERIFY2(error.contains(QStringLiteral("not an integer")), qPrintable(error));
         QCOMPARE(m_joints->target(0), std::optional<qint32>(1234));
     }
@@ -394,8 +397,9 @@ private slots:
             simulator.feetechBus()->findServo(2)->setPhysicalPosition(1500);
         });
         QTRY_COMPARE_WITH_TIMEOUT(m_joints->position(1), std::optional<qint32>(1500), 10000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_joints->table()->item(1, JointTable::PositionColumn)->text(),
-                                  QStringLiteral("1500"), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            m_joints->table()->item(1, JointTableView::PositionColumn)->text(),
+            QStringLiteral("1500"), 10000);
 
         // A servo that stops answering is no longer live, though its last sample stays.
         m_simulator->call([](sim::Simulator &simulator) {

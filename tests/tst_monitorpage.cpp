@@ -3,6 +3,8 @@
 #include "feedbacksample.h"
 #include "feetechbus.h"
 #include "monitorpage.h"
+#include "monitorrecording.h"
+#include "monitorservolist.h"
 #include "telemetrycsv.h"
 #include "telemetryplot.h"
 
@@ -274,9 +276,9 @@ private slots:
     {
         const QString path = m_dir.filePath(QStringLiteral("recording.csv"));
         QString error;
-        QVERIFY2(m_page->startRecording(path, &error), qPrintable(error));
-        QVERIFY(m_page->isRecording());
-        const qint64 start = m_page->recordingStartUs();
+        QVERIFY2(m_page->recording()->startRecording(path, &error), qPrintable(error));
+        QVERIFY(m_page->recording()->isRecording());
+        const qint64 start = m_page->recording()->recorder()->startUs();
         // Taken before recording started: not part of it.
         m_page->addSamples({testsupport::feedbackSample(1, start - 5000, 1)});
         QVector<FeedbackSample> written;
@@ -296,9 +298,9 @@ private slots:
             m_page->addSamples(batch);
             written += batch;
         }
-        QCOMPARE(m_page->recordedRows(), qint64(written.size()));
-        m_page->stopRecording();
-        QVERIFY(!m_page->isRecording());
+        QCOMPARE(m_page->recording()->recorder()->rowCount(), qint64(written.size()));
+        m_page->recording()->stopRecording();
+        QVERIFY(!m_page->recording()->isRecording());
 
         const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
@@ -309,8 +311,8 @@ private slots:
     {
         const QString path = m_dir.filePath(QStringLiteral("no/such/folder/recording.csv"));
         QString error;
-        QVERIFY(!m_page->startRecording(path, &error));
-        QVERIFY(!m_page->isRecording());
+        QVERIFY(!m_page->recording()->startRecording(path, &error));
+        QVERIFY(!m_page->recording()->isRecording());
         QVERIFY(error.contains(QDir::toNativeSeparators(path)));
         QVERIFY(m_page->findChild<QLabel *>(QStringLiteral("monitorMessage"))->isVisible());
     }
@@ -380,11 +382,11 @@ private slots:
 
         // Recorded while streaming, ended by Stop.
         const QString path = m_dir.filePath(QStringLiteral("live.csv"));
-        QVERIFY2(m_page->startRecording(path, &error), qPrintable(error));
-        QTRY_VERIFY_WITH_TIMEOUT(m_page->recordedRows() >= 30, 10000);
+        QVERIFY2(m_page->recording()->startRecording(path, &error), qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(m_page->recording()->recorder()->rowCount() >= 30, 10000);
         m_page->stop();
         QVERIFY(!m_page->isRunning());
-        QVERIFY(!m_page->isRecording());
+        QVERIFY(!m_page->recording()->isRecording());
         const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
         QVERIFY(rows->size() >= 30);
@@ -427,12 +429,13 @@ private slots:
         startSimulatorAndScan();
         QString error;
         QVERIFY2(m_page->start(&error), qPrintable(error));
-        QVERIFY2(m_page->startRecording(m_dir.filePath(QStringLiteral("cut.csv")), &error),
-                 qPrintable(error));
-        QTRY_VERIFY_WITH_TIMEOUT(m_page->recordedRows() > 0, 10000);
-        QSignalSpy recording(m_page.get(), &MonitorPage::recordingChanged);
+        QVERIFY2(
+            m_page->recording()->startRecording(m_dir.filePath(QStringLiteral("cut.csv")), &error),
+            qPrintable(error));
+        QTRY_VERIFY_WITH_TIMEOUT(m_page->recording()->recorder()->rowCount() > 0, 10000);
+        QSignalSpy recording(m_page->recording(), &MonitorRecording::recordingChanged);
         m_client->disconnectFrom();
-        QTRY_VERIFY_WITH_TIMEOUT(!m_page->isRecording(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_page->recording()->isRecording(), 10000);
         QCOMPARE(recording.count(), 1);
         QTRY_VERIFY_WITH_TIMEOUT(!m_page->isRunning(), 10000);
         QString parseError;

@@ -3390,80 +3390,12 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Register jedes Servos jetzt lesen: Positionen, Grenzen und Drehmoment</translation>
     </message>
     <message>
-        <source>ID</source>
-        <translation>ID</translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation>Modell</translation>
-    </message>
-    <message>
-        <source>Baud rate</source>
-        <translation>Baudrate</translation>
-    </message>
-    <message>
-        <source>Position (steps)</source>
-        <translation>Position (Schritte)</translation>
-    </message>
-    <message>
-        <source>Target (steps)</source>
-        <translation>Ziel (Schritte)</translation>
-    </message>
-    <message>
-        <source>Target range</source>
-        <translation>Zielbereich</translation>
-    </message>
-    <message>
-        <source>Torque</source>
-        <translation>Drehmoment</translation>
-    </message>
-    <message>
-        <source>Motion</source>
-        <translation>Bewegung</translation>
-    </message>
-    <message>
-        <source>Present position: live while the monitor watches the servo, otherwise the last value read (grey)</source>
-        <translation>Aktuelle Position: live, solange der Monitor das Servo beobachtet, sonst der zuletzt gelesene Wert (grau)</translation>
-    </message>
-    <message>
-        <source>Where Move all sends the servo: double-click or type to change it</source>
-        <translation>Wohin „Alle bewegen“ das Servo schickt: Doppelklicken oder eintippen, um es zu ändern</translation>
-    </message>
-    <message>
-        <source>The servo&apos;s angle limits, or the goal register&apos;s range when the limits are unknown or both 0</source>
-        <translation>Die Winkelgrenzen des Servos oder der Bereich des Zielregisters, wenn die Grenzen unbekannt oder beide 0 sind</translation>
-    </message>
-    <message>
-        <source>Tick to switch torque on, untick to switch it off</source>
-        <translation>Anhaken, um das Drehmoment einzuschalten, abhaken, um es abzuschalten</translation>
-    </message>
-    <message>
-        <source>Whether the servo reports that it is moving</source>
-        <translation>Ob das Servo meldet, dass es sich bewegt</translation>
-    </message>
-    <message>
         <source>Targets from present positions</source>
         <translation>Ziele aus aktuellen Positionen</translation>
     </message>
     <message>
         <source>Copy every servo&apos;s present position into its target</source>
         <translation>Die aktuelle Position jedes Servos in sein Ziel kopieren</translation>
-    </message>
-    <message>
-        <source>Load pose…</source>
-        <translation>Pose laden…</translation>
-    </message>
-    <message>
-        <source>Fill the targets from a pose file; nothing moves until Move all</source>
-        <translation>Die Ziele aus einer Posendatei füllen; nichts bewegt sich vor „Alle bewegen“</translation>
-    </message>
-    <message>
-        <source>Save pose…</source>
-        <translation>Pose speichern…</translation>
-    </message>
-    <message>
-        <source>Save the targets as a pose file</source>
-        <translation>Die Ziele als Posendatei speichern</translation>
     </message>
     <message>
         <source>Move all</source>
@@ -3486,82 +3418,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>ID %1 (%2)</translation>
     </message>
     <message>
-        <source>%1 family, firmware %2</source>
-        <translation>Familie %1, Firmware %2</translation>
-    </message>
-    <message>
-        <source>Unknown model: it cannot be moved from here</source>
-        <translation>Unbekanntes Modell: Es kann von hier aus nicht bewegt werden</translation>
-    </message>
-    <message>
-        <source>Switching on…</source>
-        <translation>Wird eingeschaltet…</translation>
-    </message>
-    <message>
-        <source>Switching off…</source>
-        <translation>Wird ausgeschaltet…</translation>
-    </message>
-    <message>
-        <source>Unknown</source>
-        <translation>Unbekannt</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>Aus</translation>
-    </message>
-    <message>
-        <source>On</source>
-        <translation>Ein</translation>
-    </message>
-    <message>
-        <source>Damping</source>
-        <translation>Dämpfung</translation>
-    </message>
-    <message>
-        <source>Live, from the monitor</source>
-        <translation>Live, vom Monitor</translation>
-    </message>
-    <message>
-        <source>Last value read: it may be stale</source>
-        <translation>Zuletzt gelesener Wert: möglicherweise veraltet</translation>
-    </message>
-    <message>
-        <source>Not read yet</source>
-        <translation>Noch nicht gelesen</translation>
-    </message>
-    <message>
-        <source>Moving</source>
-        <translation>Bewegt sich</translation>
-    </message>
-    <message>
-        <source>Still</source>
-        <translation>Steht</translation>
-    </message>
-    <message>
-        <source>Unknown model: no goal register</source>
-        <translation>Unbekanntes Modell: kein Zielregister</translation>
-    </message>
-    <message>
-        <source>%1 to %2</source>
-        <translation>%1 bis %2</translation>
-    </message>
-    <message>
-        <source>From the servo&apos;s angle limits</source>
-        <translation>Aus den Winkelgrenzen des Servos</translation>
-    </message>
-    <message>
-        <source>The goal register&apos;s range: the angle limits are not read yet or both 0</source>
-        <translation>Der Bereich des Zielregisters: Die Winkelgrenzen sind noch nicht gelesen oder beide 0</translation>
-    </message>
-    <message>
-        <source>Outside the range %1 to %2: Move all will refuse it</source>
-        <translation>Außerhalb des Bereichs %1 bis %2: „Alle bewegen“ wird es ablehnen</translation>
-    </message>
-    <message>
-        <source>No target yet: type one, load a pose or take the present position</source>
-        <translation>Noch kein Ziel: Tippen Sie eins ein, laden Sie eine Pose oder übernehmen Sie die aktuelle Position</translation>
-    </message>
-    <message>
         <source>Scan the bus to list its servos here.</source>
         <translation>Scannen Sie den Bus, um seine Servos hier aufzulisten.</translation>
     </message>
@@ -3576,10 +3432,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>&lt;b&gt;Live positions&lt;/b&gt; from the monitor.</source>
         <translation>&lt;b&gt;Live-Positionen&lt;/b&gt; vom Monitor.</translation>
-    </message>
-    <message>
-        <source>Pose: %1</source>
-        <translation>Pose: %1</translation>
     </message>
     <message>
         <source>Move all failed: %1</source>
@@ -3670,12 +3522,62 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>%1 Servos werden gelesen…</translation>
     </message>
     <message>
+        <source>Identify</source>
+        <translation>Identifizieren</translation>
+    </message>
+    <message>
+        <source>its model has no torque enable</source>
+        <translation>sein Modell hat kein torque enable</translation>
+    </message>
+    <message>
+        <source>%1 cannot be identified now: %2</source>
+        <translation>%1 kann jetzt nicht identifiziert werden: %2</translation>
+    </message>
+    <message>
+        <source>Identifying %1: watch which horn moves…</source>
+        <translation>%1 wird identifiziert: Achten Sie darauf, welches Servohorn sich bewegt…</translation>
+    </message>
+    <message>
+        <source>Wiggle %1 slowly with little torque, then put it back as it was</source>
+        <translation>%1 langsam mit wenig Drehmoment wackeln lassen und dann wie zuvor zurückstellen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n servo(s)…</source>
+        <translation>
+            <numerusform>%n Servo wird gelesen…</numerusform>
+            <numerusform>%n Servos werden gelesen…</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>JointTablePoses</name>
+    <message>
+        <source>Load pose…</source>
+        <translation>Pose laden…</translation>
+    </message>
+    <message>
+        <source>Fill the targets from a pose file; nothing moves until Move all</source>
+        <translation>Die Ziele aus einer Posendatei füllen; nichts bewegt sich vor „Alle bewegen“</translation>
+    </message>
+    <message>
+        <source>Save pose…</source>
+        <translation>Pose speichern…</translation>
+    </message>
+    <message>
+        <source>Save the targets as a pose file</source>
+        <translation>Die Ziele als Posendatei speichern</translation>
+    </message>
+    <message>
         <source>No targets to save: set some first.</source>
         <translation>Keine Ziele zu speichern: Setzen Sie zuerst welche.</translation>
     </message>
     <message>
         <source>Saved the pose “%1” with %2 targets to %3.</source>
         <translation>Pose „%1“ mit %2 Zielen in %3 gespeichert.</translation>
+    </message>
+    <message>
+        <source>Pose: %1</source>
+        <translation>Pose: %1</translation>
     </message>
     <message>
         <source>Loaded the pose “%1”: %2 targets filled. Nothing moves until you press Move all.</source>
@@ -3688,6 +3590,10 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Not on the bus: %1.</source>
         <translation>Nicht am Bus: %1.</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
     </message>
     <message>
         <source>Not in the pose (targets unchanged): %1.</source>
@@ -3713,36 +3619,144 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Load pose</source>
         <translation>Pose laden</translation>
     </message>
+</context>
+<context>
+    <name>JointTableView</name>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <source>Position (steps)</source>
+        <translation>Position (Schritte)</translation>
+    </message>
+    <message>
+        <source>Target (steps)</source>
+        <translation>Ziel (Schritte)</translation>
+    </message>
+    <message>
+        <source>Target range</source>
+        <translation>Zielbereich</translation>
+    </message>
+    <message>
+        <source>Torque</source>
+        <translation>Drehmoment</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>Bewegung</translation>
+    </message>
     <message>
         <source>Identify</source>
         <translation>Identifizieren</translation>
+    </message>
+    <message>
+        <source>Present position: live while the monitor watches the servo, otherwise the last value read (grey)</source>
+        <translation>Aktuelle Position: live, solange der Monitor das Servo beobachtet, sonst der zuletzt gelesene Wert (grau)</translation>
+    </message>
+    <message>
+        <source>Where Move all sends the servo: double-click or type to change it</source>
+        <translation>Wohin „Alle bewegen“ das Servo schickt: Doppelklicken oder eintippen, um es zu ändern</translation>
+    </message>
+    <message>
+        <source>The servo&apos;s angle limits, or the goal register&apos;s range when the limits are unknown or both 0</source>
+        <translation>Die Winkelgrenzen des Servos oder der Bereich des Zielregisters, wenn die Grenzen unbekannt oder beide 0 sind</translation>
+    </message>
+    <message>
+        <source>Tick to switch torque on, untick to switch it off</source>
+        <translation>Anhaken, um das Drehmoment einzuschalten, abhaken, um es abzuschalten</translation>
+    </message>
+    <message>
+        <source>Whether the servo reports that it is moving</source>
+        <translation>Ob das Servo meldet, dass es sich bewegt</translation>
     </message>
     <message>
         <source>Wiggle the servo slowly with little torque, then put it back as it was: see which servo of the arm it is</source>
         <translation>Das Servo langsam mit wenig Drehmoment wackeln lassen und dann wie zuvor zurückstellen: sehen, welches Servo des Arms es ist</translation>
     </message>
     <message>
-        <source>its model has no torque enable</source>
-        <translation>sein Modell hat kein torque enable</translation>
+        <source>%1 family, firmware %2</source>
+        <translation>Familie %1, Firmware %2</translation>
     </message>
     <message>
-        <source>%1 cannot be identified now: %2</source>
-        <translation>%1 kann jetzt nicht identifiziert werden: %2</translation>
+        <source>Unknown model: it cannot be moved from here</source>
+        <translation>Unbekanntes Modell: Es kann von hier aus nicht bewegt werden</translation>
     </message>
     <message>
-        <source>Identifying %1: watch which horn moves…</source>
-        <translation>%1 wird identifiziert: Achten Sie darauf, welches Servohorn sich bewegt…</translation>
+        <source>Switching on…</source>
+        <translation>Wird eingeschaltet…</translation>
     </message>
     <message>
-        <source>Wiggle %1 slowly with little torque, then put it back as it was</source>
-        <translation>%1 langsam mit wenig Drehmoment wackeln lassen und dann wie zuvor zurückstellen</translation>
+        <source>Switching off…</source>
+        <translation>Wird ausgeschaltet…</translation>
     </message>
-    <message numerus="yes">
-        <source>Reading %n servo(s)…</source>
-        <translation>
-            <numerusform>%n Servo wird gelesen…</numerusform>
-            <numerusform>%n Servos werden gelesen…</numerusform>
-        </translation>
+    <message>
+        <source>Unknown</source>
+        <translation>Unbekannt</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>Ein</translation>
+    </message>
+    <message>
+        <source>Damping</source>
+        <translation>Dämpfung</translation>
+    </message>
+    <message>
+        <source>Live, from the monitor</source>
+        <translation>Live, vom Monitor</translation>
+    </message>
+    <message>
+        <source>Last value read: it may be stale</source>
+        <translation>Zuletzt gelesener Wert: möglicherweise veraltet</translation>
+    </message>
+    <message>
+        <source>Not read yet</source>
+        <translation>Noch nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Moving</source>
+        <translation>In Bewegung</translation>
+    </message>
+    <message>
+        <source>Still</source>
+        <translation>Steht</translation>
+    </message>
+    <message>
+        <source>Unknown model: no goal register</source>
+        <translation>Unbekanntes Modell: kein Zielregister</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <source>From the servo&apos;s angle limits</source>
+        <translation>Aus den Winkelgrenzen des Servos</translation>
+    </message>
+    <message>
+        <source>The goal register&apos;s range: the angle limits are not read yet or both 0</source>
+        <translation>Der Bereich des Zielregisters: Die Winkelgrenzen sind noch nicht gelesen oder beide 0</translation>
+    </message>
+    <message>
+        <source>Outside the range %1 to %2: Move all will refuse it</source>
+        <translation>Außerhalb des Bereichs %1 bis %2: „Alle bewegen“ wird es ablehnen</translation>
+    </message>
+    <message>
+        <source>No target yet: type one, load a pose or take the present position</source>
+        <translation>Noch kein Ziel: Tippen Sie eins ein, laden Sie eine Pose oder übernehmen Sie die aktuelle Position</translation>
     </message>
 </context>
 <context>
@@ -4173,10 +4187,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Servos</translation>
     </message>
     <message>
-        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
-        <translation>Die zu streamenden Servos; An- oder Abhaken eines Servos während des Streamings startet den Stream neu</translation>
-    </message>
-    <message>
         <source>Plot</source>
         <translation>Diagramm</translation>
     </message>
@@ -4253,18 +4263,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Die Diagramme wie angezeigt als ein PNG-Bild speichern</translation>
     </message>
     <message>
-        <source>Recording</source>
-        <translation>Aufzeichnung</translation>
-    </message>
-    <message>
-        <source>Record CSV…</source>
-        <translation>CSV aufzeichnen…</translation>
-    </message>
-    <message>
-        <source>Write every sample of the ticked servos to a CSV file</source>
-        <translation>Jeden Messwert der angehakten Servos in eine CSV-Datei schreiben</translation>
-    </message>
-    <message>
         <source>There is no bus to monitor.</source>
         <translation>Es gibt keinen Bus zum Überwachen.</translation>
     </message>
@@ -4276,13 +4274,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Monitoring did not start: %1</source>
         <translation>Überwachung wurde nicht gestartet: %1</translation>
     </message>
-    <message numerus="yes">
-        <source>%Ln row(s) saved to %1.</source>
-        <translation>
-            <numerusform>%Ln Zeile in %1 gespeichert.</numerusform>
-            <numerusform>%Ln Zeilen in %1 gespeichert.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Plot saved to %1.</source>
         <translation>Diagramm in %1 gespeichert.</translation>
@@ -4290,22 +4281,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Stopped</source>
         <translation>Gestoppt</translation>
-    </message>
-    <message>
-        <source>unknown model</source>
-        <translation>unbekanntes Modell</translation>
-    </message>
-    <message>
-        <source>ID %1 · %2 · %3</source>
-        <translation>ID %1 · %2 · %3</translation>
-    </message>
-    <message>
-        <source>Unknown model: its feedback cannot be decoded</source>
-        <translation>Unbekanntes Modell: Seine Rückmeldungen können nicht dekodiert werden</translation>
-    </message>
-    <message>
-        <source>Scan the bus to find servos.</source>
-        <translation>Scannen Sie den Bus, um Servos zu finden.</translation>
     </message>
     <message>
         <source>Recording stopped: the bus was disconnected.</source>
@@ -4320,14 +4295,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <source>Record telemetry</source>
-        <translation>Telemetrie aufzeichnen</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV-Dateien (*.csv)</translation>
-    </message>
-    <message>
         <source>Monitoring stopped: no servo is ticked.</source>
         <translation>Überwachung gestoppt: Kein Servo ist angehakt.</translation>
     </message>
@@ -4340,34 +4307,8 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Fortsetzen</translation>
     </message>
     <message>
-        <source>Stop recording</source>
-        <translation>Aufzeichnung stoppen</translation>
-    </message>
-    <message>
         <source> · plot paused (samples are still received)</source>
         <translation> · Diagramm pausiert (Messwerte werden weiter empfangen)</translation>
-    </message>
-    <message>
-        <source>Not recording.</source>
-        <translation>Keine Aufzeichnung.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1: %Ln row(s).</source>
-        <translation>
-            <numerusform>Aufzeichnung in %1: %Ln Zeile.</numerusform>
-            <numerusform>Aufzeichnung in %1: %Ln Zeilen.</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1 failed after %Ln row(s): %2</source>
-        <translation>
-            <numerusform>Aufzeichnung in %1 nach %Ln Zeile fehlgeschlagen: %2</numerusform>
-            <numerusform>Aufzeichnung in %1 nach %Ln Zeilen fehlgeschlagen: %2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Recording failed.</source>
-        <translation>Aufzeichnung fehlgeschlagen.</translation>
     </message>
     <message>
         <source>Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late</source>
@@ -4451,6 +4392,85 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>none</source>
         <translation>keine</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorRecording</name>
+    <message>
+        <source>Recording</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Record CSV…</source>
+        <translation>CSV aufzeichnen…</translation>
+    </message>
+    <message>
+        <source>Write every sample of the ticked servos to a CSV file</source>
+        <translation>Jeden Messwert der angehakten Servos in eine CSV-Datei schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln row(s) saved to %1.</source>
+        <translation>
+            <numerusform>%Ln Zeile in %1 gespeichert.</numerusform>
+            <numerusform>%Ln Zeilen in %1 gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Record telemetry</source>
+        <translation>Telemetrie aufzeichnen</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not recording.</source>
+        <translation>Keine Aufzeichnung.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1: %Ln row(s).</source>
+        <translation>
+            <numerusform>Aufzeichnung in %1: %Ln Zeile.</numerusform>
+            <numerusform>Aufzeichnung in %1: %Ln Zeilen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>Aufzeichnung stoppen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1 failed after %Ln row(s): %2</source>
+        <translation>
+            <numerusform>Aufzeichnung in %1 nach %Ln Zeile fehlgeschlagen: %2</numerusform>
+            <numerusform>Aufzeichnung in %1 nach %Ln Zeilen fehlgeschlagen: %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Recording failed.</source>
+        <translation>Aufzeichnung fehlgeschlagen.</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorServoList</name>
+    <message>
+        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
+        <translation>Die zu streamenden Servos; An- oder Abhaken eines Servos während des Streamings startet den Stream neu</translation>
+    </message>
+    <message>
+        <source>unknown model</source>
+        <translation>unbekanntes Modell</translation>
+    </message>
+    <message>
+        <source>ID %1 · %2 · %3</source>
+        <translation>ID %1 · %2 · %3</translation>
+    </message>
+    <message>
+        <source>Unknown model: its feedback cannot be decoded</source>
+        <translation>Unbekanntes Modell: Seine Rückmeldungen können nicht dekodiert werden</translation>
+    </message>
+    <message>
+        <source>Scan the bus to find servos.</source>
+        <translation>Scannen Sie den Bus, um Servos zu finden.</translation>
     </message>
 </context>
 <context>

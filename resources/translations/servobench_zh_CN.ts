@@ -3375,64 +3375,8 @@ An ID in use is refused.</source>
         <translation>立即读取每个舵机的寄存器：位置、限制和扭矩</translation>
     </message>
     <message>
-        <source>ID</source>
-        <translation>ID</translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation>型号</translation>
-    </message>
-    <message>
-        <source>Baud rate</source>
-        <translation>波特率</translation>
-    </message>
-    <message>
-        <source>Position (steps)</source>
-        <translation>位置（步）</translation>
-    </message>
-    <message>
-        <source>Target (steps)</source>
-        <translation>目标（步）</translation>
-    </message>
-    <message>
-        <source>Target range</source>
-        <translation>目标范围</translation>
-    </message>
-    <message>
-        <source>Torque</source>
-        <translation>扭矩</translation>
-    </message>
-    <message>
-        <source>Motion</source>
-        <translation>运动</translation>
-    </message>
-    <message>
         <source>Identify</source>
         <translation>识别</translation>
-    </message>
-    <message>
-        <source>Present position: live while the monitor watches the servo, otherwise the last value read (grey)</source>
-        <translation>当前位置：监视该舵机时为实时值，否则为最后读取的值（灰色）</translation>
-    </message>
-    <message>
-        <source>Where Move all sends the servo: double-click or type to change it</source>
-        <translation>“全部移动”会将舵机移动到的位置：双击或直接输入以更改</translation>
-    </message>
-    <message>
-        <source>The servo&apos;s angle limits, or the goal register&apos;s range when the limits are unknown or both 0</source>
-        <translation>舵机的角度限制；当限制未知或均为 0 时，为目标寄存器的范围</translation>
-    </message>
-    <message>
-        <source>Tick to switch torque on, untick to switch it off</source>
-        <translation>勾选以开启扭矩，取消勾选以关闭扭矩</translation>
-    </message>
-    <message>
-        <source>Whether the servo reports that it is moving</source>
-        <translation>舵机是否报告其正在运动</translation>
-    </message>
-    <message>
-        <source>Wiggle the servo slowly with little torque, then put it back as it was: see which servo of the arm it is</source>
-        <translation>以很小的扭矩缓慢摆动舵机，然后将其恢复原状：看看它是机械臂上的哪个舵机</translation>
     </message>
     <message>
         <source>Targets from present positions</source>
@@ -3441,22 +3385,6 @@ An ID in use is refused.</source>
     <message>
         <source>Copy every servo&apos;s present position into its target</source>
         <translation>将每个舵机的当前位置复制到其目标</translation>
-    </message>
-    <message>
-        <source>Load pose…</source>
-        <translation>加载姿态…</translation>
-    </message>
-    <message>
-        <source>Fill the targets from a pose file; nothing moves until Move all</source>
-        <translation>从姿态文件填入目标；在按下“全部移动”之前不会移动</translation>
-    </message>
-    <message>
-        <source>Save pose…</source>
-        <translation>保存姿态…</translation>
-    </message>
-    <message>
-        <source>Save the targets as a pose file</source>
-        <translation>将目标保存为姿态文件</translation>
     </message>
     <message>
         <source>Move all</source>
@@ -3493,10 +3421,6 @@ An ID in use is refused.</source>
     <message>
         <source>&lt;b&gt;Live positions&lt;/b&gt; from the monitor.</source>
         <translation>来自监视的&lt;b&gt;实时位置&lt;/b&gt;。</translation>
-    </message>
-    <message>
-        <source>Pose: %1</source>
-        <translation>姿态：%1</translation>
     </message>
     <message>
         <source>Move all failed: %1</source>
@@ -3595,6 +3519,154 @@ An ID in use is refused.</source>
         <translation>以很小的扭矩缓慢摆动 %1，然后将其恢复原状</translation>
     </message>
     <message>
+        <source>Targets set to the present positions of %1 servos.</source>
+        <translation>已将 %1 个舵机的目标设为其当前位置。</translation>
+    </message>
+    <message>
+        <source>Targets set for %1 servos. No position is known yet for %2: read the positions first.</source>
+        <translation>已为 %1 个舵机设置目标。%2 的位置尚未知：请先读取位置。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n servo(s)…</source>
+        <translation>
+            <numerusform>正在读取 %n 个舵机…</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>JointTablePoses</name>
+    <message>
+        <source>Load pose…</source>
+        <translation>加载姿态…</translation>
+    </message>
+    <message>
+        <source>Fill the targets from a pose file; nothing moves until Move all</source>
+        <translation>从姿态文件填入目标；在按下“全部移动”之前不会移动</translation>
+    </message>
+    <message>
+        <source>Save pose…</source>
+        <translation>保存姿态…</translation>
+    </message>
+    <message>
+        <source>Save the targets as a pose file</source>
+        <translation>将目标保存为姿态文件</translation>
+    </message>
+    <message>
+        <source>No targets to save: set some first.</source>
+        <translation>没有可保存的目标：请先设置目标。</translation>
+    </message>
+    <message>
+        <source>Saved the pose “%1” with %2 targets to %3.</source>
+        <translation>已将包含 %2 个目标的姿态“%1”保存到 %3。</translation>
+    </message>
+    <message>
+        <source>Pose: %1</source>
+        <translation>姿态：%1</translation>
+    </message>
+    <message>
+        <source>Loaded the pose “%1”: %2 targets filled. Nothing moves until you press Move all.</source>
+        <translation>已加载姿态“%1”：填入了 %2 个目标。在按下“全部移动”之前不会移动。</translation>
+    </message>
+    <message>
+        <source>ID %1 at %2</source>
+        <translation>ID %1，波特率 %2</translation>
+    </message>
+    <message>
+        <source>Not on the bus: %1.</source>
+        <translation>不在总线上：%1。</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、 </translation>
+    </message>
+    <message>
+        <source>Not in the pose (targets unchanged): %1.</source>
+        <translation>不在姿态中（目标未更改）：%1。</translation>
+    </message>
+    <message>
+        <source>Outside their range (shown in red): %1.</source>
+        <translation>超出其范围（以红色显示）：%1。</translation>
+    </message>
+    <message>
+        <source>pose.json</source>
+        <translation>pose.json</translation>
+    </message>
+    <message>
+        <source>Save pose</source>
+        <translation>保存姿态</translation>
+    </message>
+    <message>
+        <source>ServoBench poses (*.json);;All files (*)</source>
+        <translation>ServoBench 姿态 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Load pose</source>
+        <translation>加载姿态</translation>
+    </message>
+</context>
+<context>
+    <name>JointTableView</name>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Position (steps)</source>
+        <translation>位置（步）</translation>
+    </message>
+    <message>
+        <source>Target (steps)</source>
+        <translation>目标（步）</translation>
+    </message>
+    <message>
+        <source>Target range</source>
+        <translation>目标范围</translation>
+    </message>
+    <message>
+        <source>Torque</source>
+        <translation>扭矩</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>Identify</source>
+        <translation>识别</translation>
+    </message>
+    <message>
+        <source>Present position: live while the monitor watches the servo, otherwise the last value read (grey)</source>
+        <translation>当前位置：监视该舵机时为实时值，否则为最后读取的值（灰色）</translation>
+    </message>
+    <message>
+        <source>Where Move all sends the servo: double-click or type to change it</source>
+        <translation>“全部移动”会将舵机移动到的位置：双击或直接输入以更改</translation>
+    </message>
+    <message>
+        <source>The servo&apos;s angle limits, or the goal register&apos;s range when the limits are unknown or both 0</source>
+        <translation>舵机的角度限制；当限制未知或均为 0 时，为目标寄存器的范围</translation>
+    </message>
+    <message>
+        <source>Tick to switch torque on, untick to switch it off</source>
+        <translation>勾选以开启扭矩，取消勾选以关闭扭矩</translation>
+    </message>
+    <message>
+        <source>Whether the servo reports that it is moving</source>
+        <translation>舵机是否报告其正在运动</translation>
+    </message>
+    <message>
+        <source>Wiggle the servo slowly with little torque, then put it back as it was: see which servo of the arm it is</source>
+        <translation>以很小的扭矩缓慢摆动舵机，然后将其恢复原状：看看它是机械臂上的哪个舵机</translation>
+    </message>
+    <message>
         <source>%1 family, firmware %2</source>
         <translation>%1 系列，固件 %2</translation>
     </message>
@@ -3640,7 +3712,7 @@ An ID in use is refused.</source>
     </message>
     <message>
         <source>Moving</source>
-        <translation>运动中</translation>
+        <translation>移动标志</translation>
     </message>
     <message>
         <source>Still</source>
@@ -3669,64 +3741,6 @@ An ID in use is refused.</source>
     <message>
         <source>No target yet: type one, load a pose or take the present position</source>
         <translation>尚无目标：请输入目标、加载姿态或采用当前位置</translation>
-    </message>
-    <message>
-        <source>Targets set to the present positions of %1 servos.</source>
-        <translation>已将 %1 个舵机的目标设为其当前位置。</translation>
-    </message>
-    <message>
-        <source>Targets set for %1 servos. No position is known yet for %2: read the positions first.</source>
-        <translation>已为 %1 个舵机设置目标。%2 的位置尚未知：请先读取位置。</translation>
-    </message>
-    <message>
-        <source>No targets to save: set some first.</source>
-        <translation>没有可保存的目标：请先设置目标。</translation>
-    </message>
-    <message>
-        <source>Saved the pose “%1” with %2 targets to %3.</source>
-        <translation>已将包含 %2 个目标的姿态“%1”保存到 %3。</translation>
-    </message>
-    <message>
-        <source>Loaded the pose “%1”: %2 targets filled. Nothing moves until you press Move all.</source>
-        <translation>已加载姿态“%1”：填入了 %2 个目标。在按下“全部移动”之前不会移动。</translation>
-    </message>
-    <message>
-        <source>ID %1 at %2</source>
-        <translation>ID %1，波特率 %2</translation>
-    </message>
-    <message>
-        <source>Not on the bus: %1.</source>
-        <translation>不在总线上：%1。</translation>
-    </message>
-    <message>
-        <source>Not in the pose (targets unchanged): %1.</source>
-        <translation>不在姿态中（目标未更改）：%1。</translation>
-    </message>
-    <message>
-        <source>Outside their range (shown in red): %1.</source>
-        <translation>超出其范围（以红色显示）：%1。</translation>
-    </message>
-    <message>
-        <source>pose.json</source>
-        <translation>pose.json</translation>
-    </message>
-    <message>
-        <source>Save pose</source>
-        <translation>保存姿态</translation>
-    </message>
-    <message>
-        <source>ServoBench poses (*.json);;All files (*)</source>
-        <translation>ServoBench 姿态 (*.json);;所有文件 (*)</translation>
-    </message>
-    <message>
-        <source>Load pose</source>
-        <translation>加载姿态</translation>
-    </message>
-    <message numerus="yes">
-        <source>Reading %n servo(s)…</source>
-        <translation>
-            <numerusform>正在读取 %n 个舵机…</numerusform>
-        </translation>
     </message>
 </context>
 <context>
@@ -4168,22 +4182,6 @@ An ID in use is refused.</source>
         <translation>曲线图已保存到 %1。</translation>
     </message>
     <message>
-        <source>unknown model</source>
-        <translation>未知型号</translation>
-    </message>
-    <message>
-        <source>ID %1 · %2 · %3</source>
-        <translation>ID %1 · %2 · %3</translation>
-    </message>
-    <message>
-        <source>Unknown model: its feedback cannot be decoded</source>
-        <translation>未知型号：无法解码其反馈</translation>
-    </message>
-    <message>
-        <source>Scan the bus to find servos.</source>
-        <translation>扫描总线以查找舵机。</translation>
-    </message>
-    <message>
         <source>Recording stopped: the bus was disconnected.</source>
         <translation>记录已停止：总线已断开。</translation>
     </message>
@@ -4216,14 +4214,6 @@ An ID in use is refused.</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <source>Stop recording</source>
-        <translation>停止记录</translation>
-    </message>
-    <message>
-        <source>Record CSV…</source>
-        <translation>记录 CSV…</translation>
-    </message>
-    <message>
         <source>Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late</source>
         <translation>数据流 · %1 周期/秒 · %2 采样/秒 · 丢失 %3 · 迟到 %4</translation>
     </message>
@@ -4238,10 +4228,6 @@ An ID in use is refused.</source>
     <message>
         <source>Servos</source>
         <translation>舵机</translation>
-    </message>
-    <message>
-        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
-        <translation>要采集数据流的舵机；采集过程中勾选或取消勾选会重新启动数据流</translation>
     </message>
     <message>
         <source>Plot</source>
@@ -4310,48 +4296,6 @@ An ID in use is refused.</source>
     <message>
         <source>Save the charts as they are shown as one PNG image</source>
         <translation>将当前显示的图表保存为一张 PNG 图像</translation>
-    </message>
-    <message>
-        <source>Recording</source>
-        <translation>记录</translation>
-    </message>
-    <message>
-        <source>Write every sample of the ticked servos to a CSV file</source>
-        <translation>将所勾选舵机的每个采样写入 CSV 文件</translation>
-    </message>
-    <message numerus="yes">
-        <source>%Ln row(s) saved to %1.</source>
-        <translation>
-            <numerusform>已将 %Ln 行保存到 %1。</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Record telemetry</source>
-        <translation>记录遥测数据</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV 文件 (*.csv)</translation>
-    </message>
-    <message>
-        <source>Not recording.</source>
-        <translation>未在记录。</translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1: %Ln row(s).</source>
-        <translation>
-            <numerusform>正在记录到 %1：%Ln 行。</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Recording to %1 failed after %Ln row(s): %2</source>
-        <translation>
-            <numerusform>记录到 %1 时在 %Ln 行后失败：%2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Recording failed.</source>
-        <translation>记录失败。</translation>
     </message>
 </context>
 <context>
@@ -4431,6 +4375,82 @@ An ID in use is refused.</source>
     <message>
         <source>none</source>
         <translation>无</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorRecording</name>
+    <message>
+        <source>Recording</source>
+        <translation>记录</translation>
+    </message>
+    <message>
+        <source>Record CSV…</source>
+        <translation>记录 CSV…</translation>
+    </message>
+    <message>
+        <source>Write every sample of the ticked servos to a CSV file</source>
+        <translation>将所勾选舵机的每个采样写入 CSV 文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln row(s) saved to %1.</source>
+        <translation>
+            <numerusform>已将 %Ln 行保存到 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Record telemetry</source>
+        <translation>记录遥测数据</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not recording.</source>
+        <translation>未在记录。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1: %Ln row(s).</source>
+        <translation>
+            <numerusform>正在记录到 %1：%Ln 行。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop recording</source>
+        <translation>停止记录</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1 failed after %Ln row(s): %2</source>
+        <translation>
+            <numerusform>记录到 %1 时在 %Ln 行后失败：%2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Recording failed.</source>
+        <translation>记录失败。</translation>
+    </message>
+</context>
+<context>
+    <name>MonitorServoList</name>
+    <message>
+        <source>The servos to stream; ticking or unticking one while streaming restarts the stream</source>
+        <translation>要采集数据流的舵机；采集过程中勾选或取消勾选会重新启动数据流</translation>
+    </message>
+    <message>
+        <source>unknown model</source>
+        <translation>未知型号</translation>
+    </message>
+    <message>
+        <source>ID %1 · %2 · %3</source>
+        <translation>ID %1 · %2 · %3</translation>
+    </message>
+    <message>
+        <source>Unknown model: its feedback cannot be decoded</source>
+        <translation>未知型号：无法解码其反馈</translation>
+    </message>
+    <message>
+        <source>Scan the bus to find servos.</source>
+        <translation>扫描总线以查找舵机。</translation>
     </message>
 </context>
 <context>

@@ -1,24 +1,22 @@
-// Joint table: rows kept in step with the bus client and the monitor; the cells of a row are
-// drawn in jointtablecells.cpp, Move all, torque and reads are in jointtableactions.cpp, poses in
-// jointtableposes.cpp.
+// Joint table: rows kept in step with the bus client and the monitor, drawn by JointTableView;
+// Move all as one SYNC WRITE per baud rate, torque switches, register reads and identify.
 #include "jointtable.h"
 
 #include "busclient.h"
+#include "jointtableposes.h"
+#include "jointtableview.h"
+#include "moveallplan.h"
 #include "palette.h"
 #include "registerkeys.h"
 #include "servoparameters.h"
-#include "targetdelegate.h"
 #include "widgethelpers.h"
 
-#include <QDir>
 #include <QHBoxLayout>
 #include <QHash>
-#include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QSet>
 #include <QShowEvent>
-#include <QTableWidget>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -57,58 +55,14 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     layout->addLayout(hintRow);
 
     // ---- the table
-    m_table = new QTableWidget(0, ColumnCount, this);
-    m_table->setObjectName(QStringLiteral("jointTableView"));
-    m_table->setHorizontalHeaderLabels(
-        {tr("ID"), tr("Model"), tr("Baud rate"), tr("Position (steps)"), tr("Target (steps)"),
-         tr("Target range"), tr("Torque"), tr("Motion"), tr("Identify")});
-    const auto headerTip = [this](int column, const QString &tip) {
-        m_table->horizontalHeaderItem(column)->setToolTip(tip);
-    };
-    headerTip(PositionColumn,
-              tr("Present position: live while the monitor watches the servo, otherwise the "
-                 "last value read (grey)"));
-    headerTip(TargetColumn,
-              tr("Where Move all sends the servo: double-click or type to change it"));
-    headerTip(RangeColumn,
-              tr("The servo's angle limits, or the goal register's range when the limits are "
-                 "unknown or both 0"));
-    headerTip(TorqueColumn, tr("Tick to switch torque on, untick to switch it off"));
-    headerTip(MovingColumn, tr("Whether the servo reports that it is moving"));
-    headerTip(IdentifyColumn,
-              tr("Wiggle the servo slowly with little torque, then put it back as it was: see "
-                 "which servo of the arm it is"));
-    m_table->setItemDelegateForColumn(TargetColumn, new TargetDelegate(m_table));
-    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
-                             | QAbstractItemView::AnyKeyPressed);
-    m_table->setAlternatingRowColors(true);
-    m_table->verticalHeader()->hide();
-    m_table->setWordWrap(false);
-    QHeaderView *header = m_table->horizontalHeader();
-    header->setHighlightSections(false);
-    header->setSectionResizeMode(QHeaderView::Interactive);
-    header->setStretchLastSection(true);
-    // In character widths, so every column fits beside the servo tree at any font size.
-    const int ems[ColumnCount] = {3, 7, 7, 10, 9, 9, 8, 6, 6};
-    const int em = m_table->fontMetrics().horizontalAdvance(u'm');
-    for (int column = 0; column < ColumnCount; ++column)
-        m_table->setColumnWidth(column, ems[column] * em);
+    m_table = new JointTableView(this);
     layout->addWidget(m_table, 1);
 
     // ---- actions
     auto *actions = new QHBoxLayout;
     m_capture = actionButton(tr("Targets from present positions"), "captureButton",
                              tr("Copy every servo's present position into its target"), this);
-    m_load =
-        actionButton(tr("Load pose…"), "loadPoseButton",
-                     tr("Fill the targets from a pose file; nothing moves until Move all"), this);
-    m_save = actionButton(tr("Save pose…"), "savePoseButton", tr("Save the targets as a pose file"),
-                          this);
-    m_poseLabel = new QLabel(this);
-    m_poseLabel->setObjectName(QStringLiteral("poseLabel"));
-    m_poseLabel->setForegroundRole(QPalette::PlaceholderText);
+    m_poses = new JointTablePoses(this);
     m_moveAll = actionButton(tr("Move all"), "moveAllButton",
                              tr("Send every target at once: one SYNC WRITE per baud rate"), this);
     m_moveAll->setMinimumWidth(140);
@@ -116,10 +70,10 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     bold.setBold(true);
     m_moveAll->setFont(bold);
     actions->addWidget(m_capture);
-    actions->addWidget(m_load);
-    actions->addWidget(m_save);
+    actions->addWidget(m_poses->loadButton());
+    actions->addWidget(m_poses->saveButton());
     actions->addSpacing(12);
-    actions->addWidget(m_poseLabel);
+    actions->addWidget(m_poses->poseLabel());
     actions->addStretch(1);
     actions->addWidget(m_moveAll);
     layout->addLayout(actions);
@@ -132,10 +86,9 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
 
     connect(m_read, &QPushButton::clicked, this, &JointTable::onReadClicked);
     connect(m_capture, &QPushButton::clicked, this, &JointTable::onCaptureClicked);
-    connect(m_load, &QPushButton::clicked, this, &JointTable::onLoadClicked);
-    connect(m_save, &QPushButton::clicked, this, &JointTable::onSaveClicked);
     connect(m_moveAll, &QPushButton::clicked, this, &JointTable::onMoveAllClicked);
-    connect(m_table, &QTableWidget::itemChanged, this, &JointTable::onItemChanged);
+    connect(m_table, &JointTableView::targetEdited, this, &JointTable::setTarget);
+    connect(m_table, &JointTableView::torqueToggled, this, &JointTable::onTorqueToggled);
 
     connect(m_client, &feetech::BusClient::servosChanged, this, &JointTable::rebuild);
     connect(m_client, &feetech::BusClient::servoUpdated, this, [this](int index) {
@@ -201,6 +154,15 @@ int JointTable::servoIndex(int row) const
     if (row < 0 || row >= rowCount())
         return -1;
     return m_client->indexOf(m_rows.at(row).id, m_rows.at(row).baud);
+}
+
+QVector<feetech::JointTarget> JointTable::joints() const
+{
+    QVector<feetech::JointTarget> joints;
+    for (int row = 0; row < rowCount(); ++row)
+        joints.append(
+            {m_rows.at(row).id, m_rows.at(row).baud, m_rows.at(row).target, targetRange(row)});
+    return joints;
 }
 
 std::optional<qint64> JointTable::deviceValue(int row, const QString &key) const
@@ -330,8 +292,6 @@ void JointTable::rebuild()
             targets.insert(servoKey(row.id, row.baud), *row.target);
     }
     m_rows.clear();
-    const QSignalBlocker blocker(m_table);
-    m_table->setRowCount(0);
     for (int index = 0; index < m_client->servoCount(); ++index) {
         const feetech::ServoInfo &info = m_client->servo(index).info;
         Row row;
@@ -343,15 +303,8 @@ void JointTable::rebuild()
         row.modelReadMs = m_client->parameters(index)->lastReadMs(kPresentPosition);
         m_rows.append(row);
     }
-    m_table->setRowCount(rowCount());
+    m_table->resetRows(rowCount());
     for (int row = 0; row < rowCount(); ++row) {
-        for (int column = 0; column < ColumnCount; ++column) {
-            auto *item = new QTableWidgetItem;
-            item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
-            if (column == PositionColumn || column == TargetColumn)
-                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            m_table->setItem(row, column, item);
-        }
         auto *identify = new QPushButton(tr("Identify"), m_table);
         identify->setObjectName(QStringLiteral("identifyButton"));
         connect(identify, &QPushButton::clicked, this,
@@ -360,7 +313,7 @@ void JointTable::rebuild()
                     if (!this->identify(rowOf(id, baud), &error))
                         setMessage(error, Tone::Error);
                 });
-        m_table->setCellWidget(row, IdentifyColumn, identify);
+        m_table->setCellWidget(row, JointTableView::IdentifyColumn, identify);
         refreshRow(row);
     }
     refreshHint();
@@ -434,10 +387,8 @@ void JointTable::refreshButtons()
         anyTarget = anyTarget || row.target.has_value();
     m_read->setEnabled(connected && rows);
     m_capture->setEnabled(rows);
-    m_load->setEnabled(rows);
-    m_save->setEnabled(anyTarget);
     m_moveAll->setEnabled(connected && anyTarget);
-    m_poseLabel->setText(m_poseName.isEmpty() ? QString() : tr("Pose: %1").arg(m_poseName));
+    m_poses->updateButtons();
     refreshIdentifyButtons();
 }
 
@@ -479,26 +430,274 @@ void JointTable::onTorqueWritten(quint8 id, qint32 baud, const feetech::Operatio
     refreshRow(row);
 }
 
-void JointTable::onItemChanged(QTableWidgetItem *item)
+void JointTable::onTorqueToggled(int row, bool on)
 {
-    if (m_updating)
+    if (row >= rowCount())
         return;
-    const int row = item->row();
+    QString error;
+    if (!setTorque(row, on, &error)) {
+        setMessage(error, Tone::Error);
+        refreshRow(row); // the tick goes back to what the servo reports
+    }
+}
+
+// ---- cells
+
+void JointTable::refreshRow(int row)
+{
     if (row < 0 || row >= rowCount())
         return;
-    if (item->column() == TargetColumn) {
-        const QVariant value = item->data(Qt::EditRole);
-        if (value.isValid())
-            setTarget(row, value.toInt());
+    const int index = servoIndex(row);
+    if (index < 0)
         return;
+    const feetech::ServoInfo &info = m_client->servo(index).info;
+    JointTableView::Torque torque;
+    torque.device = deviceValue(row, kTorqueEnable);
+    torque.mode = torque.device ? info.table().torqueMode(*torque.device) : std::nullopt;
+    Row &state = m_rows[row];
+    if (state.torqueRequested && torque.mode == state.torqueRequested)
+        state.torqueRequested.reset(); // read back as asked
+    torque.requested = state.torqueRequested;
+    m_table->showServo(row, info, torque);
+    refreshPosition(row);
+    refreshTarget(row);
+}
+
+void JointTable::refreshPosition(int row)
+{
+    if (row < 0 || row >= rowCount() || servoIndex(row) < 0)
+        return;
+    m_table->showPosition(row, position(row), isPositionLive(row), moving(row));
+}
+
+void JointTable::refreshTarget(int row)
+{
+    if (row < 0 || row >= rowCount() || servoIndex(row) < 0)
+        return;
+    m_table->showTarget(row, targetRange(row), m_rows.at(row).target);
+}
+
+// ---- actions
+
+bool JointTable::setTorque(int row, bool on, QString *error)
+{
+    const int index = servoIndex(row);
+    if (index < 0) {
+        if (error)
+            *error = tr("That servo is no longer on the bus.");
+        return false;
     }
-    if (item->column() == TorqueColumn) {
-        // A damping servo (partly ticked) ticked again means "on".
-        const bool on = item->checkState() != Qt::Unchecked;
-        QString error;
-        if (!setTorque(row, on, &error)) {
-            setMessage(error, Tone::Error);
-            refreshRow(row); // the tick goes back to what the servo reports
+    const feetech::TorqueMode mode = on ? feetech::TorqueMode::On : feetech::TorqueMode::Off;
+    const auto value = m_client->servo(index).info.table().torqueValue(mode);
+    QString why = tr("its model has no torque enable");
+    feetech::OperationReply *reply =
+        value ? m_client->writeValues(index, {{kTorqueEnable, *value}}, &why) : nullptr;
+    if (!reply) {
+        if (error)
+            *error = tr("%1: torque not switched %2: %3")
+                         .arg(servoName(row), on ? tr("on") : tr("off"), why);
+        return false;
+    }
+    connect(reply, &feetech::OperationReply::finished, this,
+            [this, id = m_rows.at(row).id, baud = m_rows.at(row).baud](
+                const feetech::OperationResult &result) { onTorqueWritten(id, baud, result); });
+    m_rows[row].torqueRequested = mode;
+    refreshRow(row);
+    return true;
+}
+
+bool JointTable::moveAll(QString *error)
+{
+    const auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!m_client->isConnected())
+        return refuse(tr("The bus is not connected: nothing was sent."));
+    if (rowCount() == 0)
+        return refuse(tr("No servos: scan the bus first."));
+
+    QVector<feetech::MoveAllJoint> joints;
+    for (int row = 0; row < rowCount(); ++row) {
+        const int index = servoIndex(row);
+        feetech::MoveAllJoint joint;
+        joint.baud = m_rows.at(row).baud;
+        joint.known = index >= 0;
+        joint.target = m_rows.at(row).target;
+        joint.range = targetRange(row);
+        joint.mode = deviceValue(row, kMode);
+        const auto torque = deviceValue(row, kTorqueEnable);
+        joint.torqueOff = index >= 0 && torque
+            && m_client->servo(index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off;
+        joints.append(joint);
+    }
+    const feetech::MoveAllPlan plan = feetech::planMoveAll(joints);
+    const int refused = plan.refusedRow;
+    switch (plan.refusal) {
+    case feetech::MoveAllPlan::Refusal::None:
+        break;
+    case feetech::MoveAllPlan::Refusal::NoTarget:
+        return refuse(tr("%1 has no target: type one, load a pose or use “Targets from "
+                         "present positions”. Nothing was sent.")
+                          .arg(servoName(refused)));
+    case feetech::MoveAllPlan::Refusal::OutOfRange:
+        return refuse(tr("%1: the target %2 is outside its range %3 to %4. Nothing was "
+                         "sent.")
+                          .arg(servoName(refused))
+                          .arg(*joints.at(refused).target)
+                          .arg(joints.at(refused).range->minimum)
+                          .arg(joints.at(refused).range->maximum));
+    case feetech::MoveAllPlan::Refusal::NotPositionMode: {
+        const qint64 mode = *joints.at(refused).mode;
+        const feetech::Register *reg =
+            m_client->servo(servoIndex(refused)).info.table().find(kMode);
+        return refuse(
+            tr("%1 is in %2 mode; a goal position only moves a servo in position "
+               "mode. Nothing was sent.")
+                .arg(servoName(refused),
+                     reg ? feetech::displayValue(*reg, qint32(mode)) : QString::number(mode)));
+    }
+    case feetech::MoveAllPlan::Refusal::NothingMovable:
+        return refuse(tr("No servo here can be moved: their models are unknown."));
+    }
+
+    QVector<feetech::BusClient::Goal> goals;
+    QStringList ids;
+    for (const int row : plan.rows) {
+        goals.append({servoIndex(row), *m_rows.at(row).target});
+        ids.append(QString::number(m_rows.at(row).id));
+    }
+    QString why;
+    const QVector<feetech::OperationReply *> replies = m_client->moveAll(goals, &why);
+    if (replies.isEmpty())
+        return refuse(tr("Nothing was sent: %1").arg(why));
+    m_movesInFlight += int(replies.size());
+    for (feetech::OperationReply *reply : replies)
+        connect(reply, &feetech::OperationReply::finished, this, &JointTable::onMoveFinished);
+
+    const auto names = [this](const QVector<int> &rows) {
+        QStringList names;
+        for (const int row : rows)
+            names.append(servoName(row));
+        return names.join(tr(", "));
+    };
+    QStringList report;
+    report.append(plan.syncWrites == 1
+                      ? tr("Targets sent to IDs %1 in one SYNC WRITE.").arg(ids.join(tr(", ")))
+                      : tr("Targets sent to IDs %1 in %2 SYNC WRITEs, one per baud rate.")
+                            .arg(ids.join(tr(", ")))
+                            .arg(plan.syncWrites));
+    if (!plan.torqueOff.isEmpty())
+        report.append(tr("Torque is off on %1: it will not move until torque is on.")
+                          .arg(names(plan.torqueOff)));
+    if (!plan.skipped.isEmpty())
+        report.append(tr("Not moved (unknown model): %1.").arg(names(plan.skipped)));
+    setMessage(report.join(u' '),
+               plan.torqueOff.isEmpty() && plan.skipped.isEmpty() ? Tone::Success : Tone::Warning);
+    return true;
+}
+
+bool JointTable::readPositions(QString *error)
+{
+    if (!m_client->isConnected()) {
+        if (error)
+            *error = tr("The bus is not connected.");
+        return false;
+    }
+    if (rowCount() == 0) {
+        if (error)
+            *error = tr("No servos: scan the bus first.");
+        return false;
+    }
+    for (int row = 0; row < rowCount(); ++row) {
+        const int index = servoIndex(row);
+        if (index >= 0)
+            m_client->readServo(index);
+    }
+    setMessage(tr("Reading %1 servos…").arg(rowCount()), Tone::Info);
+    return true;
+}
+
+bool JointTable::identify(int row, QString *error)
+{
+    const int index = servoIndex(row);
+    if (index < 0) {
+        if (error)
+            *error = tr("That servo is no longer on the bus.");
+        return false;
+    }
+    QString why;
+    if (!m_client->identifyJoint(index, &why)) {
+        if (error)
+            *error = tr("%1 cannot be identified now: %2").arg(servoName(row), why);
+        return false;
+    }
+    setMessage(tr("Identifying %1: watch which horn moves…").arg(servoName(row)), Tone::Info);
+    return true;
+}
+
+QPushButton *JointTable::identifyButton(int row) const
+{
+    return qobject_cast<QPushButton *>(m_table->cellWidget(row, JointTableView::IdentifyColumn));
+}
+
+void JointTable::refreshIdentifyButtons()
+{
+    for (int row = 0; row < rowCount(); ++row) {
+        QPushButton *button = identifyButton(row);
+        if (!button)
+            continue;
+        const QString why = m_client->identifyBlocker(servoIndex(row));
+        button->setEnabled(why.isEmpty());
+        button->setToolTip(why.isEmpty() ? tr("Wiggle %1 slowly with little torque, then put it "
+                                              "back as it was")
+                                               .arg(servoName(row))
+                                         : why);
+    }
+}
+
+void JointTable::onMoveAllClicked()
+{
+    QString error;
+    if (!moveAll(&error))
+        setMessage(error, Tone::Error);
+}
+
+void JointTable::onReadClicked()
+{
+    QString error;
+    if (!readPositions(&error))
+        setMessage(error, Tone::Error);
+}
+
+int JointTable::capturePositions()
+{
+    int filled = 0;
+    QStringList missing;
+    for (int row = 0; row < rowCount(); ++row) {
+        if (!targetRange(row))
+            continue; // a servo that cannot be moved needs no target
+        if (const std::optional<qint32> value = position(row)) {
+            setTarget(row, *value);
+            ++filled;
+        } else {
+            missing.append(servoName(row));
         }
     }
+    if (missing.isEmpty())
+        setMessage(tr("Targets set to the present positions of %1 servos.").arg(filled),
+                   Tone::Success);
+    else
+        setMessage(tr("Targets set for %1 servos. No position is known yet for %2: read the "
+                      "positions first.")
+                       .arg(filled)
+                       .arg(missing.join(tr(", "))),
+                   Tone::Warning);
+    return filled;
+}
+
+void JointTable::onCaptureClicked()
+{
+    capturePositions();
 }

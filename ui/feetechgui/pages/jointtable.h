@@ -1,9 +1,9 @@
 // The joint table: every servo of the bus in one row with its live position, a target and its
-// torque state; all targets moved at once, and poses saved and loaded.
+// torque state; all targets moved at once, torque switched, servos read and identified.
 #pragma once
 
 #include "goalrange.h"
-#include "pose.h"
+#include "posematch.h"
 #include "tablefacts.h"
 
 #include <QSet>
@@ -12,10 +12,10 @@
 
 #include <optional>
 
+class JointTablePoses;
+class JointTableView;
 class QLabel;
 class QPushButton;
-class QTableWidget;
-class QTableWidgetItem;
 
 namespace feetech {
 class BusClient;
@@ -28,35 +28,19 @@ class JointTable : public QWidget
     Q_OBJECT
 
 public:
-    enum Column {
-        IdColumn,
-        ModelColumn,
-        BaudColumn,
-        PositionColumn,
-        TargetColumn,
-        RangeColumn,
-        TorqueColumn,
-        MovingColumn,
-        IdentifyColumn, // a button: wiggle the servo to see which one it is
-        ColumnCount
-    };
-
-    // How a loaded pose met the servos on the bus.
-    struct PoseMatch
-    {
-        QString name;
-        int filled = 0; // rows whose target the pose set
-        QVector<feetech::PoseEntry> notOnBus; // entries for servos the table does not have
-        QVector<int> rowsWithoutEntry; // rows the pose says nothing about (targets unchanged)
-        QVector<int> rowsOutOfRange; // rows filled with a target outside their range
-    };
+    enum class Tone { Info, Success, Warning, Error };
 
     explicit JointTable(feetech::BusClient *client, QWidget *parent = nullptr);
 
-    QTableWidget *table() const { return m_table; }
+    JointTableView *table() const { return m_table; }
+    // Saving the targets as a pose file, and filling them from one.
+    JointTablePoses *poses() const { return m_poses; }
     int rowCount() const { return int(m_rows.size()); }
     int rowOf(quint8 id, qint32 baud) const; // -1 when the servo has no row
     int servoIndex(int row) const; // the BusClient's index of the row's servo, -1 when gone
+    QString servoName(int row) const; // "ID 3 (SCS15)"
+    // Every row's servo with its target and the range it may be sent.
+    QVector<feetech::JointTarget> joints() const;
 
     // The row's present position: the monitor's latest sample while it watches the servo,
     // else the last value read (nothing before the first read).
@@ -86,14 +70,8 @@ public:
     bool identify(int row, QString *error = nullptr);
     QPushButton *identifyButton(int row) const;
 
-    // The rows' targets as a pose file (rows without a target are left out).
-    bool savePose(const QString &path, QString *error = nullptr);
-    // Fills the targets of the rows the pose names (by ID and baud rate): nothing moves. The
-    // match says which entries and rows did not meet; nothing and *error when the file is
-    // not a valid pose (no target changed then).
-    std::optional<PoseMatch> loadPose(const QString &path, QString *error = nullptr);
-
     QString message() const; // the status line under the table
+    void setMessage(const QString &text, Tone tone);
 
 protected:
     // Opening the tab reads every servo: positions, torque and angle limits are then the
@@ -101,8 +79,6 @@ protected:
     void showEvent(QShowEvent *event) override;
 
 private:
-    // Torque enable values, all in one place.
-
     struct Row
     {
         quint8 id = 0;
@@ -114,7 +90,6 @@ private:
         qint64 modelReadMs = 0;
         bool sampleNewer = false;
     };
-    enum class Tone { Info, Success, Warning, Error };
 
     void rebuild();
     // Reads the rows' servos while the table is on screen: every one (`all`), or those never
@@ -129,9 +104,7 @@ private:
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
     void onMoveFinished(const feetech::OperationResult &result);
     void onTorqueWritten(quint8 id, qint32 baud, const feetech::OperationResult &result);
-    void onItemChanged(QTableWidgetItem *item);
-    void setMessage(const QString &text, Tone tone);
-    QString servoName(int row) const; // "ID 3 (SCS15)"
+    void onTorqueToggled(int row, bool on);
     std::optional<qint64> deviceValue(int row, const QString &key) const;
     // The sample the row's position and motion come from, when it is the newer source.
     std::optional<feetech::FeedbackSample> sampleSource(int row) const;
@@ -140,22 +113,16 @@ private:
     void onMoveAllClicked();
     void onCaptureClicked();
     void onReadClicked();
-    void onSaveClicked();
-    void onLoadClicked();
 
     feetech::BusClient *m_client = nullptr;
     QVector<Row> m_rows;
     QSet<quint64> m_readAsked; // servos (servoKey) read by readWhileShown since the tab opened
-    QTableWidget *m_table = nullptr;
+    JointTableView *m_table = nullptr;
+    JointTablePoses *m_poses = nullptr;
     QLabel *m_hint = nullptr;
-    QLabel *m_poseLabel = nullptr;
     QLabel *m_message = nullptr;
     QPushButton *m_read = nullptr;
     QPushButton *m_capture = nullptr;
-    QPushButton *m_save = nullptr;
-    QPushButton *m_load = nullptr;
     QPushButton *m_moveAll = nullptr;
-    QString m_poseName;
     int m_movesInFlight = 0; // SYNC WRITEs sent by Move all whose outcome has not come yet
-    bool m_updating = false; // the table is being filled by code, not edited by the user
 };

@@ -1,55 +1,40 @@
-// The joint table's pose actions: targets from the present positions, and pose files saved
-// from and loaded into the targets.
-#include "jointtable.h"
+// The joint table's pose files: its targets saved as a pose, a pose loaded into its targets,
+// and what the table says about how the pose met its servos.
+#include "jointtableposes.h"
 
-#include "busclient.h"
+#include "jointtable.h"
 #include "recentfiles.h"
-#include "registerkeys.h"
-#include "servoparameters.h"
+#include "registertable.h"
+#include "widgethelpers.h"
 
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
 #include <QPushButton>
-#include <QTableWidget>
 
-using namespace feetech::registerkeys;
+using widgethelpers::actionButton;
 
-int JointTable::capturePositions()
+JointTablePoses::JointTablePoses(JointTable *table)
+    : QObject(table)
+    , m_table(table)
 {
-    int filled = 0;
-    QStringList missing;
-    for (int row = 0; row < rowCount(); ++row) {
-        if (!targetRange(row))
-            continue; // a servo that cannot be moved needs no target
-        if (const std::optional<qint32> value = position(row)) {
-            setTarget(row, *value);
-            ++filled;
-        } else {
-            missing.append(servoName(row));
-        }
-    }
-    if (missing.isEmpty())
-        setMessage(tr("Targets set to the present positions of %1 servos.").arg(filled),
-                   Tone::Success);
-    else
-        setMessage(tr("Targets set for %1 servos. No position is known yet for %2: read the "
-                      "positions first.")
-                       .arg(filled)
-                       .arg(missing.join(tr(", "))),
-                   Tone::Warning);
-    return filled;
+    m_load =
+        actionButton(tr("Load pose…"), "loadPoseButton",
+                     tr("Fill the targets from a pose file; nothing moves until Move all"), table);
+    m_save = actionButton(tr("Save pose…"), "savePoseButton", tr("Save the targets as a pose file"),
+                          table);
+    m_label = new QLabel(table);
+    m_label->setObjectName(QStringLiteral("poseLabel"));
+    m_label->setForegroundRole(QPalette::PlaceholderText);
+    connect(m_load, &QPushButton::clicked, this, &JointTablePoses::onLoadClicked);
+    connect(m_save, &QPushButton::clicked, this, &JointTablePoses::onSaveClicked);
 }
 
-bool JointTable::savePose(const QString &path, QString *error)
+bool JointTablePoses::savePose(const QString &path, QString *error)
 {
-    feetech::Pose pose;
-    pose.name = m_poseName.isEmpty() ? QFileInfo(path).baseName() : m_poseName;
-    for (const Row &row : std::as_const(m_rows)) {
-        if (row.target)
-            pose.servos.append({row.id, row.baud, *row.target});
-    }
+    const feetech::Pose pose = feetech::poseFromTargets(
+        m_name.isEmpty() ? QFileInfo(path).baseName() : m_name, m_table->joints());
     if (pose.servos.isEmpty()) {
         if (error)
             *error = tr("No targets to save: set some first.");
@@ -57,42 +42,45 @@ bool JointTable::savePose(const QString &path, QString *error)
     }
     if (!feetech::savePose(path, pose, error))
         return false;
-    m_poseName = pose.name;
-    refreshButtons();
-    setMessage(tr("Saved the pose “%1” with %2 targets to %3.")
-                   .arg(pose.name)
-                   .arg(pose.servos.size())
-                   .arg(QDir::toNativeSeparators(path)),
-               Tone::Success);
+    m_name = pose.name;
+    updateButtons();
+    m_table->setMessage(tr("Saved the pose “%1” with %2 targets to %3.")
+                            .arg(pose.name)
+                            .arg(pose.servos.size())
+                            .arg(QDir::toNativeSeparators(path)),
+                        JointTable::Tone::Success);
     return true;
 }
 
-std::optional<JointTable::PoseMatch> JointTable::loadPose(const QString &path, QString *error)
+std::optional<feetech::PoseMatch> JointTablePoses::loadPose(const QString &path, QString *error)
 {
     const std::optional<feetech::Pose> pose = feetech::loadPose(path, error);
     if (!pose)
         return std::nullopt;
-    PoseMatch match;
-    match.name = pose->name.isEmpty() ? QFileInfo(path).baseName() : pose->name;
-    for (const feetech::PoseEntry &entry : pose->servos) {
-        if (rowOf(entry.id, entry.baud) < 0)
-            match.notOnBus.append(entry);
+    const feetech::PoseMatch match =
+        feetech::matchPose(*pose, m_table->joints(), QFileInfo(path).baseName());
+    for (int row = 0; row < match.targets.size(); ++row) {
+        if (match.targets.at(row))
+            m_table->setTarget(row, *match.targets.at(row));
     }
-    for (int row = 0; row < rowCount(); ++row) {
-        const feetech::PoseEntry *entry = pose->find(m_rows.at(row).id, m_rows.at(row).baud);
-        if (!entry) {
-            match.rowsWithoutEntry.append(row);
-            continue;
-        }
-        setTarget(row, entry->position);
-        ++match.filled;
-        const std::optional<feetech::PositionRange> range = targetRange(row);
-        if (range && !range->contains(entry->position))
-            match.rowsOutOfRange.append(row);
-    }
-    m_poseName = match.name;
-    refreshButtons();
+    m_name = match.name;
+    updateButtons();
+    report(match);
+    return match;
+}
 
+void JointTablePoses::updateButtons()
+{
+    bool anyTarget = false;
+    for (int row = 0; row < m_table->rowCount(); ++row)
+        anyTarget = anyTarget || m_table->target(row).has_value();
+    m_load->setEnabled(m_table->rowCount() > 0);
+    m_save->setEnabled(anyTarget);
+    m_label->setText(m_name.isEmpty() ? QString() : tr("Pose: %1").arg(m_name));
+}
+
+void JointTablePoses::report(const feetech::PoseMatch &match)
+{
     QStringList report;
     report.append(tr("Loaded the pose “%1”: %2 targets filled. Nothing moves until you press "
                      "Move all.")
@@ -107,32 +95,25 @@ std::optional<JointTable::PoseMatch> JointTable::loadPose(const QString &path, Q
     if (!match.rowsWithoutEntry.isEmpty()) {
         QStringList names;
         for (const int row : std::as_const(match.rowsWithoutEntry))
-            names.append(servoName(row));
+            names.append(m_table->servoName(row));
         report.append(tr("Not in the pose (targets unchanged): %1.").arg(names.join(tr(", "))));
     }
     if (!match.rowsOutOfRange.isEmpty()) {
         QStringList names;
         for (const int row : std::as_const(match.rowsOutOfRange))
-            names.append(servoName(row));
+            names.append(m_table->servoName(row));
         report.append(tr("Outside their range (shown in red): %1.").arg(names.join(tr(", "))));
     }
-    const bool clean = match.notOnBus.isEmpty() && match.rowsWithoutEntry.isEmpty()
-        && match.rowsOutOfRange.isEmpty();
-    setMessage(report.join(u' '), clean ? Tone::Success : Tone::Warning);
-    return match;
+    m_table->setMessage(report.join(u' '),
+                        match.isClean() ? JointTable::Tone::Success : JointTable::Tone::Warning);
 }
 
-void JointTable::onCaptureClicked()
-{
-    capturePositions();
-}
-
-void JointTable::onSaveClicked()
+void JointTablePoses::onSaveClicked()
 {
     const QString suggestion =
         QDir(recentfiles::directory(recentfiles::Kind::Pose))
-            .filePath(m_poseName.isEmpty() ? tr("pose.json") : QString(m_poseName + u".json"));
-    QString path = QFileDialog::getSaveFileName(this, tr("Save pose"), suggestion,
+            .filePath(m_name.isEmpty() ? tr("pose.json") : QString(m_name + u".json"));
+    QString path = QFileDialog::getSaveFileName(m_table, tr("Save pose"), suggestion,
                                                 tr("ServoBench poses (*.json);;All files (*)"));
     if (path.isEmpty())
         return;
@@ -142,13 +123,13 @@ void JointTable::onSaveClicked()
     if (savePose(path, &error))
         recentfiles::add(recentfiles::Kind::Pose, path);
     else
-        setMessage(error, Tone::Error);
+        m_table->setMessage(error, JointTable::Tone::Error);
 }
 
-void JointTable::onLoadClicked()
+void JointTablePoses::onLoadClicked()
 {
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Load pose"), recentfiles::directory(recentfiles::Kind::Pose),
+        m_table, tr("Load pose"), recentfiles::directory(recentfiles::Kind::Pose),
         tr("ServoBench poses (*.json);;All files (*)"));
     if (path.isEmpty())
         return;
@@ -156,5 +137,5 @@ void JointTable::onLoadClicked()
     if (loadPose(path, &error))
         recentfiles::add(recentfiles::Kind::Pose, path);
     else
-        setMessage(error, Tone::Error);
+        m_table->setMessage(error, JointTable::Tone::Error);
 }

@@ -1,20 +1,26 @@
 // The Monitor page: stream controls, the live plot, readouts refreshed on a timer rather than per
-// sample, and CSV recording through feetech::TelemetryRecorder.
+// sample, and the recording group the ticked servos' samples are written through.
 #include "monitorpage.h"
 
 #include "busclient.h"
 #include "monitorreadouts.h"
+#include "monitorrecording.h"
+#include "monitorservolist.h"
 #include "telemetryplot.h"
 #include "widgethelpers.h"
+#include "widgetmemory.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QListWidget>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStyle>
@@ -27,9 +33,10 @@ using widgethelpers::actionButton;
 
 namespace {
 
-constexpr int kIdRole = Qt::UserRole + 1;
-constexpr int kBaudRole = Qt::UserRole + 2;
-constexpr int kIndexRole = Qt::UserRole + 3;
+constexpr double kRates[] = {1, 5, 10, 20, 50, 100, 200};
+constexpr double kDefaultRate = 50;
+constexpr int kWindows[] = {5, 10, 30, 60, 120};
+constexpr int kControlsWidth = 250;
 
 } // namespace
 
@@ -73,11 +80,11 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
         if (m_readoutsDirty || isRunning())
             updateReadouts(); // samples/s falls when a servo stops answering: recount
     });
-    m_recorder = new feetech::TelemetryRecorder(this);
-    m_recorder->setFlushInterval(kFlushIntervalMs);
-    connect(m_recorder, &feetech::TelemetryRecorder::flushed, this,
-            &MonitorPage::updateRecordingLabel);
-    connect(m_recorder, &feetech::TelemetryRecorder::failed, this, &MonitorPage::failRecording);
+    connect(m_recording, &MonitorRecording::reported, this, &MonitorPage::showMessage);
+    connect(m_recording, &MonitorRecording::problem, this, [this](const QString &message) {
+        emit problem(message);
+        updateControls();
+    });
 
     if (m_client) {
         connect(m_client, &feetech::BusClient::servosChanged, this, &MonitorPage::rebuildServoList);
@@ -91,37 +98,129 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     }
     onQuantityToggled();
     rebuildServoList();
-    updateRecordingLabel();
 }
 
 MonitorPage::~MonitorPage()
 {
-    stopRecording(); // what was buffered reaches the disk
+    // While the page can still show why the last rows could not be written.
+    m_recording->stopRecording();
+}
+
+QWidget *MonitorPage::buildControls()
+{
+    // In a scroll area for short windows.
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("monitorControls"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFixedWidth(kControlsWidth);
+    auto *controls = new QWidget(scroll);
+    auto *controlsLayout = new QVBoxLayout(controls);
+    controlsLayout->setContentsMargins(0, 0, 6, 0);
+    scroll->setWidget(controls);
+
+    auto *servoGroup = new QGroupBox(tr("Servos"), controls);
+    auto *servoLayout = new QVBoxLayout(servoGroup);
+    m_servoList = new MonitorServoList(servoGroup);
+    connect(m_servoList, &MonitorServoList::ticksChanged, this, &MonitorPage::onTicksChanged);
+    servoLayout->addWidget(m_servoList);
+    controlsLayout->addWidget(servoGroup, 1);
+
+    auto *quantityGroup = new QGroupBox(tr("Plot"), controls);
+    auto *quantityLayout = new QGridLayout(quantityGroup);
+    for (int q = 0; q < feetech::kQuantityCount; ++q) {
+        const feetech::Quantity quantity = feetech::kAllQuantities[q];
+        auto *check = new QCheckBox(feetech::quantityName(quantity), quantityGroup);
+        check->setObjectName(QStringLiteral("plot_%1").arg(feetech::quantityKey(quantity)));
+        check->setToolTip(
+            tr("Plot the %1 in %2")
+                .arg(feetech::quantityName(quantity).toLower(), feetech::quantityUnit(quantity)));
+        check->setChecked(quantity == feetech::Quantity::Position
+                          || quantity == feetech::Quantity::Speed
+                          || quantity == feetech::Quantity::Load);
+        // Before the page listens: the plot does not exist yet (it is applied once it does).
+        widgetmemory::remember(
+            check, QStringLiteral("monitor/plot_%1").arg(feetech::quantityKey(quantity)));
+        connect(check, &QCheckBox::toggled, this, &MonitorPage::onQuantityToggled);
+        quantityLayout->addWidget(check, q / 2, q % 2);
+        m_quantityChecks.append(check);
+    }
+    controlsLayout->addWidget(quantityGroup);
+
+    auto *streamGroup = new QGroupBox(tr("Stream"), controls);
+    auto *streamLayout = new QFormLayout(streamGroup);
+    m_rateCombo = new QComboBox(streamGroup);
+    m_rateCombo->setObjectName(QStringLiteral("monitorRateCombo"));
+    m_rateCombo->setToolTip(tr("Samples per second for each servo"));
+    for (const double rate : kRates)
+        m_rateCombo->addItem(tr("%1 Hz").arg(rate), rate);
+    m_rateCombo->addItem(tr("As fast as the bus allows"), 0.0);
+    m_rateCombo->setCurrentIndex(m_rateCombo->findData(kDefaultRate));
+    connect(m_rateCombo, &QComboBox::activated, this, &MonitorPage::onRateChosen);
+    widgetmemory::remember(m_rateCombo, QStringLiteral("monitor/rate"));
+    streamLayout->addRow(tr("Rate:"), m_rateCombo);
+    m_startButton =
+        actionButton(tr("Start"), "monitorStartButton",
+                     tr("Start or stop streaming the ticked servos' feedback"), streamGroup);
+    QFont bold = m_startButton->font();
+    bold.setBold(true);
+    m_startButton->setFont(bold);
+    connect(m_startButton, &QPushButton::clicked, this, &MonitorPage::toggleStream);
+    streamLayout->addRow(m_startButton);
+    // First: Rate and Start stay in sight on a 1366x768 screen, above the servo list.
+    controlsLayout->insertWidget(0, streamGroup);
+
+    auto *viewGroup = new QGroupBox(tr("View"), controls);
+    auto *viewLayout = new QFormLayout(viewGroup);
+    m_windowCombo = new QComboBox(viewGroup);
+    m_windowCombo->setObjectName(QStringLiteral("monitorWindowCombo"));
+    m_windowCombo->setToolTip(tr("How many seconds of history the plot shows"));
+    for (const int seconds : kWindows)
+        m_windowCombo->addItem(tr("%1 s").arg(seconds), seconds);
+    m_windowCombo->setCurrentIndex(m_windowCombo->findData(kDefaultWindowSeconds));
+    connect(m_windowCombo, &QComboBox::activated, this, &MonitorPage::onWindowChosen);
+    widgetmemory::remember(m_windowCombo, QStringLiteral("monitor/window"));
+    viewLayout->addRow(tr("Window:"), m_windowCombo);
+    m_pauseButton =
+        actionButton(tr("Pause"), "monitorPauseButton",
+                     tr("Freeze the plot; samples are still received and recorded"), viewGroup);
+    m_pauseButton->setIcon(style()->standardIcon(QStyle::SP_MediaPause));
+    connect(m_pauseButton, &QPushButton::clicked, this, &MonitorPage::togglePause);
+    m_resetZoomButton = actionButton(tr("Reset zoom"), "monitorResetZoomButton",
+                                     tr("Back to the live view over the whole window"), viewGroup);
+    connect(m_resetZoomButton, &QPushButton::clicked, this, [this] { m_plot->resetZoom(); });
+    auto *viewButtons = new QHBoxLayout;
+    viewButtons->addWidget(m_pauseButton);
+    viewButtons->addWidget(m_resetZoomButton);
+    viewLayout->addRow(viewButtons);
+    m_exportButton =
+        actionButton(tr("Export PNG…"), "monitorExportButton",
+                     tr("Save the charts as they are shown as one PNG image"), viewGroup);
+    connect(m_exportButton, &QPushButton::clicked, this, &MonitorPage::chooseExportFile);
+    viewLayout->addRow(m_exportButton);
+    controlsLayout->addWidget(viewGroup);
+
+    m_recording = new MonitorRecording(controls);
+    controlsLayout->addWidget(m_recording);
+
+    m_message = new QLabel(controls);
+    m_message->setObjectName(QStringLiteral("monitorMessage"));
+    m_message->setWordWrap(true);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_message->hide();
+    controlsLayout->addWidget(m_message);
+    return scroll;
 }
 
 void MonitorPage::setSelectedServos(const QVector<int> &indexes)
 {
-    m_updatingList = true;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        QListWidgetItem *item = m_servoList->item(row);
-        if (item->flags() & Qt::ItemIsUserCheckable) {
-            item->setCheckState(indexes.contains(item->data(kIndexRole).toInt()) ? Qt::Checked
-                                                                                 : Qt::Unchecked);
-        }
-    }
-    m_updatingList = false;
-    onServoItemChanged();
+    m_servoList->setSelectedServos(indexes);
 }
 
 QVector<int> MonitorPage::selectedServos() const
 {
-    QVector<int> indexes;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if (item->checkState() == Qt::Checked)
-            indexes.append(item->data(kIndexRole).toInt());
-    }
-    return indexes;
+    return m_servoList->selectedServos();
 }
 
 void MonitorPage::setQuantities(const QVector<feetech::Quantity> &quantities)
@@ -211,7 +310,7 @@ bool MonitorPage::start(QString *error)
 
 void MonitorPage::stop()
 {
-    stopRecording();
+    m_recording->stopRecording();
     if (m_client)
         m_client->telemetry()->unsubscribe(this);
     updateControls();
@@ -239,14 +338,7 @@ bool MonitorPage::exportPng(const QString &path, QString *error)
 void MonitorPage::addSamples(const QVector<feetech::FeedbackSample> &samples)
 {
     // Ticked or not, for each servo the list names.
-    QHash<Key, bool> listed;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if (item->flags() & Qt::ItemIsUserCheckable) {
-            listed.insert(Key {quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()},
-                          item->checkState() == Qt::Checked);
-        }
-    }
+    const QHash<Key, bool> listed = m_servoList->ticks();
     QVector<feetech::FeedbackSample> kept;
     kept.reserve(samples.size());
     for (const feetech::FeedbackSample &sample : samples) {
@@ -260,7 +352,7 @@ void MonitorPage::addSamples(const QVector<feetech::FeedbackSample> &samples)
             m_unlisted.append(key);
         m_readouts->addSample(sample);
         kept.append(sample);
-        m_recorder->write(sample); // from its start on
+        m_recording->recorder()->write(sample); // from its start on
     }
     if (kept.isEmpty())
         return;
@@ -293,51 +385,15 @@ void MonitorPage::hideEvent(QHideEvent *event)
 
 void MonitorPage::rebuildServoList()
 {
-    // Ticks survive a rescan by ID and baud rate; servos new to the list come ticked.
-    QHash<Key, bool> previous;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        previous.insert(Key {quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()},
-                        item->checkState() == Qt::Checked);
-    }
-    m_updatingList = true;
-    m_servoList->clear();
-    const int count = m_client ? m_client->servoCount() : 0;
-    for (int index = 0; index < count; ++index) {
-        const feetech::ServoInfo &info = m_client->servo(index).info;
-        const QString model = info.model.name.isEmpty() ? tr("unknown model") : info.model.name;
-        auto *item = new QListWidgetItem(
-            tr("ID %1 · %2 · %3").arg(info.id).arg(model, feetech::baudText(info.baud)),
-            m_servoList);
-        item->setData(kIdRole, info.id);
-        item->setData(kBaudRole, info.baud);
-        item->setData(kIndexRole, index);
-        if (info.hasTable()) {
-            item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
-            item->setCheckState(previous.value(Key {info.id, info.baud}, true) ? Qt::Checked
-                                                                               : Qt::Unchecked);
-        } else {
-            // Without the family's table the feedback block cannot be decoded.
-            item->setFlags(Qt::ItemIsUserCheckable);
-            item->setCheckState(Qt::Unchecked);
-            item->setToolTip(tr("Unknown model: its feedback cannot be decoded"));
-        }
-    }
-    m_updatingList = false;
-    if (m_servoList->count() == 0) {
-        auto *item = new QListWidgetItem(tr("Scan the bus to find servos."), m_servoList);
-        item->setFlags(Qt::NoItemFlags);
-    }
+    m_servoList->rebuild(m_client);
     m_unlisted.erase(std::remove_if(m_unlisted.begin(), m_unlisted.end(),
-                                    [this](const Key &key) { return isListed(key); }),
+                                    [this](const Key &key) { return m_servoList->isListed(key); }),
                      m_unlisted.end());
-    onServoItemChanged();
+    onTicksChanged();
 }
 
-void MonitorPage::onServoItemChanged()
+void MonitorPage::onTicksChanged()
 {
-    if (m_updatingList)
-        return;
     updatePlotServos();
     m_readoutsDirty = true;
     updateReadouts();
@@ -364,7 +420,7 @@ void MonitorPage::onWindowChosen()
 void MonitorPage::onMonitoringChanged(bool monitoring)
 {
     if (!monitoring)
-        stopRecording(); // the stream ended (Stop, a lost link): the recording with it
+        m_recording->stopRecording(); // the stream ended (Stop, a lost link): the recording with it
     updateControls();
     m_readoutsDirty = true;
     updateReadouts();
@@ -379,8 +435,8 @@ void MonitorPage::onStatsChanged(const feetech::TelemetryStats &stats)
 
 void MonitorPage::onStatusChanged()
 {
-    if (m_client && !m_client->isConnected() && isRecording()) {
-        stopRecording();
+    if (m_client && !m_client->isConnected() && m_recording->isRecording()) {
+        m_recording->stopRecording();
         showMessage(tr("Recording stopped: the bus was disconnected."), true);
     }
     updateControls();
@@ -424,7 +480,7 @@ void MonitorPage::restartIfRunning()
 void MonitorPage::updatePlotServos()
 {
     QVector<TelemetryPlot::Servo> servos;
-    for (const Key &key : checkedKeys())
+    for (const Key &key : m_servoList->checkedKeys())
         servos.append({key.id, key.baud});
     for (const Key &key : std::as_const(m_unlisted))
         servos.append({key.id, key.baud});
@@ -444,7 +500,6 @@ void MonitorPage::updateControls()
     m_pauseButton->setIcon(
         style()->standardIcon(paused ? QStyle::SP_MediaPlay : QStyle::SP_MediaPause));
     m_resetZoomButton->setEnabled(m_plot->isZoomed());
-    m_recordButton->setText(isRecording() ? tr("Stop recording") : tr("Record CSV…"));
     updateStatusLine();
 }
 
@@ -475,29 +530,7 @@ void MonitorPage::showMessage(const QString &text, bool isError)
     m_message->setVisible(!text.isEmpty());
 }
 
-QVector<MonitorPage::Key> MonitorPage::checkedKeys() const
-{
-    QVector<Key> keys;
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if (item->checkState() == Qt::Checked)
-            keys.append({quint8(item->data(kIdRole).toInt()), item->data(kBaudRole).toInt()});
-    }
-    return keys;
-}
-
-bool MonitorPage::isListed(const Key &key) const
-{
-    for (int row = 0; row < m_servoList->count(); ++row) {
-        const QListWidgetItem *item = m_servoList->item(row);
-        if ((item->flags() & Qt::ItemIsUserCheckable) && item->data(kIdRole).toInt() == key.id
-            && item->data(kBaudRole).toInt() == key.baud)
-            return true;
-    }
-    return false;
-}
-
 QVector<MonitorPage::Key> MonitorPage::readoutKeys() const
 {
-    return checkedKeys() + m_unlisted;
+    return m_servoList->checkedKeys() + m_unlisted;
 }

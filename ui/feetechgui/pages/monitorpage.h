@@ -6,7 +6,6 @@
 #include "feetechsession.h"
 #include "monitorreadouts.h"
 #include "telemetry.h"
-#include "telemetryrecorder.h"
 
 #include <QHash>
 #include <QPointer>
@@ -16,9 +15,10 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QListWidget;
 class QPushButton;
 class QTimer;
+class MonitorRecording;
+class MonitorServoList;
 class TelemetryPlot;
 
 namespace feetech {
@@ -34,8 +34,6 @@ public:
     static constexpr int kDefaultWindowSeconds = 10;
     // Readouts refresh at most this often, however fast samples come.
     static constexpr int kReadoutIntervalMs = 250;
-    // A recording reaches the disk at least this often.
-    static constexpr int kFlushIntervalMs = feetech::TelemetryRecorder::kDefaultFlushIntervalMs;
 
     explicit MonitorPage(feetech::BusClient *client, QWidget *parent = nullptr);
     ~MonitorPage() override;
@@ -56,13 +54,6 @@ public:
     void stop(); // also ends a recording
     bool isRunning() const;
 
-    // Writes every sample of the selected servos taken from now on to `path` as CSV.
-    bool startRecording(const QString &path, QString *error = nullptr);
-    void stopRecording();
-    bool isRecording() const { return m_recorder->isRecording(); }
-    qint64 recordedRows() const { return m_recorder->rowCount(); }
-    qint64 recordingStartUs() const { return m_recorder->startUs(); } // time 0 of the recording
-
     bool exportPng(const QString &path, QString *error = nullptr);
 
     // The slot the telemetry's samplesReceived is connected to: samples of unticked servos are
@@ -72,11 +63,12 @@ public:
 
     TelemetryPlot *plot() const { return m_plot; }
     MonitorReadouts *readouts() const { return m_readouts; }
-    QListWidget *servoList() const { return m_servoList; }
+    MonitorServoList *servoList() const { return m_servoList; }
+    // Every sample of the ticked servos taken while it records goes to its CSV file.
+    MonitorRecording *recording() const { return m_recording; }
 
 signals:
     void problem(const QString &message);
-    void recordingChanged(bool recording);
 
 protected:
     void showEvent(QShowEvent *event) override;
@@ -87,7 +79,7 @@ private:
 
     QWidget *buildControls();
     void rebuildServoList();
-    void onServoItemChanged();
+    void onTicksChanged();
     void onQuantityToggled();
     void onRateChosen();
     void onWindowChosen();
@@ -97,21 +89,16 @@ private:
     void toggleStream();
     void togglePause();
     void chooseExportFile();
-    void toggleRecording();
     void restartIfRunning();
     void updatePlotServos();
     void updateControls();
     void updateStatusLine();
-    void updateRecordingLabel();
-    void failRecording(const QString &why);
     void showMessage(const QString &text, bool isError);
-    QVector<Key> checkedKeys() const;
-    bool isListed(const Key &key) const;
     QVector<Key> readoutKeys() const;
 
     QPointer<feetech::BusClient> m_client;
     TelemetryPlot *m_plot = nullptr;
-    QListWidget *m_servoList = nullptr;
+    MonitorServoList *m_servoList = nullptr;
     QVector<QCheckBox *> m_quantityChecks; // in kAllQuantities order
     QComboBox *m_rateCombo = nullptr;
     QComboBox *m_windowCombo = nullptr;
@@ -119,17 +106,13 @@ private:
     QPushButton *m_pauseButton = nullptr;
     QPushButton *m_resetZoomButton = nullptr;
     QPushButton *m_exportButton = nullptr;
-    QPushButton *m_recordButton = nullptr;
-    QLabel *m_recordingLabel = nullptr;
+    MonitorRecording *m_recording = nullptr;
     QLabel *m_message = nullptr;
     QLabel *m_statusLine = nullptr;
     MonitorReadouts *m_readouts = nullptr;
     QTimer *m_readoutTimer = nullptr;
 
-    bool m_updatingList = false; // our own check-state changes are not the user's
     bool m_readoutsDirty = true;
     QVector<Key> m_unlisted; // servos samples came for that the list does not name
     feetech::TelemetryStats m_stats;
-
-    feetech::TelemetryRecorder *m_recorder = nullptr;
 };
