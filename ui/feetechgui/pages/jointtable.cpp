@@ -423,7 +423,8 @@ void JointTable::onTorqueWritten(quint8 id, qint32 baud, const feetech::Operatio
         return;
     const bool requestedOn = *m_rows.at(row).torqueRequested == feetech::TorqueMode::On;
     m_rows[row].torqueRequested.reset();
-    if (!result.ok)
+    // A write the lost link dropped is no failure of the servo's: the window shows the link.
+    if (!result.ok && !result.linkLost)
         setMessage(tr("%1: torque was not switched %2: %3")
                        .arg(servoName(row), requestedOn ? tr("on") : tr("off"), result.message),
                    Tone::Error);
