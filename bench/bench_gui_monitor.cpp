@@ -144,8 +144,9 @@ int main(int argc, char **argv)
     feetech::ScanOptions scan;
     scan.lastId = kServos;
     client.scan(scan);
-    if (!scanned.wait(30000) || client.servoCount() != kServos)
-        return fail(QStringLiteral("found %1 of %2 servos").arg(client.servoCount()).arg(kServos));
+    if (!scanned.wait(30000) || client.servos()->count() != kServos)
+        return fail(
+            QStringLiteral("found %1 of %2 servos").arg(client.servos()->count()).arg(kServos));
 
     QVector<int> all;
     for (int i = 0; i < kServos; ++i)

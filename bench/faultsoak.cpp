@@ -242,8 +242,9 @@ SoakCounts soakFeetech(const SoakOptions &options)
                  });
              },
              20000);
-    if (client.servoCount() != kServos) {
-        note(counts, QStringLiteral("the clean scan found %1 servos").arg(client.servoCount()));
+    if (client.servos()->count() != kServos) {
+        note(counts,
+             QStringLiteral("the clean scan found %1 servos").arg(client.servos()->count()));
         ++counts.hangs;
         return counts;
     }
@@ -256,9 +257,9 @@ SoakCounts soakFeetech(const SoakOptions &options)
     for (int transaction = 0; transaction < options.transactions; ++transaction) {
         ++counts.transactions;
         const int index = int(random.bounded(quint32(kServos)));
-        const quint8 id = client.servo(index).info.id;
+        const quint8 id = client.servos()->at(index).info.id;
         const QString who = QStringLiteral("ID %1").arg(id);
-        model::ParameterModel &parameters = *client.parameters(index);
+        model::ParameterModel &parameters = *client.servos()->parameters(index);
         const auto heldValue = [&](const QString &key) {
             std::optional<qint64> value;
             onBus([&](sim::VirtualFeetechBus &servos) {

@@ -175,14 +175,14 @@ bool scan(feetech::BusClient &client)
     client.scan(options);
     const bool ended = waitUntil([&] { return finished; });
     QObject::disconnect(connection);
-    return ended && client.servoCount() == kServos;
+    return ended && client.servos()->count() == kServos;
 }
 
 QString feetechShowsWhatItHolds(feetech::BusClient &client, Bench &bench, int index)
 {
     if (!operate([&] { return client.readServo(index); }))
         return QStringLiteral("no full read after reconnecting");
-    const feetech::Servo &servo = client.servo(index);
+    const feetech::Servo &servo = client.servos()->at(index);
     QString wrong;
     bench.simulator().call([&](sim::Simulator &s) {
         s.advanceNow();
@@ -227,9 +227,12 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
         QString error;
         feetech::OperationReply *reply = nullptr;
         if (work == Work::FeetechApply) {
-            const qint64 now =
-                client.parameters(0)->deviceValue(QStringLiteral("max_temperature")).value_or(70);
-            client.parameters(0)->edit(QStringLiteral("max_temperature"), now == 70 ? 71 : 70);
+            const qint64 now = client.servos()
+                                   ->parameters(0)
+                                   ->deviceValue(QStringLiteral("max_temperature"))
+                                   .value_or(70);
+            client.servos()->parameters(0)->edit(QStringLiteral("max_temperature"),
+                                                 now == 70 ? 71 : 70);
             reply = client.apply(0, &error);
         } else {
             reply = client.reboot(0, &error);

@@ -112,11 +112,11 @@ inline int connectScanAndRead(feetech::BusClient &client, const QString &link, i
 {
     if (!connectAndScan(client, link, lastId))
         return -1;
-    const int index = client.indexOf(id, 1000000);
+    const int index = client.servos()->indexOf(id, 1000000);
     if (index < 0)
         return -1;
     client.readServo(index);
-    if (!QTest::qWaitFor([&] { return client.servo(index).read; }, 10000)) {
+    if (!QTest::qWaitFor([&] { return client.servos()->at(index).read; }, 10000)) {
         qWarning("servo %d was not read within 10 s", id);
         return -1;
     }

@@ -52,7 +52,7 @@ protected:
         QSignalSpy finished(client(), &feetech::BusClient::scanFinished);
         workspace()->startScan(options);
         QVERIFY(finished.wait(20000));
-        QCOMPARE(client()->servoCount(), 3);
+        QCOMPARE(client()->servos()->count(), 3);
     }
 };
 

@@ -94,7 +94,7 @@ private slots:
     void aServoUnpluggedAfterTheScanFailsAloneAndTheOthersAreVerified()
     {
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 4));
-        QCOMPARE(m_client->servoCount(), 3);
+        QCOMPARE(m_client->servos()->count(), 3);
         m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
         const QVector<feetech::ProgramOutcome> outcomes = runOnAll();
         QCOMPARE(outcomes.size(), 3);
@@ -141,20 +141,20 @@ private slots:
     void aServoWithEditsOfItsOwnIsLeftAlone()
     {
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 4));
-        const int index = m_client->indexOf(2, k1M);
-        QVERIFY(m_client->parameters(index)->edit(QStringLiteral("d_gain"), 5));
+        const int index = m_client->servos()->indexOf(2, k1M);
+        QVERIFY(m_client->servos()->parameters(index)->edit(QStringLiteral("d_gain"), 5));
         const qint32 gain = simulatorValue(2, u"p_gain");
         const QVector<feetech::ProgramOutcome> outcomes = runOnAll();
         QCOMPARE(outcomes.size(), 3);
         QCOMPARE(outcomes.at(1).status, feetech::ProgramOutcome::Status::Failed);
         QVERIFY(outcomes.at(1).error.contains(QStringLiteral("edits")));
         QCOMPARE(simulatorValue(2, u"p_gain"), gain);
-        QCOMPARE(m_client->parameters(index)->pendingValue(QStringLiteral("d_gain")),
+        QCOMPARE(m_client->servos()->parameters(index)->pendingValue(QStringLiteral("d_gain")),
                  std::optional<qint64>(5));
         QCOMPARE(outcomes.at(2).status, feetech::ProgramOutcome::Status::Ok);
 
         // Once they are applied, a second run finds servos 1 and 3 unchanged.
-        m_client->parameters(index)->revertAll();
+        m_client->servos()->parameters(index)->revertAll();
         const QVector<feetech::ProgramOutcome> again = runOnAll();
         QCOMPARE(again.at(0).status, feetech::ProgramOutcome::Status::Unchanged);
         QCOMPARE(again.at(1).status, feetech::ProgramOutcome::Status::Ok);

@@ -28,12 +28,12 @@ class TestBusClient : public testsupport::FeetechBusTest
 private:
     std::unique_ptr<BusClient> m_client;
 
-    model::ParameterModel &parameters(int index) { return *m_client->parameters(index); }
+    model::ParameterModel &parameters(int index) { return *m_client->servos()->parameters(index); }
 
     // The address of register `key` in servo `index`'s table.
     int addressOf(int index, const QString &key) const
     {
-        return m_client->servo(index).info.table().find(key)->address;
+        return m_client->servos()->at(index).info.table().find(key)->address;
     }
 
     // Waits for the next result the operation log reports; it, or an empty one after 10 s.
@@ -52,7 +52,7 @@ private slots:
         QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
         m_client = std::make_unique<BusClient>(testsupport::patientTiming());
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 5));
-        QCOMPARE(m_client->servoCount(), 3);
+        QCOMPARE(m_client->servos()->count(), 3);
     }
 
     void cleanup()
@@ -64,27 +64,42 @@ private slots:
     void scanFillsTheServoListWithAParameterModelPerServo()
     {
         for (int i = 0; i < 3; ++i) {
-            QCOMPARE(m_client->servo(i).info.id, quint8(i + 1));
-            QCOMPARE(m_client->indexOf(quint8(i + 1), k1M), i);
-            QVERIFY(!m_client->servo(i).read);
+            QCOMPARE(m_client->servos()->at(i).info.id, quint8(i + 1));
+            QCOMPARE(m_client->servos()->indexOf(quint8(i + 1), k1M), i);
+            QVERIFY(!m_client->servos()->at(i).read);
         }
-        QCOMPARE(m_client->indexOf(2, 500000), -1);
-        QCOMPARE(m_client->idsInUse(), (QVector<int> {1, 2, 3}));
+        QCOMPARE(m_client->servos()->indexOf(2, 500000), -1);
+        QCOMPARE(m_client->servos()->idsInUse(), (QVector<int> {1, 2, 3}));
+        // The list is a table model too, one row per servo in the tree's order.
+        feetech::ServoList &list = *m_client->servos();
+        QCOMPARE(list.rowCount(), 3);
+        QCOMPARE(list.columnCount(), int(feetech::ServoList::ColumnCount));
+        QCOMPARE(list.data(list.index(2, feetech::ServoList::IdColumn)).toInt(), 3);
+        QCOMPARE(list.data(list.index(0, feetech::ServoList::BaudColumn)).toInt(), 1000000);
+        QCOMPARE(list.data(list.index(0, feetech::ServoList::FamilyColumn)).toString(),
+                 QStringLiteral("STS"));
+        QCOMPARE(list.data(list.index(2, feetech::ServoList::ModelColumn)).toString(),
+                 m_client->servos()->at(2).info.model.name);
+        QVERIFY(!list.data(list.index(3, 0)).isValid());
+        QCOMPARE(list.headerData(feetech::ServoList::FirmwareColumn, Qt::Horizontal).toString(),
+                 QStringLiteral("Firmware"));
+        QSignalSpy reset(&list, &QAbstractItemModel::modelReset);
         // Each model follows its servo's table: the SCS has no offset register.
         QVERIFY(parameters(0).definition(QStringLiteral("position_offset")));
         QVERIFY(!parameters(2).definition(QStringLiteral("position_offset")));
         QVERIFY(parameters(2).definition(kMaxTemperature));
         // A new scan starts from an empty list.
-        QSignalSpy changed(m_client.get(), &BusClient::servosChanged);
+        QSignalSpy changed(m_client->servos(), &feetech::ServoList::servosChanged);
         QSignalSpy finished(m_client.get(), &BusClient::scanFinished);
         feetech::ScanOptions options;
         options.lastId = 2;
         m_client->scan(options);
-        QCOMPARE(m_client->servoCount(), 0);
+        QCOMPARE(m_client->servos()->count(), 0);
         QCOMPARE(changed.size(), 1);
         QVERIFY(finished.wait(20000));
-        QCOMPARE(m_client->servoCount(), 2);
+        QCOMPARE(m_client->servos()->count(), 2);
         QCOMPARE(changed.size(), 3);
+        QCOMPARE(reset.size(), 3); // emptied, then each servo found
     }
 
     void applyWritesTheEditsAndLeavesAnIdEditPending()
@@ -112,8 +127,8 @@ private slots:
         QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
         QString error;
         QVERIFY2(m_client->applyAll(0, &error), qPrintable(error));
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->indexOf(9, k1M) >= 0, 10000);
-        QCOMPARE(m_client->indexOf(1, k1M), -1);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf(9, k1M) >= 0, 10000);
+        QCOMPARE(m_client->servos()->indexOf(1, k1M), -1);
         QCOMPARE(simulatorValue(9, kMaxTemperature), 66);
         // Register first, at the old ID; then the ID.
         int temperatureWrite = -1;
@@ -127,7 +142,7 @@ private slots:
                 idWrite = i;
         }
         QVERIFY(temperatureWrite >= 0 && temperatureWrite < idWrite);
-        const int moved = m_client->indexOf(9, k1M);
+        const int moved = m_client->servos()->indexOf(9, k1M);
         QVERIFY(!parameters(moved).pendingValue(QStringLiteral("id")));
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
         QCOMPARE(busy.first().at(0).toBool(), true);
@@ -158,7 +173,7 @@ private slots:
         QCOMPARE(results.at(2).operation, feetech::Operation::ChangeId);
         QVERIFY2(results.at(2).ok, qPrintable(results.at(2).message));
         QVERIFY(results.at(2).final);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->indexOf(9, k1M) >= 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf(9, k1M) >= 0, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
     }
 
@@ -323,7 +338,7 @@ private slots:
         QCOMPARE(parameters(1).state(kMaxTemperature), State::Edited);
         QTRY_COMPARE_WITH_TIMEOUT(busy.size(), 2, 10000);
         QCOMPARE(busy.last().at(0).toBool(), false);
-        QVERIFY(m_client->servo(0).read);
+        QVERIFY(m_client->servos()->at(0).read);
         QVERIFY(m_client->writeBlocker(1).isEmpty());
     }
 

@@ -40,7 +40,7 @@ private:
         QVERIFY2(startSimulator(busOptions(specs), &error), qPrintable(error));
         m_client = std::make_unique<feetech::BusClient>(testsupport::patientTiming());
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 6));
-        QCOMPARE(m_client->servoCount(), 6);
+        QCOMPARE(m_client->servos()->count(), 6);
     }
 
     static void click(QWidget *parent, const char *name)

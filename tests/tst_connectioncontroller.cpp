@@ -157,7 +157,7 @@ private slots:
         const auto options = scanWanted.first().first().value<feetech::ScanOptions>();
         QCOMPARE(options.bauds, (QVector<qint32> {k1M, k500k}));
         QVERIFY(!options.skipSilentRates);
-        QCOMPARE(m_feetech->servoCount(), 2);
+        QCOMPARE(m_feetech->servos()->count(), 2);
         QVERIFY(!m_ptk->isConnected());
     }
 

@@ -91,12 +91,12 @@ private:
     int showServo(quint8 id)
     {
         if (!testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 5)
-            || m_client->servoCount() != 3)
+            || m_client->servos()->count() != 3)
             return -1;
-        const int index = m_client->indexOf(id, k1M);
+        const int index = m_client->servos()->indexOf(id, k1M);
         m_client->readServo(index);
         [&] {
-            QTRY_VERIFY_WITH_TIMEOUT(m_client->servo(index).read, 10000);
+            QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->at(index).read, 10000);
         }();
         if (QTest::currentTestFailed())
             return -1;
@@ -104,7 +104,10 @@ private:
         return index;
     }
 
-    model::ParameterModel *parameters(int index) const { return m_client->parameters(index); }
+    model::ParameterModel *parameters(int index) const
+    {
+        return m_client->servos()->parameters(index);
+    }
 
 private slots:
     void init()
@@ -410,7 +413,7 @@ private slots:
     {
         const int index = showServo(1);
         QVERIFY(index >= 0);
-        const int other = m_client->indexOf(2, k1M);
+        const int other = m_client->servos()->indexOf(2, k1M);
         QVERIFY(m_client->telemetry()->subscribe(this, {other}, 20.0));
         QTRY_VERIFY(m_client->telemetry()->isStreaming());
         m_page->setConfirmMoves(false);
@@ -470,7 +473,7 @@ private slots:
         QVERIFY(error.contains(QLatin1String("position mode")));
 
         // SCS has no mode register.
-        m_page->setServo(m_client->indexOf(3, k1M));
+        m_page->setServo(m_client->servos()->indexOf(3, k1M));
         QVERIFY(!mode->isEnabled());
         QCOMPARE(mode->count(), 0);
         QVERIFY(child<QPushButton>("torqueOnButton")->isEnabled());

@@ -48,7 +48,7 @@ private:
         connectAndScanUpTo(10);
         // The first servo is shown and read by itself.
         QTRY_VERIFY(workspace()->currentIndex() >= 0
-                    && client()->servo(workspace()->currentIndex()).read);
+                    && client()->servos()->at(workspace()->currentIndex()).read);
     }
 
     QModelIndex valueIndex(const QString &key) const
@@ -81,7 +81,7 @@ private slots:
         QCOMPARE(baud->child(2)->text(2), QStringLiteral("SCS"));
         // SCS has no offset register: no middle calibration offered.
         tree->setCurrentItem(baud->child(2));
-        QTRY_VERIFY(client()->servo(workspace()->currentIndex()).info.id == 3);
+        QTRY_VERIFY(client()->servos()->at(workspace()->currentIndex()).info.id == 3);
         QTRY_VERIFY(
             !m_window->findChild<QPushButton *>(QStringLiteral("calibrateButton"))->isEnabled());
     }
@@ -106,13 +106,13 @@ private slots:
         QSignalSpy finished(client(), &feetech::BusClient::scanFinished);
         workspace()->startScan(scan);
         QVERIFY(finished.wait(20000));
-        QCOMPARE(client()->servoCount(), 2);
+        QCOMPARE(client()->servos()->count(), 2);
         QTreeWidgetItem *baud = workspace()->servoTree()->topLevelItem(0)->child(0);
         QCOMPARE(baud->child(0)->text(0), QStringLiteral("ID 1"));
         QCOMPARE(baud->child(1)->text(0), QStringLiteral("ID 4 (shared!)"));
         QVERIFY2(baud->child(1)->toolTip(0).contains(QLatin1String("Nothing is written")),
                  qPrintable(baud->child(1)->toolTip(0)));
-        const int shared = client()->indexOf(4, 1000000);
+        const int shared = client()->servos()->indexOf(4, 1000000);
         QString refusal;
         QVERIFY(
             !client()->writeValues(shared, {{QStringLiteral("max_temperature"), 70}}, &refusal));
@@ -176,7 +176,8 @@ private slots:
         auto *apply = m_window->findChild<QPushButton *>(QStringLiteral("tableApplyButton"));
         QTRY_VERIFY(apply->isEnabled());
         apply->click();
-        model::ParameterModel *parameters = client()->parameters(workspace()->currentIndex());
+        model::ParameterModel *parameters =
+            client()->servos()->parameters(workspace()->currentIndex());
         QTRY_COMPARE(parameters->state(QStringLiteral("max_temperature")), model::State::Verified);
         QCOMPARE(simulatorValue(1, QStringLiteral("max_temperature")), 66);
         // Written to EEPROM with the lock closed again: it survives a power cycle.
@@ -194,9 +195,9 @@ private slots:
         idEditor->setValue(7);
         acceptNextMessageBox();
         settings->findChild<QPushButton *>(QStringLiteral("applyButton"))->click();
-        QTRY_VERIFY_WITH_TIMEOUT(client()->indexOf(7, k1M) >= 0, 10000);
-        QCOMPARE(client()->indexOf(1, k1M), -1);
-        QTRY_COMPARE(client()->servo(workspace()->currentIndex()).info.id, quint8(7));
+        QTRY_VERIFY_WITH_TIMEOUT(client()->servos()->indexOf(7, k1M) >= 0, 10000);
+        QCOMPARE(client()->servos()->indexOf(1, k1M), -1);
+        QTRY_COMPARE(client()->servos()->at(workspace()->currentIndex()).info.id, quint8(7));
         QCOMPARE(simulatorValue(7, QStringLiteral("id")), 7);
         // The tree shows it under its new ID.
         QTreeWidgetItem *baud = workspace()->servoTree()->topLevelItem(0)->child(0);
@@ -213,7 +214,7 @@ private slots:
         });
         connectAndScan();
         workspace()->selectServo(2, k1M);
-        QTRY_VERIFY(client()->servo(workspace()->currentIndex()).read);
+        QTRY_VERIFY(client()->servos()->at(workspace()->currentIndex()).read);
         workspace()->tabs()->setCurrentIndex(1);
         const QModelIndex byte = valueIndex(QStringLiteral("byte_003"));
         QVERIFY(byte.isValid());

@@ -271,7 +271,7 @@ private slots:
         QSignalSpy connected(&client, &feetech::BusClient::statusChanged);
         QVERIFY(testsupport::connectAndScan(client, m_simulator->linkPath(), 4,
                                             seriallink::EchoMode::Off));
-        QCOMPARE(client.servoCount(), 4);
+        QCOMPARE(client.servos()->count(), 4);
         QHash<int, int> samples;
         connect(client.telemetry(), &feetech::TelemetryHub::samplesReceived, this,
                 [&samples](const QVector<FeedbackSample> &batch) {

@@ -29,19 +29,19 @@ private:
     {
         if (!testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 3))
             return -1;
-        return m_client->indexOf(id, k1M);
+        return m_client->servos()->indexOf(id, k1M);
     }
 
     const feetech::Register *goalRegister(int index) const
     {
-        return m_client->servo(index).info.table().find(kGoalPosition);
+        return m_client->servos()->at(index).info.table().find(kGoalPosition);
     }
 
     // As if the servo had reported these limits (no read needed).
     void setLimits(int index, qint64 low, qint64 high)
     {
-        m_client->parameters(index)->setDeviceValue(kMinAngleLimit, low);
-        m_client->parameters(index)->setDeviceValue(kMaxAngleLimit, high);
+        m_client->servos()->parameters(index)->setDeviceValue(kMinAngleLimit, low);
+        m_client->servos()->parameters(index)->setDeviceValue(kMaxAngleLimit, high);
     }
 
 private slots:
@@ -65,7 +65,7 @@ private slots:
         const int index = scanned(1);
         QVERIFY(index >= 0);
         QVERIFY(!goalRange(*m_client, -1));
-        QVERIFY(!goalRange(*m_client, m_client->servoCount()));
+        QVERIFY(!goalRange(*m_client, m_client->servos()->count()));
     }
 
     void limitsNotReadYetLeaveTheGoalRegistersRange()
@@ -138,7 +138,7 @@ private slots:
     {
         const int sts = scanned(1);
         QVERIFY(sts >= 0);
-        const int scs = m_client->indexOf(2, k1M);
+        const int scs = m_client->servos()->indexOf(2, k1M);
         QVERIFY(scs >= 0);
         const auto stsRange = goalRange(*m_client, sts);
         const auto scsRange = goalRange(*m_client, scs);

@@ -48,7 +48,7 @@ private:
     // The goal position writes servo ID 1 received.
     int goalWritesReceived() const
     {
-        const int address = m_client->servo(0).info.table().find(kGoalPosition)->address;
+        const int address = m_client->servos()->at(0).info.table().find(kGoalPosition)->address;
         const auto writes =
             testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write, 1);
         return int(std::count_if(writes.cbegin(), writes.cend(), [address](const auto &write) {
@@ -64,7 +64,7 @@ private slots:
                  qPrintable(error));
         m_client = std::make_unique<BusClient>(testsupport::patientTiming());
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 3));
-        QCOMPARE(m_client->servoCount(), 1);
+        QCOMPARE(m_client->servos()->count(), 1);
         m_streamer = std::make_unique<GoalStreamer>(m_client.get());
         connect(m_streamer.get(), &GoalStreamer::queuedGoalDue, this,
                 [this](qint32 goal) { send(goal); });

@@ -100,7 +100,7 @@ private slots:
         notice.findChild<QPushButton *>(QStringLiteral("dismissUnlockedButton"))->click();
         QVERIFY(notice.isHidden());
         // Read again: the servo still reads unlocked, and the note stays away.
-        QSignalSpy updated(m_client.get(), &feetech::BusClient::servoUpdated);
+        QSignalSpy updated(m_client->servos(), &feetech::ServoList::servoUpdated);
         m_client->readServo(m_index);
         QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty(), 10000);
         QVERIFY(m_client->eepromUnlocked(m_index));
@@ -192,7 +192,7 @@ private slots:
         QCOMPARE(limits.action, feetech::GuardAction::TorqueOff);
         m_client->guard()->setSettings(settings);
         QCOMPARE(m_client->guard()->limits(m_index).loadPercent, 40.0);
-        QCOMPARE(m_client->guard()->limits(m_client->indexOf(2, k1M)).loadPercent, 80.0);
+        QCOMPARE(m_client->guard()->limits(m_client->servos()->indexOf(2, k1M)).loadPercent, 80.0);
     }
 };
 

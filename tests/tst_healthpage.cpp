@@ -36,7 +36,7 @@ private:
         QVERIFY2(startSimulator(busOptions(testsupport::servosAt(k1M, models)), &error),
                  qPrintable(error));
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 4));
-        QCOMPARE(m_client->servoCount(), int(models.size()));
+        QCOMPARE(m_client->servos()->count(), int(models.size()));
     }
 
     QString cell(int row, int column) const

@@ -184,8 +184,8 @@ private slots:
         QVERIFY(error.contains(QStringLiteral("motion test")));
         QVERIFY(!m_client->isIdentifying(index));
         // The other servo is free.
-        QVERIFY2(m_client->identifyBlocker(m_client->indexOf(2, k1M)).isEmpty(),
-                 qPrintable(m_client->identifyBlocker(m_client->indexOf(2, k1M))));
+        QVERIFY2(m_client->identifyBlocker(m_client->servos()->indexOf(2, k1M)).isEmpty(),
+                 qPrintable(m_client->identifyBlocker(m_client->servos()->indexOf(2, k1M))));
         test.cancel();
         QVERIFY(m_client->identifyBlocker(index).isEmpty());
     }
@@ -277,11 +277,11 @@ private slots:
         QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
         m_client->scan(options);
         QTRY_VERIFY_WITH_TIMEOUT(!scanned.isEmpty(), 20000);
-        const int slow = m_client->indexOf(1, k500k);
-        const int fast = m_client->indexOf(2, k1M);
+        const int slow = m_client->servos()->indexOf(1, k500k);
+        const int fast = m_client->servos()->indexOf(2, k1M);
         QVERIFY(slow >= 0 && fast >= 0);
         m_client->readServo(slow);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->servo(slow).read, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->at(slow).read, 10000);
         QVERIFY2(m_client->telemetry()->subscribe(this, {slow, fast}, 0, &error),
                  qPrintable(error));
         const qint32 start = simulatorValue(1, u"present_position");

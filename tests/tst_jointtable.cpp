@@ -102,8 +102,8 @@ private:
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
         read->click();
         QTRY_VERIFY_WITH_TIMEOUT(finished.count() >= m_joints->rowCount(), 10000);
-        for (int index = 0; index < m_client->servoCount(); ++index)
-            QVERIFY(m_client->servo(index).read);
+        for (int index = 0; index < m_client->servos()->count(); ++index)
+            QVERIFY(m_client->servos()->at(index).read);
         for (int row = 0; row < m_joints->rowCount(); ++row)
             QVERIFY(m_joints->position(row).has_value());
     }
@@ -187,8 +187,8 @@ private slots:
                  QStringLiteral("20 to 1003"));
 
         // Both limits 0 (multi-turn mode) bound nothing: back to the register's range.
-        m_client->parameters(1)->setDeviceValue(QStringLiteral("max_angle_limit"), 0);
-        m_client->parameters(1)->setDeviceValue(QStringLiteral("min_angle_limit"), 0);
+        m_client->servos()->parameters(1)->setDeviceValue(QStringLiteral("max_angle_limit"), 0);
+        m_client->servos()->parameters(1)->setDeviceValue(QStringLiteral("min_angle_limit"), 0);
         QCOMPARE(m_joints->targetRange(1)->maximum, 30719);
         QVERIFY(!m_joints->targetRange(1)->fromAngleLimits);
 

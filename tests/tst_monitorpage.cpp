@@ -68,7 +68,7 @@ private:
             testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"STS3215", u"SCS15"});
         QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 6));
-        QCOMPARE(m_client->servoCount(), 4);
+        QCOMPARE(m_client->servos()->count(), 4);
     }
 
     int readoutRow(quint8 id) const

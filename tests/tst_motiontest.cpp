@@ -82,8 +82,10 @@ private slots:
         QVERIFY(!m_test->validate(plan(index, 2000, 2005), MotionTest::Kind::Step, &error));
         QVERIFY(!error.isEmpty());
         error.clear();
-        m_client->parameters(index)->setDeviceValue(QStringLiteral("min_angle_limit"), 1000);
-        m_client->parameters(index)->setDeviceValue(QStringLiteral("max_angle_limit"), 3000);
+        m_client->servos()->parameters(index)->setDeviceValue(QStringLiteral("min_angle_limit"),
+                                                              1000);
+        m_client->servos()->parameters(index)->setDeviceValue(QStringLiteral("max_angle_limit"),
+                                                              3000);
         QVERIFY(!m_test->startSweep(plan(index, 500, 2200), &error));
         QVERIFY2(error.contains(QLatin1String("3000")), qPrintable(error));
         QVERIFY(!m_test->isRunning());

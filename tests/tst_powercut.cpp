@@ -37,7 +37,7 @@ private:
         });
         if (!reply.startsWith(QStringLiteral("ok")))
             return std::nullopt;
-        model::ParameterModel *model = client.parameters(index);
+        model::ParameterModel *model = client.servos()->parameters(index);
         if (!model->edit(QStringLiteral("max_angle_limit"), kNewLimit))
             return std::nullopt;
         OperationLog finishedLog(&client);

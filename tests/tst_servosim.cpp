@@ -133,9 +133,9 @@ private slots:
         feetech::BusClient client;
         const int gripper = testsupport::connectScanAndRead(client, link, 10, 6);
         QVERIFY(gripper >= 0);
-        QCOMPARE(client.idsInUse(), (QVector<int> {1, 2, 3, 4, 5, 6}));
-        QCOMPARE(client.servo(gripper).info.model.name, QStringLiteral("STS3215"));
-        model::ParameterModel *settings = client.parameters(gripper);
+        QCOMPARE(client.servos()->idsInUse(), (QVector<int> {1, 2, 3, 4, 5, 6}));
+        QCOMPARE(client.servos()->at(gripper).info.model.name, QStringLiteral("STS3215"));
+        model::ParameterModel *settings = client.servos()->parameters(gripper);
         QCOMPARE(settings->deviceValue(QStringLiteral("max_torque")), std::optional<qint64>(500));
         QCOMPARE(settings->deviceValue(QStringLiteral("p_gain")), std::optional<qint64>(16));
         QCOMPARE(settings->deviceValue(QStringLiteral("d_gain")), std::optional<qint64>(32));

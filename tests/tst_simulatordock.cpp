@@ -224,7 +224,7 @@ private slots:
         QCOMPARE(window.tabifiedDockWidgets(window.packetLog()),
                  (QList<QDockWidget *> {window.simulatorDock()}));
         QCOMPARE(window.simulatorDock()->table()->rowCount(), 6);
-        QTRY_COMPARE_WITH_TIMEOUT(window.feetechClient()->idsInUse(),
+        QTRY_COMPARE_WITH_TIMEOUT(window.feetechClient()->servos()->idsInUse(),
                                   (QVector<int> {1, 2, 3, 4, 5, 6}), 20000);
         // The dock scrolls its controls rather than make the window taller than what a 1366x768
         // screen leaves under a desktop's panel and a title bar (some 70 pixels).

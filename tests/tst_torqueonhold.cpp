@@ -52,7 +52,7 @@ private slots:
         QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
         m_client = std::make_unique<BusClient>(testsupport::patientTiming());
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 2));
-        QCOMPARE(m_client->servoCount(), 2);
+        QCOMPARE(m_client->servos()->count(), 2);
     }
 
     void cleanup()
@@ -71,7 +71,7 @@ private slots:
     void torqueOnSetsTheGoalToWhereTheHornStandsFirst()
     {
         QFETCH(int, id);
-        const int index = m_client->indexOf(quint8(id), k1M);
+        const int index = m_client->servos()->indexOf(quint8(id), k1M);
         // Torque off, with a goal far from the horn left over from earlier work.
         setSimulatorValue(id, u"torque_enable", 0);
         const qint32 present = simulatorValue(id, u"present_position");
@@ -82,12 +82,13 @@ private slots:
         QCOMPARE(simulatorValue(id, u"goal_position"), present);
         QCOMPARE(simulatorValue(id, u"present_position"), present);
         // What the client shows is what the servo now holds.
-        QCOMPARE(m_client->parameters(index)->deviceValue(kGoal), std::optional<qint64>(present));
+        QCOMPARE(m_client->servos()->parameters(index)->deviceValue(kGoal),
+                 std::optional<qint64>(present));
     }
 
     void aGoalWrittenWithTheTorqueIsKept()
     {
-        const int index = m_client->indexOf(1, k1M);
+        const int index = m_client->servos()->indexOf(1, k1M);
         setSimulatorValue(1, u"torque_enable", 0);
         const qint32 present = simulatorValue(1, u"present_position");
         const qint32 wanted = present > 400 ? present - 200 : present + 200;
@@ -98,7 +99,7 @@ private slots:
 
     void torqueAlreadyOnLeavesTheGoalAlone()
     {
-        const int index = m_client->indexOf(1, k1M);
+        const int index = m_client->servos()->indexOf(1, k1M);
         setSimulatorValue(1, u"torque_enable", 1);
         const qint32 goal = simulatorValue(1, u"goal_position");
         const OperationResult result = write(index, {{kTorque, 1}});
@@ -108,7 +109,8 @@ private slots:
 
     void onlyTorqueOnNeedsTheHold()
     {
-        const feetech::ServoInfo &servo = m_client->servo(m_client->indexOf(1, k1M)).info;
+        const feetech::ServoInfo &servo =
+            m_client->servos()->at(m_client->servos()->indexOf(1, k1M)).info;
         const auto encoded = [&servo](const QVector<model::WriteItem> &items) {
             QString error;
             return *feetech::encodeWrites(servo.table(), items, &error);
@@ -124,7 +126,7 @@ private slots:
     // The checks of the tests that move a servo and put it back (health, joint identification).
     void aMoveTestLeavesAServoAloneOutsidePositionModeOrWithAnOddTorque()
     {
-        const feetech::ServoInfo &servo = m_client->servo(0).info;
+        const feetech::ServoInfo &servo = m_client->servos()->at(0).info;
         const QString mode = QStringLiteral("mode");
         bool torqueWasOn = false;
         QVERIFY(feetech::whyNotToMove(servo, {{mode, 0}, {kTorque, 1}}, &torqueWasOn).isEmpty());

@@ -247,7 +247,7 @@ private slots:
         feetech::BusClient *client = window.feetechClient();
         QTRY_VERIFY_WITH_TIMEOUT(
             window.feetechWorkspace()->currentIndex() >= 0
-                && client->servo(window.feetechWorkspace()->currentIndex()).read,
+                && client->servos()->at(window.feetechWorkspace()->currentIndex()).read,
             15000);
         ParameterPage *settings = window.feetechWorkspace()->settingsPage();
         QStringList texts;

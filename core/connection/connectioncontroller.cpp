@@ -166,8 +166,8 @@ void ConnectionController::onFeetechScanFinished(bool completed)
     if (!completed || m_doctorCheck->isRunning())
         return;
     QVector<feetech::ServoInfo> found;
-    for (int i = 0; i < m_feetech->servoCount(); ++i)
-        found.append(m_feetech->servo(i).info);
+    for (int i = 0; i < m_feetech->servos()->count(); ++i)
+        found.append(m_feetech->servos()->at(i).info);
     const QVector<feetech::ExpectedServo> expected = m_expectedServos(m_portPath);
     const bool cameBackShort = found.isEmpty() || missesAServo(expected, found);
     if (!cameBackShort)

@@ -2201,6 +2201,29 @@
     </message>
 </context>
 <context>
+    <name>FeetechServoList</name>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>Familie</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>Firmware</translation>
+    </message>
+</context>
+<context>
     <name>FeetechSession</name>
     <message numerus="yes">
         <source>no reply after %n attempt(s)</source>

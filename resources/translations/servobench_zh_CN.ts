@@ -2196,6 +2196,29 @@
     </message>
 </context>
 <context>
+    <name>FeetechServoList</name>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+</context>
+<context>
     <name>FeetechSession</name>
     <message>
         <source>The EEPROM lock could not be closed again: the servo&apos;s EEPROM may be left open. Read the servo again and lock it when it answers.</source>

@@ -531,8 +531,8 @@ void MainWindow::restart()
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     bool edits = m_ptk->model()->hasEdits();
-    for (int i = 0; i < m_feetech->servoCount(); ++i)
-        edits = edits || m_feetech->parameters(i)->hasEdits();
+    for (int i = 0; i < m_feetech->servos()->count(); ++i)
+        edits = edits || m_feetech->servos()->parameters(i)->hasEdits();
     if (edits) {
         const auto answer = QMessageBox::question(
             this, tr("Unapplied changes"),

@@ -30,8 +30,9 @@ bool BatchProgram::start(const QVector<int> &indexes, const SettingsFile &file, 
         return refuse(tr("Another operation is still running."));
     m_servos.clear();
     for (const int index : indexes) {
-        if (index >= 0 && index < m_client->servoCount())
-            m_servos.append({m_client->servo(index).info.id, m_client->servo(index).info.baud});
+        if (index >= 0 && index < m_client->servos()->count())
+            m_servos.append(
+                {m_client->servos()->at(index).info.id, m_client->servos()->at(index).info.baud});
     }
     if (m_servos.isEmpty())
         return refuse(tr("Select the servos to program first."));
@@ -61,7 +62,7 @@ void BatchProgram::next()
     emit progress(
         int(m_outcomes.size()), int(m_servos.size()),
         tr("Programming servo ID %1 (%2 of %3)…").arg(id).arg(m_next).arg(m_servos.size()));
-    const int index = m_client->indexOf(id, baud);
+    const int index = m_client->servos()->indexOf(id, baud);
     if (index < 0) {
         failCurrent(tr("Servo ID %1 is no longer on the bus.").arg(id));
         return;
@@ -71,13 +72,13 @@ void BatchProgram::next()
         failCurrent(blocker);
         return;
     }
-    if (m_client->parameters(index)->hasEdits()) {
+    if (m_client->servos()->parameters(index)->hasEdits()) {
         failCurrent(
             tr("Servo ID %1 has edits that are not applied: apply or revert them first.").arg(id));
         return;
     }
     QString error;
-    if (!m_file->valuesFor(m_client->servo(index).info, &error)) {
+    if (!m_file->valuesFor(m_client->servos()->at(index).info, &error)) {
         failCurrent(error);
         return;
     }
@@ -100,7 +101,7 @@ void BatchProgram::onOperationFinished(const OperationResult &result)
             failCurrent(result.message);
             return;
         }
-        diffAndWrite(m_client->indexOf(m_current.id, m_current.baud));
+        diffAndWrite(m_client->servos()->indexOf(m_current.id, m_current.baud));
     } else if (m_phase == Phase::Writing && result.operation == Operation::Write) {
         settle(result);
     }
@@ -113,13 +114,13 @@ void BatchProgram::diffAndWrite(int index)
         return;
     }
     QString error;
-    const ServoInfo &info = m_client->servo(index).info;
+    const ServoInfo &info = m_client->servos()->at(index).info;
     const auto wanted = m_file->batchValuesFor(info, &m_current.leftOut, &error);
     if (!wanted) {
         failCurrent(error);
         return;
     }
-    model::ParameterModel &parameters = *m_client->parameters(index);
+    model::ParameterModel &parameters = *m_client->servos()->parameters(index);
     const QVector<model::WriteItem> changed = changedValues(
         *wanted, [&parameters](const QString &key) { return parameters.deviceValue(key); });
     for (const model::WriteItem &item : changed)
@@ -155,9 +156,9 @@ void BatchProgram::diffAndWrite(int index)
 
 void BatchProgram::settle(const OperationResult &result)
 {
-    const int index = m_client->indexOf(m_current.id, m_current.baud);
+    const int index = m_client->servos()->indexOf(m_current.id, m_current.baud);
     QStringList unverified;
-    if (model::ParameterModel *parameters = m_client->parameters(index)) {
+    if (model::ParameterModel *parameters = m_client->servos()->parameters(index)) {
         for (const QString &key : std::as_const(m_current.changed)) {
             const model::State state = parameters->state(key);
             if (state != model::State::Verified)

@@ -66,7 +66,7 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
             && event.baud == m_baud)
             fail(tr("The test was stopped: %1").arg(event.message));
     });
-    connect(m_client, &BusClient::servosChanged, this, [this] {
+    connect(m_client->servos(), &ServoList::servosChanged, this, [this] {
         if (isRunning() && servoIndex() < 0)
             fail(tr("%1 is no longer on the bus: the test was stopped.").arg(servoName()));
     });
@@ -96,9 +96,9 @@ bool MotionTest::validate(const MotionPlan &plan, Kind kind, QString *error) con
         return refuse(tr("A test is already running."));
     if (!m_client->isConnected())
         return refuse(tr("The bus is not connected."));
-    if (plan.index < 0 || plan.index >= m_client->servoCount())
+    if (plan.index < 0 || plan.index >= m_client->servos()->count())
         return refuse(tr("No servo is selected."));
-    const ServoInfo &info = m_client->servo(plan.index).info;
+    const ServoInfo &info = m_client->servos()->at(plan.index).info;
     if (m_client->isIdentifying(plan.index))
         return refuse(tr("Servo ID %1 is being identified; wait until it is back.").arg(info.id));
     if (!info.hasTable())
@@ -107,7 +107,7 @@ bool MotionTest::validate(const MotionPlan &plan, Kind kind, QString *error) con
     const auto range = goalRange(*m_client, plan.index);
     if (!range || !table.find(kTorqueEnable))
         return refuse(tr("This servo has no goal position register."));
-    const auto mode = m_client->parameters(plan.index)->deviceValue(kMode);
+    const auto mode = m_client->servos()->parameters(plan.index)->deviceValue(kMode);
     if (table.find(kMode) && mode && *mode != kPositionMode)
         return refuse(tr("Servo ID %1 is not in position mode: set its operating mode to "
                          "position first.")
@@ -157,7 +157,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
 {
     if (!validate(plan, kind, error))
         return false;
-    const ServoInfo &info = m_client->servo(plan.index).info;
+    const ServoInfo &info = m_client->servos()->at(plan.index).info;
     m_plan = plan;
     m_kind = kind;
     m_id = info.id;
@@ -181,7 +181,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
     values.append({kGoalPosition, plan.from});
     const auto on = table.torqueValue(TorqueMode::On);
     if (on
-        && m_client->parameters(plan.index)->deviceValue(kTorqueEnable)
+        && m_client->servos()->parameters(plan.index)->deviceValue(kTorqueEnable)
             != std::optional<qint64>(*on))
         values.append({kTorqueEnable, *on});
     if (!write(values, error)) {
@@ -211,7 +211,7 @@ void MotionTest::cancel()
 
 int MotionTest::servoIndex() const
 {
-    return m_client->indexOf(m_id, m_baud);
+    return m_client->servos()->indexOf(m_id, m_baud);
 }
 
 QString MotionTest::servoName() const

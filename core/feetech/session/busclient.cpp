@@ -41,6 +41,7 @@ bool refused(const QString &why, QString *error)
 BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
     , m_worker(QStringLiteral("feetech-link"), timing)
+    , m_servos(new ServoList(this))
 {
     m_clock.start();
     Session *session = m_worker.session();
@@ -53,7 +54,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     });
     m_link.follow(&session->link());
     connect(session, &Session::scanProgress, this, &BusClient::scanProgress);
-    connect(session, &Session::servoFound, this, &BusClient::onServoFound);
+    connect(session, &Session::servoFound, m_servos, &ServoList::add);
     connect(session, &Session::scanFinished, this, [this](bool completed, const QString &m) {
         m_scanning = false;
         emit busyChanged(isBusy());
@@ -61,11 +62,11 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     });
     connect(session, &Session::memoryRead, this, &BusClient::onMemoryRead);
     connect(session, &Session::statusSeen, this, [this](quint8 id, qint32 baud, quint8 status) {
-        const int index = indexOf(id, baud);
+        const int index = m_servos->indexOf(id, baud);
         if (index < 0)
             return;
-        m_servos.at(std::size_t(index))->statusByte = status;
-        emit servoUpdated(index);
+        m_servos->entry(index).statusByte = status;
+        m_servos->noteUpdated(index);
     });
     connect(session, &Session::progress, this, &BusClient::progress);
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
@@ -92,7 +93,7 @@ bool BusClient::hasLivePending() const
 
 void BusClient::connectTo(const QString &portName, qint32 baud, seriallink::EchoMode echo)
 {
-    clearServos();
+    m_servos->clear();
     m_worker.run([portName, baud, echo](Session &s) { s.open(portName, baud, echo); });
 }
 
@@ -105,7 +106,7 @@ void BusClient::scan(const ScanOptions &options)
 {
     if (m_scanning)
         return;
-    clearServos();
+    m_servos->clear();
     m_scanning = true;
     emit busyChanged(true);
     m_worker.run([options](Session &s) { s.scan(options); });
@@ -119,40 +120,16 @@ void BusClient::cancelScan()
         session, [session] { session->cancelScan(); }, Qt::QueuedConnection);
 }
 
-model::ParameterModel *BusClient::parameters(int index) const
-{
-    if (index < 0 || index >= servoCount())
-        return nullptr;
-    return m_servos.at(std::size_t(index))->parameters.get();
-}
-
-int BusClient::indexOf(quint8 id, qint32 baud) const
-{
-    for (int i = 0; i < servoCount(); ++i) {
-        if (servo(i).info.id == id && servo(i).info.baud == baud)
-            return i;
-    }
-    return -1;
-}
-
-QVector<int> BusClient::idsInUse() const
-{
-    QVector<int> ids;
-    for (const auto &entry : m_servos)
-        ids.append(entry->info.id);
-    return ids;
-}
-
 QString BusClient::writeBlocker(int index) const
 {
     if (!isConnected())
         return Tr::tr("The bus is not connected.");
-    if (index < 0 || index >= servoCount())
+    if (index < 0 || index >= m_servos->count())
         return Tr::tr("No servo is selected.");
     // What stays true first: a shared ID or an unknown model is no reason to wait.
-    if (servo(index).info.sharedId)
-        return sharedIdRefusal(servo(index).info.id);
-    if (!servo(index).info.hasTable())
+    if (m_servos->at(index).info.sharedId)
+        return sharedIdRefusal(m_servos->at(index).info.id);
+    if (!m_servos->at(index).info.hasTable())
         return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
     if (isBusy())
         return Tr::tr("Another operation is still running.");
@@ -162,36 +139,20 @@ QString BusClient::writeBlocker(int index) const
 QString BusClient::commandBlocker(int index) const
 {
     // An unknown model may be rebooted or cleared; a shared ID is not sent anything.
-    if (index >= 0 && index < servoCount() && servo(index).info.sharedId)
-        return sharedIdRefusal(servo(index).info.id);
+    if (index >= 0 && index < m_servos->count() && m_servos->at(index).info.sharedId)
+        return sharedIdRefusal(m_servos->at(index).info.id);
     if (isBusy())
         return Tr::tr("Another operation is still running.");
     return {};
 }
 
-void BusClient::onServoFound(const ServoInfo &info)
-{
-    auto entry = std::make_unique<Servo>();
-    entry->info = info;
-    if (info.statusBits != 0) // the scan's answer showed error bits: the tree shows them
-        entry->statusByte = info.statusBits;
-    entry->parameters = std::make_unique<model::ParameterModel>();
-    entry->parameters->setDefinitions(modelDefinitions(info.table()));
-    m_servos.push_back(std::move(entry));
-    // Fastest rate first, then by ID: the order the tree shows.
-    std::stable_sort(m_servos.begin(), m_servos.end(), [](const auto &a, const auto &b) {
-        return a->info.baud != b->info.baud ? a->info.baud > b->info.baud : a->info.id < b->info.id;
-    });
-    emit servosChanged();
-}
-
 void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                              ReadSource source, quint8 statusByte)
 {
-    const int index = indexOf(id, baud);
+    const int index = m_servos->indexOf(id, baud);
     if (index < 0)
         return;
-    Servo &entry = *m_servos.at(std::size_t(index));
+    Servo &entry = m_servos->entry(index);
     entry.statusByte = statusByte;
     const qint64 now = m_clock.elapsed() + 1; // 0 means "never read"
     for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes)) {
@@ -202,7 +163,7 @@ void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArr
             continue;
         entry.parameters->setDeviceValue(item.reg->key, item.value, now);
     }
-    emit servoUpdated(index);
+    m_servos->noteUpdated(index);
 }
 
 void BusClient::onOperationFinished(const OperationResult &result)
@@ -222,9 +183,9 @@ void BusClient::onOperationFinished(const OperationResult &result)
         pending->second.id = result.servo.id;
         pending->second.baud = result.servo.baud;
     }
-    const int index = indexOf(target.id, target.baud);
+    const int index = m_servos->indexOf(target.id, target.baud);
     if (index >= 0) {
-        Servo &entry = *m_servos.at(std::size_t(index));
+        Servo &entry = m_servos->entry(index);
         model::ParameterModel &parameters = *entry.parameters;
         if (result.operation == Operation::Read && result.ok && target.kind != Work::Background)
             entry.read = true;
@@ -245,8 +206,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
         if (result.ok && moved
             && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
                 || result.operation == Operation::FactoryReset)) {
-            entry.info = result.servo;
-            emit servosChanged();
+            m_servos->move(index, result.servo);
         }
         if (result.ok && result.operation == Operation::ChangeId)
             parameters.revert(QStringLiteral("id"));
@@ -263,7 +223,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
             parameters.revert(QStringLiteral("torque_enable"));
         }
         if (result.ok && flow && result.final) // what the flow changed shows
-            readServo(indexOf(entry.info.id, entry.info.baud));
+            readServo(m_servos->indexOf(entry.info.id, entry.info.baud));
     }
     if (result.operation == Operation::Identify)
         m_identifying.reset();
@@ -286,8 +246,8 @@ void BusClient::forgetWork()
     m_scanning = false;
     m_identifying.reset();
     // The link went down with writes on their way: whether they landed is not known.
-    for (const auto &entry : m_servos) {
-        model::ParameterModel &parameters = *entry->parameters;
+    for (int i = 0; i < m_servos->count(); ++i) {
+        model::ParameterModel &parameters = *m_servos->at(i).parameters;
         for (const model::Definition &definition : parameters.definitions()) {
             if (parameters.state(definition.key) == model::State::Writing)
                 parameters.markUnknown(definition.key);
@@ -311,10 +271,10 @@ OperationReply *BusClient::startApply(int index, QString *error, bool withAddres
 {
     if (refused(writeBlocker(index), error))
         return nullptr;
-    model::ParameterModel &parameters = *this->parameters(index);
+    model::ParameterModel &parameters = *m_servos->parameters(index);
     // Without the address, the ID and baud rate edits stay pending for their own flows.
     const auto plan =
-        planApply(servo(index).info, parameters, idsInUse(),
+        planApply(m_servos->at(index).info, parameters, m_servos->idsInUse(),
                   withAddress ? ApplyScope::Everything : ApplyScope::Registers, error);
     if (!plan)
         return nullptr;
@@ -330,7 +290,7 @@ OperationReply *
 BusClient::startOperation(Operation operation, int index, QString *error, Work kind,
                           const std::function<void(Session &, const ServoInfo &)> &work)
 {
-    if (index < 0 || index >= servoCount()) {
+    if (index < 0 || index >= m_servos->count()) {
         if (error)
             *error = Tr::tr("No servo is selected.");
         return nullptr;
@@ -340,7 +300,7 @@ BusClient::startOperation(Operation operation, int index, QString *error, Work k
             *error = Tr::tr("The bus is not connected.");
         return nullptr;
     }
-    const ServoInfo info = servo(index).info;
+    const ServoInfo info = m_servos->at(index).info;
     return submit(operation, info.id, info.baud, kind, [work, info](Session &s) { work(s, info); });
 }
 
@@ -374,9 +334,9 @@ OperationReply *BusClient::readServo(int index)
 
 void BusClient::refreshRam(int index)
 {
-    if (isBusy() || hasLivePending() || index < 0 || index >= servoCount())
+    if (isBusy() || hasLivePending() || index < 0 || index >= m_servos->count())
         return; // the next refresh will come; real work goes first
-    const ServoInfo &info = servo(index).info;
+    const ServoInfo &info = m_servos->at(index).info;
     if (!info.hasTable())
         return;
     const QVector<Block> ram = info.table().ramBlocks();
@@ -389,8 +349,8 @@ OperationReply *BusClient::changeId(int index, int newId, QString *error)
 {
     if (refused(writeBlocker(index), error))
         return nullptr;
-    const QVector<int> inUse = idsInUse();
-    if (inUse.contains(newId) && newId != servo(index).info.id) {
+    const QVector<int> inUse = m_servos->idsInUse();
+    if (inUse.contains(newId) && newId != m_servos->at(index).info.id) {
         if (error)
             *error = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
         return nullptr;
@@ -413,7 +373,7 @@ OperationReply *BusClient::calibrateMiddle(int index, QString *error)
 {
     if (refused(writeBlocker(index), error))
         return nullptr;
-    if (middleCalibration(servo(index).info) == MiddleCalibration::Unsupported) {
+    if (middleCalibration(m_servos->at(index).info) == MiddleCalibration::Unsupported) {
         if (error)
             *error = Tr::tr("This servo has no middle calibration (SCS servos have no offset "
                             "register).");
@@ -457,9 +417,9 @@ OperationReply *BusClient::lockEeprom(int index, QString *error)
 
 bool BusClient::eepromUnlocked(int index) const
 {
-    if (index < 0 || index >= servoCount() || !servo(index).read)
+    if (index < 0 || index >= m_servos->count() || !m_servos->at(index).read)
         return false;
-    const model::ParameterModel *model = servo(index).parameters.get();
+    const model::ParameterModel *model = m_servos->at(index).parameters.get();
     const auto lock = model ? model->deviceValue(QStringLiteral("lock")) : std::nullopt;
     return lock && *lock == 0;
 }
@@ -469,8 +429,8 @@ bool BusClient::eepromUnlocked(int index) const
 OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem> &values,
                                        QString *error)
 {
-    if (!isConnected() || index < 0 || index >= servoCount() || !servo(index).info.hasTable()
-        || servo(index).info.sharedId) {
+    if (!isConnected() || index < 0 || index >= m_servos->count()
+        || !m_servos->at(index).info.hasTable() || m_servos->at(index).info.sharedId) {
         // The same reasons as for any write, except a busy bus: control writes queue up.
         const QString blocker = writeBlocker(index);
         if (error)
@@ -482,7 +442,7 @@ OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem
             *error = Tr::tr("Nothing to write.");
         return nullptr;
     }
-    const auto writes = encodeWrites(servo(index).info.table(), values, error);
+    const auto writes = encodeWrites(m_servos->at(index).info.table(), values, error);
     if (!writes)
         return nullptr;
     const QVector<RegisterWrite> items = *writes;
@@ -495,10 +455,10 @@ OperationReply *BusClient::allTorqueOff()
     emit allTorqueOffRequested();
     QVector<qint32> bauds;
     QVector<ServoInfo> servos;
-    for (const auto &entry : m_servos) {
-        if (!bauds.contains(entry->info.baud))
-            bauds.append(entry->info.baud);
-        servos.append(entry->info);
+    for (int i = 0; i < m_servos->count(); ++i) {
+        if (!bauds.contains(m_servos->at(i).info.baud))
+            bauds.append(m_servos->at(i).info.baud);
+        servos.append(m_servos->at(i).info);
     }
     if (bauds.isEmpty() && status().baud > 0)
         bauds.append(status().baud); // nothing scanned yet: the rate the port is at
@@ -521,9 +481,9 @@ QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString
     QVector<qint32> bauds;
     QHash<qint32, QVector<SyncWriteEntry>> entries;
     for (const Goal &goal : goals) {
-        if (goal.index < 0 || goal.index >= servoCount())
+        if (goal.index < 0 || goal.index >= m_servos->count())
             return refuse(Tr::tr("No servo is selected."));
-        const ServoInfo &info = servo(goal.index).info;
+        const ServoInfo &info = m_servos->at(goal.index).info;
         if (!info.hasTable())
             return refuse(
                 Tr::tr("Servo %1 is of an unknown model; nothing is written to it.").arg(info.id));
@@ -537,7 +497,7 @@ QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString
         entries[info.baud].append({info.id, encoded->first().bytes});
     }
     const Register *goal =
-        servo(goals.first().index).info.table().find(QStringLiteral("goal_position"));
+        m_servos->at(goals.first().index).info.table().find(QStringLiteral("goal_position"));
     const int address = goal ? goal->address : 42;
     QVector<OperationReply *> replies;
     for (const qint32 baud : std::as_const(bauds)) {
@@ -550,28 +510,13 @@ QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString
     return replies;
 }
 
-void BusClient::moveServo(int index, const ServoInfo &info)
-{
-    if (index < 0 || index >= servoCount())
-        return;
-    m_servos.at(std::size_t(index))->info = info;
-    emit servosChanged();
-}
-
-void BusClient::clearServos()
-{
-    if (m_servos.empty())
-        return;
-    m_servos.clear();
-    emit servosChanged();
-}
-
 std::optional<PositionRange> goalRange(const BusClient &client, int index)
 {
-    if (index < 0 || index >= client.servoCount() || !client.servo(index).info.hasTable())
+    if (index < 0 || index >= client.servos()->count()
+        || !client.servos()->at(index).info.hasTable())
         return std::nullopt;
-    const model::ParameterModel *parameters = client.parameters(index);
-    return goalRange(client.servo(index).info.table(),
+    const model::ParameterModel *parameters = client.servos()->parameters(index);
+    return goalRange(client.servos()->at(index).info.table(),
                      parameters->deviceValue(registerkeys::kMinAngleLimit),
                      parameters->deviceValue(registerkeys::kMaxAngleLimit));
 }
@@ -581,7 +526,7 @@ QString BusClient::identifyBlocker(int index) const
     const QString blocker = writeBlocker(index);
     if (!blocker.isEmpty())
         return blocker;
-    const ServoInfo &info = servo(index).info;
+    const ServoInfo &info = m_servos->at(index).info;
     const QString held = m_held.value({info.id, info.baud});
     if (!held.isEmpty())
         return held;
@@ -598,7 +543,7 @@ OperationReply *BusClient::identifyJoint(int index, QString *error)
             *error = blocker;
         return nullptr;
     }
-    const ServoInfo &info = servo(index).info;
+    const ServoInfo &info = m_servos->at(index).info;
     m_identifying = std::pair(info.id, info.baud);
     return startOperation(Operation::Identify, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &target) { s.identifyJoint(target); });
@@ -606,22 +551,22 @@ OperationReply *BusClient::identifyJoint(int index, QString *error)
 
 bool BusClient::isIdentifying(int index) const
 {
-    return m_identifying && index >= 0 && index < servoCount()
-        && *m_identifying == std::pair(servo(index).info.id, servo(index).info.baud);
+    return m_identifying && index >= 0 && index < m_servos->count()
+        && *m_identifying == std::pair(m_servos->at(index).info.id, m_servos->at(index).info.baud);
 }
 
 void BusClient::holdServo(int index, const QString &reason)
 {
-    if (index < 0 || index >= servoCount())
+    if (index < 0 || index >= m_servos->count())
         return;
-    m_held.insert({servo(index).info.id, servo(index).info.baud}, reason);
-    emit servoUpdated(index); // what it may do now has changed
+    m_held.insert({m_servos->at(index).info.id, m_servos->at(index).info.baud}, reason);
+    m_servos->noteUpdated(index); // what it may do now has changed
 }
 
 void BusClient::releaseServo(quint8 id, qint32 baud)
 {
-    if (m_held.remove({id, baud}) > 0 && indexOf(id, baud) >= 0)
-        emit servoUpdated(indexOf(id, baud));
+    if (m_held.remove({id, baud}) > 0 && m_servos->indexOf(id, baud) >= 0)
+        m_servos->noteUpdated(m_servos->indexOf(id, baud));
 }
 OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
                                       std::optional<quint8> replyId, int replyDataSize,

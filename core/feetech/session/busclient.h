@@ -12,6 +12,7 @@
 #include "operationreply.h"
 #include "parametermodel.h"
 #include "servohealth.h"
+#include "servolist.h"
 #include "sessionthread.h"
 #include "telemetry.h"
 #include "telemetryhub.h"
@@ -26,14 +27,6 @@
 #include <vector>
 
 namespace feetech {
-
-struct Servo
-{
-    ServoInfo info;
-    std::unique_ptr<model::ParameterModel> parameters;
-    std::optional<quint8> statusByte; // of its last reply
-    bool read = false; // its table has been read at least once
-};
 
 // Each operation it submits returns an OperationReply (nullptr, with *error, when refused), which
 // finishes with the operation's result; submitted names every reply as it is made, for whoever
@@ -62,11 +55,8 @@ public:
     void scan(const ScanOptions &options);
     void cancelScan();
 
-    int servoCount() const { return int(m_servos.size()); }
-    const Servo &servo(int index) const { return *m_servos.at(std::size_t(index)); }
-    model::ParameterModel *parameters(int index) const;
-    int indexOf(quint8 id, qint32 baud) const; // -1 when not known
-    QVector<int> idsInUse() const; // at every baud rate scanned
+    // The servos found, each with its parameter model, in the order the tree shows them.
+    ServoList *servos() const { return m_servos; }
 
     // Why changes cannot be made to servo `index` now (empty when they can).
     QString writeBlocker(int index) const;
@@ -160,15 +150,11 @@ public:
     MotorSetupService *motorSetup() const { return m_motorSetup; }
     // The health check and its confirmed move test.
     HealthService *health() const { return m_health; }
-    // Servo `index` answers at `info`'s ID and rate now (a set-up moved it): servosChanged.
-    void moveServo(int index, const ServoInfo &info);
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
     void scanFinished(bool completed, const QString &message);
-    void servosChanged(); // the list itself: added, removed, or moved to another ID or baud
-    void servoUpdated(int index); // new values or status for this servo
     void progress(int done, int total);
     // A reply was made for an operation just submitted (not for background refreshes).
     void submitted(feetech::OperationReply *reply);
@@ -177,18 +163,16 @@ signals:
     void allTorqueOffRequested();
 
 private:
-    void onServoFound(const ServoInfo &info);
     void onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                       ReadSource source, quint8 statusByte);
     void onOperationFinished(const OperationResult &result);
-    void clearServos();
     void forgetWork(); // the link went down: nothing is running any more
     // The pending edits as planApply plans them; with `withAddress` the ID and baud too.
     OperationReply *startApply(int index, QString *error, bool withAddress);
 
     seriallink::SessionThread<Session> m_worker;
     seriallink::LinkMirror m_link;
-    std::vector<std::unique_ptr<Servo>> m_servos;
+    ServoList *m_servos = nullptr;
     bool m_scanning = false;
     // The operations submitted and not finished, by ticket: the servo each one works on (by
     // its address before it ran, and after each step of an apply chain), its kind and reply.

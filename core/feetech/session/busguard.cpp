@@ -26,13 +26,13 @@ BusGuard::BusGuard(BusClient *client)
     connect(client->session(), &Session::guardEvent, this, [this](const GuardEvent &guarded) {
         m_lastEvent.insert({guarded.id, guarded.baud}, guarded);
         emit event(guarded);
-        const int index = m_client->indexOf(guarded.id, guarded.baud);
+        const int index = m_client->servos()->indexOf(guarded.id, guarded.baud);
         if (index >= 0)
-            emit m_client->servoUpdated(index);
+            m_client->servos()->noteUpdated(index);
     });
     // The servo's own limit registers, once read, give its defaults.
-    connect(client, &BusClient::servoUpdated, this, [this] { send(); });
-    connect(client, &BusClient::servosChanged, this, [this] {
+    connect(client->servos(), &ServoList::servoUpdated, this, [this] { send(); });
+    connect(client->servos(), &ServoList::servosChanged, this, [this] {
         m_lastEvent.clear();
         send();
     });
@@ -40,9 +40,10 @@ BusGuard::BusGuard(BusClient *client)
 
 GuardLimits BusGuard::limits(int index) const
 {
-    if (index < 0 || index >= m_client->servoCount() || !m_client->servo(index).info.hasTable())
+    if (index < 0 || index >= m_client->servos()->count()
+        || !m_client->servos()->at(index).info.hasTable())
         return {};
-    const Servo &entry = m_client->servo(index);
+    const Servo &entry = m_client->servos()->at(index);
     const auto set = m_settings.servos.constFind({entry.info.id, entry.info.baud});
     if (set != m_settings.servos.constEnd())
         return *set;
@@ -51,9 +52,10 @@ GuardLimits BusGuard::limits(int index) const
 
 GuardLimits BusGuard::defaults(int index) const
 {
-    if (index < 0 || index >= m_client->servoCount() || !m_client->servo(index).info.hasTable())
+    if (index < 0 || index >= m_client->servos()->count()
+        || !m_client->servos()->at(index).info.hasTable())
         return {};
-    const Servo &entry = m_client->servo(index);
+    const Servo &entry = m_client->servos()->at(index);
     const model::ParameterModel *parameters = entry.parameters.get();
     return defaultGuardLimits(
         entry.info.table(), [parameters](QStringView key) -> std::optional<qint32> {
@@ -72,10 +74,11 @@ void BusGuard::send()
 {
     GuardSettings settings;
     settings.enabled = m_settings.enabled;
-    for (int i = 0; i < m_client->servoCount(); ++i) {
-        if (m_client->servo(i).info.hasTable())
-            settings.servos.insert({m_client->servo(i).info.id, m_client->servo(i).info.baud},
-                                   limits(i));
+    for (int i = 0; i < m_client->servos()->count(); ++i) {
+        if (m_client->servos()->at(i).info.hasTable())
+            settings.servos.insert(
+                {m_client->servos()->at(i).info.id, m_client->servos()->at(i).info.baud},
+                limits(i));
     }
     if (m_sent && m_sent->enabled == settings.enabled && m_sent->servos == settings.servos)
         return;
@@ -85,10 +88,10 @@ void BusGuard::send()
 
 std::optional<GuardEvent> BusGuard::lastEvent(int index) const
 {
-    if (index < 0 || index >= m_client->servoCount())
+    if (index < 0 || index >= m_client->servos()->count())
         return std::nullopt;
-    const auto event =
-        m_lastEvent.constFind({m_client->servo(index).info.id, m_client->servo(index).info.baud});
+    const auto event = m_lastEvent.constFind(
+        {m_client->servos()->at(index).info.id, m_client->servos()->at(index).info.baud});
     if (event == m_lastEvent.constEnd())
         return std::nullopt;
     return *event;
@@ -102,7 +105,7 @@ OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, QString *er
             *error = blocker;
         return nullptr;
     }
-    if (!m_client->servo(index).info.table().find(u"status")) {
+    if (!m_client->servos()->at(index).info.table().find(u"status")) {
         if (error)
             *error = Tr::tr("This servo has no status register: there is nothing to recover.");
         return nullptr;

@@ -31,8 +31,8 @@ void DoctorCheck::start(const BusObservation &seen, const QVector<ExpectedServo>
     m_seen = seen;
     m_seen.found.clear();
     m_seen.conditions.clear();
-    for (int i = 0; i < m_client->servoCount(); ++i)
-        m_seen.found.append(m_client->servo(i).info);
+    for (int i = 0; i < m_client->servos()->count(); ++i)
+        m_seen.found.append(m_client->servos()->at(i).info);
     m_expected = expected;
     m_next = 0;
     m_running = true;
@@ -51,7 +51,7 @@ void DoctorCheck::readNext()
     }
     emit progress(m_next, int(m_seen.found.size()));
     const ServoInfo &servo = m_seen.found.at(m_next);
-    const int index = m_client->indexOf(servo.id, servo.baud);
+    const int index = m_client->servos()->indexOf(servo.id, servo.baud);
     if (index < 0) {
         ++m_next;
         readNext();
@@ -73,9 +73,9 @@ void DoctorCheck::onRead(bool readable)
 {
     m_guard.stop();
     const ServoInfo servo = m_seen.found.at(m_next);
-    const int index = m_client->indexOf(servo.id, servo.baud);
+    const int index = m_client->servos()->indexOf(servo.id, servo.baud);
     if (index >= 0) {
-        const model::ParameterModel *values = m_client->parameters(index);
+        const model::ParameterModel *values = m_client->servos()->parameters(index);
         m_seen.conditions.append(servoCondition(
             servo, readable, [values](const QString &key) { return values->deviceValue(key); }));
     }

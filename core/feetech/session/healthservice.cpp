@@ -54,10 +54,10 @@ OperationReply *HealthService::check(const QVector<int> &indexes, int reads, QSt
         why = Tr::tr("No servo to check: scan the bus first.");
     QVector<ServoInfo> servos;
     for (const int index : indexes) {
-        if (index < 0 || index >= m_client->servoCount())
+        if (index < 0 || index >= m_client->servos()->count())
             why = Tr::tr("No servo is selected.");
         else
-            servos.append(m_client->servo(index).info);
+            servos.append(m_client->servos()->at(index).info);
     }
     if (!why.isEmpty()) {
         if (error)
@@ -91,7 +91,7 @@ OperationReply *HealthService::moveTest(int index, bool confirmed, QString *erro
     QString why = moveTestBlocker(index);
     if (why.isEmpty() && !confirmed)
         why = Tr::tr("The move test moves servo %1: it runs only once that is confirmed.")
-                  .arg(m_client->servo(index).info.id);
+                  .arg(m_client->servos()->at(index).info.id);
     if (!why.isEmpty()) {
         if (error)
             *error = why;

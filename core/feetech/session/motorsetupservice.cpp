@@ -94,10 +94,10 @@ void MotorSetupService::onWorkFinished(const OperationResult &result)
     }
     m_result.reset();
     // A servo of the list that was set up now answers elsewhere.
-    const int index = m_client->indexOf(reported.from.id, reported.from.baud);
+    const int index = m_client->servos()->indexOf(reported.from.id, reported.from.baud);
     const bool moved = reported.from.id != reported.to.id || reported.from.baud != reported.to.baud;
     if (reported.setUp && reported.ok && index >= 0 && moved)
-        m_client->moveServo(index, reported.to);
+        m_client->servos()->move(index, reported.to);
     emit finished(reported);
 }
 

@@ -36,7 +36,7 @@ TelemetryHub::TelemetryHub(BusClient *client)
     connect(session, &Session::telemetry, this, &TelemetryHub::onSamples);
     connect(session, &Session::telemetryStats, this, &TelemetryHub::onStats);
     // Samples belong to the servos as scanned: a new list starts without them.
-    connect(client, &BusClient::servosChanged, this, [this] { m_latest.clear(); });
+    connect(client->servos(), &ServoList::servosChanged, this, [this] { m_latest.clear(); });
 }
 
 bool TelemetryHub::subscribe(const QObject *subscriber, const QVector<int> &indexes, double rateHz,
@@ -55,9 +55,9 @@ bool TelemetryHub::subscribe(const QObject *subscriber, const QVector<int> &inde
         return refuse(Tr::tr("The rate cannot be negative."));
     Subscription subscription {subscriber, {}, rateHz, std::max(1, missesBeforeMissing)};
     for (const int index : indexes) {
-        if (index < 0 || index >= m_client->servoCount())
+        if (index < 0 || index >= m_client->servos()->count())
             return refuse(Tr::tr("No servo is selected."));
-        const ServoInfo &info = m_client->servo(index).info;
+        const ServoInfo &info = m_client->servos()->at(index).info;
         if (!info.hasTable())
             return refuse(Tr::tr("Servo %1 is of an unknown model: its feedback cannot be "
                                  "decoded.")
@@ -156,18 +156,18 @@ void TelemetryHub::stop()
 
 bool TelemetryHub::isStreamed(int index) const
 {
-    if (!m_streaming || index < 0 || index >= m_client->servoCount())
+    if (!m_streaming || index < 0 || index >= m_client->servos()->count())
         return false;
-    const ServoInfo &info = m_client->servo(index).info;
+    const ServoInfo &info = m_client->servos()->at(index).info;
     return std::any_of(m_options.servos.begin(), m_options.servos.end(),
                        [&info](const ServoInfo &s) { return sameServo(s, info); });
 }
 
 std::optional<FeedbackSample> TelemetryHub::latestSample(int index) const
 {
-    if (index < 0 || index >= m_client->servoCount())
+    if (index < 0 || index >= m_client->servos()->count())
         return std::nullopt;
-    const ServoInfo &info = m_client->servo(index).info;
+    const ServoInfo &info = m_client->servos()->at(index).info;
     const auto sample = m_latest.constFind({info.id, info.baud});
     if (sample == m_latest.constEnd())
         return std::nullopt;

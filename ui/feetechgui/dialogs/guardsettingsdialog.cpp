@@ -53,8 +53,8 @@ GuardSettingsDialog::GuardSettingsDialog(feetech::BusClient *client, QWidget *pa
                                         tr("Action")});
     m_table->verticalHeader()->hide();
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
-    for (int index = 0; index < client->servoCount(); ++index) {
-        const feetech::ServoInfo &info = client->servo(index).info;
+    for (int index = 0; index < client->servos()->count(); ++index) {
+        const feetech::ServoInfo &info = client->servos()->at(index).info;
         if (!info.hasTable())
             continue;
         const int row = m_table->rowCount();
@@ -145,7 +145,7 @@ feetech::GuardSettings GuardSettingsDialog::settings() const
         const int index = m_indexes.at(row);
         const feetech::GuardLimits limits = rowLimits(row);
         if (limits != m_client->guard()->defaults(index)) {
-            const feetech::ServoInfo &info = m_client->servo(index).info;
+            const feetech::ServoInfo &info = m_client->servos()->at(index).info;
             settings.servos.insert({info.id, info.baud}, limits);
         }
     }

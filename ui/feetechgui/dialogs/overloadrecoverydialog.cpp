@@ -13,8 +13,8 @@ OverloadRecoveryDialog::OverloadRecoveryDialog(feetech::BusClient *client, int i
                                                QWidget *parent)
     : QDialog(parent)
     , m_client(client)
-    , m_id(client->servo(index).info.id)
-    , m_baud(client->servo(index).info.baud)
+    , m_id(client->servos()->at(index).info.id)
+    , m_baud(client->servos()->at(index).info.baud)
 {
     setObjectName(QStringLiteral("overloadRecoveryDialog"));
     setWindowTitle(tr("Recover servo ID %1").arg(m_id));
@@ -50,7 +50,7 @@ void OverloadRecoveryDialog::start()
     if (!m_client)
         return;
     QString error;
-    const int index = m_client->indexOf(m_id, m_baud);
+    const int index = m_client->servos()->indexOf(m_id, m_baud);
     feetech::OperationReply *reply =
         index < 0 ? nullptr : m_client->guard()->recoverOverload(index, m_checkOnly, &error);
     if (!reply) {

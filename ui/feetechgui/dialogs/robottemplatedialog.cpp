@@ -64,8 +64,8 @@ RobotTemplateDialog::RobotTemplateDialog(feetech::BusClient *client, QWidget *pa
     m_base->setObjectName(QStringLiteral("templateBase"));
     for (const feetech::RobotTemplate &robot : std::as_const(m_templates))
         m_base->addItem(tr("Template: %1").arg(robot.name));
-    if (m_client->servoCount() > 0)
-        m_base->addItem(tr("The %n servo(s) the scan found", nullptr, m_client->servoCount()));
+    if (m_client->servos()->count() > 0)
+        m_base->addItem(tr("The %n servo(s) the scan found", nullptr, m_client->servos()->count()));
     m_name = new QLineEdit(this);
     m_name->setObjectName(QStringLiteral("templateName"));
     m_baud = new QComboBox(this);
@@ -89,8 +89,8 @@ RobotTemplateDialog::RobotTemplateDialog(feetech::BusClient *client, QWidget *pa
     remove->setObjectName(QStringLiteral("removeJoint"));
     m_servo = new QComboBox(this);
     m_servo->setObjectName(QStringLiteral("settingsServo"));
-    for (int i = 0; i < m_client->servoCount(); ++i) {
-        const feetech::ServoInfo &info = m_client->servo(i).info;
+    for (int i = 0; i < m_client->servos()->count(); ++i) {
+        const feetech::ServoInfo &info = m_client->servos()->at(i).info;
         m_servo->addItem(tr("ID %1 (%2)").arg(info.id).arg(info.model.name), i);
     }
     auto *take = new QPushButton(tr("Take settings from servo"), this);
@@ -193,8 +193,8 @@ void RobotTemplateDialog::startFrom(int at)
     // The servos the scan found: one joint each, named after its ID, no settings yet.
     feetech::RobotTemplate robot;
     robot.name = tr("My arm");
-    for (int i = 0; i < m_client->servoCount(); ++i) {
-        const feetech::ServoInfo &info = m_client->servo(i).info;
+    for (int i = 0; i < m_client->servos()->count(); ++i) {
+        const feetech::ServoInfo &info = m_client->servos()->at(i).info;
         if (i == 0)
             robot.baud = info.baud;
         feetech::RobotJoint joint;
@@ -332,11 +332,11 @@ void RobotTemplateDialog::takeSettingsFromServo()
 {
     const int row = m_joints->currentRow();
     const int index = m_servo->currentData().toInt();
-    if (row < 0 || index < 0 || index >= m_client->servoCount()) {
+    if (row < 0 || index < 0 || index >= m_client->servos()->count()) {
         m_error->setText(tr("Select a joint and a servo first."));
         return;
     }
-    if (m_client->servo(index).read) {
+    if (m_client->servos()->at(index).read) {
         applyServoValues(row, index);
         return;
     }
@@ -344,7 +344,7 @@ void RobotTemplateDialog::takeSettingsFromServo()
         m_error->setText(tr("The bus is busy: try again in a moment."));
         return;
     }
-    const feetech::ServoInfo &info = m_client->servo(index).info;
+    const feetech::ServoInfo &info = m_client->servos()->at(index).info;
     m_pendingRead = std::pair(row, std::pair(info.id, info.baud));
     m_error->setText(tr("Reading servo ID %1…").arg(info.id));
     if (feetech::OperationReply *reply = m_client->readServo(index))
@@ -364,7 +364,7 @@ void RobotTemplateDialog::onOperationFinished(const feetech::OperationResult &re
         m_error->setText(result.message);
         return;
     }
-    applyServoValues(row, m_client->indexOf(result.servo.id, result.servo.baud));
+    applyServoValues(row, m_client->servos()->indexOf(result.servo.id, result.servo.baud));
 }
 
 void RobotTemplateDialog::applyServoValues(int row, int index)
@@ -377,7 +377,7 @@ void RobotTemplateDialog::applyServoValues(int row, int index)
         m_error->setText(tr("Fix the template first: %1").arg(error));
         return;
     }
-    const model::ParameterModel *parameters = m_client->parameters(index);
+    const model::ParameterModel *parameters = m_client->servos()->parameters(index);
     QMap<QString, qint32> settings = robot->joints.at(row).settings;
     if (settings.isEmpty()) {
         m_error->setText(tr("Joint %1 sets no registers yet: type their keys (key=value), then "

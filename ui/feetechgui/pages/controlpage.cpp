@@ -118,8 +118,8 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
 
     connect(m_controls.torqueButtons, &QButtonGroup::idClicked, this, &ControlPage::setTorque);
     connect(m_controls.mode, &QComboBox::activated, this, [this] {
-        const auto device = m_index >= 0 && m_client->parameters(m_index)
-            ? m_client->parameters(m_index)->deviceValue(kMode)
+        const auto device = m_index >= 0 && m_client->servos()->parameters(m_index)
+            ? m_client->servos()->parameters(m_index)->deviceValue(kMode)
             : std::nullopt;
         m_modeEdited = !device || m_controls.mode->currentData().toLongLong() != *device;
         updateEnabled();
@@ -132,8 +132,10 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     connect(m_goals, &feetech::GoalStreamer::queuedGoalDue, this,
             [this](qint32 goal) { moveTo(goal); });
 
-    connect(m_client, &feetech::BusClient::servosChanged, this, &ControlPage::onServosChanged);
-    connect(m_client, &feetech::BusClient::servoUpdated, this, &ControlPage::onServoUpdated);
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this,
+            &ControlPage::onServosChanged);
+    connect(m_client->servos(), &feetech::ServoList::servoUpdated, this,
+            &ControlPage::onServoUpdated);
     connect(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived, this,
             &ControlPage::onTelemetry);
     connect(m_client->telemetry(), &feetech::TelemetryHub::streamingChanged, this,
@@ -174,11 +176,11 @@ ControlPage::~ControlPage()
 
 void ControlPage::setServo(int index)
 {
-    if (index < 0 || index >= m_client->servoCount())
+    if (index < 0 || index >= m_client->servos()->count())
         index = -1;
     const std::optional<std::pair<quint8, qint32>> servo = index >= 0
-        ? std::make_optional(
-            std::make_pair(m_client->servo(index).info.id, m_client->servo(index).info.baud))
+        ? std::make_optional(std::make_pair(m_client->servos()->at(index).info.id,
+                                            m_client->servos()->at(index).info.baud))
         : std::nullopt;
     const bool changed = servo != m_servo;
     m_index = index;
@@ -215,8 +217,8 @@ QString ControlPage::statusText() const
 
 bool ControlPage::ready() const
 {
-    return m_client->isConnected() && m_index >= 0 && m_index < m_client->servoCount()
-        && m_client->servo(m_index).info.hasTable();
+    return m_client->isConnected() && m_index >= 0 && m_index < m_client->servos()->count()
+        && m_client->servos()->at(m_index).info.hasTable();
 }
 
 bool ControlPage::testRunsHere() const
@@ -232,7 +234,7 @@ QString ControlPage::servoName() const
 void ControlPage::onServosChanged()
 {
     // The list was rebuilt or reordered: find the servo shown by its address.
-    const int index = m_servo ? m_client->indexOf(m_servo->first, m_servo->second) : -1;
+    const int index = m_servo ? m_client->servos()->indexOf(m_servo->first, m_servo->second) : -1;
     if (index != m_index) {
         m_index = index;
         if (index < 0)
@@ -254,8 +256,8 @@ void ControlPage::configureForServo()
         updatePresent();
         return;
     }
-    const feetech::RegisterTable &table = m_client->servo(m_index).info.table();
-    const model::ParameterModel *parameters = m_client->parameters(m_index);
+    const feetech::RegisterTable &table = m_client->servos()->at(m_index).info.table();
+    const model::ParameterModel *parameters = m_client->servos()->parameters(m_index);
 
     const bool damping = allowsDamping(table);
     m_controls.torqueDamping->setToolTip(
@@ -354,10 +356,10 @@ void ControlPage::syncFromDevice()
 {
     if (!ready())
         return;
-    const model::ParameterModel *parameters = m_client->parameters(m_index);
+    const model::ParameterModel *parameters = m_client->servos()->parameters(m_index);
     const auto torque = parameters->deviceValue(kTorqueEnable);
     const auto mode =
-        torque ? m_client->servo(m_index).info.table().torqueMode(*torque) : std::nullopt;
+        torque ? m_client->servos()->at(m_index).info.table().torqueMode(*torque) : std::nullopt;
     QAbstractButton *checked = mode ? m_controls.torqueButtons->button(int(*mode)) : nullptr;
     if (checked) {
         checked->setChecked(true);
@@ -430,7 +432,7 @@ void ControlPage::updatePresent()
     } else {
         // Whichever came last: a telemetry sample, or a read of the register (the stream may
         // have stopped since its last sample, or never have carried this servo).
-        const model::ParameterModel *parameters = m_client->parameters(m_index);
+        const model::ParameterModel *parameters = m_client->servos()->parameters(m_index);
         const qint64 readMs = parameters->lastReadMs(kPresentPosition);
         if (readMs != m_presentReadMs) {
             m_presentReadMs = readMs;
@@ -459,7 +461,8 @@ void ControlPage::updateEnabled()
 {
     const bool ok = ready();
     const bool here = testRunsHere();
-    const feetech::RegisterTable *table = ok ? &m_client->servo(m_index).info.table() : nullptr;
+    const feetech::RegisterTable *table =
+        ok ? &m_client->servos()->at(m_index).info.table() : nullptr;
     const auto has = [table](const QString &key) {
         return table && table->find(key);
     };
@@ -503,7 +506,7 @@ void ControlPage::onTestRunning(bool running)
     } else if (ready() && m_test->plan().index == m_index) {
         // The goal controls take over from where the test left the goal, so a touch of the
         // slider does not jump the horn back to an old one.
-        if (const auto goal = m_client->parameters(m_index)->deviceValue(kGoalPosition)) {
+        if (const auto goal = m_client->servos()->parameters(m_index)->deviceValue(kGoalPosition)) {
             const QSignalBlocker spinBlocker(m_controls.goal);
             const QSignalBlocker sliderBlocker(m_controls.slider);
             m_controls.goal->setValue(toInt(*goal));
@@ -554,7 +557,7 @@ bool ControlPage::write(WriteKind kind, const QVector<model::WriteItem> &values)
 void ControlPage::setTorque(int modeId)
 {
     const auto value = ready()
-        ? m_client->servo(m_index).info.table().torqueValue(feetech::TorqueMode(modeId))
+        ? m_client->servos()->at(m_index).info.table().torqueValue(feetech::TorqueMode(modeId))
         : std::nullopt;
     if (!value) {
         syncFromDevice();
@@ -607,7 +610,7 @@ bool ControlPage::moveTo(qint32 position, QString *error)
                           .arg(range->minimum)
                           .arg(range->maximum));
 
-    const feetech::RegisterTable &table = m_client->servo(m_index).info.table();
+    const feetech::RegisterTable &table = m_client->servos()->at(m_index).info.table();
     QVector<model::WriteItem> values;
     if (table.find(kAcceleration))
         values.append({kAcceleration, m_controls.acceleration->value()});
@@ -620,9 +623,10 @@ bool ControlPage::moveTo(qint32 position, QString *error)
         return false;
     }
     const bool torqueWritePending = m_torqueWritesInFlight > 0;
-    const auto torque = m_client->parameters(m_index)->deviceValue(kTorqueEnable);
+    const auto torque = m_client->servos()->parameters(m_index)->deviceValue(kTorqueEnable);
     if (!torqueWritePending && torque
-        && m_client->servo(m_index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off)
+        && m_client->servos()->at(m_index).info.table().torqueMode(*torque)
+            == feetech::TorqueMode::Off)
         setStatus(tr("Torque is off: %1 keeps the goal but does not move until torque is on.")
                       .arg(servoName()),
                   Severity::Warning);
@@ -642,7 +646,7 @@ void ControlPage::changeMode()
     if (!ready() || m_controls.mode->currentIndex() < 0)
         return;
     const qint64 value = m_controls.mode->currentData().toLongLong();
-    const auto device = m_client->parameters(m_index)->deviceValue(kMode);
+    const auto device = m_client->servos()->parameters(m_index)->deviceValue(kMode);
     if (device && *device == value) {
         m_modeEdited = false;
         updateEnabled();

@@ -40,7 +40,8 @@ GuardBanner::GuardBanner(feetech::BusClient *client, QWidget *parent)
     connect(m_settings, &QPushButton::clicked, this, &GuardBanner::openGuardSettings);
     row->addWidget(m_settings);
     connect(m_client->guard(), &feetech::BusGuard::event, this, &GuardBanner::onGuardEvent);
-    connect(m_client, &feetech::BusClient::servosChanged, this, &GuardBanner::onServosChanged);
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this,
+            &GuardBanner::onServosChanged);
     // A recovery of the servo shown clears the banner, from the recovery dialog or elsewhere.
     connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
         if (reply->operation() != feetech::Operation::RecoverOverload)
@@ -59,8 +60,8 @@ GuardBanner::GuardBanner(feetech::BusClient *client, QWidget *parent)
 void GuardBanner::setServo(int index)
 {
     m_index = index;
-    m_servo = index >= 0 ? std::make_optional(
-                  std::make_pair(m_client->servo(index).info.id, m_client->servo(index).info.baud))
+    m_servo = index >= 0 ? std::make_optional(std::make_pair(
+                  m_client->servos()->at(index).info.id, m_client->servos()->at(index).info.baud))
                          : std::nullopt;
     showGuard();
 }
@@ -73,7 +74,7 @@ QString GuardBanner::text() const
 void GuardBanner::onServosChanged()
 {
     // The list was rebuilt or reordered: find the servo shown by its address.
-    m_index = m_servo ? m_client->indexOf(m_servo->first, m_servo->second) : -1;
+    m_index = m_servo ? m_client->servos()->indexOf(m_servo->first, m_servo->second) : -1;
     if (m_index < 0)
         m_servo.reset();
 }
@@ -88,7 +89,7 @@ void GuardBanner::showGuard()
 {
     const auto event = m_index >= 0 ? m_client->guard()->lastEvent(m_index) : std::nullopt;
     setVisible(m_index >= 0);
-    m_settings->setEnabled(m_client->servoCount() > 0);
+    m_settings->setEnabled(m_client->servos()->count() > 0);
     if (!event) {
         m_text->setText(m_client->guard()->settings().enabled
                             ? tr("Guard on: an overloaded servo is stopped (held where "
@@ -126,8 +127,8 @@ void GuardBanner::openGuardSettings()
 void GuardBanner::openRecovery()
 {
     // Connected, a servo with a known table: as the page asks before it moves one.
-    if (!m_client->isConnected() || m_index < 0 || m_index >= m_client->servoCount()
-        || !m_client->servo(m_index).info.hasTable())
+    if (!m_client->isConnected() || m_index < 0 || m_index >= m_client->servos()->count()
+        || !m_client->servos()->at(m_index).info.hasTable())
         return;
     auto *dialog = new OverloadRecoveryDialog(m_client, m_index, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);

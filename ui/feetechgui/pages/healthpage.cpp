@@ -115,7 +115,7 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
     connect(m_move, &QPushButton::clicked, this, [this] { moveTest(); });
     connect(m_save, &QPushButton::clicked, this, &HealthPage::chooseReportFile);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &HealthPage::updateActions);
-    connect(m_client, &feetech::BusClient::servosChanged, this, [this] {
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this, [this] {
         m_readings.clear();
         m_moves.clear();
         reassess();
@@ -157,7 +157,7 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
 bool HealthPage::check(QString *error)
 {
     QVector<int> indexes;
-    for (int i = 0; i < m_client->servoCount(); ++i)
+    for (int i = 0; i < m_client->servos()->count(); ++i)
         indexes.append(i);
     QString why;
     if (!m_client->health()->check(indexes, feetech::kDefaultHealthReads, &why)) {
@@ -192,7 +192,7 @@ bool HealthPage::moveTest(QString *error)
     if (why.isEmpty()) {
         // The question runs its own event loop: by its answer the servo list may have changed,
         // so the servo confirmed is looked up again by its address.
-        const feetech::ServoInfo info = m_client->servo(index).info;
+        const feetech::ServoInfo info = m_client->servos()->at(index).info;
         const QString question =
             tr("Servo %1 (%2) will move %3 steps from where it stands and back, with its torque "
                "on meanwhile. Make sure nothing is in the way. Move it?")
@@ -200,7 +200,7 @@ bool HealthPage::moveTest(QString *error)
                 .arg(info.model.name)
                 .arg(feetech::HealthMoveTest::kAmplitude);
         const bool confirmed = m_confirm(question);
-        index = m_client->indexOf(info.id, info.baud);
+        index = m_client->servos()->indexOf(info.id, info.baud);
         if (!confirmed)
             why = tr("The move test was not confirmed: nothing moved.");
         else if (index < 0)
@@ -214,7 +214,7 @@ bool HealthPage::moveTest(QString *error)
             *error = why;
         return false;
     }
-    showState(tr("Moving servo %1…").arg(m_client->servo(index).info.id), false);
+    showState(tr("Moving servo %1…").arg(m_client->servos()->at(index).info.id), false);
     updateActions();
     return true;
 }
@@ -259,8 +259,8 @@ void HealthPage::chooseReportFile()
 QVector<ServoHealth> HealthPage::results() const
 {
     QVector<ServoHealth> checked;
-    for (int i = 0; i < m_client->servoCount(); ++i) {
-        const feetech::ServoInfo &info = m_client->servo(i).info;
+    for (int i = 0; i < m_client->servos()->count(); ++i) {
+        const feetech::ServoInfo &info = m_client->servos()->at(i).info;
         const auto found = m_health.constFind({info.id, info.baud});
         if (found != m_health.constEnd())
             checked.append(*found);
@@ -271,8 +271,8 @@ QVector<ServoHealth> HealthPage::results() const
 void HealthPage::reassess()
 {
     QVector<ServoHealth> verdicts;
-    for (int i = 0; i < m_client->servoCount(); ++i) {
-        const feetech::ServoInfo &info = m_client->servo(i).info;
+    for (int i = 0; i < m_client->servos()->count(); ++i) {
+        const feetech::ServoInfo &info = m_client->servos()->at(i).info;
         const auto reading = m_readings.constFind({info.id, info.baud});
         if (reading == m_readings.constEnd())
             continue;
@@ -292,9 +292,9 @@ void HealthPage::reassess()
 void HealthPage::rebuildRows()
 {
     const int selected = m_table->currentRow();
-    m_table->setRowCount(m_client->servoCount());
-    for (int row = 0; row < m_client->servoCount(); ++row) {
-        const feetech::ServoInfo &info = m_client->servo(row).info;
+    m_table->setRowCount(m_client->servos()->count());
+    for (int row = 0; row < m_client->servos()->count(); ++row) {
+        const feetech::ServoInfo &info = m_client->servos()->at(row).info;
         ServoHealth health;
         const auto found = m_health.constFind({info.id, info.baud});
         if (found != m_health.constEnd())
@@ -316,8 +316,8 @@ void HealthPage::rebuildRows()
     m_table->resizeRowsToContents();
     if (selected >= 0 && selected < m_table->rowCount())
         m_table->selectRow(selected);
-    m_stack->setCurrentWidget(m_client->servoCount() == 0 ? static_cast<QWidget *>(m_empty)
-                                                          : m_table);
+    m_stack->setCurrentWidget(m_client->servos()->count() == 0 ? static_cast<QWidget *>(m_empty)
+                                                               : m_table);
     updateActions();
 }
 
@@ -356,7 +356,7 @@ void HealthPage::fillRow(int row, const ServoHealth &health)
 void HealthPage::updateActions()
 {
     const bool idle = m_client->isConnected() && !m_client->isBusy();
-    m_check->setEnabled(idle && m_client->servoCount() > 0 && !m_checking);
+    m_check->setEnabled(idle && m_client->servos()->count() > 0 && !m_checking);
     m_cancel->setEnabled(m_checking);
     const int index = selectedServo();
     m_move->setEnabled(!m_checking && !m_moving && index >= 0
@@ -379,7 +379,8 @@ void HealthPage::showState(const QString &text, bool error)
 int HealthPage::selectedServo() const
 {
     const int row = m_table->currentRow();
-    return row >= 0 && row < m_client->servoCount() && m_table->selectionModel()->hasSelection()
+    return row >= 0 && row < m_client->servos()->count()
+            && m_table->selectionModel()->hasSelection()
         ? row
         : -1;
 }

@@ -90,15 +90,15 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     connect(m_table, &JointTableView::targetEdited, this, &JointTable::setTarget);
     connect(m_table, &JointTableView::torqueToggled, this, &JointTable::onTorqueToggled);
 
-    connect(m_client, &feetech::BusClient::servosChanged, this, &JointTable::rebuild);
-    connect(m_client, &feetech::BusClient::servoUpdated, this, [this](int index) {
-        if (index < 0 || index >= m_client->servoCount())
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this, &JointTable::rebuild);
+    connect(m_client->servos(), &feetech::ServoList::servoUpdated, this, [this](int index) {
+        if (index < 0 || index >= m_client->servos()->count())
             return;
-        const feetech::ServoInfo &info = m_client->servo(index).info;
+        const feetech::ServoInfo &info = m_client->servos()->at(index).info;
         const int row = rowOf(info.id, info.baud);
         if (row < 0)
             return;
-        const qint64 readMs = m_client->parameters(index)->lastReadMs(kPresentPosition);
+        const qint64 readMs = m_client->servos()->parameters(index)->lastReadMs(kPresentPosition);
         if (readMs != m_rows[row].modelReadMs) {
             m_rows[row].modelReadMs = readMs;
             m_rows[row].sampleNewer = false;
@@ -153,7 +153,7 @@ int JointTable::servoIndex(int row) const
 {
     if (row < 0 || row >= rowCount())
         return -1;
-    return m_client->indexOf(m_rows.at(row).id, m_rows.at(row).baud);
+    return m_client->servos()->indexOf(m_rows.at(row).id, m_rows.at(row).baud);
 }
 
 QVector<feetech::JointTarget> JointTable::joints() const
@@ -170,7 +170,7 @@ std::optional<qint64> JointTable::deviceValue(int row, const QString &key) const
     const int index = servoIndex(row);
     if (index < 0)
         return std::nullopt;
-    return m_client->parameters(index)->deviceValue(key);
+    return m_client->servos()->parameters(index)->deviceValue(key);
 }
 
 bool JointTable::isPositionLive(int row) const
@@ -256,7 +256,9 @@ QString JointTable::servoName(int row) const
     const int index = servoIndex(row);
     if (index < 0)
         return tr("ID %1").arg(m_rows.at(row).id);
-    return tr("ID %1 (%2)").arg(m_rows.at(row).id).arg(m_client->servo(index).info.model.name);
+    return tr("ID %1 (%2)")
+        .arg(m_rows.at(row).id)
+        .arg(m_client->servos()->at(index).info.model.name);
 }
 
 void JointTable::setMessage(const QString &text, Tone tone)
@@ -292,15 +294,15 @@ void JointTable::rebuild()
             targets.insert(servoKey(row.id, row.baud), *row.target);
     }
     m_rows.clear();
-    for (int index = 0; index < m_client->servoCount(); ++index) {
-        const feetech::ServoInfo &info = m_client->servo(index).info;
+    for (int index = 0; index < m_client->servos()->count(); ++index) {
+        const feetech::ServoInfo &info = m_client->servos()->at(index).info;
         Row row;
         row.id = info.id;
         row.baud = info.baud;
         const quint64 key = servoKey(info.id, info.baud);
         if (targets.contains(key))
             row.target = targets.value(key);
-        row.modelReadMs = m_client->parameters(index)->lastReadMs(kPresentPosition);
+        row.modelReadMs = m_client->servos()->parameters(index)->lastReadMs(kPresentPosition);
         m_rows.append(row);
     }
     m_table->resetRows(rowCount());
@@ -338,7 +340,8 @@ void JointTable::readWhileShown(bool all)
     for (int row = 0; row < rowCount(); ++row) {
         const int index = servoIndex(row);
         const quint64 key = servoKey(m_rows.at(row).id, m_rows.at(row).baud);
-        if (index < 0 || (!all && (m_client->servo(index).read || m_readAsked.contains(key))))
+        if (index < 0
+            || (!all && (m_client->servos()->at(index).read || m_readAsked.contains(key))))
             continue;
         m_readAsked.insert(key);
         m_client->readServo(index);
@@ -451,7 +454,7 @@ void JointTable::refreshRow(int row)
     const int index = servoIndex(row);
     if (index < 0)
         return;
-    const feetech::ServoInfo &info = m_client->servo(index).info;
+    const feetech::ServoInfo &info = m_client->servos()->at(index).info;
     JointTableView::Torque torque;
     torque.device = deviceValue(row, kTorqueEnable);
     torque.mode = torque.device ? info.table().torqueMode(*torque.device) : std::nullopt;
@@ -489,7 +492,7 @@ bool JointTable::setTorque(int row, bool on, QString *error)
         return false;
     }
     const feetech::TorqueMode mode = on ? feetech::TorqueMode::On : feetech::TorqueMode::Off;
-    const auto value = m_client->servo(index).info.table().torqueValue(mode);
+    const auto value = m_client->servos()->at(index).info.table().torqueValue(mode);
     QString why = tr("its model has no torque enable");
     feetech::OperationReply *reply =
         value ? m_client->writeValues(index, {{kTorqueEnable, *value}}, &why) : nullptr;
@@ -530,7 +533,8 @@ bool JointTable::moveAll(QString *error)
         joint.mode = deviceValue(row, kMode);
         const auto torque = deviceValue(row, kTorqueEnable);
         joint.torqueOff = index >= 0 && torque
-            && m_client->servo(index).info.table().torqueMode(*torque) == feetech::TorqueMode::Off;
+            && m_client->servos()->at(index).info.table().torqueMode(*torque)
+                == feetech::TorqueMode::Off;
         joints.append(joint);
     }
     const feetech::MoveAllPlan plan = feetech::planMoveAll(joints);
@@ -552,7 +556,7 @@ bool JointTable::moveAll(QString *error)
     case feetech::MoveAllPlan::Refusal::NotPositionMode: {
         const qint64 mode = *joints.at(refused).mode;
         const feetech::Register *reg =
-            m_client->servo(servoIndex(refused)).info.table().find(kMode);
+            m_client->servos()->at(servoIndex(refused)).info.table().find(kMode);
         return refuse(
             tr("%1 is in %2 mode; a goal position only moves a servo in position "
                "mode. Nothing was sent.")

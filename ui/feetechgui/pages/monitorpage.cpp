@@ -87,7 +87,8 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     });
 
     if (m_client) {
-        connect(m_client, &feetech::BusClient::servosChanged, this, &MonitorPage::rebuildServoList);
+        connect(m_client->servos(), &feetech::ServoList::servosChanged, this,
+                &MonitorPage::rebuildServoList);
         connect(m_client->telemetry(), &feetech::TelemetryHub::samplesReceived, this,
                 &MonitorPage::addSamples);
         connect(m_client->telemetry(), &feetech::TelemetryHub::statsChanged, this,

@@ -31,9 +31,9 @@ void MonitorServoList::rebuild(const feetech::BusClient *client)
         previous.insert(keyOf(item(row)), item(row)->checkState() == Qt::Checked);
     m_updating = true;
     clear();
-    const int servos = client ? client->servoCount() : 0;
+    const int servos = client ? client->servos()->count() : 0;
     for (int index = 0; index < servos; ++index) {
-        const feetech::ServoInfo &info = client->servo(index).info;
+        const feetech::ServoInfo &info = client->servos()->at(index).info;
         const QString model = info.model.name.isEmpty() ? tr("unknown model") : info.model.name;
         auto *entry = new QListWidgetItem(
             tr("ID %1 · %2 · %3").arg(info.id).arg(model, feetech::baudText(info.baud)), this);

@@ -27,7 +27,7 @@ enum Column { JointColumn, OffsetColumn, MinimumColumn, MaximumColumn, StatusCol
 // Register `key` of servo `index` as last read; 0 when it was never read.
 qint32 deviceValue(const feetech::BusClient &client, int index, const QString &key)
 {
-    return qint32(client.parameters(index)->deviceValue(key).value_or(0));
+    return qint32(client.servos()->parameters(index)->deviceValue(key).value_or(0));
 }
 
 // Application-modal, not window-modal: the set-up wizard is a window of its own (modeless), and
@@ -55,7 +55,7 @@ CalibrationSaver::CalibrationSaver(feetech::BusClient *client, QObject *parent)
             [this](int step, bool ok, const QString &message) {
                 if (!ok && m_failure.isEmpty())
                     m_failure = tr("Servo %1 could not be read: %2; nothing was saved.")
-                                    .arg(m_client->servo(m_indexes.at(step)).info.id)
+                                    .arg(m_client->servos()->at(m_indexes.at(step)).info.id)
                                     .arg(message);
             });
     connect(m_steps, &CalibrationSteps::finished, this, [this](bool allOk) {
@@ -68,7 +68,7 @@ CalibrationSaver::CalibrationSaver(feetech::BusClient *client, QObject *parent)
             const int index = m_indexes.at(i);
             const feetech::LeRobotMotor motor {
                 m_names.at(i),
-                m_client->servo(index).info.id,
+                m_client->servos()->at(index).info.id,
                 0,
                 deviceValue(*m_client, index, QString::fromUtf16(feetech::kOffsetKey)),
                 deviceValue(*m_client, index, QString::fromUtf16(feetech::kMinimumLimitKey)),
@@ -105,7 +105,7 @@ bool CalibrationSaver::save(const QString &path, QString *error)
     m_names.clear();
     QVector<CalibrationSteps::Step> steps;
     for (const ArmJoint &joint : armJoints(*m_client, defaultTemplate(templates))) {
-        const feetech::ServoInfo &info = m_client->servo(joint.index).info;
+        const feetech::ServoInfo &info = m_client->servos()->at(joint.index).info;
         if (!info.hasTable() || !feetech::calibrationLimits(info.table()))
             continue;
         m_indexes.append(joint.index);
@@ -172,8 +172,8 @@ LoadCalibrationDialog::LoadCalibrationDialog(feetech::BusClient *client,
         m_table->setItem(row, JointColumn,
                          new QTableWidgetItem(tr("%1 (%2)").arg(motor.name).arg(motor.id)));
         int found = -1;
-        for (int index = 0; index < client->servoCount() && found < 0; ++index) {
-            if (client->servo(index).info.id == motor.id)
+        for (int index = 0; index < client->servos()->count() && found < 0; ++index) {
+            if (client->servos()->at(index).info.id == motor.id)
                 found = index;
         }
         m_indexes.append(found);
@@ -254,7 +254,8 @@ void LoadCalibrationDialog::onRead(bool allOk)
         }
         if (!changed) {
             setStatus(row, tr("Unchanged"), false);
-        } else if (m_client->parameters(index)->deviceValue(QStringLiteral("torque_enable"))
+        } else if (m_client->servos()->parameters(index)->deviceValue(
+                       QStringLiteral("torque_enable"))
                    != std::optional<qint64>(0)) {
             // A new offset under torque would move the horn to the old goal's new place.
             setStatus(row,
@@ -321,7 +322,8 @@ CalibrationActions::CalibrationActions(QMenu *menu, feetech::BusClient *client, 
     m_load->setToolTip(tr("Write a LeRobot calibration file to the servos, after showing what "
                           "changes"));
     connect(client, &feetech::BusClient::statusChanged, this, &CalibrationActions::updateEnabled);
-    connect(client, &feetech::BusClient::servosChanged, this, &CalibrationActions::updateEnabled);
+    connect(client->servos(), &feetech::ServoList::servosChanged, this,
+            &CalibrationActions::updateEnabled);
     connect(client, &feetech::BusClient::scanFinished, this, &CalibrationActions::updateEnabled);
     updateEnabled();
 }
@@ -329,7 +331,7 @@ CalibrationActions::CalibrationActions(QMenu *menu, feetech::BusClient *client, 
 void CalibrationActions::updateEnabled()
 {
     const bool ready =
-        m_client->isConnected() && !m_client->isScanning() && m_client->servoCount() > 0;
+        m_client->isConnected() && !m_client->isScanning() && m_client->servos()->count() > 0;
     for (QAction *action : {m_calibrate, m_save, m_load})
         action->setEnabled(ready);
 }

@@ -54,8 +54,8 @@ QTableWidgetItem *fixedItem(const QString &text)
 QVector<ArmJoint> armJoints(const feetech::BusClient &client, const feetech::RobotTemplate *robot)
 {
     QVector<ArmJoint> joints;
-    for (int index = 0; index < client.servoCount(); ++index) {
-        const feetech::ServoInfo &info = client.servo(index).info;
+    for (int index = 0; index < client.servos()->count(); ++index) {
+        const feetech::ServoInfo &info = client.servos()->at(index).info;
         ArmJoint joint;
         joint.index = index;
         joint.joint.id = info.id;
@@ -167,7 +167,7 @@ void CalibrationJointsPage::fillJointTable()
     m_jointTable->setRowCount(int(joints.size()));
     for (int row = 0; row < joints.size(); ++row) {
         const ArmJoint &joint = joints.at(row);
-        const feetech::ServoInfo &info = m_client->servo(joint.index).info;
+        const feetech::ServoInfo &info = m_client->servos()->at(joint.index).info;
         const bool calibratable = info.hasTable() && feetech::calibrationLimits(info.table());
         const bool inTemplate = !robot || robot->joint(joint.joint.name) != nullptr;
         auto *calibrate = checkItem(calibratable && inTemplate);
@@ -202,7 +202,7 @@ bool CalibrationJointsPage::choose(Choice *choice, QString *error) const
         if (m_jointTable->item(row, CalibrateColumn)->checkState() != Qt::Checked)
             continue;
         const int index = m_jointTable->item(row, CalibrateColumn)->data(Qt::UserRole).toInt();
-        const feetech::ServoInfo &info = m_client->servo(index).info;
+        const feetech::ServoInfo &info = m_client->servos()->at(index).info;
         const QString name = m_jointTable->item(row, NameColumn)->text().trimmed();
         if (!feetech::isLeRobotMotorName(name))
             return refuse(tr("\"%1\" is not a joint name: use letters, digits and _, a letter "

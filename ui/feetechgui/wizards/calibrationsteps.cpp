@@ -62,14 +62,14 @@ void CalibrationSteps::onOperationFinished(const feetech::OperationResult &resul
     if (!isRunning())
         return;
     const Step &step = m_steps.at(m_next - 1);
-    if (step.index >= m_client->servoCount())
+    if (step.index >= m_client->servos()->count())
         return;
     bool ok = result.ok;
     QString message = result.message;
     if (ok && !step.writes.isEmpty()) {
         // The read-back reached the model before the result: compare with what was written.
         QHash<QString, qint32> readBack;
-        const model::ParameterModel *parameters = m_client->parameters(step.index);
+        const model::ParameterModel *parameters = m_client->servos()->parameters(step.index);
         for (const model::WriteItem &item : step.writes) {
             if (const auto value = parameters->deviceValue(item.key))
                 readBack.insert(item.key, qint32(*value));

@@ -86,7 +86,8 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             if (!allOk)
                 return; // onStepFinished said why; the warning page stays
             for (int i = 0; i < m_recordings.size(); ++i) {
-                const auto offset = m_client->parameters(m_indexes.at(i))
+                const auto offset = m_client->servos()
+                                        ->parameters(m_indexes.at(i))
                                         ->deviceValue(QString::fromUtf16(feetech::kOffsetKey));
                 m_recordings[i].currentOffset = qint32(offset.value_or(0));
             }
@@ -305,7 +306,7 @@ void CalibrationWizard::onStepFinished(int step, bool ok, const QString &message
         const int index = m_indexes.at(step % m_indexes.size());
         m_stage = Stage::Choosing;
         m_torqueOff->setEnabled(true);
-        fail(tr("Servo %1: %2").arg(m_client->servo(index).info.id).arg(message));
+        fail(tr("Servo %1: %2").arg(m_client->servos()->at(index).info.id).arg(message));
         return;
     }
     if (m_stage != Stage::Writing || step >= m_writeRows.size())
@@ -323,7 +324,7 @@ void CalibrationWizard::onTelemetry(const QVector<feetech::FeedbackSample> &samp
     for (const feetech::FeedbackSample &sample : samples) {
         const auto position = sample.value(feetech::Quantity::Position);
         for (int i = 0; i < m_recordings.size(); ++i) {
-            const feetech::ServoInfo &info = m_client->servo(m_indexes.at(i)).info;
+            const feetech::ServoInfo &info = m_client->servos()->at(m_indexes.at(i)).info;
             if (!position || info.id != sample.id || info.baud != sample.baud)
                 continue;
             if (i < m_freshPositions.size())
@@ -342,7 +343,7 @@ void CalibrationWizard::onTelemetryStats(const feetech::TelemetryStats &stats)
     const bool recording = page() == Page::Recording;
     for (const feetech::ServoTelemetry &servo : stats.servos) {
         for (int i = 0; i < m_recordings.size(); ++i) {
-            const feetech::ServoInfo &info = m_client->servo(m_indexes.at(i)).info;
+            const feetech::ServoInfo &info = m_client->servos()->at(m_indexes.at(i)).info;
             if (!servo.missing || info.id != servo.id || info.baud != servo.baud)
                 continue;
             if (i < m_freshPositions.size())

@@ -205,7 +205,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_settings, &ParameterPage::applyRequested, this, &FeetechWorkspace::apply);
     connect(m_memory, &MemoryTablePage::applyRequested, this, &FeetechWorkspace::apply);
     connect(m_memory, &MemoryTablePage::revertRequested, this, [this] {
-        if (auto *parameters = m_client->parameters(currentIndex()))
+        if (auto *parameters = m_client->servos()->parameters(currentIndex()))
             parameters->revertAll();
     });
     connect(m_settings, &ParameterPage::saveProfileRequested, this,
@@ -213,8 +213,9 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_settings, &ParameterPage::loadProfileRequested, this,
             &FeetechWorkspace::chooseProfileToLoad);
 
-    connect(m_client, &feetech::BusClient::servosChanged, this, &FeetechWorkspace::rebuildTree);
-    connect(m_client, &feetech::BusClient::servoUpdated, this, [this](int index) {
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this,
+            &FeetechWorkspace::rebuildTree);
+    connect(m_client->servos(), &feetech::ServoList::servoUpdated, this, [this](int index) {
         if (index == currentIndex())
             updateHeader();
         updateActions();
@@ -222,7 +223,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         updateActions();
         updateHeader();
-        if (m_client->servoCount() == 0 && !m_client->isScanning())
+        if (m_client->servos()->count() == 0 && !m_client->isScanning())
             m_scanState->setText(m_client->isConnected()
                                      ? tr("Press Scan… to find the servos on the bus.")
                                      : tr("Connect, then scan to find the servos."));
@@ -252,8 +253,9 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
                 m_scanState->setText(text);
                 if (!completed)
                     emit problem(text);
-                if (!m_current && m_client->servoCount() > 0)
-                    selectServo(m_client->servo(0).info.id, m_client->servo(0).info.baud);
+                if (!m_current && m_client->servos()->count() > 0)
+                    selectServo(m_client->servos()->at(0).info.id,
+                                m_client->servos()->at(0).info.baud);
                 updateActions();
             });
     m_robot = new RobotActions(m_client, this);
@@ -270,7 +272,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
 
 int FeetechWorkspace::currentIndex() const
 {
-    return m_current ? m_client->indexOf(m_current->first, m_current->second) : -1;
+    return m_current ? m_client->servos()->indexOf(m_current->first, m_current->second) : -1;
 }
 
 void FeetechWorkspace::setPortName(const QString &name)
@@ -296,8 +298,8 @@ void FeetechWorkspace::readIfNew()
     // Once, when a servo is chosen: a servo that cannot be read must not be asked forever, and
     // a shared ID, whose answers collide, is not asked at all (Read still asks).
     const int index = currentIndex();
-    if (index >= 0 && !m_client->servo(index).read && !m_client->servo(index).info.sharedId
-        && !m_client->isBusy())
+    if (index >= 0 && !m_client->servos()->at(index).read
+        && !m_client->servos()->at(index).info.sharedId && !m_client->isBusy())
         m_client->readServo(index);
 }
 
@@ -320,7 +322,7 @@ void FeetechWorkspace::showServo()
     if (m_control->servo() != index)
         m_control->setServo(index);
     m_unlocked->showServo(index);
-    model::ParameterModel *parameters = m_client->parameters(index);
+    model::ParameterModel *parameters = m_client->servos()->parameters(index);
     if (m_settings->parameterModel() != parameters) {
         if (m_settings->parameterModel())
             disconnect(m_settings->parameterModel(), nullptr, this, nullptr);
@@ -339,7 +341,7 @@ QString FeetechWorkspace::servoTitle() const
     const int index = currentIndex();
     if (index < 0)
         return {};
-    const feetech::ServoInfo &info = m_client->servo(index).info;
+    const feetech::ServoInfo &info = m_client->servos()->at(index).info;
     return tr("servo %1 (%2)").arg(info.id).arg(info.model.name);
 }
 
@@ -348,13 +350,13 @@ void FeetechWorkspace::updateHeader()
     const int index = currentIndex();
     m_memory->setEmptyStateShown(index < 0);
     if (index < 0) {
-        m_header->setText(m_client->servoCount() > 0 ? tr("Choose a servo in the tree.")
+        m_header->setText(m_client->servos()->count() > 0 ? tr("Choose a servo in the tree.")
                               : m_client->isConnected()
                               ? tr("No servo yet: scan the bus.")
                               : tr("No servo yet: connect to the bus and scan."));
         return;
     }
-    const feetech::Servo &servo = m_client->servo(index);
+    const feetech::Servo &servo = m_client->servos()->at(index);
     const feetech::ServoInfo &info = servo.info;
     const QString family =
         info.model.family ? feetech::familyName(*info.model.family) : tr("unknown family");
@@ -388,15 +390,15 @@ void FeetechWorkspace::updateActions()
     const bool connected = m_client->isConnected();
     const bool idle = !m_client->isBusy();
     // Two servos at one ID would both take a write: nothing is sent to a shared ID.
-    const bool shared = index >= 0 && m_client->servo(index).info.sharedId;
-    const bool known = index >= 0 && m_client->servo(index).info.hasTable() && !shared;
+    const bool shared = index >= 0 && m_client->servos()->at(index).info.sharedId;
+    const bool known = index >= 0 && m_client->servos()->at(index).info.hasTable() && !shared;
     const bool ready = connected && idle && index >= 0;
     m_scan->setEnabled(connected && idle);
     m_allTorqueOff->setEnabled(connected); // never held back by work in progress
     m_changeId->setEnabled(ready && known);
     m_changeBaud->setEnabled(ready && known);
     const bool calibration = known
-        && feetech::middleCalibration(m_client->servo(index).info)
+        && feetech::middleCalibration(m_client->servos()->at(index).info)
             != feetech::MiddleCalibration::Unsupported;
     m_calibrate->setEnabled(ready && calibration);
     m_calibrate->setToolTip(calibration || !known
@@ -406,7 +408,7 @@ void FeetechWorkspace::updateActions()
     m_reboot->setEnabled(ready && !shared);
     m_clearStatus->setEnabled(ready && !shared);
     m_settings->setLinkReady(ready && known);
-    model::ParameterModel *parameters = m_client->parameters(index);
+    model::ParameterModel *parameters = m_client->servos()->parameters(index);
     const bool edits = parameters && parameters->hasEdits();
     m_memory->updateActions(ready, known, edits, idle, connected && idle && known);
 }
@@ -416,7 +418,7 @@ void FeetechWorkspace::refreshLive()
     const int index = currentIndex();
     if (index < 0 || !m_memory->refreshesLive() || !isVisible()
         || m_tabs->currentWidget() != m_memory || !m_client->isConnected() || m_client->isBusy()
-        || !m_client->servo(index).read)
+        || !m_client->servos()->at(index).read)
         return;
     m_client->refreshRam(index);
 }
@@ -449,12 +451,12 @@ void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
 void FeetechWorkspace::apply()
 {
     const int index = currentIndex();
-    model::ParameterModel *parameters = m_client->parameters(index);
+    model::ParameterModel *parameters = m_client->servos()->parameters(index);
     if (!parameters)
         return;
     const auto newId = parameters->pendingValue(QStringLiteral("id"));
     const auto newBaud = parameters->pendingValue(QStringLiteral("baud_rate"));
-    const feetech::ServoInfo info = m_client->servo(index).info;
+    const feetech::ServoInfo info = m_client->servos()->at(index).info;
     if (newId || newBaud) {
         QStringList changes;
         if (newId)
@@ -494,9 +496,9 @@ void FeetechWorkspace::changeId()
     const int index = currentIndex();
     if (index < 0)
         return;
-    const feetech::ServoInfo info = m_client->servo(index).info;
+    const feetech::ServoInfo info = m_client->servos()->at(index).info;
     QStringList used;
-    for (const int id : m_client->idsInUse())
+    for (const int id : m_client->servos()->idsInUse())
         used.append(QString::number(id));
     bool ok = false;
     const int newId = QInputDialog::getInt(
@@ -506,7 +508,7 @@ void FeetechWorkspace::changeId()
         info.id, 0, feetech::kMaxServoId, 1, &ok);
     if (!ok || newId == info.id)
         return;
-    if (m_client->idsInUse().contains(newId)) {
+    if (m_client->servos()->idsInUse().contains(newId)) {
         emit problem(tr("ID %1 is already in use on this bus; nothing was written.").arg(newId));
         return;
     }
@@ -520,7 +522,7 @@ void FeetechWorkspace::changeBaud()
     const int index = currentIndex();
     if (index < 0)
         return;
-    const feetech::ServoInfo info = m_client->servo(index).info;
+    const feetech::ServoInfo info = m_client->servos()->at(index).info;
     QStringList rates;
     for (const qint32 rate : feetech::baudRates())
         rates.append(QString::number(rate));
@@ -555,7 +557,7 @@ void FeetechWorkspace::factoryReset()
     const int index = currentIndex();
     if (index < 0)
         return;
-    const feetech::ServoInfo info = m_client->servo(index).info;
+    const feetech::ServoInfo info = m_client->servos()->at(index).info;
     // A backup first, always: a factory reset cannot be undone any other way.
     const QString suggested =
         QStringLiteral("servo-%1-backup-%2.json")
@@ -611,7 +613,7 @@ void FeetechWorkspace::chooseProfileToSave()
         return;
     }
     const QString path = profileactions::chooseSavePath(
-        this, QStringLiteral("servo-%1.json").arg(m_client->servo(index).info.id));
+        this, QStringLiteral("servo-%1.json").arg(m_client->servos()->at(index).info.id));
     if (!path.isEmpty() && saveProfile(path))
         emit message(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
 }
@@ -619,13 +621,13 @@ void FeetechWorkspace::chooseProfileToSave()
 bool FeetechWorkspace::saveProfile(const QString &path, bool withEdits)
 {
     const int index = currentIndex();
-    if (index < 0 || !m_client->servo(index).info.hasTable()) {
+    if (index < 0 || !m_client->servos()->at(index).info.hasTable()) {
         emit problem(tr("Only a servo of a known model can be saved as a profile."));
         return false;
     }
-    const feetech::ServoInfo &info = m_client->servo(index).info;
+    const feetech::ServoInfo &info = m_client->servos()->at(index).info;
     QString error;
-    if (!profileactions::save(path, *m_client->parameters(index),
+    if (!profileactions::save(path, *m_client->servos()->parameters(index),
                               feetech::familyKey(*info.model.family), info.model.name,
                               feetech::profileDefinitions(info.table()), withEdits, &error)) {
         emit problem(error);
@@ -644,7 +646,7 @@ void FeetechWorkspace::chooseProfileToLoad()
 void FeetechWorkspace::loadProfile(const QString &path)
 {
     const int index = currentIndex();
-    if (index < 0 || !m_client->servo(index).info.hasTable()) {
+    if (index < 0 || !m_client->servos()->at(index).info.hasTable()) {
         emit problem(tr("Choose a servo of a known model first."));
         return;
     }
@@ -652,11 +654,11 @@ void FeetechWorkspace::loadProfile(const QString &path)
         emit problem(tr("Wait for the running operation to finish before loading a profile."));
         return;
     }
-    const feetech::ServoInfo &info = m_client->servo(index).info;
+    const feetech::ServoInfo &info = m_client->servos()->at(index).info;
     QString error;
     const profileactions::LoadOutcome outcome = profileactions::loadAsEdits(
         this, path, feetech::familyKey(*info.model.family),
-        feetech::profileDefinitions(info.table()), *m_client->parameters(index), &error);
+        feetech::profileDefinitions(info.table()), *m_client->servos()->parameters(index), &error);
     if (outcome == profileactions::LoadOutcome::Failed)
         emit problem(error);
     else if (const QString note = profileactions::outcomeMessage(outcome); !note.isEmpty())

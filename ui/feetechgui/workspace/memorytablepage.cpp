@@ -87,8 +87,9 @@ MemoryTablePage::MemoryTablePage(QWidget *parent)
 
 void MemoryTablePage::showServo(const feetech::BusClient &client, int index)
 {
-    model::ParameterModel *parameters = client.parameters(index);
-    m_registers->setServo(index >= 0 ? &client.servo(index).info.table() : nullptr, parameters);
+    model::ParameterModel *parameters = client.servos()->parameters(index);
+    m_registers->setServo(index >= 0 ? &client.servos()->at(index).info.table() : nullptr,
+                          parameters);
     m_table->resizeColumnsToContents();
     // Bit lists can be long: the value column keeps a reading width (the tooltip and a wider
     // window show the rest) so the register names keep theirs.

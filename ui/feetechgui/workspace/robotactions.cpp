@@ -40,13 +40,14 @@ RobotActions::RobotActions(feetech::BusClient *client, FeetechWorkspace *workspa
     connect(m_applyTemplate, &QAction::triggered, this, &RobotActions::chooseTemplateToApply);
     connect(m_saveTemplate, &QAction::triggered, this, &RobotActions::openSaveTemplateDialog);
 
-    for (const auto signal :
-         {&feetech::BusClient::servosChanged, &feetech::BusClient::allTorqueOffRequested}) {
-        connect(m_client, signal, this, &RobotActions::updateActions);
-    }
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this,
+            &RobotActions::updateActions);
+    connect(m_client, &feetech::BusClient::allTorqueOffRequested, this,
+            &RobotActions::updateActions);
     connect(m_client, &feetech::BusClient::statusChanged, this, &RobotActions::updateActions);
     connect(m_client, &feetech::BusClient::busyChanged, this, &RobotActions::updateActions);
-    connect(m_client, &feetech::BusClient::servoUpdated, this, &RobotActions::updateActions);
+    connect(m_client->servos(), &feetech::ServoList::servoUpdated, this,
+            &RobotActions::updateActions);
     connect(m_client, &feetech::BusClient::scanFinished, this, &RobotActions::updateActions);
     connect(m_workspace->servoTree(), &QTreeWidget::itemSelectionChanged, this,
             &RobotActions::updateActions);
@@ -104,15 +105,15 @@ void RobotActions::updateActions()
         why = tr("Connect to a Feetech bus first.");
     else if (m_client->isScanning())
         why = tr("The scan is still running.");
-    else if (m_client->servoCount() == 0)
+    else if (m_client->servos()->count() == 0)
         why = tr("Scan the bus first: no servos are known.");
     const bool ready = why.isEmpty();
 
     const int current = m_workspace->currentIndex();
     const QString identifyWhy = ready ? m_client->identifyBlocker(current) : why;
-    m_identify->setText(current >= 0
-                            ? tr("&Identify servo ID %1").arg(m_client->servo(current).info.id)
-                            : tr("&Identify the servo"));
+    m_identify->setText(
+        current >= 0 ? tr("&Identify servo ID %1").arg(m_client->servos()->at(current).info.id)
+                     : tr("&Identify the servo"));
     m_identify->setEnabled(identifyWhy.isEmpty());
     m_identify->setToolTip(
         identifyWhy.isEmpty()
@@ -143,8 +144,8 @@ bool RobotActions::identify(int index, QString *error)
 {
     if (!m_client->identifyJoint(index, error))
         return false;
-    emit message(
-        tr("Identifying servo ID %1: watch which horn moves…").arg(m_client->servo(index).info.id));
+    emit message(tr("Identifying servo ID %1: watch which horn moves…")
+                     .arg(m_client->servos()->at(index).info.id));
     return true;
 }
 

@@ -45,17 +45,18 @@ void ServoTree::rebuild(const std::optional<ServoAddress> &current)
     // every operation, a batch's included).
     QSet<ServoAddress> wasSelected;
     for (const int index : selectedServos())
-        wasSelected.insert({m_client->servo(index).info.id, m_client->servo(index).info.baud});
+        wasSelected.insert(
+            {m_client->servos()->at(index).info.id, m_client->servos()->at(index).info.baud});
     clear();
-    if (m_client->servoCount() == 0)
+    if (m_client->servos()->count() == 0)
         return;
     auto *port = new QTreeWidgetItem(this, {m_portName.isEmpty() ? tr("Bus") : m_portName});
     QTreeWidgetItem *baudItem = nullptr;
     qint32 baud = 0;
     QTreeWidgetItem *selected = nullptr;
     QList<QTreeWidgetItem *> alsoSelected;
-    for (int i = 0; i < m_client->servoCount(); ++i) {
-        const feetech::ServoInfo &info = m_client->servo(i).info;
+    for (int i = 0; i < m_client->servos()->count(); ++i) {
+        const feetech::ServoInfo &info = m_client->servos()->at(i).info;
         if (!baudItem || info.baud != baud) {
             baud = info.baud;
             baudItem = new QTreeWidgetItem(port, {feetech::baudText(baud)});
@@ -66,7 +67,7 @@ void ServoTree::rebuild(const std::optional<ServoAddress> &current)
             info.sharedId ? tr("ID %1 (shared!)").arg(info.id) : tr("ID %1").arg(info.id);
         auto *item =
             new QTreeWidgetItem(baudItem, {idText, info.model.name, family, info.firmware()});
-        const std::optional<quint8> status = m_client->servo(i).statusByte;
+        const std::optional<quint8> status = m_client->servos()->at(i).statusByte;
         const QStringList errors = status ? feetech::statusBitNames(*status) : QStringList();
         QStringList warnings;
         if (info.sharedId)
@@ -117,8 +118,8 @@ QVector<int> ServoTree::selectedServos() const
         const QVariant id = (*it)->data(ServoColumn, kIdRole);
         if (!id.isValid())
             continue;
-        const int index = m_client->indexOf(quint8(id.toUInt()),
-                                            qint32((*it)->data(ServoColumn, kBaudRole).toInt()));
+        const int index = m_client->servos()->indexOf(
+            quint8(id.toUInt()), qint32((*it)->data(ServoColumn, kBaudRole).toInt()));
         if (index >= 0)
             indexes.append(index);
     }

@@ -33,8 +33,8 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
         tr("Hides this note for this servo until the next connection; the lock stays open."), this);
     row->addWidget(m_dismiss);
     connect(m_dismiss, &QPushButton::clicked, this, [this] {
-        if (m_index >= 0 && m_index < m_client->servoCount()) {
-            const feetech::ServoInfo &info = m_client->servo(m_index).info;
+        if (m_index >= 0 && m_index < m_client->servos()->count()) {
+            const feetech::ServoInfo &info = m_client->servos()->at(m_index).info;
             m_dismissed.insert({info.id, info.baud});
         }
         refresh();
@@ -48,11 +48,11 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
         if (m_index >= 0 && !m_client->lockEeprom(m_index, &error))
             emit problem(error);
     });
-    connect(m_client, &feetech::BusClient::servoUpdated, this, [this](int index) {
+    connect(m_client->servos(), &feetech::ServoList::servoUpdated, this, [this](int index) {
         if (index == m_index)
             refresh();
     });
-    connect(m_client, &feetech::BusClient::servosChanged, this, &UnlockedNotice::refresh);
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this, &UnlockedNotice::refresh);
     hide();
 }
 
@@ -70,16 +70,16 @@ QString UnlockedNotice::text() const
 void UnlockedNotice::refresh()
 {
     const bool unlocked =
-        m_index >= 0 && m_index < m_client->servoCount() && m_client->eepromUnlocked(m_index);
+        m_index >= 0 && m_index < m_client->servos()->count() && m_client->eepromUnlocked(m_index);
     const bool noted = unlocked
         && !m_dismissed.contains(
-            {m_client->servo(m_index).info.id, m_client->servo(m_index).info.baud});
+            {m_client->servos()->at(m_index).info.id, m_client->servos()->at(m_index).info.baud});
     if (noted) {
         m_text->setText(tr("Note: servo %1's EEPROM is unlocked (lock = 0), as some programs "
                            "(LeRobot among them) leave it: anything written to its settings now "
                            "stays after a power cut. ServoBench locks it after each of its own "
                            "writes; Lock EEPROM locks it now.")
-                            .arg(m_client->servo(m_index).info.id));
+                            .arg(m_client->servos()->at(m_index).info.id));
         QPalette tinted = m_text->palette();
         tinted.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Accent, tinted));
         m_text->setPalette(tinted);

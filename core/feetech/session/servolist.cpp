@@ -1,0 +1,147 @@
+// The servos found on a Feetech bus: the list, its order, and the table model over it.
+#include "servolist.h"
+
+#include "servoparameters.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechServoList)
+};
+
+} // namespace
+
+namespace feetech {
+
+ServoList::ServoList(QObject *parent)
+    : QAbstractTableModel(parent)
+{
+}
+
+ServoList::~ServoList() = default;
+
+model::ParameterModel *ServoList::parameters(int index) const
+{
+    if (index < 0 || index >= count())
+        return nullptr;
+    return m_servos.at(std::size_t(index))->parameters.get();
+}
+
+int ServoList::indexOf(quint8 id, qint32 baud) const
+{
+    for (int i = 0; i < count(); ++i) {
+        if (at(i).info.id == id && at(i).info.baud == baud)
+            return i;
+    }
+    return -1;
+}
+
+QVector<int> ServoList::idsInUse() const
+{
+    QVector<int> ids;
+    for (const auto &entry : m_servos)
+        ids.append(entry->info.id);
+    return ids;
+}
+
+void ServoList::add(const ServoInfo &info)
+{
+    auto entry = std::make_unique<Servo>();
+    entry->info = info;
+    if (info.statusBits != 0) // the scan's answer showed error bits: the tree shows them
+        entry->statusByte = info.statusBits;
+    entry->parameters = std::make_unique<model::ParameterModel>();
+    entry->parameters->setDefinitions(modelDefinitions(info.table()));
+    beginResetModel();
+    m_servos.push_back(std::move(entry));
+    // Fastest rate first, then by ID: the order the tree shows.
+    std::stable_sort(m_servos.begin(), m_servos.end(), [](const auto &a, const auto &b) {
+        return a->info.baud != b->info.baud ? a->info.baud > b->info.baud : a->info.id < b->info.id;
+    });
+    endResetModel();
+    emit servosChanged();
+}
+
+void ServoList::move(int index, const ServoInfo &info)
+{
+    if (index < 0 || index >= count())
+        return;
+    m_servos.at(std::size_t(index))->info = info;
+    emit dataChanged(this->index(index, 0), this->index(index, ColumnCount - 1));
+    emit servosChanged();
+}
+
+void ServoList::noteUpdated(int index)
+{
+    if (index < 0 || index >= count())
+        return;
+    emit servoUpdated(index);
+}
+
+void ServoList::clear()
+{
+    if (m_servos.empty())
+        return;
+    beginResetModel();
+    m_servos.clear();
+    endResetModel();
+    emit servosChanged();
+}
+
+int ServoList::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : count();
+}
+
+int ServoList::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant ServoList::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= count() || role != Qt::DisplayRole)
+        return {};
+    const ServoInfo &info = at(index.row()).info;
+    switch (index.column()) {
+    case IdColumn:
+        return info.id;
+    case BaudColumn:
+        return info.baud;
+    case ModelColumn:
+        return info.model.name;
+    case FamilyColumn:
+        return info.model.family ? familyName(*info.model.family) : QString();
+    case FirmwareColumn:
+        return info.firmware();
+    default:
+        return {};
+    }
+}
+
+QVariant ServoList::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case IdColumn:
+        return Tr::tr("ID");
+    case BaudColumn:
+        return Tr::tr("Rate");
+    case ModelColumn:
+        return Tr::tr("Model");
+    case FamilyColumn:
+        return Tr::tr("Family");
+    case FirmwareColumn:
+        return Tr::tr("Firmware");
+    default:
+        return {};
+    }
+}
+
+} // namespace feetech
