@@ -102,6 +102,20 @@ private slots:
         QCOMPARE(reset.size(), 3); // emptied, then each servo found
     }
 
+    void aServoAddressNamesAServoByItsIdAndRate()
+    {
+        const feetech::ServoAddress first = m_client->servos()->at(0).info.address();
+        QCOMPARE(first, (feetech::ServoAddress {1, k1M}));
+        QVERIFY(first != (feetech::ServoAddress {1, 500000})); // the same ID at another rate
+        QVERIFY(first != (feetech::ServoAddress {2, k1M}));
+        QHash<feetech::ServoAddress, int> byAddress;
+        for (int i = 0; i < m_client->servos()->count(); ++i)
+            byAddress.insert(m_client->servos()->at(i).info.address(), i);
+        QCOMPARE(byAddress.size(), 3);
+        QCOMPARE(byAddress.value({3, k1M}, -1), 2);
+        QCOMPARE(byAddress.value({3, 500000}, -1), -1);
+    }
+
     void applyWritesTheEditsAndLeavesAnIdEditPending()
     {
         QVERIFY(parameters(0).edit(kMaxTemperature, 66));

@@ -23,6 +23,25 @@ constexpr int kIdentitySize = 9;
 // The longest return delay a servo can be set to: 254 × 2 µs (register 7).
 constexpr std::chrono::microseconds kLongestReturnDelay {508};
 
+// Where a servo answers: its ID at a baud rate. Two servos of one bus never share both (a
+// shared ID is a fault the scan reports), so this names a servo wherever a list index would not.
+struct ServoAddress
+{
+    quint8 id = 0;
+    qint32 baud = 0;
+
+    friend bool operator==(const ServoAddress &a, const ServoAddress &b)
+    {
+        return a.id == b.id && a.baud == b.baud;
+    }
+    friend bool operator!=(const ServoAddress &a, const ServoAddress &b) { return !(a == b); }
+};
+
+inline size_t qHash(const ServoAddress &address, size_t seed = 0)
+{
+    return ::qHash((quint64(address.id) << 32) | quint32(address.baud), seed);
+}
+
 // What a servo says about itself in addresses 0-8 (all single bytes, so byte order plays no
 // part in reading them).
 struct ServoInfo
@@ -42,6 +61,7 @@ struct ServoInfo
     // written to it while that is so.
     bool sharedId = false;
 
+    ServoAddress address() const { return {id, baud}; }
     quint16 modelNumber() const;
     QString firmware() const; // "3.10"
     bool hasTable() const { return model.family.has_value(); }

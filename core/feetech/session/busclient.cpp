@@ -527,7 +527,7 @@ QString BusClient::identifyBlocker(int index) const
     if (!blocker.isEmpty())
         return blocker;
     const ServoInfo &info = m_servos->at(index).info;
-    const QString held = m_held.value({info.id, info.baud});
+    const QString held = m_held.value(info.address());
     if (!held.isEmpty())
         return held;
     if (!info.table().find(u"goal_position") || !info.table().find(u"torque_enable"))
@@ -544,7 +544,7 @@ OperationReply *BusClient::identifyJoint(int index, QString *error)
         return nullptr;
     }
     const ServoInfo &info = m_servos->at(index).info;
-    m_identifying = std::pair(info.id, info.baud);
+    m_identifying = info.address();
     return startOperation(Operation::Identify, index, error, Work::Foreground,
                           [](Session &s, const ServoInfo &target) { s.identifyJoint(target); });
 }
@@ -552,14 +552,14 @@ OperationReply *BusClient::identifyJoint(int index, QString *error)
 bool BusClient::isIdentifying(int index) const
 {
     return m_identifying && index >= 0 && index < m_servos->count()
-        && *m_identifying == std::pair(m_servos->at(index).info.id, m_servos->at(index).info.baud);
+        && *m_identifying == m_servos->at(index).info.address();
 }
 
 void BusClient::holdServo(int index, const QString &reason)
 {
     if (index < 0 || index >= m_servos->count())
         return;
-    m_held.insert({m_servos->at(index).info.id, m_servos->at(index).info.baud}, reason);
+    m_held.insert(m_servos->at(index).info.address(), reason);
     m_servos->noteUpdated(index); // what it may do now has changed
 }
 

@@ -190,8 +190,8 @@ private:
     quint64 m_lastTicket = 0;
     bool hasLivePending() const;
     QElapsedTimer m_clock;
-    std::optional<std::pair<quint8, qint32>> m_identifying; // ID and baud
-    QHash<QPair<quint8, qint32>, QString> m_held; // why, by ID and baud
+    std::optional<ServoAddress> m_identifying;
+    QHash<ServoAddress, QString> m_held; // why
     BusGuard *m_guard = nullptr;
     TelemetryHub *m_telemetry = nullptr;
     MotorSetupService *m_motorSetup = nullptr;

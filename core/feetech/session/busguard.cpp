@@ -90,8 +90,7 @@ std::optional<GuardEvent> BusGuard::lastEvent(int index) const
 {
     if (index < 0 || index >= m_client->servos()->count())
         return std::nullopt;
-    const auto event = m_lastEvent.constFind(
-        {m_client->servos()->at(index).info.id, m_client->servos()->at(index).info.baud});
+    const auto event = m_lastEvent.constFind(m_client->servos()->at(index).info.address());
     if (event == m_lastEvent.constEnd())
         return std::nullopt;
     return *event;

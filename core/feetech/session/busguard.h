@@ -48,7 +48,7 @@ private:
     BusClient *m_client;
     GuardSettings m_settings; // as the user set them
     std::optional<GuardSettings> m_sent; // what the session has now
-    QHash<QPair<quint8, qint32>, GuardEvent> m_lastEvent;
+    QHash<ServoAddress, GuardEvent> m_lastEvent;
 };
 
 } // namespace feetech

@@ -20,8 +20,7 @@ namespace feetech {
 
 ServoList::ServoList(QObject *parent)
     : QAbstractTableModel(parent)
-{
-}
+{ }
 
 ServoList::~ServoList() = default;
 

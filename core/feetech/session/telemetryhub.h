@@ -70,7 +70,7 @@ private:
     quint64 m_stream = 0; // the stream asked for last; news of earlier ones is dropped
     TelemetryOptions m_options;
     TelemetryStats m_stats;
-    QHash<QPair<quint8, qint32>, FeedbackSample> m_latest;
+    QHash<ServoAddress, FeedbackSample> m_latest;
 };
 
 } // namespace feetech
