@@ -9,6 +9,7 @@ namespace sim {
 
 using feetech::Family;
 using feetech::Register;
+using feetech::RegisterTable;
 
 VirtualFeetechMotor::VirtualFeetechMotor(const feetech::RegisterTable &table, double supplyVolts)
     : m_table(&table)
@@ -47,21 +48,32 @@ VirtualFeetechMotor::VirtualFeetechMotor(const feetech::RegisterTable &table, do
     m_keys.presentCurrent = find(u"present_current");
 }
 
-qint32 VirtualFeetechMotor::get(const QByteArray &registers, const Register *reg) const
+qint32 registerValue(const RegisterTable &table, const QByteArray &registers, const Register *reg)
 {
     if (!reg)
         return 0;
     return feetech::decodeValue(QByteArrayView(registers).sliced(reg->address, reg->size),
-                                m_table->format(*reg));
+                                table.format(*reg));
+}
+
+void putRegisterValue(const RegisterTable &table, QByteArray &registers, const Register *reg,
+                      qint32 value)
+{
+    if (!reg)
+        return;
+    const feetech::ValueFormat format = table.format(*reg);
+    value = std::clamp(value, feetech::minimumValue(format), feetech::maximumMagnitude(format));
+    registers.replace(reg->address, reg->size, *feetech::encodeValue(value, format));
+}
+
+qint32 VirtualFeetechMotor::get(const QByteArray &registers, const Register *reg) const
+{
+    return registerValue(*m_table, registers, reg);
 }
 
 void VirtualFeetechMotor::put(QByteArray &registers, const Register *reg, qint32 value) const
 {
-    if (!reg)
-        return;
-    const feetech::ValueFormat format = m_table->format(*reg);
-    value = std::clamp(value, feetech::minimumValue(format), feetech::maximumMagnitude(format));
-    registers.replace(reg->address, reg->size, *feetech::encodeValue(value, format));
+    putRegisterValue(*m_table, registers, reg, value);
 }
 
 MotionControl VirtualFeetechMotor::control(const QByteArray &registers) const

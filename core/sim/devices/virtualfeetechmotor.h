@@ -10,6 +10,13 @@
 
 namespace sim {
 
+// A register of a simulated servo's register file in register units (0 for a register the table
+// lacks), and a value put into one, clamped to what its format holds (nothing for none).
+qint32 registerValue(const feetech::RegisterTable &table, const QByteArray &registers,
+                     const feetech::Register *reg);
+void putRegisterValue(const feetech::RegisterTable &table, QByteArray &registers,
+                      const feetech::Register *reg, qint32 value);
+
 // Reads and writes the servo's register file, which the servo passes in on every call (the
 // servo is a value, copied with its registers; the motor keeps no pointer to them).
 class VirtualFeetechMotor

@@ -104,20 +104,12 @@ VirtualFeetechServo::VirtualFeetechServo(const feetech::ModelInfo &model, quint8
 
 qint32 VirtualFeetechServo::get(const Register *reg) const
 {
-    if (!reg)
-        return 0;
-    return feetech::decodeValue(QByteArrayView(m_registers).sliced(reg->address, reg->size),
-                                m_table->format(*reg));
+    return registerValue(*m_table, m_registers, reg);
 }
 
 void VirtualFeetechServo::put(const Register *reg, qint32 value)
 {
-    if (!reg)
-        return;
-    const feetech::ValueFormat format = m_table->format(*reg);
-    value = std::clamp(value, feetech::minimumValue(format), feetech::maximumMagnitude(format));
-    const QByteArray bytes = *feetech::encodeValue(value, format);
-    m_registers.replace(reg->address, reg->size, bytes);
+    putRegisterValue(*m_table, m_registers, reg, value);
 }
 
 void VirtualFeetechServo::putRegisterBytes(const Register &reg, const QByteArray &from,
