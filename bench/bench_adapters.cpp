@@ -8,6 +8,7 @@
 // (default: ideal, ftdi, ftdi-1ms, ch340, ch343, cp2102). --demo-seconds N: instead, the demo's
 // own Feetech bus (servobench --demo-feetech), scanned and streamed at 50 Hz for N seconds.
 #include "benchsupport.h"
+#include "busoperations.h"
 #include "demoservos.h"
 #include "feetechsession.h"
 #include "ptksession.h"
@@ -103,7 +104,7 @@ QVector<feetech::ServoInfo> scan(feetech::Session &session, QJsonObject *figures
         });
     QElapsedTimer clock;
     clock.start();
-    session.scan(feetech::ScanOptions {});
+    session.submit(feetech::operations::scan(feetech::ScanOptions {}));
     waiter.wait(120000);
     figures->insert(QStringLiteral("scan_ms"), double(clock.nsecsElapsed()) / 1e6);
     figures->insert(QStringLiteral("scan_completed"), completed);
@@ -128,7 +129,7 @@ void readTables(feetech::Session &session, const feetech::ServoInfo &servo, QJso
                                                  });
         QElapsedTimer clock;
         clock.start();
-        session.read(servo, {}, feetech::ReadSource::Read);
+        session.submit(feetech::operations::read(servo, {}, feetech::ReadSource::Read));
         waiter.wait(10000);
         QObject::disconnect(connection);
         if (ok)

@@ -1,6 +1,7 @@
 // Runs the Feetech session against the simulated bus on a pty and prints JSON figures: scan time
 // at one and at every baud rate, and full table reads, each next to its wire-time lower bound.
 #include "benchsupport.h"
+#include "busoperations.h"
 #include "feetechpacket.h"
 #include "feetechsession.h"
 #include "registertable.h"
@@ -102,7 +103,7 @@ public:
                                                      waiter.finish();
                                                  });
         m_clock.start();
-        m_session.scan(options);
+        m_session.submit(feetech::operations::scan(options));
         waiter.wait(60000);
         run.wallMs = double(m_clock.nsecsElapsed()) / 1e6;
         run.probePhaseMs = double(m_firstUnicastNs) / 1e6;
@@ -139,7 +140,7 @@ public:
         const qint64 bytesBefore = m_wireBytes;
         QElapsedTimer clock;
         clock.start();
-        m_session.read(servo, {}, feetech::ReadSource::Read);
+        m_session.submit(feetech::operations::read(servo, {}, feetech::ReadSource::Read));
         waiter.wait(5000);
         const double ms = double(clock.nsecsElapsed()) / 1e6;
         QObject::disconnect(connection);

@@ -1,6 +1,7 @@
 // Runs Feetech telemetry against 6 simulated STS3215 at 1 Mbps on a pty and prints JSON figures:
 // samples per second as fast as the bus allows and at set rates, next to the wire limit.
 #include "benchsupport.h"
+#include "busoperations.h"
 #include "feetechsession.h"
 #include "simulator.h"
 #include "telemetry.h"
@@ -65,7 +66,7 @@ int main(int argc, char **argv)
     QObject::connect(&session, &feetech::Session::scanFinished, [&scanned] { scanned.finish(); });
     feetech::ScanOptions scan;
     scan.lastId = kServos;
-    session.scan(scan);
+    session.submit(feetech::operations::scan(scan));
     scanned.wait(30000);
     QObject::disconnect(found);
     if (servos.size() != kServos) {

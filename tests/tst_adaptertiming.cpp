@@ -1,6 +1,7 @@
 // End-to-end tests behind simulated USB adapters (servosim --adapter): a Feetech scan, a table
 // read and a 50 Hz stream, and PTK polling and an Apply, with the sessions' own timing, over a
 // real pty. No timeout, no missed sample, and nothing in the packet log reads as an error.
+#include "busoperations.h"
 #include "feetechsession.h"
 #include "ptksession.h"
 #include "simclient.h"
@@ -76,11 +77,11 @@ private slots:
         session.open(simulator.linkPath(), k1M, seriallink::EchoMode::Auto);
         feetech::ScanOptions scan;
         scan.lastId = 8;
-        session.scan(scan);
+        session.submit(feetech::operations::scan(scan));
         QTRY_COMPARE_WITH_TIMEOUT(scanned.size(), 1, 30000);
         QCOMPARE(found.size(), kServos);
 
-        session.read(found.at(2), {}, feetech::ReadSource::Read);
+        session.submit(feetech::operations::read(found.at(2), {}, feetech::ReadSource::Read));
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
         QVERIFY(finished.first().first().value<feetech::OperationResult>().ok);
 
@@ -119,7 +120,7 @@ private slots:
         session.open(simulator.linkPath(), k1M, seriallink::EchoMode::Auto);
         feetech::ScanOptions scan;
         scan.lastId = 4;
-        session.scan(scan);
+        session.submit(feetech::operations::scan(scan));
         QTRY_COMPARE_WITH_TIMEOUT(scanned.size(), 1, 30000);
         QCOMPARE(found.size(), 3);
         sim::FaultSettings faults;

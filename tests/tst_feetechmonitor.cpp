@@ -1,4 +1,5 @@
 // End-to-end tests of Feetech telemetry and bus-wide control against a simulated bus on a pty.
+#include "busoperations.h"
 #include "feetechbus.h"
 #include "feetechsession.h"
 #include "operationlog.h"
@@ -84,7 +85,7 @@ private slots:
         feetech::ScanOptions options;
         options.bauds = {k1M, k500k};
         options.lastId = 10;
-        m_session->scan(options);
+        m_session->submit(feetech::operations::scan(options));
         QVERIFY(!finished.isEmpty() || finished.wait(30000));
         QCOMPARE(m_found.size(), 5);
     }
@@ -228,8 +229,8 @@ private slots:
         options.rateHz = 0;
         m_session->startTelemetry(options);
         QSignalSpy finished(m_session.get(), &Session::operationFinished);
-        m_session->read(found(1), {}, feetech::ReadSource::Read);
-        m_session->torqueOffAll({k1M, k500k}, m_found);
+        m_session->submit(feetech::operations::read(found(1), {}, feetech::ReadSource::Read));
+        m_session->submit(feetech::operations::torqueOffAll({k1M, k500k}, m_found));
         QTRY_VERIFY_WITH_TIMEOUT(finished.size() >= 2, 10000);
         const auto first = finished.at(0).at(0).value<OperationResult>();
         QCOMPARE(first.operation, feetech::Operation::TorqueOff);
@@ -253,11 +254,12 @@ private slots:
     {
         for (const quint8 id : {1, 2})
             QVERIFY(run([&] {
-                        m_session->write(found(id), {{40, QByteArray(1, char(1)), false}});
+                        m_session->submit(feetech::operations::write(
+                            found(id), {{40, QByteArray(1, char(1)), false}}));
                     }).ok);
         const OperationResult result = run([&] {
-            m_session->syncWrite(
-                k1M, 42, 2, {{1, QByteArray::fromHex("e803")}, {2, QByteArray::fromHex("d007")}});
+            m_session->submit(feetech::operations::syncWrite(
+                k1M, 42, 2, {{1, QByteArray::fromHex("e803")}, {2, QByteArray::fromHex("d007")}}));
         });
         QVERIFY2(result.ok, qPrintable(result.message));
         QTRY_COMPARE_WITH_TIMEOUT(simulatorValue(1, u"present_position"), 1000, 10000);
@@ -365,9 +367,11 @@ private slots:
     void writesQueuedBeforeTorqueOffAreNotSent()
     {
         QSignalSpy finished(m_session.get(), &Session::operationFinished);
-        m_session->read(found(1), {}, feetech::ReadSource::Read); // keeps the bus busy
-        m_session->write(found(1), {{40, QByteArray(1, char(1)), false}}); // torque on, queued
-        m_session->torqueOffAll({k1M, k500k}, m_found);
+        m_session->submit(feetech::operations::read(
+            found(1), {}, feetech::ReadSource::Read)); // keeps the bus busy
+        m_session->submit(feetech::operations::write(
+            found(1), {{40, QByteArray(1, char(1)), false}})); // torque on, queued
+        m_session->submit(feetech::operations::torqueOffAll({k1M, k500k}, m_found));
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 3, 10000);
         QCOMPARE(finished.at(1).at(0).value<OperationResult>().operation,
                  feetech::Operation::TorqueOff);
@@ -378,7 +382,8 @@ private slots:
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
         // Writes asked for afterwards go out as usual.
         const OperationResult later = run([&] {
-            m_session->write(found(1), {{40, QByteArray(1, char(1)), false}});
+            m_session->submit(
+                feetech::operations::write(found(1), {{40, QByteArray(1, char(1)), false}}));
         });
         QVERIFY2(later.ok, qPrintable(later.message));
         QCOMPARE(simulatorValue(1, u"torque_enable"), 1);

@@ -1,4 +1,5 @@
 // End-to-end tests of the Feetech session against a simulated mixed bus on a pty.
+#include "busoperations.h"
 #include "feetechbus.h"
 #include "feetechsession.h"
 #include "servoparameters.h"
@@ -53,7 +54,7 @@ private:
     {
         m_found.clear();
         QSignalSpy finished(m_session.get(), &Session::scanFinished);
-        m_session->scan(options);
+        m_session->submit(feetech::operations::scan(options));
         return (!finished.isEmpty() || finished.wait(30000)) && finished.first().at(0).toBool();
     }
 
@@ -70,7 +71,8 @@ private:
                                            feetech::decodeRegisters(servo.table(), address, bytes))
                                           memory.values.insert(item.reg->key, item.value);
                                   });
-        const OperationResult result = run([&] { m_session->read(servo, {}, ReadSource::Read); });
+        const OperationResult result =
+            run([&] { m_session->submit(feetech::operations::read(servo, {}, ReadSource::Read)); });
         disconnect(connection);
         if (!result.ok)
             memory.values.clear();
@@ -180,10 +182,10 @@ private slots:
         options.bauds = {250000};
         QSignalSpy finished(m_session.get(), &Session::scanFinished);
         QSignalSpy progress(m_session.get(), &Session::scanProgress);
-        m_session->scan(options);
+        m_session->submit(feetech::operations::scan(options));
         QVERIFY(progress.wait(5000));
         QTRY_VERIFY(progress.size() > 3);
-        m_session->cancelScan();
+        m_session->cancel(feetech::Operation::Scan);
         QVERIFY(finished.wait(5000));
         QCOMPARE(finished.first().at(0).toBool(), false);
         QVERIFY(progress.last().at(0).toInt() < 254);
@@ -229,7 +231,10 @@ private slots:
         Memory perBlock;
         for (const feetech::Block &block : servo.table().blocks()) {
             QSignalSpy read(m_session.get(), &Session::memoryRead);
-            QVERIFY(run([&] { m_session->read(servo, {block}, ReadSource::Read); }).ok);
+            QVERIFY(run([&] {
+                        m_session->submit(
+                            feetech::operations::read(servo, {block}, ReadSource::Read));
+                    }).ok);
             QCOMPARE(read.size(), 1);
             for (const auto &item : feetech::decodeRegisters(servo.table(), block.address,
                                                              read.first().at(3).toByteArray()))
@@ -272,7 +277,8 @@ private slots:
         const auto writes =
             feetech::encodeWrites(servo.table(), {{QStringLiteral("max_temperature"), 65}}, &error);
         QVERIFY2(writes, qPrintable(error));
-        const OperationResult result = run([&] { m_session->write(servo, *writes); });
+        const OperationResult result =
+            run([&] { m_session->submit(feetech::operations::write(servo, *writes)); });
         QVERIFY2(result.ok, qPrintable(result.message));
         // unlock (55 = 0), write, lock (55 = 1), read back: in that order.
         const QStringList frames = framesReceived();
@@ -295,11 +301,13 @@ private slots:
         const ServoInfo servo = *found(1);
         const int before = framesReceived().size();
         // Known from the scan: refused before anything is sent.
-        OperationResult result = run([&] { m_session->changeId(servo, 2, {1, 2, 3, 4}); });
+        OperationResult result = run([&] {
+            m_session->submit(feetech::operations::changeId(servo, 2, {1, 2, 3, 4}));
+        });
         QVERIFY(!result.ok);
         QCOMPARE(framesReceived().size(), before);
         // Not known, but a servo answers there: refused after the PING, nothing written.
-        result = run([&] { m_session->changeId(servo, 3, {}); });
+        result = run([&] { m_session->submit(feetech::operations::changeId(servo, 3, {})); });
         QVERIFY(!result.ok);
         QVERIFY(result.message.contains(QLatin1String("3")));
         const QStringList after = framesReceived().mid(before);
@@ -316,7 +324,9 @@ private slots:
         feetech::ScanOptions options;
         options.lastId = 2;
         QVERIFY(scan(options));
-        const OperationResult result = run([&] { m_session->changeId(*found(2), 9, {1, 2}); });
+        const OperationResult result = run([&] {
+            m_session->submit(feetech::operations::changeId(*found(2), 9, {1, 2}));
+        });
         QVERIFY2(result.ok, qPrintable(result.message));
         QCOMPARE(result.servo.id, quint8(9));
         QVERIFY(scan(options));
@@ -332,13 +342,15 @@ private slots:
         feetech::ScanOptions options;
         options.lastId = 2;
         QVERIFY(scan(options));
-        const OperationResult result = run([&] { m_session->changeBaud(*found(2), 500000); });
+        const OperationResult result =
+            run([&] { m_session->submit(feetech::operations::changeBaud(*found(2), 500000)); });
         QVERIFY2(result.ok, qPrintable(result.message));
         QCOMPARE(result.servo.baud, 500000);
         QCOMPARE(readAll(result.servo).values.value(QStringLiteral("baud_rate")), 1);
         // It stays there after a power cycle: the change went to EEPROM and was locked.
         m_simulator->call([](sim::Simulator &simulator) { simulator.powerCycle(); });
-        const OperationResult ping = run([&] { m_session->ping(2, 500000); });
+        const OperationResult ping =
+            run([&] { m_session->submit(feetech::operations::ping(2, 500000)); });
         QVERIFY2(ping.ok, qPrintable(ping.message));
     }
 
@@ -358,7 +370,8 @@ private slots:
         QCOMPARE(memory.values.value(QStringLiteral("byte_003")), 77);
         // Nothing is written to a servo nobody knows.
         const OperationResult result = run([&] {
-            m_session->write(servo, {{40, QByteArray(1, char(1)), false}});
+            m_session->submit(
+                feetech::operations::write(servo, {{40, QByteArray(1, char(1)), false}}));
         });
         QVERIFY(!result.ok);
     }
@@ -373,11 +386,13 @@ private slots:
         m_simulator->call([](sim::Simulator &simulator) {
             simulator.feetechBus()->findServo(1)->setPhysicalPosition(2548);
         });
-        const OperationResult result = run([&] { m_session->calibrateMiddle(*found(1)); });
+        const OperationResult result =
+            run([&] { m_session->submit(feetech::operations::calibrateMiddle(*found(1))); });
         QVERIFY2(result.ok, qPrintable(result.message));
         const Memory memory = readAll(*found(1));
         QVERIFY(qAbs(memory.values.value(QStringLiteral("present_position")) - 2048) <= 2);
-        QVERIFY(!run([&] { m_session->calibrateMiddle(*found(3)); }).ok);
+        QVERIFY(
+            !run([&] { m_session->submit(feetech::operations::calibrateMiddle(*found(3))); }).ok);
     }
 
     void rebootAndClearStatus()
@@ -385,9 +400,10 @@ private slots:
         feetech::ScanOptions options;
         options.lastId = 1;
         QVERIFY(scan(options));
-        OperationResult result = run([&] { m_session->reboot(*found(1)); });
+        OperationResult result =
+            run([&] { m_session->submit(feetech::operations::reboot(*found(1))); });
         QVERIFY2(result.ok, qPrintable(result.message));
-        result = run([&] { m_session->clearStatus(*found(1)); });
+        result = run([&] { m_session->submit(feetech::operations::clearStatus(*found(1))); });
         QVERIFY2(result.ok, qPrintable(result.message));
         QVERIFY(framesReceived().filter(QStringLiteral("FF FF 01 02 0A")).size() == 1);
     }
@@ -412,9 +428,9 @@ private slots:
                 return signal.at(0).template value<OperationResult>().operation == operation;
             });
         };
-        m_session->identifyJoint(*servo);
+        m_session->submit(feetech::operations::identifyJoint(*servo));
         QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(1, u"torque_enable") == 1, 10000);
-        m_session->torqueOffAll({k1M}, {*servo});
+        m_session->submit(feetech::operations::torqueOffAll({k1M}, {*servo}));
         QTRY_VERIFY_WITH_TIMEOUT(ended(feetech::Operation::TorqueOff), 10000);
         QVERIFY(!ended(feetech::Operation::Identify));
         m_session->close();

@@ -1,5 +1,6 @@
 // End-to-end tests of the overload and thermal guard over the pty simulator: a blocked horn is
 // held (or its torque switched off), a hot servo is held, and a tripped overload is recovered.
+#include "busoperations.h"
 #include "feetechbus.h"
 
 #include "overloadguard.h"
@@ -60,7 +61,7 @@ private:
             qWarning("%s", qPrintable(error));
             return {};
         }
-        return run([&] { m_session->write(m_servo, *writes); });
+        return run([&] { m_session->submit(feetech::operations::write(m_servo, *writes)); });
     }
 
     void setAction(feetech::GuardAction action)
@@ -91,7 +92,7 @@ private slots:
         options.bauds = {k1M};
         options.lastId = 1;
         QSignalSpy scanned(m_session.get(), &feetech::Session::scanFinished);
-        m_session->scan(options);
+        m_session->submit(feetech::operations::scan(options));
         QVERIFY(scanned.wait(20000));
         QCOMPARE(m_found.size(), 1);
         m_servo = m_found.first();
@@ -159,7 +160,7 @@ private slots:
         const auto torque =
             feetech::encodeWrites(m_servo.table(), {{QStringLiteral("torque_enable"), 1}}, &error);
         QVERIFY(torque);
-        QVERIFY(run([&] { m_session->write(m_servo, *torque); }).ok);
+        QVERIFY(run([&] { m_session->submit(feetech::operations::write(m_servo, *torque)); }).ok);
         QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
         const qint32 start = simulatorValue(1, u"present_position");
         const auto goal = feetech::encodeWrites(
@@ -167,9 +168,9 @@ private slots:
             &error);
         QVERIFY(goal);
         QVERIFY(run([&] {
-                    m_session->syncWrite(k1M, goal->first().address,
-                                         int(goal->first().bytes.size()),
-                                         {{1, goal->first().bytes}});
+                    m_session->submit(feetech::operations::syncWrite(
+                        k1M, goal->first().address, int(goal->first().bytes.size()),
+                        {{1, goal->first().bytes}}));
                 }).ok);
         QVERIFY(waitFor(events, GuardCause::Overload, GuardStage::Acted));
         QCOMPARE(simulatorValue(1, u"goal_position"), start);
@@ -187,7 +188,7 @@ private slots:
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
         QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
         QSignalSpy finished(m_session.get(), &feetech::Session::operationFinished);
-        m_session->identifyJoint(m_servo);
+        m_session->submit(feetech::operations::identifyJoint(m_servo));
         QVERIFY(waitFor(events, GuardCause::Overload, GuardStage::Acted));
         QTRY_VERIFY_WITH_TIMEOUT(!finished.isEmpty(), 15000);
         const auto result = finished.first().at(0).value<OperationResult>();
@@ -249,7 +250,7 @@ private slots:
         m_session->startTelemetry(options); // the Monitor page: samples, nothing driven
         QVERIFY(waitFor(events, GuardCause::Heat, GuardStage::Warning));
         // An action would have gone ahead of this ping.
-        QVERIFY(run([&] { m_session->ping(1, k1M); }).ok);
+        QVERIFY(run([&] { m_session->submit(feetech::operations::ping(1, k1M)); }).ok);
         m_session->stopTelemetry();
         QVERIFY(!find(eventsOf(events), GuardCause::Heat, GuardStage::Acted));
         QVERIFY(testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write, 1)
@@ -263,10 +264,10 @@ private slots:
         // A read of the servo's RAM: nothing drives it, so the guard stays silent; the guard's
         // first read would have come with the write that drives it.
         QVERIFY(run([&] {
-                    m_session->read(m_servo, m_servo.table().ramBlocks(),
-                                    feetech::ReadSource::Refresh);
+                    m_session->submit(feetech::operations::read(
+                        m_servo, m_servo.table().ramBlocks(), feetech::ReadSource::Refresh));
                 }).ok);
-        QVERIFY(run([&] { m_session->ping(1, k1M); }).ok);
+        QVERIFY(run([&] { m_session->submit(feetech::operations::ping(1, k1M)); }).ok);
         QVERIFY(events.isEmpty());
         QVERIFY(testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::SyncRead)
                     .isEmpty());
@@ -285,7 +286,8 @@ private slots:
         m_session->setGuardSettings({});
         QVERIFY(waitFor(events, GuardCause::LatchedOverload, GuardStage::Warning));
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(0); }));
-        const OperationResult recovered = run([&] { m_session->recoverOverload(m_servo, false); });
+        const OperationResult recovered =
+            run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, false)); });
         QVERIFY2(recovered.ok, qPrintable(recovered.message));
         QVERIFY(!recovered.stillLatched);
         QCOMPARE(recovered.operation, feetech::Operation::RecoverOverload);
@@ -301,7 +303,8 @@ private slots:
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setOverloadLatched(true); }));
         QVERIFY(drive(simulatorValue(1, u"present_position")).ok); // torque on: driven, read
         QVERIFY(waitFor(events, GuardCause::LatchedOverload, GuardStage::Warning));
-        const OperationResult stuck = run([&] { m_session->recoverOverload(m_servo, false); });
+        const OperationResult stuck =
+            run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, false)); });
         QVERIFY(!stuck.ok);
         QVERIFY(stuck.stillLatched);
         QVERIFY2(stuck.message.contains(QLatin1String("power")), qPrintable(stuck.message));
@@ -311,7 +314,8 @@ private slots:
             simulator.feetechBus()->setPowered(0, false);
             simulator.feetechBus()->setPowered(0, true);
         });
-        const OperationResult checked = run([&] { m_session->recoverOverload(m_servo, true); });
+        const OperationResult checked =
+            run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, true)); });
         QVERIFY2(checked.ok, qPrintable(checked.message));
         QVERIFY(!checked.stillLatched);
         QCOMPARE(simulatorValue(1, u"status") & 0x20, 0);

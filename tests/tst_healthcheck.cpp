@@ -1,6 +1,7 @@
 // The health check over the simulated bus: verdicts for a healthy, an over-voltage and a hot
 // servo, a firmware mismatch, communication counted on a faulty line, the move test's metrics
 // and restore, reads only without it; and the report saved as HTML and JSON.
+#include "busoperations.h"
 #include "feetechbus.h"
 #include "healthreport.h"
 #include "servohealth.h"
@@ -53,7 +54,7 @@ private:
         feetech::ScanOptions scan;
         scan.lastId = 3;
         QSignalSpy finished(m_session.get(), &feetech::Session::scanFinished);
-        m_session->scan(scan);
+        m_session->submit(feetech::operations::scan(scan));
         QVERIFY(!finished.isEmpty() || finished.wait(30000));
     }
 
@@ -61,10 +62,14 @@ private:
     QVector<ServoHealth> check()
     {
         QVector<HealthReading> readings;
-        auto connection = connect(m_session.get(), &feetech::Session::healthRead, this,
-                                  [&readings](const HealthReading &r) { readings.append(r); });
-        const feetech::OperationResult result =
-            run([&] { m_session->checkHealth(m_found, feetech::kDefaultHealthReads); });
+        auto connection = connect(m_session.get(), &feetech::Session::operationProgress, this,
+                                  [&readings](const feetech::OperationProgress &progress) {
+                                      readings.append(progress.detail.value<HealthReading>());
+                                  });
+        const feetech::OperationResult result = run([&] {
+            m_session->submit(
+                feetech::operations::checkHealth(m_found, feetech::kDefaultHealthReads));
+        });
         disconnect(connection);
         if (!result.ok)
             qWarning("health check: %s", qPrintable(result.message));
@@ -77,12 +82,11 @@ private:
 
     std::optional<feetech::MoveTestResult> moveTest(const ServoInfo &servo)
     {
-        std::optional<feetech::MoveTestResult> moved;
-        auto connection = connect(m_session.get(), &feetech::Session::moveTested, this,
-                                  [&moved](const feetech::MoveTestResult &r) { moved = r; });
-        run([&] { m_session->moveTest(servo); });
-        disconnect(connection);
-        return moved;
+        const feetech::OperationResult result =
+            run([&] { m_session->submit(feetech::operations::moveTest(servo)); });
+        if (!result.detail.canConvert<feetech::MoveTestResult>())
+            return std::nullopt;
+        return result.detail.value<feetech::MoveTestResult>();
     }
 
     int writesTo(int address) const

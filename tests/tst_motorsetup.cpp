@@ -2,6 +2,7 @@
 // other bus, setting up ID, rate and settings, the joints check, all against the simulator.
 #include "pluggedbus.h"
 
+#include "busoperations.h"
 #include "motorsetup.h"
 
 #include <QtTest>
@@ -39,16 +40,17 @@ private:
     // Runs `start` and waits up to 30 s for the find or set-up it starts to end.
     MotorSetupResult run(const std::function<void()> &start)
     {
-        QSignalSpy finished(m_session.get(), &feetech::Session::motorSetupFinished);
+        QSignalSpy finished(m_session.get(), &feetech::Session::operationFinished);
         start();
         if (finished.isEmpty() && !finished.wait(30000))
             return {};
-        return finished.first().at(0).value<MotorSetupResult>();
+        const auto result = finished.first().at(0).value<feetech::OperationResult>();
+        return result.detail.value<MotorSetupResult>();
     }
 
     MotorSetupResult setUp(const MotorTarget &target)
     {
-        return run([&] { m_session->setUpMotor(target); });
+        return run([&] { m_session->submit(feetech::operations::setUpMotor(target)); });
     }
 
     // A set-up that must write nothing to any servo on the bus; its result.
@@ -105,7 +107,7 @@ private slots:
         QFETCH(qint32, factoryBaud);
         QVERIFY(plug(1, QStringLiteral("STS3215"), factoryBaud));
         const MotorTarget target = jointTarget(6); // the gripper has settings of its own
-        QSignalSpy progress(m_session.get(), &feetech::Session::motorSetupProgress);
+        QSignalSpy progress(m_session.get(), &feetech::Session::operationProgress);
         const MotorSetupResult result = setUp(target);
         QVERIFY2(result.ok, qPrintable(result.message));
         QCOMPARE(result.from.id, quint8(1));
@@ -115,7 +117,7 @@ private slots:
         QCOMPARE(result.verified, target.settings);
         QVERIFY(result.message.contains(QLatin1String("gripper is set up")));
         QCOMPARE(progress.size(), 5);
-        QCOMPARE(progress.last().at(0).toInt(), 5);
+        QCOMPARE(progress.last().at(0).value<feetech::OperationProgress>().done, 5);
         verifySetUp(0, m_robot, *m_robot.joint(u"gripper"));
         powerCycle();
         verifySetUp(0, m_robot, *m_robot.joint(u"gripper"), Settings::EepromOnly);
@@ -135,7 +137,8 @@ private slots:
     void findReportsTheOneServoWithoutWriting()
     {
         QVERIFY(plug(1, QStringLiteral("STS3215"), 115200));
-        const MotorSetupResult result = run([&] { m_session->findMotor(jointTarget(3)); });
+        const MotorSetupResult result =
+            run([&] { m_session->submit(feetech::operations::findMotor(jointTarget(3))); });
         QVERIFY(result.ok);
         QVERIFY(!result.setUp);
         QCOMPARE(int(result.search.verdict), int(MotorSearch::Verdict::OneServo));
@@ -197,8 +200,8 @@ private slots:
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
         const quint64 revision = pluggedServos().first().revision;
         const MotorSetupResult result = run([&] {
-            m_session->setUpMotor(jointTarget(2));
-            m_session->cancelMotorSetup();
+            m_session->submit(feetech::operations::setUpMotor(jointTarget(2)));
+            m_session->cancel(feetech::Operation::SetUpMotor);
         });
         QVERIFY(!result.ok);
         QVERIFY(result.message.startsWith(QLatin1String("Stopped")));
@@ -213,9 +216,10 @@ private slots:
         feetech::ScanOptions options;
         options.lastId = 2;
         const MotorSetupResult result = run([&] {
-            m_session->scan(options); // the set-up waits behind the scan
-            m_session->setUpMotor(jointTarget(2));
-            m_session->cancelMotorSetup();
+            m_session->submit(
+                feetech::operations::scan(options)); // the set-up waits behind the scan
+            m_session->submit(feetech::operations::setUpMotor(jointTarget(2)));
+            m_session->cancel(feetech::Operation::SetUpMotor);
         });
         QVERIFY2(!result.ok, qPrintable(result.message));
         QVERIFY(result.stopped);
@@ -245,10 +249,13 @@ private slots:
         QVector<JointCheck> joints;
         for (const feetech::RobotJoint &joint : m_robot.joints)
             joints.append({joint.id, joint.model, joint.settings, std::nullopt, {}});
-        QSignalSpy checked(m_session.get(), &feetech::Session::jointsChecked);
-        m_session->checkJoints(k1M, joints);
+        QSignalSpy checked(m_session.get(), &feetech::Session::operationFinished);
+        m_session->submit(feetech::operations::checkJoints(k1M, joints));
         QVERIFY(checked.wait(20000));
-        const auto result = checked.first().at(0).value<QVector<JointCheck>>();
+        const auto result = checked.first()
+                                .at(0)
+                                .value<feetech::OperationResult>()
+                                .detail.value<QVector<JointCheck>>();
         QCOMPARE(result.size(), 6);
         QVERIFY(result.at(0).done());
         QVERIFY(!result.at(1).done());

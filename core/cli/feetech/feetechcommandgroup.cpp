@@ -166,8 +166,7 @@ FeetechCommandGroup::identifyServoToWrite(const QString &what)
 bool FeetechCommandGroup::sharesItsId(FeetechDevice &device, const ServoInfo &servo)
 {
     // Two servos at one ID would both take whatever is written, and garble every read-back.
-    const auto shared =
-        device.operate([&device, &servo] { device.session().checkSharedId(servo); });
+    const auto shared = device.operate(feetech::operations::checkSharedId(servo));
     if (shared && shared->ok && !shared->servo.sharedId)
         return false;
     fail(shared ? shared->message : device.error());
@@ -214,8 +213,7 @@ FeetechCommandGroup::writeVerified(FeetechDevice &device, const ServoInfo &servo
         throw UsageError {error};
     Programmed written;
     Memory readBack;
-    const auto result = device.operate(
-        [&device, &servo, writes] { device.session().write(servo, *writes); }, &readBack);
+    const auto result = device.operate(feetech::operations::write(servo, *writes), &readBack);
     if (!result || !result->ok) {
         written.failure = result ? result->message : device.error();
         return written;

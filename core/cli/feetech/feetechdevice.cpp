@@ -156,7 +156,7 @@ bool FeetechDevice::open(qint32 baud)
 std::optional<ServoInfo> FeetechDevice::identify(quint8 id, qint32 baud,
                                                  std::chrono::microseconds *latency)
 {
-    const auto pinged = operate([this, id, baud] { m_session->ping(id, baud); });
+    const auto pinged = operate(feetech::operations::ping(id, baud));
     if (!pinged || !pinged->ok) {
         m_error = Tr::tr("%1 (at %2; servoctl feetech scan --baud all looks at every rate)")
                       .arg(pinged ? pinged->message : m_error, baudNumberText(baud));
@@ -184,9 +184,8 @@ std::optional<Memory> FeetechDevice::read(const ServoInfo &servo,
                                           const QVector<feetech::Block> &blocks)
 {
     Memory memory;
-    const auto result = operate(
-        [this, servo, blocks] { m_session->read(servo, blocks, feetech::ReadSource::Read); },
-        &memory);
+    const auto result =
+        operate(feetech::operations::read(servo, blocks, feetech::ReadSource::Read), &memory);
     if (!result || !result->ok) {
         if (result)
             m_error = result->message;
@@ -195,7 +194,7 @@ std::optional<Memory> FeetechDevice::read(const ServoInfo &servo,
     return memory;
 }
 
-std::optional<OperationResult> FeetechDevice::operate(const std::function<void()> &start,
+std::optional<OperationResult> FeetechDevice::operate(const feetech::BusOperation &operation,
                                                       Memory *memory)
 {
     if (m_interrupted) {
@@ -217,17 +216,16 @@ std::optional<OperationResult> FeetechDevice::operate(const std::function<void()
                                             feetech::ReadSource,
                                             quint8) { memory->insert(address, bytes); });
     }
-    // Started from inside the loop: a refusal is emitted before start() returns.
-    QTimer::singleShot(0, &loop, start);
-    runUntilInterrupted(loop, kOperationTimeoutSeconds, [this, &loop] {
+    // Submitted from inside the loop: a refusal is emitted before submit() returns.
+    QTimer::singleShot(0, &loop, [this, operation] { m_session->submit(operation); });
+    const feetech::Operation kind = operation.kind;
+    runUntilInterrupted(loop, kOperationTimeoutSeconds, [this, &loop, kind] {
         if (m_interrupted) {
             loop.quit();
             return;
         }
         m_interrupted = true;
-        m_session->cancelIdentify();
-        m_session->cancelMotorSetup();
-        m_session->cancelHealthCheck();
+        m_session->cancel(kind);
     });
     QObject::disconnect(finished);
     QObject::disconnect(reading);
@@ -256,9 +254,11 @@ bool FeetechDevice::scan(const feetech::ScanOptions &options,
                              m_error = message;
                              loop.quit();
                          });
-    QTimer::singleShot(0, &loop, [this, options] { m_session->scan(options); });
+    QTimer::singleShot(0, &loop,
+                       [this, options] { m_session->submit(feetech::operations::scan(options)); });
     // Ctrl-C ends the scan cleanly, so what was found so far is still reported.
-    runUntilInterrupted(loop, std::nullopt, [this] { m_session->cancelScan(); });
+    runUntilInterrupted(loop, std::nullopt,
+                        [this] { m_session->cancel(feetech::Operation::Scan); });
     QObject::disconnect(finding);
     QObject::disconnect(finished);
     return completed;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "arguments.h"
+#include "busoperations.h"
 #include "commandoutput.h"
 #include "feetechsession.h"
 #include "servoparameters.h"
@@ -70,12 +71,13 @@ public:
     // The blocks (all of the servo's table when empty), or nothing (and error()).
     std::optional<Memory> read(const ServoInfo &servo, const QVector<feetech::Block> &blocks);
 
-    // Runs one session operation to its operationFinished; `memory` gathers what it read.
+    // Runs one session operation (busoperations.h) to its operationFinished; `memory` gathers
+    // what it read.
     // Nothing (and error()) when it did not finish in time, or after Ctrl-C: the first asks
     // the operation to stop cleanly (identify restores the servo, a set-up stops between
     // steps, a write finishes and relocks) and waits for it; a second stops waiting. Once
     // interrupted, no further operation starts.
-    std::optional<OperationResult> operate(const std::function<void()> &start,
+    std::optional<OperationResult> operate(const feetech::BusOperation &operation,
                                            Memory *memory = nullptr);
 
     // Runs a scan to its end (or to Ctrl-C); false (and error()) when it did not complete.

@@ -23,11 +23,11 @@ struct Tr
 namespace cli {
 
 // Runs one flow and reports it: its message, the servo as it is reached afterwards.
-int FeetechFlowCommands::report(Target &target, const std::function<void()> &start,
+int FeetechFlowCommands::report(Target &target, const feetech::BusOperation &operation,
                                 const std::function<void(QJsonObject &, const Memory &)> &more)
 {
     Memory readBack;
-    const auto result = target.device->operate(start, &readBack);
+    const auto result = target.device->operate(operation, &readBack);
     if (!result)
         return fail(target.device->error());
     if (!result->ok)
@@ -85,9 +85,7 @@ int FeetechFlowCommands::setId(const QString &what, const QStringList &operands)
             target->servo,
             Tr::tr("servo %1 already has ID %1; nothing written").arg(target->servo.id));
     // No list of IDs in use: the session's PING of the new ID refuses an occupied one.
-    return report(*target, [&target, newId] {
-        target->device->session().changeId(target->servo, int(*newId), {});
-    });
+    return report(*target, feetech::operations::changeId(target->servo, int(*newId), {}));
 }
 
 int FeetechFlowCommands::setBaud(const QString &what, const QStringList &operands)
@@ -111,9 +109,7 @@ int FeetechFlowCommands::setBaud(const QString &what, const QStringList &operand
             throw UsageError {Tr::tr("%1 servos do not support %2")
                                   .arg(familyText(servo), baudNumberText(newBaud))};
     }
-    return report(*target, [&target, newBaud] {
-        target->device->session().changeBaud(target->servo, newBaud);
-    });
+    return report(*target, feetech::operations::changeBaud(target->servo, newBaud));
 }
 
 int FeetechFlowCommands::calibrateMiddle(const QString &what, const QStringList &operands)
@@ -126,14 +122,14 @@ int FeetechFlowCommands::calibrateMiddle(const QString &what, const QStringList 
     if (sharesItsId(*target->device, target->servo))
         return ExitDeviceFailure;
     const feetech::RegisterTable &table = target->servo.table();
-    return report(
-        *target, [&target] { target->device->session().calibrateMiddle(target->servo); },
-        [&table](QJsonObject &object, const Memory &readBack) {
-            const QHash<QString, qint32> values = valuesByKey(decodeMemory(table, readBack));
-            if (values.contains(QStringLiteral("position_offset")))
-                object.insert(QStringLiteral("position_offset"),
-                              values.value(QStringLiteral("position_offset")));
-        });
+    return report(*target, feetech::operations::calibrateMiddle(target->servo),
+                  [&table](QJsonObject &object, const Memory &readBack) {
+                      const QHash<QString, qint32> values =
+                          valuesByKey(decodeMemory(table, readBack));
+                      if (values.contains(QStringLiteral("position_offset")))
+                          object.insert(QStringLiteral("position_offset"),
+                                        values.value(QStringLiteral("position_offset")));
+                  });
 }
 
 int FeetechFlowCommands::factoryReset(const QString &what, const QStringList &operands)
@@ -175,12 +171,11 @@ int FeetechFlowCommands::factoryReset(const QString &what, const QStringList &op
                      << '\n';
         m_output.out.flush();
     }
-    return report(
-        *target, [&target] { target->device->session().factoryReset(target->servo); },
-        [this, backup](QJsonObject &object, const Memory &) {
-            if (m_output.json)
-                object.insert(QStringLiteral("backup"), backup);
-        });
+    return report(*target, feetech::operations::factoryReset(target->servo),
+                  [this, backup](QJsonObject &object, const Memory &) {
+                      if (m_output.json)
+                          object.insert(QStringLiteral("backup"), backup);
+                  });
 }
 
 int FeetechFlowCommands::reboot(const QString &what, const QStringList &operands)
@@ -192,7 +187,7 @@ int FeetechFlowCommands::reboot(const QString &what, const QStringList &operands
         return ExitDeviceFailure;
     if (sharesItsId(*target->device, target->servo))
         return ExitDeviceFailure;
-    return report(*target, [&target] { target->device->session().reboot(target->servo); });
+    return report(*target, feetech::operations::reboot(target->servo));
 }
 
 int FeetechFlowCommands::lock(const QString &what, const QStringList &operands)
@@ -205,7 +200,7 @@ int FeetechFlowCommands::lock(const QString &what, const QStringList &operands)
         return ExitDeviceFailure;
     if (sharesItsId(*target->device, target->servo))
         return ExitDeviceFailure;
-    return report(*target, [&target] { target->device->session().lockEeprom(target->servo); });
+    return report(*target, feetech::operations::lockEeprom(target->servo));
 }
 
 int FeetechFlowCommands::recover(const QString &what, const QStringList &operands)
@@ -221,9 +216,8 @@ int FeetechFlowCommands::recover(const QString &what, const QStringList &operand
         return ExitDeviceFailure;
     // Still tripped, the result's message is the power-cycle steps: printed as the failure.
     const quint8 id = target->servo.id;
-    const int code = report(*target, [&target, checkOnly] {
-        target->device->session().recoverOverload(target->servo, checkOnly);
-    });
+    const int code =
+        report(*target, feetech::operations::recoverOverload(target->servo, checkOnly));
     if (code != ExitOk && !checkOnly) {
         m_output.err
             << "servoctl: "
@@ -246,7 +240,7 @@ int FeetechFlowCommands::identify(const QString &what, const QStringList &operan
                      << '\n';
         m_output.out.flush();
     }
-    return report(*target, [&target] { target->device->session().identifyJoint(target->servo); });
+    return report(*target, feetech::operations::identifyJoint(target->servo));
 }
 
 } // namespace cli

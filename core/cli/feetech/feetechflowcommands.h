@@ -24,7 +24,7 @@ public:
     int identify(const QString &what, const QStringList &operands);
 
 private:
-    int report(Target &target, const std::function<void()> &start,
+    int report(Target &target, const feetech::BusOperation &operation,
                const std::function<void(QJsonObject &, const Memory &)> &more = {});
     int alreadyDone(const ServoInfo &servo, const QString &message);
 };

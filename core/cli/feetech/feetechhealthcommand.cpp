@@ -58,13 +58,14 @@ int FeetechHealthCommand::health(const QString &what, const QStringList &operand
     }
     if (!reachable.isEmpty()) {
         const auto connection =
-            QObject::connect(&device.session(), &feetech::Session::healthRead,
-                             [&readings, &ids](const feetech::HealthReading &reading) {
+            QObject::connect(&device.session(), &feetech::Session::operationProgress,
+                             [&readings, &ids](const feetech::OperationProgress &progress) {
+                                 const auto reading =
+                                     progress.detail.value<feetech::HealthReading>();
                                  readings[ids.indexOf(reading.servo.id)] = reading;
                              });
-        const auto result = device.operate([&device, &reachable] {
-            device.session().checkHealth(reachable, feetech::kDefaultHealthReads);
-        });
+        const auto result = device.operate(
+            feetech::operations::checkHealth(reachable, feetech::kDefaultHealthReads));
         QObject::disconnect(connection);
         if (!result || !result->ok)
             return fail(result ? result->message : device.error());
@@ -90,12 +91,9 @@ int FeetechHealthCommand::health(const QString &what, const QStringList &operand
                          << '\n';
             m_output.err.flush();
             std::optional<feetech::MoveTestResult> moved;
-            const auto connection =
-                QObject::connect(&device.session(), &feetech::Session::moveTested,
-                                 [&moved](const feetech::MoveTestResult &r) { moved = r; });
-            const auto result =
-                device.operate([&device, info] { device.session().moveTest(info); });
-            QObject::disconnect(connection);
+            const auto result = device.operate(feetech::operations::moveTest(info));
+            if (result && result->detail.canConvert<feetech::MoveTestResult>())
+                moved = result->detail.value<feetech::MoveTestResult>();
             if (!moved) {
                 moved = feetech::MoveTestResult {};
                 moved->id = servo.id;

@@ -75,16 +75,14 @@ int FeetechSetupCommand::setupMotor(const QString &what, const QStringList &oper
     FeetechDevice device(m_args, m_output);
     if (!device.open(kDefaultBaud))
         return fail(device.error());
-    std::optional<feetech::MotorSetupResult> result;
-    const QMetaObject::Connection reporting =
-        QObject::connect(&device.session(), &feetech::Session::motorSetupFinished,
-                         [&result](const feetech::MotorSetupResult &r) { result = r; });
-    const auto finished =
-        device.operate([&device, &target] { device.session().setUpMotor(target); });
-    QObject::disconnect(reporting);
+    const auto finished = device.operate(feetech::operations::setUpMotor(target));
     if (!finished)
         return fail(device.error()); // too slow, or Ctrl-C: the device says which
-    // The link dropped: the session ends the set-up without a motorSetupFinished.
+    // The link dropped: the session ends the set-up without its MotorSetupResult.
+    const std::optional<feetech::MotorSetupResult> result =
+        finished->detail.canConvert<feetech::MotorSetupResult>()
+        ? std::optional(finished->detail.value<feetech::MotorSetupResult>())
+        : std::nullopt;
     if (!result)
         return fail(finished->message.isEmpty()
                         ? Tr::tr("the set-up ended before it reported; check the port and "

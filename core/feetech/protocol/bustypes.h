@@ -9,6 +9,7 @@
 #include <QByteArrayView>
 #include <QMetaType>
 #include <QString>
+#include <QVariant>
 #include <QVector>
 
 #include <chrono>
@@ -163,9 +164,25 @@ struct OperationResult
     // Ended by the link going down (running, paused or still queued), not by the servo: whoever
     // watches the connection reports that once.
     bool linkLost = false;
-    // The submission it answers (Session::setNextTicket), which BusClient turns into its
-    // reply; 0 where nobody asked for one (the guard, servoctl).
+    // The submission it answers (BusOperation::ticket), which BusClient turns into its reply;
+    // 0 where nobody asked for one (the guard, servoctl).
     quint64 ticket = 0;
+    // What the operation found besides ok and message, when it has more to say: a
+    // MotorSetupResult (FindMotor, SetUpMotor), a QVector<JointCheck> (CheckJoints), a
+    // MoveTestResult (MoveTest). Empty when it ended before it could say (a lost link).
+    QVariant detail {};
+};
+
+// How far a running operation has got: `done` of `total` (an apply chain's writes, a health
+// check's servos, a motor set-up's steps), with a sentence where it has one, and what it just
+// found (a HealthReading for each servo of a health check).
+struct OperationProgress
+{
+    quint64 ticket = 0; // as in OperationResult
+    int done = 0;
+    int total = 0;
+    QString text;
+    QVariant detail {};
 };
 
 struct SessionTiming
@@ -204,6 +221,7 @@ Q_DECLARE_METATYPE(feetech::ServoInfo)
 Q_DECLARE_METATYPE(feetech::ScanOptions)
 Q_DECLARE_METATYPE(feetech::ReadSource)
 Q_DECLARE_METATYPE(feetech::OperationResult)
+Q_DECLARE_METATYPE(feetech::OperationProgress)
 Q_DECLARE_METATYPE(feetech::RegisterWrite)
 Q_DECLARE_METATYPE(feetech::SyncWriteEntry)
 Q_DECLARE_METATYPE(feetech::TelemetryOptions)

@@ -2,6 +2,7 @@
 // submitted to the session in its worker thread.
 #include "busclient.h"
 
+#include "busoperations.h"
 #include "linksession.h"
 #include "registerkeys.h"
 #include "registertable.h"
@@ -68,7 +69,11 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         m_servos->entry(index).statusByte = status;
         m_servos->noteUpdated(index);
     });
-    connect(session, &Session::progress, this, &BusClient::progress);
+    connect(session, &Session::operationProgress, this, [this](const OperationProgress &progress) {
+        const auto pending = m_pending.find(progress.ticket);
+        if (pending != m_pending.end() && pending->second.reply)
+            pending->second.reply->reportProgress(progress);
+    });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
     m_guard = new BusGuard(this);
     m_telemetry = new TelemetryHub(this);
@@ -109,7 +114,7 @@ void BusClient::scan(const ScanOptions &options)
     m_servos->clear();
     m_scanning = true;
     emit busyChanged(true);
-    m_worker.run([options](Session &s) { s.scan(options); });
+    m_worker.run([options](Session &s) { s.submit(operations::scan(options)); });
 }
 
 void BusClient::cancelScan()
@@ -117,7 +122,7 @@ void BusClient::cancelScan()
     // Not queued behind the scan: the flag must be seen while it runs.
     Session *session = m_worker.session();
     QMetaObject::invokeMethod(
-        session, [session] { session->cancelScan(); }, Qt::QueuedConnection);
+        session, [session] { session->cancel(Operation::Scan); }, Qt::QueuedConnection);
 }
 
 QString BusClient::writeBlocker(int index) const
@@ -283,12 +288,12 @@ OperationReply *BusClient::startApply(int index, QString *error, bool withAddres
     parameters.takeWritePlan({QStringLiteral("id"), QStringLiteral("baud_rate")});
     return startOperation(
         Operation::Write, index, error, Work::Foreground,
-        [plan = *plan](Session &s, const ServoInfo &info) { s.apply(info, plan); });
+        [plan = *plan](const ServoInfo &info) { return operations::apply(info, plan); });
 }
 
 OperationReply *
 BusClient::startOperation(Operation operation, int index, QString *error, Work kind,
-                          const std::function<void(Session &, const ServoInfo &)> &work)
+                          const std::function<BusOperation(const ServoInfo &)> &make)
 {
     if (index < 0 || index >= m_servos->count()) {
         if (error)
@@ -301,27 +306,26 @@ BusClient::startOperation(Operation operation, int index, QString *error, Work k
         return nullptr;
     }
     const ServoInfo info = m_servos->at(index).info;
-    return submit(operation, info.id, info.baud, kind, [work, info](Session &s) { work(s, info); });
+    const BusOperation made = make(info);
+    Q_ASSERT(made.kind == operation);
+    return submit(made, info.id, info.baud, kind);
 }
 
-OperationReply *BusClient::submit(Operation operation, quint8 id, qint32 baud, Work kind,
-                                  const std::function<void(Session &)> &work)
+OperationReply *BusClient::submit(const BusOperation &operation, quint8 id, qint32 baud, Work kind)
 {
     const quint64 ticket = ++m_lastTicket;
     const bool wasBusy = isBusy();
     OperationReply *reply = kind == Work::Background
         ? nullptr
-        : new OperationReply(operation, id, baud, kind == Work::Control, this);
+        : new OperationReply(operation.kind, id, baud, kind == Work::Control, this);
     m_pending[ticket] = {id, baud, kind, reply, false};
     if (kind == Work::Foreground && !wasBusy)
         emit busyChanged(true);
     if (reply)
         emit submitted(reply);
-    m_worker.run([ticket, work](Session &s) {
-        s.setNextTicket(ticket);
-        work(s);
-        s.setNextTicket(0);
-    });
+    BusOperation submitted = operation;
+    submitted.ticket = ticket;
+    m_worker.run([submitted](Session &s) { s.submit(submitted); });
     return reply;
 }
 
@@ -329,7 +333,7 @@ OperationReply *BusClient::readServo(int index)
 {
     return startOperation(
         Operation::Read, index, nullptr, Work::Foreground,
-        [](Session &s, const ServoInfo &info) { s.read(info, {}, ReadSource::Read); });
+        [](const ServoInfo &info) { return operations::read(info, {}, ReadSource::Read); });
 }
 
 void BusClient::refreshRam(int index)
@@ -340,9 +344,10 @@ void BusClient::refreshRam(int index)
     if (!info.hasTable())
         return;
     const QVector<Block> ram = info.table().ramBlocks();
-    startOperation(
-        Operation::Read, index, nullptr, Work::Background,
-        [ram](Session &s, const ServoInfo &target) { s.read(target, ram, ReadSource::Refresh); });
+    startOperation(Operation::Read, index, nullptr, Work::Background,
+                   [ram](const ServoInfo &target) {
+                       return operations::read(target, ram, ReadSource::Refresh);
+                   });
 }
 
 OperationReply *BusClient::changeId(int index, int newId, QString *error)
@@ -357,7 +362,7 @@ OperationReply *BusClient::changeId(int index, int newId, QString *error)
     }
     return startOperation(
         Operation::ChangeId, index, error, Work::Foreground,
-        [newId, inUse](Session &s, const ServoInfo &info) { s.changeId(info, newId, inUse); });
+        [newId, inUse](const ServoInfo &info) { return operations::changeId(info, newId, inUse); });
 }
 
 OperationReply *BusClient::changeBaud(int index, qint32 newBaud, QString *error)
@@ -366,7 +371,7 @@ OperationReply *BusClient::changeBaud(int index, qint32 newBaud, QString *error)
         return nullptr;
     return startOperation(
         Operation::ChangeBaud, index, error, Work::Foreground,
-        [newBaud](Session &s, const ServoInfo &info) { s.changeBaud(info, newBaud); });
+        [newBaud](const ServoInfo &info) { return operations::changeBaud(info, newBaud); });
 }
 
 OperationReply *BusClient::calibrateMiddle(int index, QString *error)
@@ -380,7 +385,7 @@ OperationReply *BusClient::calibrateMiddle(int index, QString *error)
         return nullptr;
     }
     return startOperation(Operation::CalibrateMiddle, index, error, Work::Foreground,
-                          [](Session &s, const ServoInfo &info) { s.calibrateMiddle(info); });
+                          &operations::calibrateMiddle);
 }
 
 OperationReply *BusClient::factoryReset(int index, QString *error)
@@ -388,15 +393,14 @@ OperationReply *BusClient::factoryReset(int index, QString *error)
     if (refused(writeBlocker(index), error))
         return nullptr;
     return startOperation(Operation::FactoryReset, index, error, Work::Foreground,
-                          [](Session &s, const ServoInfo &info) { s.factoryReset(info); });
+                          &operations::factoryReset);
 }
 
 OperationReply *BusClient::reboot(int index, QString *error)
 {
     if (refused(commandBlocker(index), error))
         return nullptr;
-    return startOperation(Operation::Reboot, index, error, Work::Foreground,
-                          [](Session &s, const ServoInfo &info) { s.reboot(info); });
+    return startOperation(Operation::Reboot, index, error, Work::Foreground, &operations::reboot);
 }
 
 OperationReply *BusClient::clearStatus(int index, QString *error)
@@ -404,7 +408,7 @@ OperationReply *BusClient::clearStatus(int index, QString *error)
     if (refused(commandBlocker(index), error))
         return nullptr;
     return startOperation(Operation::ClearStatus, index, error, Work::Foreground,
-                          [](Session &s, const ServoInfo &info) { s.clearStatus(info); });
+                          &operations::clearStatus);
 }
 
 OperationReply *BusClient::lockEeprom(int index, QString *error)
@@ -412,7 +416,7 @@ OperationReply *BusClient::lockEeprom(int index, QString *error)
     if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
         return nullptr;
     return startOperation(Operation::LockEeprom, index, error, Work::Foreground,
-                          [](Session &s, const ServoInfo &info) { s.lockEeprom(info); });
+                          &operations::lockEeprom);
 }
 
 bool BusClient::eepromUnlocked(int index) const
@@ -446,8 +450,9 @@ OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem
     if (!writes)
         return nullptr;
     const QVector<RegisterWrite> items = *writes;
-    return startOperation(Operation::Write, index, error, Work::Control,
-                          [items](Session &s, const ServoInfo &info) { s.write(info, items); });
+    return startOperation(
+        Operation::Write, index, error, Work::Control,
+        [items](const ServoInfo &info) { return operations::write(info, items); });
 }
 
 OperationReply *BusClient::allTorqueOff()
@@ -462,8 +467,7 @@ OperationReply *BusClient::allTorqueOff()
     }
     if (bauds.isEmpty() && status().baud > 0)
         bauds.append(status().baud); // nothing scanned yet: the rate the port is at
-    return submit(Operation::TorqueOff, 0, 0, Work::Emergency,
-                  [bauds, servos](Session &s) { s.torqueOffAll(bauds, servos); });
+    return submit(operations::torqueOffAll(bauds, servos), 0, 0, Work::Emergency);
 }
 
 QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString *error)
@@ -502,10 +506,9 @@ QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString
     QVector<OperationReply *> replies;
     for (const qint32 baud : std::as_const(bauds)) {
         const QVector<SyncWriteEntry> group = entries.value(baud);
-        replies.append(submit(Operation::SyncWrite, 0, baud, Work::Control,
-                              [baud, address, group](Session &s) {
-                                  s.syncWrite(baud, address, int(group.first().data.size()), group);
-                              }));
+        replies.append(
+            submit(operations::syncWrite(baud, address, int(group.first().data.size()), group), 0,
+                   baud, Work::Control));
     }
     return replies;
 }
@@ -546,7 +549,7 @@ OperationReply *BusClient::identifyJoint(int index, QString *error)
     const ServoInfo &info = m_servos->at(index).info;
     m_identifying = info.address();
     return startOperation(Operation::Identify, index, error, Work::Foreground,
-                          [](Session &s, const ServoInfo &target) { s.identifyJoint(target); });
+                          &operations::identifyJoint);
 }
 
 bool BusClient::isIdentifying(int index) const
@@ -584,10 +587,8 @@ OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
             *error = refusal;
         return nullptr;
     }
-    return submit(Operation::SendPacket, replyId.value_or(kBroadcastId), baud, Work::Foreground,
-                  [frame, baud, replyId, replyDataSize](Session &s) {
-                      s.sendPacket(frame, baud, replyId, replyDataSize);
-                  });
+    return submit(operations::sendPacket(frame, baud, replyId, replyDataSize),
+                  replyId.value_or(kBroadcastId), baud, Work::Foreground);
 }
 
 } // namespace feetech

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "busguard.h"
+#include "busoperation.h"
 #include "feetechsession.h"
 #include "goalrange.h"
 #include "healthservice.h"
@@ -137,11 +138,12 @@ public:
         Control, // a control write: reported, but it does not make the bus busy
         Emergency // All torque off: ahead of everything, it does not make the bus busy
     };
+    // The operation `make` gives for servo `index` (as it is now), submitted.
     OperationReply *startOperation(Operation operation, int index, QString *error, Work kind,
-                                   const std::function<void(Session &, const ServoInfo &)> &work);
-    // Queues `work` in the session under a new ticket; its reply (none for a background one).
-    OperationReply *submit(Operation operation, quint8 id, qint32 baud, Work kind,
-                           const std::function<void(Session &)> &work);
+                                   const std::function<BusOperation(const ServoInfo &)> &make);
+    // Queues `operation` (busoperations.h) in the session under a new ticket, as work on the
+    // servo at `id` and `baud`; its reply (none for a background one).
+    OperationReply *submit(const BusOperation &operation, quint8 id, qint32 baud, Work kind);
 
     // The overload and thermal guard, on from the start.
     BusGuard *guard() const { return m_guard; }
@@ -155,7 +157,6 @@ signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
     void scanProgress(int done, int total, qint32 baud);
     void scanFinished(bool completed, const QString &message);
-    void progress(int done, int total);
     // A reply was made for an operation just submitted (not for background refreshes).
     void submitted(feetech::OperationReply *reply);
     void busyChanged(bool busy);

@@ -3,6 +3,7 @@
 #include "busguard.h"
 
 #include "busclient.h"
+#include "busoperations.h"
 
 #include <QCoreApplication>
 
@@ -109,9 +110,11 @@ OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, QString *er
             *error = Tr::tr("This servo has no status register: there is nothing to recover.");
         return nullptr;
     }
-    return m_client->startOperation(
-        Operation::RecoverOverload, index, error, BusClient::Work::Foreground,
-        [checkOnly](Session &s, const ServoInfo &info) { s.recoverOverload(info, checkOnly); });
+    return m_client->startOperation(Operation::RecoverOverload, index, error,
+                                    BusClient::Work::Foreground,
+                                    [checkOnly](const ServoInfo &info) {
+                                        return operations::recoverOverload(info, checkOnly);
+                                    });
 }
 
 } // namespace feetech

@@ -2,6 +2,7 @@
 #include "healthservice.h"
 
 #include "busclient.h"
+#include "busoperations.h"
 
 #include <QCoreApplication>
 
@@ -19,11 +20,7 @@ namespace feetech {
 HealthService::HealthService(BusClient *client)
     : QObject(client)
     , m_client(client)
-{
-    connect(client->session(), &Session::healthRead, this, &HealthService::reading);
-    connect(client->session(), &Session::moveTested, this,
-            [this](const MoveTestResult &result) { m_moveTested = result; });
-}
+{ }
 
 void HealthService::onWorkFinished(const OperationResult &result)
 {
@@ -32,13 +29,12 @@ void HealthService::onWorkFinished(const OperationResult &result)
         m_checking = false;
         emit checkFinished(result.ok, result.message);
     } else if (result.operation == Operation::MoveTest) {
-        MoveTestResult reported = m_moveTested.value_or(MoveTestResult {});
-        if (!m_moveTested) { // the link went down under it
+        MoveTestResult reported = result.detail.value<MoveTestResult>();
+        if (!result.detail.canConvert<MoveTestResult>()) { // the link went down under it
             reported.id = result.servo.id;
             reported.baud = result.servo.baud;
             reported.message = result.message;
         }
-        m_moveTested.reset();
         emit moveTested(reported);
     }
 }
@@ -67,8 +63,10 @@ OperationReply *HealthService::check(const QVector<int> &indexes, int reads, QSt
     m_checking = true;
     // Several servos, none of them the target: the check reports each on its own.
     OperationReply *reply =
-        m_client->submit(Operation::HealthCheck, 0, 0, BusClient::Work::Foreground,
-                         [servos, reads](Session &s) { s.checkHealth(servos, reads); });
+        m_client->submit(operations::checkHealth(servos, reads), 0, 0, BusClient::Work::Foreground);
+    connect(reply, &OperationReply::progress, this, [this](const OperationProgress &progress) {
+        emit reading(progress.detail.value<HealthReading>(), progress.done, progress.total);
+    });
     connect(reply, &OperationReply::finished, this, &HealthService::onWorkFinished);
     return reply;
 }
@@ -78,7 +76,7 @@ void HealthService::cancel()
     // Not queued behind the check: the flag must be seen while it runs.
     Session *session = m_client->session();
     QMetaObject::invokeMethod(
-        session, [session] { session->cancelHealthCheck(); }, Qt::QueuedConnection);
+        session, [session] { session->cancel(Operation::HealthCheck); }, Qt::QueuedConnection);
 }
 
 QString HealthService::moveTestBlocker(int index) const
@@ -97,10 +95,8 @@ OperationReply *HealthService::moveTest(int index, bool confirmed, QString *erro
             *error = why;
         return nullptr;
     }
-    m_moveTested.reset();
-    OperationReply *reply =
-        m_client->startOperation(Operation::MoveTest, index, error, BusClient::Work::Foreground,
-                                 [](Session &s, const ServoInfo &target) { s.moveTest(target); });
+    OperationReply *reply = m_client->startOperation(
+        Operation::MoveTest, index, error, BusClient::Work::Foreground, &operations::moveTest);
     if (reply)
         connect(reply, &OperationReply::finished, this, &HealthService::onWorkFinished);
     return reply;

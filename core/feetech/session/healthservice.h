@@ -23,7 +23,7 @@ public:
     explicit HealthService(BusClient *client);
 
     // Reads each of servos `indexes` in turn (its limits and `reads` feedback blocks); a
-    // reading per servo (and the client's progress), then checkFinished. Nullptr and *error
+    // reading per servo, then checkFinished. Nullptr and *error
     // when nothing was started.
     OperationReply *check(const QVector<int> &indexes, int reads = kDefaultHealthReads,
                           QString *error = nullptr);
@@ -37,7 +37,8 @@ public:
     OperationReply *moveTest(int index, bool confirmed, QString *error = nullptr);
 
 signals:
-    void reading(const feetech::HealthReading &reading);
+    // Each servo's reading as it comes, the `done`-th of `total`.
+    void reading(const feetech::HealthReading &reading, int done, int total);
     void checkFinished(bool completed, const QString &message);
     // Also when the link went down meanwhile (then not ok).
     void moveTested(const feetech::MoveTestResult &result);
@@ -47,7 +48,6 @@ private:
 
     BusClient *m_client;
     bool m_checking = false;
-    std::optional<MoveTestResult> m_moveTested; // what the session said of the running test
 };
 
 } // namespace feetech

@@ -2,6 +2,7 @@
 #include "motorsetupservice.h"
 
 #include "busclient.h"
+#include "busoperations.h"
 
 #include <QCoreApplication>
 
@@ -19,17 +20,9 @@ namespace feetech {
 MotorSetupService::MotorSetupService(BusClient *client)
     : QObject(client)
     , m_client(client)
-{
-    Session *session = client->session();
-    connect(session, &Session::motorSetupProgress, this, &MotorSetupService::progress);
-    connect(session, &Session::motorSetupFinished, this,
-            [this](const MotorSetupResult &result) { m_result = result; });
-    connect(session, &Session::jointsChecked, this,
-            [this](const QVector<JointCheck> &joints) { m_jointsChecked = joints; });
-}
+{ }
 
-OperationReply *MotorSetupService::start(Operation operation, QString *error,
-                                         const std::function<void(Session &)> &work)
+OperationReply *MotorSetupService::start(const BusOperation &operation, QString *error)
 {
     QString why;
     if (!m_client->isConnected())
@@ -41,29 +34,29 @@ OperationReply *MotorSetupService::start(Operation operation, QString *error,
             *error = why;
         return nullptr;
     }
-    m_result.reset();
-    m_jointsChecked.reset();
     // No servo of the list is its target: the work finds its own servo.
-    OperationReply *reply = m_client->submit(operation, 0, 0, BusClient::Work::Foreground, work);
+    OperationReply *reply = m_client->submit(operation, 0, 0, BusClient::Work::Foreground);
+    connect(reply, &OperationReply::progress, this, [this](const OperationProgress &progress) {
+        emit this->progress(progress.done, progress.total, progress.text);
+    });
     connect(reply, &OperationReply::finished, this, &MotorSetupService::onWorkFinished);
     return reply;
 }
 
 OperationReply *MotorSetupService::find(const MotorTarget &target, QString *error)
 {
-    return start(Operation::FindMotor, error, [target](Session &s) { s.findMotor(target); });
+    return start(operations::findMotor(target), error);
 }
 
 OperationReply *MotorSetupService::setUp(const MotorTarget &target, QString *error)
 {
-    return start(Operation::SetUpMotor, error, [target](Session &s) { s.setUpMotor(target); });
+    return start(operations::setUpMotor(target), error);
 }
 
 OperationReply *MotorSetupService::checkJoints(qint32 baud, const QVector<JointCheck> &joints,
                                                QString *error)
 {
-    return start(Operation::CheckJoints, error,
-                 [baud, joints](Session &s) { s.checkJoints(baud, joints); });
+    return start(operations::checkJoints(baud, joints), error);
 }
 
 void MotorSetupService::cancel()
@@ -71,28 +64,26 @@ void MotorSetupService::cancel()
     // Not queued behind the work: the flag must be seen while it runs.
     Session *session = m_client->session();
     QMetaObject::invokeMethod(
-        session, [session] { session->cancelMotorSetup(); }, Qt::QueuedConnection);
+        session, [session] { session->cancel(Operation::SetUpMotor); }, Qt::QueuedConnection);
 }
 
 void MotorSetupService::onWorkFinished(const OperationResult &result)
 {
     if (result.operation == Operation::CheckJoints) {
-        const QVector<JointCheck> joints = m_jointsChecked.value_or(QVector<JointCheck>());
-        const bool ok = result.ok && m_jointsChecked.has_value();
-        m_jointsChecked.reset();
-        emit jointsChecked(joints, ok, result.message);
+        // Without its joints when the link went down under it.
+        const bool ok = result.ok && result.detail.canConvert<QVector<JointCheck>>();
+        emit jointsChecked(result.detail.value<QVector<JointCheck>>(), ok, result.message);
         return;
     }
     // The link went down under it: the session reported only the operation's end.
     MotorSetupResult reported;
-    if (m_result) {
-        reported = *m_result;
+    if (result.detail.canConvert<MotorSetupResult>()) {
+        reported = result.detail.value<MotorSetupResult>();
     } else {
         reported.setUp = result.operation == Operation::SetUpMotor;
         reported.search.verdict = MotorSearch::Verdict::Failed;
         reported.message = result.message;
     }
-    m_result.reset();
     // A servo of the list that was set up now answers elsewhere.
     const int index = m_client->servos()->indexOf(reported.from.id, reported.from.baud);
     const bool moved = reported.from.id != reported.to.id || reported.from.baud != reported.to.baud;

@@ -1,6 +1,7 @@
 // The GUI thread's side of motor set-up: find the one servo on the bus, set it up, check joints.
 #pragma once
 
+#include "busoperation.h"
 #include "motorsetup.h"
 
 #include <QObject>
@@ -12,7 +13,6 @@ namespace feetech {
 
 class BusClient;
 class OperationReply;
-class Session;
 
 // Belongs to a BusClient (BusClient::motorSetup()). No scan is needed: each servo is found
 // alone. Each find or set-up ends with finished, each check with jointsChecked, also when the
@@ -40,14 +40,10 @@ signals:
     void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
 
 private:
-    OperationReply *start(Operation operation, QString *error,
-                          const std::function<void(Session &)> &work);
+    OperationReply *start(const BusOperation &operation, QString *error);
     void onWorkFinished(const OperationResult &result);
 
     BusClient *m_client;
-    // What the session reported of the work running, until it ends.
-    std::optional<MotorSetupResult> m_result;
-    std::optional<QVector<JointCheck>> m_jointsChecked;
 };
 
 } // namespace feetech

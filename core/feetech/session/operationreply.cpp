@@ -28,4 +28,10 @@ void OperationReply::finishStep(const OperationResult &result)
     emit finished(m_result);
 }
 
+void OperationReply::reportProgress(const OperationProgress &step)
+{
+    if (!m_finished)
+        emit progress(step);
+}
+
 } // namespace feetech

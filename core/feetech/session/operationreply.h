@@ -29,13 +29,18 @@ public:
     // sent it rather than as news of the servo list.
     bool isControl() const { return m_control; }
     bool isFinished() const { return m_finished; }
-    // The result once finished (the last step's for an apply chain).
+    // The result once finished (the last step's for an apply chain); its detail carries what
+    // the operation found, where it has more to say (OperationResult::detail).
     const OperationResult &result() const { return m_result; }
 
     // For BusClient: records the step or the result and emits the signal.
     void finishStep(const OperationResult &result);
+    void reportProgress(const OperationProgress &step);
 
 signals:
+    // How far it has got (an apply chain's writes, a health check's servos with each one's
+    // reading as the detail, a motor set-up's steps with a sentence).
+    void progress(const feetech::OperationProgress &progress);
     void stepFinished(const feetech::OperationResult &result);
     void finished(const feetech::OperationResult &result);
 

@@ -122,16 +122,14 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
     });
     connect(m_client, &feetech::BusClient::busyChanged, this, &HealthPage::updateActions);
     connect(m_client, &feetech::BusClient::statusChanged, this, &HealthPage::updateActions);
-    connect(m_client, &feetech::BusClient::progress, this, [this](int done, int total) {
-        if (!m_checking)
-            return;
-        m_progress->setRange(0, total);
-        m_progress->setValue(done);
-    });
     connect(m_client->health(), &feetech::HealthService::reading, this,
-            [this](const feetech::HealthReading &reading) {
+            [this](const feetech::HealthReading &reading, int done, int total) {
                 m_readings.insert({reading.servo.id, reading.servo.baud}, reading);
                 reassess();
+                if (!m_checking)
+                    return;
+                m_progress->setRange(0, total);
+                m_progress->setValue(done);
             });
     connect(m_client->health(), &feetech::HealthService::checkFinished, this,
             [this](bool completed, const QString &text) {

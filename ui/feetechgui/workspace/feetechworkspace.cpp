@@ -233,11 +233,17 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
             m_settings->setBusy(busy && !m_client->isScanning(), tr("Working…"));
         updateActions();
     });
-    connect(m_client, &feetech::BusClient::progress, m_settings, &ParameterPage::setProgress);
-    // The status bar tells the outcome of every operation, whoever asked for it.
+    // The status bar tells the outcome of every operation, whoever asked for it; the page
+    // shows how far an apply chain or a health check has got while it is busy.
     connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
         connect(reply, &feetech::OperationReply::finished, this,
                 &FeetechWorkspace::onOperationFinished);
+        if (reply->operation() == feetech::Operation::Write
+            || reply->operation() == feetech::Operation::HealthCheck)
+            connect(reply, &feetech::OperationReply::progress, m_settings,
+                    [this](const feetech::OperationProgress &progress) {
+                        m_settings->setProgress(progress.done, progress.total);
+                    });
     });
     connect(m_client, &feetech::BusClient::scanProgress, this,
             [this](int done, int total, qint32 baud) {
