@@ -3,6 +3,7 @@
 // and restore, reads only without it; and the report saved as HTML and JSON.
 #include "busoperations.h"
 #include "feetechbus.h"
+#include "healthmovetest.h"
 #include "healthreport.h"
 #include "servohealth.h"
 

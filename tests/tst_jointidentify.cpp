@@ -3,6 +3,7 @@
 // restored whether torque was on or off, a servo held by a motion test is refused, and a servo
 // that stops answering is reported.
 #include "feetechbus.h"
+#include "jointidentify.h"
 #include "motiontest.h"
 #include "operationlog.h"
 #include "servoctlrun.h"

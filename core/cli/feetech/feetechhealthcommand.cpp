@@ -1,6 +1,8 @@
 // servoctl feetech health: the health check of servos --ids, and with --move-test their move test.
 #include "feetechhealthcommand.h"
 
+#include "healthmovetest.h"
+
 #include <QCoreApplication>
 
 namespace {

@@ -2,6 +2,8 @@
 // and All torque off ahead of everything.
 #include "feetechsession.h"
 
+#include "feetechsession_p.h"
+
 #include "feetechdescription.h"
 #include "linksession.h"
 
@@ -22,22 +24,53 @@ struct Tr
 
 namespace feetech {
 
+namespace {
+
+using Queued = SessionPrivate::Queued;
+
+// Where a paused or continued operation goes back in: behind any All torque off.
+std::deque<Queued>::iterator afterTorqueOff(std::deque<Queued> &queue)
+{
+    auto at = queue.begin();
+    while (at != queue.end() && at->operation.kind == Operation::TorqueOff)
+        ++at;
+    return at;
+}
+
+// A continuation of the running operation `current`: its ticket and torque-off count, and kind
+// `kind` (an apply chain goes on as its ID or baud change).
+Queued continuation(const Queued &current, Operation kind, std::function<void()> resume)
+{
+    Queued next = current;
+    next.operation.kind = kind;
+    next.operation.priority = BusOperation::Priority::Normal;
+    next.operation.powersServos = false; // checked once, when it first started
+    next.operation.submitted = nullptr;
+    next.operation.start = [resume = std::move(resume)](OperationContext &) {
+        resume();
+    };
+    return next;
+}
+
+} // namespace
+
 Session::Session(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
-    , m_timing(timing)
-    , m_link(new seriallink::LinkSession(m_format, describeFrame, this))
-    , m_bus(new BusExchange(*m_link, m_timing, this))
-    , m_scan(new BusScan(*m_bus, this))
-    , m_flows(new GuidedFlows(*m_bus, this))
-    , m_telemetry(new TelemetryCycle(*m_bus, this))
-    , m_apply(new ApplyFlow(*m_bus, *m_flows, this))
-    , m_motorSetup(new MotorSetup(*m_bus, *m_flows, *m_apply, this))
-    , m_identify(new JointIdentify(*m_bus, this))
-    , m_health(new HealthCheck(*m_bus, this))
-    , m_moveTest(new HealthMoveTest(*m_bus, this))
-    , m_guard(new GuardKeeper(*m_bus, this))
+    , d(std::make_unique<SessionPrivate>())
     , m_context(*this)
 {
+    d->timing = timing;
+    d->link = new seriallink::LinkSession(d->format, describeFrame, this);
+    d->bus = new BusExchange(*d->link, d->timing, this);
+    d->scan = new BusScan(*d->bus, this);
+    d->flows = new GuidedFlows(*d->bus, this);
+    d->telemetry = new TelemetryCycle(*d->bus, this);
+    d->apply = new ApplyFlow(*d->bus, *d->flows, this);
+    d->motorSetup = new MotorSetup(*d->bus, *d->flows, *d->apply, this);
+    d->identify = new JointIdentify(*d->bus, this);
+    d->health = new HealthCheck(*d->bus, this);
+    d->moveTest = new HealthMoveTest(*d->bus, this);
+    d->guard = new GuardKeeper(*d->bus, this);
     qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::HealthReading>();
     qRegisterMetaType<feetech::MoveTestResult>();
@@ -49,112 +82,140 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     qRegisterMetaType<feetech::MotorTarget>();
     qRegisterMetaType<feetech::MotorSetupResult>();
     qRegisterMetaType<QVector<feetech::JointCheck>>();
-    m_link->engine().setTiming(m_timing.engine);
-    m_link->setReconnectInterval(m_timing.reconnectInterval);
-    m_link->setLinkDownHook(
+    d->link->engine().setTiming(d->timing.engine);
+    d->link->setReconnectInterval(d->timing.reconnectInterval);
+    d->link->setLinkDownHook(
         [this](const QString &message, seriallink::Failure) { onLinkDown(message); });
-    m_link->setReconnectedHook([this] {
-        m_link->setState(seriallink::ConnectionState::Connected,
-                         Tr::tr("%1 is back. Scan again if servos were changed while it was away.")
-                             .arg(m_link->status().portName));
+    d->link->setReconnectedHook([this] {
+        d->link->setState(seriallink::ConnectionState::Connected,
+                          Tr::tr("%1 is back. Scan again if servos were changed while it was away.")
+                              .arg(d->link->status().portName));
     });
-    connect(m_link, &seriallink::LinkSession::statusChanged, this, &Session::statusChanged);
-    connect(m_link, &seriallink::LinkSession::packetLogged, this, &Session::packetLogged);
-    connect(m_link, &seriallink::LinkSession::countersChanged, this, &Session::countersChanged);
-    connect(m_bus, &BusExchange::memoryRead, this, &Session::memoryRead);
-    connect(m_scan, &BusScan::progress, this, &Session::scanProgress);
-    connect(m_scan, &BusScan::servoFound, this, &Session::servoFound);
-    connect(m_scan, &BusScan::finished, this, &Session::onScanFinished);
-    connect(m_telemetry, &TelemetryCycle::telemetry, this, &Session::telemetry);
+    connect(d->link, &seriallink::LinkSession::statusChanged, this, &Session::statusChanged);
+    connect(d->link, &seriallink::LinkSession::packetLogged, this, &Session::packetLogged);
+    connect(d->link, &seriallink::LinkSession::countersChanged, this, &Session::countersChanged);
+    connect(d->bus, &BusExchange::memoryRead, this, &Session::memoryRead);
+    connect(d->scan, &BusScan::progress, this, &Session::scanProgress);
+    connect(d->scan, &BusScan::servoFound, this, &Session::servoFound);
+    connect(d->scan, &BusScan::finished, this, &Session::onScanFinished);
+    connect(d->telemetry, &TelemetryCycle::telemetry, this, &Session::telemetry);
     // An apply's writes; the motor set-up that applies settings reports its own steps.
-    connect(m_apply, &ApplyFlow::progress, this, [this](int done, int total) {
-        if (m_current.operation.kind == Operation::Write)
-            emit operationProgress({m_current.operation.ticket, done, total, {}, {}});
+    connect(d->apply, &ApplyFlow::progress, this, [this](int done, int total) {
+        if (d->current.operation.kind == Operation::Write)
+            emit operationProgress({d->current.operation.ticket, done, total, {}, {}});
     });
-    connect(m_telemetry, &TelemetryCycle::statsChanged, this, &Session::telemetryStats);
-    connect(m_motorSetup, &MotorSetup::progress, this,
+    connect(d->telemetry, &TelemetryCycle::statsChanged, this, &Session::telemetryStats);
+    connect(d->motorSetup, &MotorSetup::progress, this,
             [this](int step, int steps, const QString &text) {
-                emit operationProgress({m_current.operation.ticket, step, steps, text, {}});
+                emit operationProgress({d->current.operation.ticket, step, steps, text, {}});
             });
-    connect(m_scan, &BusScan::servoFound, m_guard, &GuardKeeper::noteServo);
-    connect(m_telemetry, &TelemetryCycle::telemetry, m_guard,
-            [this](const QVector<FeedbackSample> &samples, quint64) { m_guard->observe(samples); });
-    connect(m_guard, &GuardKeeper::guardEvent, this, &Session::guardEvent);
-    m_guard->setRunUrgent([this](std::function<void(std::function<void()>)> work) {
+    connect(d->scan, &BusScan::servoFound, d->guard, &GuardKeeper::noteServo);
+    connect(
+        d->telemetry, &TelemetryCycle::telemetry, d->guard,
+        [this](const QVector<FeedbackSample> &samples, quint64) { d->guard->observe(samples); });
+    connect(d->guard, &GuardKeeper::guardEvent, this, &Session::guardEvent);
+    d->guard->setRunUrgent([this](std::function<void(std::function<void()>)> work) {
         runGuardAction(std::move(work));
     });
-    m_guard->setActed([this](const ServoInfo &servo) {
+    d->guard->setActed([this](const ServoInfo &servo) {
         // An identify would go on wiggling the servo the guard just stopped: it ends and
         // puts back what it changed. A move test ends and leaves it as the guard did.
-        if (m_identifying)
-            m_identify->cancel();
-        m_moveTest->stopForGuard(servo.id, servo.baud);
+        if (d->identifying)
+            d->identify->cancel();
+        d->moveTest->stopForGuard(servo.id, servo.baud);
     });
-    m_telemetry->setBusBusy([this] { return m_running || m_guard->cycle().inCycle(); });
-    m_telemetry->setCycleEnded([this] { onCycleEnded(); });
-    m_guard->cycle().setBusBusy([this] { return m_running || m_telemetry->inCycle(); });
-    m_guard->cycle().setCycleEnded([this] { onCycleEnded(); });
+    d->telemetry->setBusBusy([this] { return d->running || d->guard->cycle().inCycle(); });
+    d->telemetry->setCycleEnded([this] { onCycleEnded(); });
+    d->guard->cycle().setBusBusy([this] { return d->running || d->telemetry->inCycle(); });
+    d->guard->cycle().setCycleEnded([this] { onCycleEnded(); });
 }
 
 Session::~Session()
 {
     close();
+    // The parts go while the state they report into is still there, the last made first.
+    delete d->guard;
+    delete d->moveTest;
+    delete d->health;
+    delete d->identify;
+    delete d->motorSetup;
+    delete d->apply;
+    delete d->telemetry;
+    delete d->flows;
+    delete d->scan;
+    delete d->bus;
+    delete d->link;
+}
+
+seriallink::LinkSession &Session::link()
+{
+    return *d->link;
+}
+
+bool Session::isBusy() const
+{
+    return d->running || d->paused || !d->queue.empty();
+}
+
+const GuardSettings &Session::guardSettings() const
+{
+    return d->guard->settings();
 }
 
 const seriallink::ConnectionStatus &Session::status() const
 {
-    return m_link->status();
+    return d->link->status();
 }
 
 const seriallink::LinkCounters &Session::counters() const
 {
-    return m_link->counters();
+    return d->link->counters();
 }
 
 std::optional<std::chrono::microseconds> Session::measuredLatency() const
 {
-    return m_bus->measuredLatency();
+    return d->bus->measuredLatency();
 }
 
 std::chrono::microseconds Session::scanAllowance() const
 {
-    return m_bus->scanAllowance();
+    return d->bus->scanAllowance();
 }
 
 bool Session::isStreaming() const
 {
-    return m_telemetry->isStreaming();
+    return d->telemetry->isStreaming();
 }
 
 void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode echo)
 {
-    m_bus->forgetLatencies();
-    if (m_link->open(portName, baud, echo))
-        m_link->setState(seriallink::ConnectionState::Connected);
+    d->bus->forgetLatencies();
+    if (d->link->open(portName, baud, echo))
+        d->link->setState(seriallink::ConnectionState::Connected);
 }
 
 void Session::close()
 {
-    m_link->close();
+    d->link->close();
 }
 
 void Session::onLinkDown(const QString &message)
 {
-    const bool wasScanning = m_scan->isRunning();
-    const bool wasRunning = m_running;
-    const BusOperation running = m_current.operation;
+    const bool wasScanning = d->scan->isRunning();
+    const bool wasRunning = d->running;
+    const BusOperation running = d->current.operation;
     // All torque off may have run during the pause: the paused operation ends too.
-    const bool wasPaused = m_paused;
-    const BusOperation paused = m_pausedOperation.operation;
-    m_paused = false;
-    m_identifying = false;
-    ++m_pauseGeneration;
+    const bool wasPaused = d->paused;
+    const BusOperation paused = d->pausedOperation.operation;
+    d->paused = false;
+    d->identifying = false;
+    ++d->pauseGeneration;
     std::deque<Queued> dropped;
-    dropped.swap(m_queue);
-    m_scan->abandon();
+    dropped.swap(d->queue);
+    d->scan->abandon();
     stopTelemetry();
-    m_guard->noteLinkDown();
-    m_running = false;
+    d->guard->noteLinkDown();
+    d->running = false;
     // Whoever waits for an operation hears that it ended, queued ones included, so nothing
     // stays busy.
     const auto failed = [&message](const BusOperation &operation) {
@@ -182,18 +243,18 @@ void Session::onLinkDown(const QString &message)
 void Session::submit(const BusOperation &operation)
 {
     if (operation.priority == BusOperation::Priority::Emergency) {
-        m_scan->cancel(); // nothing may hold torque off back for seconds
-        ++m_torqueOffEpoch; // what was asked for before must not power the servos again
-        m_guard->noteAllTorqueOff();
+        d->scan->cancel(); // nothing may hold torque off back for seconds
+        ++d->torqueOffEpoch; // what was asked for before must not power the servos again
+        d->guard->noteAllTorqueOff();
     }
     if (operation.submitted)
         operation.submitted(m_context);
-    Queued queued {operation, m_torqueOffEpoch};
+    Queued queued {operation, d->torqueOffEpoch};
     if (operation.priority == BusOperation::Priority::Emergency)
-        m_queue.push_front(std::move(queued)); // ahead of everything waiting
+        d->queue.push_front(std::move(queued)); // ahead of everything waiting
     else
-        m_queue.push_back(std::move(queued));
-    if (!m_running)
+        d->queue.push_back(std::move(queued));
+    if (!d->running)
         startNextOperation();
 }
 
@@ -201,56 +262,35 @@ void Session::cancel(Operation kind)
 {
     switch (kind) {
     case Operation::Scan:
-        m_scan->cancel();
+        d->scan->cancel();
         break;
     case Operation::Identify:
-        m_identify->cancel();
+        d->identify->cancel();
         break;
     case Operation::FindMotor:
     case Operation::SetUpMotor:
     case Operation::CheckJoints:
-        m_motorSetup->cancel();
+        d->motorSetup->cancel();
         break;
     case Operation::HealthCheck:
-        m_health->cancel();
+        d->health->cancel();
         break;
     default:
         break; // the others are short: they run to their end
     }
 }
 
-std::deque<Session::Queued>::iterator Session::afterTorqueOff()
-{
-    auto at = m_queue.begin();
-    while (at != m_queue.end() && at->operation.kind == Operation::TorqueOff)
-        ++at;
-    return at;
-}
-
-Session::Queued Session::continuation(Operation kind, std::function<void()> resume) const
-{
-    Queued next = m_current;
-    next.operation.kind = kind;
-    next.operation.priority = BusOperation::Priority::Normal;
-    next.operation.powersServos = false; // checked once, when it first started
-    next.operation.submitted = nullptr;
-    next.operation.start = [resume = std::move(resume)](OperationContext &) {
-        resume();
-    };
-    return next;
-}
-
 void Session::startNextOperation()
 {
-    if (m_running)
+    if (d->running)
         return;
     // Telemetry and operations take turns: a running cycle ends first, and a cycle that is
     // due goes before the next operation, unless that is the torque-off emergency.
     if (inCycle())
         return;
-    const bool emergency = !m_queue.empty()
-        && (m_queue.front().operation.kind == Operation::TorqueOff
-            || m_queue.front().operation.kind == Operation::Guard);
+    const bool emergency = !d->queue.empty()
+        && (d->queue.front().operation.kind == Operation::TorqueOff
+            || d->queue.front().operation.kind == Operation::Guard);
     if (!emergency && startCycleIfDue())
         return;
     startQueuedOperation();
@@ -258,38 +298,38 @@ void Session::startNextOperation()
 
 bool Session::inCycle() const
 {
-    return m_telemetry->inCycle() || m_guard->cycle().inCycle();
+    return d->telemetry->inCycle() || d->guard->cycle().inCycle();
 }
 
 bool Session::startCycleIfDue()
 {
-    return m_telemetry->startIfDue() || m_guard->cycle().startIfDue();
+    return d->telemetry->startIfDue() || d->guard->cycle().startIfDue();
 }
 
 void Session::onCycleEnded()
 {
-    if (!m_queue.empty() && !m_running)
+    if (!d->queue.empty() && !d->running)
         startQueuedOperation();
-    if (!m_running && !inCycle())
+    if (!d->running && !inCycle())
         startCycleIfDue();
 }
 
 void Session::startQueuedOperation()
 {
-    if (m_running || m_queue.empty())
+    if (d->running || d->queue.empty())
         return;
-    if (m_paused && m_queue.front().operation.kind != Operation::TorqueOff
-        && m_queue.front().operation.kind != Operation::Guard)
+    if (d->paused && d->queue.front().operation.kind != Operation::TorqueOff
+        && d->queue.front().operation.kind != Operation::Guard)
         return; // the paused operation goes on first
-    m_current = std::move(m_queue.front());
-    m_queue.pop_front();
-    m_running = true;
-    const std::function<void(OperationContext &)> start = std::move(m_current.operation.start);
-    m_current.operation.start = nullptr;
-    const Operation kind = m_current.operation.kind;
-    if (!m_link->isOpen()) {
+    d->current = std::move(d->queue.front());
+    d->queue.pop_front();
+    d->running = true;
+    const std::function<void(OperationContext &)> start = std::move(d->current.operation.start);
+    d->current.operation.start = nullptr;
+    const Operation kind = d->current.operation.kind;
+    if (!d->link->isOpen()) {
         if (kind == Operation::Scan || kind == Operation::Guard) {
-            m_running = false;
+            d->running = false;
             if (kind == Operation::Scan)
                 emit scanFinished(false, Tr::tr("Not connected."));
             QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
@@ -298,7 +338,7 @@ void Session::startQueuedOperation()
         }
         return;
     }
-    if (m_current.operation.powersServos && m_current.epoch != m_torqueOffEpoch) {
+    if (d->current.operation.powersServos && d->current.epoch != d->torqueOffEpoch) {
         finishOperation({kind,
                          false,
                          Tr::tr("Not sent: all torque off was asked for after this write."),
@@ -307,17 +347,17 @@ void Session::startQueuedOperation()
         return;
     }
     if (kind == Operation::Identify)
-        m_identifying = true;
+        d->identifying = true;
     start(m_context);
 }
 
 void Session::finishOperation(const OperationResult &result)
 {
-    m_running = false;
-    if (m_current.operation.kind == Operation::Identify)
-        m_identifying = false;
+    d->running = false;
+    if (d->current.operation.kind == Operation::Identify)
+        d->identifying = false;
     OperationResult reported = result;
-    reported.ticket = m_current.operation.ticket;
+    reported.ticket = d->current.operation.ticket;
     emit operationFinished(reported);
     // Queued, so a slot reacting to the result sees the session idle before the next starts.
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
@@ -327,27 +367,28 @@ void Session::continueLater(Operation next, std::function<void()> resume)
 {
     // The running operation pauses here: it goes on as the next one, behind an emergency
     // stop asked for meanwhile (All torque off never waits for a whole apply chain).
-    m_running = false;
-    m_queue.insert(afterTorqueOff(), continuation(next, std::move(resume)));
+    d->running = false;
+    d->queue.insert(afterTorqueOff(d->queue), continuation(d->current, next, std::move(resume)));
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
 }
 
 void Session::pauseFor(std::chrono::milliseconds delay,
                        std::function<void(bool torqueOffMeanwhile)> resume)
 {
-    m_running = false;
-    m_paused = true;
-    const quint64 epoch = m_current.epoch;
-    m_pausedOperation = continuation(m_current.operation.kind,
-                                     [this, epoch, resume] { resume(epoch != m_torqueOffEpoch); });
-    const quint64 generation = ++m_pauseGeneration;
+    d->running = false;
+    d->paused = true;
+    const quint64 epoch = d->current.epoch;
+    d->pausedOperation = continuation(d->current, d->current.operation.kind, [this, epoch, resume] {
+        resume(epoch != d->torqueOffEpoch);
+    });
+    const quint64 generation = ++d->pauseGeneration;
     QTimer::singleShot(delay, this, [this, generation] {
-        if (!m_paused || generation != m_pauseGeneration)
+        if (!d->paused || generation != d->pauseGeneration)
             return;
-        m_paused = false;
+        d->paused = false;
         // Not continueLater: All torque off may be running right now, and goes on.
-        m_queue.insert(afterTorqueOff(), m_pausedOperation);
-        if (!m_running)
+        d->queue.insert(afterTorqueOff(d->queue), d->pausedOperation);
+        if (!d->running)
             startNextOperation();
     });
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
@@ -355,26 +396,26 @@ void Session::pauseFor(std::chrono::milliseconds delay,
 
 void Session::onScanFinished(bool completed, const QString &message)
 {
-    m_running = false;
+    d->running = false;
     emit scanFinished(completed, message);
     QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
 }
 
 void Session::startTelemetry(const TelemetryOptions &options)
 {
-    m_telemetry->start(options);
-    m_guard->noteStream(options);
+    d->telemetry->start(options);
+    d->guard->noteStream(options);
 }
 
 void Session::stopTelemetry()
 {
-    m_telemetry->stop();
-    m_guard->noteStream({});
+    d->telemetry->stop();
+    d->guard->noteStream({});
 }
 
 void Session::setGuardSettings(const GuardSettings &settings)
 {
-    m_guard->setSettings(settings);
+    d->guard->setSettings(settings);
 }
 
 void Session::runGuardAction(std::function<void(std::function<void()> finished)> work)
@@ -383,13 +424,13 @@ void Session::runGuardAction(std::function<void(std::function<void()> finished)>
     action.kind = Operation::Guard;
     action.start = [this, work = std::move(work)](OperationContext &) {
         work([this] {
-            m_running = false;
+            d->running = false;
             QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
         });
     };
     // Behind All torque off only: a servo pushing against a block must not wait for an apply.
-    m_queue.insert(afterTorqueOff(), {action, m_torqueOffEpoch});
-    if (!m_running)
+    d->queue.insert(afterTorqueOff(d->queue), {action, d->torqueOffEpoch});
+    if (!d->running)
         startNextOperation();
 }
 

@@ -1,26 +1,15 @@
 // The Feetech bus session: one link, and the operations on it run one at a time in order.
 #pragma once
 
-#include "applyflow.h"
-#include "busexchange.h"
 #include "busoperation.h"
-#include "busscan.h"
 #include "bustypes.h"
-#include "guardkeeper.h"
-#include "guidedflows.h"
-#include "healthcheck.h"
-#include "healthmovetest.h"
-#include "jointidentify.h"
 #include "linktypes.h"
-#include "motorsetup.h"
 #include "operationcontext.h"
-#include "requestengine.h"
+#include "overloadguard.h"
 #include "telemetry.h"
-#include "telemetrycycle.h"
 
 #include <QObject>
 
-#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -30,6 +19,8 @@ class LinkSession;
 }
 
 namespace feetech {
+
+struct SessionPrivate;
 
 // Lives in a link worker thread (or the CLI's main thread); driven only by signals and timers.
 // Operations run one at a time in the order they are asked for; a scan can be cancelled.
@@ -43,8 +34,8 @@ public:
 
     const seriallink::ConnectionStatus &status() const;
     const seriallink::LinkCounters &counters() const;
-    seriallink::LinkSession &link() { return *m_link; }
-    bool isBusy() const { return m_running || m_paused || !m_queue.empty(); }
+    seriallink::LinkSession &link();
+    bool isBusy() const;
     // How quickly servos answer on this port: the median of the last answers (none before the
     // first), from the end of the request to the first byte of the reply.
     std::optional<std::chrono::microseconds> measuredLatency() const;
@@ -72,7 +63,7 @@ public:
     // The overload and thermal guard (GuardKeeper): on from the start; these replace its
     // settings. Its warnings and actions come as guardEvent and notes in the packet log.
     void setGuardSettings(const feetech::GuardSettings &settings);
-    const GuardSettings &guardSettings() const { return m_guard->settings(); }
+    const GuardSettings &guardSettings() const;
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
@@ -95,12 +86,6 @@ signals:
 private:
     friend class OperationContext; // how operations report, yield and end their turn
 
-    // An operation waiting for its turn, with the torque-off count when it was submitted.
-    struct Queued
-    {
-        BusOperation operation;
-        quint64 epoch = 0;
-    };
     void onLinkDown(const QString &message);
     void finishOperation(const OperationResult &result);
     // Ends the running operation's turn on the bus; `resume` runs as the next operation.
@@ -119,33 +104,9 @@ private:
     // operation without an operationFinished (the GuardEvent says what happened).
     void runGuardAction(std::function<void(std::function<void()> finished)> work);
     void onScanFinished(bool completed, const QString &message);
-    // Where a paused or continued operation goes back in: behind any All torque off.
-    std::deque<Queued>::iterator afterTorqueOff();
-    // A continuation of the running operation: its kind, ticket and torque-off count.
-    Queued continuation(Operation kind, std::function<void()> resume) const;
 
-    SessionTiming m_timing;
-    FrameFormat m_format;
-    seriallink::LinkSession *m_link = nullptr;
-    BusExchange *m_bus = nullptr;
-    BusScan *m_scan = nullptr;
-    GuidedFlows *m_flows = nullptr;
-    TelemetryCycle *m_telemetry = nullptr;
-    ApplyFlow *m_apply = nullptr;
-    MotorSetup *m_motorSetup = nullptr;
-    JointIdentify *m_identify = nullptr;
-    HealthCheck *m_health = nullptr;
-    HealthMoveTest *m_moveTest = nullptr;
-    GuardKeeper *m_guard = nullptr;
+    std::unique_ptr<SessionPrivate> d;
     OperationContext m_context;
-    std::deque<Queued> m_queue;
-    bool m_running = false;
-    Queued m_current; // the running one (its start function spent)
-    bool m_paused = false; // the current operation waits in pauseFor
-    Queued m_pausedOperation; // the one waiting, while m_paused
-    quint64 m_pauseGeneration = 0; // a pause ended by a lost link never resumes
-    quint64 m_torqueOffEpoch = 0; // counts torque-offs: a write queued before one is dropped
-    bool m_identifying = false; // an identify runs, paused, or waits to go on
 };
 
 } // namespace feetech

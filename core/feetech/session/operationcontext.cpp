@@ -2,6 +2,7 @@
 #include "operationcontext.h"
 
 #include "feetechsession.h"
+#include "feetechsession_p.h"
 #include "linksession.h"
 
 namespace feetech {
@@ -12,52 +13,52 @@ OperationContext::OperationContext(Session &session)
 
 BusExchange &OperationContext::bus() const
 {
-    return *m_session.m_bus;
+    return *m_session.d->bus;
 }
 
 BusScan &OperationContext::scan() const
 {
-    return *m_session.m_scan;
+    return *m_session.d->scan;
 }
 
 GuidedFlows &OperationContext::flows() const
 {
-    return *m_session.m_flows;
+    return *m_session.d->flows;
 }
 
 ApplyFlow &OperationContext::apply() const
 {
-    return *m_session.m_apply;
+    return *m_session.d->apply;
 }
 
 MotorSetup &OperationContext::motorSetup() const
 {
-    return *m_session.m_motorSetup;
+    return *m_session.d->motorSetup;
 }
 
 JointIdentify &OperationContext::identify() const
 {
-    return *m_session.m_identify;
+    return *m_session.d->identify;
 }
 
 HealthCheck &OperationContext::health() const
 {
-    return *m_session.m_health;
+    return *m_session.d->health;
 }
 
 HealthMoveTest &OperationContext::moveTest() const
 {
-    return *m_session.m_moveTest;
+    return *m_session.d->moveTest;
 }
 
 GuardKeeper &OperationContext::guard() const
 {
-    return *m_session.m_guard;
+    return *m_session.d->guard;
 }
 
 bool OperationContext::isLinkOpen() const
 {
-    return m_session.m_link->isOpen();
+    return m_session.d->link->isOpen();
 }
 
 void OperationContext::finish(const OperationResult &result) const
@@ -76,14 +77,14 @@ GuidedFlows::Finish OperationContext::finisher() const
 void OperationContext::reportStep(const OperationResult &step) const
 {
     OperationResult reported = step;
-    reported.ticket = m_session.m_current.operation.ticket;
+    reported.ticket = m_session.d->current.operation.ticket;
     emit m_session.operationFinished(reported);
 }
 
 void OperationContext::reportProgress(const OperationProgress &progress) const
 {
     OperationProgress reported = progress;
-    reported.ticket = m_session.m_current.operation.ticket;
+    reported.ticket = m_session.d->current.operation.ticket;
     emit m_session.operationProgress(reported);
 }
 

@@ -3,6 +3,7 @@
 #include "healthpage.h"
 
 #include "busclient.h"
+#include "healthmovetest.h"
 #include "palette.h"
 #include "widgethelpers.h"
 
