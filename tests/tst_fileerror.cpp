@@ -90,6 +90,7 @@ private slots:
         QTest::newRow("duplicate") << withDetail(Code::Duplicate) << detail;
         QTest::newRow("wrong servos") << withDetail(Code::WrongServos) << detail;
         QTest::newRow("nothing to save") << withDetail(Code::NothingToSave) << detail;
+        QTest::newRow("no file name") << withDetail(Code::NoFileName) << detail;
     }
 
     void eachCodeGivesItsSentence()
@@ -110,6 +111,10 @@ private slots:
         FileError checked = error;
         QCOMPARE(checked.inFile(path, FileError::Action::CheckingSave).describe(),
                  shown + QStringLiteral(": ") + reason + QStringLiteral("; it was not saved"));
+        FileError recorded = error;
+        QCOMPARE(recorded.inFile(path, FileError::Action::Recording).describe(),
+                 QStringLiteral("Could not open ") + shown + QStringLiteral(" for writing: ")
+                     + reason + u'.');
     }
 
     void loadersSayWhatKindOfFailureItWas_data()

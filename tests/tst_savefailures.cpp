@@ -71,8 +71,12 @@ bool recordTelemetry(const QString &path, QString *error)
 {
     feetech::TelemetryRecorder recorder;
     recorder.setFlushInterval(0);
-    if (!recorder.open(path, error))
+    util::FileError notOpened;
+    if (!recorder.open(path, &notOpened)) {
+        *error = notOpened.code() == util::FileError::Code::CannotWrite ? notOpened.describe()
+                                                                        : QString();
         return false;
+    }
     feetech::FeedbackSample sample;
     sample.id = 1;
     sample.steadyUs = recorder.startUs();

@@ -60,6 +60,7 @@ QString FileError::reason() const
     case Code::Duplicate:
     case Code::WrongServos:
     case Code::NothingToSave:
+    case Code::NoFileName:
         break;
     }
     return m_detail;
@@ -80,6 +81,9 @@ QString FileError::describe() const
         return QCoreApplication::translate("util", "%1 was not saved: %2").arg(shown, reason());
     case Action::CheckingSave:
         return QCoreApplication::translate("util", "%1; it was not saved").arg(named);
+    case Action::Recording:
+        return QCoreApplication::translate("util", "Could not open %1 for writing: %2.")
+            .arg(shown, reason());
     }
     return named;
 }

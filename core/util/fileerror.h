@@ -32,12 +32,14 @@ public:
         Duplicate, // the same servo or joint twice
         WrongServos, // written for other servos: another family or model
         NothingToSave, // what would be written is missing or not yet known (no targets, no values)
+        NoFileName, // no file was named
     };
 
     // What was being done with the file, for the sentence: "<file>: <reason>" when reading,
     // "<file> was not saved: <reason>" when saving, "<file>: <reason>; it was not saved" when
-    // the check of what was about to be saved refused it.
-    enum class Action { Reading, Saving, CheckingSave };
+    // the check of what was about to be saved refused it, "Could not open <file> for writing:
+    // <reason>." for a file written as it goes (a recording).
+    enum class Action { Reading, Saving, CheckingSave, Recording };
 
     FileError() = default;
     explicit FileError(Code code, const QString &detail = {});

@@ -7823,10 +7823,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Für die Aufzeichnung wurde kein Dateiname angegeben.</translation>
     </message>
     <message>
-        <source>Could not open %1 for writing: %2.</source>
-        <translation>%1 konnte nicht zum Schreiben geöffnet werden: %2.</translation>
-    </message>
-    <message>
         <source>The telemetry output is not open for writing.</source>
         <translation>Die Telemetrieausgabe ist nicht zum Schreiben geöffnet.</translation>
     </message>
@@ -9474,6 +9470,10 @@ listet sie auf); das Ende der Standardeingabe beendet es nicht.
     <message>
         <source>%1; it was not saved</source>
         <translation>%1; sie wurde nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>Could not open %1 for writing: %2.</source>
+        <translation>%1 konnte nicht zum Schreiben geöffnet werden: %2.</translation>
     </message>
 </context>
 </TS>

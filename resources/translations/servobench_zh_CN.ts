@@ -7787,10 +7787,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>未指定记录文件名。</translation>
     </message>
     <message>
-        <source>Could not open %1 for writing: %2.</source>
-        <translation>无法打开 %1 进行写入：%2。</translation>
-    </message>
-    <message>
         <source>The telemetry output is not open for writing.</source>
         <translation>遥测输出未打开，无法写入。</translation>
     </message>
@@ -9428,6 +9424,10 @@ SIGHUP 会使舵机断电重启。从标准输入读取命令，每行一条，�
     <message>
         <source>%1; it was not saved</source>
         <translation>%1；未保存</translation>
+    </message>
+    <message>
+        <source>Could not open %1 for writing: %2.</source>
+        <translation>无法打开 %1 进行写入：%2。</translation>
     </message>
 </context>
 </TS>
