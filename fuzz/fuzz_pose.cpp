@@ -7,10 +7,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
-    QString error;
+    util::FileError error;
     const auto pose = feetech::poseFromJson(fuzz::input(data, size), &error);
     if (!pose) {
-        FUZZ_CHECK(!error.isEmpty());
+        FUZZ_CHECK(error && !error.describe().isEmpty());
         return 0;
     }
     for (const feetech::PoseEntry &entry : pose->servos) {

@@ -30,10 +30,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     static const QVector<FamilyDefinitions> families = allFamilies();
     const QByteArray json = fuzz::input(data, size);
     for (const FamilyDefinitions &family : families) {
-        QString error;
+        util::FileError error;
         const auto profile = profile::parse(json, family.family, family.definitions, &error);
         if (!profile) {
-            FUZZ_CHECK(!error.isEmpty());
+            FUZZ_CHECK(error && !error.describe().isEmpty());
             continue;
         }
         FUZZ_CHECK(profile->family == family.family);

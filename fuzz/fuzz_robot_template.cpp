@@ -9,10 +9,10 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
     const QString source = QStringLiteral("fuzz.json");
-    QString error;
+    util::FileError error;
     const auto robot = feetech::robotTemplateFromJson(fuzz::input(data, size), source, &error);
     if (!robot) {
-        FUZZ_CHECK(error.contains(source));
+        FUZZ_CHECK(error && error.describe().contains(source));
         return 0;
     }
     QSet<int> ids;

@@ -38,10 +38,10 @@ void checkValues(const feetech::ServoInfo &servo,
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
     const QString source = QStringLiteral("fuzz.json");
-    QString error;
+    util::FileError error;
     const auto file = feetech::SettingsFile::fromJson(fuzz::input(data, size), source, &error);
     if (!file) {
-        FUZZ_CHECK(error.contains(source));
+        FUZZ_CHECK(error && error.describe().contains(source));
         return 0;
     }
     FUZZ_CHECK(file->isTemplate() == file->robot().has_value());

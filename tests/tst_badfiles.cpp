@@ -17,6 +17,18 @@ Q_DECLARE_METATYPE(Read)
 
 namespace {
 
+// A reader of a kind of file that says why through util::FileError, as a Read: *error is the
+// error's sentence, and a refusal must carry a code.
+Read fileReader(const std::function<bool(const QString &path, util::FileError *error)> &read)
+{
+    return [read](const QString &path, QString *error) {
+        util::FileError why;
+        const bool accepted = read(path, &why);
+        *error = accepted || why ? why.describe() : QString();
+        return accepted;
+    };
+}
+
 // The simulator's bus, as `servosim --state` reads it.
 sim::VirtualFeetechBus simulatedBus()
 {
@@ -62,39 +74,37 @@ private slots:
                 return profile::save(path, testsupport::samplePtkProfile(),
                                      ptk::modelDefinitions());
             },
-            [](const QString &path, QString *error) {
+            fileReader([](const QString &path, util::FileError *error) {
                 return profile::load(path, QStringLiteral("ptk"), ptk::modelDefinitions(), error)
                     .has_value();
-            });
+            }));
         addRows(
             QStringLiteral("pose"), QStringLiteral("arm.json"),
             [](const QString &path) { return feetech::savePose(path, testsupport::samplePose()); },
-            [](const QString &path, QString *error) {
+            fileReader([](const QString &path, util::FileError *error) {
                 return feetech::loadPose(path, error).has_value();
-            });
+            }));
         const auto saveTemplate = [](const QString &path) {
-            QString error;
             return feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(), path,
-                                              &error);
+                                              nullptr);
         };
         addRows(QStringLiteral("robot template"), QStringLiteral("robot.json"), saveTemplate,
-                [](const QString &path, QString *error) {
+                fileReader([](const QString &path, util::FileError *error) {
                     return feetech::loadRobotTemplate(path, error).has_value();
-                });
+                }));
         addRows(QStringLiteral("settings file"), QStringLiteral("settings.json"), saveTemplate,
-                [](const QString &path, QString *error) {
+                fileReader([](const QString &path, util::FileError *error) {
                     return feetech::SettingsFile::load(path, error).has_value();
-                });
+                }));
         addRows(
             QStringLiteral("calibration"), QStringLiteral("so101.json"),
             [](const QString &path) {
-                QString error;
                 return feetech::saveLeRobotCalibration(testsupport::sampleCalibration(), path,
-                                                       &error);
+                                                       nullptr);
             },
-            [](const QString &path, QString *error) {
+            fileReader([](const QString &path, util::FileError *error) {
                 return feetech::loadLeRobotCalibration(path, error).has_value();
-            });
+            }));
         addRows(
             QStringLiteral("simulator state"), QStringLiteral("state.json"),
             [](const QString &path) { return simulatedBus().saveState(path, nullptr); },

@@ -25,21 +25,21 @@ private:
 
     feetech::SettingsFile gains() const
     {
-        QString error;
+        util::FileError error;
         const auto file = feetech::SettingsFile::load(
             writeTestFile(QStringLiteral("gains.json"),
                           R"({"format": "servobench-profile", "version": 1, "family": "sts",
                               "parameters": {"p_gain": 22}})"),
             &error);
         if (!file)
-            qFatal("the test profile is invalid: %s", qPrintable(error));
+            qFatal("the test profile is invalid: %s", qPrintable(error.describe()));
         return *file;
     }
 
     // A profile saved from one servo of an arm: its offset and limits as well as its gains.
     feetech::SettingsFile calibratedProfile() const
     {
-        QString error;
+        util::FileError error;
         const auto file = feetech::SettingsFile::load(
             writeTestFile(QStringLiteral("calibrated.json"),
                           R"({"format": "servobench-profile", "version": 1, "family": "sts",
@@ -47,7 +47,7 @@ private:
                                              "max_angle_limit": 4000}})"),
             &error);
         if (!file)
-            qFatal("the test profile is invalid: %s", qPrintable(error));
+            qFatal("the test profile is invalid: %s", qPrintable(error.describe()));
         return *file;
     }
 

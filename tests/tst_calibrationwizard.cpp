@@ -139,10 +139,10 @@ private slots:
         QCOMPARE(simulatorValue(5, u"max_angle_limit"), 4095);
 
         const QString file = m_dir.filePath(QStringLiteral("follower.json"));
-        QString error;
-        QVERIFY2(wizard.saveLeRobotFile(file, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(wizard.saveLeRobotFile(file, &error), qPrintable(error.describe()));
         const auto saved = feetech::loadLeRobotCalibration(file, &error);
-        QVERIFY2(saved, qPrintable(error));
+        QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->size(), 6);
         QCOMPARE(saved->at(5).name, QStringLiteral("claw"));
         QCOMPARE(saved->at(1).homingOffset, -1996);
@@ -290,12 +290,12 @@ private slots:
         CalibrationSaver saver(m_client.get());
         QSignalSpy finished(&saver, &CalibrationSaver::finished);
         const QString file = m_dir.filePath(QStringLiteral("saved.json"));
-        QString error;
-        QVERIFY2(saver.save(file, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(saver.save(file, &error), qPrintable(error.describe()));
         QVERIFY(finished.wait(20000));
         QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
         const auto saved = feetech::loadLeRobotCalibration(file, &error);
-        QVERIFY2(saved, qPrintable(error));
+        QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->size(), 6);
         QCOMPARE(saved->at(1).name, QStringLiteral("shoulder_lift"));
         QCOMPARE(saved->at(1).homingOffset, -5);

@@ -311,18 +311,18 @@ private slots:
         for (int row = 0; row < 4; ++row)
             m_joints->setTarget(row, targets.at(row));
         const QString path = m_dir.filePath(QStringLiteral("arm.json"));
-        QString error;
-        QVERIFY2(m_joints->poses()->savePose(path, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(m_joints->poses()->savePose(path, &error), qPrintable(error.describe()));
 
         const std::optional<feetech::Pose> saved = feetech::loadPose(path, &error);
-        QVERIFY2(saved, qPrintable(error));
+        QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->servos.size(), 4);
         QCOMPARE(saved->find(4, k1M)->position, 444);
 
         for (int row = 0; row < 4; ++row)
             m_joints->setTarget(row, 10);
         const auto match = m_joints->poses()->loadPose(path, &error);
-        QVERIFY2(match, qPrintable(error));
+        QVERIFY2(match, qPrintable(error.describe()));
         QCOMPARE(match->filled, 4);
         QVERIFY(match->notOnBus.isEmpty());
         QVERIFY(match->rowsWithoutEntry.isEmpty());
@@ -345,9 +345,9 @@ private slots:
         const QString path = m_dir.filePath(QStringLiteral("partial.json"));
         QVERIFY(feetech::savePose(path, pose));
 
-        QString error;
+        util::FileError error;
         const auto match = m_joints->poses()->loadPose(path, &error);
-        QVERIFY2(match, qPrintable(error));
+        QVERIFY2(match, qPrintable(error.describe()));
         QCOMPARE(match->filled, 1);
         QCOMPARE(match->notOnBus.size(), 2);
         QCOMPARE(match->notOnBus.at(0).id, quint8(9));
@@ -375,9 +375,11 @@ private slots:
         file.write(R"({"format": "servobench-pose", "version": 1, "servos": [)"
                    R"({"id": 1, "baud": 1000000, "position": 10.5}]})");
         file.close();
-        QString error;
+        util::FileError error;
         QVERIFY(!m_joints->poses()->loadPose(path, &error));
-        QVERIFY2(error.contains(QStringLiteral("not an integer")), qPrintable(error));
+        QCOMPARE(error.code(), util::FileError::Code::BadValue);
+        QVERIFY2(error.describe().contains(QStringLiteral("not an integer")),
+                 qPrintable(error.describe()));
         QCOMPARE(m_joints->target(0), std::optional<qint32>(1234));
     }
 

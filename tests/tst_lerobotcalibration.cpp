@@ -6,6 +6,9 @@
 
 using namespace feetech;
 
+using Code = util::FileError::Code;
+Q_DECLARE_METATYPE(util::FileError::Code)
+
 namespace {
 
 const QByteArray kTwoMotors = R"({
@@ -24,10 +27,10 @@ class TestLeRobotCalibration : public QObject
 private slots:
     void aFileIsReadInIdOrder()
     {
-        QString error;
+        util::FileError error;
         const auto motors =
             leRobotCalibrationFromJson(kTwoMotors, QStringLiteral("a.json"), &error);
-        QVERIFY2(motors, qPrintable(error));
+        QVERIFY2(motors, qPrintable(error.describe()));
         QCOMPARE(motors->size(), 2);
         QCOMPARE(motors->at(0).name, QStringLiteral("shoulder_pan"));
         QCOMPARE(motors->at(0).homingOffset, -1200);
@@ -43,9 +46,9 @@ private slots:
         const QByteArray json = leRobotCalibrationToJson(motors);
         QVERIFY(json.indexOf("gripper") < json.indexOf("shoulder_pan"));
         QVERIFY(json.contains("        \"homing_offset\": -2047,\n"));
-        QString error;
+        util::FileError error;
         const auto read = leRobotCalibrationFromJson(json, QStringLiteral("b.json"), &error);
-        QVERIFY2(read, qPrintable(error));
+        QVERIFY2(read, qPrintable(error.describe()));
         QCOMPARE(read->at(0).name, QStringLiteral("shoulder_pan"));
         QCOMPARE(read->at(1).homingOffset, 2047);
         QCOMPARE(read->at(1).rangeMin, 2000);
@@ -55,94 +58,114 @@ private slots:
     {
         QTest::addColumn<QByteArray>("json");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("not JSON") << QByteArray("{") << QStringLiteral("not valid JSON");
-        QTest::newRow("array") << QByteArray("[]") << QStringLiteral("not a JSON object");
-        QTest::newRow("empty") << QByteArray("{}") << QStringLiteral("names no motor");
+        QTest::addColumn<Code>("code");
+        QTest::newRow("not JSON") << QByteArray("{") << QStringLiteral("not valid JSON")
+                                  << Code::NotJson;
+        QTest::newRow("array") << QByteArray("[]") << QStringLiteral("not a JSON object")
+                               << Code::NotAnObject;
+        QTest::newRow("empty") << QByteArray("{}") << QStringLiteral("names no motor")
+                               << Code::MissingField;
         QTest::newRow("bad name") << QByteArray(
             R"({"grip per": {"id": 6, "drive_mode": 0, "homing_offset": 0,
                  "range_min": 0, "range_max": 10}})")
-                                  << QStringLiteral("motor \"grip per\": not a motor name");
+                                  << QStringLiteral("motor \"grip per\": not a motor name")
+                                  << Code::BadValue;
         QTest::newRow("motor not object")
-            << QByteArray(R"({"gripper": 5})") << QStringLiteral("motor \"gripper\": not an");
+            << QByteArray(R"({"gripper": 5})") << QStringLiteral("motor \"gripper\": not an")
+            << Code::WrongType;
         QTest::newRow("missing field")
             << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 0,
                  "range_min": 0}})")
-            << QStringLiteral("motor \"gripper\": \"range_max\" is missing");
+            << QStringLiteral("motor \"gripper\": \"range_max\" is missing") << Code::MissingField;
         QTest::newRow("not whole")
             << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 1.5,
                  "range_min": 0, "range_max": 10}})")
-            << QStringLiteral("\"homing_offset\" must be a whole number");
+            << QStringLiteral("\"homing_offset\" must be a whole number") << Code::WrongType;
         QTest::newRow("string") << QByteArray(
             R"({"gripper": {"id": "6", "drive_mode": 0, "homing_offset": 1,
                  "range_min": 0, "range_max": 10}})")
-                                << QStringLiteral("\"id\" must be a whole number");
+                                << QStringLiteral("\"id\" must be a whole number")
+                                << Code::WrongType;
         QTest::newRow("offset out of range")
             << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 2048,
                  "range_min": 0, "range_max": 10}})")
-            << QStringLiteral("\"homing_offset\" is 2048, outside -2047 to 2047");
+            << QStringLiteral("\"homing_offset\" is 2048, outside -2047 to 2047") << Code::BadValue;
         QTest::newRow("range reversed")
             << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 0,
                  "range_min": 10, "range_max": 10}})")
-            << QStringLiteral("\"range_min\" (10) must be below \"range_max\" (10)");
+            << QStringLiteral("\"range_min\" (10) must be below \"range_max\" (10)")
+            << Code::BadValue;
         QTest::newRow("unknown field")
             << QByteArray(R"({"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 0,
                  "range_min": 0, "range_max": 10, "speed": 3}})")
-            << QStringLiteral("unknown field \"speed\"");
+            << QStringLiteral("unknown field \"speed\"") << Code::UnknownKey;
         QTest::newRow("repeated ID")
             << QByteArray(R"({"a": {"id": 6, "drive_mode": 0, "homing_offset": 0,
                  "range_min": 0, "range_max": 10},
                  "b": {"id": 6, "drive_mode": 0, "homing_offset": 0,
                  "range_min": 0, "range_max": 10}})")
-            << QStringLiteral("ID 6 is used by another motor too");
+            << QStringLiteral("ID 6 is used by another motor too") << Code::Duplicate;
     }
 
     void aMalformedFileIsRefusedNamingTheJointAndField()
     {
         QFETCH(QByteArray, json);
         QFETCH(QString, expected);
-        QString error;
+        QFETCH(Code, code);
+        util::FileError error;
         QVERIFY(!leRobotCalibrationFromJson(json, QStringLiteral("arm.json"), &error));
-        QVERIFY2(error.startsWith(QLatin1String("arm.json: ")), qPrintable(error));
-        QVERIFY2(error.contains(expected), qPrintable(error));
+        QCOMPARE(error.code(), code);
+        QVERIFY2(error.describe().startsWith(QLatin1String("arm.json: ")),
+                 qPrintable(error.describe()));
+        QVERIFY2(error.describe().contains(expected), qPrintable(error.describe()));
     }
 
     void savedFilesLoadBackAndAMissingOneIsNamed()
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("arm.json"));
-        QString error;
+        util::FileError error;
         const QVector<LeRobotMotor> motors {{QStringLiteral("elbow_flex"), 3, 0, 12, 900, 3100}};
-        QVERIFY2(saveLeRobotCalibration(motors, path, &error), qPrintable(error));
+        QVERIFY2(saveLeRobotCalibration(motors, path, &error), qPrintable(error.describe()));
         const auto loaded = loadLeRobotCalibration(path, &error);
-        QVERIFY2(loaded, qPrintable(error));
+        QVERIFY2(loaded, qPrintable(error.describe()));
         QCOMPARE(loaded->first().rangeMax, 3100);
         QVERIFY(!loadLeRobotCalibration(dir.filePath(QStringLiteral("none.json")), &error));
-        QVERIFY2(error.contains(QLatin1String("none.json")), qPrintable(error));
+        QCOMPARE(error.code(), Code::CannotRead);
+        QVERIFY2(error.describe().contains(QLatin1String("none.json")),
+                 qPrintable(error.describe()));
     }
 
     void leRobotsLimitOf4096IsReadAndOnePastItRefused()
     {
-        QString error;
+        util::FileError error;
         QVERIFY2(leRobotCalibrationFromJson(
                      R"({"wrist_roll": {"id": 5, "drive_mode": 0, "homing_offset": 0,
                          "range_min": 0, "range_max": 4096}})",
                      QStringLiteral("arm.json"), &error),
-                 qPrintable(error));
+                 qPrintable(error.describe()));
         QVERIFY(!leRobotCalibrationFromJson(
             R"({"wrist_roll": {"id": 5, "drive_mode": 0, "homing_offset": 0,
                 "range_min": 0, "range_max": 4097}})",
             QStringLiteral("arm.json"), &error));
-        QVERIFY2(error.contains(QLatin1String("outside 0 to 4096")), qPrintable(error));
+        QCOMPARE(error.code(), Code::BadValue);
+        QCOMPARE(error.field(), QStringLiteral("range_max"));
+        QCOMPARE(error.value(), QStringLiteral("4097"));
+        QVERIFY2(error.describe().contains(QLatin1String("outside 0 to 4096")),
+                 qPrintable(error.describe()));
     }
 
     void whatCannotBeLoadedIsNotSaved()
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("arm.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(!saveLeRobotCalibration({{QStringLiteral("elbow_flex"), 3, 0, 12, 900, 5000}}, path,
                                         &error));
-        QVERIFY2(error.contains(QLatin1String("\"range_max\" is 5000")), qPrintable(error));
+        QCOMPARE(error.code(), Code::BadValue);
+        QCOMPARE(error.action(), util::FileError::Action::CheckingSave);
+        QVERIFY2(error.describe().contains(QLatin1String("\"range_max\" is 5000")),
+                 qPrintable(error.describe()));
         QVERIFY(!QFile::exists(path));
     }
 
@@ -150,7 +173,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("arm.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(saveLeRobotCalibration({{QStringLiteral("elbow_flex"), 3, 1, 12, 900, 3100},
                                         {QStringLiteral("gripper"), 6, 0, 0, 2000, 3400}},
                                        path, &error));

@@ -275,8 +275,9 @@ private slots:
     void recordingParsesBackWithTheSameIdsTimesAndValues()
     {
         const QString path = m_dir.filePath(QStringLiteral("recording.csv"));
-        QString error;
-        QVERIFY2(m_page->recording()->startRecording(path, &error), qPrintable(error));
+        util::FileError notRecording;
+        QVERIFY2(m_page->recording()->startRecording(path, &notRecording),
+                 qPrintable(notRecording.describe()));
         QVERIFY(m_page->recording()->isRecording());
         const qint64 start = m_page->recording()->recorder()->startUs();
         // Taken before recording started: not part of it.
@@ -302,6 +303,7 @@ private slots:
         m_page->recording()->stopRecording();
         QVERIFY(!m_page->recording()->isRecording());
 
+        QString error;
         const auto rows = testsupport::readTelemetryCsv(path, &error);
         QVERIFY2(rows, qPrintable(error));
         testsupport::compareTelemetryRows(*rows, written, start);
@@ -310,10 +312,11 @@ private slots:
     void recordingToAnUnwritablePlaceSaysWhy()
     {
         const QString path = m_dir.filePath(QStringLiteral("no/such/folder/recording.csv"));
-        QString error;
+        util::FileError error;
         QVERIFY(!m_page->recording()->startRecording(path, &error));
         QVERIFY(!m_page->recording()->isRecording());
-        QVERIFY(error.contains(QDir::toNativeSeparators(path)));
+        QCOMPARE(error.code(), util::FileError::Code::CannotWrite);
+        QVERIFY(error.describe().contains(QDir::toNativeSeparators(path)));
         QVERIFY(m_page->findChild<QLabel *>(QStringLiteral("monitorMessage"))->isVisible());
     }
 
@@ -382,7 +385,9 @@ private slots:
 
         // Recorded while streaming, ended by Stop.
         const QString path = m_dir.filePath(QStringLiteral("live.csv"));
-        QVERIFY2(m_page->recording()->startRecording(path, &error), qPrintable(error));
+        util::FileError notRecording;
+        QVERIFY2(m_page->recording()->startRecording(path, &notRecording),
+                 qPrintable(notRecording.describe()));
         QTRY_VERIFY_WITH_TIMEOUT(m_page->recording()->recorder()->rowCount() >= 30, 10000);
         m_page->stop();
         QVERIFY(!m_page->isRunning());
@@ -429,9 +434,10 @@ private slots:
         startSimulatorAndScan();
         QString error;
         QVERIFY2(m_page->start(&error), qPrintable(error));
-        QVERIFY2(
-            m_page->recording()->startRecording(m_dir.filePath(QStringLiteral("cut.csv")), &error),
-            qPrintable(error));
+        util::FileError notRecording;
+        QVERIFY2(m_page->recording()->startRecording(m_dir.filePath(QStringLiteral("cut.csv")),
+                                                     &notRecording),
+                 qPrintable(notRecording.describe()));
         QTRY_VERIFY_WITH_TIMEOUT(m_page->recording()->recorder()->rowCount() > 0, 10000);
         QSignalSpy recording(m_page->recording(), &MonitorRecording::recordingChanged);
         m_client->disconnectFrom();

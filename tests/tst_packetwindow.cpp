@@ -153,10 +153,10 @@ private slots:
                  2);
 
         const QString path = writeTestFile(QStringLiteral("sequence.json"), {});
-        QString error;
-        QVERIFY2(m_window->sequenceFiles()->save(path, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(m_window->sequenceFiles()->save(path, &error), qPrintable(error.describe()));
         PacketWindow other(m_feetech.get(), m_ptk.get());
-        QVERIFY2(other.sequenceFiles()->load(path, &error), qPrintable(error));
+        QVERIFY2(other.sequenceFiles()->load(path, &error), qPrintable(error.describe()));
         QCOMPARE(other.historyFrames(), m_window->historyFrames());
         QCOMPARE(other.historyFrames().first().replyId, std::optional<quint8>(2));
     }
@@ -167,11 +167,14 @@ private slots:
         const QString wrongFrame = writeTestFile(
             QStringLiteral("wrong.json"),
             R"({"format":"servobench-packets","version":1,"frames":[{"protocol":"feetech","baud":1000000,"hex":"FF FF 01 02 01 00"}]})");
-        QString error;
+        util::FileError error;
         QVERIFY(!m_window->sequenceFiles()->load(garbled, &error));
-        QVERIFY(error.contains(QStringLiteral("garbled.json")));
+        QCOMPARE(error.code(), util::FileError::Code::NotJson);
+        QVERIFY(error.describe().contains(QStringLiteral("garbled.json")));
         QVERIFY(!m_window->sequenceFiles()->load(wrongFrame, &error));
-        QVERIFY2(error.contains(QStringLiteral("frame 1")), qPrintable(error));
+        QCOMPARE(error.code(), util::FileError::Code::BadValue);
+        QVERIFY2(error.describe().contains(QStringLiteral("frame 1")),
+                 qPrintable(error.describe()));
         QCOMPARE(m_window->history()->rowCount(), 0);
     }
 

@@ -11,6 +11,8 @@
 
 using feetech::Pose;
 using feetech::PoseEntry;
+using Code = util::FileError::Code;
+Q_DECLARE_METATYPE(util::FileError::Code)
 
 namespace {
 
@@ -90,9 +92,9 @@ private slots:
     void jsonRoundTripKeepsNameAndEveryEntryInOrder()
     {
         const Pose pose = armPose();
-        QString error;
+        util::FileError error;
         const std::optional<Pose> back = feetech::poseFromJson(feetech::poseToJson(pose), &error);
-        QVERIFY2(back, qPrintable(error));
+        QVERIFY2(back, qPrintable(error.describe()));
         QCOMPARE(back->name, pose.name);
         QCOMPARE(back->servos.size(), 4);
         QVERIFY(*back == pose);
@@ -134,86 +136,107 @@ private slots:
 
     void invalidDocumentIsRefusedWithItsReason_data()
     {
+        QTest::addColumn<Code>("code");
         QTest::addColumn<QByteArray>("json");
         QTest::addColumn<QString>("reason");
 
-        QTest::newRow("not JSON") << QByteArray("{\"format\": ")
+        QTest::newRow("not JSON") << Code::NotJson << QByteArray("{\"format\": ")
                                   << QStringLiteral("not valid JSON");
         QTest::newRow("not an object")
-            << QByteArray("[1, 2]") << QStringLiteral("not a JSON object");
-        QTest::newRow("no format") << bytes(without(validRoot(), QStringLiteral("format")))
+            << Code::NotAnObject << QByteArray("[1, 2]") << QStringLiteral("not a JSON object");
+        QTest::newRow("no format")
+            << Code::WrongFormat << bytes(without(validRoot(), QStringLiteral("format")))
+            << QStringLiteral("not a ServoBench pose");
+        QTest::newRow("a profile") << Code::WrongFormat
+                                   << bytes(with(validRoot(), QStringLiteral("format"),
+                                                 QStringLiteral("servobench-profile")))
                                    << QStringLiteral("not a ServoBench pose");
-        QTest::newRow("a profile") << bytes(
-            with(validRoot(), QStringLiteral("format"), QStringLiteral("servobench-profile")))
-                                   << QStringLiteral("not a ServoBench pose");
-        QTest::newRow("no version") << bytes(without(validRoot(), QStringLiteral("version")))
-                                    << QStringLiteral("format version is missing");
+        QTest::newRow("no version")
+            << Code::BadVersion << bytes(without(validRoot(), QStringLiteral("version")))
+            << QStringLiteral("format version is missing");
         QTest::newRow("fractional version")
-            << bytes(with(validRoot(), QStringLiteral("version"), 1.5))
+            << Code::BadVersion << bytes(with(validRoot(), QStringLiteral("version"), 1.5))
             << QStringLiteral("format version is missing or not a whole number");
-        QTest::newRow("newer version") << bytes(with(validRoot(), QStringLiteral("version"), 2))
-                                       << QStringLiteral("written by a newer ServoBench");
-        QTest::newRow("version 0") << bytes(with(validRoot(), QStringLiteral("version"), 0))
-                                   << QStringLiteral("unknown format version 0");
-        QTest::newRow("unknown entry") << bytes(with(validRoot(), QStringLiteral("speed"), 3))
-                                       << QStringLiteral("unknown entry \"speed\"");
-        QTest::newRow("name not text") << bytes(with(validRoot(), QStringLiteral("name"), 7))
-                                       << QStringLiteral("\"name\" must be text");
-        QTest::newRow("no servos") << bytes(without(validRoot(), QStringLiteral("servos")))
-                                   << QStringLiteral("no \"servos\" list");
+        QTest::newRow("newer version")
+            << Code::NewerVersion << bytes(with(validRoot(), QStringLiteral("version"), 2))
+            << QStringLiteral("written by a newer ServoBench");
+        QTest::newRow("version 0")
+            << Code::UnknownVersion << bytes(with(validRoot(), QStringLiteral("version"), 0))
+            << QStringLiteral("unknown format version 0");
+        QTest::newRow("unknown entry")
+            << Code::UnknownKey << bytes(with(validRoot(), QStringLiteral("speed"), 3))
+            << QStringLiteral("unknown entry \"speed\"");
+        QTest::newRow("name not text")
+            << Code::WrongType << bytes(with(validRoot(), QStringLiteral("name"), 7))
+            << QStringLiteral("\"name\" must be text");
+        QTest::newRow("no servos")
+            << Code::MissingField << bytes(without(validRoot(), QStringLiteral("servos")))
+            << QStringLiteral("no \"servos\" list");
         QTest::newRow("servos not a list")
+            << Code::MissingField
             << bytes(with(validRoot(), QStringLiteral("servos"), QJsonObject()))
             << QStringLiteral("no \"servos\" list");
-        QTest::newRow("entry not an object")
-            << bytes(withSecondEntry(5)) << QStringLiteral("servo entry 2: not a JSON object");
-        QTest::newRow("id missing") << bytes(withSecondEntry(entryWithout(QStringLiteral("id"))))
-                                    << QStringLiteral("servo entry 2: \"id\" is missing");
+        QTest::newRow("entry not an object") << Code::WrongType << bytes(withSecondEntry(5))
+                                             << QStringLiteral("servo entry 2: not a JSON object");
+        QTest::newRow("id missing")
+            << Code::MissingField << bytes(withSecondEntry(entryWithout(QStringLiteral("id"))))
+            << QStringLiteral("servo entry 2: \"id\" is missing");
         QTest::newRow("baud missing")
-            << bytes(withSecondEntry(entryWithout(QStringLiteral("baud"))))
+            << Code::MissingField << bytes(withSecondEntry(entryWithout(QStringLiteral("baud"))))
             << QStringLiteral("servo entry 2: \"baud\" is missing");
         QTest::newRow("position missing")
+            << Code::MissingField
             << bytes(withSecondEntry(entryWithout(QStringLiteral("position"))))
             << QStringLiteral("servo entry 2: \"position\" is missing");
         QTest::newRow("unknown key in entry")
+            << Code::UnknownKey
             << bytes(withSecondEntry(with(entry(2, k1M, 100), QStringLiteral("speed"), 1)))
             << QStringLiteral("servo entry 2: unknown entry \"speed\"");
-        QTest::newRow("broadcast id") << bytes(withSecondEntry(entry(254, k1M, 100)))
-                                      << QStringLiteral("254 is not a servo ID (0 to 253)");
-        QTest::newRow("id as text") << bytes(
-            withSecondEntry(with(entry(2, k1M, 100), QStringLiteral("id"), QStringLiteral("2"))))
-                                    << QStringLiteral("\"2\" is not a servo ID");
-        QTest::newRow("baud not a rate") << bytes(withSecondEntry(entry(2, 9600, 100)))
-                                         << QStringLiteral("9600 is not a Feetech baud rate");
-        QTest::newRow("position fractional") << bytes(withSecondEntry(entry(2, k1M, 100.5)))
-                                             << QStringLiteral("100.5 is not an integer");
+        QTest::newRow("broadcast id")
+            << Code::BadValue << bytes(withSecondEntry(entry(254, k1M, 100)))
+            << QStringLiteral("254 is not a servo ID (0 to 253)");
+        QTest::newRow("id as text")
+            << Code::BadValue
+            << bytes(withSecondEntry(
+                   with(entry(2, k1M, 100), QStringLiteral("id"), QStringLiteral("2"))))
+            << QStringLiteral("\"2\" is not a servo ID");
+        QTest::newRow("baud not a rate")
+            << Code::BadValue << bytes(withSecondEntry(entry(2, 9600, 100)))
+            << QStringLiteral("9600 is not a Feetech baud rate");
+        QTest::newRow("position fractional")
+            << Code::BadValue << bytes(withSecondEntry(entry(2, k1M, 100.5)))
+            << QStringLiteral("100.5 is not an integer");
         QTest::newRow("position as text")
-            << bytes(withSecondEntry(entry(2, k1M, QStringLiteral("100"))))
+            << Code::BadValue << bytes(withSecondEntry(entry(2, k1M, QStringLiteral("100"))))
             << QStringLiteral("\"100\" is not an integer");
-        QTest::newRow("position boolean") << bytes(withSecondEntry(entry(2, k1M, true)))
-                                          << QStringLiteral("true is not an integer");
+        QTest::newRow("position boolean")
+            << Code::BadValue << bytes(withSecondEntry(entry(2, k1M, true)))
+            << QStringLiteral("true is not an integer");
         QTest::newRow("position too large")
-            << bytes(withSecondEntry(entry(2, k1M, 40000)))
+            << Code::BadValue << bytes(withSecondEntry(entry(2, k1M, 40000)))
             << QStringLiteral("40000 is out of range (-32767 to 32767)");
         QTest::newRow("duplicate id and baud")
-            << bytes(withSecondEntry(entry(1, k1M, 100)))
+            << Code::Duplicate << bytes(withSecondEntry(entry(1, k1M, 100)))
             << QStringLiteral("servo entry 2: ID 1 at 1000000 bps is already in the pose");
     }
 
     void invalidDocumentIsRefusedWithItsReason()
     {
+        QFETCH(Code, code);
         QFETCH(QByteArray, json);
         QFETCH(QString, reason);
-        QString error;
+        util::FileError error;
         QVERIFY(!feetech::poseFromJson(json, &error));
-        QVERIFY2(error.contains(reason), qPrintable(error));
+        QCOMPARE(error.code(), code);
+        QVERIFY2(error.describe().contains(reason), qPrintable(error.describe()));
     }
 
     void validDocumentIsAccepted()
     {
         // The base of the refusal cases must itself be fine, or they prove nothing.
-        QString error;
+        util::FileError error;
         const std::optional<Pose> pose = feetech::poseFromJson(bytes(validRoot()), &error);
-        QVERIFY2(pose, qPrintable(error));
+        QVERIFY2(pose, qPrintable(error.describe()));
         QCOMPARE(pose->name, QStringLiteral("home"));
         QCOMPARE(pose->servos.size(), 2);
         QVERIFY(pose->servos.at(1) == (PoseEntry {2, k1M, 100}));
@@ -223,10 +246,10 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("arm.pose.json"));
-        QString error;
-        QVERIFY2(feetech::savePose(path, armPose(), &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(feetech::savePose(path, armPose(), &error), qPrintable(error.describe()));
         const std::optional<Pose> back = feetech::loadPose(path, &error);
-        QVERIFY2(back, qPrintable(error));
+        QVERIFY2(back, qPrintable(error.describe()));
         QVERIFY(*back == armPose());
     }
 
@@ -239,16 +262,23 @@ private slots:
 
         Pose twice = armPose();
         twice.servos.append({2, k1M, 0});
-        QString error;
+        util::FileError error;
         QVERIFY(!feetech::savePose(path, twice, &error));
-        QVERIFY2(error.contains(QStringLiteral("was not saved")), qPrintable(error));
-        QVERIFY2(error.contains(QStringLiteral("ID 2 at 1000000 bps")), qPrintable(error));
+        QCOMPARE(error.code(), Code::Duplicate);
+        QCOMPARE(error.action(), util::FileError::Action::Saving);
+        QVERIFY2(error.describe().contains(QStringLiteral("was not saved")),
+                 qPrintable(error.describe()));
+        QVERIFY2(error.describe().contains(QStringLiteral("ID 2 at 1000000 bps")),
+                 qPrintable(error.describe()));
         QCOMPARE(readFile(path), before);
 
         Pose tooFar = armPose();
         tooFar.servos[0].position = 40000;
         QVERIFY(!feetech::savePose(path, tooFar, &error));
-        QVERIFY2(error.contains(QStringLiteral("out of range")), qPrintable(error));
+        QCOMPARE(error.code(), Code::BadValue);
+        QCOMPARE(error.field(), QStringLiteral("position"));
+        QVERIFY2(error.describe().contains(QStringLiteral("out of range")),
+                 qPrintable(error.describe()));
         QCOMPARE(readFile(path), before);
     }
 
@@ -256,18 +286,22 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("no/such/folder/arm.pose.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(!feetech::savePose(path, armPose(), &error));
-        QVERIFY2(error.contains(QDir::toNativeSeparators(path)), qPrintable(error));
+        QCOMPARE(error.code(), Code::CannotWrite);
+        QVERIFY2(error.describe().contains(QDir::toNativeSeparators(path)),
+                 qPrintable(error.describe()));
     }
 
     void loadNamesTheFileInItsError()
     {
         QTemporaryDir dir;
         const QString missing = dir.filePath(QStringLiteral("missing.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(!feetech::loadPose(missing, &error));
-        QVERIFY2(error.startsWith(QDir::toNativeSeparators(missing)), qPrintable(error));
+        QCOMPARE(error.code(), Code::CannotRead);
+        QVERIFY2(error.describe().startsWith(QDir::toNativeSeparators(missing)),
+                 qPrintable(error.describe()));
 
         const QString wrong = dir.filePath(QStringLiteral("wrong.json"));
         QFile file(wrong);
@@ -275,8 +309,11 @@ private slots:
         file.write(bytes(with(validRoot(), QStringLiteral("version"), 2)));
         file.close();
         QVERIFY(!feetech::loadPose(wrong, &error));
-        QVERIFY2(error.startsWith(QDir::toNativeSeparators(wrong)), qPrintable(error));
-        QVERIFY2(error.contains(QStringLiteral("newer ServoBench")), qPrintable(error));
+        QCOMPARE(error.code(), Code::NewerVersion);
+        QVERIFY2(error.describe().startsWith(QDir::toNativeSeparators(wrong)),
+                 qPrintable(error.describe()));
+        QVERIFY2(error.describe().contains(QStringLiteral("newer ServoBench")),
+                 qPrintable(error.describe()));
     }
 
     void loadRefusesAHugeFile()
@@ -287,9 +324,11 @@ private slots:
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(QByteArray(2 * 1024 * 1024, ' '));
         file.close();
-        QString error;
+        util::FileError error;
         QVERIFY(!feetech::loadPose(path, &error));
-        QVERIFY2(error.contains(QStringLiteral("too large")), qPrintable(error));
+        QCOMPARE(error.code(), Code::TooLarge);
+        QVERIFY2(error.describe().contains(QStringLiteral("too large")),
+                 qPrintable(error.describe()));
     }
 };
 

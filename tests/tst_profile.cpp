@@ -11,6 +11,8 @@
 #include <QtTest>
 
 using profile::Profile;
+using Code = util::FileError::Code;
+Q_DECLARE_METATYPE(util::FileError::Code)
 using profile::ProfileValue;
 
 namespace {
@@ -93,11 +95,12 @@ private slots:
         original.note = QStringLiteral("bench sample, soft start on");
         original.saved = QDateTime(QDate(2024, 5, 17), QTime(14, 3, 9), Qt::UTC);
 
-        QString error;
-        QVERIFY2(profile::save(path, original, ptk::modelDefinitions(), &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(profile::save(path, original, ptk::modelDefinitions(), &error),
+                 qPrintable(error.describe()));
         const std::optional<Profile> loaded =
             profile::load(path, kPtk, ptk::modelDefinitions(), &error);
-        QVERIFY2(loaded, qPrintable(error));
+        QVERIFY2(loaded, qPrintable(error.describe()));
         QCOMPARE(loaded->family, original.family);
         QCOMPARE(loaded->model, original.model);
         QCOMPARE(loaded->note, original.note);
@@ -135,19 +138,22 @@ private slots:
     {
         QJsonObject root = validRoot();
         root.insert(QStringLiteral("family"), QStringLiteral("sts"));
-        QString error;
+        util::FileError error;
         QVERIFY(!profile::parse(bytes(root), kPtk, ptk::modelDefinitions(), &error));
-        QVERIFY2(error.contains(QStringLiteral("\"sts\""))
-                     && error.contains(QStringLiteral("\"ptk\"")),
-                 qPrintable(error));
+        QCOMPARE(error.code(), Code::WrongServos);
+        QVERIFY2(error.describe().contains(QStringLiteral("\"sts\""))
+                     && error.describe().contains(QStringLiteral("\"ptk\"")),
+                 qPrintable(error.describe()));
     }
 
     void anUnknownParameterIsRejectedByName()
     {
         const QJsonObject root = withParameter(validRoot(), QStringLiteral("gian"), 3);
-        QString error;
+        util::FileError error;
         QVERIFY(!profile::parse(bytes(root), kPtk, ptk::modelDefinitions(), &error));
-        QCOMPARE(error, QStringLiteral("unknown parameter \"gian\""));
+        QCOMPARE(error.code(), Code::UnknownKey);
+        QCOMPARE(error.field(), QStringLiteral("gian"));
+        QCOMPARE(error.describe(), QStringLiteral("unknown parameter \"gian\""));
     }
 
     void anOutOfRangeValueIsRejectedWithItsRange_data()
@@ -174,10 +180,12 @@ private slots:
         QFETCH(QString, key);
         QFETCH(double, value);
         QFETCH(QString, message);
-        QString error;
+        util::FileError error;
         QVERIFY(!profile::parse(bytes(withParameter(validRoot(), key, value)), kPtk,
                                 ptk::modelDefinitions(), &error));
-        QCOMPARE(error, message);
+        QCOMPARE(error.code(), Code::BadValue);
+        QCOMPARE(error.field(), key);
+        QCOMPARE(error.describe(), message);
     }
 
     void aValueOfTheWrongTypeIsRejected_data()
@@ -185,23 +193,28 @@ private slots:
         QTest::addColumn<QString>("key");
         QTest::addColumn<QJsonValue>("value");
         QTest::addColumn<QString>("message");
+        QTest::addColumn<Code>("code");
         QTest::newRow("number as text")
             << QStringLiteral("gain") << QJsonValue(QStringLiteral("29"))
-            << QStringLiteral("gain: expected a number");
-        QTest::newRow("number as boolean") << QStringLiteral("gain") << QJsonValue(true)
-                                           << QStringLiteral("gain: expected a number");
+            << QStringLiteral("gain: expected a number") << Code::WrongType;
+        QTest::newRow("number as boolean")
+            << QStringLiteral("gain") << QJsonValue(true)
+            << QStringLiteral("gain: expected a number") << Code::WrongType;
         QTest::newRow("null") << QStringLiteral("damping") << QJsonValue(QJsonValue::Null)
-                              << QStringLiteral("damping: expected a number");
-        QTest::newRow("switch as number") << QStringLiteral("inversion") << QJsonValue(1)
-                                          << QStringLiteral("inversion: expected true or false");
+                              << QStringLiteral("damping: expected a number") << Code::WrongType;
+        QTest::newRow("switch as number")
+            << QStringLiteral("inversion") << QJsonValue(1)
+            << QStringLiteral("inversion: expected true or false") << Code::WrongType;
         QTest::newRow("switch as text")
             << QStringLiteral("soft_start") << QJsonValue(QStringLiteral("on"))
-            << QStringLiteral("soft_start: expected true or false");
+            << QStringLiteral("soft_start: expected true or false") << Code::WrongType;
         QTest::newRow("fraction") << QStringLiteral("gain") << QJsonValue(2.5)
-                                  << QStringLiteral("gain: 2.5 is not a whole number");
+                                  << QStringLiteral("gain: 2.5 is not a whole number")
+                                  << Code::BadValue;
         QTest::newRow("between raw steps")
             << QStringLiteral("min_pulse_us") << QJsonValue(500.1)
-            << QStringLiteral("min_pulse_us: 500.1 µs is not a multiple of 0.25 µs");
+            << QStringLiteral("min_pulse_us: 500.1 µs is not a multiple of 0.25 µs")
+            << Code::BadValue;
     }
 
     void aValueOfTheWrongTypeIsRejected()
@@ -209,31 +222,38 @@ private slots:
         QFETCH(QString, key);
         QFETCH(QJsonValue, value);
         QFETCH(QString, message);
-        QString error;
+        QFETCH(Code, code);
+        util::FileError error;
         QVERIFY(!profile::parse(bytes(withParameter(validRoot(), key, value)), kPtk,
                                 ptk::modelDefinitions(), &error));
-        QCOMPARE(error, message);
+        QCOMPARE(error.code(), code);
+        QCOMPARE(error.describe(), message);
     }
 
     void aQuarterMicrosecondStepIsAccepted()
     {
         const QJsonObject root = withParameter(validRoot(), QStringLiteral("min_pulse_us"), 500.25);
-        QString error;
+        util::FileError error;
         const std::optional<Profile> loaded =
             profile::parse(bytes(root), kPtk, ptk::modelDefinitions(), &error);
-        QVERIFY2(loaded, qPrintable(error));
+        QVERIFY2(loaded, qPrintable(error.describe()));
         QCOMPARE(loaded->value(QStringLiteral("min_pulse_us")).value_or(-1), 2001);
     }
 
     void malformedJsonIsRejectedWithItsOffset()
     {
-        QString error;
+        util::FileError error;
         QVERIFY(!profile::parse("{\"format\": \"servobench-profile\",, \"version\": 1}", kPtk,
                                 ptk::modelDefinitions(), &error));
-        QVERIFY2(error.startsWith(QStringLiteral("not valid JSON")), qPrintable(error));
-        QVERIFY2(error.contains(QStringLiteral("at offset 33")), qPrintable(error));
+        QCOMPARE(error.code(), Code::NotJson);
+        QCOMPARE(error.value(), QStringLiteral("33"));
+        QVERIFY2(error.describe().startsWith(QStringLiteral("not valid JSON")),
+                 qPrintable(error.describe()));
+        QVERIFY2(error.describe().contains(QStringLiteral("at offset 33")),
+                 qPrintable(error.describe()));
         QVERIFY(!profile::parse(QByteArray(), kPtk, ptk::modelDefinitions(), &error));
-        QVERIFY2(error.startsWith(QStringLiteral("not valid JSON")), qPrintable(error));
+        QVERIFY2(error.describe().startsWith(QStringLiteral("not valid JSON")),
+                 qPrintable(error.describe()));
     }
 
     void aProfileFromANewerVersionIsRejected()
@@ -243,9 +263,10 @@ private slots:
         // A newer format may well bring entries this version does not know; the version is
         // what the user must hear about.
         root.insert(QStringLiteral("checksum"), QStringLiteral("abc"));
-        QString error;
+        util::FileError error;
         QVERIFY(!profile::parse(bytes(root), kPtk, ptk::modelDefinitions(), &error));
-        QCOMPARE(error,
+        QCOMPARE(error.code(), Code::NewerVersion);
+        QCOMPARE(error.describe(),
                  QStringLiteral("the profile has format version 2 and was written by a newer "
                                 "ServoBench; this version reads format version 1 and older"));
     }
@@ -254,6 +275,7 @@ private slots:
     {
         QTest::addColumn<QByteArray>("json");
         QTest::addColumn<QString>("message");
+        QTest::addColumn<Code>("code");
         const auto spoiled = [](const QString &key, const QJsonValue &value) {
             QJsonObject root = validRoot();
             if (value.isUndefined())
@@ -266,47 +288,57 @@ private slots:
             QStringLiteral("not a ServoBench profile (\"format\" is not \"servobench-profile\")");
         QTest::newRow("array") << QByteArray("[1, 2]")
                                << QStringLiteral("not a ServoBench profile (the document is not "
-                                                 "a JSON object)");
-        QTest::newRow("no format")
-            << spoiled(QStringLiteral("format"), QJsonValue::Undefined) << notAProfile;
+                                                 "a JSON object)")
+                               << Code::NotAnObject;
+        QTest::newRow("no format") << spoiled(QStringLiteral("format"), QJsonValue::Undefined)
+                                   << notAProfile << Code::WrongFormat;
         QTest::newRow("other format")
-            << spoiled(QStringLiteral("format"), QStringLiteral("servobench-log")) << notAProfile;
+            << spoiled(QStringLiteral("format"), QStringLiteral("servobench-log")) << notAProfile
+            << Code::WrongFormat;
         const QString badVersion =
             QStringLiteral("the format version is missing or not a whole number");
-        QTest::newRow("no version")
-            << spoiled(QStringLiteral("version"), QJsonValue::Undefined) << badVersion;
-        QTest::newRow("version as text")
-            << spoiled(QStringLiteral("version"), QStringLiteral("1")) << badVersion;
+        QTest::newRow("no version") << spoiled(QStringLiteral("version"), QJsonValue::Undefined)
+                                    << badVersion << Code::BadVersion;
+        QTest::newRow("version as text") << spoiled(QStringLiteral("version"), QStringLiteral("1"))
+                                         << badVersion << Code::BadVersion;
         QTest::newRow("fractional version")
-            << spoiled(QStringLiteral("version"), 1.5) << badVersion;
+            << spoiled(QStringLiteral("version"), 1.5) << badVersion << Code::BadVersion;
         QTest::newRow("version zero")
-            << spoiled(QStringLiteral("version"), 0) << QStringLiteral("unknown format version 0");
-        QTest::newRow("unknown entry") << spoiled(QStringLiteral("comment"), QStringLiteral("x"))
-                                       << QStringLiteral("unknown entry \"comment\"");
-        QTest::newRow("no family") << spoiled(QStringLiteral("family"), QJsonValue::Undefined)
-                                   << QStringLiteral("the profile names no servo family");
+            << spoiled(QStringLiteral("version"), 0) << QStringLiteral("unknown format version 0")
+            << Code::UnknownVersion;
+        QTest::newRow("unknown entry")
+            << spoiled(QStringLiteral("comment"), QStringLiteral("x"))
+            << QStringLiteral("unknown entry \"comment\"") << Code::UnknownKey;
+        QTest::newRow("no family")
+            << spoiled(QStringLiteral("family"), QJsonValue::Undefined)
+            << QStringLiteral("the profile names no servo family") << Code::MissingField;
         QTest::newRow("model as number")
-            << spoiled(QStringLiteral("model"), 7308) << QStringLiteral("\"model\" must be text");
-        QTest::newRow("note as object") << spoiled(QStringLiteral("note"), QJsonObject())
-                                        << QStringLiteral("\"note\" must be text");
+            << spoiled(QStringLiteral("model"), 7308) << QStringLiteral("\"model\" must be text")
+            << Code::WrongType;
+        QTest::newRow("note as object")
+            << spoiled(QStringLiteral("note"), QJsonObject())
+            << QStringLiteral("\"note\" must be text") << Code::WrongType;
         QTest::newRow("bad time")
             << spoiled(QStringLiteral("saved"), QStringLiteral("yesterday"))
-            << QStringLiteral("\"saved\": \"yesterday\" is not an ISO 8601 date and time");
+            << QStringLiteral("\"saved\": \"yesterday\" is not an ISO 8601 date and time")
+            << Code::BadValue;
         QTest::newRow("no parameters")
             << spoiled(QStringLiteral("parameters"), QJsonValue::Undefined)
-            << QStringLiteral("the profile has no \"parameters\" object");
+            << QStringLiteral("the profile has no \"parameters\" object") << Code::MissingField;
         QTest::newRow("parameters as array")
             << spoiled(QStringLiteral("parameters"), QJsonArray {29})
-            << QStringLiteral("the profile has no \"parameters\" object");
+            << QStringLiteral("the profile has no \"parameters\" object") << Code::MissingField;
     }
 
     void aBrokenEnvelopeIsRejected()
     {
         QFETCH(QByteArray, json);
         QFETCH(QString, message);
-        QString error;
+        QFETCH(Code, code);
+        util::FileError error;
         QVERIFY(!profile::parse(json, kPtk, ptk::modelDefinitions(), &error));
-        QCOMPARE(error, message);
+        QCOMPARE(error.code(), code);
+        QCOMPARE(error.describe(), message);
     }
 
     void aPartialProfileLoadsOnlyWhatItHoldsInDefinitionOrder()
@@ -317,10 +349,10 @@ private slots:
         parameters.insert(QStringLiteral("max_pulse_us"), 2000);
         parameters.insert(QStringLiteral("min_angle"), 40);
         root.insert(QStringLiteral("parameters"), parameters);
-        QString error;
+        util::FileError error;
         const std::optional<Profile> loaded =
             profile::parse(bytes(root), kPtk, ptk::modelDefinitions(), &error);
-        QVERIFY2(loaded, qPrintable(error));
+        QVERIFY2(loaded, qPrintable(error.describe()));
         const QVector<ProfileValue> expected {{QStringLiteral("min_angle"), 40},
                                               {QStringLiteral("max_pulse_us"), 8000}};
         QCOMPARE(loaded->values, expected);
@@ -333,10 +365,10 @@ private slots:
         // Out of range and of the wrong type: it would be refused if it were looked at.
         QJsonObject root =
             withParameter(validRoot(), QStringLiteral("present_voltage"), QStringLiteral("12 V"));
-        QString error;
+        util::FileError error;
         const std::optional<Profile> loaded =
             profile::parse(bytes(root), kPtk, definitionsWithReadOnly(), &error);
-        QVERIFY2(loaded, qPrintable(error));
+        QVERIFY2(loaded, qPrintable(error.describe()));
         QVERIFY(!loaded->value(QStringLiteral("present_voltage")));
         QCOMPARE(loaded->value(QStringLiteral("gain")).value_or(-1), 29);
         QCOMPARE(loaded->value(QStringLiteral("inversion")).value_or(-1), 1);
@@ -348,11 +380,12 @@ private slots:
         QVERIFY(dir.isValid());
         const QString missing = dir.filePath(QStringLiteral("missing"));
         const QString path = missing + QStringLiteral("/sample.json");
-        QString error;
+        util::FileError error;
         QVERIFY(!profile::save(path, seedProfile(true), ptk::modelDefinitions(), &error));
-        QVERIFY2(
-            error.startsWith(QDir::toNativeSeparators(path) + QStringLiteral(" was not saved")),
-            qPrintable(error));
+        QCOMPARE(error.code(), Code::CannotWrite);
+        QVERIFY2(error.describe().startsWith(QDir::toNativeSeparators(path)
+                                             + QStringLiteral(" was not saved")),
+                 qPrintable(error.describe()));
         QVERIFY(!QFileInfo::exists(missing));
         QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden),
                  QStringList());
@@ -363,24 +396,29 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("sample.json"));
-        QString error;
+        util::FileError error;
         QVERIFY2(profile::save(path, seedProfile(true), ptk::modelDefinitions(), &error),
-                 qPrintable(error));
+                 qPrintable(error.describe()));
         const QByteArray before = readAll(path);
 
         Profile outOfRange = seedProfile(true);
         outOfRange.values[0].raw = 40; // gain
         QVERIFY(!profile::save(path, outOfRange, ptk::modelDefinitions(), &error));
-        QVERIFY2(error.endsWith(QStringLiteral("gain: 40 is out of range (0 to 30)")),
-                 qPrintable(error));
+        QCOMPARE(error.code(), Code::BadValue);
+        QVERIFY2(error.describe().endsWith(QStringLiteral("gain: 40 is out of range (0 to 30)")),
+                 qPrintable(error.describe()));
         Profile badSwitch = seedProfile(true);
         badSwitch.values[8].raw = 2; // inversion would come back as 1
         QVERIFY(!profile::save(path, badSwitch, ptk::modelDefinitions(), &error));
-        QVERIFY2(error.contains(QStringLiteral("inversion")), qPrintable(error));
+        QCOMPARE(error.code(), Code::BadValue);
+        QVERIFY2(error.describe().contains(QStringLiteral("inversion")),
+                 qPrintable(error.describe()));
         Profile unknown = seedProfile(true);
         unknown.values.append({QStringLiteral("torque"), 1});
         QVERIFY(!profile::save(path, unknown, ptk::modelDefinitions(), &error));
-        QVERIFY2(error.contains(QStringLiteral("\"torque\"")), qPrintable(error));
+        QCOMPARE(error.code(), Code::UnknownKey);
+        QVERIFY2(error.describe().contains(QStringLiteral("\"torque\"")),
+                 qPrintable(error.describe()));
 
         QCOMPARE(readAll(path), before);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
@@ -392,17 +430,19 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("other.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(!profile::load(path, kPtk, ptk::modelDefinitions(), &error));
-        QVERIFY2(error.startsWith(QDir::toNativeSeparators(path) + QStringLiteral(": ")),
-                 qPrintable(error));
+        QCOMPARE(error.code(), Code::CannotRead);
+        QVERIFY2(error.describe().startsWith(QDir::toNativeSeparators(path) + QStringLiteral(": ")),
+                 qPrintable(error.describe()));
 
         QFile file(path);
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(bytes(withParameter(validRoot(), QStringLiteral("gain"), 31)));
         file.close();
         QVERIFY(!profile::load(path, kPtk, ptk::modelDefinitions(), &error));
-        QCOMPARE(error,
+        QCOMPARE(error.code(), Code::BadValue);
+        QCOMPARE(error.describe(),
                  QDir::toNativeSeparators(path)
                      + QStringLiteral(": gain: 31 is out of range (0 to 30)"));
     }
@@ -468,11 +508,12 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("edits.json"));
-        QString error;
-        QVERIFY2(profile::save(path, pending, ptk::modelDefinitions(), &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(profile::save(path, pending, ptk::modelDefinitions(), &error),
+                 qPrintable(error.describe()));
         const std::optional<Profile> loaded =
             profile::load(path, kPtk, ptk::modelDefinitions(), &error);
-        QVERIFY2(loaded, qPrintable(error));
+        QVERIFY2(loaded, qPrintable(error.describe()));
         QCOMPARE(loaded->values, pending.values);
         QCOMPARE(loaded->saved, pending.saved);
     }

@@ -137,13 +137,13 @@ private slots:
     void aProfileAppliedToTheSelectedServosEndsInTheResultTable()
     {
         connectAndScan();
-        QString error;
+        util::FileError error;
         const auto file = feetech::SettingsFile::load(
             writeTestFile(QStringLiteral("gains.json"),
                           R"({"format": "servobench-profile", "version": 1, "family": "sts",
                           "parameters": {"p_gain": 21, "max_temperature": 61}})"),
             &error);
-        QVERIFY2(file, qPrintable(error));
+        QVERIFY2(file, qPrintable(error.describe()));
         BatchResultDialog *dialog = applyToAll(*file);
         QVERIFY(dialog);
         QVERIFY(dialog->isVisible());
@@ -254,7 +254,7 @@ private slots:
         });
         QVERIFY(!dialog.save(&error));
         QCOMPARE(asked, QStringList {path});
-        QString why;
+        util::FileError why;
         QCOMPARE(feetech::loadRobotTemplate(path, &why)
                      ->joints.at(0)
                      .settings.value(QStringLiteral("p_gain")),

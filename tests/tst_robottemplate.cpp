@@ -10,6 +10,9 @@
 
 using feetech::RobotTemplate;
 
+using Code = util::FileError::Code;
+Q_DECLARE_METATYPE(util::FileError::Code)
+
 namespace {
 
 const QString kSource = QStringLiteral("arm.json");
@@ -93,13 +96,13 @@ private slots:
 
     void aJointsOwnSettingsGoOnTopOfTheCommonOnes()
     {
-        QString error;
+        util::FileError error;
         const auto robot = feetech::robotTemplateFromJson(
             json(
                 armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("return_delay"), 10}}),
                            joint(QStringLiteral("arm"), 2)})),
             kSource, &error);
-        QVERIFY2(robot, qPrintable(error));
+        QVERIFY2(robot, qPrintable(error.describe()));
         QCOMPARE(robot->joints.at(0).settings.value(QStringLiteral("return_delay")), 10);
         QCOMPARE(robot->joints.at(1).settings.value(QStringLiteral("return_delay")), 0);
     }
@@ -111,10 +114,10 @@ private slots:
         RobotTemplate robot = feetech::builtInRobotTemplates().at(2);
         robot.name = QStringLiteral("My arm");
         robot.joints[5].id = 9;
-        QString error;
-        QVERIFY2(feetech::saveRobotTemplate(robot, path, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(feetech::saveRobotTemplate(robot, path, &error), qPrintable(error.describe()));
         const auto loaded = feetech::loadRobotTemplate(path, &error);
-        QVERIFY2(loaded, qPrintable(error));
+        QVERIFY2(loaded, qPrintable(error.describe()));
         QCOMPARE(loaded->name, robot.name);
         QCOMPARE(loaded->joints.size(), 6);
         for (int i = 0; i < 6; ++i) {
@@ -132,10 +135,10 @@ private slots:
         QVERIFY(folder.mkpath(QStringLiteral(".")));
         RobotTemplate robot = feetech::builtInRobotTemplates().first();
         robot.name = QStringLiteral("Workshop arm");
-        QString error;
+        util::FileError error;
         QVERIFY2(
             feetech::saveRobotTemplate(robot, folder.filePath(QStringLiteral("a.json")), &error),
-            qPrintable(error));
+            qPrintable(error.describe()));
         QFile broken(folder.filePath(QStringLiteral("b.json")));
         QVERIFY(broken.open(QIODevice::WriteOnly));
         broken.write("{ not json");
@@ -152,80 +155,96 @@ private slots:
 
     void aTemplateThatCannotBeSavedSaysWhereAndWhy()
     {
-        QString error;
+        util::FileError error;
         QVERIFY(!feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(),
                                             QStringLiteral("/proc/no-such-dir/arm.json"), &error));
-        QVERIFY2(error.contains(QStringLiteral("arm.json")), qPrintable(error));
+        QCOMPARE(error.code(), Code::CannotWrite);
+        QVERIFY2(error.describe().contains(QStringLiteral("arm.json")),
+                 qPrintable(error.describe()));
         QVERIFY(!feetech::loadRobotTemplate(QStringLiteral("/no/such/arm.json"), &error));
-        QVERIFY2(error.contains(QStringLiteral("arm.json")), qPrintable(error));
+        QCOMPARE(error.code(), Code::CannotRead);
+        QVERIFY2(error.describe().contains(QStringLiteral("arm.json")),
+                 qPrintable(error.describe()));
     }
 
     void aBadTemplateIsRefusedNamingTheJointAndField_data()
     {
         QTest::addColumn<QByteArray>("document");
         QTest::addColumn<QString>("mention");
+        QTest::addColumn<Code>("code");
         const QJsonArray two {joint(QStringLiteral("base"), 1), joint(QStringLiteral("arm"), 2)};
-        QTest::newRow("not JSON") << QByteArray("{\"format\": ") << QStringLiteral("JSON");
+        QTest::newRow("not JSON") << QByteArray("{\"format\": ") << QStringLiteral("JSON")
+                                  << Code::NotJson;
         QJsonObject wrong = armObject(two);
         wrong.insert(QStringLiteral("format"), QStringLiteral("servobench-pose"));
-        QTest::newRow("another file kind") << json(wrong) << QStringLiteral("servobench-robot");
+        QTest::newRow("another file kind")
+            << json(wrong) << QStringLiteral("servobench-robot") << Code::WrongFormat;
         QJsonObject unnamed = armObject(two);
         unnamed.insert(QStringLiteral("name"), QStringLiteral("  "));
-        QTest::newRow("no name") << json(unnamed) << QStringLiteral("\"name\"");
+        QTest::newRow("no name") << json(unnamed) << QStringLiteral("\"name\"")
+                                 << Code::MissingField;
         QJsonObject baud = armObject(two);
         baud.insert(QStringLiteral("baud"), 123456);
-        QTest::newRow("no Feetech rate") << json(baud) << QStringLiteral("\"baud\"");
-        QTest::newRow("no joints") << json(armObject({})) << QStringLiteral("joints");
+        QTest::newRow("no Feetech rate")
+            << json(baud) << QStringLiteral("\"baud\"") << Code::BadValue;
+        QTest::newRow("no joints")
+            << json(armObject({})) << QStringLiteral("joints") << Code::MissingField;
         QTest::newRow("same ID twice")
             << json(armObject({joint(QStringLiteral("base"), 1), joint(QStringLiteral("arm"), 1)}))
-            << QStringLiteral("joint 2 (arm): ID 1 is already base's");
+            << QStringLiteral("joint 2 (arm): ID 1 is already base's") << Code::Duplicate;
         QTest::newRow("same name twice")
             << json(armObject({joint(QStringLiteral("base"), 1), joint(QStringLiteral("base"), 2)}))
-            << QStringLiteral("\"base\" is used twice");
+            << QStringLiteral("\"base\" is used twice") << Code::Duplicate;
         QJsonObject unknownModel = joint(QStringLiteral("arm"), 2);
         unknownModel.insert(QStringLiteral("model"), QStringLiteral("XL330"));
         QTest::newRow("unknown model")
             << json(armObject({joint(QStringLiteral("base"), 1), unknownModel}))
-            << QStringLiteral("joint 2 (arm): \"model\": \"XL330\"");
-        QTest::newRow("ID out of range") << json(armObject({joint(QStringLiteral("base"), 254)}))
-                                         << QStringLiteral("joint 1 (base): \"id\"");
+            << QStringLiteral("joint 2 (arm): \"model\": \"XL330\"") << Code::BadValue;
+        QTest::newRow("ID out of range")
+            << json(armObject({joint(QStringLiteral("base"), 254)}))
+            << QStringLiteral("joint 1 (base): \"id\"") << Code::BadValue;
         QTest::newRow("bad joint name") << json(armObject({joint(QStringLiteral("2nd joint"), 1)}))
-                                        << QStringLiteral("joint 1");
+                                        << QStringLiteral("joint 1") << Code::BadValue;
         QTest::newRow("setting out of range")
             << json(
                    armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("p_gain"), 300}})}))
             << QStringLiteral(
-                   "joint 1 (base): settings: \"p_gain\" = 300 is out of range (0 to 254)");
+                   "joint 1 (base): settings: \"p_gain\" = 300 is out of range (0 to 254)")
+            << Code::BadValue;
         QTest::newRow("register it has not")
             << json(armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("gain"), 3}})}))
-            << QStringLiteral("\"gain\" is no writable register");
+            << QStringLiteral("\"gain\" is no writable register") << Code::UnknownKey;
         QTest::newRow("read-only register")
             << json(armObject(
                    {joint(QStringLiteral("base"), 1, {{QStringLiteral("present_position"), 3}})}))
-            << QStringLiteral("\"present_position\" is no writable register");
+            << QStringLiteral("\"present_position\" is no writable register") << Code::UnknownKey;
         QTest::newRow("the ID by the back door")
             << json(armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("id"), 3}})}))
-            << QStringLiteral("\"id\" is set by its own flow");
+            << QStringLiteral("\"id\" is set by its own flow") << Code::BadValue;
         QTest::newRow("the lock by the back door")
             << json(armObject({joint(QStringLiteral("base"), 1, {{QStringLiteral("lock"), 0}})}))
-            << QStringLiteral("\"lock\" is set by its own flow");
+            << QStringLiteral("\"lock\" is set by its own flow") << Code::BadValue;
         QTest::newRow("a setting that is no number")
             << json(armObject({joint(QStringLiteral("base"), 1,
                                      {{QStringLiteral("p_gain"), QStringLiteral("16")}})}))
-            << QStringLiteral("\"p_gain\" must be a whole number");
+            << QStringLiteral("\"p_gain\" must be a whole number") << Code::WrongType;
         QJsonObject extra = joint(QStringLiteral("base"), 1);
         extra.insert(QStringLiteral("colour"), QStringLiteral("red"));
-        QTest::newRow("unknown entry") << json(armObject({extra})) << QStringLiteral("\"colour\"");
+        QTest::newRow("unknown entry")
+            << json(armObject({extra})) << QStringLiteral("\"colour\"") << Code::UnknownKey;
     }
 
     void aBadTemplateIsRefusedNamingTheJointAndField()
     {
         QFETCH(QByteArray, document);
         QFETCH(QString, mention);
-        QString error;
+        QFETCH(Code, code);
+        util::FileError error;
         QVERIFY(!feetech::robotTemplateFromJson(document, kSource, &error));
-        QVERIFY2(error.startsWith(kSource + QStringLiteral(": ")), qPrintable(error));
-        QVERIFY2(error.contains(mention), qPrintable(error));
+        QCOMPARE(error.code(), code);
+        QVERIFY2(error.describe().startsWith(kSource + QStringLiteral(": ")),
+                 qPrintable(error.describe()));
+        QVERIFY2(error.describe().contains(mention), qPrintable(error.describe()));
     }
 };
 

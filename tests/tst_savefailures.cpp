@@ -47,6 +47,18 @@ private:
     void (*m_signal)(int) = SIG_DFL;
 };
 
+// A kind of file that says why through util::FileError, as a Save: *error is the error's
+// sentence, and stays empty unless the file system refused the file (CannotWrite).
+Save fileSaver(const std::function<bool(const QString &path, util::FileError *error)> &save)
+{
+    return [save](const QString &path, QString *error) {
+        util::FileError why;
+        const bool saved = save(path, &why);
+        *error = why.code() == util::FileError::Code::CannotWrite ? why.describe() : QString();
+        return saved;
+    };
+}
+
 feetech::HealthReport healthReport()
 {
     feetech::HealthReport report;
@@ -59,8 +71,12 @@ bool recordTelemetry(const QString &path, QString *error)
 {
     feetech::TelemetryRecorder recorder;
     recorder.setFlushInterval(0);
-    if (!recorder.open(path, error))
+    util::FileError notOpened;
+    if (!recorder.open(path, &notOpened)) {
+        *error = notOpened.code() == util::FileError::Code::CannotWrite ? notOpened.describe()
+                                                                        : QString();
         return false;
+    }
     feetech::FeedbackSample sample;
     sample.id = 1;
     sample.steadyUs = recorder.startUs();
@@ -103,21 +119,22 @@ private slots:
         QTest::addColumn<QString>("name");
         QTest::addColumn<Save>("save");
         QTest::newRow("profile") << QStringLiteral("servo.sbprofile")
-                                 << Save([](const QString &path, QString *error) {
+                                 << fileSaver([](const QString &path, util::FileError *error) {
                                         return profile::save(path, testsupport::samplePtkProfile(),
                                                              ptk::modelDefinitions(), error);
                                     });
         QTest::newRow("pose") << QStringLiteral(
-            "arm.sbpose") << Save([](const QString &path, QString *error) {
+            "arm.sbpose") << fileSaver([](const QString &path, util::FileError *error) {
             return feetech::savePose(path, testsupport::samplePose(), error);
         });
         QTest::newRow("robot template")
-            << QStringLiteral("arm.sbrobot") << Save([](const QString &path, QString *error) {
+            << QStringLiteral("arm.sbrobot")
+            << fileSaver([](const QString &path, util::FileError *error) {
                    return feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(), path,
                                                      error);
                });
         QTest::newRow("calibration") << QStringLiteral(
-            "arm.json") << Save([](const QString &path, QString *error) {
+            "arm.json") << fileSaver([](const QString &path, util::FileError *error) {
             return feetech::saveLeRobotCalibration(testsupport::sampleCalibration(), path, error);
         });
         QTest::newRow("health report json")
@@ -204,9 +221,10 @@ private slots:
             QSKIP("needs /dev/full");
         const QString link = m_dir.filePath(QStringLiteral("full-device"));
         QVERIFY(QFile::link(QStringLiteral("/dev/full"), link));
-        QString error;
+        util::FileError error;
         QVERIFY(!feetech::savePose(link, testsupport::samplePose(), &error));
-        QVERIFY(!error.isEmpty());
+        QCOMPARE(error.code(), util::FileError::Code::CannotWrite);
+        QVERIFY(!error.describe().isEmpty());
         const QFileInfo device(link);
         QVERIFY(device.isSymLink());
         QVERIFY(device.exists() && !device.isFile());

@@ -154,9 +154,9 @@ private slots:
         hand.place(2, 4096 + 700);
         QTRY_COMPARE(simulatorValue(2, u"present_position"), 2048 + 648);
 
-        QString error;
+        util::FileError error;
         const auto saved = feetech::loadLeRobotCalibration(out, &error);
-        QVERIFY2(saved, qPrintable(error));
+        QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->size(), 6);
         QCOMPARE(saved->at(1).name, QStringLiteral("shoulder_lift"));
         QCOMPARE(saved->at(1).homingOffset, -1996);
@@ -199,10 +199,10 @@ private slots:
         }
         QCOMPARE(simulatorValue(99, u"position_offset"), 0);
         QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 1);
-        QString error;
+        util::FileError error;
         const auto saved =
             feetech::loadLeRobotCalibration(path(QStringLiteral("arm.json")), &error);
-        QVERIFY2(saved, qPrintable(error));
+        QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->size(), 1);
         QCOMPARE(saved->first().name, QStringLiteral("id_1"));
     }
@@ -224,8 +224,8 @@ private slots:
         QVERIFY(result.out.contains(QLatin1String("not written: --dry-run")));
         QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 0);
         QCOMPARE(simulatorValue(1, u"position_offset"), 0);
-        QString error;
-        QVERIFY2(feetech::loadLeRobotCalibration(out, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(feetech::loadLeRobotCalibration(out, &error), qPrintable(error.describe()));
     }
 
     void usageErrorsSendNothing_data()
@@ -295,7 +295,7 @@ private slots:
         const QVector<feetech::LeRobotMotor> swapped {
             {QStringLiteral("pan"), 1, 0, 0, 0, 4095},
             {QStringLiteral("lift"), 2, 0, -1200, 800, 3300}};
-        QString error;
+        util::FileError error;
         QVERIFY(feetech::saveLeRobotCalibration(swapped, file, &error));
         result = servoctl({QStringLiteral("--json"), QStringLiteral("feetech"),
                            QStringLiteral("calibration"), QStringLiteral("load"), file});
@@ -325,7 +325,7 @@ private slots:
         startArm(2);
         setSimulatorValue(1, u"max_angle_limit", 4096);
         const QString file = path(QStringLiteral("lerobot.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(feetech::saveLeRobotCalibration(
             {{QStringLiteral("pan"), 1, 1, 0, 0, 4096}, {QStringLiteral("lift"), 2, 0, 0, 0, 4095}},
             file, &error));
@@ -335,7 +335,7 @@ private slots:
                       QStringLiteral("--names"), QStringLiteral("pan,lift"), file});
         QVERIFY2(result.exitCode == 0, qPrintable(result.err));
         const auto saved = feetech::loadLeRobotCalibration(file, &error);
-        QVERIFY2(saved, qPrintable(error));
+        QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->at(0).name, QStringLiteral("pan"));
         QCOMPARE(saved->at(0).rangeMax, 4096);
         QCOMPARE(saved->at(0).driveMode, 1); // kept from the file, not written as 0
@@ -376,7 +376,7 @@ private slots:
         startArm(1);
         setSimulatorValue(1, u"torque_enable", 1);
         const QString file = path(QStringLiteral("torque.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(feetech::saveLeRobotCalibration({{QStringLiteral("pan"), 1, 0, 100, 10, 4000}},
                                                 file, &error));
         const auto result = servoctl({QStringLiteral("feetech"), QStringLiteral("calibration"),

@@ -226,7 +226,7 @@ private slots:
         // Every way a file can be bad, for each command that reads one.
         const QString robot = m_dir.filePath(QStringLiteral("robot.json"));
         const QString calibration = m_dir.filePath(QStringLiteral("calibration.json"));
-        QString error;
+        util::FileError error;
         QVERIFY(
             feetech::saveRobotTemplate(feetech::builtInRobotTemplates().first(), robot, &error));
         QVERIFY(
@@ -362,12 +362,12 @@ private slots:
     {
         const QString path = m_dir.filePath(QStringLiteral("servo1.json"));
         QCOMPARE(run(QStringLiteral("save --id 1 ") + path).exitCode, 0);
-        QString error;
+        util::FileError error;
         const auto saved = profile::load(
             path, QStringLiteral("sts"),
             feetech::profileDefinitions(feetech::RegisterTable::forFamily(feetech::Family::Sts)),
             &error);
-        QVERIFY2(saved, qPrintable(error));
+        QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->model, QStringLiteral("STS3215"));
         QCOMPARE(*saved->value(QStringLiteral("max_temperature")),
                  qint64(servoValue(1, QStringLiteral("max_temperature"))));

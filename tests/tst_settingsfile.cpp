@@ -58,13 +58,13 @@ private:
 private slots:
     void aProfileReadFromTextIsTheProfileReadFromItsFile()
     {
-        QString error;
+        util::FileError error;
         const auto fromFile =
             feetech::SettingsFile::load(write(QStringLiteral("gains.json"), kProfile), &error);
-        QVERIFY2(fromFile, qPrintable(error));
+        QVERIFY2(fromFile, qPrintable(error.describe()));
         const auto fromText =
             feetech::SettingsFile::fromJson(kProfile, QStringLiteral("gains.json"), &error);
-        QVERIFY2(fromText, qPrintable(error));
+        QVERIFY2(fromText, qPrintable(error.describe()));
         QVERIFY(!fromText->isTemplate());
         QCOMPARE(valuesOf(*fromText), valuesOf(*fromFile));
         const QVector<std::pair<QString, qint64>> expected {
@@ -76,13 +76,13 @@ private slots:
 
     void aTemplateIsRecognisedInTextByItsFormat()
     {
-        QString error;
+        util::FileError error;
         const auto fromFile =
             feetech::SettingsFile::load(write(QStringLiteral("arm.json"), kTemplate), &error);
-        QVERIFY2(fromFile, qPrintable(error));
+        QVERIFY2(fromFile, qPrintable(error.describe()));
         const auto fromText =
             feetech::SettingsFile::fromJson(kTemplate, QStringLiteral("arm.json"), &error);
-        QVERIFY2(fromText, qPrintable(error));
+        QVERIFY2(fromText, qPrintable(error.describe()));
         QVERIFY(fromText->isTemplate());
         QCOMPARE(fromText->robot()->name, QStringLiteral("Arm"));
         QCOMPARE(valuesOf(*fromText), valuesOf(*fromFile));
@@ -93,15 +93,19 @@ private slots:
         const QByteArray broken = R"({"format": "servobench-profile", "version": 1,
                                       "family": "sts", "parameters": {"p_gain": "high"}})";
         const QString path = write(QStringLiteral("broken.json"), broken);
-        QString fileError;
+        util::FileError fileError;
         QVERIFY(!feetech::SettingsFile::load(path, &fileError));
-        QString textError;
+        util::FileError textError;
         QVERIFY(
             !feetech::SettingsFile::fromJson(broken, QDir::toNativeSeparators(path), &textError));
-        QCOMPARE(textError, fileError);
-        QVERIFY2(textError.startsWith(QDir::toNativeSeparators(path) + QStringLiteral(": ")),
-                 qPrintable(textError));
-        QVERIFY2(textError.contains(QStringLiteral("p_gain")), qPrintable(textError));
+        QCOMPARE(textError.code(), util::FileError::Code::WrongType);
+        QCOMPARE(textError.field(), QStringLiteral("p_gain"));
+        QCOMPARE(fileError.code(), textError.code());
+        const QString sentence = textError.describe();
+        QCOMPARE(sentence, fileError.describe());
+        QVERIFY2(sentence.startsWith(QDir::toNativeSeparators(path) + QStringLiteral(": ")),
+                 qPrintable(sentence));
+        QVERIFY2(sentence.contains(QStringLiteral("p_gain")), qPrintable(sentence));
     }
 };
 

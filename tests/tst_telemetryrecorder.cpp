@@ -42,8 +42,8 @@ private slots:
     {
         const QString path = m_dir.filePath(QStringLiteral("rows.csv"));
         TelemetryRecorder recorder;
-        QString error;
-        QVERIFY2(recorder.open(path, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(recorder.open(path, &error), qPrintable(error.describe()));
         QVERIFY(recorder.isRecording());
         QCOMPARE(recorder.fileName(), path);
         const qint64 start = recorder.startUs();
@@ -59,8 +59,9 @@ private slots:
         QVERIFY(recorder.finish());
         QVERIFY(!recorder.isRecording());
 
-        const auto rows = testsupport::readTelemetryCsv(path, &error);
-        QVERIFY2(rows, qPrintable(error));
+        QString unreadable;
+        const auto rows = testsupport::readTelemetryCsv(path, &unreadable);
+        QVERIFY2(rows, qPrintable(unreadable));
         testsupport::compareTelemetryRows(*rows, samples, start);
     }
 
@@ -108,8 +109,8 @@ private slots:
         QBuffer buffer;
         QVERIFY(buffer.open(QIODevice::WriteOnly));
         TelemetryRecorder recorder;
-        QString error;
-        QVERIFY2(recorder.start(&buffer, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(recorder.start(&buffer, &error), qPrintable(error.describe()));
         QVERIFY(recorder.fileName().isEmpty());
         // The header is out at once, before any sample.
         QCOMPARE(buffer.data(), (feetech::telemetryCsvHeader() + QLatin1Char('\n')).toUtf8());
@@ -129,8 +130,8 @@ private slots:
         QString text;
         QTextStream stream(&text);
         TelemetryRecorder recorder;
-        QString error;
-        QVERIFY2(recorder.start(stream, &error), qPrintable(error));
+        util::FileError error;
+        QVERIFY2(recorder.start(stream, &error), qPrintable(error.describe()));
         QCOMPARE(text, feetech::telemetryCsvHeader() + QLatin1Char('\n'));
         const FeedbackSample sample = sampleAt(3, recorder.startUs() + 500000, 12.5);
         QVERIFY(recorder.write(sample));
@@ -147,9 +148,10 @@ private slots:
     {
         QBuffer buffer;
         TelemetryRecorder recorder;
-        QString error;
+        util::FileError error;
         QVERIFY(!recorder.start(&buffer, &error));
-        QVERIFY(!error.isEmpty());
+        QCOMPARE(error.code(), util::FileError::Code::CannotWrite);
+        QVERIFY(!error.describe().isEmpty());
         QVERIFY(!recorder.isRecording());
     }
 
@@ -157,20 +159,24 @@ private slots:
     {
         const QString path = m_dir.filePath(QStringLiteral("no/such/folder/rows.csv"));
         TelemetryRecorder recorder;
-        QString error;
+        util::FileError error;
         QVERIFY(!recorder.open(path, &error));
         QVERIFY(!recorder.isRecording());
-        QVERIFY2(error.contains(QDir::toNativeSeparators(path)), qPrintable(error));
-        QCOMPARE(recorder.errorString(), error);
+        QCOMPARE(error.code(), util::FileError::Code::CannotWrite);
+        QCOMPARE(error.path(), path);
+        QVERIFY2(error.describe().contains(QDir::toNativeSeparators(path)),
+                 qPrintable(error.describe()));
+        QCOMPARE(recorder.errorString(), error.describe());
         QVERIFY(!recorder.write(sampleAt(1, recorder.startUs(), 1.0)));
     }
 
     void anEmptyFileNameIsRefused()
     {
         TelemetryRecorder recorder;
-        QString error;
+        util::FileError error;
         QVERIFY(!recorder.open(QString(), &error));
-        QVERIFY(!error.isEmpty());
+        QCOMPARE(error.code(), util::FileError::Code::NoFileName);
+        QVERIFY(!error.describe().isEmpty());
     }
 
     void rowsReachTheFileWithinTheFlushInterval()
@@ -195,8 +201,9 @@ private slots:
             QSKIP("needs /dev/full to fail writes");
         TelemetryRecorder recorder;
         QSignalSpy failed(&recorder, &TelemetryRecorder::failed);
-        QString error;
+        util::FileError error;
         QVERIFY(!recorder.open(QStringLiteral("/dev/full"), &error));
+        QCOMPARE(error.code(), util::FileError::Code::CannotWrite);
         QCOMPARE(failed.count(), 1);
         QVERIFY(!failed.first().at(0).toString().isEmpty());
         QVERIFY(!recorder.isRecording());

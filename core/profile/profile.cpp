@@ -81,43 +81,47 @@ QJsonValue jsonValue(const model::Definition &definition, qint64 raw)
     return double(raw) * definition.scale;
 }
 
-// The raw value a file entry stands for, or nothing and *why when it has the wrong type, lies
-// outside the definition's range or falls between two raw steps.
+// The raw value a file entry stands for, or nothing and *error (WrongType or BadValue, its
+// detail saying why) when it has the wrong type, lies outside the definition's range or falls
+// between two raw steps.
 std::optional<qint64> rawValue(const model::Definition &definition, const QJsonValue &value,
-                               QString *why)
+                               util::FileError *error)
 {
+    using Code = util::FileError::Code;
+    const auto fail = [&](Code code, const QString &why) -> std::optional<qint64> {
+        *error = util::FileError(code, why).withField(definition.key);
+        return std::nullopt;
+    };
     double raw = 0;
     double user = 0;
     if (isSwitch(definition)) {
-        if (!value.isBool()) {
-            *why = Tr::tr("expected true or false");
-            return std::nullopt;
-        }
+        if (!value.isBool())
+            return fail(Code::WrongType, Tr::tr("expected true or false"));
         raw = value.toBool() ? 1 : 0;
         user = raw;
     } else {
-        if (!value.isDouble()) {
-            *why = Tr::tr("expected a number");
-            return std::nullopt;
-        }
+        if (!value.isDouble())
+            return fail(Code::WrongType, Tr::tr("expected a number"));
         user = value.toDouble();
         raw = user / definition.scale;
     }
     // The range check comes first so that llround below only ever sees a representable value.
     if (!std::isfinite(raw) || raw < double(definition.minimum) - kRawTolerance
         || raw > double(definition.maximum) + kRawTolerance) {
-        *why = Tr::tr("%1 is out of range (%2 to %3)")
-                   .arg(userText(definition, user), rawText(definition, definition.minimum, false),
-                        rawText(definition, definition.maximum));
-        return std::nullopt;
+        return fail(Code::BadValue,
+                    Tr::tr("%1 is out of range (%2 to %3)")
+                        .arg(userText(definition, user),
+                             rawText(definition, definition.minimum, false),
+                             rawText(definition, definition.maximum)));
     }
     const qint64 rounded = std::llround(raw);
     if (std::abs(raw - double(rounded)) > kRawTolerance) {
-        *why = definition.scale == 1.0
-            ? Tr::tr("%1 is not a whole number").arg(userText(definition, user))
-            : Tr::tr("%1 is not a multiple of %2")
-                  .arg(userText(definition, user), userText(definition, definition.scale));
-        return std::nullopt;
+        return fail(
+            Code::BadValue,
+            definition.scale == 1.0
+                ? Tr::tr("%1 is not a whole number").arg(userText(definition, user))
+                : Tr::tr("%1 is not a multiple of %2")
+                      .arg(userText(definition, user), userText(definition, definition.scale)));
     }
     return rounded;
 }
@@ -179,21 +183,23 @@ QByteArray toJson(const Profile &profile, const QVector<model::Definition> &defi
 }
 
 bool save(const QString &path, const Profile &profile,
-          const QVector<model::Definition> &definitions, QString *error)
+          const QVector<model::Definition> &definitions, util::FileError *error)
 {
-    const auto fail = [&](const QString &why) {
-        if (error)
-            *error = util::notSavedError(path, why);
+    using Code = util::FileError::Code;
+    const auto fail = [&](util::FileError why) {
+        util::report(error, why.inFile(path, util::FileError::Action::Saving));
         return false;
     };
     // toJson would drop such a value without a word; the user must hear that it cannot be saved.
     for (const ProfileValue &entry : profile.values) {
         if (!findDefinition(definitions, entry.key))
-            return fail(Tr::tr("unknown parameter \"%1\"").arg(entry.key));
+            return fail(
+                util::FileError(Code::UnknownKey, Tr::tr("unknown parameter \"%1\"").arg(entry.key))
+                    .withField(entry.key));
     }
     const QByteArray json = toJson(profile, definitions);
     // Write nothing that load() would refuse, so every saved profile can be loaded again.
-    QString why;
+    util::FileError why;
     const std::optional<Profile> check = parse(json, profile.family, definitions, &why);
     if (!check)
         return fail(why);
@@ -201,21 +207,23 @@ bool save(const QString &path, const Profile &profile,
     for (const ProfileValue &entry : profile.values) {
         const model::Definition *definition = findDefinition(definitions, entry.key);
         if (definition->access != model::Access::ReadOnly && check->value(entry.key) != entry.raw)
-            return fail(Tr::tr("%1: the raw value %2 cannot be kept in a profile")
-                            .arg(entry.key)
-                            .arg(entry.raw));
+            return fail(util::FileError(Code::BadValue,
+                                        Tr::tr("%1: the raw value %2 cannot be kept in a profile")
+                                            .arg(entry.key)
+                                            .arg(entry.raw))
+                            .withField(entry.key)
+                            .withValue(QString::number(entry.raw)));
     }
-    if (!util::writeFileAtomically(path, json, &why))
-        return fail(why);
-    return true;
+    return util::writeFileAtomically(path, json, error);
 }
 
 std::optional<Profile> parse(const QByteArray &json, const QString &expectedFamily,
-                             const QVector<model::Definition> &definitions, QString *error)
+                             const QVector<model::Definition> &definitions, util::FileError *error)
 {
-    const auto fail = [&](const QString &why) -> std::optional<Profile> {
-        if (error)
-            *error = why;
+    using Code = util::FileError::Code;
+    const auto fail = [&](Code code, const QString &why,
+                          const char *field = nullptr) -> std::optional<Profile> {
+        util::report(error, util::FileError(code, why).withField(QLatin1String(field)));
         return std::nullopt;
     };
     const std::optional<QJsonObject> parsed =
@@ -227,28 +235,37 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
     Profile profile;
     const QJsonValue family = root.value(QLatin1String(kFamilyKey));
     if (!family.isString() || family.toString().isEmpty())
-        return fail(Tr::tr("the profile names no servo family"));
+        return fail(Code::MissingField, Tr::tr("the profile names no servo family"), kFamilyKey);
     profile.family = family.toString();
     if (profile.family != expectedFamily)
-        return fail(Tr::tr("the profile is for \"%1\" servos, not \"%2\"")
-                        .arg(profile.family, expectedFamily));
+        return fail(Code::WrongServos,
+                    Tr::tr("the profile is for \"%1\" servos, not \"%2\"")
+                        .arg(profile.family, expectedFamily),
+                    kFamilyKey);
     if (!optionalText(root, kModelKey, &profile.model))
-        return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kModelKey)));
+        return fail(Code::WrongType, Tr::tr("\"%1\" must be text").arg(QLatin1String(kModelKey)),
+                    kModelKey);
     if (!optionalText(root, kNoteKey, &profile.note))
-        return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kNoteKey)));
+        return fail(Code::WrongType, Tr::tr("\"%1\" must be text").arg(QLatin1String(kNoteKey)),
+                    kNoteKey);
     QString saved;
     if (!optionalText(root, kSavedKey, &saved))
-        return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kSavedKey)));
+        return fail(Code::WrongType, Tr::tr("\"%1\" must be text").arg(QLatin1String(kSavedKey)),
+                    kSavedKey);
     if (!saved.isEmpty()) {
         profile.saved = QDateTime::fromString(saved, Qt::ISODate);
         if (!profile.saved.isValid())
-            return fail(Tr::tr("\"%1\": \"%2\" is not an ISO 8601 date and time")
-                            .arg(QLatin1String(kSavedKey), saved));
+            return fail(Code::BadValue,
+                        Tr::tr("\"%1\": \"%2\" is not an ISO 8601 date and time")
+                            .arg(QLatin1String(kSavedKey), saved),
+                        kSavedKey);
     }
 
     const QJsonValue parametersValue = root.value(QLatin1String(kParametersKey));
     if (!parametersValue.isObject())
-        return fail(Tr::tr("the profile has no \"%1\" object").arg(QLatin1String(kParametersKey)));
+        return fail(Code::MissingField,
+                    Tr::tr("the profile has no \"%1\" object").arg(QLatin1String(kParametersKey)),
+                    kParametersKey);
     const QJsonObject parameters = parametersValue.toObject();
 
     QHash<QString, int> rows;
@@ -257,17 +274,26 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
     QVector<std::optional<qint64>> raws(definitions.size());
     for (auto it = parameters.constBegin(); it != parameters.constEnd(); ++it) {
         const int row = rows.value(it.key(), -1);
-        if (row < 0)
-            return fail(Tr::tr("unknown parameter \"%1\"").arg(it.key()));
+        if (row < 0) {
+            util::report(
+                error,
+                util::FileError(Code::UnknownKey, Tr::tr("unknown parameter \"%1\"").arg(it.key()))
+                    .withField(it.key()));
+            return std::nullopt;
+        }
         const model::Definition &definition = definitions.at(row);
         // A full register dump carries read-only values (model number, present position); they
         // cannot be applied, so they are skipped rather than held against the file.
         if (definition.access == model::Access::ReadOnly)
             continue;
-        QString why;
+        util::FileError why;
         raws[row] = rawValue(definition, it.value(), &why);
-        if (!raws.at(row))
-            return fail(Tr::tr("%1: %2").arg(it.key(), why));
+        if (!raws.at(row)) {
+            util::report(error,
+                         util::FileError(why.code(), Tr::tr("%1: %2").arg(it.key(), why.reason()))
+                             .withField(it.key()));
+            return std::nullopt;
+        }
     }
     // Definition order, so callers write in the order the device expects.
     for (int row = 0; row < definitions.size(); ++row) {
@@ -278,15 +304,15 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
 }
 
 std::optional<Profile> load(const QString &path, const QString &expectedFamily,
-                            const QVector<model::Definition> &definitions, QString *error)
+                            const QVector<model::Definition> &definitions, util::FileError *error)
 {
-    QString why;
+    util::FileError why;
     std::optional<Profile> profile;
     if (const auto json = util::readFile(path, util::kMaxJsonFileBytes,
                                          Tr::tr("too large to be a profile"), &why))
         profile = parse(*json, expectedFamily, definitions, &why);
-    if (!profile && error)
-        *error = util::fileError(path, why);
+    if (!profile)
+        util::report(error, why.inFile(path));
     return profile;
 }
 

@@ -1,6 +1,7 @@
 // JSON parameter profiles: a servo's settings saved to a file, validated, diffed with the device.
 #pragma once
 
+#include "fileerror.h"
 #include "parametermodel.h"
 
 #include <QByteArray>
@@ -58,17 +59,18 @@ QByteArray toJson(const Profile &profile, const QVector<model::Definition> &defi
 // untouched. Refuses (and writes nothing) a profile that load() would refuse. On failure *error
 // says why, naming the file.
 bool save(const QString &path, const Profile &profile,
-          const QVector<model::Definition> &definitions, QString *error = nullptr);
+          const QVector<model::Definition> &definitions, util::FileError *error = nullptr);
 
 // Reads a profile, validating all of it (syntax, format, version, family, keys, types, ranges)
-// before returning anything: on any problem, nothing and *error says what. Values for read-only
-// parameters are ignored, since a full register dump legitimately contains them.
+// before returning anything: on any problem, nothing and *error says what (load() naming the
+// file). Values for read-only parameters are ignored, since a full register dump legitimately
+// contains them.
 std::optional<Profile> parse(const QByteArray &json, const QString &expectedFamily,
                              const QVector<model::Definition> &definitions,
-                             QString *error = nullptr);
+                             util::FileError *error = nullptr);
 std::optional<Profile> load(const QString &path, const QString &expectedFamily,
                             const QVector<model::Definition> &definitions,
-                            QString *error = nullptr);
+                            util::FileError *error = nullptr);
 
 // The writable parameters whose file value differs from the device value or whose device value
 // is unknown, in profile order. Pending edits play no part: the diff is device vs file.

@@ -3,8 +3,6 @@
 
 #include "savefile.h"
 
-#include <QCoreApplication>
-#include <QDir>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonParseError>
@@ -15,118 +13,103 @@
 
 namespace util {
 
-namespace {
-
-QString displayName(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
-
-} // namespace
-
 std::optional<QByteArray> readFile(const QString &path, qint64 maxBytes, const QString &tooLarge,
-                                   QString *why)
+                                   FileError *error)
 {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *why = file.errorString();
+    const auto fail = [&](FileError::Code code, const QString &why) -> std::optional<QByteArray> {
+        report(error, FileError(code, why).inFile(path));
         return std::nullopt;
-    }
-    if (file.size() > maxBytes) {
-        *why = tooLarge;
-        return std::nullopt;
-    }
+    };
+    if (!file.open(QIODevice::ReadOnly))
+        return fail(FileError::Code::CannotRead, file.errorString());
+    if (file.size() > maxBytes)
+        return fail(FileError::Code::TooLarge, tooLarge);
     QByteArray data = file.readAll();
-    if (file.error() != QFileDevice::NoError) {
-        *why = file.errorString();
-        return std::nullopt;
-    }
+    if (file.error() != QFileDevice::NoError)
+        return fail(FileError::Code::CannotRead, file.errorString());
     return data;
 }
 
-bool writeFileAtomically(const QString &path, const QByteArray &data, QString *why)
+bool writeFileAtomically(const QString &path, const QByteArray &data, FileError *error)
 {
     SavingFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        *why = file.errorString();
+    const auto fail = [&]() {
+        report(error,
+               FileError(FileError::Code::CannotWrite, file.errorString())
+                   .inFile(path, FileError::Action::Saving));
         return false;
-    }
+    };
+    if (!file.open(QIODevice::WriteOnly))
+        return fail();
     if (file.device().write(data) != data.size()) {
-        *why = file.errorString();
+        // The reason is taken before cancel(), which would replace it with its own.
+        const bool failed = fail();
         file.cancel();
-        return false;
+        return failed;
     }
-    if (!file.commit()) {
-        *why = file.errorString();
-        return false;
-    }
+    if (!file.commit())
+        return fail();
     return true;
 }
 
 std::optional<QJsonObject> parseVersionedObject(const QByteArray &json, const JsonFormat &format,
-                                                QString *error)
+                                                FileError *error)
 {
-    const auto fail = [&](const QString &why) -> std::optional<QJsonObject> {
-        if (error)
-            *error = why;
+    using Code = FileError::Code;
+    const auto fail = [&](const FileError &why) -> std::optional<QJsonObject> {
+        report(error, why);
         return std::nullopt;
     };
 
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError)
-        return fail(QCoreApplication::translate("util", "not valid JSON: %1 at offset %2")
-                        .arg(parseError.errorString())
-                        .arg(parseError.offset));
+        return fail(FileError(Code::NotJson, parseError.errorString())
+                        .withValue(QString::number(parseError.offset)));
     if (!document.isObject())
-        return fail(format.notAnObject);
+        return fail(FileError(Code::NotAnObject, format.notAnObject));
     const QJsonObject root = document.object();
 
     // The marker and the version come before anything else: a file of another kind, or from a
     // newer format, should be named as such, not as a list of unexpected entries.
     if (root.value(QLatin1String(kFormatKey)).toString() != QLatin1String(format.marker))
-        return fail(
-            format.wrongMarker.arg(QLatin1String(kFormatKey), QLatin1String(format.marker)));
+        return fail(FileError(Code::WrongFormat,
+                              format.wrongMarker.arg(QLatin1String(kFormatKey),
+                                                     QLatin1String(format.marker)))
+                        .withField(QLatin1String(kFormatKey)));
     const QJsonValue versionValue = root.value(QLatin1String(kVersionKey));
     const double version = versionValue.toDouble();
     if (!versionValue.isDouble() || !std::isfinite(version) || version != std::floor(version))
-        return fail(QCoreApplication::translate(
-            "util", "the format version is missing or not a whole number"));
+        return fail(FileError(Code::BadVersion).withField(QLatin1String(kVersionKey)));
+    const QString versionText = QString::number(version, 'g', 15);
     if (version > format.version)
-        return fail(format.newerVersion.arg(QString::number(version, 'g', 15)).arg(format.version));
+        return fail(
+            FileError(Code::NewerVersion, format.newerVersion.arg(versionText).arg(format.version))
+                .withField(QLatin1String(kVersionKey))
+                .withValue(versionText));
     if (version < 1)
-        return fail(QCoreApplication::translate("util", "unknown format version %1")
-                        .arg(QString::number(version, 'g', 15)));
-    QString unknown;
-    if (!onlyKnownKeys(root, QVector<const char *> {kFormatKey, kVersionKey} + format.keys,
-                       &unknown))
-        return fail(QCoreApplication::translate("util", "unknown entry \"%1\"").arg(unknown));
+        return fail(FileError(Code::UnknownVersion)
+                        .withField(QLatin1String(kVersionKey))
+                        .withValue(versionText));
+    if (const auto unknown =
+            firstUnknownKey(root, QVector<const char *> {kFormatKey, kVersionKey} + format.keys))
+        return fail(FileError(Code::UnknownKey).withField(*unknown));
     return root;
 }
 
-bool onlyKnownKeys(const QJsonObject &object, const QVector<const char *> &known, QString *unknown)
+std::optional<QString> firstUnknownKey(const QJsonObject &object,
+                                       const QVector<const char *> &known)
 {
     for (auto it = object.constBegin(); it != object.constEnd(); ++it) {
         const QString key = it.key();
         const bool found = std::any_of(known.begin(), known.end(), [&](const char *entry) {
             return key == QLatin1String(entry);
         });
-        if (!found) {
-            *unknown = key;
-            return false;
-        }
+        if (!found)
+            return key;
     }
-    return true;
-}
-
-QString fileError(const QString &path, const QString &why)
-{
-    return QCoreApplication::translate("util", "%1: %2").arg(displayName(path), why);
-}
-
-QString notSavedError(const QString &path, const QString &why)
-{
-    return QCoreApplication::translate("util", "%1 was not saved: %2").arg(displayName(path), why);
+    return std::nullopt;
 }
 
 } // namespace util

@@ -1,6 +1,8 @@
 // Versioned JSON files (profiles, poses): size-limited reading, format checks, atomic saving.
 #pragma once
 
+#include "fileerror.h"
+
 #include <QByteArray>
 #include <QJsonObject>
 #include <QString>
@@ -30,27 +32,23 @@ struct JsonFormat
     QString newerVersion; // %1: the file's version, %2: `version`
 };
 
-// The whole file, or nothing and *why: the file system's words, or `tooLarge` when the file is
-// larger than maxBytes.
+// The whole file, or nothing and *error naming the file: CannotRead (the file system's words),
+// or TooLarge (the sentence `tooLarge`) when the file is larger than maxBytes.
 std::optional<QByteArray> readFile(const QString &path, qint64 maxBytes, const QString &tooLarge,
-                                   QString *why);
+                                   FileError *error);
 
-// Writes atomically (QSaveFile): the whole new file or the old one untouched. False and *why
-// (the file system's words) when it could not.
-bool writeFileAtomically(const QString &path, const QByteArray &data, QString *why);
+// Writes atomically (QSaveFile): the whole new file or the old one untouched. False and *error
+// (CannotWrite with the file system's words, naming the file) when it could not.
+bool writeFileAtomically(const QString &path, const QByteArray &data, FileError *error);
 
 // The document's root object once it is valid JSON, carries format.marker, a whole version from
 // 1 to format.version and no other entry than those and format.keys; otherwise nothing and
-// *error (when given) says why.
+// *error (when given) says why, naming no file.
 std::optional<QJsonObject> parseVersionedObject(const QByteArray &json, const JsonFormat &format,
-                                                QString *error = nullptr);
+                                                FileError *error = nullptr);
 
-// Whether every key of `object` is among `known`; if not, *unknown is the first that is not.
-bool onlyKnownKeys(const QJsonObject &object, const QVector<const char *> &known, QString *unknown);
-
-// Error messages naming the file as the platform writes paths: "<file>: <why>" and
-// "<file> was not saved: <why>".
-QString fileError(const QString &path, const QString &why);
-QString notSavedError(const QString &path, const QString &why);
+// The first key of `object` that is not among `known`; nothing when every key is.
+std::optional<QString> firstUnknownKey(const QJsonObject &object,
+                                       const QVector<const char *> &known);
 
 } // namespace util

@@ -3812,10 +3812,6 @@ Eine belegte ID wird abgelehnt.</translation>
 <context>
     <name>LeRobotCalibration</name>
     <message>
-        <source>not valid JSON: %1 at offset %2</source>
-        <translation>kein gültiges JSON: %1 an Offset %2</translation>
-    </message>
-    <message>
         <source>not a LeRobot calibration (the document is not a JSON object of motors by joint name)</source>
         <translation>keine LeRobot-Kalibrierung (das Dokument ist kein JSON-Objekt aus Motoren nach Gelenknamen)</translation>
     </message>
@@ -3862,10 +3858,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>the file is too large for a calibration</source>
         <translation>die Datei ist zu groß für eine Kalibrierung</translation>
-    </message>
-    <message>
-        <source>%1; it was not saved</source>
-        <translation>%1; sie wurde nicht gespeichert</translation>
     </message>
 </context>
 <context>
@@ -6912,10 +6904,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>die Datei ist zu groß für ein Profil oder eine Robotervorlage</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
         <source>servo %1 is of an unknown model (%2); nothing is written to it</source>
         <translation>Servo %1 hat ein unbekanntes Modell (%2); es wird nichts darauf geschrieben</translation>
     </message>
@@ -7833,10 +7821,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>No file name was given for the recording.</source>
         <translation>Für die Aufzeichnung wurde kein Dateiname angegeben.</translation>
-    </message>
-    <message>
-        <source>Could not open %1 for writing: %2.</source>
-        <translation>%1 konnte nicht zum Schreiben geöffnet werden: %2.</translation>
     </message>
     <message>
         <source>The telemetry output is not open for writing.</source>
@@ -9482,6 +9466,14 @@ listet sie auf); das Ende der Standardeingabe beendet es nicht.
     <message>
         <source>%1 was not saved: %2</source>
         <translation>%1 wurde nicht gespeichert: %2</translation>
+    </message>
+    <message>
+        <source>%1; it was not saved</source>
+        <translation>%1; sie wurde nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>Could not open %1 for writing: %2.</source>
+        <translation>%1 konnte nicht zum Schreiben geöffnet werden: %2.</translation>
     </message>
 </context>
 </TS>

@@ -3796,10 +3796,6 @@ An ID in use is refused.</source>
 <context>
     <name>LeRobotCalibration</name>
     <message>
-        <source>not valid JSON: %1 at offset %2</source>
-        <translation>不是有效的 JSON：偏移 %2 处 %1</translation>
-    </message>
-    <message>
         <source>not a LeRobot calibration (the document is not a JSON object of motors by joint name)</source>
         <translation>不是 LeRobot 校准文件（文档不是以关节名称为键的电机 JSON 对象）</translation>
     </message>
@@ -3846,10 +3842,6 @@ An ID in use is refused.</source>
     <message>
         <source>the file is too large for a calibration</source>
         <translation>文件过大，不可能是校准文件</translation>
-    </message>
-    <message>
-        <source>%1; it was not saved</source>
-        <translation>%1；未保存</translation>
     </message>
 </context>
 <context>
@@ -6878,10 +6870,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>文件太大，不可能是配置文件或机器人模板</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
         <source>servo %1 is of an unknown model (%2); nothing is written to it</source>
         <translation>舵机 %1 为未知型号（%2）；不向其写入任何内容</translation>
     </message>
@@ -7797,10 +7785,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>No file name was given for the recording.</source>
         <translation>未指定记录文件名。</translation>
-    </message>
-    <message>
-        <source>Could not open %1 for writing: %2.</source>
-        <translation>无法打开 %1 进行写入：%2。</translation>
     </message>
     <message>
         <source>The telemetry output is not open for writing.</source>
@@ -9436,6 +9420,14 @@ SIGHUP 会使舵机断电重启。从标准输入读取命令，每行一条，�
     <message>
         <source>%1 was not saved: %2</source>
         <translation>%1 未保存：%2</translation>
+    </message>
+    <message>
+        <source>%1; it was not saved</source>
+        <translation>%1；未保存</translation>
+    </message>
+    <message>
+        <source>Could not open %1 for writing: %2.</source>
+        <translation>无法打开 %1 进行写入：%2。</translation>
     </message>
 </context>
 </TS>

@@ -86,10 +86,10 @@ void PtkWorkspace::chooseProfileToSave()
 bool PtkWorkspace::saveProfile(const QString &path)
 {
     // What the form shows: the servo's values with any edits not yet applied.
-    QString error;
+    util::FileError error;
     if (!profileactions::save(path, *m_client->model(), kPtkFamily, {},
                               m_client->model()->definitions(), true, &error)) {
-        emit problem(error);
+        emit problem(error.describe());
         return false;
     }
     emit message(tr("Saved %1").arg(QDir::toNativeSeparators(path)));

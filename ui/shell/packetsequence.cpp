@@ -162,7 +162,7 @@ QString describe(const PacketFrame &frame)
         : ptk::describeFrame(frame.bytes, {});
 }
 
-bool save(const QString &path, const QVector<PacketFrame> &frames, QString *error)
+bool save(const QString &path, const QVector<PacketFrame> &frames, util::FileError *error)
 {
     QJsonArray entries;
     for (const PacketFrame &frame : frames) {
@@ -178,21 +178,20 @@ bool save(const QString &path, const QVector<PacketFrame> &frames, QString *erro
     const QJsonObject root {{QLatin1String(util::kFormatKey), QLatin1String(kFormatMarker)},
                             {QLatin1String(util::kVersionKey), kFormatVersion},
                             {QLatin1String(kFramesKey), entries}};
-    QString why;
-    const bool saved =
-        util::writeFileAtomically(path, QJsonDocument(root).toJson(QJsonDocument::Indented), &why);
-    if (!saved && error)
-        *error = util::notSavedError(path, why);
-    return saved;
+    return util::writeFileAtomically(path, QJsonDocument(root).toJson(QJsonDocument::Indented),
+                                     error);
 }
 
-std::optional<QVector<PacketFrame>> load(const QString &path, QString *error)
+std::optional<QVector<PacketFrame>> load(const QString &path, util::FileError *error)
 {
-    QString why;
-    const auto fail = [&](const QString &reason) -> std::optional<QVector<PacketFrame>> {
-        if (error)
-            *error = util::fileError(path, reason);
+    using Code = util::FileError::Code;
+    util::FileError why;
+    const auto fail = [&](util::FileError reason) -> std::optional<QVector<PacketFrame>> {
+        util::report(error, reason.inFile(path));
         return std::nullopt;
+    };
+    const auto failOn = [&](Code code, const QString &reason, const char *field = nullptr) {
+        return fail(util::FileError(code, reason).withField(QLatin1String(field)));
     };
     const auto json = util::readFile(path, util::kMaxJsonFileBytes,
                                      Tr::tr("too large to be a packet sequence"), &why);
@@ -203,21 +202,29 @@ std::optional<QVector<PacketFrame>> load(const QString &path, QString *error)
         return fail(why);
     const QJsonValue list = root->value(QLatin1String(kFramesKey));
     if (!list.isArray())
-        return fail(Tr::tr("\"%1\" must be a list of frames").arg(QLatin1String(kFramesKey)));
+        return failOn(Code::WrongType,
+                      Tr::tr("\"%1\" must be a list of frames").arg(QLatin1String(kFramesKey)),
+                      kFramesKey);
     const QJsonArray entries = list.toArray();
     if (entries.size() > kMaxFrames)
-        return fail(Tr::tr("more than %1 frames").arg(kMaxFrames));
+        return failOn(Code::TooLarge, Tr::tr("more than %1 frames").arg(kMaxFrames), kFramesKey);
     QVector<PacketFrame> frames;
     for (int i = 0; i < entries.size(); ++i) {
         const QJsonObject entry = entries.at(i).toObject();
-        QString unknown;
-        if (!entries.at(i).isObject()
-            || !util::onlyKnownKeys(entry, {kProtocolKey, kHexKey, kBaudKey}, &unknown))
-            return fail(Tr::tr("frame %1 is not an object of protocol, hex and baud").arg(i + 1));
+        if (!entries.at(i).isObject())
+            return failOn(Code::WrongType,
+                          Tr::tr("frame %1 is not an object of protocol, hex and baud").arg(i + 1));
+        if (const auto unknown = util::firstUnknownKey(entry, {kProtocolKey, kHexKey, kBaudKey}))
+            return fail(
+                util::FileError(
+                    Code::UnknownKey,
+                    Tr::tr("frame %1 is not an object of protocol, hex and baud").arg(i + 1))
+                    .withField(*unknown));
         const QString protocol = entry.value(QLatin1String(kProtocolKey)).toString();
         const auto bytes = util::parseHex(entry.value(QLatin1String(kHexKey)).toString());
         if (!bytes)
-            return fail(Tr::tr("frame %1: its hex is not hexadecimal bytes").arg(i + 1));
+            return failOn(Code::BadValue,
+                          Tr::tr("frame %1: its hex is not hexadecimal bytes").arg(i + 1), kHexKey);
         std::optional<PacketFrame> frame;
         if (protocol == QLatin1String("feetech")) {
             const QJsonValue baud = entry.value(QLatin1String(kBaudKey));
@@ -225,12 +232,15 @@ std::optional<QVector<PacketFrame>> load(const QString &path, QString *error)
         } else if (protocol == QLatin1String("ptk")) {
             frame = ptkFrame(*bytes);
         } else {
-            return fail(Tr::tr("frame %1: the protocol must be feetech or ptk").arg(i + 1));
+            return failOn(Code::BadValue,
+                          Tr::tr("frame %1: the protocol must be feetech or ptk").arg(i + 1),
+                          kProtocolKey);
         }
         if (!frame)
-            return fail(Tr::tr("frame %1 is not a whole %2 frame at a known rate")
-                            .arg(i + 1)
-                            .arg(protocol));
+            return failOn(
+                Code::BadValue,
+                Tr::tr("frame %1 is not a whole %2 frame at a known rate").arg(i + 1).arg(protocol),
+                kHexKey);
         frames.append(*frame);
     }
     return frames;

@@ -2,6 +2,8 @@
 // sequence files that keep them.
 #pragma once
 
+#include "fileerror.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QVector>
@@ -40,9 +42,9 @@ QString riskOf(const PacketFrame &frame);
 // What the frame is, in words (the decoder's explanation).
 QString describe(const PacketFrame &frame);
 
-bool save(const QString &path, const QVector<PacketFrame> &frames, QString *error);
+bool save(const QString &path, const QVector<PacketFrame> &frames, util::FileError *error);
 // Every frame checked as feetechFrame/ptkFrame would build it; nothing and *error naming the
 // file and the entry at fault otherwise.
-std::optional<QVector<PacketFrame>> load(const QString &path, QString *error);
+std::optional<QVector<PacketFrame>> load(const QString &path, util::FileError *error);
 
 } // namespace packetsequence

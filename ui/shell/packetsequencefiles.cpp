@@ -13,12 +13,12 @@ PacketSequenceFiles::PacketSequenceFiles(const QVector<PacketFrame> &history, QW
     , m_window(window)
 { }
 
-bool PacketSequenceFiles::save(const QString &path, QString *error) const
+bool PacketSequenceFiles::save(const QString &path, util::FileError *error) const
 {
     return packetsequence::save(path, m_history, error);
 }
 
-bool PacketSequenceFiles::load(const QString &path, QString *error)
+bool PacketSequenceFiles::load(const QString &path, util::FileError *error)
 {
     const auto frames = packetsequence::load(path, error);
     if (!frames)
@@ -39,12 +39,12 @@ void PacketSequenceFiles::chooseSave()
         tr("ServoBench packet sequences (*.json)"));
     if (path.isEmpty())
         return;
-    QString error;
+    util::FileError error;
     if (save(path, &error)) {
         recentfiles::add(recentfiles::Kind::PacketSequence, path);
         emit reported(tr("Saved %n frame(s).", nullptr, int(m_history.size())), false);
     } else {
-        emit reported(error, true);
+        emit reported(error.describe(), true);
     }
 }
 
@@ -56,12 +56,12 @@ void PacketSequenceFiles::chooseLoad()
                                      tr("ServoBench packet sequences (*.json)"));
     if (path.isEmpty())
         return;
-    QString error;
+    util::FileError error;
     if (load(path, &error)) {
         recentfiles::add(recentfiles::Kind::PacketSequence, path);
         emit reported(tr("Loaded into the history: select a frame and Resend, or Send all."),
                       false);
     } else {
-        emit reported(error, true);
+        emit reported(error.describe(), true);
     }
 }

@@ -17,10 +17,10 @@ public:
     // Saves `history` (the window's, which outlives this); `window` is the dialogs' parent.
     PacketSequenceFiles(const QVector<PacketFrame> &history, QWidget *window);
 
-    bool save(const QString &path, QString *error = nullptr) const;
+    bool save(const QString &path, util::FileError *error = nullptr) const;
     // The frames go to `loaded`; false and *error (naming the file and the entry at fault) when
     // the file is not a sequence.
-    bool load(const QString &path, QString *error = nullptr);
+    bool load(const QString &path, util::FileError *error = nullptr);
 
     // Ask where, then save or load; what came of it goes to `reported`.
     void chooseSave();

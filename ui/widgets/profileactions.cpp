@@ -43,14 +43,16 @@ QString chooseLoadPath(QWidget *parent)
 
 bool save(const QString &path, const model::ParameterModel &parameters, const QString &family,
           const QString &modelName, const QVector<model::Definition> &definitions, bool withEdits,
-          QString *error)
+          util::FileError *error)
 {
     const profile::Profile saved = profile::fromModel(parameters, family, modelName, withEdits);
     for (const model::Definition &definition : definitions) {
         if (!saved.value(definition.key)) {
-            if (error)
-                *error = Tr::tr("Read the servo before saving a profile: not every value is "
-                                "known.");
+            util::report(error,
+                         util::FileError(util::FileError::Code::NothingToSave,
+                                         Tr::tr("Read the servo before saving a profile: "
+                                                "not every value is known."))
+                             .withField(definition.key));
             return false;
         }
     }
@@ -61,11 +63,11 @@ LoadOutcome loadAsEdits(QWidget *parent, const QString &path, const QString &fam
                         const QVector<model::Definition> &definitions,
                         model::ParameterModel &parameters, QString *error)
 {
-    QString why;
+    util::FileError why;
     const auto loaded = profile::load(path, family, definitions, &why);
     if (!loaded) {
         if (error)
-            *error = Tr::tr("The profile was not loaded: %1").arg(why);
+            *error = Tr::tr("The profile was not loaded: %1").arg(why.describe());
         return LoadOutcome::Failed;
     }
     const QVector<profile::DiffRow> rows = profile::diff(*loaded, parameters);

@@ -1,6 +1,7 @@
 // Saving a servo's settings to a profile file and loading one back as edits, for every page.
 #pragma once
 
+#include "fileerror.h"
 #include "parametermodel.h"
 
 #include <QString>
@@ -16,10 +17,10 @@ QString chooseLoadPath(QWidget *parent);
 
 // Saves what `parameters` holds for `definitions`: with `withEdits` the form as shown, edits
 // included; without, only what the servo holds (a backup). Refuses while any of them has not
-// been read. False and *error (for the user) on failure.
+// been read (NothingToSave). False and *error on failure.
 bool save(const QString &path, const model::ParameterModel &parameters, const QString &family,
           const QString &modelName, const QVector<model::Definition> &definitions, bool withEdits,
-          QString *error);
+          util::FileError *error);
 
 enum class LoadOutcome { Failed, AlreadyEqual, Cancelled, Loaded };
 // Validates the whole file, shows what it would change, and on OK turns those rows into edits.

@@ -270,7 +270,7 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
             {joint.name, joint.id, 0, result.offset, result.minimumLimit, result.maximumLimit});
     }
     m_output.out.flush();
-    QString error;
+    util::FileError error;
     const bool fileSaved = !saved.isEmpty() && feetech::saveLeRobotCalibration(saved, out, &error);
     if (m_output.json) {
         printJson(m_output.out,
@@ -283,8 +283,8 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
                      << '\n';
         m_output.out.flush();
     }
-    if (!error.isEmpty())
-        return fail(error);
+    if (error)
+        return fail(error.describe());
     if (saved.isEmpty())
         return fail(Tr::tr("no joint could be calibrated; %1 was not written")
                         .arg(QDir::toNativeSeparators(out)));
@@ -469,9 +469,9 @@ int FeetechCalibrationCommands::saveCalibration(const QString &what, const QStri
         motors.append(motor);
     }
     feetech::keepDriveModes(motors, path);
-    QString error;
+    util::FileError error;
     if (!feetech::saveLeRobotCalibration(motors, path, &error))
-        return fail(error);
+        return fail(error.describe());
     QJsonObject joints;
     for (const feetech::LeRobotMotor &motor : std::as_const(motors))
         joints.insert(motor.name,
@@ -497,10 +497,10 @@ int FeetechCalibrationCommands::loadCalibration(const QString &what, const QStri
     allowOptions(what, {});
     expectOperands(what, operands, 1, Tr::tr("one FILE"));
     const QString path = operands.first();
-    QString error;
+    util::FileError error;
     const auto motors = feetech::loadLeRobotCalibration(path, &error);
     if (!motors)
-        throw UsageError {error};
+        throw UsageError {error.describe()};
 
     FeetechDevice device(m_args, m_output);
     QVector<quint8> ids;

@@ -158,10 +158,13 @@ int FeetechFlowCommands::factoryReset(const QString &what, const QStringList &op
         return ExitDeviceFailure;
     const ServoInfo &servo = target->servo;
     QString error;
+    util::FileError notSaved;
     // The backup first: without it on disk, nothing is reset.
     const auto saved = takeProfile(*target, &error);
-    if (!saved
-        || !profile::save(backup, *saved, feetech::profileDefinitions(servo.table()), &error))
+    if (saved
+        && !profile::save(backup, *saved, feetech::profileDefinitions(servo.table()), &notSaved))
+        error = notSaved.describe();
+    if (!saved || notSaved)
         return fail(
             Tr::tr("the backup could not be saved, so the servo was not reset: %1").arg(error));
     if (!m_output.json) {

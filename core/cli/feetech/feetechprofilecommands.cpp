@@ -40,10 +40,10 @@ QJsonObject profileJson(const profile::Profile &saved)
 // profile for any Feetech family.
 feetech::SettingsFile checkSettingsFile(const QString &path)
 {
-    QString error;
+    util::FileError error;
     auto file = feetech::SettingsFile::load(path, &error);
     if (!file)
-        throw UsageError {error};
+        throw UsageError {error.describe()};
     return *file;
 }
 
@@ -97,8 +97,9 @@ int FeetechProfileCommands::save(const QString &what, const QStringList &operand
     const auto saved = takeProfile(*target, &error);
     if (!saved)
         return fail(error);
-    if (!profile::save(path, *saved, feetech::profileDefinitions(servo.table()), &error))
-        return fail(error);
+    util::FileError notSaved;
+    if (!profile::save(path, *saved, feetech::profileDefinitions(servo.table()), &notSaved))
+        return fail(notSaved.describe());
     if (m_output.json)
         printJson(m_output.out,
                   QJsonObject {{QStringLiteral("servo"), servoJson(servo)},
@@ -133,7 +134,7 @@ int FeetechProfileCommands::load(const QString &what, const QStringList &operand
         throw UsageError {error};
     if (!file.isTemplate()) {
         const auto loaded = profile::load(path, feetech::familyKey(*servo.model.family),
-                                          feetech::profileDefinitions(servo.table()), &error);
+                                          feetech::profileDefinitions(servo.table()));
         if (loaded && !loaded->model.isEmpty() && loaded->model != servo.model.name) {
             m_output.err << "servoctl: "
                          << Tr::tr("note: the profile was saved from a %1, this servo is a %2")

@@ -37,10 +37,10 @@ feetech::MotorTarget FeetechSetupCommand::motorTarget(const QString &what) const
     target.baud = kDefaultBaud;
     if (m_args.has(QStringLiteral("settings"))) {
         const QString path = m_args.value(QStringLiteral("settings"));
-        QString error;
+        util::FileError error;
         const auto robot = feetech::loadRobotTemplate(path, &error);
         if (!robot)
-            throw UsageError {error};
+            throw UsageError {error.describe()};
         const auto joint =
             std::find_if(robot->joints.begin(), robot->joints.end(),
                          [&target](const feetech::RobotJoint &j) { return j.id == target.id; });

@@ -343,9 +343,9 @@ private:
         saved.saved = QDateTime::currentDateTimeUtc();
         for (const ptk::ParameterInfo &meta : ptk::parameterInfos())
             saved.values.append({QLatin1String(meta.key), *values->value(meta.parameter)});
-        QString error;
+        util::FileError error;
         if (!profile::save(path, saved, ptk::modelDefinitions(), &error))
-            return fail(error);
+            return fail(error.describe());
         if (m_output.json)
             printValues(*values);
         else
@@ -358,11 +358,11 @@ private:
     {
         if (operands.size() != 1)
             throw UsageError {Tr::tr("ptk load needs one FILE")};
-        QString error;
+        util::FileError error;
         const auto loaded =
             profile::load(operands.first(), kFamily, ptk::modelDefinitions(), &error);
         if (!loaded)
-            throw UsageError {error};
+            throw UsageError {error.describe()};
         ptk::ParameterSet changes;
         for (const profile::ProfileValue &value : loaded->values)
             changes.set(ptk::findParameter(value.key)->parameter, quint16(value.raw));

@@ -30,22 +30,23 @@ TelemetryRecorder::~TelemetryRecorder()
     finish();
 }
 
-bool TelemetryRecorder::open(const QString &path, QString *error)
+bool TelemetryRecorder::open(const QString &path, util::FileError *error)
 {
+    using util::FileError;
     finish();
     m_path = path;
-    const auto refuse = [this, error](const QString &why) {
-        m_error = why;
-        if (error)
-            *error = why;
+    const auto refuse = [this, error](const FileError &why) {
+        m_error = why.describe();
+        util::report(error, why);
         return false;
     };
     if (path.isEmpty())
-        return refuse(tr("No file name was given for the recording."));
+        return refuse(FileError(FileError::Code::NoFileName,
+                                tr("No file name was given for the recording.")));
     auto file = std::make_unique<QFile>(path);
     if (!file->open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        return refuse(tr("Could not open %1 for writing: %2.")
-                          .arg(QDir::toNativeSeparators(path), file->errorString()));
+        return refuse(FileError(FileError::Code::CannotWrite, file->errorString())
+                          .inFile(path, FileError::Action::Recording));
     }
     m_file = std::move(file);
     m_device = m_file.get();
@@ -53,14 +54,13 @@ bool TelemetryRecorder::open(const QString &path, QString *error)
     return begin(m_ownStream.get(), error);
 }
 
-bool TelemetryRecorder::start(QIODevice *device, QString *error)
+bool TelemetryRecorder::start(QIODevice *device, util::FileError *error)
 {
     finish();
     m_path.clear();
     if (!device || !device->isWritable()) {
         m_error = tr("The telemetry output is not open for writing.");
-        if (error)
-            *error = m_error;
+        util::report(error, util::FileError(util::FileError::Code::CannotWrite, m_error));
         return false;
     }
     m_device = device;
@@ -68,14 +68,14 @@ bool TelemetryRecorder::start(QIODevice *device, QString *error)
     return begin(m_ownStream.get(), error);
 }
 
-bool TelemetryRecorder::start(QTextStream &stream, QString *error)
+bool TelemetryRecorder::start(QTextStream &stream, util::FileError *error)
 {
     finish();
     m_path.clear();
     return begin(&stream, error);
 }
 
-bool TelemetryRecorder::begin(QTextStream *stream, QString *error)
+bool TelemetryRecorder::begin(QTextStream *stream, util::FileError *error)
 {
     m_stream = stream;
     m_rows = 0;
@@ -86,8 +86,8 @@ bool TelemetryRecorder::begin(QTextStream *stream, QString *error)
     *m_stream << telemetryCsvHeader() << '\n';
     // An unwritable target (a full disk) shows at once, not half a second into the recording.
     if (!flush()) {
-        if (error)
-            *error = m_error;
+        // The sentence names the file and what became of it.
+        util::report(error, util::FileError(util::FileError::Code::CannotWrite, m_error));
         return false;
     }
     if (m_flushIntervalMs > 0)

@@ -2,6 +2,7 @@
 // open device, for the Monitor page's recordings and for `servoctl feetech monitor --csv`.
 #pragma once
 
+#include "fileerror.h"
 #include "telemetry.h"
 
 #include <QObject>
@@ -34,15 +35,15 @@ public:
     explicit TelemetryRecorder(QObject *parent = nullptr);
     ~TelemetryRecorder() override; // finishes a recording still open
 
-    // Creates (or truncates) `path` and writes the header. False and *error (a sentence naming
-    // the file and the reason) when it cannot be opened; nothing is recording then.
-    bool open(const QString &path, QString *error = nullptr);
+    // Creates (or truncates) `path` and writes the header. False and *error (NoFileName, or
+    // CannotWrite naming the file) when it cannot be opened; nothing is recording then.
+    bool open(const QString &path, util::FileError *error = nullptr);
     // Writes the header to `device`, which the caller keeps open and owns (stdout for the
-    // command line). False and *error when it is not open for writing.
-    bool start(QIODevice *device, QString *error = nullptr);
+    // command line). False and *error (CannotWrite) when it is not open for writing.
+    bool start(QIODevice *device, util::FileError *error = nullptr);
     // Writes into a text stream the caller owns (servoctl's standard output, which may be a
     // string in tests); rows reach it at each flush.
-    bool start(QTextStream &stream, QString *error = nullptr);
+    bool start(QTextStream &stream, util::FileError *error = nullptr);
     // Flushes and, for a file it opened, closes it. False when the last rows could not be
     // written (failed() has been emitted then).
     bool finish();
@@ -72,7 +73,7 @@ signals:
     void failed(const QString &reason);
 
 private:
-    bool begin(QTextStream *stream, QString *error);
+    bool begin(QTextStream *stream, util::FileError *error);
     void fail(const QString &reason);
     void close();
 

@@ -70,73 +70,94 @@ bool isLeRobotMotorName(const QString &name)
 }
 
 std::optional<QVector<LeRobotMotor>>
-leRobotCalibrationFromJson(const QByteArray &json, const QString &source, QString *error)
+leRobotCalibrationFromJson(const QByteArray &json, const QString &source, util::FileError *error)
 {
-    const auto fail = [&](const QString &why) -> std::optional<QVector<LeRobotMotor>> {
-        *error = util::fileError(source, why);
+    using Code = util::FileError::Code;
+    const auto fail = [&](util::FileError why) -> std::optional<QVector<LeRobotMotor>> {
+        util::report(error, why.inFile(source));
         return std::nullopt;
+    };
+    const auto failOn = [&](Code code, const QString &why, const QString &field = {}) {
+        return fail(util::FileError(code, why).withField(field));
     };
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError)
-        return fail(Tr::tr("not valid JSON: %1 at offset %2")
-                        .arg(parseError.errorString())
-                        .arg(parseError.offset));
+        return fail(util::FileError(Code::NotJson, parseError.errorString())
+                        .withValue(QString::number(parseError.offset)));
     if (!document.isObject())
-        return fail(Tr::tr("not a LeRobot calibration (the document is not a JSON object of "
-                           "motors by joint name)"));
+        return failOn(Code::NotAnObject,
+                      Tr::tr("not a LeRobot calibration (the document is not a JSON object of "
+                             "motors by joint name)"));
     const QJsonObject root = document.object();
     if (root.isEmpty())
-        return fail(Tr::tr("the calibration names no motor"));
+        return failOn(Code::MissingField, Tr::tr("the calibration names no motor"));
     QVector<LeRobotMotor> motors;
     QSet<int> ids;
     for (auto it = root.constBegin(); it != root.constEnd(); ++it) {
         const QString name = it.key();
         if (name.trimmed().isEmpty())
-            return fail(Tr::tr("a motor has an empty name"));
+            return failOn(Code::BadValue, Tr::tr("a motor has an empty name"), name);
         if (!isLeRobotMotorName(name))
-            return fail(Tr::tr("motor \"%1\": not a motor name (ASCII letters, digits and _, a "
-                               "letter first)")
-                            .arg(name));
+            return failOn(Code::BadValue,
+                          Tr::tr("motor \"%1\": not a motor name (ASCII letters, digits and _, a "
+                                 "letter first)")
+                              .arg(name),
+                          name);
         if (!it.value().isObject())
-            return fail(Tr::tr("motor \"%1\": not an object of id, drive_mode, homing_offset, "
-                               "range_min and range_max")
-                            .arg(name));
+            return failOn(Code::WrongType,
+                          Tr::tr("motor \"%1\": not an object of id, drive_mode, homing_offset, "
+                                 "range_min and range_max")
+                              .arg(name),
+                          name);
         const QJsonObject object = it.value().toObject();
-        QString unknown;
-        if (!util::onlyKnownKeys(
-                object, {kIdKey, kDriveModeKey, kHomingOffsetKey, kRangeMinKey, kRangeMaxKey},
-                &unknown))
-            return fail(Tr::tr("motor \"%1\": unknown field \"%2\"").arg(name, unknown));
+        if (const auto unknown = util::firstUnknownKey(
+                object, {kIdKey, kDriveModeKey, kHomingOffsetKey, kRangeMinKey, kRangeMaxKey}))
+            return failOn(Code::UnknownKey,
+                          Tr::tr("motor \"%1\": unknown field \"%2\"").arg(name, *unknown),
+                          *unknown);
         qint32 values[std::size(kFields)] = {};
         for (std::size_t i = 0; i < std::size(kFields); ++i) {
             const Field &field = kFields[i];
             const QJsonValue value = object.value(QLatin1String(field.key));
+            const QString key = QLatin1String(field.key);
             if (value.isUndefined())
-                return fail(
-                    Tr::tr("motor \"%1\": \"%2\" is missing").arg(name, QLatin1String(field.key)));
+                return failOn(Code::MissingField,
+                              Tr::tr("motor \"%1\": \"%2\" is missing").arg(name, key), key);
             if (!isWhole(value))
-                return fail(Tr::tr("motor \"%1\": \"%2\" must be a whole number")
-                                .arg(name, QLatin1String(field.key)));
+                return failOn(Code::WrongType,
+                              Tr::tr("motor \"%1\": \"%2\" must be a whole number").arg(name, key),
+                              key);
             const double number = value.toDouble();
             if (number < field.minimum || number > field.maximum)
-                return fail(Tr::tr("motor \"%1\": \"%2\" is %3, outside %4 to %5")
-                                .arg(name, QLatin1String(field.key))
-                                .arg(qint64(number))
-                                .arg(field.minimum)
-                                .arg(field.maximum));
+                return fail(util::FileError(Code::BadValue,
+                                            Tr::tr("motor \"%1\": \"%2\" is %3, outside %4 to %5")
+                                                .arg(name, key)
+                                                .arg(qint64(number))
+                                                .arg(field.minimum)
+                                                .arg(field.maximum))
+                                .withField(key)
+                                .withValue(QString::number(qint64(number))));
             values[i] = qint32(number);
         }
         LeRobotMotor motor {name, values[0], values[1], values[2], values[3], values[4]};
         if (motor.rangeMin >= motor.rangeMax)
-            return fail(Tr::tr("motor \"%1\": \"%2\" (%3) must be below \"%4\" (%5)")
-                            .arg(name, QLatin1String(kRangeMinKey))
-                            .arg(motor.rangeMin)
-                            .arg(QLatin1String(kRangeMaxKey))
-                            .arg(motor.rangeMax));
-        if (ids.contains(motor.id))
             return fail(
-                Tr::tr("motor \"%1\": ID %2 is used by another motor too").arg(name).arg(motor.id));
+                util::FileError(Code::BadValue,
+                                Tr::tr("motor \"%1\": \"%2\" (%3) must be below \"%4\" (%5)")
+                                    .arg(name, QLatin1String(kRangeMinKey))
+                                    .arg(motor.rangeMin)
+                                    .arg(QLatin1String(kRangeMaxKey))
+                                    .arg(motor.rangeMax))
+                    .withField(QLatin1String(kRangeMinKey))
+                    .withValue(QString::number(motor.rangeMin)));
+        if (ids.contains(motor.id))
+            return fail(util::FileError(Code::Duplicate,
+                                        Tr::tr("motor \"%1\": ID %2 is used by another motor too")
+                                            .arg(name)
+                                            .arg(motor.id))
+                            .withField(QLatin1String(kIdKey))
+                            .withValue(QString::number(motor.id)));
         ids.insert(motor.id);
         motors.append(motor);
     }
@@ -170,39 +191,33 @@ QByteArray leRobotCalibrationToJson(const QVector<LeRobotMotor> &motors)
     return text;
 }
 
-std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path, QString *error)
+std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path,
+                                                            util::FileError *error)
 {
-    QString why;
     const auto data = util::readFile(path, util::kMaxJsonFileBytes,
-                                     Tr::tr("the file is too large for a calibration"), &why);
-    if (!data) {
-        *error = util::fileError(path, why);
+                                     Tr::tr("the file is too large for a calibration"), error);
+    if (!data)
         return std::nullopt;
-    }
     return leRobotCalibrationFromJson(*data, path, error);
 }
 
 bool saveLeRobotCalibration(const QVector<LeRobotMotor> &motors, const QString &path,
-                            QString *error)
+                            util::FileError *error)
 {
     const QByteArray json = leRobotCalibrationToJson(motors);
     // What is saved can be loaded: a value no file may hold (a limit past 4096 that another
     // program wrote to a servo) is said instead.
-    QString why;
-    if (!leRobotCalibrationFromJson(json, QDir::toNativeSeparators(path), &why)) {
-        *error = Tr::tr("%1; it was not saved").arg(why);
+    util::FileError why;
+    if (!leRobotCalibrationFromJson(json, path, &why)) {
+        util::report(error, why.inFile(path, util::FileError::Action::CheckingSave));
         return false;
     }
-    if (!util::writeFileAtomically(path, json, &why)) {
-        *error = util::notSavedError(path, why);
-        return false;
-    }
-    return true;
+    return util::writeFileAtomically(path, json, error);
 }
 
 void keepDriveModes(QVector<LeRobotMotor> &motors, const QString &path)
 {
-    QString ignored;
+    util::FileError ignored;
     const auto existing =
         QFileInfo::exists(path) ? loadLeRobotCalibration(path, &ignored) : std::nullopt;
     if (!existing)

@@ -2,6 +2,8 @@
 // them.
 #pragma once
 
+#include "fileerror.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QStringList>
@@ -40,16 +42,17 @@ bool isLeRobotMotorName(const QString &name);
 // when the document is not an object of motors, a field is missing, not a whole number or out of
 // range, range_min is not below range_max, or an ID or name repeats.
 std::optional<QVector<LeRobotMotor>>
-leRobotCalibrationFromJson(const QByteArray &json, const QString &source, QString *error);
+leRobotCalibrationFromJson(const QByteArray &json, const QString &source, util::FileError *error);
 // The file LeRobot writes: motors in the order given, indented by four spaces.
 QByteArray leRobotCalibrationToJson(const QVector<LeRobotMotor> &motors);
 
 // Reads and checks a file; nothing and *error (naming the file) when it cannot be used.
-std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path, QString *error);
+std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path,
+                                                            util::FileError *error);
 // Saves atomically; false and *error (naming the file) when it could not, or when a value is one
 // a file cannot hold (what is saved, loads).
 bool saveLeRobotCalibration(const QVector<LeRobotMotor> &motors, const QString &path,
-                            QString *error);
+                            util::FileError *error);
 // drive_mode is LeRobot's software setting, held by no register: a file saved over `path` keeps
 // each joint's drive_mode from the file there, by joint name (nothing when there is none).
 void keepDriveModes(QVector<LeRobotMotor> &motors, const QString &path);

@@ -59,60 +59,67 @@ constexpr char kIdKey[] = "id";
 constexpr char kBaudKey[] = "baud";
 constexpr char kPositionKey[] = "position";
 
-// One element of "servos"; nothing and *why when it is not a valid entry.
-std::optional<PoseEntry> parseEntry(const QJsonValue &value, QString *why)
+// One element of "servos"; nothing and *why (its detail the sentence) when it is not a valid
+// entry.
+std::optional<PoseEntry> parseEntry(const QJsonValue &value, util::FileError *why)
 {
-    if (!value.isObject()) {
-        *why = Tr::tr("not a JSON object");
+    using Code = util::FileError::Code;
+    const auto fail = [&](Code code, const QString &sentence, const char *field = nullptr,
+                          const QJsonValue &offending =
+                              QJsonValue(QJsonValue::Undefined)) -> std::optional<PoseEntry> {
+        *why = util::FileError(code, sentence).withField(QLatin1String(field));
+        if (!offending.isUndefined())
+            why->withValue(jsonText(offending));
         return std::nullopt;
-    }
+    };
+    if (!value.isObject())
+        return fail(Code::WrongType, Tr::tr("not a JSON object"));
     const QJsonObject object = value.toObject();
-    QString unknown;
-    if (!util::onlyKnownKeys(object, {kIdKey, kBaudKey, kPositionKey}, &unknown)) {
-        *why = Tr::tr("unknown entry \"%1\"").arg(unknown);
+    if (const auto unknown = util::firstUnknownKey(object, {kIdKey, kBaudKey, kPositionKey})) {
+        *why = util::FileError(Code::UnknownKey, Tr::tr("unknown entry \"%1\"").arg(*unknown))
+                   .withField(*unknown);
         return std::nullopt;
     }
     for (const char *key : {kIdKey, kBaudKey, kPositionKey}) {
-        if (!object.contains(QLatin1String(key))) {
-            *why = Tr::tr("\"%1\" is missing").arg(QLatin1String(key));
-            return std::nullopt;
-        }
+        if (!object.contains(QLatin1String(key)))
+            return fail(Code::MissingField, Tr::tr("\"%1\" is missing").arg(QLatin1String(key)),
+                        key);
     }
 
     PoseEntry entry;
     const QJsonValue idValue = object.value(QLatin1String(kIdKey));
     const std::optional<qint64> id = wholeNumber(idValue);
-    if (!id || *id < 0 || *id > kMaxServoId) {
-        *why = Tr::tr("\"%1\": %2 is not a servo ID (0 to %3)")
-                   .arg(QLatin1String(kIdKey), jsonText(idValue))
-                   .arg(kMaxServoId);
-        return std::nullopt;
-    }
+    if (!id || *id < 0 || *id > kMaxServoId)
+        return fail(Code::BadValue,
+                    Tr::tr("\"%1\": %2 is not a servo ID (0 to %3)")
+                        .arg(QLatin1String(kIdKey), jsonText(idValue))
+                        .arg(kMaxServoId),
+                    kIdKey, idValue);
     entry.id = quint8(*id);
 
     const QJsonValue baudValue = object.value(QLatin1String(kBaudKey));
     const std::optional<qint64> baud = wholeNumber(baudValue);
-    if (!baud || *baud != qint32(*baud) || !baudRates().contains(qint32(*baud))) {
-        *why = Tr::tr("\"%1\": %2 is not a Feetech baud rate in bps")
-                   .arg(QLatin1String(kBaudKey), jsonText(baudValue));
-        return std::nullopt;
-    }
+    if (!baud || *baud != qint32(*baud) || !baudRates().contains(qint32(*baud)))
+        return fail(Code::BadValue,
+                    Tr::tr("\"%1\": %2 is not a Feetech baud rate in bps")
+                        .arg(QLatin1String(kBaudKey), jsonText(baudValue)),
+                    kBaudKey, baudValue);
     entry.baud = qint32(*baud);
 
     const QJsonValue positionValue = object.value(QLatin1String(kPositionKey));
     const std::optional<qint64> position = wholeNumber(positionValue);
-    if (!position) {
-        *why = Tr::tr("\"%1\": %2 is not an integer number of steps")
-                   .arg(QLatin1String(kPositionKey), jsonText(positionValue));
-        return std::nullopt;
-    }
-    if (std::abs(*position) > kPoseMaxMagnitude) {
-        *why = Tr::tr("\"%1\": %2 is out of range (%3 to %4)")
-                   .arg(QLatin1String(kPositionKey), jsonText(positionValue))
-                   .arg(-kPoseMaxMagnitude)
-                   .arg(kPoseMaxMagnitude);
-        return std::nullopt;
-    }
+    if (!position)
+        return fail(Code::BadValue,
+                    Tr::tr("\"%1\": %2 is not an integer number of steps")
+                        .arg(QLatin1String(kPositionKey), jsonText(positionValue)),
+                    kPositionKey, positionValue);
+    if (std::abs(*position) > kPoseMaxMagnitude)
+        return fail(Code::BadValue,
+                    Tr::tr("\"%1\": %2 is out of range (%3 to %4)")
+                        .arg(QLatin1String(kPositionKey), jsonText(positionValue))
+                        .arg(-kPoseMaxMagnitude)
+                        .arg(kPoseMaxMagnitude),
+                    kPositionKey, positionValue);
     entry.position = qint32(*position);
     return entry;
 }
@@ -164,66 +171,78 @@ QByteArray poseToJson(const Pose &pose)
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
-std::optional<Pose> poseFromJson(const QByteArray &json, QString *error)
+std::optional<Pose> poseFromJson(const QByteArray &json, util::FileError *error)
 {
+    using Code = util::FileError::Code;
     const std::optional<QJsonObject> root = util::parseVersionedObject(json, poseFormat(), error);
     if (!root)
         return std::nullopt;
-    const auto fail = [&](const QString &why) -> std::optional<Pose> {
-        if (error)
-            *error = why;
+    const auto fail = [&](const util::FileError &why) -> std::optional<Pose> {
+        util::report(error, why);
         return std::nullopt;
     };
 
     Pose pose;
     const QJsonValue name = root->value(QLatin1String(kNameKey));
     if (!name.isUndefined() && !name.isString())
-        return fail(Tr::tr("\"%1\" must be text").arg(QLatin1String(kNameKey)));
+        return fail(util::FileError(Code::WrongType,
+                                    Tr::tr("\"%1\" must be text").arg(QLatin1String(kNameKey)))
+                        .withField(QLatin1String(kNameKey)));
     pose.name = name.toString();
 
     const QJsonValue servosValue = root->value(QLatin1String(kServosKey));
     if (!servosValue.isArray())
-        return fail(Tr::tr("the pose has no \"%1\" list").arg(QLatin1String(kServosKey)));
+        return fail(
+            util::FileError(Code::MissingField,
+                            Tr::tr("the pose has no \"%1\" list").arg(QLatin1String(kServosKey)))
+                .withField(QLatin1String(kServosKey)));
     const QJsonArray servos = servosValue.toArray();
     QSet<QPair<int, qint32>> seen;
     for (int i = 0; i < servos.size(); ++i) {
-        QString why;
+        util::FileError why;
         const std::optional<PoseEntry> entry = parseEntry(servos.at(i), &why);
         // Entries are numbered from 1, as a person counts them in the file.
         if (!entry)
-            return fail(Tr::tr("servo entry %1: %2").arg(i + 1).arg(why));
+            return fail(util::FileError(why.code(),
+                                        Tr::tr("servo entry %1: %2").arg(i + 1).arg(why.reason()))
+                            .withField(why.field())
+                            .withValue(why.value()));
         const QPair<int, qint32> address(entry->id, entry->baud);
         if (seen.contains(address))
-            return fail(Tr::tr("servo entry %1: ID %2 at %3 bps is already in the pose")
-                            .arg(i + 1)
-                            .arg(entry->id)
-                            .arg(entry->baud));
+            return fail(
+                util::FileError(Code::Duplicate,
+                                Tr::tr("servo entry %1: ID %2 at %3 bps is already in the pose")
+                                    .arg(i + 1)
+                                    .arg(entry->id)
+                                    .arg(entry->baud))
+                    .withField(QLatin1String(kIdKey))
+                    .withValue(QString::number(entry->id)));
         seen.insert(address);
         pose.servos.append(*entry);
     }
     return pose;
 }
 
-bool savePose(const QString &path, const Pose &pose, QString *error)
+bool savePose(const QString &path, const Pose &pose, util::FileError *error)
 {
     const QByteArray json = poseToJson(pose);
-    QString why;
+    util::FileError why;
     // Write nothing loadPose would refuse, so every saved pose loads again.
     const bool saved = poseFromJson(json, &why) && util::writeFileAtomically(path, json, &why);
-    if (!saved && error)
-        *error = util::notSavedError(path, why);
+    if (!saved)
+        util::report(error, why.inFile(path, util::FileError::Action::Saving));
     return saved;
 }
 
-std::optional<Pose> loadPose(const QString &path, QString *error)
+std::optional<Pose> loadPose(const QString &path, util::FileError *error)
 {
-    QString why;
+    util::FileError why;
     std::optional<Pose> pose;
     if (const auto json =
             util::readFile(path, util::kMaxJsonFileBytes, Tr::tr("too large to be a pose"), &why))
         pose = poseFromJson(*json, &why);
-    if (!pose && error)
-        *error = util::fileError(path, why);
+    if (!pose)
+        util::report(error, why.inFile(path));
     return pose;
 }
 

@@ -1,6 +1,8 @@
 // Poses: goal positions for several servos of a bus, kept as small JSON files.
 #pragma once
 
+#include "fileerror.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QVector>
@@ -51,11 +53,11 @@ QByteArray poseToJson(const Pose &pose);
 
 // Reads a pose, validating all of it (syntax, format, version, every entry, no servo twice);
 // on any problem, nothing and *error says what.
-std::optional<Pose> poseFromJson(const QByteArray &json, QString *error = nullptr);
+std::optional<Pose> poseFromJson(const QByteArray &json, util::FileError *error = nullptr);
 
 // Writes atomically: the whole new file or the old one untouched. Refuses (writing nothing) a
 // pose that poseFromJson would refuse. *error names the file.
-bool savePose(const QString &path, const Pose &pose, QString *error = nullptr);
-std::optional<Pose> loadPose(const QString &path, QString *error = nullptr);
+bool savePose(const QString &path, const Pose &pose, util::FileError *error = nullptr);
+std::optional<Pose> loadPose(const QString &path, util::FileError *error = nullptr);
 
 } // namespace feetech

@@ -67,42 +67,54 @@ bool isJointName(const QString &name)
     });
 }
 
+using Code = util::FileError::Code;
+
+// Stores the failure in *why; false, for the caller to return.
+bool failWith(util::FileError *why, Code code, const QString &sentence, const QString &field)
+{
+    *why = util::FileError(code, sentence).withField(field);
+    return false;
+}
+
 // Register values by key, checked against `table`; false and *why naming the first wrong one.
 bool readSettings(const QJsonValue &value, const RegisterTable &table,
-                  QMap<QString, qint32> &settings, QString *why)
+                  QMap<QString, qint32> &settings, util::FileError *why)
 {
     if (value.isUndefined())
         return true;
-    if (!value.isObject()) {
-        *why =
-            Tr::tr("\"%1\" must be an object of register values").arg(QLatin1String(kSettingsKey));
-        return false;
-    }
+    if (!value.isObject())
+        return failWith(
+            why, Code::WrongType,
+            Tr::tr("\"%1\" must be an object of register values").arg(QLatin1String(kSettingsKey)),
+            QLatin1String(kSettingsKey));
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it) {
         const Register *reg = table.find(it.key());
-        if (!reg || !reg->writable()) {
-            *why = Tr::tr("settings: \"%1\" is no writable register of %2 servos")
-                       .arg(it.key(), familyName(table.family()));
-            return false;
-        }
+        if (!reg || !reg->writable())
+            return failWith(why, Code::UnknownKey,
+                            Tr::tr("settings: \"%1\" is no writable register of %2 servos")
+                                .arg(it.key(), familyName(table.family())),
+                            it.key());
         if (std::any_of(std::begin(kFlowOnlyKeys), std::end(kFlowOnlyKeys),
-                        [&](const char16_t *key) { return it.key() == QStringView(key); })) {
-            *why =
-                Tr::tr("settings: \"%1\" is set by its own flow, not by a template").arg(it.key());
-            return false;
-        }
-        if (!isWhole(it.value())) {
-            *why = Tr::tr("settings: \"%1\" must be a whole number").arg(it.key());
-            return false;
-        }
+                        [&](const char16_t *key) { return it.key() == QStringView(key); }))
+            return failWith(
+                why, Code::BadValue,
+                Tr::tr("settings: \"%1\" is set by its own flow, not by a template").arg(it.key()),
+                it.key());
+        if (!isWhole(it.value()))
+            return failWith(why, Code::WrongType,
+                            Tr::tr("settings: \"%1\" must be a whole number").arg(it.key()),
+                            it.key());
         const qint64 number = qint64(it.value().toDouble());
         if (number < reg->minimum || number > reg->maximum) {
-            *why = Tr::tr("settings: \"%1\" = %2 is out of range (%3 to %4)")
-                       .arg(it.key())
-                       .arg(number)
-                       .arg(reg->minimum)
-                       .arg(reg->maximum);
+            failWith(why, Code::BadValue,
+                     Tr::tr("settings: \"%1\" = %2 is out of range (%3 to %4)")
+                         .arg(it.key())
+                         .arg(number)
+                         .arg(reg->minimum)
+                         .arg(reg->maximum),
+                     it.key());
+            why->withValue(QString::number(number));
             return false;
         }
         settings.insert(it.key(), qint32(number));
@@ -110,45 +122,43 @@ bool readSettings(const QJsonValue &value, const RegisterTable &table,
     return true;
 }
 
-bool readJoint(const QJsonValue &value, const QJsonValue &common, RobotJoint &joint, QString *why)
+bool readJoint(const QJsonValue &value, const QJsonValue &common, RobotJoint &joint,
+               util::FileError *why)
 {
-    if (!value.isObject()) {
-        *why = Tr::tr("every joint must be a JSON object");
-        return false;
-    }
+    if (!value.isObject())
+        return failWith(why, Code::WrongType, Tr::tr("every joint must be a JSON object"), {});
     const QJsonObject object = value.toObject();
-    QString unknown;
-    if (!util::onlyKnownKeys(object, {kNameKey, kIdKey, kModelKey, kFullTurnKey, kSettingsKey},
-                             &unknown)) {
-        *why = Tr::tr("unknown entry \"%1\"").arg(unknown);
-        return false;
-    }
+    if (const auto unknown = util::firstUnknownKey(
+            object, {kNameKey, kIdKey, kModelKey, kFullTurnKey, kSettingsKey}))
+        return failWith(why, Code::UnknownKey, Tr::tr("unknown entry \"%1\"").arg(*unknown),
+                        *unknown);
     joint.name = object.value(QLatin1String(kNameKey)).toString();
-    if (!isJointName(joint.name)) {
-        *why = Tr::tr("\"%1\" must be a name of letters, digits and _ that starts with a letter")
-                   .arg(QLatin1String(kNameKey));
-        return false;
-    }
+    if (!isJointName(joint.name))
+        return failWith(
+            why, Code::BadValue,
+            Tr::tr("\"%1\" must be a name of letters, digits and _ that starts with a letter")
+                .arg(QLatin1String(kNameKey)),
+            QLatin1String(kNameKey));
     const QJsonValue id = object.value(QLatin1String(kIdKey));
-    if (!isWhole(id) || id.toInt() < 0 || id.toInt() > kMaxServoId) {
-        *why = Tr::tr("\"%1\" must be a servo ID from 0 to %2")
-                   .arg(QLatin1String(kIdKey))
-                   .arg(kMaxServoId);
-        return false;
-    }
+    if (!isWhole(id) || id.toInt() < 0 || id.toInt() > kMaxServoId)
+        return failWith(why, Code::BadValue,
+                        Tr::tr("\"%1\" must be a servo ID from 0 to %2")
+                            .arg(QLatin1String(kIdKey))
+                            .arg(kMaxServoId),
+                        QLatin1String(kIdKey));
     joint.id = id.toInt();
     joint.model = object.value(QLatin1String(kModelKey)).toString();
     const auto model = ModelTable::builtIn().findByName(joint.model);
-    if (!model || !model->family) {
-        *why = Tr::tr("\"%1\": \"%2\" is no model with a known register table")
-                   .arg(QLatin1String(kModelKey), joint.model);
-        return false;
-    }
+    if (!model || !model->family)
+        return failWith(why, Code::BadValue,
+                        Tr::tr("\"%1\": \"%2\" is no model with a known register table")
+                            .arg(QLatin1String(kModelKey), joint.model),
+                        QLatin1String(kModelKey));
     const QJsonValue fullTurn = object.value(QLatin1String(kFullTurnKey));
-    if (!fullTurn.isUndefined() && !fullTurn.isBool()) {
-        *why = Tr::tr("\"%1\" must be true or false").arg(QLatin1String(kFullTurnKey));
-        return false;
-    }
+    if (!fullTurn.isUndefined() && !fullTurn.isBool())
+        return failWith(why, Code::WrongType,
+                        Tr::tr("\"%1\" must be true or false").arg(QLatin1String(kFullTurnKey)),
+                        QLatin1String(kFullTurnKey));
     joint.fullTurn = fullTurn.toBool(false);
     const RegisterTable &table = RegisterTable::forFamily(*model->family);
     return readSettings(common, table, joint.settings, why)
@@ -165,13 +175,15 @@ const RobotJoint *RobotTemplate::joint(QStringView name) const
 }
 
 std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const QString &source,
-                                                   QString *error)
+                                                   util::FileError *error)
 {
-    QString why;
-    const auto fail = [&](const QString &what) -> std::optional<RobotTemplate> {
-        if (error)
-            *error = source + QStringLiteral(": ") + what;
+    util::FileError why;
+    const auto fail = [&](util::FileError what) -> std::optional<RobotTemplate> {
+        util::report(error, what.inFile(source));
         return std::nullopt;
+    };
+    const auto failOn = [&](Code code, const QString &what, const char *field) {
+        return fail(util::FileError(code, what).withField(QLatin1String(field)));
     };
     const auto root = util::parseVersionedObject(json, robotFormat(), &why);
     if (!root)
@@ -179,35 +191,51 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
     RobotTemplate robot;
     robot.name = root->value(QLatin1String(kNameKey)).toString().trimmed();
     if (robot.name.isEmpty())
-        return fail(Tr::tr("\"%1\" must be a name for the robot").arg(QLatin1String(kNameKey)));
+        return failOn(Code::MissingField,
+                      Tr::tr("\"%1\" must be a name for the robot").arg(QLatin1String(kNameKey)),
+                      kNameKey);
     const QJsonValue baud = root->value(QLatin1String(kBaudKey));
     if (!baud.isUndefined()) {
         if (!isWhole(baud) || !baudCode(qint32(baud.toDouble())))
-            return fail(
-                Tr::tr("\"%1\" must be a Feetech baud rate in bps").arg(QLatin1String(kBaudKey)));
+            return failOn(
+                Code::BadValue,
+                Tr::tr("\"%1\" must be a Feetech baud rate in bps").arg(QLatin1String(kBaudKey)),
+                kBaudKey);
         robot.baud = qint32(baud.toDouble());
     }
     const QJsonArray joints = root->value(QLatin1String(kJointsKey)).toArray();
     if (joints.isEmpty() || joints.size() > kMaxServoId)
-        return fail(Tr::tr("\"%1\" must list the robot's joints").arg(QLatin1String(kJointsKey)));
+        return failOn(Code::MissingField,
+                      Tr::tr("\"%1\" must list the robot's joints").arg(QLatin1String(kJointsKey)),
+                      kJointsKey);
     const QJsonValue common = root->value(QLatin1String(kSettingsKey));
     for (int i = 0; i < joints.size(); ++i) {
         RobotJoint joint;
         const QString where = Tr::tr("joint %1").arg(i + 1);
         if (!readJoint(joints.at(i), common, joint, &why))
-            return fail(
-                where + (joint.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(joint.name))
-                + QStringLiteral(": ") + why);
+            return fail(util::FileError(why.code(),
+                                        where
+                                            + (joint.name.isEmpty()
+                                                   ? QString()
+                                                   : QStringLiteral(" (%1)").arg(joint.name))
+                                            + QStringLiteral(": ") + why.reason())
+                            .withField(why.field())
+                            .withValue(why.value()));
         for (const RobotJoint &other : std::as_const(robot.joints)) {
             if (other.name == joint.name)
-                return fail(
-                    Tr::tr("joint %1: the name \"%2\" is used twice").arg(i + 1).arg(joint.name));
+                return failOn(
+                    Code::Duplicate,
+                    Tr::tr("joint %1: the name \"%2\" is used twice").arg(i + 1).arg(joint.name),
+                    kNameKey);
             if (other.id == joint.id)
-                return fail(Tr::tr("joint %1 (%2): ID %3 is already %4's")
-                                .arg(i + 1)
-                                .arg(joint.name)
-                                .arg(joint.id)
-                                .arg(other.name));
+                return fail(util::FileError(Code::Duplicate,
+                                            Tr::tr("joint %1 (%2): ID %3 is already %4's")
+                                                .arg(i + 1)
+                                                .arg(joint.name)
+                                                .arg(joint.id)
+                                                .arg(other.name))
+                                .withField(QLatin1String(kIdKey))
+                                .withValue(QString::number(joint.id)));
         }
         robot.joints.append(joint);
     }
@@ -255,11 +283,12 @@ const QVector<RobotTemplate> &builtInRobotTemplates()
         const QDir folder(QStringLiteral(":/robots"));
         for (const QString &name :
              folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-            QString error;
+            util::FileError error;
             const QString path = folder.filePath(name);
             auto robot = loadRobotTemplate(path, &error);
             if (!robot)
-                qFatal("ServoBench: built-in robot template is invalid: %s", qPrintable(error));
+                qFatal("ServoBench: built-in robot template is invalid: %s",
+                       qPrintable(error.describe()));
             loaded.append(std::move(*robot));
         }
         return loaded;
@@ -267,27 +296,18 @@ const QVector<RobotTemplate> &builtInRobotTemplates()
     return templates;
 }
 
-std::optional<RobotTemplate> loadRobotTemplate(const QString &path, QString *error)
+std::optional<RobotTemplate> loadRobotTemplate(const QString &path, util::FileError *error)
 {
-    QString why;
     const auto bytes = util::readFile(path, util::kMaxJsonFileBytes,
-                                      Tr::tr("the file is too large for a robot template"), &why);
-    if (!bytes) {
-        if (error)
-            *error = util::fileError(path, why);
+                                      Tr::tr("the file is too large for a robot template"), error);
+    if (!bytes)
         return std::nullopt;
-    }
-    return robotTemplateFromJson(*bytes, QDir::toNativeSeparators(path), error);
+    return robotTemplateFromJson(*bytes, path, error);
 }
 
-bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, QString *error)
+bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, util::FileError *error)
 {
-    QString why;
-    if (util::writeFileAtomically(path, robotTemplateToJson(robot), &why))
-        return true;
-    if (error)
-        *error = util::notSavedError(path, why);
-    return false;
+    return util::writeFileAtomically(path, robotTemplateToJson(robot), error);
 }
 
 QString userRobotTemplateFolder()
@@ -302,11 +322,11 @@ QVector<RobotTemplate> availableRobotTemplates(QStringList *problems)
     const QDir folder(userRobotTemplateFolder());
     for (const QString &name :
          folder.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-        QString error;
+        util::FileError error;
         if (auto robot = loadRobotTemplate(folder.filePath(name), &error))
             templates.append(std::move(*robot));
         else if (problems)
-            problems->append(error);
+            problems->append(error.describe());
     }
     return templates;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "feetechpacket.h"
+#include "fileerror.h"
 #include "motorsetup.h"
 #include "registertable.h"
 
@@ -39,7 +40,7 @@ struct RobotTemplate
 // rate, the lock and torque enable are set by the flows, never by a template). On failure
 // nothing, and *error naming `source` and the joint and field at fault.
 std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const QString &source,
-                                                   QString *error);
+                                                   util::FileError *error);
 // The file format robotTemplateFromJson reads; common settings are written out per joint.
 // What motor set-up makes of `joint` of `robot`: its ID, the robot's rate, its model and settings.
 MotorTarget motorTarget(const RobotTemplate &robot, const RobotJoint &joint);
@@ -51,9 +52,9 @@ QByteArray robotTemplateToJson(const RobotTemplate &robot);
 // The templates compiled into the application (SO-100 and SO-101 follower and leader arms).
 const QVector<RobotTemplate> &builtInRobotTemplates();
 // A template from a file a user saved; nothing and *error (naming the file) when unreadable.
-std::optional<RobotTemplate> loadRobotTemplate(const QString &path, QString *error);
+std::optional<RobotTemplate> loadRobotTemplate(const QString &path, util::FileError *error);
 // Saves atomically; false and *error (naming the file) when it could not.
-bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, QString *error);
+bool saveRobotTemplate(const RobotTemplate &robot, const QString &path, util::FileError *error);
 
 // A shipped template's name ("SO-101 follower arm") or joint name ("shoulder_pan") as the user's
 // language shows it. Files, calibration data and lookups keep the names as they are; only what

@@ -31,23 +31,20 @@ const QString kOffsetKey = QStringLiteral("position_offset");
 
 } // namespace
 
-std::optional<SettingsFile> SettingsFile::load(const QString &path, QString *error)
+std::optional<SettingsFile> SettingsFile::load(const QString &path, util::FileError *error)
 {
     const QString shown = QDir::toNativeSeparators(path);
-    QString why;
     const auto read = util::readFile(path, util::kMaxJsonFileBytes,
                                      Tr::tr("the file is too large for a profile or a robot "
                                             "template"),
-                                     &why);
-    if (!read) {
-        *error = util::fileError(path, why);
+                                     error);
+    if (!read)
         return std::nullopt;
-    }
     return fromJson(*read, shown, error);
 }
 
 std::optional<SettingsFile> SettingsFile::fromJson(const QByteArray &json, const QString &source,
-                                                   QString *error)
+                                                   util::FileError *error)
 {
     SettingsFile settings;
     settings.m_source = source;
@@ -60,9 +57,9 @@ std::optional<SettingsFile> SettingsFile::fromJson(const QByteArray &json, const
     }
     // A profile: valid for one family at least, its problem named as the family it claims
     // (STS when it claims none) would see it.
-    QHash<QString, QString> errors;
+    QHash<QString, util::FileError> errors;
     for (const Family family : kAllFamilies) {
-        QString why;
+        util::FileError why;
         const QString key = familyKey(family);
         if (profile::parse(json, key, profileDefinitions(RegisterTable::forFamily(family)), &why)) {
             settings.m_profile = json;
@@ -71,8 +68,8 @@ std::optional<SettingsFile> SettingsFile::fromJson(const QByteArray &json, const
         errors.insert(key, why);
     }
     const QString claimed = object.value(QStringLiteral("family")).toString();
-    *error =
-        Tr::tr("%1: %2").arg(source, errors.value(claimed, errors.value(familyKey(Family::Sts))));
+    util::FileError why = errors.value(claimed, errors.value(familyKey(Family::Sts)));
+    util::report(error, why.inFile(source));
     return std::nullopt;
 }
 
@@ -117,10 +114,11 @@ std::optional<QVector<model::WriteItem>> SettingsFile::valuesFor(const ServoInfo
         return values;
     }
     const QString family = familyKey(*servo.model.family);
-    QString why;
+    util::FileError why;
     const auto loaded = profile::parse(m_profile, family, profileDefinitions(servo.table()), &why);
     if (!loaded) {
-        *error = Tr::tr("%1 does not fit servo %2: %3").arg(m_source).arg(servo.id).arg(why);
+        *error =
+            Tr::tr("%1 does not fit servo %2: %3").arg(m_source).arg(servo.id).arg(why.describe());
         return std::nullopt;
     }
     for (const profile::ProfileValue &value : loaded->values)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bustypes.h"
+#include "fileerror.h"
 #include "parametermodel.h"
 #include "robottemplate.h"
 
@@ -22,10 +23,10 @@ public:
     // Reads and checks `path` before anything is sent: a robot template (its "format" says so)
     // checked as robotTemplateFromJson checks it, else a profile valid for at least one Feetech
     // family. Nothing and *error (naming the file and the problem) when it is neither.
-    static std::optional<SettingsFile> load(const QString &path, QString *error);
+    static std::optional<SettingsFile> load(const QString &path, util::FileError *error);
     // The same check of a file's contents; `source` names it in messages.
     static std::optional<SettingsFile> fromJson(const QByteArray &json, const QString &source,
-                                                QString *error);
+                                                util::FileError *error);
     static SettingsFile fromTemplate(const RobotTemplate &robot);
 
     bool isTemplate() const { return m_robot.has_value(); }

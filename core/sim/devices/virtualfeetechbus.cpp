@@ -489,12 +489,12 @@ bool VirtualFeetechBus::loadState(const QString &path, QString *error)
 {
     // A whole bus of 253 servos saves to well under this: anything larger is another file.
     constexpr qint64 kMaxStateBytes = 16 * 1024 * 1024;
-    QString why;
+    util::FileError why;
     const auto json = util::readFile(path, kMaxStateBytes,
                                      Tr::tr("larger than any state file (over 16 MB)"), &why);
     if (!json) {
         if (error)
-            *error = Tr::tr("state file %1: %2").arg(path, why);
+            *error = Tr::tr("state file %1: %2").arg(path, why.reason());
         return false;
     }
     return loadStateJson(*json, path, error);

@@ -271,7 +271,11 @@ std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, QStrin
         return std::nullopt;
     }
     const QString file = key.contains(u'-') ? key : key + QLatin1String("-follower");
-    return feetech::loadRobotTemplate(QStringLiteral(":/robots/%1.json").arg(file), error);
+    util::FileError why;
+    auto robot = feetech::loadRobotTemplate(QStringLiteral(":/robots/%1.json").arg(file), &why);
+    if (!robot && error)
+        *error = why.describe();
+    return robot;
 }
 
 QVector<FeetechServoSpec> robotServos(const feetech::RobotTemplate &robot)

@@ -279,8 +279,12 @@ std::optional<feetech::RobotTemplate> RobotTemplateDialog::edited(QString *error
         }
     }
     // Exactly the checks loading makes, on exactly the bytes that would be written.
-    return feetech::robotTemplateFromJson(feetech::robotTemplateToJson(robot),
-                                          QDir::toNativeSeparators(targetPath()), error);
+    util::FileError why;
+    auto checked = feetech::robotTemplateFromJson(feetech::robotTemplateToJson(robot),
+                                                  QDir::toNativeSeparators(targetPath()), &why);
+    if (!checked)
+        *error = why.describe();
+    return checked;
 }
 
 QString RobotTemplateDialog::targetPath() const
@@ -322,8 +326,12 @@ bool RobotTemplateDialog::save(QString *error)
                          .arg(QDir::toNativeSeparators(feetech::userRobotTemplateFolder()));
         return false;
     }
-    if (!feetech::saveRobotTemplate(*robot, path, error))
+    util::FileError notSaved;
+    if (!feetech::saveRobotTemplate(*robot, path, &notSaved)) {
+        if (error)
+            *error = notSaved.describe();
         return false;
+    }
     emit saved(path);
     return true;
 }

@@ -31,13 +31,14 @@ JointTablePoses::JointTablePoses(JointTable *table)
     connect(m_save, &QPushButton::clicked, this, &JointTablePoses::onSaveClicked);
 }
 
-bool JointTablePoses::savePose(const QString &path, QString *error)
+bool JointTablePoses::savePose(const QString &path, util::FileError *error)
 {
     const feetech::Pose pose = feetech::poseFromTargets(
         m_name.isEmpty() ? QFileInfo(path).baseName() : m_name, m_table->joints());
     if (pose.servos.isEmpty()) {
-        if (error)
-            *error = tr("No targets to save: set some first.");
+        util::report(error,
+                     util::FileError(util::FileError::Code::NothingToSave,
+                                     tr("No targets to save: set some first.")));
         return false;
     }
     if (!feetech::savePose(path, pose, error))
@@ -52,7 +53,8 @@ bool JointTablePoses::savePose(const QString &path, QString *error)
     return true;
 }
 
-std::optional<feetech::PoseMatch> JointTablePoses::loadPose(const QString &path, QString *error)
+std::optional<feetech::PoseMatch> JointTablePoses::loadPose(const QString &path,
+                                                            util::FileError *error)
 {
     const std::optional<feetech::Pose> pose = feetech::loadPose(path, error);
     if (!pose)
@@ -119,11 +121,11 @@ void JointTablePoses::onSaveClicked()
         return;
     if (QFileInfo(path).suffix().isEmpty())
         path += QStringLiteral(".json");
-    QString error;
+    util::FileError error;
     if (savePose(path, &error))
         recentfiles::add(recentfiles::Kind::Pose, path);
     else
-        m_table->setMessage(error, JointTable::Tone::Error);
+        m_table->setMessage(error.describe(), JointTable::Tone::Error);
 }
 
 void JointTablePoses::onLoadClicked()
@@ -133,9 +135,9 @@ void JointTablePoses::onLoadClicked()
         tr("ServoBench poses (*.json);;All files (*)"));
     if (path.isEmpty())
         return;
-    QString error;
+    util::FileError error;
     if (loadPose(path, &error))
         recentfiles::add(recentfiles::Kind::Pose, path);
     else
-        m_table->setMessage(error, JointTable::Tone::Error);
+        m_table->setMessage(error.describe(), JointTable::Tone::Error);
 }

@@ -25,12 +25,14 @@ public:
     QLabel *poseLabel() const { return m_label; }
     QString poseName() const { return m_name; }
 
-    // The table's targets as a pose file (rows without a target are left out).
-    bool savePose(const QString &path, QString *error = nullptr);
+    // The table's targets as a pose file (rows without a target are left out); NothingToSave
+    // when no row has one.
+    bool savePose(const QString &path, util::FileError *error = nullptr);
     // Fills the targets of the rows the pose names (by ID and baud rate): nothing moves. The
     // match says which entries and rows did not meet; nothing and *error when the file is
     // not a valid pose (no target changed then).
-    std::optional<feetech::PoseMatch> loadPose(const QString &path, QString *error = nullptr);
+    std::optional<feetech::PoseMatch> loadPose(const QString &path,
+                                               util::FileError *error = nullptr);
 
     // Load needs rows, Save a target.
     void updateButtons();

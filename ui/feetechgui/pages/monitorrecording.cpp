@@ -39,7 +39,7 @@ MonitorRecording::~MonitorRecording()
     stopRecording(); // what was buffered reaches the disk
 }
 
-bool MonitorRecording::startRecording(const QString &path, QString *error)
+bool MonitorRecording::startRecording(const QString &path, util::FileError *error)
 {
     stopRecording();
     // A header that could not be written goes through fail(), which says why; a file that
@@ -48,16 +48,15 @@ bool MonitorRecording::startRecording(const QString &path, QString *error)
     const QMetaObject::Connection watch =
         connect(this, &MonitorRecording::problem, this,
                 [&failure](const QString &message) { failure = message; });
-    QString why;
+    util::FileError why;
     const bool opened = m_recorder->open(path, &why);
     disconnect(watch);
     if (!opened) {
         if (!failure.isEmpty())
-            why = failure;
+            why = util::FileError(why.code(), failure);
         else
-            emit reported(why, true);
-        if (error)
-            *error = why;
+            emit reported(why.describe(), true);
+        util::report(error, why);
         return false;
     }
     emit reported({}, false);

@@ -22,7 +22,7 @@ public:
 
     // Writes every sample given to the recorder from now on to `path` as CSV; false and *error
     // (also reported) when the file cannot be written.
-    bool startRecording(const QString &path, QString *error = nullptr);
+    bool startRecording(const QString &path, util::FileError *error = nullptr);
     void stopRecording();
     bool isRecording() const { return m_recorder->isRecording(); }
     // The samples go here; its rows and start time are the recording's.

@@ -85,9 +85,9 @@ CalibrationSaver::CalibrationSaver(feetech::BusClient *client, QObject *parent)
             motors.append(motor);
         }
         feetech::keepDriveModes(motors, m_path);
-        QString error;
+        util::FileError error;
         if (!feetech::saveLeRobotCalibration(motors, m_path, &error)) {
-            emit finished(false, error);
+            emit finished(false, error.describe());
             return;
         }
         emit finished(true,
@@ -96,7 +96,7 @@ CalibrationSaver::CalibrationSaver(feetech::BusClient *client, QObject *parent)
     });
 }
 
-bool CalibrationSaver::save(const QString &path, QString *error)
+bool CalibrationSaver::save(const QString &path, util::FileError *error)
 {
     const QVector<feetech::RobotTemplate> templates = feetech::availableRobotTemplates();
     m_path = path;
@@ -113,7 +113,9 @@ bool CalibrationSaver::save(const QString &path, QString *error)
         steps.append(CalibrationSteps::Step {joint.index, {}});
     }
     if (steps.isEmpty()) {
-        *error = tr("No servo on the bus has a position offset to save.");
+        util::report(error,
+                     util::FileError(util::FileError::Code::NothingToSave,
+                                     tr("No servo on the bus has a position offset to save.")));
         return false;
     }
     return m_steps->start(steps);
@@ -351,12 +353,12 @@ void CalibrationActions::saveCalibration()
         saver->deleteLater();
         emit ok ? message(text) : problem(text);
     });
-    QString error;
+    util::FileError error;
     if (saver->save(path, &error)) {
         recentfiles::add(recentfiles::Kind::Calibration, path);
     } else {
         saver->deleteLater();
-        emit problem(error);
+        emit problem(error.describe());
     }
 }
 
@@ -368,10 +370,10 @@ void CalibrationActions::loadCalibration()
         tr("LeRobot calibration (*.json)"));
     if (path.isEmpty())
         return;
-    QString error;
+    util::FileError error;
     const auto motors = feetech::loadLeRobotCalibration(path, &error);
     if (!motors) {
-        emit problem(error);
+        emit problem(error.describe());
         return;
     }
     recentfiles::add(recentfiles::Kind::Calibration, path);

@@ -28,8 +28,8 @@ class CalibrationSaver : public QObject
 
 public:
     explicit CalibrationSaver(feetech::BusClient *client, QObject *parent = nullptr);
-    // False and *error when nothing was started (no servo to save).
-    bool save(const QString &path, QString *error);
+    // False and *error (NothingToSave) when nothing was started (no servo to save).
+    bool save(const QString &path, util::FileError *error);
 
 signals:
     void finished(bool ok, const QString &message);

@@ -478,11 +478,13 @@ QVector<feetech::LeRobotMotor> CalibrationWizard::writtenMotors() const
     return motors;
 }
 
-bool CalibrationWizard::saveLeRobotFile(const QString &path, QString *error) const
+bool CalibrationWizard::saveLeRobotFile(const QString &path, util::FileError *error) const
 {
     QVector<feetech::LeRobotMotor> motors = writtenMotors();
     if (motors.isEmpty()) {
-        *error = tr("No joint was written: there is nothing to save.");
+        util::report(error,
+                     util::FileError(util::FileError::Code::NothingToSave,
+                                     tr("No joint was written: there is nothing to save.")));
         return false;
     }
     feetech::keepDriveModes(motors, path);
@@ -498,12 +500,12 @@ void CalibrationWizard::chooseFileToSave()
                                      tr("LeRobot calibration (*.json)"));
     if (path.isEmpty())
         return;
-    QString error;
+    util::FileError error;
     if (saveLeRobotFile(path, &error)) {
         recentfiles::add(recentfiles::Kind::Calibration, path);
         m_status->setText(tr("Saved %1.").arg(QDir::toNativeSeparators(path)));
     } else {
-        fail(error);
+        fail(error.describe());
     }
 }
 

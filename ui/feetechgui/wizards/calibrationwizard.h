@@ -44,7 +44,7 @@ public:
     // What the last write left of the results: written and verified, per joint.
     QVector<feetech::LeRobotMotor> writtenMotors() const;
     // Saves the written joints; false and *error when it could not.
-    bool saveLeRobotFile(const QString &path, QString *error) const;
+    bool saveLeRobotFile(const QString &path, util::FileError *error) const;
 
     // The steps, for tests and keyboard users alike (each is what its page's button does).
     void goToWarning(); // from the joint choice

@@ -632,11 +632,11 @@ bool FeetechWorkspace::saveProfile(const QString &path, bool withEdits)
         return false;
     }
     const feetech::ServoInfo &info = m_client->servos()->at(index).info;
-    QString error;
+    util::FileError error;
     if (!profileactions::save(path, *m_client->servos()->parameters(index),
                               feetech::familyKey(*info.model.family), info.model.name,
                               feetech::profileDefinitions(info.table()), withEdits, &error)) {
-        emit problem(error);
+        emit problem(error.describe());
         return false;
     }
     return true;

@@ -191,9 +191,12 @@ void RobotActions::chooseProfileToApply()
     const QString path = profileactions::chooseLoadPath(m_workspace);
     if (path.isEmpty())
         return;
+    util::FileError unreadable;
+    const auto file = feetech::SettingsFile::load(path, &unreadable);
     QString error;
-    const auto file = feetech::SettingsFile::load(path, &error);
-    if (!file || !applyToSelected(*file, &error))
+    if (!file)
+        emit problem(unreadable.describe());
+    else if (!applyToSelected(*file, &error))
         emit problem(error);
 }
 
