@@ -113,11 +113,16 @@ private slots:
         QVERIFY2(baud->child(1)->toolTip(0).contains(QLatin1String("Nothing is written")),
                  qPrintable(baud->child(1)->toolTip(0)));
         const int shared = client()->servos()->indexOf(4, 1000000);
-        QString refusal;
+        feetech::Refusal refusal;
         QVERIFY(
             !client()->writeValues(shared, {{QStringLiteral("max_temperature"), 70}}, &refusal));
-        QVERIFY2(refusal.contains(QLatin1String("ID 4")), qPrintable(refusal));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::SharedId);
+        QCOMPARE(refusal.servoId(), std::optional<quint8>(4));
+        QVERIFY2(refusal.describe().contains(QLatin1String("ID 4")),
+                 qPrintable(refusal.describe()));
+        refusal = {};
         QVERIFY(!client()->changeId(shared, 7, &refusal));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::SharedId);
         QVERIFY(
             testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write).isEmpty());
     }

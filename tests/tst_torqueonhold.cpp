@@ -34,9 +34,9 @@ private:
     {
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QString error;
-        if (!m_client->writeValues(index, values, &error)) {
-            qWarning("refused: %s", qPrintable(error));
+        feetech::Refusal refusal;
+        if (!m_client->writeValues(index, values, &refusal)) {
+            qWarning("refused: %s", qPrintable(refusal.describe()));
             return {};
         }
         if (!finished.wait(10000))

@@ -67,9 +67,8 @@ void BatchProgram::next()
         failCurrent(tr("Servo ID %1 is no longer on the bus.").arg(id));
         return;
     }
-    const QString blocker = m_client->writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        failCurrent(blocker);
+    if (const Refusal blocker = m_client->writeBlocker(index)) {
+        failCurrent(blocker.describe());
         return;
     }
     if (m_client->servos()->parameters(index)->hasEdits()) {
@@ -86,7 +85,7 @@ void BatchProgram::next()
     m_phase = Phase::Reading;
     OperationReply *reply = m_client->readServo(index);
     if (!reply) { // the bus went away
-        failCurrent(m_client->writeBlocker(index));
+        failCurrent(m_client->writeBlocker(index).describe());
         return;
     }
     connect(reply, &OperationReply::finished, this, &BatchProgram::onOperationFinished);
@@ -144,10 +143,11 @@ void BatchProgram::diffAndWrite(int index)
             return;
         }
     }
-    OperationReply *reply = m_client->apply(index, &error);
+    Refusal refusal;
+    OperationReply *reply = m_client->apply(index, &refusal);
     if (!reply) {
         parameters.revertAll();
-        failCurrent(error);
+        failCurrent(refusal.describe());
         return;
     }
     connect(reply, &OperationReply::finished, this, &BatchProgram::onOperationFinished);

@@ -227,9 +227,13 @@ bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
             *error = tr("%1 is no longer on the bus.").arg(servoName());
         return false;
     }
-    OperationReply *reply = m_client->writeValues(index, values, error);
-    if (!reply)
+    Refusal refusal;
+    OperationReply *reply = m_client->writeValues(index, values, &refusal);
+    if (!reply) {
+        if (error)
+            *error = refusal.describe();
         return false;
+    }
     connect(reply, &OperationReply::finished, this, &MotionTest::onWriteFinished);
     ++m_writesInFlight;
     m_commandUs = steadyMicroseconds();

@@ -98,10 +98,9 @@ std::optional<GuardEvent> BusGuard::lastEvent(int index) const
 
 OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, QString *error)
 {
-    const QString blocker = m_client->writeBlocker(index);
-    if (!blocker.isEmpty()) {
+    if (const Refusal blocker = m_client->writeBlocker(index)) {
         if (error)
-            *error = blocker;
+            *error = blocker.describe();
         return nullptr;
     }
     if (!m_client->servos()->at(index).info.table().find(u"status")) {
@@ -109,9 +108,13 @@ OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, QString *er
             *error = Tr::tr("This servo has no status register: there is nothing to recover.");
         return nullptr;
     }
-    return m_client->startOperation(
-        Operation::RecoverOverload, index, error, BusClient::Work::Foreground,
+    Refusal refusal;
+    OperationReply *reply = m_client->startOperation(
+        Operation::RecoverOverload, index, &refusal, BusClient::Work::Foreground,
         [checkOnly](Session &s, const ServoInfo &info) { s.recoverOverload(info, checkOnly); });
+    if (!reply && error)
+        *error = refusal.describe();
+    return reply;
 }
 
 } // namespace feetech

@@ -83,7 +83,7 @@ void HealthService::cancel()
 
 QString HealthService::moveTestBlocker(int index) const
 {
-    return m_client->identifyBlocker(index);
+    return m_client->identifyBlocker(index).describe();
 }
 
 OperationReply *HealthService::moveTest(int index, bool confirmed, QString *error)
@@ -98,11 +98,14 @@ OperationReply *HealthService::moveTest(int index, bool confirmed, QString *erro
         return nullptr;
     }
     m_moveTested.reset();
+    Refusal refusal;
     OperationReply *reply =
-        m_client->startOperation(Operation::MoveTest, index, error, BusClient::Work::Foreground,
+        m_client->startOperation(Operation::MoveTest, index, &refusal, BusClient::Work::Foreground,
                                  [](Session &s, const ServoInfo &target) { s.moveTest(target); });
     if (reply)
         connect(reply, &OperationReply::finished, this, &HealthService::onWorkFinished);
+    else if (error)
+        *error = refusal.describe();
     return reply;
 }
 

@@ -166,16 +166,16 @@ void DoctorPanel::moveSelected(bool confirm)
                                  QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Ok)
         return;
-    QString error;
+    feetech::Refusal refusal;
     m_moving = move;
     feetech::OperationReply *reply = move.newId >= 0
-        ? m_client->changeId(index, move.newId, &error)
-        : m_client->changeBaud(index, move.newBaud, &error);
+        ? m_client->changeId(index, move.newId, &refusal)
+        : m_client->changeBaud(index, move.newBaud, &refusal);
     if (reply) {
         connect(reply, &feetech::OperationReply::finished, this, &DoctorPanel::onOperationFinished);
     } else {
         m_moving.reset();
-        emit problem(error);
+        emit problem(refusal.describe());
     }
     updateMove();
 }
@@ -203,15 +203,15 @@ void DoctorPanel::onOperationFinished(const feetech::OperationResult &result)
 void DoctorPanel::changeBaudIfAsked()
 {
     const int index = m_client->servos()->indexOf(quint8(m_moving->newId), m_moving->servo.baud);
-    QString error;
+    feetech::Refusal refusal;
     feetech::OperationReply *reply =
-        index < 0 ? nullptr : m_client->changeBaud(index, m_moving->newBaud, &error);
+        index < 0 ? nullptr : m_client->changeBaud(index, m_moving->newBaud, &refusal);
     if (!reply) {
         m_moving.reset();
         updateMove();
-        emit problem(error.isEmpty() ? tr("The servo moved to its new ID could not be found to "
-                                          "change its rate; re-scan.")
-                                     : error);
+        emit problem(!refusal ? tr("The servo moved to its new ID could not be found to "
+                                   "change its rate; re-scan.")
+                              : refusal.describe());
         return;
     }
     connect(reply, &feetech::OperationReply::finished, this, &DoctorPanel::onOperationFinished);

@@ -537,12 +537,12 @@ void ControlPage::setStatus(const QString &text, Severity severity)
 
 bool ControlPage::write(WriteKind kind, const QVector<model::WriteItem> &values)
 {
-    QString error;
+    feetech::Refusal refusal;
     feetech::OperationReply *reply = kind == WriteKind::Goal
-        ? m_goals->send(m_index, values, &error)
-        : m_client->writeValues(m_index, values, &error);
+        ? m_goals->send(m_index, values, &refusal)
+        : m_client->writeValues(m_index, values, &refusal);
     if (!reply) {
-        setStatus(tr("%1: %2").arg(servoName(), error), Severity::Error);
+        setStatus(tr("%1: %2").arg(servoName(), refusal.describe()), Severity::Error);
         return false;
     }
     if (kind == WriteKind::Torque)

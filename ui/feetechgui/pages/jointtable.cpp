@@ -493,10 +493,11 @@ bool JointTable::setTorque(int row, bool on, QString *error)
     }
     const feetech::TorqueMode mode = on ? feetech::TorqueMode::On : feetech::TorqueMode::Off;
     const auto value = m_client->servos()->at(index).info.table().torqueValue(mode);
-    QString why = tr("its model has no torque enable");
+    feetech::Refusal refusal;
     feetech::OperationReply *reply =
-        value ? m_client->writeValues(index, {{kTorqueEnable, *value}}, &why) : nullptr;
+        value ? m_client->writeValues(index, {{kTorqueEnable, *value}}, &refusal) : nullptr;
     if (!reply) {
+        const QString why = value ? refusal.describe() : tr("its model has no torque enable");
         if (error)
             *error = tr("%1: torque not switched %2: %3")
                          .arg(servoName(row), on ? tr("on") : tr("off"), why);
@@ -573,10 +574,10 @@ bool JointTable::moveAll(QString *error)
         goals.append({servoIndex(row), *m_rows.at(row).target});
         ids.append(QString::number(m_rows.at(row).id));
     }
-    QString why;
-    const QVector<feetech::OperationReply *> replies = m_client->moveAll(goals, &why);
+    feetech::Refusal refusal;
+    const QVector<feetech::OperationReply *> replies = m_client->moveAll(goals, &refusal);
     if (replies.isEmpty())
-        return refuse(tr("Nothing was sent: %1").arg(why));
+        return refuse(tr("Nothing was sent: %1").arg(refusal.describe()));
     m_movesInFlight += int(replies.size());
     for (feetech::OperationReply *reply : replies)
         connect(reply, &feetech::OperationReply::finished, this, &JointTable::onMoveFinished);
@@ -632,10 +633,10 @@ bool JointTable::identify(int row, QString *error)
             *error = tr("That servo is no longer on the bus.");
         return false;
     }
-    QString why;
-    if (!m_client->identifyJoint(index, &why)) {
+    feetech::Refusal refusal;
+    if (!m_client->identifyJoint(index, &refusal)) {
         if (error)
-            *error = tr("%1 cannot be identified now: %2").arg(servoName(row), why);
+            *error = tr("%1 cannot be identified now: %2").arg(servoName(row), refusal.describe());
         return false;
     }
     setMessage(tr("Identifying %1: watch which horn moves…").arg(servoName(row)), Tone::Info);
@@ -653,7 +654,7 @@ void JointTable::refreshIdentifyButtons()
         QPushButton *button = identifyButton(row);
         if (!button)
             continue;
-        const QString why = m_client->identifyBlocker(servoIndex(row));
+        const QString why = m_client->identifyBlocker(servoIndex(row)).describe();
         button->setEnabled(why.isEmpty());
         button->setToolTip(why.isEmpty() ? tr("Wiggle %1 slowly with little torque, then put it "
                                               "back as it was")

@@ -475,18 +475,18 @@ void FeetechWorkspace::apply()
         if (answer != QMessageBox::Ok)
             return;
     }
-    QString error;
-    if (!m_client->applyAll(index, &error))
-        emit problem(tr("Nothing was written: %1").arg(error));
+    feetech::Refusal refusal;
+    if (!m_client->applyAll(index, &refusal))
+        emit problem(tr("Nothing was written: %1").arg(refusal.describe()));
 }
 
-void FeetechWorkspace::run(feetech::OperationReply *(feetech::BusClient::*operation)(int,
-                                                                                     QString *),
-                           const QString &what)
+void FeetechWorkspace::run(
+    feetech::OperationReply *(feetech::BusClient::*operation)(int, feetech::Refusal *),
+    const QString &what)
 {
-    QString error;
-    if (!(m_client->*operation)(currentIndex(), &error))
-        emit problem(error);
+    feetech::Refusal refusal;
+    if (!(m_client->*operation)(currentIndex(), &refusal))
+        emit problem(refusal.describe());
     else
         emit message(what);
 }
@@ -512,9 +512,9 @@ void FeetechWorkspace::changeId()
         emit problem(tr("ID %1 is already in use on this bus; nothing was written.").arg(newId));
         return;
     }
-    QString error;
-    if (!m_client->changeId(index, newId, &error))
-        emit problem(error);
+    feetech::Refusal refusal;
+    if (!m_client->changeId(index, newId, &refusal))
+        emit problem(refusal.describe());
 }
 
 void FeetechWorkspace::changeBaud()
@@ -535,9 +535,9 @@ void FeetechWorkspace::changeBaud()
         rates, int(rates.indexOf(QString::number(info.baud))), false, &ok);
     if (!ok || chosen.toInt() == info.baud)
         return;
-    QString error;
-    if (!m_client->changeBaud(index, chosen.toInt(), &error))
-        emit problem(error);
+    feetech::Refusal refusal;
+    if (!m_client->changeBaud(index, chosen.toInt(), &refusal))
+        emit problem(refusal.describe());
 }
 
 void FeetechWorkspace::calibrateMiddle()

@@ -24,6 +24,7 @@ class UnlockedNotice;
 
 namespace feetech {
 class BusClient;
+class Refusal;
 class OperationReply;
 } // namespace feetech
 
@@ -77,7 +78,7 @@ private:
     void changeBaud();
     void calibrateMiddle();
     void factoryReset();
-    void run(feetech::OperationReply *(feetech::BusClient::*operation)(int, QString *),
+    void run(feetech::OperationReply *(feetech::BusClient::*operation)(int, feetech::Refusal *),
              const QString &what);
     QString servoTitle() const;
 

@@ -44,9 +44,9 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
             m_dismissed.clear();
     });
     connect(m_lock, &QPushButton::clicked, this, [this] {
-        QString error;
-        if (m_index >= 0 && !m_client->lockEeprom(m_index, &error))
-            emit problem(error);
+        feetech::Refusal refusal;
+        if (m_index >= 0 && !m_client->lockEeprom(m_index, &refusal))
+            emit problem(refusal.describe());
     });
     connect(m_client->servos(), &feetech::ServoList::servoUpdated, this, [this](int index) {
         if (index == m_index)
