@@ -449,6 +449,20 @@ private slots:
         QCOMPARE(refusal.describe(), QStringLiteral("Held by a test."));
         m_client->releaseServo(1, k1M);
         QVERIFY(!m_client->identifyBlocker(0));
+
+        // The services next to the client refuse the same way.
+        QVERIFY(!m_client->health()->check({}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::NoServoToCheck);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(!m_client->health()->check({0, 42}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::NoServo);
+        QVERIFY(!m_client->health()->moveTest(0, false, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConfirmed);
+        QVERIFY2(refusal.describe().contains(QLatin1String("servo 1")),
+                 qPrintable(refusal.describe()));
+        QCOMPARE(m_client->health()->moveTestBlocker(sharedIndex).code(), Code::SharedId);
+        QVERIFY(!m_client->guard()->recoverOverload(unknownIndex, true, &refusal));
+        QCOMPARE(refusal.code(), Code::UnknownModel);
         // Nothing of all this was sent.
         QVERIFY(testsupport::feetechRequestsReceived(logPath(), Instruction::Write).isEmpty());
     }
@@ -467,6 +481,12 @@ private slots:
         QVERIFY(!m_client->lockEeprom(1, &refusal));
         QCOMPARE(refusal.code(), Code::Busy);
         QVERIFY(!m_client->reboot(1, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!m_client->health()->check({0, 1}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!m_client->motorSetup()->find({}, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!m_client->guard()->recoverOverload(1, true, &refusal));
         QCOMPARE(refusal.code(), Code::Busy);
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
     }
@@ -489,6 +509,10 @@ private slots:
         QVERIFY(m_client->moveAll({{0, 2048}}, &refusal).isEmpty());
         QCOMPARE(refusal.code(), Code::NotConnected);
         QVERIFY(!m_client->sendPacket(feetech::ping(1), k1M, 1, 0, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!m_client->health()->check({0}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!m_client->motorSetup()->checkJoints(k1M, {}, &refusal));
         QCOMPARE(refusal.code(), Code::NotConnected);
     }
 

@@ -4,17 +4,6 @@
 
 #include "busclient.h"
 
-#include <QCoreApplication>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
-};
-
-} // namespace
-
 namespace feetech {
 
 BusGuard::BusGuard(BusClient *client)
@@ -96,25 +85,17 @@ std::optional<GuardEvent> BusGuard::lastEvent(int index) const
     return *event;
 }
 
-OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, QString *error)
+OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, Refusal *refusal)
 {
-    if (const Refusal blocker = m_client->writeBlocker(index)) {
-        if (error)
-            *error = blocker.describe();
+    if (refused(m_client->writeBlocker(index), refusal))
         return nullptr;
-    }
     if (!m_client->servos()->at(index).info.table().find(u"status")) {
-        if (error)
-            *error = Tr::tr("This servo has no status register: there is nothing to recover.");
+        refused(Refusal(Refusal::Code::NoStatusRegister), refusal);
         return nullptr;
     }
-    Refusal refusal;
-    OperationReply *reply = m_client->startOperation(
-        Operation::RecoverOverload, index, &refusal, BusClient::Work::Foreground,
+    return m_client->startOperation(
+        Operation::RecoverOverload, index, refusal, BusClient::Work::Foreground,
         [checkOnly](Session &s, const ServoInfo &info) { s.recoverOverload(info, checkOnly); });
-    if (!reply && error)
-        *error = refusal.describe();
-    return reply;
 }
 
 } // namespace feetech

@@ -3,17 +3,6 @@
 
 #include "busclient.h"
 
-#include <QCoreApplication>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
-};
-
-} // namespace
-
 namespace feetech {
 
 MotorSetupService::MotorSetupService(BusClient *client)
@@ -28,19 +17,16 @@ MotorSetupService::MotorSetupService(BusClient *client)
             [this](const QVector<JointCheck> &joints) { m_jointsChecked = joints; });
 }
 
-OperationReply *MotorSetupService::start(Operation operation, QString *error,
+OperationReply *MotorSetupService::start(Operation operation, Refusal *refusal,
                                          const std::function<void(Session &)> &work)
 {
-    QString why;
+    Refusal why;
     if (!m_client->isConnected())
-        why = Tr::tr("The bus is not connected.");
+        why = Refusal(Refusal::Code::NotConnected);
     else if (m_client->isBusy())
-        why = Tr::tr("Another operation is still running.");
-    if (!why.isEmpty()) {
-        if (error)
-            *error = why;
+        why = Refusal(Refusal::Code::Busy);
+    if (refused(why, refusal))
         return nullptr;
-    }
     m_result.reset();
     m_jointsChecked.reset();
     // No servo of the list is its target: the work finds its own servo.
@@ -49,20 +35,20 @@ OperationReply *MotorSetupService::start(Operation operation, QString *error,
     return reply;
 }
 
-OperationReply *MotorSetupService::find(const MotorTarget &target, QString *error)
+OperationReply *MotorSetupService::find(const MotorTarget &target, Refusal *refusal)
 {
-    return start(Operation::FindMotor, error, [target](Session &s) { s.findMotor(target); });
+    return start(Operation::FindMotor, refusal, [target](Session &s) { s.findMotor(target); });
 }
 
-OperationReply *MotorSetupService::setUp(const MotorTarget &target, QString *error)
+OperationReply *MotorSetupService::setUp(const MotorTarget &target, Refusal *refusal)
 {
-    return start(Operation::SetUpMotor, error, [target](Session &s) { s.setUpMotor(target); });
+    return start(Operation::SetUpMotor, refusal, [target](Session &s) { s.setUpMotor(target); });
 }
 
 OperationReply *MotorSetupService::checkJoints(qint32 baud, const QVector<JointCheck> &joints,
-                                               QString *error)
+                                               Refusal *refusal)
 {
-    return start(Operation::CheckJoints, error,
+    return start(Operation::CheckJoints, refusal,
                  [baud, joints](Session &s) { s.checkJoints(baud, joints); });
 }
 

@@ -49,12 +49,13 @@ void OverloadRecoveryDialog::start()
 {
     if (!m_client)
         return;
-    QString error;
+    feetech::Refusal refusal;
     const int index = m_client->servos()->indexOf(m_id, m_baud);
     feetech::OperationReply *reply =
-        index < 0 ? nullptr : m_client->guard()->recoverOverload(index, m_checkOnly, &error);
+        index < 0 ? nullptr : m_client->guard()->recoverOverload(index, m_checkOnly, &refusal);
     if (!reply) {
-        m_text->setText(index < 0 ? tr("Servo ID %1 is no longer on the bus.").arg(m_id) : error);
+        m_text->setText(index < 0 ? tr("Servo ID %1 is no longer on the bus.").arg(m_id)
+                                  : refusal.describe());
         return;
     }
     connect(reply, &feetech::OperationReply::finished, this,
