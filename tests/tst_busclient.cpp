@@ -66,10 +66,10 @@ private slots:
     {
         for (int i = 0; i < 3; ++i) {
             QCOMPARE(m_client->servos()->at(i).info.id, quint8(i + 1));
-            QCOMPARE(m_client->servos()->indexOf(quint8(i + 1), k1M), i);
+            QCOMPARE(m_client->servos()->indexOf({quint8(i + 1), k1M}), i);
             QVERIFY(!m_client->servos()->at(i).read);
         }
-        QCOMPARE(m_client->servos()->indexOf(2, 500000), -1);
+        QCOMPARE(m_client->servos()->indexOf({2, 500000}), -1);
         QCOMPARE(m_client->servos()->idsInUse(), (QVector<int> {1, 2, 3}));
         // The list is a table model too, one row per servo in the tree's order.
         feetech::ServoList &list = *m_client->servos();
@@ -142,8 +142,8 @@ private slots:
         QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
         feetech::Refusal refusal;
         QVERIFY2(m_client->applyAll(0, &refusal), qPrintable(refusal.describe()));
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf(9, k1M) >= 0, 10000);
-        QCOMPARE(m_client->servos()->indexOf(1, k1M), -1);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf({9, k1M}) >= 0, 10000);
+        QCOMPARE(m_client->servos()->indexOf({1, k1M}), -1);
         QCOMPARE(simulatorValue(9, kMaxTemperature), 66);
         // Register first, at the old ID; then the ID.
         int temperatureWrite = -1;
@@ -157,7 +157,7 @@ private slots:
                 idWrite = i;
         }
         QVERIFY(temperatureWrite >= 0 && temperatureWrite < idWrite);
-        const int moved = m_client->servos()->indexOf(9, k1M);
+        const int moved = m_client->servos()->indexOf({9, k1M});
         QVERIFY(!parameters(moved).pendingValue(QStringLiteral("id")));
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
         QCOMPARE(busy.first().at(0).toBool(), true);
@@ -188,7 +188,7 @@ private slots:
         QCOMPARE(results.at(2).operation, feetech::Operation::ChangeId);
         QVERIFY2(results.at(2).ok, qPrintable(results.at(2).message));
         QVERIFY(results.at(2).final);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf(9, k1M) >= 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf({9, k1M}) >= 0, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
     }
 
@@ -370,9 +370,9 @@ private slots:
         unknown.id = 8;
         unknown.baud = k1M;
         m_client->servos()->add(unknown);
-        const int sharedIndex = m_client->servos()->indexOf(7, k1M);
-        const int unknownIndex = m_client->servos()->indexOf(8, k1M);
-        const int scsIndex = m_client->servos()->indexOf(3, k1M);
+        const int sharedIndex = m_client->servos()->indexOf({7, k1M});
+        const int unknownIndex = m_client->servos()->indexOf({8, k1M});
+        const int scsIndex = m_client->servos()->indexOf({3, k1M});
         QVERIFY(!m_client->writeBlocker(0));
         QVERIFY(m_client->writeBlocker(0).describe().isEmpty());
 
@@ -447,7 +447,7 @@ private slots:
         refusal = m_client->identifyBlocker(0);
         QCOMPARE(refusal.code(), Code::ServoHeld);
         QCOMPARE(refusal.describe(), QStringLiteral("Held by a test."));
-        m_client->releaseServo(1, k1M);
+        m_client->releaseServo({1, k1M});
         QVERIFY(!m_client->identifyBlocker(0));
 
         // The services next to the client refuse the same way.

@@ -112,7 +112,7 @@ private slots:
         QCOMPARE(baud->child(1)->text(0), QStringLiteral("ID 4 (shared!)"));
         QVERIFY2(baud->child(1)->toolTip(0).contains(QLatin1String("Nothing is written")),
                  qPrintable(baud->child(1)->toolTip(0)));
-        const int shared = client()->servos()->indexOf(4, 1000000);
+        const int shared = client()->servos()->indexOf({4, 1000000});
         feetech::Refusal refusal;
         QVERIFY(
             !client()->writeValues(shared, {{QStringLiteral("max_temperature"), 70}}, &refusal));
@@ -200,8 +200,8 @@ private slots:
         idEditor->setValue(7);
         acceptNextMessageBox();
         settings->findChild<QPushButton *>(QStringLiteral("applyButton"))->click();
-        QTRY_VERIFY_WITH_TIMEOUT(client()->servos()->indexOf(7, k1M) >= 0, 10000);
-        QCOMPARE(client()->servos()->indexOf(1, k1M), -1);
+        QTRY_VERIFY_WITH_TIMEOUT(client()->servos()->indexOf({7, k1M}) >= 0, 10000);
+        QCOMPARE(client()->servos()->indexOf({1, k1M}), -1);
         QTRY_COMPARE(client()->servos()->at(workspace()->currentIndex()).info.id, quint8(7));
         QCOMPARE(simulatorValue(7, QStringLiteral("id")), 7);
         // The tree shows it under its new ID.

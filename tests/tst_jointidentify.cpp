@@ -186,9 +186,9 @@ private slots:
         QCOMPARE(refusal.code(), feetech::Refusal::Code::ServoHeld);
         QVERIFY(!m_client->isIdentifying(index));
         // The other servo is free.
-        QVERIFY2(
-            !m_client->identifyBlocker(m_client->servos()->indexOf(2, k1M)),
-            qPrintable(m_client->identifyBlocker(m_client->servos()->indexOf(2, k1M)).describe()));
+        QVERIFY2(!m_client->identifyBlocker(m_client->servos()->indexOf({2, k1M})),
+                 qPrintable(
+                     m_client->identifyBlocker(m_client->servos()->indexOf({2, k1M})).describe()));
         test.cancel();
         QVERIFY(!m_client->identifyBlocker(index));
     }
@@ -280,8 +280,8 @@ private slots:
         QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
         m_client->scan(options);
         QTRY_VERIFY_WITH_TIMEOUT(!scanned.isEmpty(), 20000);
-        const int slow = m_client->servos()->indexOf(1, k500k);
-        const int fast = m_client->servos()->indexOf(2, k1M);
+        const int slow = m_client->servos()->indexOf({1, k500k});
+        const int fast = m_client->servos()->indexOf({2, k1M});
         QVERIFY(slow >= 0 && fast >= 0);
         m_client->readServo(slow);
         QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->at(slow).read, 10000);

@@ -75,7 +75,7 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
 MotionTest::~MotionTest()
 {
     if (isRunning() && m_client) {
-        m_client->releaseServo(m_id, m_baud);
+        m_client->releaseServo({m_id, m_baud});
         restoreMonitor();
     }
 }
@@ -211,7 +211,7 @@ void MotionTest::cancel()
 
 int MotionTest::servoIndex() const
 {
-    return m_client->servos()->indexOf(m_id, m_baud);
+    return m_client->servos()->indexOf({m_id, m_baud});
 }
 
 QString MotionTest::servoName() const
@@ -445,7 +445,7 @@ void MotionTest::finish()
     m_timer->stop();
     m_phase = Phase::Idle;
     if (m_client)
-        m_client->releaseServo(m_id, m_baud);
+        m_client->releaseServo({m_id, m_baud});
     restoreMonitor();
     emit runningChanged(false);
 }

@@ -37,7 +37,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     });
     connect(session, &Session::memoryRead, this, &BusClient::onMemoryRead);
     connect(session, &Session::statusSeen, this, [this](quint8 id, qint32 baud, quint8 status) {
-        const int index = m_servos->indexOf(id, baud);
+        const int index = m_servos->indexOf({id, baud});
         if (index < 0)
             return;
         m_servos->entry(index).statusByte = status;
@@ -124,7 +124,7 @@ Refusal BusClient::commandBlocker(int index) const
 void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                              ReadSource source, quint8 statusByte)
 {
-    const int index = m_servos->indexOf(id, baud);
+    const int index = m_servos->indexOf({id, baud});
     if (index < 0)
         return;
     Servo &entry = m_servos->entry(index);
@@ -158,7 +158,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
         pending->second.id = result.servo.id;
         pending->second.baud = result.servo.baud;
     }
-    const int index = m_servos->indexOf(target.id, target.baud);
+    const int index = m_servos->indexOf({target.id, target.baud});
     if (index >= 0) {
         Servo &entry = m_servos->entry(index);
         model::ParameterModel &parameters = *entry.parameters;
@@ -198,7 +198,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
             parameters.revert(QStringLiteral("torque_enable"));
         }
         if (result.ok && flow && result.final) // what the flow changed shows
-            readServo(m_servos->indexOf(entry.info.id, entry.info.baud));
+            readServo(m_servos->indexOf(entry.info.address()));
     }
     if (result.operation == Operation::Identify)
         m_identifying.reset();
@@ -547,10 +547,10 @@ void BusClient::holdServo(int index, const QString &reason)
     m_servos->noteUpdated(index); // what it may do now has changed
 }
 
-void BusClient::releaseServo(quint8 id, qint32 baud)
+void BusClient::releaseServo(const ServoAddress &address)
 {
-    if (m_held.remove({id, baud}) > 0 && m_servos->indexOf(id, baud) >= 0)
-        m_servos->noteUpdated(m_servos->indexOf(id, baud));
+    if (m_held.remove(address) > 0 && m_servos->indexOf(address) >= 0)
+        m_servos->noteUpdated(m_servos->indexOf(address));
 }
 OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
                                       std::optional<quint8> replyId, int replyDataSize,

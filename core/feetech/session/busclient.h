@@ -100,7 +100,7 @@ public:
     // What moves a servo outside the session's operations (a motion test) holds it while it
     // runs: identifyBlocker gives ServoHeld with `reason` meanwhile.
     void holdServo(int index, const QString &reason);
-    void releaseServo(quint8 id, qint32 baud);
+    void releaseServo(const ServoAddress &address);
 
     // ---- live monitoring and control
 

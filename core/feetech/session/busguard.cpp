@@ -15,7 +15,7 @@ BusGuard::BusGuard(BusClient *client)
     connect(client->session(), &Session::guardEvent, this, [this](const GuardEvent &guarded) {
         m_lastEvent.insert({guarded.id, guarded.baud}, guarded);
         emit event(guarded);
-        const int index = m_client->servos()->indexOf(guarded.id, guarded.baud);
+        const int index = m_client->servos()->indexOf({guarded.id, guarded.baud});
         if (index >= 0)
             m_client->servos()->noteUpdated(index);
     });

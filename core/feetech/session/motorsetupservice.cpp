@@ -80,7 +80,7 @@ void MotorSetupService::onWorkFinished(const OperationResult &result)
     }
     m_result.reset();
     // A servo of the list that was set up now answers elsewhere.
-    const int index = m_client->servos()->indexOf(reported.from.id, reported.from.baud);
+    const int index = m_client->servos()->indexOf(reported.from.address());
     const bool moved = reported.from.id != reported.to.id || reported.from.baud != reported.to.baud;
     if (reported.setUp && reported.ok && index >= 0 && moved)
         m_client->servos()->move(index, reported.to);

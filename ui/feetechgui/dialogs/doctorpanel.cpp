@@ -155,7 +155,7 @@ void DoctorPanel::moveSelected(bool confirm)
     if (row < 0 || row >= m_findings.size() || m_findings.at(row).moves.isEmpty())
         return;
     const feetech::ServoMove move = m_findings.at(row).moves.first();
-    const int index = m_client->servos()->indexOf(move.servo.id, move.servo.baud);
+    const int index = m_client->servos()->indexOf(move.servo.address());
     if (index < 0) {
         emit problem(tr("Servo %1 is no longer on the bus; re-scan first.").arg(move.servo.id));
         return;
@@ -202,7 +202,7 @@ void DoctorPanel::onOperationFinished(const feetech::OperationResult &result)
 
 void DoctorPanel::changeBaudIfAsked()
 {
-    const int index = m_client->servos()->indexOf(quint8(m_moving->newId), m_moving->servo.baud);
+    const int index = m_client->servos()->indexOf({quint8(m_moving->newId), m_moving->servo.baud});
     feetech::Refusal refusal;
     feetech::OperationReply *reply =
         index < 0 ? nullptr : m_client->changeBaud(index, m_moving->newBaud, &refusal);

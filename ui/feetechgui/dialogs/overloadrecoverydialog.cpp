@@ -50,7 +50,7 @@ void OverloadRecoveryDialog::start()
     if (!m_client)
         return;
     feetech::Refusal refusal;
-    const int index = m_client->servos()->indexOf(m_id, m_baud);
+    const int index = m_client->servos()->indexOf({m_id, m_baud});
     feetech::OperationReply *reply =
         index < 0 ? nullptr : m_client->guard()->recoverOverload(index, m_checkOnly, &refusal);
     if (!reply) {

@@ -364,7 +364,7 @@ void RobotTemplateDialog::onOperationFinished(const feetech::OperationResult &re
         m_error->setText(result.message);
         return;
     }
-    applyServoValues(row, m_client->servos()->indexOf(result.servo.id, result.servo.baud));
+    applyServoValues(row, m_client->servos()->indexOf(result.servo.address()));
 }
 
 void RobotTemplateDialog::applyServoValues(int row, int index)

@@ -234,7 +234,7 @@ QString ControlPage::servoName() const
 void ControlPage::onServosChanged()
 {
     // The list was rebuilt or reordered: find the servo shown by its address.
-    const int index = m_servo ? m_client->servos()->indexOf(m_servo->first, m_servo->second) : -1;
+    const int index = m_servo ? m_client->servos()->indexOf({m_servo->first, m_servo->second}) : -1;
     if (index != m_index) {
         m_index = index;
         if (index < 0)

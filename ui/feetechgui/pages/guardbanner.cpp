@@ -74,7 +74,7 @@ QString GuardBanner::text() const
 void GuardBanner::onServosChanged()
 {
     // The list was rebuilt or reordered: find the servo shown by its address.
-    m_index = m_servo ? m_client->servos()->indexOf(m_servo->first, m_servo->second) : -1;
+    m_index = m_servo ? m_client->servos()->indexOf({m_servo->first, m_servo->second}) : -1;
     if (m_index < 0)
         m_servo.reset();
 }

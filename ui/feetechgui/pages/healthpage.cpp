@@ -201,7 +201,7 @@ bool HealthPage::moveTest(QString *error)
                 .arg(info.model.name)
                 .arg(feetech::HealthMoveTest::kAmplitude);
         const bool confirmed = m_confirm(question);
-        index = m_client->servos()->indexOf(info.id, info.baud);
+        index = m_client->servos()->indexOf(info.address());
         if (!confirmed)
             why = tr("The move test was not confirmed: nothing moved.");
         else if (index < 0)

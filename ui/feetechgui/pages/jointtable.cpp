@@ -153,7 +153,7 @@ int JointTable::servoIndex(int row) const
 {
     if (row < 0 || row >= rowCount())
         return -1;
-    return m_client->servos()->indexOf(m_rows.at(row).id, m_rows.at(row).baud);
+    return m_client->servos()->indexOf({m_rows.at(row).id, m_rows.at(row).baud});
 }
 
 QVector<feetech::JointTarget> JointTable::joints() const

@@ -178,7 +178,7 @@ void MonitorReadouts::fitColumns()
 
 QString MonitorReadouts::statusText(const MonitorServoKey &key, quint8 bits) const
 {
-    const int index = m_client ? m_client->servos()->indexOf(key.id, key.baud) : -1;
+    const int index = m_client ? m_client->servos()->indexOf({key.id, key.baud}) : -1;
     if (index >= 0)
         return feetech::servoStatusText(m_client->servos()->at(index).info.table(), bits);
     return bits == 0 ? tr("none") : QStringLiteral("0x%1").arg(bits, 2, 16, QLatin1Char('0'));

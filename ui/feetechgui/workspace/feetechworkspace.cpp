@@ -272,7 +272,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
 
 int FeetechWorkspace::currentIndex() const
 {
-    return m_current ? m_client->servos()->indexOf(m_current->first, m_current->second) : -1;
+    return m_current ? m_client->servos()->indexOf({m_current->first, m_current->second}) : -1;
 }
 
 void FeetechWorkspace::setPortName(const QString &name)

@@ -119,7 +119,7 @@ QVector<int> ServoTree::selectedServos() const
         if (!id.isValid())
             continue;
         const int index = m_client->servos()->indexOf(
-            quint8(id.toUInt()), qint32((*it)->data(ServoColumn, kBaudRole).toInt()));
+            {quint8(id.toUInt()), qint32((*it)->data(ServoColumn, kBaudRole).toInt())});
         if (index >= 0)
             indexes.append(index);
     }
