@@ -218,7 +218,7 @@ private slots:
             simulator.feetechBus()->findServo(2)->setValue(u"model_major", 77);
         });
         connectAndScan();
-        workspace()->selectServo(2, k1M);
+        workspace()->selectServo({2, k1M});
         QTRY_VERIFY(client()->servos()->at(workspace()->currentIndex()).read);
         workspace()->tabs()->setCurrentIndex(1);
         const QModelIndex byte = valueIndex(QStringLiteral("byte_003"));

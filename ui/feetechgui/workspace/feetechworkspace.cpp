@@ -254,8 +254,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
                 if (!completed)
                     emit problem(text);
                 if (!m_current && m_client->servos()->count() > 0)
-                    selectServo(m_client->servos()->at(0).info.id,
-                                m_client->servos()->at(0).info.baud);
+                    selectServo(m_client->servos()->at(0).info.address());
                 updateActions();
             });
     m_robot = new RobotActions(m_client, this);
@@ -272,7 +271,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
 
 int FeetechWorkspace::currentIndex() const
 {
-    return m_current ? m_client->servos()->indexOf({m_current->first, m_current->second}) : -1;
+    return m_current ? m_client->servos()->indexOf(*m_current) : -1;
 }
 
 void FeetechWorkspace::setPortName(const QString &name)
@@ -281,9 +280,9 @@ void FeetechWorkspace::setPortName(const QString &name)
     rebuildTree();
 }
 
-void FeetechWorkspace::selectServo(quint8 id, qint32 baud)
+void FeetechWorkspace::selectServo(const feetech::ServoAddress &servo)
 {
-    m_current = std::make_pair(id, baud);
+    m_current = servo;
     {
         const QSignalBlocker quiet(m_tree);
         m_tree->clearSelection(); // this one servo, not those selected before
@@ -309,9 +308,9 @@ void FeetechWorkspace::rebuildTree()
     updateActions();
 }
 
-void FeetechWorkspace::showChosenServo(quint8 id, qint32 baud)
+void FeetechWorkspace::showChosenServo(const feetech::ServoAddress &servo)
 {
-    m_current = std::make_pair(id, baud);
+    m_current = servo;
     showServo();
     readIfNew();
 }
@@ -596,7 +595,7 @@ void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &resul
     if (result.ok && m_current
         && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
             || result.operation == Operation::FactoryReset))
-        m_current = std::make_pair(result.servo.id, result.servo.baud);
+        m_current = result.servo.address();
     if (result.ok)
         emit message(result.message);
     else

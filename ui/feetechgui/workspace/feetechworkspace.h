@@ -37,7 +37,7 @@ public:
 
     // The servo the pages show (-1: none).
     int currentIndex() const;
-    void selectServo(quint8 id, qint32 baud);
+    void selectServo(const feetech::ServoAddress &servo);
     void setPortName(const QString &name); // the tree's top item
 
     void openScanDialog();
@@ -67,7 +67,7 @@ signals:
 
 private:
     void rebuildTree();
-    void showChosenServo(quint8 id, qint32 baud);
+    void showChosenServo(const feetech::ServoAddress &servo);
     void showServo();
     void readIfNew();
     void updateHeader();
@@ -84,7 +84,7 @@ private:
 
     feetech::BusClient *m_client = nullptr;
     feetech::ScanOptions m_scanOptions;
-    std::optional<std::pair<quint8, qint32>> m_current; // ID and baud of the servo shown
+    std::optional<feetech::ServoAddress> m_current; // the servo shown
 
     ServoTree *m_tree = nullptr;
     QPushButton *m_allTorqueOff = nullptr;
