@@ -111,7 +111,7 @@ private slots:
     {
         connectAndScan();
         JointTable *joints = workspace()->jointTable();
-        const int row = joints->rowOf(1, k1M);
+        const int row = joints->rowOf({1, k1M});
         QPushButton *button = joints->identifyButton(row);
         QVERIFY(button);
         QTRY_VERIFY(button->isEnabled());
@@ -124,7 +124,7 @@ private slots:
         QTRY_VERIFY(!button->isEnabled());
         QVERIFY(button->toolTip().contains(QStringLiteral("motion test")));
         // The other servos stay free.
-        QVERIFY(joints->identifyButton(joints->rowOf(2, k1M))->isEnabled());
+        QVERIFY(joints->identifyButton(joints->rowOf({2, k1M}))->isEnabled());
         test.cancel();
         QTRY_VERIFY(button->isEnabled());
         QTRY_VERIFY(!client()->isBusy());
