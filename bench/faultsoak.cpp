@@ -296,11 +296,12 @@ SoakCounts soakFeetech(const SoakOptions &options)
             parameters.edit(key, value);
             asked.insert(key, value);
         }
-        QString refusal;
+        feetech::Refusal refusal;
         const auto result = runOperation([&] { return client.apply(index, &refusal); });
         if (!result) {
             ++counts.hangs;
-            note(counts, QStringLiteral("%1: an apply never finished (%2)").arg(who, refusal));
+            note(counts,
+                 QStringLiteral("%1: an apply never finished (%2)").arg(who, refusal.describe()));
         } else {
             for (const QString &key : keys)
                 judgeWrite(counts, parameters, key, asked.value(key), heldValue(key).value_or(-1),

@@ -224,7 +224,7 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
     }
     case Work::FeetechApply:
     case Work::FeetechFlow: {
-        QString error;
+        feetech::Refusal refusal;
         feetech::OperationReply *reply = nullptr;
         if (work == Work::FeetechApply) {
             const qint64 now = client.servos()
@@ -233,12 +233,12 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
                                    .value_or(70);
             client.servos()->parameters(0)->edit(QStringLiteral("max_temperature"),
                                                  now == 70 ? 71 : 70);
-            reply = client.apply(0, &error);
+            reply = client.apply(0, &refusal);
         } else {
-            reply = client.reboot(0, &error);
+            reply = client.reboot(0, &refusal);
         }
         if (!reply)
-            return QStringLiteral("refused: ") + error;
+            return QStringLiteral("refused: ") + refusal.describe();
         const auto connection =
             QObject::connect(reply, &feetech::OperationReply::finished, [&ended] { ended = true; });
         pause(cutAfterMs / 10);

@@ -112,7 +112,7 @@ inline int connectScanAndRead(feetech::BusClient &client, const QString &link, i
 {
     if (!connectAndScan(client, link, lastId))
         return -1;
-    const int index = client.servos()->indexOf(id, 1000000);
+    const int index = client.servos()->indexOf({id, 1000000});
     if (index < 0)
         return -1;
     client.readServo(index);

@@ -141,7 +141,7 @@ private slots:
     void aServoWithEditsOfItsOwnIsLeftAlone()
     {
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 4));
-        const int index = m_client->servos()->indexOf(2, k1M);
+        const int index = m_client->servos()->indexOf({2, k1M});
         QVERIFY(m_client->servos()->parameters(index)->edit(QStringLiteral("d_gain"), 5));
         const qint32 gain = simulatorValue(2, u"p_gain");
         const QVector<feetech::ProgramOutcome> outcomes = runOnAll();

@@ -2,6 +2,7 @@
 #include "feetechbus.h"
 
 #include "busclient.h"
+#include "feetechpacket.h"
 #include "operationlog.h"
 
 #include <QSignalSpy>
@@ -65,10 +66,10 @@ private slots:
     {
         for (int i = 0; i < 3; ++i) {
             QCOMPARE(m_client->servos()->at(i).info.id, quint8(i + 1));
-            QCOMPARE(m_client->servos()->indexOf(quint8(i + 1), k1M), i);
+            QCOMPARE(m_client->servos()->indexOf({quint8(i + 1), k1M}), i);
             QVERIFY(!m_client->servos()->at(i).read);
         }
-        QCOMPARE(m_client->servos()->indexOf(2, 500000), -1);
+        QCOMPARE(m_client->servos()->indexOf({2, 500000}), -1);
         QCOMPARE(m_client->servos()->idsInUse(), (QVector<int> {1, 2, 3}));
         // The list is a table model too, one row per servo in the tree's order.
         feetech::ServoList &list = *m_client->servos();
@@ -120,8 +121,8 @@ private slots:
     {
         QVERIFY(parameters(0).edit(kMaxTemperature, 66));
         QVERIFY(parameters(0).edit(QStringLiteral("id"), 9));
-        QString error;
-        QVERIFY2(m_client->apply(0, &error), qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->apply(0, &refusal), qPrintable(refusal.describe()));
         QCOMPARE(parameters(0).state(kMaxTemperature), State::Writing);
         QTRY_COMPARE_WITH_TIMEOUT(parameters(0).state(kMaxTemperature), State::Verified, 10000);
         QCOMPARE(simulatorValue(1, kMaxTemperature), 66);
@@ -139,10 +140,10 @@ private slots:
         const int temperatureAddress = addressOf(0, kMaxTemperature);
         const int idAddress = addressOf(0, QStringLiteral("id"));
         QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
-        QString error;
-        QVERIFY2(m_client->applyAll(0, &error), qPrintable(error));
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf(9, k1M) >= 0, 10000);
-        QCOMPARE(m_client->servos()->indexOf(1, k1M), -1);
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->applyAll(0, &refusal), qPrintable(refusal.describe()));
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf({9, k1M}) >= 0, 10000);
+        QCOMPARE(m_client->servos()->indexOf({1, k1M}), -1);
         QCOMPARE(simulatorValue(9, kMaxTemperature), 66);
         // Register first, at the old ID; then the ID.
         int temperatureWrite = -1;
@@ -156,7 +157,7 @@ private slots:
                 idWrite = i;
         }
         QVERIFY(temperatureWrite >= 0 && temperatureWrite < idWrite);
-        const int moved = m_client->servos()->indexOf(9, k1M);
+        const int moved = m_client->servos()->indexOf({9, k1M});
         QVERIFY(!parameters(moved).pendingValue(QStringLiteral("id")));
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
         QCOMPARE(busy.first().at(0).toBool(), true);
@@ -169,8 +170,8 @@ private slots:
         QVERIFY(parameters(0).edit(QStringLiteral("id"), 9));
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QString error;
-        QVERIFY2(m_client->applyAll(0, &error), qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->applyAll(0, &refusal), qPrintable(refusal.describe()));
         // Asked while the register write runs: it must not wait for the ID change after it.
         m_client->allTorqueOff();
         QVector<OperationResult> results; // the reads after a flow aside
@@ -187,7 +188,7 @@ private slots:
         QCOMPARE(results.at(2).operation, feetech::Operation::ChangeId);
         QVERIFY2(results.at(2).ok, qPrintable(results.at(2).message));
         QVERIFY(results.at(2).final);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf(9, k1M) >= 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->indexOf({9, k1M}) >= 0, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
     }
 
@@ -324,8 +325,9 @@ private slots:
         QSignalSpy busy(m_client.get(), &BusClient::busyChanged);
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QString error;
-        QVERIFY2(m_client->writeValues(0, {{kMaxTemperature, 70}}, &error), qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->writeValues(0, {{kMaxTemperature, 70}}, &refusal),
+                 qPrintable(refusal.describe()));
         const OperationResult result = nextResult(finished);
         QVERIFY2(result.ok, qPrintable(result.message));
         QVERIFY(result.control);
@@ -345,15 +347,173 @@ private slots:
         QCOMPARE(busy.first().at(0).toBool(), true);
         QVERIFY(m_client->isBusy());
         QVERIFY(parameters(1).edit(kMaxTemperature, 66));
-        QString error;
-        QVERIFY(!m_client->apply(1, &error));
-        QCOMPARE(error, m_client->writeBlocker(1));
-        QVERIFY(!error.isEmpty());
+        feetech::Refusal refusal;
+        QVERIFY(!m_client->apply(1, &refusal));
+        QCOMPARE(refusal, m_client->writeBlocker(1));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::Busy);
         QCOMPARE(parameters(1).state(kMaxTemperature), State::Edited);
         QTRY_COMPARE_WITH_TIMEOUT(busy.size(), 2, 10000);
         QCOMPARE(busy.last().at(0).toBool(), false);
         QVERIFY(m_client->servos()->at(0).read);
-        QVERIFY(m_client->writeBlocker(1).isEmpty());
+        QVERIFY(!m_client->writeBlocker(1));
+    }
+
+    void eachRefusalComesWithItsCodeAndASentence()
+    {
+        using Code = feetech::Refusal::Code;
+        // A shared ID and an unknown model, as a scan lists them.
+        feetech::ServoInfo shared = m_client->servos()->at(0).info;
+        shared.id = 7;
+        shared.sharedId = true;
+        m_client->servos()->add(shared);
+        feetech::ServoInfo unknown;
+        unknown.id = 8;
+        unknown.baud = k1M;
+        m_client->servos()->add(unknown);
+        const int sharedIndex = m_client->servos()->indexOf({7, k1M});
+        const int unknownIndex = m_client->servos()->indexOf({8, k1M});
+        const int scsIndex = m_client->servos()->indexOf({3, k1M});
+        QVERIFY(!m_client->writeBlocker(0));
+        QVERIFY(m_client->writeBlocker(0).describe().isEmpty());
+
+        feetech::Refusal refusal;
+        QVERIFY(!m_client->changeId(sharedIndex, 9, &refusal));
+        QCOMPARE(refusal.code(), Code::SharedId);
+        QVERIFY2(refusal.describe().contains(QLatin1String("ID 7")),
+                 qPrintable(refusal.describe()));
+        QCOMPARE(m_client->commandBlocker(sharedIndex).code(), Code::SharedId);
+        QCOMPARE(m_client->identifyBlocker(sharedIndex).code(), Code::SharedId);
+
+        QVERIFY(!m_client->apply(unknownIndex, &refusal));
+        QCOMPARE(refusal.code(), Code::UnknownModel);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(!m_client->commandBlocker(unknownIndex)); // an unknown model may be rebooted
+
+        QVERIFY(!m_client->factoryReset(42, &refusal));
+        QCOMPARE(refusal.code(), Code::NoServo);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(!m_client->lockEeprom(-1, &refusal));
+        QCOMPARE(refusal.code(), Code::NoServo);
+
+        QVERIFY(!m_client->changeId(0, 2, &refusal));
+        QCOMPARE(refusal.code(), Code::IdInUse);
+        QCOMPARE(refusal.value(), 2);
+        QVERIFY2(refusal.describe().contains(QLatin1String("ID 2")),
+                 qPrintable(refusal.describe()));
+
+        QVERIFY(!m_client->calibrateMiddle(scsIndex, &refusal));
+        QCOMPARE(refusal.code(), Code::NoMiddleCalibration);
+        QVERIFY(!refusal.describe().isEmpty());
+
+        QVERIFY(!m_client->apply(0, &refusal));
+        QCOMPARE(refusal.code(), Code::NothingToWrite);
+        QVERIFY(!m_client->writeValues(0, {}, &refusal));
+        QCOMPARE(refusal.code(), Code::NothingToWrite);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(parameters(0).edit(QStringLiteral("id"), 2));
+        QVERIFY(!m_client->apply(0, &refusal)); // the ID edit waits for its own flow
+        QCOMPARE(refusal.code(), Code::NothingToWrite);
+        QVERIFY(!m_client->applyAll(0, &refusal));
+        QCOMPARE(refusal.code(), Code::IdInUse);
+        QCOMPARE(refusal.value(), 2);
+        parameters(0).revertAll();
+
+        QVERIFY(!m_client->writeValues(0, {{kMaxTemperature, 100000}}, &refusal));
+        QCOMPARE(refusal.code(), Code::BadValue);
+        QVERIFY2(refusal.describe().contains(kMaxTemperature), qPrintable(refusal.describe()));
+
+        QVERIFY(m_client->moveAll({}, &refusal).isEmpty());
+        QCOMPARE(refusal.code(), Code::NothingToMove);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(m_client->moveAll({{unknownIndex, 100}}, &refusal).isEmpty());
+        QCOMPARE(refusal.code(), Code::UnknownModel);
+        QVERIFY2(refusal.describe().contains(QLatin1String("Servo 8")),
+                 qPrintable(refusal.describe()));
+        QVERIFY(m_client->moveAll({{0, 100000}}, &refusal).isEmpty());
+        QCOMPARE(refusal.code(), Code::BadValue);
+        QCOMPARE(refusal.servoId(), std::optional<quint8>(1));
+        QVERIFY2(refusal.describe().startsWith(QLatin1String("Servo 1: ")),
+                 qPrintable(refusal.describe()));
+
+        QVERIFY(!m_client->sendPacket(QByteArray("\xff\xff\x01", 3), k1M, 1, 0, &refusal));
+        QCOMPARE(refusal.code(), Code::NotAFrame);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(!m_client->sendPacket(feetech::ping(1), 12345, 1, 0, &refusal));
+        QCOMPARE(refusal.code(), Code::NotAFeetechRate);
+        QVERIFY2(refusal.describe().contains(QLatin1String("12345")),
+                 qPrintable(refusal.describe()));
+
+        m_client->holdServo(0, QStringLiteral("Held by a test."));
+        refusal = m_client->identifyBlocker(0);
+        QCOMPARE(refusal.code(), Code::ServoHeld);
+        QCOMPARE(refusal.describe(), QStringLiteral("Held by a test."));
+        m_client->releaseServo({1, k1M});
+        QVERIFY(!m_client->identifyBlocker(0));
+
+        // The services next to the client refuse the same way.
+        QVERIFY(!m_client->health()->check({}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::NoServoToCheck);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(!m_client->health()->check({0, 42}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::NoServo);
+        QVERIFY(!m_client->health()->moveTest(0, false, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConfirmed);
+        QVERIFY2(refusal.describe().contains(QLatin1String("servo 1")),
+                 qPrintable(refusal.describe()));
+        QCOMPARE(m_client->health()->moveTestBlocker(sharedIndex).code(), Code::SharedId);
+        QVERIFY(!m_client->guard()->recoverOverload(unknownIndex, true, &refusal));
+        QCOMPARE(refusal.code(), Code::UnknownModel);
+        // Nothing of all this was sent.
+        QVERIFY(testsupport::feetechRequestsReceived(logPath(), Instruction::Write).isEmpty());
+    }
+
+    void aBusyBusRefusesWithBusy()
+    {
+        using Code = feetech::Refusal::Code;
+        QVERIFY(m_client->readServo(0));
+        QVERIFY(m_client->isBusy());
+        feetech::Refusal refusal;
+        QVERIFY(!m_client->changeBaud(1, 500000, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!refusal.describe().isEmpty());
+        QCOMPARE(m_client->commandBlocker(1).code(), Code::Busy);
+        QCOMPARE(m_client->identifyBlocker(1).code(), Code::Busy);
+        QVERIFY(!m_client->lockEeprom(1, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!m_client->reboot(1, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!m_client->health()->check({0, 1}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!m_client->motorSetup()->find({}, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QVERIFY(!m_client->guard()->recoverOverload(1, true, &refusal));
+        QCOMPARE(refusal.code(), Code::Busy);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isBusy(), 10000);
+    }
+
+    void aDisconnectedClientRefusesWithNotConnected()
+    {
+        using Code = feetech::Refusal::Code;
+        m_client->disconnectFrom();
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->status().state,
+                                  seriallink::ConnectionState::Disconnected, 10000);
+        feetech::Refusal refusal;
+        QCOMPARE(m_client->writeBlocker(0).code(), Code::NotConnected);
+        QVERIFY(!m_client->writeBlocker(0).describe().isEmpty());
+        QVERIFY(!m_client->apply(0, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!m_client->writeValues(0, {{kMaxTemperature, 70}}, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!m_client->reboot(0, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(m_client->moveAll({{0, 2048}}, &refusal).isEmpty());
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!m_client->sendPacket(feetech::ping(1), k1M, 1, 0, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!m_client->health()->check({0}, 1, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!m_client->motorSetup()->checkJoints(k1M, {}, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
     }
 
     void disconnectForgetsWorkInProgress()

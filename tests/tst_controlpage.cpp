@@ -93,7 +93,7 @@ private:
         if (!testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 5)
             || m_client->servos()->count() != 3)
             return -1;
-        const int index = m_client->servos()->indexOf(id, k1M);
+        const int index = m_client->servos()->indexOf({id, k1M});
         m_client->readServo(index);
         [&] {
             QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->at(index).read, 10000);
@@ -413,7 +413,7 @@ private slots:
     {
         const int index = showServo(1);
         QVERIFY(index >= 0);
-        const int other = m_client->servos()->indexOf(2, k1M);
+        const int other = m_client->servos()->indexOf({2, k1M});
         QVERIFY(m_client->telemetry()->subscribe(this, {other}, 20.0));
         QTRY_VERIFY(m_client->telemetry()->isStreaming());
         m_page->setConfirmMoves(false);
@@ -473,7 +473,7 @@ private slots:
         QVERIFY(error.contains(QLatin1String("position mode")));
 
         // SCS has no mode register.
-        m_page->setServo(m_client->servos()->indexOf(3, k1M));
+        m_page->setServo(m_client->servos()->indexOf({3, k1M}));
         QVERIFY(!mode->isEnabled());
         QCOMPARE(mode->count(), 0);
         QVERIFY(child<QPushButton>("torqueOnButton")->isEnabled());

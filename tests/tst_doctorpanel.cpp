@@ -88,7 +88,7 @@ private slots:
         QCOMPARE(currentWorkspace(), m_window->feetechWorkspace());
         QCOMPARE(m_window->feetechWorkspace()->scanOptions().bauds, (QVector<qint32> {k1M, k500k}));
         QCOMPARE(m_window->feetechClient()->servos()->count(), 2);
-        QVERIFY(m_window->feetechClient()->servos()->indexOf(4, k500k) >= 0);
+        QVERIFY(m_window->feetechClient()->servos()->indexOf({4, k500k}) >= 0);
         // The choice stays Auto; the bar shows the rate the port was opened at.
         QCOMPARE(m_window->connectionBar()->protocol(), ConnectionBar::Protocol::Auto);
         QCOMPARE(m_window->connectionBar()->baud(), k1M);
@@ -197,12 +197,13 @@ private slots:
         // The move is verified by the guided flow, the bus scanned again, and the doctor is
         // satisfied.
         QTRY_COMPARE_WITH_TIMEOUT(simulatorValue(2, u"id"), 2, 30000);
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->feetechClient()->servos()->indexOf(2, k1M) >= 0, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->feetechClient()->servos()->indexOf({2, k1M}) >= 0,
+                                 30000);
         const QLabel *summary = doctor->findChild<QLabel *>(QStringLiteral("doctorSummary"));
         QTRY_VERIFY_WITH_TIMEOUT(
             summary->text().contains(QStringLiteral("holds what was expected")), 30000);
         QCOMPARE(doctor->findingList()->topLevelItemCount(), 0);
-        QCOMPARE(m_window->feetechClient()->servos()->indexOf(9, k1M), -1);
+        QCOMPARE(m_window->feetechClient()->servos()->indexOf({9, k1M}), -1);
     }
 };
 

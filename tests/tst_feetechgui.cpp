@@ -112,12 +112,17 @@ private slots:
         QCOMPARE(baud->child(1)->text(0), QStringLiteral("ID 4 (shared!)"));
         QVERIFY2(baud->child(1)->toolTip(0).contains(QLatin1String("Nothing is written")),
                  qPrintable(baud->child(1)->toolTip(0)));
-        const int shared = client()->servos()->indexOf(4, 1000000);
-        QString refusal;
+        const int shared = client()->servos()->indexOf({4, 1000000});
+        feetech::Refusal refusal;
         QVERIFY(
             !client()->writeValues(shared, {{QStringLiteral("max_temperature"), 70}}, &refusal));
-        QVERIFY2(refusal.contains(QLatin1String("ID 4")), qPrintable(refusal));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::SharedId);
+        QCOMPARE(refusal.servoId(), std::optional<quint8>(4));
+        QVERIFY2(refusal.describe().contains(QLatin1String("ID 4")),
+                 qPrintable(refusal.describe()));
+        refusal = {};
         QVERIFY(!client()->changeId(shared, 7, &refusal));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::SharedId);
         QVERIFY(
             testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Write).isEmpty());
     }
@@ -195,8 +200,8 @@ private slots:
         idEditor->setValue(7);
         acceptNextMessageBox();
         settings->findChild<QPushButton *>(QStringLiteral("applyButton"))->click();
-        QTRY_VERIFY_WITH_TIMEOUT(client()->servos()->indexOf(7, k1M) >= 0, 10000);
-        QCOMPARE(client()->servos()->indexOf(1, k1M), -1);
+        QTRY_VERIFY_WITH_TIMEOUT(client()->servos()->indexOf({7, k1M}) >= 0, 10000);
+        QCOMPARE(client()->servos()->indexOf({1, k1M}), -1);
         QTRY_COMPARE(client()->servos()->at(workspace()->currentIndex()).info.id, quint8(7));
         QCOMPARE(simulatorValue(7, QStringLiteral("id")), 7);
         // The tree shows it under its new ID.
@@ -213,7 +218,7 @@ private slots:
             simulator.feetechBus()->findServo(2)->setValue(u"model_major", 77);
         });
         connectAndScan();
-        workspace()->selectServo(2, k1M);
+        workspace()->selectServo({2, k1M});
         QTRY_VERIFY(client()->servos()->at(workspace()->currentIndex()).read);
         workspace()->tabs()->setCurrentIndex(1);
         const QModelIndex byte = valueIndex(QStringLiteral("byte_003"));

@@ -29,7 +29,7 @@ private:
     {
         if (!testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 3))
             return -1;
-        return m_client->servos()->indexOf(id, k1M);
+        return m_client->servos()->indexOf({id, k1M});
     }
 
     const feetech::Register *goalRegister(int index) const
@@ -138,7 +138,7 @@ private slots:
     {
         const int sts = scanned(1);
         QVERIFY(sts >= 0);
-        const int scs = m_client->servos()->indexOf(2, k1M);
+        const int scs = m_client->servos()->indexOf({2, k1M});
         QVERIFY(scs >= 0);
         const auto stsRange = goalRange(*m_client, sts);
         const auto scsRange = goalRange(*m_client, scs);

@@ -40,8 +40,9 @@ private:
 
     void send(qint32 goal)
     {
-        QString error;
-        QVERIFY2(m_streamer->send(0, {{kGoalPosition, goal}}, &error), qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_streamer->send(0, {{kGoalPosition, goal}}, &refusal),
+                 qPrintable(refusal.describe()));
         m_mostInFlight = std::max(m_mostInFlight, m_streamer->writesInFlight());
     }
 
@@ -100,9 +101,9 @@ private slots:
         const qint32 before = simulatorValue(1, kGoalPosition);
         setSimulatorValue(1, u"id", 22); // servo 1 goes silent: its writes fail
         QSignalSpy due(m_streamer.get(), &GoalStreamer::queuedGoalDue);
-        QString error;
-        feetech::OperationReply *reply = m_streamer->send(0, {{kGoalPosition, 1000}}, &error);
-        QVERIFY2(reply, qPrintable(error));
+        feetech::Refusal refusal;
+        feetech::OperationReply *reply = m_streamer->send(0, {{kGoalPosition, 1000}}, &refusal);
+        QVERIFY2(reply, qPrintable(refusal.describe()));
         QSignalSpy finished(reply, &feetech::OperationReply::finished);
         QVERIFY(m_streamer->queueIfBusy(2000));
 

@@ -192,7 +192,8 @@ private slots:
         QCOMPARE(limits.action, feetech::GuardAction::TorqueOff);
         m_client->guard()->setSettings(settings);
         QCOMPARE(m_client->guard()->limits(m_index).loadPercent, 40.0);
-        QCOMPARE(m_client->guard()->limits(m_client->servos()->indexOf(2, k1M)).loadPercent, 80.0);
+        QCOMPARE(m_client->guard()->limits(m_client->servos()->indexOf({2, k1M})).loadPercent,
+                 80.0);
     }
 };
 

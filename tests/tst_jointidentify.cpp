@@ -61,9 +61,9 @@ private:
         sampler.start(2);
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QString error;
-        if (!m_client->identifyJoint(index, &error)) {
-            qWarning("identify refused: %s", qPrintable(error));
+        feetech::Refusal refusal;
+        if (!m_client->identifyJoint(index, &refusal)) {
+            qWarning("identify refused: %s", qPrintable(refusal.describe()));
             return watched;
         }
         const bool ended = QTest::qWaitFor(
@@ -176,19 +176,22 @@ private slots:
         feetech::MotionTest test(m_client.get(), testsupport::quickMotionTiming());
         QString error;
         QVERIFY2(test.startSweep(testsupport::longSweep(index), &error), qPrintable(error));
-        QVERIFY(!m_client->identifyBlocker(index).isEmpty());
-        QVERIFY(m_client->identifyBlocker(index).contains(QStringLiteral("motion test")));
+        QCOMPARE(m_client->identifyBlocker(index).code(), feetech::Refusal::Code::ServoHeld);
+        // The holder's reason is what the user reads.
+        QVERIFY(
+            m_client->identifyBlocker(index).describe().contains(QStringLiteral("motion test")));
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        error.clear();
-        QVERIFY(!m_client->identifyJoint(index, &error));
-        QVERIFY(error.contains(QStringLiteral("motion test")));
+        feetech::Refusal refusal;
+        QVERIFY(!m_client->identifyJoint(index, &refusal));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::ServoHeld);
         QVERIFY(!m_client->isIdentifying(index));
         // The other servo is free.
-        QVERIFY2(m_client->identifyBlocker(m_client->servos()->indexOf(2, k1M)).isEmpty(),
-                 qPrintable(m_client->identifyBlocker(m_client->servos()->indexOf(2, k1M))));
+        QVERIFY2(!m_client->identifyBlocker(m_client->servos()->indexOf({2, k1M})),
+                 qPrintable(
+                     m_client->identifyBlocker(m_client->servos()->indexOf({2, k1M})).describe()));
         test.cancel();
-        QVERIFY(m_client->identifyBlocker(index).isEmpty());
+        QVERIFY(!m_client->identifyBlocker(index));
     }
 
     void aMotionTestIsRefusedWhileItsServoIsIdentified()
@@ -278,8 +281,8 @@ private slots:
         QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
         m_client->scan(options);
         QTRY_VERIFY_WITH_TIMEOUT(!scanned.isEmpty(), 20000);
-        const int slow = m_client->servos()->indexOf(1, k500k);
-        const int fast = m_client->servos()->indexOf(2, k1M);
+        const int slow = m_client->servos()->indexOf({1, k500k});
+        const int fast = m_client->servos()->indexOf({2, k1M});
         QVERIFY(slow >= 0 && fast >= 0);
         m_client->readServo(slow);
         QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->at(slow).read, 10000);

@@ -151,7 +151,7 @@ private slots:
             QCOMPARE(table->item(row, JointTableView::IdColumn)->text(), QString::number(row + 1));
             QCOMPARE(table->item(row, JointTableView::BaudColumn)->text(),
                      QStringLiteral("1 Mbps"));
-            QCOMPARE(m_joints->rowOf(quint8(row + 1), k1M), row);
+            QCOMPARE(m_joints->rowOf({quint8(row + 1), k1M}), row);
             QVERIFY(!m_joints->target(row));
         }
         QCOMPARE(table->item(0, JointTableView::ModelColumn)->text(), QStringLiteral("STS3215"));

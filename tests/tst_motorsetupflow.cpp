@@ -33,22 +33,22 @@ private:
     template<typename Start>
     void startAndWait(Start start)
     {
-        QString error;
-        QVERIFY2(start(&error), qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(start(&refusal), qPrintable(refusal.describe()));
         QVERIFY(m_flow->isWorking());
         QTRY_VERIFY_WITH_TIMEOUT(!m_flow->isWorking(), 30000);
     }
     void findAndWait()
     {
-        startAndWait([this](QString *error) { return m_flow->find(error); });
+        startAndWait([this](feetech::Refusal *refusal) { return m_flow->find(refusal); });
     }
     void setUpAndWait()
     {
-        startAndWait([this](QString *error) { return m_flow->setUp(error); });
+        startAndWait([this](feetech::Refusal *refusal) { return m_flow->setUp(refusal); });
     }
     void checkAndWait()
     {
-        startAndWait([this](QString *error) { return m_flow->checkBus(error); });
+        startAndWait([this](feetech::Refusal *refusal) { return m_flow->checkBus(refusal); });
     }
 
 private slots:
@@ -80,9 +80,9 @@ private slots:
             QCOMPARE(m_flow->jointState(joint), JointState::ToDo);
         QVERIFY(!m_flow->isWorking());
         QVERIFY(m_flow->isBusFree());
-        QString error;
-        QVERIFY(!m_flow->setUp(&error)); // nothing found yet
-        QVERIFY(error.isEmpty());
+        feetech::Refusal refusal;
+        QVERIFY(!m_flow->setUp(&refusal)); // nothing found yet
+        QVERIFY(!refusal);
     }
 
     void aFactoryServoIsFoundThenSetUpAndTheNextJointBecomesCurrent()
@@ -120,8 +120,7 @@ private slots:
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
         findAndWait();
         const quint64 revision = pluggedServos().first().revision;
-        QString error;
-        QVERIFY(m_flow->setUp(&error));
+        QVERIFY(m_flow->setUp(nullptr));
         QVERIFY(m_flow->stop());
         QVERIFY(m_flow->isStopping());
         QVERIFY(!m_flow->stop()); // once is enough
@@ -138,8 +137,7 @@ private slots:
         QVERIFY(!m_flow->chooseJoint(3)); // already current
         QVERIFY(!m_flow->chooseJoint(m_flow->jointCount()));
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
-        QString error;
-        QVERIFY(m_flow->find(&error));
+        QVERIFY(m_flow->find(nullptr));
         QVERIFY(!m_flow->chooseJoint(0));
         QTRY_VERIFY_WITH_TIMEOUT(!m_flow->isWorking(), 30000);
         QCOMPARE(m_flow->currentJoint(), 3);
@@ -172,10 +170,10 @@ private slots:
         QCOMPARE(m_flow->currentJoint(), 0);
         m_flow->setRobot({});
         QCOMPARE(m_flow->currentJoint(), -1);
-        QString error;
-        QVERIFY(!m_flow->checkBus(&error));
-        QVERIFY(!m_flow->find(&error));
-        QVERIFY(error.isEmpty());
+        feetech::Refusal refusal;
+        QVERIFY(!m_flow->checkBus(&refusal));
+        QVERIFY(!m_flow->find(&refusal));
+        QVERIFY(!refusal);
     }
 };
 

@@ -42,8 +42,7 @@ private:
             return std::nullopt;
         OperationLog finishedLog(&client);
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QString error;
-        if (!client.apply(index, &error) || !finished.wait(30000))
+        if (!client.apply(index) || !finished.wait(30000))
             return std::nullopt;
         m_simulator->call([&](sim::Simulator &simulator) {
             sim::runSimulatorCommand(QStringLiteral("power 1 on"), simulator);
@@ -90,8 +89,8 @@ private slots:
         QCOMPARE(simulatorValue(1, u"lock"), 0); // noticing writes nothing
         OperationLog finishedLog(&client);
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QString error;
-        QVERIFY2(client.lockEeprom(index, &error), qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(client.lockEeprom(index, &refusal), qPrintable(refusal.describe()));
         QVERIFY(finished.wait(10000));
         const auto result = finished.last().first().value<feetech::OperationResult>();
         QVERIFY2(result.ok, qPrintable(result.message));

@@ -111,11 +111,11 @@ private slots:
     {
         connectAndScan();
         JointTable *joints = workspace()->jointTable();
-        const int row = joints->rowOf(1, k1M);
+        const int row = joints->rowOf({1, k1M});
         QPushButton *button = joints->identifyButton(row);
         QVERIFY(button);
         QTRY_VERIFY(button->isEnabled());
-        const int index = client()->servos()->indexOf(1, k1M);
+        const int index = client()->servos()->indexOf({1, k1M});
         client()->readServo(index);
         QTRY_VERIFY(!client()->isBusy());
         feetech::MotionTest test(client(), testsupport::quickMotionTiming());
@@ -124,7 +124,7 @@ private slots:
         QTRY_VERIFY(!button->isEnabled());
         QVERIFY(button->toolTip().contains(QStringLiteral("motion test")));
         // The other servos stay free.
-        QVERIFY(joints->identifyButton(joints->rowOf(2, k1M))->isEnabled());
+        QVERIFY(joints->identifyButton(joints->rowOf({2, k1M}))->isEnabled());
         test.cancel();
         QTRY_VERIFY(button->isEnabled());
         QTRY_VERIFY(!client()->isBusy());
@@ -161,8 +161,10 @@ private slots:
         for (const quint8 id : {1, 2}) {
             QCOMPARE(simulatorValue(id, u"p_gain"), 21);
             QCOMPARE(simulatorValue(id, u"max_temperature"), 61);
-            QVERIFY(
-                !client()->servos()->parameters(client()->servos()->indexOf(id, k1M))->hasEdits());
+            QVERIFY(!client()
+                         ->servos()
+                         ->parameters(client()->servos()->indexOf({id, k1M}))
+                         ->hasEdits());
         }
         // Every operation rebuilds the tree: the selection outlives them.
         QCOMPARE(workspace()->servoTree()->selectedServos().size(), 3);
@@ -280,7 +282,7 @@ private slots:
         QCOMPARE(joints->item(1, RobotTemplateDialog::IdColumn)->text(), QStringLiteral("2"));
         joints->item(1, RobotTemplateDialog::SettingsColumn)->setText(QStringLiteral("p_gain=1"));
         joints->setCurrentCell(1, RobotTemplateDialog::NameColumn);
-        dialog.servoChooser()->setCurrentIndex(client()->servos()->indexOf(2, k1M));
+        dialog.servoChooser()->setCurrentIndex(client()->servos()->indexOf({2, k1M}));
         dialog.takeSettingsFromServo();
         QTRY_COMPARE_WITH_TIMEOUT(joints->item(1, RobotTemplateDialog::SettingsColumn)->text(),
                                   QStringLiteral("p_gain=23"), 10000);

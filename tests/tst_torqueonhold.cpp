@@ -34,9 +34,9 @@ private:
     {
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QString error;
-        if (!m_client->writeValues(index, values, &error)) {
-            qWarning("refused: %s", qPrintable(error));
+        feetech::Refusal refusal;
+        if (!m_client->writeValues(index, values, &refusal)) {
+            qWarning("refused: %s", qPrintable(refusal.describe()));
             return {};
         }
         if (!finished.wait(10000))
@@ -71,7 +71,7 @@ private slots:
     void torqueOnSetsTheGoalToWhereTheHornStandsFirst()
     {
         QFETCH(int, id);
-        const int index = m_client->servos()->indexOf(quint8(id), k1M);
+        const int index = m_client->servos()->indexOf({quint8(id), k1M});
         // Torque off, with a goal far from the horn left over from earlier work.
         setSimulatorValue(id, u"torque_enable", 0);
         const qint32 present = simulatorValue(id, u"present_position");
@@ -88,7 +88,7 @@ private slots:
 
     void aGoalWrittenWithTheTorqueIsKept()
     {
-        const int index = m_client->servos()->indexOf(1, k1M);
+        const int index = m_client->servos()->indexOf({1, k1M});
         setSimulatorValue(1, u"torque_enable", 0);
         const qint32 present = simulatorValue(1, u"present_position");
         const qint32 wanted = present > 400 ? present - 200 : present + 200;
@@ -99,7 +99,7 @@ private slots:
 
     void torqueAlreadyOnLeavesTheGoalAlone()
     {
-        const int index = m_client->servos()->indexOf(1, k1M);
+        const int index = m_client->servos()->indexOf({1, k1M});
         setSimulatorValue(1, u"torque_enable", 1);
         const qint32 goal = simulatorValue(1, u"goal_position");
         const OperationResult result = write(index, {{kTorque, 1}});
@@ -110,7 +110,7 @@ private slots:
     void onlyTorqueOnNeedsTheHold()
     {
         const feetech::ServoInfo &servo =
-            m_client->servos()->at(m_client->servos()->indexOf(1, k1M)).info;
+            m_client->servos()->at(m_client->servos()->indexOf({1, k1M})).info;
         const auto encoded = [&servo](const QVector<model::WriteItem> &items) {
             QString error;
             return *feetech::encodeWrites(servo.table(), items, &error);

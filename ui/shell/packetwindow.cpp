@@ -468,8 +468,10 @@ void PacketWindow::sendNext()
     QString error;
     bool accepted = false;
     if (frame.protocol == PacketFrame::Protocol::Feetech) {
+        feetech::Refusal refusal;
         feetech::OperationReply *reply = m_feetech->sendPacket(
-            frame.bytes, frame.baud, frame.replyId, frame.replyDataSize, &error);
+            frame.bytes, frame.baud, frame.replyId, frame.replyDataSize, &refusal);
+        error = refusal.describe();
         if (reply)
             connect(reply, &feetech::OperationReply::finished, this,
                     &PacketWindow::onFeetechFinished);

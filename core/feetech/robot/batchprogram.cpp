@@ -62,14 +62,13 @@ void BatchProgram::next()
     emit progress(
         int(m_outcomes.size()), int(m_servos.size()),
         tr("Programming servo ID %1 (%2 of %3)…").arg(id).arg(m_next).arg(m_servos.size()));
-    const int index = m_client->servos()->indexOf(id, baud);
+    const int index = m_client->servos()->indexOf({id, baud});
     if (index < 0) {
         failCurrent(tr("Servo ID %1 is no longer on the bus.").arg(id));
         return;
     }
-    const QString blocker = m_client->writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        failCurrent(blocker);
+    if (const Refusal blocker = m_client->writeBlocker(index)) {
+        failCurrent(blocker.describe());
         return;
     }
     if (m_client->servos()->parameters(index)->hasEdits()) {
@@ -86,7 +85,7 @@ void BatchProgram::next()
     m_phase = Phase::Reading;
     OperationReply *reply = m_client->readServo(index);
     if (!reply) { // the bus went away
-        failCurrent(m_client->writeBlocker(index));
+        failCurrent(m_client->writeBlocker(index).describe());
         return;
     }
     connect(reply, &OperationReply::finished, this, &BatchProgram::onOperationFinished);
@@ -101,7 +100,7 @@ void BatchProgram::onOperationFinished(const OperationResult &result)
             failCurrent(result.message);
             return;
         }
-        diffAndWrite(m_client->servos()->indexOf(m_current.id, m_current.baud));
+        diffAndWrite(m_client->servos()->indexOf({m_current.id, m_current.baud}));
     } else if (m_phase == Phase::Writing && result.operation == Operation::Write) {
         settle(result);
     }
@@ -144,10 +143,11 @@ void BatchProgram::diffAndWrite(int index)
             return;
         }
     }
-    OperationReply *reply = m_client->apply(index, &error);
+    Refusal refusal;
+    OperationReply *reply = m_client->apply(index, &refusal);
     if (!reply) {
         parameters.revertAll();
-        failCurrent(error);
+        failCurrent(refusal.describe());
         return;
     }
     connect(reply, &OperationReply::finished, this, &BatchProgram::onOperationFinished);
@@ -156,7 +156,7 @@ void BatchProgram::diffAndWrite(int index)
 
 void BatchProgram::settle(const OperationResult &result)
 {
-    const int index = m_client->servos()->indexOf(m_current.id, m_current.baud);
+    const int index = m_client->servos()->indexOf({m_current.id, m_current.baud});
     QStringList unverified;
     if (model::ParameterModel *parameters = m_client->servos()->parameters(index)) {
         for (const QString &key : std::as_const(m_current.changed)) {

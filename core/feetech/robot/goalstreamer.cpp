@@ -23,9 +23,9 @@ bool GoalStreamer::queueIfBusy(qint32 goal)
 }
 
 OperationReply *GoalStreamer::send(int index, const QVector<model::WriteItem> &values,
-                                   QString *error)
+                                   Refusal *refusal)
 {
-    OperationReply *reply = m_client->writeValues(index, values, error);
+    OperationReply *reply = m_client->writeValues(index, values, refusal);
     if (!reply)
         return nullptr;
     ++m_inFlight;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "parametermodel.h"
+#include "refusal.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -32,9 +33,9 @@ public:
     bool queueIfBusy(qint32 goal);
 
     // Sends the goal write `values` to servo `index` through BusClient::writeValues; the reply,
-    // or nullptr and *error when it was refused. Anything queued is older and is dropped.
+    // or nullptr and *refusal when it was refused. Anything queued is older and is dropped.
     OperationReply *send(int index, const QVector<model::WriteItem> &values,
-                         QString *error = nullptr);
+                         Refusal *refusal = nullptr);
 
     int writesInFlight() const { return m_inFlight; }
     std::optional<qint32> queuedGoal() const { return m_queued; }

@@ -62,8 +62,8 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
             [this] { fail(tr("All torque off: the test was stopped.")); });
     // The guard held the servo or switched it off: the next leg must not drive it again.
     connect(m_client->guard(), &BusGuard::event, this, [this](const GuardEvent &event) {
-        if (isRunning() && event.stage == GuardStage::Acted && event.id == m_id
-            && event.baud == m_baud)
+        if (isRunning() && event.stage == GuardStage::Acted
+            && ServoAddress {event.id, event.baud} == m_servo)
             fail(tr("The test was stopped: %1").arg(event.message));
     });
     connect(m_client->servos(), &ServoList::servosChanged, this, [this] {
@@ -75,7 +75,7 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
 MotionTest::~MotionTest()
 {
     if (isRunning() && m_client) {
-        m_client->releaseServo(m_id, m_baud);
+        m_client->releaseServo(m_servo);
         restoreMonitor();
     }
 }
@@ -160,8 +160,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
     const ServoInfo &info = m_client->servos()->at(plan.index).info;
     m_plan = plan;
     m_kind = kind;
-    m_id = info.id;
-    m_baud = info.baud;
+    m_servo = info.address();
     m_writesInFlight = 0;
     m_lastPosition.reset();
     m_lastSampleUs.reset();
@@ -189,7 +188,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
         return false;
     }
     startApproach();
-    m_client->holdServo(plan.index, tr("A motion test is running on servo ID %1.").arg(m_id));
+    m_client->holdServo(plan.index, tr("A motion test is running on servo ID %1.").arg(m_servo.id));
     emit runningChanged(true); // isRunning() is true by now
     return true;
 }
@@ -211,12 +210,12 @@ void MotionTest::cancel()
 
 int MotionTest::servoIndex() const
 {
-    return m_client->servos()->indexOf(m_id, m_baud);
+    return m_client->servos()->indexOf(m_servo);
 }
 
 QString MotionTest::servoName() const
 {
-    return tr("Servo ID %1").arg(m_id);
+    return tr("Servo ID %1").arg(m_servo.id);
 }
 
 bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
@@ -227,9 +226,13 @@ bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
             *error = tr("%1 is no longer on the bus.").arg(servoName());
         return false;
     }
-    OperationReply *reply = m_client->writeValues(index, values, error);
-    if (!reply)
+    Refusal refusal;
+    OperationReply *reply = m_client->writeValues(index, values, &refusal);
+    if (!reply) {
+        if (error)
+            *error = refusal.describe();
         return false;
+    }
     connect(reply, &OperationReply::finished, this, &MotionTest::onWriteFinished);
     ++m_writesInFlight;
     m_commandUs = steadyMicroseconds();
@@ -269,7 +272,7 @@ void MotionTest::onTelemetry(const QVector<FeedbackSample> &samples)
     if (!isRunning())
         return;
     for (const FeedbackSample &sample : samples) {
-        if (sample.id != m_id || sample.baud != m_baud)
+        if (ServoAddress {sample.id, sample.baud} != m_servo)
             continue;
         const auto position = sample.value(Quantity::Position);
         if (!position)
@@ -441,7 +444,7 @@ void MotionTest::finish()
     m_timer->stop();
     m_phase = Phase::Idle;
     if (m_client)
-        m_client->releaseServo(m_id, m_baud);
+        m_client->releaseServo(m_servo);
     restoreMonitor();
     emit runningChanged(false);
 }

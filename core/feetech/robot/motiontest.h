@@ -2,6 +2,7 @@
 // with step-response metrics computed from the recorded positions.
 #pragma once
 
+#include "bustypes.h"
 #include "parametermodel.h"
 #include "stepresponse.h"
 #include "telemetry.h"
@@ -147,8 +148,7 @@ private:
     Phase m_phase = Phase::Idle;
     Kind m_kind = Kind::Step;
     MotionPlan m_plan;
-    quint8 m_id = 0;
-    qint32 m_baud = 0;
+    ServoAddress m_servo; // the plan's servo, by its address once the test starts
     int m_writesInFlight = 0;
     qint64 m_commandUs = 0; // when the current goal was written (steady clock)
     std::optional<double> m_lastPosition;

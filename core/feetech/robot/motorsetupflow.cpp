@@ -34,32 +34,32 @@ void MotorSetupFlow::start(Work work)
     m_stopping = false;
 }
 
-bool MotorSetupFlow::checkBus(QString *error)
+bool MotorSetupFlow::checkBus(Refusal *refusal)
 {
     if (!isBusFree() || m_joints.isEmpty())
         return false;
-    if (!m_client->motorSetup()->checkJoints(m_robot.baud, jointChecks(m_robot), error))
+    if (!m_client->motorSetup()->checkJoints(m_robot.baud, jointChecks(m_robot), refusal))
         return false;
     start(Work::Checking);
     return true;
 }
 
-bool MotorSetupFlow::find(QString *error)
+bool MotorSetupFlow::find(Refusal *refusal)
 {
     if (isWorking() || m_current < 0)
         return false;
     m_found.reset();
-    if (!m_client->motorSetup()->find(currentTarget(), error))
+    if (!m_client->motorSetup()->find(currentTarget(), refusal))
         return false;
     start(Work::Finding);
     return true;
 }
 
-bool MotorSetupFlow::setUp(QString *error)
+bool MotorSetupFlow::setUp(Refusal *refusal)
 {
     if (isWorking() || m_current < 0 || !m_found)
         return false;
-    if (!m_client->motorSetup()->setUp(currentTarget(), error))
+    if (!m_client->motorSetup()->setUp(currentTarget(), refusal))
         return false;
     start(Work::SettingUp);
     return true;

@@ -11,6 +11,7 @@
 namespace feetech {
 
 class BusClient;
+class Refusal;
 
 // Works through the client's motor set-up service, asynchronously. The joints set up while the
 // flow lives stay done; a check of the bus marks the joints whose servo already answers at its
@@ -42,11 +43,11 @@ public:
     // Whether the bus is free for a check, a find or a set-up.
     bool isBusFree() const;
 
-    // Each returns whether the work started; when it was asked but refused, *error says why
-    // (nothing is said when the flow cannot start it now, e.g. while working).
-    bool checkBus(QString *error);
-    bool find(QString *error);
-    bool setUp(QString *error);
+    // Each returns whether the work started; when the service refused it, *refusal says why
+    // (it stays empty when the flow cannot start it now, e.g. while working).
+    bool checkBus(Refusal *refusal);
+    bool find(Refusal *refusal);
+    bool setUp(Refusal *refusal);
     // Stops the work before its next step; false when there is none or it is already stopping.
     bool stop();
     // Makes `joint` the one to set up next (a joint done may be set up again); false when it

@@ -7,37 +7,12 @@
 #include "registerkeys.h"
 #include "registertable.h"
 #include "servoparameters.h"
-#include "sharedidcheck.h"
 
-#include <QCoreApplication>
 #include <QHash>
 
 #include <algorithm>
 
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
-};
-
-} // namespace
-
 namespace feetech {
-
-namespace {
-
-// Whether `why` refuses the request (it is not empty); it goes to *error then.
-bool refused(const QString &why, QString *error)
-{
-    if (why.isEmpty())
-        return false;
-    if (error)
-        *error = why;
-    return true;
-}
-
-} // namespace
 
 BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
@@ -63,7 +38,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     });
     connect(session, &Session::memoryRead, this, &BusClient::onMemoryRead);
     connect(session, &Session::statusSeen, this, [this](quint8 id, qint32 baud, quint8 status) {
-        const int index = m_servos->indexOf(id, baud);
+        const int index = m_servos->indexOf({id, baud});
         if (index < 0)
             return;
         m_servos->entry(index).statusByte = status;
@@ -125,36 +100,36 @@ void BusClient::cancelScan()
         session, [session] { session->cancel(Operation::Scan); }, Qt::QueuedConnection);
 }
 
-QString BusClient::writeBlocker(int index) const
+Refusal BusClient::writeBlocker(int index) const
 {
     if (!isConnected())
-        return Tr::tr("The bus is not connected.");
+        return Refusal(Refusal::Code::NotConnected);
     if (index < 0 || index >= m_servos->count())
-        return Tr::tr("No servo is selected.");
+        return Refusal(Refusal::Code::NoServo);
     // What stays true first: a shared ID or an unknown model is no reason to wait.
     if (m_servos->at(index).info.sharedId)
-        return sharedIdRefusal(m_servos->at(index).info.id);
+        return Refusal::sharedId(m_servos->at(index).info.id);
     if (!m_servos->at(index).info.hasTable())
-        return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+        return Refusal(Refusal::Code::UnknownModel);
     if (isBusy())
-        return Tr::tr("Another operation is still running.");
+        return Refusal(Refusal::Code::Busy);
     return {};
 }
 
-QString BusClient::commandBlocker(int index) const
+Refusal BusClient::commandBlocker(int index) const
 {
     // An unknown model may be rebooted or cleared; a shared ID is not sent anything.
     if (index >= 0 && index < m_servos->count() && m_servos->at(index).info.sharedId)
-        return sharedIdRefusal(m_servos->at(index).info.id);
+        return Refusal::sharedId(m_servos->at(index).info.id);
     if (isBusy())
-        return Tr::tr("Another operation is still running.");
+        return Refusal(Refusal::Code::Busy);
     return {};
 }
 
 void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArray &bytes,
                              ReadSource source, quint8 statusByte)
 {
-    const int index = m_servos->indexOf(id, baud);
+    const int index = m_servos->indexOf({id, baud});
     if (index < 0)
         return;
     Servo &entry = m_servos->entry(index);
@@ -188,7 +163,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
         pending->second.id = result.servo.id;
         pending->second.baud = result.servo.baud;
     }
-    const int index = m_servos->indexOf(target.id, target.baud);
+    const int index = m_servos->indexOf({target.id, target.baud});
     if (index >= 0) {
         Servo &entry = m_servos->entry(index);
         model::ParameterModel &parameters = *entry.parameters;
@@ -228,7 +203,7 @@ void BusClient::onOperationFinished(const OperationResult &result)
             parameters.revert(QStringLiteral("torque_enable"));
         }
         if (result.ok && flow && result.final) // what the flow changed shows
-            readServo(m_servos->indexOf(entry.info.id, entry.info.baud));
+            readServo(m_servos->indexOf(entry.info.address()));
     }
     if (result.operation == Operation::Identify)
         m_identifying.reset();
@@ -262,47 +237,65 @@ void BusClient::forgetWork()
         emit busyChanged(false);
 }
 
-OperationReply *BusClient::applyAll(int index, QString *error)
+OperationReply *BusClient::applyAll(int index, Refusal *refusal)
 {
-    return startApply(index, error, true);
+    return startApply(index, refusal, true);
 }
 
-OperationReply *BusClient::apply(int index, QString *error)
+OperationReply *BusClient::apply(int index, Refusal *refusal)
 {
-    return startApply(index, error, false);
+    return startApply(index, refusal, false);
 }
 
-OperationReply *BusClient::startApply(int index, QString *error, bool withAddress)
+OperationReply *BusClient::startApply(int index, Refusal *refusal, bool withAddress)
 {
-    if (refused(writeBlocker(index), error))
+    if (refused(writeBlocker(index), refusal))
         return nullptr;
     model::ParameterModel &parameters = *m_servos->parameters(index);
-    // Without the address, the ID and baud rate edits stay pending for their own flows.
-    const auto plan =
-        planApply(m_servos->at(index).info, parameters, m_servos->idsInUse(),
-                  withAddress ? ApplyScope::Everything : ApplyScope::Registers, error);
-    if (!plan)
+    // planApply refuses with a sentence only; what it refuses for is told apart here, in its
+    // order, so that only a value it cannot encode is left to it.
+    const auto inScope = [withAddress](const QString &key) {
+        return withAddress || (key != QLatin1String("id") && key != QLatin1String("baud_rate"));
+    };
+    const QVector<model::Definition> &definitions = parameters.definitions();
+    if (std::none_of(definitions.begin(), definitions.end(), [&](const model::Definition &d) {
+            return inScope(d.key) && parameters.pendingValue(d.key).has_value();
+        })) {
+        refused(Refusal(Refusal::Code::NothingToWrite), refusal);
         return nullptr;
+    }
+    const auto newId = withAddress ? parameters.pendingValue(QStringLiteral("id")) : std::nullopt;
+    if (newId && m_servos->idsInUse().contains(int(*newId))
+        && int(*newId) != m_servos->at(index).info.id) {
+        refused(Refusal::idInUse(int(*newId)), refusal);
+        return nullptr;
+    }
+    QString why;
+    // Without the address, the ID and baud rate edits stay pending for their own flows.
+    const auto plan = planApply(m_servos->at(index).info, parameters, m_servos->idsInUse(),
+                                withAddress ? ApplyScope::Everything : ApplyScope::Registers, &why);
+    if (!plan) {
+        refused(Refusal::badValue(why), refusal);
+        return nullptr;
+    }
     // Exactly the planned registers are Writing; an ID or baud edit stays an edit until its
     // flow has moved the servo.
     parameters.takeWritePlan({QStringLiteral("id"), QStringLiteral("baud_rate")});
     return startOperation(
-        Operation::Write, index, error, Work::Foreground,
+        Operation::Write, index, refusal, Work::Foreground,
         [plan = *plan](const ServoInfo &info) { return operations::apply(info, plan); });
 }
 
 OperationReply *
-BusClient::startOperation(Operation operation, int index, QString *error, Work kind,
+BusClient::startOperation(Operation operation, int index, Refusal *refusal, Work kind,
                           const std::function<BusOperation(const ServoInfo &)> &make)
 {
     if (index < 0 || index >= m_servos->count()) {
-        if (error)
-            *error = Tr::tr("No servo is selected.");
+        refused(Refusal(Refusal::Code::NoServo), refusal);
         return nullptr;
     }
     if (!isConnected()) {
-        if (error)
-            *error = Tr::tr("The bus is not connected.");
+        refused(Refusal(Refusal::Code::NotConnected), refusal);
         return nullptr;
     }
     const ServoInfo info = m_servos->at(index).info;
@@ -350,72 +343,69 @@ void BusClient::refreshRam(int index)
                    });
 }
 
-OperationReply *BusClient::changeId(int index, int newId, QString *error)
+OperationReply *BusClient::changeId(int index, int newId, Refusal *refusal)
 {
-    if (refused(writeBlocker(index), error))
+    if (refused(writeBlocker(index), refusal))
         return nullptr;
     const QVector<int> inUse = m_servos->idsInUse();
     if (inUse.contains(newId) && newId != m_servos->at(index).info.id) {
-        if (error)
-            *error = Tr::tr("ID %1 is already in use on this bus.").arg(newId);
+        refused(Refusal::idInUse(newId), refusal);
         return nullptr;
     }
     return startOperation(
-        Operation::ChangeId, index, error, Work::Foreground,
+        Operation::ChangeId, index, refusal, Work::Foreground,
         [newId, inUse](const ServoInfo &info) { return operations::changeId(info, newId, inUse); });
 }
 
-OperationReply *BusClient::changeBaud(int index, qint32 newBaud, QString *error)
+OperationReply *BusClient::changeBaud(int index, qint32 newBaud, Refusal *refusal)
 {
-    if (refused(writeBlocker(index), error))
+    if (refused(writeBlocker(index), refusal))
         return nullptr;
     return startOperation(
-        Operation::ChangeBaud, index, error, Work::Foreground,
+        Operation::ChangeBaud, index, refusal, Work::Foreground,
         [newBaud](const ServoInfo &info) { return operations::changeBaud(info, newBaud); });
 }
 
-OperationReply *BusClient::calibrateMiddle(int index, QString *error)
+OperationReply *BusClient::calibrateMiddle(int index, Refusal *refusal)
 {
-    if (refused(writeBlocker(index), error))
+    if (refused(writeBlocker(index), refusal))
         return nullptr;
     if (middleCalibration(m_servos->at(index).info) == MiddleCalibration::Unsupported) {
-        if (error)
-            *error = Tr::tr("This servo has no middle calibration (SCS servos have no offset "
-                            "register).");
+        refused(Refusal(Refusal::Code::NoMiddleCalibration), refusal);
         return nullptr;
     }
-    return startOperation(Operation::CalibrateMiddle, index, error, Work::Foreground,
+    return startOperation(Operation::CalibrateMiddle, index, refusal, Work::Foreground,
                           &operations::calibrateMiddle);
 }
 
-OperationReply *BusClient::factoryReset(int index, QString *error)
+OperationReply *BusClient::factoryReset(int index, Refusal *refusal)
 {
-    if (refused(writeBlocker(index), error))
+    if (refused(writeBlocker(index), refusal))
         return nullptr;
-    return startOperation(Operation::FactoryReset, index, error, Work::Foreground,
+    return startOperation(Operation::FactoryReset, index, refusal, Work::Foreground,
                           &operations::factoryReset);
 }
 
-OperationReply *BusClient::reboot(int index, QString *error)
+OperationReply *BusClient::reboot(int index, Refusal *refusal)
 {
-    if (refused(commandBlocker(index), error))
+    if (refused(commandBlocker(index), refusal))
         return nullptr;
-    return startOperation(Operation::Reboot, index, error, Work::Foreground, &operations::reboot);
+    return startOperation(Operation::Reboot, index, refusal, Work::Foreground, &operations::reboot);
 }
 
-OperationReply *BusClient::clearStatus(int index, QString *error)
+OperationReply *BusClient::clearStatus(int index, Refusal *refusal)
 {
-    if (refused(commandBlocker(index), error))
+    if (refused(commandBlocker(index), refusal))
         return nullptr;
-    return startOperation(Operation::ClearStatus, index, error, Work::Foreground,
+    return startOperation(Operation::ClearStatus, index, refusal, Work::Foreground,
                           &operations::clearStatus);
 }
 
-OperationReply *BusClient::lockEeprom(int index, QString *error)
+OperationReply *BusClient::lockEeprom(int index, Refusal *refusal)
 {
-    if (refused(isBusy() ? Tr::tr("Another operation is still running.") : QString(), error))
+    if (refused(isBusy() ? Refusal(Refusal::Code::Busy) : Refusal(), refusal))
         return nullptr;
-    return startOperation(Operation::LockEeprom, index, error, Work::Foreground,
+    return startOperation(Operation::LockEeprom, index, refusal, Work::Foreground,
                           &operations::lockEeprom);
 }
 
@@ -431,27 +421,28 @@ bool BusClient::eepromUnlocked(int index) const
 // ---- live monitoring and control
 
 OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem> &values,
-                                       QString *error)
+                                       Refusal *refusal)
 {
     if (!isConnected() || index < 0 || index >= m_servos->count()
         || !m_servos->at(index).info.hasTable() || m_servos->at(index).info.sharedId) {
         // The same reasons as for any write, except a busy bus: control writes queue up.
-        const QString blocker = writeBlocker(index);
-        if (error)
-            *error = blocker.isEmpty() ? Tr::tr("No servo is selected.") : blocker;
+        const Refusal blocker = writeBlocker(index);
+        refused(blocker ? blocker : Refusal(Refusal::Code::NoServo), refusal);
         return nullptr;
     }
     if (values.isEmpty()) {
-        if (error)
-            *error = Tr::tr("Nothing to write.");
+        refused(Refusal(Refusal::Code::NothingToWrite), refusal);
         return nullptr;
     }
-    const auto writes = encodeWrites(m_servos->at(index).info.table(), values, error);
-    if (!writes)
+    QString why;
+    const auto writes = encodeWrites(m_servos->at(index).info.table(), values, &why);
+    if (!writes) {
+        refused(Refusal::badValue(why), refusal);
         return nullptr;
+    }
     const QVector<RegisterWrite> items = *writes;
     return startOperation(
-        Operation::Write, index, error, Work::Control,
+        Operation::Write, index, refusal, Work::Control,
         [items](const ServoInfo &info) { return operations::write(info, items); });
 }
 
@@ -470,32 +461,30 @@ OperationReply *BusClient::allTorqueOff()
     return submit(operations::torqueOffAll(bauds, servos), 0, 0, Work::Emergency);
 }
 
-QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, QString *error)
+QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, Refusal *refusal)
 {
-    const auto refuse = [error](const QString &why) {
-        if (error)
-            *error = why;
+    const auto refuse = [refusal](const Refusal &why) {
+        refused(why, refusal);
         return QVector<OperationReply *>();
     };
     if (!isConnected())
-        return refuse(Tr::tr("The bus is not connected."));
+        return refuse(Refusal(Refusal::Code::NotConnected));
     if (goals.isEmpty())
-        return refuse(Tr::tr("Nothing to move."));
+        return refuse(Refusal(Refusal::Code::NothingToMove));
     // One SYNC WRITE per baud rate, servos in the order given.
     QVector<qint32> bauds;
     QHash<qint32, QVector<SyncWriteEntry>> entries;
     for (const Goal &goal : goals) {
         if (goal.index < 0 || goal.index >= m_servos->count())
-            return refuse(Tr::tr("No servo is selected."));
+            return refuse(Refusal(Refusal::Code::NoServo));
         const ServoInfo &info = m_servos->at(goal.index).info;
         if (!info.hasTable())
-            return refuse(
-                Tr::tr("Servo %1 is of an unknown model; nothing is written to it.").arg(info.id));
+            return refuse(Refusal::unknownModel(info.id));
         QString why;
         const auto encoded =
             encodeWrites(info.table(), {{QStringLiteral("goal_position"), goal.position}}, &why);
         if (!encoded || encoded->size() != 1)
-            return refuse(Tr::tr("Servo %1: %2").arg(info.id).arg(why));
+            return refuse(Refusal::badValue(info.id, why));
         if (!bauds.contains(info.baud))
             bauds.append(info.baud);
         entries[info.baud].append({info.id, encoded->first().bytes});
@@ -524,31 +513,26 @@ std::optional<PositionRange> goalRange(const BusClient &client, int index)
                      parameters->deviceValue(registerkeys::kMaxAngleLimit));
 }
 
-QString BusClient::identifyBlocker(int index) const
+Refusal BusClient::identifyBlocker(int index) const
 {
-    const QString blocker = writeBlocker(index);
-    if (!blocker.isEmpty())
+    if (const Refusal blocker = writeBlocker(index))
         return blocker;
     const ServoInfo &info = m_servos->at(index).info;
     const QString held = m_held.value(info.address());
     if (!held.isEmpty())
-        return held;
+        return Refusal::servoHeld(held);
     if (!info.table().find(u"goal_position") || !info.table().find(u"torque_enable"))
-        return Tr::tr("This servo has no goal position register: it cannot be moved.");
+        return Refusal(Refusal::Code::NotMovable);
     return {};
 }
 
-OperationReply *BusClient::identifyJoint(int index, QString *error)
+OperationReply *BusClient::identifyJoint(int index, Refusal *refusal)
 {
-    const QString blocker = identifyBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
+    if (refused(identifyBlocker(index), refusal))
         return nullptr;
-    }
     const ServoInfo &info = m_servos->at(index).info;
     m_identifying = info.address();
-    return startOperation(Operation::Identify, index, error, Work::Foreground,
+    return startOperation(Operation::Identify, index, refusal, Work::Foreground,
                           &operations::identifyJoint);
 }
 
@@ -566,27 +550,25 @@ void BusClient::holdServo(int index, const QString &reason)
     m_servos->noteUpdated(index); // what it may do now has changed
 }
 
-void BusClient::releaseServo(quint8 id, qint32 baud)
+void BusClient::releaseServo(const ServoAddress &address)
 {
-    if (m_held.remove({id, baud}) > 0 && m_servos->indexOf(id, baud) >= 0)
-        m_servos->noteUpdated(m_servos->indexOf(id, baud));
+    if (m_held.remove(address) > 0 && m_servos->indexOf(address) >= 0)
+        m_servos->noteUpdated(m_servos->indexOf(address));
 }
+
 OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
                                       std::optional<quint8> replyId, int replyDataSize,
-                                      QString *error)
+                                      Refusal *refusal)
 {
-    QString refusal;
+    Refusal why;
     if (!isConnected())
-        refusal = Tr::tr("The bus is not connected.");
+        why = Refusal(Refusal::Code::NotConnected);
     else if (!decodePacket(frame))
-        refusal = Tr::tr("That is not a whole Feetech frame (header, length and checksum).");
+        why = Refusal(Refusal::Code::NotAFrame);
     else if (!baudCode(baud))
-        refusal = Tr::tr("%1 bps is not a Feetech baud rate.").arg(baud);
-    if (!refusal.isEmpty()) {
-        if (error)
-            *error = refusal;
+        why = Refusal::notAFeetechRate(baud);
+    if (refused(why, refusal))
         return nullptr;
-    }
     return submit(operations::sendPacket(frame, baud, replyId, replyDataSize),
                   replyId.value_or(kBroadcastId), baud, Work::Foreground);
 }

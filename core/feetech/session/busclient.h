@@ -12,6 +12,7 @@
 #include "motorsetupservice.h"
 #include "operationreply.h"
 #include "parametermodel.h"
+#include "refusal.h"
 #include "servohealth.h"
 #include "servolist.h"
 #include "sessionthread.h"
@@ -29,7 +30,7 @@
 
 namespace feetech {
 
-// Each operation it submits returns an OperationReply (nullptr, with *error, when refused), which
+// Each operation it submits returns an OperationReply (nullptr, with *refusal, when refused), which
 // finishes with the operation's result; submitted names every reply as it is made, for whoever
 // reports all of them (the status bar). Refreshes in the background have none.
 class BusClient : public QObject
@@ -59,48 +60,48 @@ public:
     // The servos found, each with its parameter model, in the order the tree shows them.
     ServoList *servos() const { return m_servos; }
 
-    // Why changes cannot be made to servo `index` now (empty when they can).
-    QString writeBlocker(int index) const;
+    // Why changes cannot be made to servo `index` now (none when they can).
+    Refusal writeBlocker(int index) const;
     // Why a command that is no register write (reboot, clear status) cannot be sent now, or
-    // nothing.
-    QString commandBlocker(int index) const;
+    // none.
+    Refusal commandBlocker(int index) const;
 
     OperationReply *readServo(int index);
     // Present values and other RAM registers, in the background; skipped while busy.
     void refreshRam(int index);
     // Writes the servo's edits (except ID and baud rate: see changeId / changeBaud) and reads
-    // them back. False and *error when nothing was sent.
-    OperationReply *apply(int index, QString *error = nullptr);
+    // them back. Nullptr and *refusal when nothing was sent.
+    OperationReply *apply(int index, Refusal *refusal = nullptr);
     // Everything pending: the register edits, then an ID edit through changeId, then a baud
     // edit through changeBaud, each only once the one before has succeeded.
-    OperationReply *applyAll(int index, QString *error = nullptr);
-    OperationReply *changeId(int index, int newId, QString *error = nullptr);
-    OperationReply *changeBaud(int index, qint32 newBaud, QString *error = nullptr);
-    OperationReply *calibrateMiddle(int index, QString *error = nullptr);
-    OperationReply *factoryReset(int index, QString *error = nullptr);
-    OperationReply *reboot(int index, QString *error = nullptr);
-    OperationReply *clearStatus(int index, QString *error = nullptr);
+    OperationReply *applyAll(int index, Refusal *refusal = nullptr);
+    OperationReply *changeId(int index, int newId, Refusal *refusal = nullptr);
+    OperationReply *changeBaud(int index, qint32 newBaud, Refusal *refusal = nullptr);
+    OperationReply *calibrateMiddle(int index, Refusal *refusal = nullptr);
+    OperationReply *factoryReset(int index, Refusal *refusal = nullptr);
+    OperationReply *reboot(int index, Refusal *refusal = nullptr);
+    OperationReply *clearStatus(int index, Refusal *refusal = nullptr);
     // Whether servo `index`'s EEPROM lock reads open (lock = 0) in its last read; false when it
     // is locked, not read yet or has no lock register.
     bool eepromUnlocked(int index) const;
     // Closes it and reads it back (Session::lockEeprom).
-    OperationReply *lockEeprom(int index, QString *error = nullptr);
+    OperationReply *lockEeprom(int index, Refusal *refusal = nullptr);
     // A frame built by hand (the packet window), queued like any command and sent once at
     // `baud` (Session::sendPacket). The caller has asked before anything that writes EEPROM.
     OperationReply *sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
-                               int replyDataSize, QString *error = nullptr);
+                               int replyDataSize, Refusal *refusal = nullptr);
 
     // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
 
-    // Why servo `index` cannot be identified now (empty when it can): no bus, an unknown
+    // Why servo `index` cannot be identified now (none when it can): no bus, an unknown
     // model, another operation, or something holding the servo (a motion test).
-    QString identifyBlocker(int index) const;
-    OperationReply *identifyJoint(int index, QString *error = nullptr);
+    Refusal identifyBlocker(int index) const;
+    OperationReply *identifyJoint(int index, Refusal *refusal = nullptr);
     bool isIdentifying(int index) const;
     // What moves a servo outside the session's operations (a motion test) holds it while it
-    // runs: identifyBlocker gives `reason` meanwhile.
+    // runs: identifyBlocker gives ServoHeld with `reason` meanwhile.
     void holdServo(int index, const QString &reason);
-    void releaseServo(quint8 id, qint32 baud);
+    void releaseServo(const ServoAddress &address);
 
     // ---- live monitoring and control
 
@@ -110,9 +111,10 @@ public:
     // Control writes: register values by key, in register units, written and read back (EEPROM
     // ones unlocked and locked again). Unlike apply() they do not wait for an idle bus and
     // leave the servo's pending edits alone; the model shows what the read-back says.
-    // False and *error (naming the register) when a value is unknown or out of range.
+    // Nullptr and *refusal (BadValue, naming the register) when a value is unknown or out of
+    // range.
     OperationReply *writeValues(int index, const QVector<model::WriteItem> &values,
-                                QString *error = nullptr);
+                                Refusal *refusal = nullptr);
     // Torque enable 0 on every servo of the bus: a broadcast WRITE at each baud rate the scan
     // found servos at, ahead of anything queued (a running scan is cancelled), then a read-back
     // from each servo found. Emits allTorqueOffRequested at once.
@@ -122,9 +124,9 @@ public:
         int index = 0;
         qint32 position = 0; // register units (steps)
     };
-    // One SYNC WRITE of goal positions per baud rate, a reply each; none and *error when a
+    // One SYNC WRITE of goal positions per baud rate, a reply each; none and *refusal when a
     // position is out of its servo's range or a servo is unknown (nothing sent).
-    QVector<OperationReply *> moveAll(const QVector<Goal> &goals, QString *error = nullptr);
+    QVector<OperationReply *> moveAll(const QVector<Goal> &goals, Refusal *refusal = nullptr);
 
     // ---- the services' access: the session, and submitting operations to it
 
@@ -139,7 +141,7 @@ public:
         Emergency // All torque off: ahead of everything, it does not make the bus busy
     };
     // The operation `make` gives for servo `index` (as it is now), submitted.
-    OperationReply *startOperation(Operation operation, int index, QString *error, Work kind,
+    OperationReply *startOperation(Operation operation, int index, Refusal *refusal, Work kind,
                                    const std::function<BusOperation(const ServoInfo &)> &make);
     // Queues `operation` (busoperations.h) in the session under a new ticket, as work on the
     // servo at `id` and `baud`; its reply (none for a background one).
@@ -169,7 +171,7 @@ private:
     void onOperationFinished(const OperationResult &result);
     void forgetWork(); // the link went down: nothing is running any more
     // The pending edits as planApply plans them; with `withAddress` the ID and baud too.
-    OperationReply *startApply(int index, QString *error, bool withAddress);
+    OperationReply *startApply(int index, Refusal *refusal, bool withAddress);
 
     seriallink::SessionThread<Session> m_worker;
     seriallink::LinkMirror m_link;

@@ -5,17 +5,6 @@
 #include "busclient.h"
 #include "busoperations.h"
 
-#include <QCoreApplication>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
-};
-
-} // namespace
-
 namespace feetech {
 
 BusGuard::BusGuard(BusClient *client)
@@ -27,7 +16,7 @@ BusGuard::BusGuard(BusClient *client)
     connect(client->session(), &Session::guardEvent, this, [this](const GuardEvent &guarded) {
         m_lastEvent.insert({guarded.id, guarded.baud}, guarded);
         emit event(guarded);
-        const int index = m_client->servos()->indexOf(guarded.id, guarded.baud);
+        const int index = m_client->servos()->indexOf({guarded.id, guarded.baud});
         if (index >= 0)
             m_client->servos()->noteUpdated(index);
     });
@@ -97,20 +86,15 @@ std::optional<GuardEvent> BusGuard::lastEvent(int index) const
     return *event;
 }
 
-OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, QString *error)
+OperationReply *BusGuard::recoverOverload(int index, bool checkOnly, Refusal *refusal)
 {
-    const QString blocker = m_client->writeBlocker(index);
-    if (!blocker.isEmpty()) {
-        if (error)
-            *error = blocker;
+    if (refused(m_client->writeBlocker(index), refusal))
         return nullptr;
-    }
     if (!m_client->servos()->at(index).info.table().find(u"status")) {
-        if (error)
-            *error = Tr::tr("This servo has no status register: there is nothing to recover.");
+        refused(Refusal(Refusal::Code::NoStatusRegister), refusal);
         return nullptr;
     }
-    return m_client->startOperation(Operation::RecoverOverload, index, error,
+    return m_client->startOperation(Operation::RecoverOverload, index, refusal,
                                     BusClient::Work::Foreground,
                                     [checkOnly](const ServoInfo &info) {
                                         return operations::recoverOverload(info, checkOnly);

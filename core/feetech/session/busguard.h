@@ -3,6 +3,7 @@
 #pragma once
 
 #include "guardkeeper.h"
+#include "refusal.h"
 
 #include <QHash>
 #include <QObject>
@@ -34,8 +35,8 @@ public:
     // The newest thing the guard said about servo `index`.
     std::optional<GuardEvent> lastEvent(int index) const;
     // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
-    // result says stillLatched when a power cycle is due. Nullptr and *error when refused.
-    OperationReply *recoverOverload(int index, bool checkOnly, QString *error = nullptr);
+    // result says stillLatched when a power cycle is due. Nullptr and *refusal when refused.
+    OperationReply *recoverOverload(int index, bool checkOnly, Refusal *refusal = nullptr);
 
 signals:
     // The guard warned or acted (the message names the servo, the figures and the action).

@@ -51,7 +51,7 @@ void DoctorCheck::readNext()
     }
     emit progress(m_next, int(m_seen.found.size()));
     const ServoInfo &servo = m_seen.found.at(m_next);
-    const int index = m_client->servos()->indexOf(servo.id, servo.baud);
+    const int index = m_client->servos()->indexOf(servo.address());
     if (index < 0) {
         ++m_next;
         readNext();
@@ -73,7 +73,7 @@ void DoctorCheck::onRead(bool readable)
 {
     m_guard.stop();
     const ServoInfo servo = m_seen.found.at(m_next);
-    const int index = m_client->servos()->indexOf(servo.id, servo.baud);
+    const int index = m_client->servos()->indexOf(servo.address());
     if (index >= 0) {
         const model::ParameterModel *values = m_client->servos()->parameters(index);
         m_seen.conditions.append(servoCondition(

@@ -4,17 +4,6 @@
 #include "busclient.h"
 #include "busoperations.h"
 
-#include <QCoreApplication>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
-};
-
-} // namespace
-
 namespace feetech {
 
 HealthService::HealthService(BusClient *client)
@@ -39,27 +28,24 @@ void HealthService::onWorkFinished(const OperationResult &result)
     }
 }
 
-OperationReply *HealthService::check(const QVector<int> &indexes, int reads, QString *error)
+OperationReply *HealthService::check(const QVector<int> &indexes, int reads, Refusal *refusal)
 {
-    QString why;
+    Refusal why;
     if (!m_client->isConnected())
-        why = Tr::tr("The bus is not connected.");
+        why = Refusal(Refusal::Code::NotConnected);
     else if (m_client->isBusy())
-        why = Tr::tr("Another operation is still running.");
+        why = Refusal(Refusal::Code::Busy);
     else if (indexes.isEmpty())
-        why = Tr::tr("No servo to check: scan the bus first.");
+        why = Refusal(Refusal::Code::NoServoToCheck);
     QVector<ServoInfo> servos;
     for (const int index : indexes) {
         if (index < 0 || index >= m_client->servos()->count())
-            why = Tr::tr("No servo is selected.");
+            why = Refusal(Refusal::Code::NoServo);
         else
             servos.append(m_client->servos()->at(index).info);
     }
-    if (!why.isEmpty()) {
-        if (error)
-            *error = why;
+    if (refused(why, refusal))
         return nullptr;
-    }
     m_checking = true;
     // Several servos, none of them the target: the check reports each on its own.
     OperationReply *reply =
@@ -79,24 +65,20 @@ void HealthService::cancel()
         session, [session] { session->cancel(Operation::HealthCheck); }, Qt::QueuedConnection);
 }
 
-QString HealthService::moveTestBlocker(int index) const
+Refusal HealthService::moveTestBlocker(int index) const
 {
     return m_client->identifyBlocker(index);
 }
 
-OperationReply *HealthService::moveTest(int index, bool confirmed, QString *error)
+OperationReply *HealthService::moveTest(int index, bool confirmed, Refusal *refusal)
 {
-    QString why = moveTestBlocker(index);
-    if (why.isEmpty() && !confirmed)
-        why = Tr::tr("The move test moves servo %1: it runs only once that is confirmed.")
-                  .arg(m_client->servos()->at(index).info.id);
-    if (!why.isEmpty()) {
-        if (error)
-            *error = why;
+    Refusal why = moveTestBlocker(index);
+    if (!why && !confirmed)
+        why = Refusal::notConfirmed(m_client->servos()->at(index).info.id);
+    if (refused(why, refusal))
         return nullptr;
-    }
     OperationReply *reply = m_client->startOperation(
-        Operation::MoveTest, index, error, BusClient::Work::Foreground, &operations::moveTest);
+        Operation::MoveTest, index, refusal, BusClient::Work::Foreground, &operations::moveTest);
     if (reply)
         connect(reply, &OperationReply::finished, this, &HealthService::onWorkFinished);
     return reply;

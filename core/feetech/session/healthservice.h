@@ -1,6 +1,7 @@
 // The GUI thread's side of the health check of the servos found, and of its confirmed move test.
 #pragma once
 
+#include "refusal.h"
 #include "servohealth.h"
 
 #include <QObject>
@@ -23,18 +24,19 @@ public:
     explicit HealthService(BusClient *client);
 
     // Reads each of servos `indexes` in turn (its limits and `reads` feedback blocks); a
-    // reading per servo, then checkFinished. Nullptr and *error
+    // reading per servo, then checkFinished. Nullptr and *refusal
     // when nothing was started.
     OperationReply *check(const QVector<int> &indexes, int reads = kDefaultHealthReads,
-                          QString *error = nullptr);
+                          Refusal *refusal = nullptr);
     // The running check stops before its next servo.
     void cancel();
     bool isChecking() const { return m_checking; }
-    // Why servo `index` cannot take the move test now (empty when it can).
-    QString moveTestBlocker(int index) const;
+    // Why servo `index` cannot take the move test now (none when it can).
+    Refusal moveTestBlocker(int index) const;
     // The move test moves the horn: it runs only when `confirmed` says the user agreed to it;
-    // otherwise, as when blocked, nullptr and *error, and nothing is sent. Ends with moveTested.
-    OperationReply *moveTest(int index, bool confirmed, QString *error = nullptr);
+    // otherwise (NotConfirmed), as when blocked, nullptr and *refusal, and nothing is sent.
+    // Ends with moveTested.
+    OperationReply *moveTest(int index, bool confirmed, Refusal *refusal = nullptr);
 
 signals:
     // Each servo's reading as it comes, the `done`-th of `total`.

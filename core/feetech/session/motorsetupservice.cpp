@@ -4,17 +4,6 @@
 #include "busclient.h"
 #include "busoperations.h"
 
-#include <QCoreApplication>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
-};
-
-} // namespace
-
 namespace feetech {
 
 MotorSetupService::MotorSetupService(BusClient *client)
@@ -22,18 +11,15 @@ MotorSetupService::MotorSetupService(BusClient *client)
     , m_client(client)
 { }
 
-OperationReply *MotorSetupService::start(const BusOperation &operation, QString *error)
+OperationReply *MotorSetupService::start(const BusOperation &operation, Refusal *refusal)
 {
-    QString why;
+    Refusal why;
     if (!m_client->isConnected())
-        why = Tr::tr("The bus is not connected.");
+        why = Refusal(Refusal::Code::NotConnected);
     else if (m_client->isBusy())
-        why = Tr::tr("Another operation is still running.");
-    if (!why.isEmpty()) {
-        if (error)
-            *error = why;
+        why = Refusal(Refusal::Code::Busy);
+    if (refused(why, refusal))
         return nullptr;
-    }
     // No servo of the list is its target: the work finds its own servo.
     OperationReply *reply = m_client->submit(operation, 0, 0, BusClient::Work::Foreground);
     connect(reply, &OperationReply::progress, this, [this](const OperationProgress &progress) {
@@ -43,20 +29,20 @@ OperationReply *MotorSetupService::start(const BusOperation &operation, QString 
     return reply;
 }
 
-OperationReply *MotorSetupService::find(const MotorTarget &target, QString *error)
+OperationReply *MotorSetupService::find(const MotorTarget &target, Refusal *refusal)
 {
-    return start(operations::findMotor(target), error);
+    return start(operations::findMotor(target), refusal);
 }
 
-OperationReply *MotorSetupService::setUp(const MotorTarget &target, QString *error)
+OperationReply *MotorSetupService::setUp(const MotorTarget &target, Refusal *refusal)
 {
-    return start(operations::setUpMotor(target), error);
+    return start(operations::setUpMotor(target), refusal);
 }
 
 OperationReply *MotorSetupService::checkJoints(qint32 baud, const QVector<JointCheck> &joints,
-                                               QString *error)
+                                               Refusal *refusal)
 {
-    return start(operations::checkJoints(baud, joints), error);
+    return start(operations::checkJoints(baud, joints), refusal);
 }
 
 void MotorSetupService::cancel()
@@ -85,7 +71,7 @@ void MotorSetupService::onWorkFinished(const OperationResult &result)
         reported.message = result.message;
     }
     // A servo of the list that was set up now answers elsewhere.
-    const int index = m_client->servos()->indexOf(reported.from.id, reported.from.baud);
+    const int index = m_client->servos()->indexOf(reported.from.address());
     const bool moved = reported.from.id != reported.to.id || reported.from.baud != reported.to.baud;
     if (reported.setUp && reported.ok && index >= 0 && moved)
         m_client->servos()->move(index, reported.to);

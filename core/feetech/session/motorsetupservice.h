@@ -3,6 +3,7 @@
 
 #include "busoperation.h"
 #include "motorsetup.h"
+#include "refusal.h"
 
 #include <QObject>
 #include <QVector>
@@ -24,13 +25,14 @@ class MotorSetupService : public QObject
 public:
     explicit MotorSetupService(BusClient *client);
 
-    // Looks for the one servo on the bus at every rate. Nullptr and *error when not started.
-    OperationReply *find(const MotorTarget &target, QString *error = nullptr);
+    // Looks for the one servo on the bus at every rate. Nullptr and *refusal (NotConnected,
+    // Busy) when not started; the same for the others.
+    OperationReply *find(const MotorTarget &target, Refusal *refusal = nullptr);
     // Finds the one servo again and gives it the target's ID, rate and settings, verified.
-    OperationReply *setUp(const MotorTarget &target, QString *error = nullptr);
+    OperationReply *setUp(const MotorTarget &target, Refusal *refusal = nullptr);
     // Which of `joints` already answer at their ID at `baud`, as their model.
     OperationReply *checkJoints(qint32 baud, const QVector<JointCheck> &joints,
-                                QString *error = nullptr);
+                                Refusal *refusal = nullptr);
     // Stops a find, set-up or check before its next step.
     void cancel();
 
@@ -40,7 +42,7 @@ signals:
     void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
 
 private:
-    OperationReply *start(const BusOperation &operation, QString *error);
+    OperationReply *start(const BusOperation &operation, Refusal *refusal);
     void onWorkFinished(const OperationResult &result);
 
     BusClient *m_client;

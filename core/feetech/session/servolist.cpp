@@ -31,10 +31,10 @@ model::ParameterModel *ServoList::parameters(int index) const
     return m_servos.at(std::size_t(index))->parameters.get();
 }
 
-int ServoList::indexOf(quint8 id, qint32 baud) const
+int ServoList::indexOf(const ServoAddress &address) const
 {
     for (int i = 0; i < count(); ++i) {
-        if (at(i).info.id == id && at(i).info.baud == baud)
+        if (at(i).info.address() == address)
             return i;
     }
     return -1;

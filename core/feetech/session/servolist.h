@@ -37,7 +37,7 @@ public:
     int count() const { return int(m_servos.size()); }
     const Servo &at(int index) const { return *m_servos.at(std::size_t(index)); }
     model::ParameterModel *parameters(int index) const;
-    int indexOf(quint8 id, qint32 baud) const; // -1 when not known
+    int indexOf(const ServoAddress &address) const; // -1 when not known
     QVector<int> idsInUse() const; // at every baud rate scanned
 
     // For the client and its services: a servo found, moved (a new ID or rate), changed in

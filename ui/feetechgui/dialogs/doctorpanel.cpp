@@ -155,7 +155,7 @@ void DoctorPanel::moveSelected(bool confirm)
     if (row < 0 || row >= m_findings.size() || m_findings.at(row).moves.isEmpty())
         return;
     const feetech::ServoMove move = m_findings.at(row).moves.first();
-    const int index = m_client->servos()->indexOf(move.servo.id, move.servo.baud);
+    const int index = m_client->servos()->indexOf(move.servo.address());
     if (index < 0) {
         emit problem(tr("Servo %1 is no longer on the bus; re-scan first.").arg(move.servo.id));
         return;
@@ -166,16 +166,16 @@ void DoctorPanel::moveSelected(bool confirm)
                                  QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel)
             != QMessageBox::Ok)
         return;
-    QString error;
+    feetech::Refusal refusal;
     m_moving = move;
     feetech::OperationReply *reply = move.newId >= 0
-        ? m_client->changeId(index, move.newId, &error)
-        : m_client->changeBaud(index, move.newBaud, &error);
+        ? m_client->changeId(index, move.newId, &refusal)
+        : m_client->changeBaud(index, move.newBaud, &refusal);
     if (reply) {
         connect(reply, &feetech::OperationReply::finished, this, &DoctorPanel::onOperationFinished);
     } else {
         m_moving.reset();
-        emit problem(error);
+        emit problem(refusal.describe());
     }
     updateMove();
 }
@@ -202,16 +202,16 @@ void DoctorPanel::onOperationFinished(const feetech::OperationResult &result)
 
 void DoctorPanel::changeBaudIfAsked()
 {
-    const int index = m_client->servos()->indexOf(quint8(m_moving->newId), m_moving->servo.baud);
-    QString error;
+    const int index = m_client->servos()->indexOf({quint8(m_moving->newId), m_moving->servo.baud});
+    feetech::Refusal refusal;
     feetech::OperationReply *reply =
-        index < 0 ? nullptr : m_client->changeBaud(index, m_moving->newBaud, &error);
+        index < 0 ? nullptr : m_client->changeBaud(index, m_moving->newBaud, &refusal);
     if (!reply) {
         m_moving.reset();
         updateMove();
-        emit problem(error.isEmpty() ? tr("The servo moved to its new ID could not be found to "
-                                          "change its rate; re-scan.")
-                                     : error);
+        emit problem(!refusal ? tr("The servo moved to its new ID could not be found to "
+                                   "change its rate; re-scan.")
+                              : refusal.describe());
         return;
     }
     connect(reply, &feetech::OperationReply::finished, this, &DoctorPanel::onOperationFinished);

@@ -13,17 +13,16 @@ OverloadRecoveryDialog::OverloadRecoveryDialog(feetech::BusClient *client, int i
                                                QWidget *parent)
     : QDialog(parent)
     , m_client(client)
-    , m_id(client->servos()->at(index).info.id)
-    , m_baud(client->servos()->at(index).info.baud)
+    , m_servo(client->servos()->at(index).info.address())
 {
     setObjectName(QStringLiteral("overloadRecoveryDialog"));
-    setWindowTitle(tr("Recover servo ID %1").arg(m_id));
+    setWindowTitle(tr("Recover servo ID %1").arg(m_servo.id));
     m_text = new QLabel(
         tr("The overload protection of servo ID %1 tripped: its torque is off.\n\n"
            "First free the horn (remove what blocks it). Then ServoBench switches its torque "
            "off and on again, with the goal at the present position so nothing moves, and "
            "reads the overload bit.")
-            .arg(m_id),
+            .arg(m_servo.id),
         this);
     m_text->setObjectName(QStringLiteral("recoveryText"));
     m_text->setWordWrap(true);
@@ -49,12 +48,13 @@ void OverloadRecoveryDialog::start()
 {
     if (!m_client)
         return;
-    QString error;
-    const int index = m_client->servos()->indexOf(m_id, m_baud);
+    feetech::Refusal refusal;
+    const int index = m_client->servos()->indexOf(m_servo);
     feetech::OperationReply *reply =
-        index < 0 ? nullptr : m_client->guard()->recoverOverload(index, m_checkOnly, &error);
+        index < 0 ? nullptr : m_client->guard()->recoverOverload(index, m_checkOnly, &refusal);
     if (!reply) {
-        m_text->setText(index < 0 ? tr("Servo ID %1 is no longer on the bus.").arg(m_id) : error);
+        m_text->setText(index < 0 ? tr("Servo ID %1 is no longer on the bus.").arg(m_servo.id)
+                                  : refusal.describe());
         return;
     }
     connect(reply, &feetech::OperationReply::finished, this,

@@ -2,6 +2,8 @@
 // when the overload bit stays set, the power cycle step by step and a check afterwards.
 #pragma once
 
+#include "bustypes.h"
+
 #include <QDialog>
 #include <QPointer>
 
@@ -28,8 +30,7 @@ private:
     void onOperationFinished(const feetech::OperationResult &result);
 
     QPointer<feetech::BusClient> m_client;
-    quint8 m_id = 0;
-    qint32 m_baud = 0;
+    feetech::ServoAddress m_servo;
     bool m_checkOnly = false; // the next press checks after a power cycle
     bool m_running = false;
     QLabel *m_text = nullptr;

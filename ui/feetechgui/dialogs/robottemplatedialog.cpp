@@ -353,7 +353,7 @@ void RobotTemplateDialog::takeSettingsFromServo()
         return;
     }
     const feetech::ServoInfo &info = m_client->servos()->at(index).info;
-    m_pendingRead = std::pair(row, std::pair(info.id, info.baud));
+    m_pendingRead = std::pair(row, info.address());
     m_error->setText(tr("Reading servo ID %1…").arg(info.id));
     if (feetech::OperationReply *reply = m_client->readServo(index))
         connect(reply, &feetech::OperationReply::finished, this,
@@ -363,8 +363,7 @@ void RobotTemplateDialog::takeSettingsFromServo()
 void RobotTemplateDialog::onOperationFinished(const feetech::OperationResult &result)
 {
     if (!m_pendingRead || result.operation != feetech::Operation::Read
-        || result.servo.id != m_pendingRead->second.first
-        || result.servo.baud != m_pendingRead->second.second)
+        || result.servo.address() != m_pendingRead->second)
         return;
     const int row = m_pendingRead->first;
     m_pendingRead.reset();
@@ -372,7 +371,7 @@ void RobotTemplateDialog::onOperationFinished(const feetech::OperationResult &re
         m_error->setText(result.message);
         return;
     }
-    applyServoValues(row, m_client->servos()->indexOf(result.servo.id, result.servo.baud));
+    applyServoValues(row, m_client->servos()->indexOf(result.servo.address()));
 }
 
 void RobotTemplateDialog::applyServoValues(int row, int index)

@@ -2,6 +2,7 @@
 // the scan found, checked as loading checks it, and saved where the set-up wizards find it.
 #pragma once
 
+#include "bustypes.h"
 #include "robottemplate.h"
 
 #include <QDialog>
@@ -75,6 +76,6 @@ private:
     QLabel *m_path = nullptr;
     QPushButton *m_save = nullptr;
     std::function<bool(const QString &path)> m_askOverwrite;
-    std::optional<std::pair<int, std::pair<quint8, qint32>>> m_pendingRead; // row, servo
+    std::optional<std::pair<int, feetech::ServoAddress>> m_pendingRead; // row, servo
     bool m_filling = false;
 };

@@ -178,9 +178,8 @@ void ControlPage::setServo(int index)
 {
     if (index < 0 || index >= m_client->servos()->count())
         index = -1;
-    const std::optional<std::pair<quint8, qint32>> servo = index >= 0
-        ? std::make_optional(std::make_pair(m_client->servos()->at(index).info.id,
-                                            m_client->servos()->at(index).info.baud))
+    const std::optional<feetech::ServoAddress> servo = index >= 0
+        ? std::make_optional(m_client->servos()->at(index).info.address())
         : std::nullopt;
     const bool changed = servo != m_servo;
     m_index = index;
@@ -228,13 +227,13 @@ bool ControlPage::testRunsHere() const
 
 QString ControlPage::servoName() const
 {
-    return m_servo ? tr("Servo ID %1").arg(m_servo->first) : QString();
+    return m_servo ? tr("Servo ID %1").arg(m_servo->id) : QString();
 }
 
 void ControlPage::onServosChanged()
 {
     // The list was rebuilt or reordered: find the servo shown by its address.
-    const int index = m_servo ? m_client->servos()->indexOf(m_servo->first, m_servo->second) : -1;
+    const int index = m_servo ? m_client->servos()->indexOf(*m_servo) : -1;
     if (index != m_index) {
         m_index = index;
         if (index < 0)
@@ -414,7 +413,7 @@ void ControlPage::onTelemetry(const QVector<feetech::FeedbackSample> &samples)
         return;
     std::optional<double> position;
     for (const feetech::FeedbackSample &sample : samples) {
-        if (sample.id == m_servo->first && sample.baud == m_servo->second
+        if (feetech::ServoAddress {sample.id, sample.baud} == *m_servo
             && sample.value(feetech::Quantity::Position))
             position = sample.value(feetech::Quantity::Position);
     }
@@ -537,18 +536,18 @@ void ControlPage::setStatus(const QString &text, Severity severity)
 
 bool ControlPage::write(WriteKind kind, const QVector<model::WriteItem> &values)
 {
-    QString error;
+    feetech::Refusal refusal;
     feetech::OperationReply *reply = kind == WriteKind::Goal
-        ? m_goals->send(m_index, values, &error)
-        : m_client->writeValues(m_index, values, &error);
+        ? m_goals->send(m_index, values, &refusal)
+        : m_client->writeValues(m_index, values, &refusal);
     if (!reply) {
-        setStatus(tr("%1: %2").arg(servoName(), error), Severity::Error);
+        setStatus(tr("%1: %2").arg(servoName(), refusal.describe()), Severity::Error);
         return false;
     }
     if (kind == WriteKind::Torque)
         ++m_torqueWritesInFlight;
     connect(reply, &feetech::OperationReply::finished, this,
-            [this, kind, id = m_servo->first](const feetech::OperationResult &result) {
+            [this, kind, id = m_servo->id](const feetech::OperationResult &result) {
                 onWriteFinished(kind, id, result);
             });
     return true;

@@ -2,6 +2,7 @@
 // servo selected in the tree, beside the motion-test panel.
 #pragma once
 
+#include "bustypes.h"
 #include "motiontest.h"
 #include "servocontrolgroups.h"
 
@@ -9,7 +10,6 @@
 #include <QWidget>
 
 #include <optional>
-#include <utility>
 
 class GuardBanner;
 class MotionTestPanel;
@@ -87,7 +87,7 @@ private:
     QPointer<feetech::BusClient> m_client; // the main window may delete it before its pages
     feetech::MotionTest *m_test = nullptr;
     int m_index = -1;
-    std::optional<std::pair<quint8, qint32>> m_servo; // ID and baud of the servo shown
+    std::optional<feetech::ServoAddress> m_servo; // the servo shown
     bool m_confirmMoves = true;
 
     // Goal writes from the slider: one in flight, only the newest value waits behind it.

@@ -48,7 +48,7 @@ GuardBanner::GuardBanner(feetech::BusClient *client, QWidget *parent)
             return;
         connect(reply, &feetech::OperationReply::finished, this,
                 [this](const feetech::OperationResult &result) {
-                    if (result.ok && m_servo == std::pair(result.servo.id, result.servo.baud)) {
+                    if (result.ok && m_servo == result.servo.address()) {
                         m_text->setText(result.message);
                         m_text->setPalette(QPalette());
                         m_recover->hide();
@@ -60,8 +60,7 @@ GuardBanner::GuardBanner(feetech::BusClient *client, QWidget *parent)
 void GuardBanner::setServo(int index)
 {
     m_index = index;
-    m_servo = index >= 0 ? std::make_optional(std::make_pair(
-                  m_client->servos()->at(index).info.id, m_client->servos()->at(index).info.baud))
+    m_servo = index >= 0 ? std::make_optional(m_client->servos()->at(index).info.address())
                          : std::nullopt;
     showGuard();
 }
@@ -74,14 +73,14 @@ QString GuardBanner::text() const
 void GuardBanner::onServosChanged()
 {
     // The list was rebuilt or reordered: find the servo shown by its address.
-    m_index = m_servo ? m_client->servos()->indexOf(m_servo->first, m_servo->second) : -1;
+    m_index = m_servo ? m_client->servos()->indexOf(*m_servo) : -1;
     if (m_index < 0)
         m_servo.reset();
 }
 
 void GuardBanner::onGuardEvent(const feetech::GuardEvent &event)
 {
-    if (m_servo == std::pair(event.id, event.baud))
+    if (m_servo == feetech::ServoAddress {event.id, event.baud})
         showGuard();
 }
 

@@ -2,11 +2,12 @@
 // shown, with the guard's settings and the recovery of a tripped overload at hand.
 #pragma once
 
+#include "bustypes.h"
+
 #include <QFrame>
 #include <QPointer>
 
 #include <optional>
-#include <utility>
 
 class QLabel;
 class QPushButton;
@@ -38,7 +39,7 @@ private:
 
     QPointer<feetech::BusClient> m_client; // the main window may delete it before its pages
     int m_index = -1;
-    std::optional<std::pair<quint8, qint32>> m_servo; // ID and baud of the servo shown
+    std::optional<feetech::ServoAddress> m_servo; // the servo shown
 
     QLabel *m_text = nullptr;
     QPushButton *m_recover = nullptr;

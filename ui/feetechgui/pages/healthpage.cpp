@@ -158,8 +158,9 @@ bool HealthPage::check(QString *error)
     QVector<int> indexes;
     for (int i = 0; i < m_client->servos()->count(); ++i)
         indexes.append(i);
-    QString why;
-    if (!m_client->health()->check(indexes, feetech::kDefaultHealthReads, &why)) {
+    feetech::Refusal refusal;
+    if (!m_client->health()->check(indexes, feetech::kDefaultHealthReads, &refusal)) {
+        const QString why = refusal.describe();
         showState(why, true);
         if (error)
             *error = why;
@@ -187,7 +188,7 @@ bool HealthPage::moveTest(QString *error)
 {
     int index = selectedServo();
     QString why = index < 0 ? tr("Select the servo to move in the table first.")
-                            : m_client->health()->moveTestBlocker(index);
+                            : m_client->health()->moveTestBlocker(index).describe();
     if (why.isEmpty()) {
         // The question runs its own event loop: by its answer the servo list may have changed,
         // so the servo confirmed is looked up again by its address.
@@ -199,13 +200,15 @@ bool HealthPage::moveTest(QString *error)
                 .arg(info.model.name)
                 .arg(feetech::HealthMoveTest::kAmplitude);
         const bool confirmed = m_confirm(question);
-        index = m_client->servos()->indexOf(info.id, info.baud);
+        index = m_client->servos()->indexOf(info.address());
         if (!confirmed)
             why = tr("The move test was not confirmed: nothing moved.");
         else if (index < 0)
             why = tr("Servo %1 is no longer on the bus: nothing moved.").arg(info.id);
-        else if (m_client->health()->moveTest(index, true, &why))
+        else if (feetech::Refusal refusal; m_client->health()->moveTest(index, true, &refusal))
             m_moving = true;
+        else
+            why = refusal.describe();
     }
     if (!m_moving) {
         showState(why, true);
@@ -359,7 +362,7 @@ void HealthPage::updateActions()
     m_cancel->setEnabled(m_checking);
     const int index = selectedServo();
     m_move->setEnabled(!m_checking && !m_moving && index >= 0
-                       && m_client->health()->moveTestBlocker(index).isEmpty());
+                       && !m_client->health()->moveTestBlocker(index));
     m_save->setEnabled(!m_health.isEmpty() && !m_checking);
 }
 

@@ -24,15 +24,6 @@
 using namespace feetech::registerkeys;
 using widgethelpers::actionButton;
 
-namespace {
-
-quint64 servoKey(quint8 id, qint32 baud)
-{
-    return (quint64(quint32(baud)) << 8) | id;
-}
-
-} // namespace
-
 JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     : QWidget(parent)
     , m_client(client)
@@ -95,7 +86,7 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
         if (index < 0 || index >= m_client->servos()->count())
             return;
         const feetech::ServoInfo &info = m_client->servos()->at(index).info;
-        const int row = rowOf(info.id, info.baud);
+        const int row = rowOf(info.address());
         if (row < 0)
             return;
         const qint64 readMs = m_client->servos()->parameters(index)->lastReadMs(kPresentPosition);
@@ -140,10 +131,10 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     setMessage(tr("Targets only move servos when you press Move all."), Tone::Info);
 }
 
-int JointTable::rowOf(quint8 id, qint32 baud) const
+int JointTable::rowOf(const feetech::ServoAddress &servo) const
 {
     for (int row = 0; row < rowCount(); ++row) {
-        if (m_rows.at(row).id == id && m_rows.at(row).baud == baud)
+        if (m_rows.at(row).servo == servo)
             return row;
     }
     return -1;
@@ -153,15 +144,15 @@ int JointTable::servoIndex(int row) const
 {
     if (row < 0 || row >= rowCount())
         return -1;
-    return m_client->servos()->indexOf(m_rows.at(row).id, m_rows.at(row).baud);
+    return m_client->servos()->indexOf(m_rows.at(row).servo);
 }
 
 QVector<feetech::JointTarget> JointTable::joints() const
 {
     QVector<feetech::JointTarget> joints;
     for (int row = 0; row < rowCount(); ++row)
-        joints.append(
-            {m_rows.at(row).id, m_rows.at(row).baud, m_rows.at(row).target, targetRange(row)});
+        joints.append({m_rows.at(row).servo.id, m_rows.at(row).servo.baud, m_rows.at(row).target,
+                       targetRange(row)});
     return joints;
 }
 
@@ -182,7 +173,7 @@ bool JointTable::isPositionLive(int row) const
     // A servo the stream has given up on keeps its last sample, which is no longer live.
     const Row &entry = m_rows.at(row);
     for (const feetech::ServoTelemetry &servo : m_client->telemetry()->stats().servos) {
-        if (servo.id == entry.id && servo.baud == entry.baud)
+        if (feetech::ServoAddress {servo.id, servo.baud} == entry.servo)
             return !servo.missing;
     }
     return true;
@@ -255,9 +246,9 @@ QString JointTable::servoName(int row) const
 {
     const int index = servoIndex(row);
     if (index < 0)
-        return tr("ID %1").arg(m_rows.at(row).id);
+        return tr("ID %1").arg(m_rows.at(row).servo.id);
     return tr("ID %1 (%2)")
-        .arg(m_rows.at(row).id)
+        .arg(m_rows.at(row).servo.id)
         .arg(m_client->servos()->at(index).info.model.name);
 }
 
@@ -288,20 +279,18 @@ void JointTable::setMessage(const QString &text, Tone tone)
 void JointTable::rebuild()
 {
     // Targets belong to servos, not to row numbers: they survive a new scan of the same bus.
-    QHash<quint64, qint32> targets;
+    QHash<feetech::ServoAddress, qint32> targets;
     for (const Row &row : std::as_const(m_rows)) {
         if (row.target)
-            targets.insert(servoKey(row.id, row.baud), *row.target);
+            targets.insert(row.servo, *row.target);
     }
     m_rows.clear();
     for (int index = 0; index < m_client->servos()->count(); ++index) {
         const feetech::ServoInfo &info = m_client->servos()->at(index).info;
         Row row;
-        row.id = info.id;
-        row.baud = info.baud;
-        const quint64 key = servoKey(info.id, info.baud);
-        if (targets.contains(key))
-            row.target = targets.value(key);
+        row.servo = info.address();
+        if (targets.contains(row.servo))
+            row.target = targets.value(row.servo);
         row.modelReadMs = m_client->servos()->parameters(index)->lastReadMs(kPresentPosition);
         m_rows.append(row);
     }
@@ -309,12 +298,11 @@ void JointTable::rebuild()
     for (int row = 0; row < rowCount(); ++row) {
         auto *identify = new QPushButton(tr("Identify"), m_table);
         identify->setObjectName(QStringLiteral("identifyButton"));
-        connect(identify, &QPushButton::clicked, this,
-                [this, id = m_rows.at(row).id, baud = m_rows.at(row).baud] {
-                    QString error;
-                    if (!this->identify(rowOf(id, baud), &error))
-                        setMessage(error, Tone::Error);
-                });
+        connect(identify, &QPushButton::clicked, this, [this, servo = m_rows.at(row).servo] {
+            QString error;
+            if (!this->identify(rowOf(servo), &error))
+                setMessage(error, Tone::Error);
+        });
         m_table->setCellWidget(row, JointTableView::IdentifyColumn, identify);
         refreshRow(row);
     }
@@ -339,11 +327,11 @@ void JointTable::readWhileShown(bool all)
     int asked = 0;
     for (int row = 0; row < rowCount(); ++row) {
         const int index = servoIndex(row);
-        const quint64 key = servoKey(m_rows.at(row).id, m_rows.at(row).baud);
+        const feetech::ServoAddress &servo = m_rows.at(row).servo;
         if (index < 0
-            || (!all && (m_client->servos()->at(index).read || m_readAsked.contains(key))))
+            || (!all && (m_client->servos()->at(index).read || m_readAsked.contains(servo))))
             continue;
-        m_readAsked.insert(key);
+        m_readAsked.insert(servo);
         m_client->readServo(index);
         ++asked;
     }
@@ -399,7 +387,7 @@ void JointTable::onTelemetry(const QVector<feetech::FeedbackSample> &samples)
 {
     QSet<int> rows;
     for (const feetech::FeedbackSample &sample : samples) {
-        const int row = rowOf(sample.id, sample.baud);
+        const int row = rowOf({sample.id, sample.baud});
         if (row >= 0)
             rows.insert(row);
     }
@@ -419,9 +407,10 @@ void JointTable::onMoveFinished(const feetech::OperationResult &result)
         setMessage(tr("Move all failed: %1").arg(result.message), Tone::Error);
 }
 
-void JointTable::onTorqueWritten(quint8 id, qint32 baud, const feetech::OperationResult &result)
+void JointTable::onTorqueWritten(const feetech::ServoAddress &servo,
+                                 const feetech::OperationResult &result)
 {
-    const int row = rowOf(id, baud);
+    const int row = rowOf(servo);
     if (row < 0 || !m_rows.at(row).torqueRequested)
         return;
     const bool requestedOn = *m_rows.at(row).torqueRequested == feetech::TorqueMode::On;
@@ -493,18 +482,20 @@ bool JointTable::setTorque(int row, bool on, QString *error)
     }
     const feetech::TorqueMode mode = on ? feetech::TorqueMode::On : feetech::TorqueMode::Off;
     const auto value = m_client->servos()->at(index).info.table().torqueValue(mode);
-    QString why = tr("its model has no torque enable");
+    feetech::Refusal refusal;
     feetech::OperationReply *reply =
-        value ? m_client->writeValues(index, {{kTorqueEnable, *value}}, &why) : nullptr;
+        value ? m_client->writeValues(index, {{kTorqueEnable, *value}}, &refusal) : nullptr;
     if (!reply) {
+        const QString why = value ? refusal.describe() : tr("its model has no torque enable");
         if (error)
             *error = tr("%1: torque not switched %2: %3")
                          .arg(servoName(row), on ? tr("on") : tr("off"), why);
         return false;
     }
     connect(reply, &feetech::OperationReply::finished, this,
-            [this, id = m_rows.at(row).id, baud = m_rows.at(row).baud](
-                const feetech::OperationResult &result) { onTorqueWritten(id, baud, result); });
+            [this, servo = m_rows.at(row).servo](const feetech::OperationResult &result) {
+                onTorqueWritten(servo, result);
+            });
     m_rows[row].torqueRequested = mode;
     refreshRow(row);
     return true;
@@ -526,7 +517,7 @@ bool JointTable::moveAll(QString *error)
     for (int row = 0; row < rowCount(); ++row) {
         const int index = servoIndex(row);
         feetech::MoveAllJoint joint;
-        joint.baud = m_rows.at(row).baud;
+        joint.baud = m_rows.at(row).servo.baud;
         joint.known = index >= 0;
         joint.target = m_rows.at(row).target;
         joint.range = targetRange(row);
@@ -571,12 +562,12 @@ bool JointTable::moveAll(QString *error)
     QStringList ids;
     for (const int row : plan.rows) {
         goals.append({servoIndex(row), *m_rows.at(row).target});
-        ids.append(QString::number(m_rows.at(row).id));
+        ids.append(QString::number(m_rows.at(row).servo.id));
     }
-    QString why;
-    const QVector<feetech::OperationReply *> replies = m_client->moveAll(goals, &why);
+    feetech::Refusal refusal;
+    const QVector<feetech::OperationReply *> replies = m_client->moveAll(goals, &refusal);
     if (replies.isEmpty())
-        return refuse(tr("Nothing was sent: %1").arg(why));
+        return refuse(tr("Nothing was sent: %1").arg(refusal.describe()));
     m_movesInFlight += int(replies.size());
     for (feetech::OperationReply *reply : replies)
         connect(reply, &feetech::OperationReply::finished, this, &JointTable::onMoveFinished);
@@ -632,10 +623,10 @@ bool JointTable::identify(int row, QString *error)
             *error = tr("That servo is no longer on the bus.");
         return false;
     }
-    QString why;
-    if (!m_client->identifyJoint(index, &why)) {
+    feetech::Refusal refusal;
+    if (!m_client->identifyJoint(index, &refusal)) {
         if (error)
-            *error = tr("%1 cannot be identified now: %2").arg(servoName(row), why);
+            *error = tr("%1 cannot be identified now: %2").arg(servoName(row), refusal.describe());
         return false;
     }
     setMessage(tr("Identifying %1: watch which horn moves…").arg(servoName(row)), Tone::Info);
@@ -653,7 +644,7 @@ void JointTable::refreshIdentifyButtons()
         QPushButton *button = identifyButton(row);
         if (!button)
             continue;
-        const QString why = m_client->identifyBlocker(servoIndex(row));
+        const QString why = m_client->identifyBlocker(servoIndex(row)).describe();
         button->setEnabled(why.isEmpty());
         button->setToolTip(why.isEmpty() ? tr("Wiggle %1 slowly with little torque, then put it "
                                               "back as it was")

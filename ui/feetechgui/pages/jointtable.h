@@ -2,6 +2,7 @@
 // torque state; all targets moved at once, torque switched, servos read and identified.
 #pragma once
 
+#include "bustypes.h"
 #include "goalrange.h"
 #include "posematch.h"
 #include "tablefacts.h"
@@ -36,7 +37,7 @@ public:
     // Saving the targets as a pose file, and filling them from one.
     JointTablePoses *poses() const { return m_poses; }
     int rowCount() const { return int(m_rows.size()); }
-    int rowOf(quint8 id, qint32 baud) const; // -1 when the servo has no row
+    int rowOf(const feetech::ServoAddress &servo) const; // -1 when the servo has no row
     int servoIndex(int row) const; // the BusClient's index of the row's servo, -1 when gone
     QString servoName(int row) const; // "ID 3 (SCS15)"
     // Every row's servo with its target and the range it may be sent.
@@ -81,8 +82,7 @@ protected:
 private:
     struct Row
     {
-        quint8 id = 0;
-        qint32 baud = 0;
+        feetech::ServoAddress servo;
         std::optional<qint32> target;
         std::optional<feetech::TorqueMode> torqueRequested; // written, not yet read back
         // Which of the two sources of a position is newer when the monitor does not watch
@@ -103,7 +103,8 @@ private:
     void refreshIdentifyButtons();
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
     void onMoveFinished(const feetech::OperationResult &result);
-    void onTorqueWritten(quint8 id, qint32 baud, const feetech::OperationResult &result);
+    void onTorqueWritten(const feetech::ServoAddress &servo,
+                         const feetech::OperationResult &result);
     void onTorqueToggled(int row, bool on);
     std::optional<qint64> deviceValue(int row, const QString &key) const;
     // The sample the row's position and motion come from, when it is the newer source.
@@ -116,7 +117,7 @@ private:
 
     feetech::BusClient *m_client = nullptr;
     QVector<Row> m_rows;
-    QSet<quint64> m_readAsked; // servos (servoKey) read by readWhileShown since the tab opened
+    QSet<feetech::ServoAddress> m_readAsked; // read by readWhileShown since the tab opened
     JointTableView *m_table = nullptr;
     JointTablePoses *m_poses = nullptr;
     QLabel *m_hint = nullptr;

@@ -75,7 +75,7 @@ protected:
     void hideEvent(QHideEvent *event) override;
 
 private:
-    using Key = MonitorServoKey;
+    using Key = feetech::ServoAddress;
 
     QWidget *buildControls();
     void rebuildServoList();

@@ -26,7 +26,7 @@ MonitorServoList::MonitorServoList(QWidget *parent)
 
 void MonitorServoList::rebuild(const feetech::BusClient *client)
 {
-    QHash<MonitorServoKey, bool> previous;
+    QHash<feetech::ServoAddress, bool> previous;
     for (int row = 0; row < count(); ++row)
         previous.insert(keyOf(item(row)), item(row)->checkState() == Qt::Checked);
     m_updating = true;
@@ -42,9 +42,8 @@ void MonitorServoList::rebuild(const feetech::BusClient *client)
         entry->setData(kIndexRole, index);
         if (info.hasTable()) {
             entry->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
-            entry->setCheckState(previous.value(MonitorServoKey {info.id, info.baud}, true)
-                                     ? Qt::Checked
-                                     : Qt::Unchecked);
+            entry->setCheckState(previous.value(info.address(), true) ? Qt::Checked
+                                                                      : Qt::Unchecked);
         } else {
             // Without the family's table the feedback block cannot be decoded.
             entry->setFlags(Qt::ItemIsUserCheckable);
@@ -83,9 +82,9 @@ QVector<int> MonitorServoList::selectedServos() const
     return indexes;
 }
 
-QVector<MonitorServoKey> MonitorServoList::checkedKeys() const
+QVector<feetech::ServoAddress> MonitorServoList::checkedKeys() const
 {
-    QVector<MonitorServoKey> keys;
+    QVector<feetech::ServoAddress> keys;
     for (int row = 0; row < count(); ++row) {
         if (item(row)->checkState() == Qt::Checked)
             keys.append(keyOf(item(row)));
@@ -93,7 +92,7 @@ QVector<MonitorServoKey> MonitorServoList::checkedKeys() const
     return keys;
 }
 
-bool MonitorServoList::isListed(const MonitorServoKey &key) const
+bool MonitorServoList::isListed(const feetech::ServoAddress &key) const
 {
     for (int row = 0; row < count(); ++row) {
         if ((item(row)->flags() & Qt::ItemIsUserCheckable) && keyOf(item(row)) == key)
@@ -102,9 +101,9 @@ bool MonitorServoList::isListed(const MonitorServoKey &key) const
     return false;
 }
 
-QHash<MonitorServoKey, bool> MonitorServoList::ticks() const
+QHash<feetech::ServoAddress, bool> MonitorServoList::ticks() const
 {
-    QHash<MonitorServoKey, bool> ticks;
+    QHash<feetech::ServoAddress, bool> ticks;
     for (int row = 0; row < count(); ++row) {
         if (item(row)->flags() & Qt::ItemIsUserCheckable)
             ticks.insert(keyOf(item(row)), item(row)->checkState() == Qt::Checked);
@@ -112,7 +111,7 @@ QHash<MonitorServoKey, bool> MonitorServoList::ticks() const
     return ticks;
 }
 
-MonitorServoKey MonitorServoList::keyOf(const QListWidgetItem *entry) const
+feetech::ServoAddress MonitorServoList::keyOf(const QListWidgetItem *entry) const
 {
     return {quint8(entry->data(kIdRole).toInt()), entry->data(kBaudRole).toInt()};
 }

@@ -26,17 +26,17 @@ public:
     // Servos by their index in the bus client.
     void setSelectedServos(const QVector<int> &indexes);
     QVector<int> selectedServos() const;
-    QVector<MonitorServoKey> checkedKeys() const;
-    bool isListed(const MonitorServoKey &key) const;
+    QVector<feetech::ServoAddress> checkedKeys() const;
+    bool isListed(const feetech::ServoAddress &key) const;
     // Ticked or not, for each servo the list names.
-    QHash<MonitorServoKey, bool> ticks() const;
+    QHash<feetech::ServoAddress, bool> ticks() const;
 
 signals:
     // The user ticked or unticked a servo, or setSelectedServos changed the ticks.
     void ticksChanged();
 
 private:
-    MonitorServoKey keyOf(const QListWidgetItem *item) const;
+    feetech::ServoAddress keyOf(const QListWidgetItem *item) const;
 
     bool m_updating = false; // our own check-state changes are not the user's
 };

@@ -63,7 +63,7 @@ MonitorReadouts::MonitorReadouts(feetech::BusClient *client, QWidget *parent)
 
 void MonitorReadouts::addSample(const feetech::FeedbackSample &sample)
 {
-    Latest &latest = m_latest[MonitorServoKey {sample.id, sample.baud}];
+    Latest &latest = m_latest[feetech::ServoAddress {sample.id, sample.baud}];
     if (sample.steadyUs >= latest.sample.steadyUs)
         latest.sample = sample;
     latest.recent.push_back(sample.steadyUs);
@@ -85,7 +85,7 @@ void MonitorReadouts::refresh(const QVector<Row> &rows, const feetech::Telemetry
     const QLocale locale;
     const QString none = tr("—");
     for (int row = 0; row < rows.size(); ++row) {
-        const MonitorServoKey &key = rows.at(row).key;
+        const feetech::ServoAddress &key = rows.at(row).key;
         const auto latest = m_latest.find(key);
         const feetech::FeedbackSample *sample =
             latest != m_latest.end() && latest->sample.steadyUs != 0 ? &latest->sample : nullptr;
@@ -176,9 +176,9 @@ void MonitorReadouts::fitColumns()
     }
 }
 
-QString MonitorReadouts::statusText(const MonitorServoKey &key, quint8 bits) const
+QString MonitorReadouts::statusText(const feetech::ServoAddress &key, quint8 bits) const
 {
-    const int index = m_client ? m_client->servos()->indexOf(key.id, key.baud) : -1;
+    const int index = m_client ? m_client->servos()->indexOf(key) : -1;
     if (index >= 0)
         return feetech::servoStatusText(m_client->servos()->at(index).info.table(), bits);
     return bits == 0 ? tr("none") : QStringLiteral("0x%1").arg(bits, 2, 16, QLatin1Char('0'));

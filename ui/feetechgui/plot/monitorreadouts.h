@@ -18,21 +18,6 @@ namespace feetech {
 class BusClient;
 }
 
-// A servo on the bus, as the monitor tells them apart.
-struct MonitorServoKey
-{
-    quint8 id = 0;
-    qint32 baud = 0;
-    bool operator==(const MonitorServoKey &other) const
-    {
-        return id == other.id && baud == other.baud;
-    }
-};
-inline size_t qHash(const MonitorServoKey &key, size_t seed = 0)
-{
-    return qHashMulti(seed, key.id, key.baud);
-}
-
 // Samples only update what is kept; the cells change on refresh(), which the page calls on a
 // timer: redrawing a table per sample would cost more than the bus delivers.
 class MonitorReadouts : public QTableWidget
@@ -61,7 +46,7 @@ public:
 
     struct Row
     {
-        MonitorServoKey key;
+        feetech::ServoAddress key;
         QColor colour; // the servo's colour in the plot; invalid: none
     };
 
@@ -80,11 +65,11 @@ private:
         std::deque<qint64> recent; // steady times of the last second's samples
     };
 
-    QString statusText(const MonitorServoKey &key, quint8 bits) const;
+    QString statusText(const feetech::ServoAddress &key, quint8 bits) const;
 
     // Widens the columns whose text no longer fits; never narrows them, so they do not jitter.
     void fitColumns();
 
     QPointer<feetech::BusClient> m_client;
-    QHash<MonitorServoKey, Latest> m_latest;
+    QHash<feetech::ServoAddress, Latest> m_latest;
 };

@@ -34,10 +34,10 @@ void CalibrationSteps::startNext()
     while (m_next < m_steps.size()) {
         const Step &step = m_steps.at(m_next++);
         emit progress(m_next - 1, int(m_steps.size()));
-        QString error;
+        feetech::Refusal refusal;
         feetech::OperationReply *reply = step.writes.isEmpty()
             ? m_client->readServo(step.index)
-            : m_client->writeValues(step.index, step.writes, &error);
+            : m_client->writeValues(step.index, step.writes, &refusal);
         if (reply && m_client->isConnected()) {
             // A step the lost link already ended is not ended again.
             connect(reply, &feetech::OperationReply::finished, this,
@@ -50,7 +50,7 @@ void CalibrationSteps::startNext()
         }
         m_allOk = false;
         emit stepFinished(m_next - 1, false,
-                          error.isEmpty() ? tr("The bus is not connected.") : error);
+                          !refusal ? tr("The bus is not connected.") : refusal.describe());
     }
     m_next = int(m_steps.size()) + 1;
     emit progress(int(m_steps.size()), int(m_steps.size()));

@@ -334,34 +334,34 @@ void SetupWizard::endWork()
 
 void SetupWizard::checkBus()
 {
-    QString error;
-    if (m_flow->checkBus(&error))
+    feetech::Refusal refusal;
+    if (m_flow->checkBus(&refusal))
         startWork(
             tr("Asking every joint's ID at %1…").arg(feetech::baudText(m_flow->robot().baud)));
-    else if (!error.isEmpty())
-        showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
+    else if (refusal)
+        showOutcome(refusal.describe().toHtmlEscaped(), palette::Tone::Error);
 }
 
 void SetupWizard::find()
 {
-    QString error;
-    if (m_flow->find(&error)) {
+    feetech::Refusal refusal;
+    if (m_flow->find(&refusal)) {
         showOutcome({}, palette::Tone::Accent);
         startWork(tr("Looking for the servo at every baud rate…"));
-    } else if (!error.isEmpty()) {
-        showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
+    } else if (refusal) {
+        showOutcome(refusal.describe().toHtmlEscaped(), palette::Tone::Error);
         updateActions();
     }
 }
 
 void SetupWizard::setUp()
 {
-    QString error;
-    if (m_flow->setUp(&error)) {
+    feetech::Refusal refusal;
+    if (m_flow->setUp(&refusal)) {
         showOutcome({}, palette::Tone::Accent);
         startWork(tr("Looking for the servo at every baud rate…"));
-    } else if (!error.isEmpty()) {
-        showOutcome(error.toHtmlEscaped(), palette::Tone::Error);
+    } else if (refusal) {
+        showOutcome(refusal.describe().toHtmlEscaped(), palette::Tone::Error);
     }
 }
 

@@ -260,8 +260,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
                 if (!completed)
                     emit problem(text);
                 if (!m_current && m_client->servos()->count() > 0)
-                    selectServo(m_client->servos()->at(0).info.id,
-                                m_client->servos()->at(0).info.baud);
+                    selectServo(m_client->servos()->at(0).info.address());
                 updateActions();
             });
     m_robot = new RobotActions(m_client, this);
@@ -278,7 +277,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
 
 int FeetechWorkspace::currentIndex() const
 {
-    return m_current ? m_client->servos()->indexOf(m_current->first, m_current->second) : -1;
+    return m_current ? m_client->servos()->indexOf(*m_current) : -1;
 }
 
 void FeetechWorkspace::setPortName(const QString &name)
@@ -287,9 +286,9 @@ void FeetechWorkspace::setPortName(const QString &name)
     rebuildTree();
 }
 
-void FeetechWorkspace::selectServo(quint8 id, qint32 baud)
+void FeetechWorkspace::selectServo(const feetech::ServoAddress &servo)
 {
-    m_current = std::make_pair(id, baud);
+    m_current = servo;
     {
         const QSignalBlocker quiet(m_tree);
         m_tree->clearSelection(); // this one servo, not those selected before
@@ -315,9 +314,9 @@ void FeetechWorkspace::rebuildTree()
     updateActions();
 }
 
-void FeetechWorkspace::showChosenServo(quint8 id, qint32 baud)
+void FeetechWorkspace::showChosenServo(const feetech::ServoAddress &servo)
 {
-    m_current = std::make_pair(id, baud);
+    m_current = servo;
     showServo();
     readIfNew();
 }
@@ -481,18 +480,18 @@ void FeetechWorkspace::apply()
         if (answer != QMessageBox::Ok)
             return;
     }
-    QString error;
-    if (!m_client->applyAll(index, &error))
-        emit problem(tr("Nothing was written: %1").arg(error));
+    feetech::Refusal refusal;
+    if (!m_client->applyAll(index, &refusal))
+        emit problem(tr("Nothing was written: %1").arg(refusal.describe()));
 }
 
-void FeetechWorkspace::run(feetech::OperationReply *(feetech::BusClient::*operation)(int,
-                                                                                     QString *),
-                           const QString &what)
+void FeetechWorkspace::run(
+    feetech::OperationReply *(feetech::BusClient::*operation)(int, feetech::Refusal *),
+    const QString &what)
 {
-    QString error;
-    if (!(m_client->*operation)(currentIndex(), &error))
-        emit problem(error);
+    feetech::Refusal refusal;
+    if (!(m_client->*operation)(currentIndex(), &refusal))
+        emit problem(refusal.describe());
     else
         emit message(what);
 }
@@ -518,9 +517,9 @@ void FeetechWorkspace::changeId()
         emit problem(tr("ID %1 is already in use on this bus; nothing was written.").arg(newId));
         return;
     }
-    QString error;
-    if (!m_client->changeId(index, newId, &error))
-        emit problem(error);
+    feetech::Refusal refusal;
+    if (!m_client->changeId(index, newId, &refusal))
+        emit problem(refusal.describe());
 }
 
 void FeetechWorkspace::changeBaud()
@@ -541,9 +540,9 @@ void FeetechWorkspace::changeBaud()
         rates, int(rates.indexOf(QString::number(info.baud))), false, &ok);
     if (!ok || chosen.toInt() == info.baud)
         return;
-    QString error;
-    if (!m_client->changeBaud(index, chosen.toInt(), &error))
-        emit problem(error);
+    feetech::Refusal refusal;
+    if (!m_client->changeBaud(index, chosen.toInt(), &refusal))
+        emit problem(refusal.describe());
 }
 
 void FeetechWorkspace::calibrateMiddle()
@@ -602,7 +601,7 @@ void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &resul
     if (result.ok && m_current
         && (result.operation == Operation::ChangeId || result.operation == Operation::ChangeBaud
             || result.operation == Operation::FactoryReset))
-        m_current = std::make_pair(result.servo.id, result.servo.baud);
+        m_current = result.servo.address();
     if (result.ok)
         emit message(result.message);
     else

@@ -24,6 +24,7 @@ class UnlockedNotice;
 
 namespace feetech {
 class BusClient;
+class Refusal;
 class OperationReply;
 } // namespace feetech
 
@@ -36,7 +37,7 @@ public:
 
     // The servo the pages show (-1: none).
     int currentIndex() const;
-    void selectServo(quint8 id, qint32 baud);
+    void selectServo(const feetech::ServoAddress &servo);
     void setPortName(const QString &name); // the tree's top item
 
     void openScanDialog();
@@ -66,7 +67,7 @@ signals:
 
 private:
     void rebuildTree();
-    void showChosenServo(quint8 id, qint32 baud);
+    void showChosenServo(const feetech::ServoAddress &servo);
     void showServo();
     void readIfNew();
     void updateHeader();
@@ -77,13 +78,13 @@ private:
     void changeBaud();
     void calibrateMiddle();
     void factoryReset();
-    void run(feetech::OperationReply *(feetech::BusClient::*operation)(int, QString *),
+    void run(feetech::OperationReply *(feetech::BusClient::*operation)(int, feetech::Refusal *),
              const QString &what);
     QString servoTitle() const;
 
     feetech::BusClient *m_client = nullptr;
     feetech::ScanOptions m_scanOptions;
-    std::optional<std::pair<quint8, qint32>> m_current; // ID and baud of the servo shown
+    std::optional<feetech::ServoAddress> m_current; // the servo shown
 
     ServoTree *m_tree = nullptr;
     QPushButton *m_allTorqueOff = nullptr;

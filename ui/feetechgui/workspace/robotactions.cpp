@@ -32,9 +32,9 @@ RobotActions::RobotActions(feetech::BusClient *client, FeetechWorkspace *workspa
     m_saveTemplate = new QAction(tr("&Save as robot template…"), this);
     m_saveTemplate->setObjectName(QStringLiteral("saveRobotTemplateAction"));
     connect(m_identify, &QAction::triggered, this, [this] {
-        QString error;
-        if (!identify(m_workspace->currentIndex(), &error))
-            emit problem(error);
+        feetech::Refusal refusal;
+        if (!identify(m_workspace->currentIndex(), &refusal))
+            emit problem(refusal.describe());
     });
     connect(m_applyProfile, &QAction::triggered, this, &RobotActions::chooseProfileToApply);
     connect(m_applyTemplate, &QAction::triggered, this, &RobotActions::chooseTemplateToApply);
@@ -110,7 +110,7 @@ void RobotActions::updateActions()
     const bool ready = why.isEmpty();
 
     const int current = m_workspace->currentIndex();
-    const QString identifyWhy = ready ? m_client->identifyBlocker(current) : why;
+    const QString identifyWhy = ready ? m_client->identifyBlocker(current).describe() : why;
     m_identify->setText(
         current >= 0 ? tr("&Identify servo ID %1").arg(m_client->servos()->at(current).info.id)
                      : tr("&Identify the servo"));
@@ -140,9 +140,9 @@ void RobotActions::updateActions()
                                      : why);
 }
 
-bool RobotActions::identify(int index, QString *error)
+bool RobotActions::identify(int index, feetech::Refusal *refusal)
 {
-    if (!m_client->identifyJoint(index, error))
+    if (!m_client->identifyJoint(index, refusal))
         return false;
     emit message(tr("Identifying servo ID %1: watch which horn moves…")
                      .arg(m_client->servos()->at(index).info.id));

@@ -17,6 +17,7 @@ class QProgressDialog;
 namespace feetech {
 class BatchProgram;
 class BusClient;
+class Refusal;
 struct OperationResult;
 } // namespace feetech
 
@@ -34,8 +35,8 @@ public:
     QList<QAction *> actions() const;
     void addTo(QMenu *menu) const;
 
-    // Identifies servo `index` (BusClient numbering); false and *error when refused.
-    bool identify(int index, QString *error = nullptr);
+    // Identifies servo `index` (BusClient numbering); false and *refusal when refused.
+    bool identify(int index, feetech::Refusal *refusal = nullptr);
     // Programs the servos selected in the tree with `file`; the result table opens at the end.
     bool applyToSelected(const feetech::SettingsFile &file, QString *error = nullptr);
     feetech::BatchProgram *batch() const { return m_batch; }

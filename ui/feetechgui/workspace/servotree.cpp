@@ -15,6 +15,16 @@ enum TreeColumn { ServoColumn, ModelColumn, FamilyColumn, FirmwareColumn, TreeCo
 constexpr int kIdRole = Qt::UserRole + 1;
 constexpr int kBaudRole = Qt::UserRole + 2;
 
+// The servo an item of the tree stands for; nothing for the port and baud rate items.
+std::optional<feetech::ServoAddress> addressOf(const QTreeWidgetItem *item)
+{
+    const QVariant id = item->data(ServoColumn, kIdRole);
+    if (!id.isValid())
+        return std::nullopt;
+    return feetech::ServoAddress {quint8(id.toUInt()),
+                                  qint32(item->data(ServoColumn, kBaudRole).toInt())};
+}
+
 } // namespace
 
 ServoTree::ServoTree(feetech::BusClient *client, QWidget *parent)
@@ -38,15 +48,14 @@ void ServoTree::setPortName(const QString &name)
     m_portName = name;
 }
 
-void ServoTree::rebuild(const std::optional<ServoAddress> &current)
+void ServoTree::rebuild(const std::optional<feetech::ServoAddress> &current)
 {
     const QSignalBlocker quiet(this);
     // Servos selected for the robot actions stay selected across a rebuild (one comes after
     // every operation, a batch's included).
-    QSet<ServoAddress> wasSelected;
+    QSet<feetech::ServoAddress> wasSelected;
     for (const int index : selectedServos())
-        wasSelected.insert(
-            {m_client->servos()->at(index).info.id, m_client->servos()->at(index).info.baud});
+        wasSelected.insert(m_client->servos()->at(index).info.address());
     clear();
     if (m_client->servos()->count() == 0)
         return;
@@ -94,9 +103,9 @@ void ServoTree::rebuild(const std::optional<ServoAddress> &current)
             item->setToolTip(FamilyColumn,
                              tr("No register table is known for this model: its "
                                 "memory is shown as raw bytes, read-only."));
-        if (current && current->first == info.id && current->second == info.baud)
+        if (current == info.address())
             selected = item;
-        else if (wasSelected.contains({info.id, info.baud}))
+        else if (wasSelected.contains(info.address()))
             alsoSelected.append(item);
     }
     expandAll();
@@ -115,11 +124,10 @@ QVector<int> ServoTree::selectedServos() const
     for (QTreeWidgetItemIterator it(const_cast<ServoTree *>(this),
                                     QTreeWidgetItemIterator::Selected);
          *it; ++it) {
-        const QVariant id = (*it)->data(ServoColumn, kIdRole);
-        if (!id.isValid())
+        const auto servo = addressOf(*it);
+        if (!servo)
             continue;
-        const int index = m_client->servos()->indexOf(
-            quint8(id.toUInt()), qint32((*it)->data(ServoColumn, kBaudRole).toInt()));
+        const int index = m_client->servos()->indexOf(*servo);
         if (index >= 0)
             indexes.append(index);
     }
@@ -131,16 +139,15 @@ void ServoTree::onSelectionChanged()
     // The pages show the servo clicked last (the current item) while it is selected, else the
     // first servo selected.
     const QTreeWidgetItem *item = currentItem();
-    if (!item || !item->isSelected() || !item->data(ServoColumn, kIdRole).isValid()) {
+    if (!item || !item->isSelected() || !addressOf(item)) {
         item = nullptr;
         for (QTreeWidgetItem *chosen : selectedItems()) {
-            if (chosen->data(ServoColumn, kIdRole).isValid()) {
+            if (addressOf(chosen)) {
                 item = chosen;
                 break;
             }
         }
     }
     if (item)
-        emit servoChosen(quint8(item->data(ServoColumn, kIdRole).toUInt()),
-                         qint32(item->data(ServoColumn, kBaudRole).toInt()));
+        emit servoChosen(*addressOf(item));
 }

@@ -1,11 +1,12 @@
 // The tree of the servos found on the bus: port, baud rates, servos, with their warnings.
 #pragma once
 
+#include "bustypes.h"
+
 #include <QTreeWidget>
 #include <QVector>
 
 #include <optional>
-#include <utility>
 
 namespace feetech {
 class BusClient;
@@ -17,21 +18,19 @@ class ServoTree : public QTreeWidget
     Q_OBJECT
 
 public:
-    using ServoAddress = std::pair<quint8, qint32>; // ID and baud rate
-
     explicit ServoTree(feetech::BusClient *client, QWidget *parent = nullptr);
 
     void setPortName(const QString &name); // the top item; rebuild() shows it
     // Fills the tree from the client's servos; `current` becomes the current item, and the
     // servos selected before stay selected.
-    void rebuild(const std::optional<ServoAddress> &current);
+    void rebuild(const std::optional<feetech::ServoAddress> &current);
     // The servos selected (BusClient numbering, tree order); several with Ctrl+click or
     // Shift+click.
     QVector<int> selectedServos() const;
 
 signals:
     // The user chose the servo the pages should show.
-    void servoChosen(quint8 id, qint32 baud);
+    void servoChosen(const feetech::ServoAddress &servo);
 
 private:
     void onSelectionChanged();

@@ -34,8 +34,7 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
     row->addWidget(m_dismiss);
     connect(m_dismiss, &QPushButton::clicked, this, [this] {
         if (m_index >= 0 && m_index < m_client->servos()->count()) {
-            const feetech::ServoInfo &info = m_client->servos()->at(m_index).info;
-            m_dismissed.insert({info.id, info.baud});
+            m_dismissed.insert(m_client->servos()->at(m_index).info.address());
         }
         refresh();
     });
@@ -44,9 +43,9 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
             m_dismissed.clear();
     });
     connect(m_lock, &QPushButton::clicked, this, [this] {
-        QString error;
-        if (m_index >= 0 && !m_client->lockEeprom(m_index, &error))
-            emit problem(error);
+        feetech::Refusal refusal;
+        if (m_index >= 0 && !m_client->lockEeprom(m_index, &refusal))
+            emit problem(refusal.describe());
     });
     connect(m_client->servos(), &feetech::ServoList::servoUpdated, this, [this](int index) {
         if (index == m_index)
@@ -71,9 +70,8 @@ void UnlockedNotice::refresh()
 {
     const bool unlocked =
         m_index >= 0 && m_index < m_client->servos()->count() && m_client->eepromUnlocked(m_index);
-    const bool noted = unlocked
-        && !m_dismissed.contains(
-            {m_client->servos()->at(m_index).info.id, m_client->servos()->at(m_index).info.baud});
+    const bool noted =
+        unlocked && !m_dismissed.contains(m_client->servos()->at(m_index).info.address());
     if (noted) {
         m_text->setText(tr("Note: servo %1's EEPROM is unlocked (lock = 0), as some programs "
                            "(LeRobot among them) leave it: anything written to its settings now "

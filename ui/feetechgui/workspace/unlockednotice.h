@@ -1,10 +1,10 @@
 // A bar above a servo's pages when its EEPROM lock reads open, with a button that closes it.
 #pragma once
 
+#include "bustypes.h"
+
 #include <QFrame>
 #include <QSet>
-
-#include <utility>
 
 class QLabel;
 class QPushButton;
@@ -39,5 +39,5 @@ private:
     QLabel *m_text = nullptr;
     QPushButton *m_lock = nullptr;
     QPushButton *m_dismiss = nullptr;
-    QSet<std::pair<quint8, qint32>> m_dismissed; // servos (ID, rate) noted this connection
+    QSet<feetech::ServoAddress> m_dismissed; // servos noted this connection
 };

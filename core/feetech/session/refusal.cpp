@@ -1,0 +1,134 @@
+// The refusals of the bus client and its services, and their sentences.
+#include "refusal.h"
+
+#include "sharedidcheck.h"
+
+#include <QCoreApplication>
+
+namespace {
+
+// The context the client's sentences have always been translated in.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
+};
+
+} // namespace
+
+namespace feetech {
+
+Refusal Refusal::sharedId(quint8 servoId)
+{
+    Refusal refusal(Code::SharedId);
+    refusal.m_servoId = servoId;
+    return refusal;
+}
+
+Refusal Refusal::unknownModel(quint8 servoId)
+{
+    Refusal refusal(Code::UnknownModel);
+    refusal.m_servoId = servoId;
+    return refusal;
+}
+
+Refusal Refusal::servoHeld(const QString &holderReason)
+{
+    Refusal refusal(Code::ServoHeld);
+    refusal.m_detail = holderReason;
+    return refusal;
+}
+
+Refusal Refusal::idInUse(int id)
+{
+    Refusal refusal(Code::IdInUse);
+    refusal.m_value = id;
+    return refusal;
+}
+
+Refusal Refusal::badValue(const QString &reason)
+{
+    Refusal refusal(Code::BadValue);
+    refusal.m_detail = reason;
+    return refusal;
+}
+
+Refusal Refusal::badValue(quint8 servoId, const QString &reason)
+{
+    Refusal refusal = badValue(reason);
+    refusal.m_servoId = servoId;
+    return refusal;
+}
+
+Refusal Refusal::notAFeetechRate(qint32 baud)
+{
+    Refusal refusal(Code::NotAFeetechRate);
+    refusal.m_value = baud;
+    return refusal;
+}
+
+Refusal Refusal::notConfirmed(quint8 servoId)
+{
+    Refusal refusal(Code::NotConfirmed);
+    refusal.m_servoId = servoId;
+    return refusal;
+}
+
+QString Refusal::describe() const
+{
+    const int id = m_servoId.value_or(0);
+    switch (m_code) {
+    case Code::None:
+        return {};
+    case Code::NotConnected:
+        return Tr::tr("The bus is not connected.");
+    case Code::NoServo:
+        return Tr::tr("No servo is selected.");
+    case Code::SharedId:
+        return sharedIdRefusal(quint8(id));
+    case Code::UnknownModel:
+        if (m_servoId)
+            return Tr::tr("Servo %1 is of an unknown model; nothing is written to it.").arg(id);
+        return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+    case Code::Busy:
+        return Tr::tr("Another operation is still running.");
+    case Code::ServoHeld:
+        return m_detail;
+    case Code::NotMovable:
+        return Tr::tr("This servo has no goal position register: it cannot be moved.");
+    case Code::NoMiddleCalibration:
+        return Tr::tr("This servo has no middle calibration (SCS servos have no offset "
+                      "register).");
+    case Code::NoStatusRegister:
+        return Tr::tr("This servo has no status register: there is nothing to recover.");
+    case Code::IdInUse:
+        return Tr::tr("ID %1 is already in use on this bus.").arg(m_value);
+    case Code::NothingToWrite:
+        return Tr::tr("Nothing to write.");
+    case Code::NothingToMove:
+        return Tr::tr("Nothing to move.");
+    case Code::BadValue:
+        if (m_servoId)
+            return Tr::tr("Servo %1: %2").arg(id).arg(m_detail);
+        return m_detail;
+    case Code::NotAFrame:
+        return Tr::tr("That is not a whole Feetech frame (header, length and checksum).");
+    case Code::NotAFeetechRate:
+        return Tr::tr("%1 bps is not a Feetech baud rate.").arg(m_value);
+    case Code::NoServoToCheck:
+        return Tr::tr("No servo to check: scan the bus first.");
+    case Code::NotConfirmed:
+        return Tr::tr("The move test moves servo %1: it runs only once that is confirmed.").arg(id);
+    }
+    return {};
+}
+
+bool refused(const Refusal &refusal, Refusal *out)
+{
+    if (!refusal)
+        return false;
+    if (out)
+        *out = refusal;
+    return true;
+}
+
+} // namespace feetech
