@@ -382,7 +382,7 @@ private slots:
         QVERIFY2(refusal.describe().contains(QLatin1String("ID 7")),
                  qPrintable(refusal.describe()));
         QCOMPARE(m_client->commandBlocker(sharedIndex).code(), Code::SharedId);
-        QCOMPARE(m_client->identifyBlocker(sharedIndex).code(), Code::SharedId);
+        QCOMPARE(m_client->identify()->blocker(sharedIndex).code(), Code::SharedId);
 
         QVERIFY(!m_client->apply(unknownIndex, &refusal));
         QCOMPARE(refusal.code(), Code::UnknownModel);
@@ -443,12 +443,12 @@ private slots:
         QVERIFY2(refusal.describe().contains(QLatin1String("12345")),
                  qPrintable(refusal.describe()));
 
-        m_client->holdServo(0, QStringLiteral("Held by a test."));
-        refusal = m_client->identifyBlocker(0);
+        m_client->identify()->hold(0, QStringLiteral("Held by a test."));
+        refusal = m_client->identify()->blocker(0);
         QCOMPARE(refusal.code(), Code::ServoHeld);
         QCOMPARE(refusal.describe(), QStringLiteral("Held by a test."));
-        m_client->releaseServo({1, k1M});
-        QVERIFY(!m_client->identifyBlocker(0));
+        m_client->identify()->release({1, k1M});
+        QVERIFY(!m_client->identify()->blocker(0));
 
         // The services next to the client refuse the same way.
         QVERIFY(!m_client->health()->check({}, 1, &refusal));
@@ -477,7 +477,7 @@ private slots:
         QCOMPARE(refusal.code(), Code::Busy);
         QVERIFY(!refusal.describe().isEmpty());
         QCOMPARE(m_client->commandBlocker(1).code(), Code::Busy);
-        QCOMPARE(m_client->identifyBlocker(1).code(), Code::Busy);
+        QCOMPARE(m_client->identify()->blocker(1).code(), Code::Busy);
         QVERIFY(!m_client->lockEeprom(1, &refusal));
         QCOMPARE(refusal.code(), Code::Busy);
         QVERIFY(!m_client->reboot(1, &refusal));

@@ -103,7 +103,7 @@ private slots:
         QSignalSpy updated(m_client->servos(), &feetech::ServoList::servoUpdated);
         m_client->readServo(m_index);
         QTRY_VERIFY_WITH_TIMEOUT(!updated.isEmpty(), 10000);
-        QVERIFY(m_client->eepromUnlocked(m_index));
+        QVERIFY(m_client->servos()->eepromUnlocked(m_index));
         QVERIFY(notice.isHidden());
         QCOMPARE(simulatorValue(1, u"lock"), 0);
     }

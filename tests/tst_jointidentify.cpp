@@ -62,7 +62,7 @@ private:
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
         feetech::Refusal refusal;
-        if (!m_client->identifyJoint(index, &refusal)) {
+        if (!m_client->identify()->start(index, &refusal)) {
             qWarning("identify refused: %s", qPrintable(refusal.describe()));
             return watched;
         }
@@ -129,7 +129,7 @@ private slots:
         QCOMPARE(simulatorValue(1, u"goal_position"), goal);
         QCOMPARE(simulatorValue(1, u"goal_speed"), 777);
         QCOMPARE(simulatorValue(1, u"acceleration"), acceleration);
-        QVERIFY(!m_client->isIdentifying(index));
+        QVERIFY(!m_client->identify()->isRunning(index));
         QVERIFY(!m_client->isBusy());
     }
 
@@ -176,29 +176,30 @@ private slots:
         feetech::MotionTest test(m_client.get(), testsupport::quickMotionTiming());
         QString error;
         QVERIFY2(test.startSweep(testsupport::longSweep(index), &error), qPrintable(error));
-        QCOMPARE(m_client->identifyBlocker(index).code(), feetech::Refusal::Code::ServoHeld);
+        QCOMPARE(m_client->identify()->blocker(index).code(), feetech::Refusal::Code::ServoHeld);
         // The holder's reason is what the user reads.
-        QVERIFY(
-            m_client->identifyBlocker(index).describe().contains(QStringLiteral("motion test")));
+        QVERIFY(m_client->identify()->blocker(index).describe().contains(
+            QStringLiteral("motion test")));
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
         feetech::Refusal refusal;
-        QVERIFY(!m_client->identifyJoint(index, &refusal));
+        QVERIFY(!m_client->identify()->start(index, &refusal));
         QCOMPARE(refusal.code(), feetech::Refusal::Code::ServoHeld);
-        QVERIFY(!m_client->isIdentifying(index));
+        QVERIFY(!m_client->identify()->isRunning(index));
         // The other servo is free.
-        QVERIFY2(!m_client->identifyBlocker(m_client->servos()->indexOf({2, k1M})),
-                 qPrintable(
-                     m_client->identifyBlocker(m_client->servos()->indexOf({2, k1M})).describe()));
+        QVERIFY2(
+            !m_client->identify()->blocker(m_client->servos()->indexOf({2, k1M})),
+            qPrintable(
+                m_client->identify()->blocker(m_client->servos()->indexOf({2, k1M})).describe()));
         test.cancel();
-        QVERIFY(!m_client->identifyBlocker(index));
+        QVERIFY(!m_client->identify()->blocker(index));
     }
 
     void aMotionTestIsRefusedWhileItsServoIsIdentified()
     {
         const int index = readServo(1);
         QVERIFY(index >= 0);
-        QVERIFY(m_client->identifyJoint(index));
+        QVERIFY(m_client->identify()->start(index));
         feetech::MotionTest test(m_client.get(), testsupport::quickMotionTiming());
         feetech::MotionPlan plan;
         plan.index = index;
@@ -207,7 +208,7 @@ private slots:
         QString error;
         QVERIFY(!test.startStep(plan, &error));
         QVERIFY(error.contains(QStringLiteral("identified")));
-        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isIdentifying(index), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->identify()->isRunning(index), 20000);
     }
 
     void aServoThatStopsAnsweringIsReportedAndTheIdentifyEnds()
@@ -216,7 +217,7 @@ private slots:
         QVERIFY(index >= 0);
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QVERIFY(m_client->identifyJoint(index));
+        QVERIFY(m_client->identify()->start(index));
         // Unplugged once it has started moving.
         QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(2, u"torque_enable") == 1, 10000);
         m_simulator->call([](sim::Simulator &simulator) {
@@ -228,7 +229,7 @@ private slots:
                 }
             }
         });
-        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isIdentifying(index), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->identify()->isRunning(index), 20000);
         std::optional<feetech::OperationResult> result;
         for (const QList<QVariant> &signal : std::as_const(finished)) {
             const auto each = signal.at(0).value<feetech::OperationResult>();
@@ -248,10 +249,10 @@ private slots:
         const qint32 limit = simulatorValue(1, u"torque_limit");
         OperationLog finishedLog(m_client.get());
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
-        QVERIFY(m_client->identifyJoint(index));
+        QVERIFY(m_client->identify()->start(index));
         QTRY_VERIFY_WITH_TIMEOUT(simulatorValue(1, u"torque_enable") == 1, 10000);
         m_client->allTorqueOff();
-        QTRY_VERIFY_WITH_TIMEOUT(!m_client->isIdentifying(index), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->identify()->isRunning(index), 20000);
         bool stopped = false;
         for (const QList<QVariant> &signal : std::as_const(finished)) {
             const auto each = signal.at(0).value<feetech::OperationResult>();

@@ -85,7 +85,7 @@ private slots:
         feetech::BusClient client(testsupport::patientTiming());
         const int index = testsupport::connectScanAndRead(client, m_simulator->linkPath(), 2, 1);
         QVERIFY(index >= 0);
-        QVERIFY(client.eepromUnlocked(index));
+        QVERIFY(client.servos()->eepromUnlocked(index));
         QCOMPARE(simulatorValue(1, u"lock"), 0); // noticing writes nothing
         OperationLog finishedLog(&client);
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
@@ -95,7 +95,7 @@ private slots:
         const auto result = finished.last().first().value<feetech::OperationResult>();
         QVERIFY2(result.ok, qPrintable(result.message));
         QCOMPARE(simulatorValue(1, u"lock"), 1);
-        QVERIFY(!client.eepromUnlocked(index)); // the read-back says so too
+        QVERIFY(!client.servos()->eepromUnlocked(index)); // the read-back says so too
     }
 
     void servoctlLocksAServoLeftUnlocked()

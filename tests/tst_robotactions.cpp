@@ -129,8 +129,8 @@ private slots:
         QTRY_VERIFY(button->isEnabled());
         QTRY_VERIFY(!client()->isBusy());
         button->click();
-        QVERIFY(client()->isIdentifying(index));
-        QTRY_VERIFY_WITH_TIMEOUT(!client()->isIdentifying(index), 20000);
+        QVERIFY(client()->identify()->isRunning(index));
+        QTRY_VERIFY_WITH_TIMEOUT(!client()->identify()->isRunning(index), 20000);
         QTRY_VERIFY(joints->message().contains(QStringLiteral("wiggled")));
     }
 

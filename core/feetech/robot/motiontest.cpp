@@ -75,7 +75,7 @@ MotionTest::MotionTest(BusClient *client, const MotionTiming &timing, QObject *p
 MotionTest::~MotionTest()
 {
     if (isRunning() && m_client) {
-        m_client->releaseServo(m_servo);
+        m_client->identify()->release(m_servo);
         restoreMonitor();
     }
 }
@@ -99,7 +99,7 @@ bool MotionTest::validate(const MotionPlan &plan, Kind kind, QString *error) con
     if (plan.index < 0 || plan.index >= m_client->servos()->count())
         return refuse(tr("No servo is selected."));
     const ServoInfo &info = m_client->servos()->at(plan.index).info;
-    if (m_client->isIdentifying(plan.index))
+    if (m_client->identify()->isRunning(plan.index))
         return refuse(tr("Servo ID %1 is being identified; wait until it is back.").arg(info.id));
     if (!info.hasTable())
         return refuse(tr("This servo's model is unknown: ServoBench does not move it."));
@@ -188,7 +188,8 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
         return false;
     }
     startApproach();
-    m_client->holdServo(plan.index, tr("A motion test is running on servo ID %1.").arg(m_servo.id));
+    m_client->identify()->hold(plan.index,
+                               tr("A motion test is running on servo ID %1.").arg(m_servo.id));
     emit runningChanged(true); // isRunning() is true by now
     return true;
 }
@@ -444,7 +445,7 @@ void MotionTest::finish()
     m_timer->stop();
     m_phase = Phase::Idle;
     if (m_client)
-        m_client->releaseServo(m_servo);
+        m_client->identify()->release(m_servo);
     restoreMonitor();
     emit runningChanged(false);
 }

@@ -54,6 +54,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     m_telemetry = new TelemetryHub(this);
     m_motorSetup = new MotorSetupService(this);
     m_health = new HealthService(this);
+    m_identify = new IdentifyService(this);
 }
 
 BusClient::~BusClient() = default;
@@ -205,8 +206,6 @@ void BusClient::onOperationFinished(const OperationResult &result)
         if (result.ok && flow && result.final) // what the flow changed shows
             readServo(m_servos->indexOf(entry.info.address()));
     }
-    if (result.operation == Operation::Identify)
-        m_identifying.reset();
     if (target.kind == Work::Foreground && !target.dropped)
         emit busyChanged(isBusy());
     // A failed refresh has no reply: the next one retries it.
@@ -224,7 +223,6 @@ void BusClient::forgetWork()
     for (auto &entry : m_pending)
         entry.second.dropped = true;
     m_scanning = false;
-    m_identifying.reset();
     // The link went down with writes on their way: whether they landed is not known.
     for (int i = 0; i < m_servos->count(); ++i) {
         model::ParameterModel &parameters = *m_servos->at(i).parameters;
@@ -409,15 +407,6 @@ OperationReply *BusClient::lockEeprom(int index, Refusal *refusal)
                           &operations::lockEeprom);
 }
 
-bool BusClient::eepromUnlocked(int index) const
-{
-    if (index < 0 || index >= m_servos->count() || !m_servos->at(index).read)
-        return false;
-    const model::ParameterModel *model = m_servos->at(index).parameters.get();
-    const auto lock = model ? model->deviceValue(QStringLiteral("lock")) : std::nullopt;
-    return lock && *lock == 0;
-}
-
 // ---- live monitoring and control
 
 OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem> &values,
@@ -511,49 +500,6 @@ std::optional<PositionRange> goalRange(const BusClient &client, int index)
     return goalRange(client.servos()->at(index).info.table(),
                      parameters->deviceValue(registerkeys::kMinAngleLimit),
                      parameters->deviceValue(registerkeys::kMaxAngleLimit));
-}
-
-Refusal BusClient::identifyBlocker(int index) const
-{
-    if (const Refusal blocker = writeBlocker(index))
-        return blocker;
-    const ServoInfo &info = m_servos->at(index).info;
-    const QString held = m_held.value(info.address());
-    if (!held.isEmpty())
-        return Refusal::servoHeld(held);
-    if (!info.table().find(u"goal_position") || !info.table().find(u"torque_enable"))
-        return Refusal(Refusal::Code::NotMovable);
-    return {};
-}
-
-OperationReply *BusClient::identifyJoint(int index, Refusal *refusal)
-{
-    if (refused(identifyBlocker(index), refusal))
-        return nullptr;
-    const ServoInfo &info = m_servos->at(index).info;
-    m_identifying = info.address();
-    return startOperation(Operation::Identify, index, refusal, Work::Foreground,
-                          &operations::identifyJoint);
-}
-
-bool BusClient::isIdentifying(int index) const
-{
-    return m_identifying && index >= 0 && index < m_servos->count()
-        && *m_identifying == m_servos->at(index).info.address();
-}
-
-void BusClient::holdServo(int index, const QString &reason)
-{
-    if (index < 0 || index >= m_servos->count())
-        return;
-    m_held.insert(m_servos->at(index).info.address(), reason);
-    m_servos->noteUpdated(index); // what it may do now has changed
-}
-
-void BusClient::releaseServo(const ServoAddress &address)
-{
-    if (m_held.remove(address) > 0 && m_servos->indexOf(address) >= 0)
-        m_servos->noteUpdated(m_servos->indexOf(address));
 }
 
 OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,

@@ -7,6 +7,7 @@
 #include "feetechsession.h"
 #include "goalrange.h"
 #include "healthservice.h"
+#include "identifyservice.h"
 #include "linkmirror.h"
 #include "linktypes.h"
 #include "motorsetupservice.h"
@@ -81,27 +82,12 @@ public:
     OperationReply *factoryReset(int index, Refusal *refusal = nullptr);
     OperationReply *reboot(int index, Refusal *refusal = nullptr);
     OperationReply *clearStatus(int index, Refusal *refusal = nullptr);
-    // Whether servo `index`'s EEPROM lock reads open (lock = 0) in its last read; false when it
-    // is locked, not read yet or has no lock register.
-    bool eepromUnlocked(int index) const;
     // Closes it and reads it back (Session::lockEeprom).
     OperationReply *lockEeprom(int index, Refusal *refusal = nullptr);
     // A frame built by hand (the packet window), queued like any command and sent once at
     // `baud` (Session::sendPacket). The caller has asked before anything that writes EEPROM.
     OperationReply *sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
                                int replyDataSize, Refusal *refusal = nullptr);
-
-    // ---- identify a joint (Session::identifyJoint: a slow wiggle, everything put back)
-
-    // Why servo `index` cannot be identified now (none when it can): no bus, an unknown
-    // model, another operation, or something holding the servo (a motion test).
-    Refusal identifyBlocker(int index) const;
-    OperationReply *identifyJoint(int index, Refusal *refusal = nullptr);
-    bool isIdentifying(int index) const;
-    // What moves a servo outside the session's operations (a motion test) holds it while it
-    // runs: identifyBlocker gives ServoHeld with `reason` meanwhile.
-    void holdServo(int index, const QString &reason);
-    void releaseServo(const ServoAddress &address);
 
     // ---- live monitoring and control
 
@@ -154,6 +140,8 @@ public:
     MotorSetupService *motorSetup() const { return m_motorSetup; }
     // The health check and its confirmed move test.
     HealthService *health() const { return m_health; }
+    // Identifying a joint, and the servos held by what moves them meanwhile.
+    IdentifyService *identify() const { return m_identify; }
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
@@ -193,12 +181,11 @@ private:
     quint64 m_lastTicket = 0;
     bool hasLivePending() const;
     QElapsedTimer m_clock;
-    std::optional<ServoAddress> m_identifying;
-    QHash<ServoAddress, QString> m_held; // why
     BusGuard *m_guard = nullptr;
     TelemetryHub *m_telemetry = nullptr;
     MotorSetupService *m_motorSetup = nullptr;
     HealthService *m_health = nullptr;
+    IdentifyService *m_identify = nullptr;
 };
 
 // The goal positions servo `index` accepts (goalrange.h); nothing for an unknown servo or a

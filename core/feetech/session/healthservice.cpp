@@ -67,7 +67,7 @@ void HealthService::cancel()
 
 Refusal HealthService::moveTestBlocker(int index) const
 {
-    return m_client->identifyBlocker(index);
+    return m_client->identify()->blocker(index);
 }
 
 OperationReply *HealthService::moveTest(int index, bool confirmed, Refusal *refusal)

@@ -48,6 +48,15 @@ QVector<int> ServoList::idsInUse() const
     return ids;
 }
 
+bool ServoList::eepromUnlocked(int index) const
+{
+    if (index < 0 || index >= count() || !at(index).read)
+        return false;
+    const model::ParameterModel *model = at(index).parameters.get();
+    const auto lock = model ? model->deviceValue(QStringLiteral("lock")) : std::nullopt;
+    return lock && *lock == 0;
+}
+
 void ServoList::add(const ServoInfo &info)
 {
     auto entry = std::make_unique<Servo>();

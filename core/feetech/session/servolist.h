@@ -39,6 +39,9 @@ public:
     model::ParameterModel *parameters(int index) const;
     int indexOf(const ServoAddress &address) const; // -1 when not known
     QVector<int> idsInUse() const; // at every baud rate scanned
+    // Whether servo `index`'s EEPROM lock reads open (lock = 0) in its last read; false when it
+    // is locked, not read yet or has no lock register.
+    bool eepromUnlocked(int index) const;
 
     // For the client and its services: a servo found, moved (a new ID or rate), changed in
     // place (new values, status, what it may do), or the whole list gone.

@@ -624,7 +624,7 @@ bool JointTable::identify(int row, QString *error)
         return false;
     }
     feetech::Refusal refusal;
-    if (!m_client->identifyJoint(index, &refusal)) {
+    if (!m_client->identify()->start(index, &refusal)) {
         if (error)
             *error = tr("%1 cannot be identified now: %2").arg(servoName(row), refusal.describe());
         return false;
@@ -644,7 +644,7 @@ void JointTable::refreshIdentifyButtons()
         QPushButton *button = identifyButton(row);
         if (!button)
             continue;
-        const QString why = m_client->identifyBlocker(servoIndex(row)).describe();
+        const QString why = m_client->identify()->blocker(servoIndex(row)).describe();
         button->setEnabled(why.isEmpty());
         button->setToolTip(why.isEmpty() ? tr("Wiggle %1 slowly with little torque, then put it "
                                               "back as it was")

@@ -110,7 +110,7 @@ void RobotActions::updateActions()
     const bool ready = why.isEmpty();
 
     const int current = m_workspace->currentIndex();
-    const QString identifyWhy = ready ? m_client->identifyBlocker(current).describe() : why;
+    const QString identifyWhy = ready ? m_client->identify()->blocker(current).describe() : why;
     m_identify->setText(
         current >= 0 ? tr("&Identify servo ID %1").arg(m_client->servos()->at(current).info.id)
                      : tr("&Identify the servo"));
@@ -142,7 +142,7 @@ void RobotActions::updateActions()
 
 bool RobotActions::identify(int index, feetech::Refusal *refusal)
 {
-    if (!m_client->identifyJoint(index, refusal))
+    if (!m_client->identify()->start(index, refusal))
         return false;
     emit message(tr("Identifying servo ID %1: watch which horn moves…")
                      .arg(m_client->servos()->at(index).info.id));

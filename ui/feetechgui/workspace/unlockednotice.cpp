@@ -68,8 +68,8 @@ QString UnlockedNotice::text() const
 
 void UnlockedNotice::refresh()
 {
-    const bool unlocked =
-        m_index >= 0 && m_index < m_client->servos()->count() && m_client->eepromUnlocked(m_index);
+    const bool unlocked = m_index >= 0 && m_index < m_client->servos()->count()
+        && m_client->servos()->eepromUnlocked(m_index);
     const bool noted =
         unlocked && !m_dismissed.contains(m_client->servos()->at(m_index).info.address());
     if (noted) {
