@@ -289,7 +289,7 @@ private slots:
         const OperationResult recovered =
             run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, false)); });
         QVERIFY2(recovered.ok, qPrintable(recovered.message));
-        QVERIFY(!recovered.stillLatched);
+        QCOMPARE(recovered.failure, feetech::OperationFailure::None);
         QCOMPARE(recovered.operation, feetech::Operation::RecoverOverload);
         QCOMPARE(simulatorValue(1, u"status") & 0x20, 0);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 1);
@@ -306,7 +306,7 @@ private slots:
         const OperationResult stuck =
             run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, false)); });
         QVERIFY(!stuck.ok);
-        QVERIFY(stuck.stillLatched);
+        QCOMPARE(stuck.failure, feetech::OperationFailure::StillLatched);
         QVERIFY2(stuck.message.contains(QLatin1String("power")), qPrintable(stuck.message));
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0); // left as the servo really is
         // The user switches the power off and on, then asks for the check.
@@ -317,7 +317,7 @@ private slots:
         const OperationResult checked =
             run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, true)); });
         QVERIFY2(checked.ok, qPrintable(checked.message));
-        QVERIFY(!checked.stillLatched);
+        QCOMPARE(checked.failure, feetech::OperationFailure::None);
         QCOMPARE(simulatorValue(1, u"status") & 0x20, 0);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0); // a check switches nothing on
     }

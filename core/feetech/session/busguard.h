@@ -34,7 +34,7 @@ public:
     // The newest thing the guard said about servo `index`.
     std::optional<GuardEvent> lastEvent(int index) const;
     // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
-    // result says stillLatched when a power cycle is due. Nullptr and *error when refused.
+    // result says StillLatched when a power cycle is due. Nullptr and *error when refused.
     OperationReply *recoverOverload(int index, bool checkOnly, QString *error = nullptr);
 
 signals:
