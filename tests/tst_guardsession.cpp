@@ -196,6 +196,26 @@ private slots:
         QVERIFY(!result.ok); // stopped, not finished
     }
 
+    void aMoveTestOfABlockedServoIsStoppedByTheGuard()
+    {
+        feetech::GuardSettings settings;
+        feetech::GuardLimits limits = feetech::defaultGuardLimits(m_servo.table());
+        limits.loadPercent = 5.0;
+        limits.holdTime = std::chrono::milliseconds(400);
+        settings.servos.insert({m_servo.id, m_servo.baud}, limits);
+        m_session->setGuardSettings(settings);
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
+        QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
+        QSignalSpy finished(m_session.get(), &feetech::Session::operationFinished);
+        m_session->submit(feetech::operations::moveTest(m_servo));
+        QVERIFY(waitFor(events, GuardCause::Overload, GuardStage::Acted));
+        QTRY_VERIFY_WITH_TIMEOUT(!finished.isEmpty(), 15000);
+        const auto result = finished.first().at(0).value<OperationResult>();
+        QCOMPARE(result.operation, feetech::Operation::MoveTest);
+        QVERIFY(!result.ok);
+        QCOMPARE(result.failure, feetech::OperationFailure::GuardStopped);
+    }
+
     void aServoNearItsMaximumTemperatureHasItsTorqueSwitchedOff()
     {
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) {
