@@ -266,6 +266,7 @@ private slots:
         QVERIFY(m_client->apply(0));
         const OperationResult result = nextResult(finished);
         QVERIFY(!result.ok);
+        QCOMPARE(result.failure, feetech::OperationFailure::NoAnswer);
         QVERIFY2(result.message.contains(QLatin1String("may be left open")),
                  qPrintable(result.message));
         m_simulator->call([](sim::Simulator &simulator) { simulator.setFaults({}, 1); });

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 
+using feetech::OperationFailure;
 using feetech::OperationResult;
 using feetech::ReadSource;
 using feetech::ServoInfo;
@@ -305,11 +306,12 @@ private slots:
             m_session->submit(feetech::operations::changeId(servo, 2, {1, 2, 3, 4}));
         });
         QVERIFY(!result.ok);
+        QCOMPARE(result.failure, OperationFailure::IdInUse);
         QCOMPARE(framesReceived().size(), before);
         // Not known, but a servo answers there: refused after the PING, nothing written.
         result = run([&] { m_session->submit(feetech::operations::changeId(servo, 3, {})); });
         QVERIFY(!result.ok);
-        QVERIFY(result.message.contains(QLatin1String("3")));
+        QCOMPARE(result.failure, OperationFailure::IdInUse);
         const QStringList after = framesReceived().mid(before);
         QVERIFY(!after.isEmpty());
         for (const QString &frame : after)
@@ -374,6 +376,7 @@ private slots:
                 feetech::operations::write(servo, {{40, QByteArray(1, char(1)), false}}));
         });
         QVERIFY(!result.ok);
+        QCOMPARE(result.failure, OperationFailure::Unsupported);
     }
 
     void calibrateMiddleByFirmware()
@@ -391,8 +394,48 @@ private slots:
         QVERIFY2(result.ok, qPrintable(result.message));
         const Memory memory = readAll(*found(1));
         QVERIFY(qAbs(memory.values.value(QStringLiteral("present_position")) - 2048) <= 2);
-        QVERIFY(
-            !run([&] { m_session->submit(feetech::operations::calibrateMiddle(*found(3))); }).ok);
+        const OperationResult scs =
+            run([&] { m_session->submit(feetech::operations::calibrateMiddle(*found(3))); });
+        QVERIFY(!scs.ok);
+        QCOMPARE(scs.failure, OperationFailure::Unsupported);
+    }
+
+    void aFailedOperationSaysWhyByItsKind()
+    {
+        QVERIFY(scanIdsUpTo2At1M());
+        const ServoInfo servo = *found(1);
+        ServoInfo missing = servo;
+        missing.id = 9;
+        const auto failureOf = [this](feetech::BusOperation operation) {
+            const OperationResult result = run([&] { m_session->submit(std::move(operation)); });
+            return result.ok ? OperationFailure::None : result.failure;
+        };
+        QCOMPARE(failureOf(feetech::operations::ping(9, k1M)), OperationFailure::NoAnswer);
+        QCOMPARE(failureOf(feetech::operations::read(missing, {}, ReadSource::Read)),
+                 OperationFailure::NoAnswer);
+        QCOMPARE(failureOf(feetech::operations::clearStatus(missing)), OperationFailure::NoAnswer);
+        QCOMPARE(failureOf(feetech::operations::changeId(servo, servo.id, {})),
+                 OperationFailure::NothingToDo);
+        QCOMPARE(failureOf(feetech::operations::changeId(servo, 300, {})),
+                 OperationFailure::InvalidRequest);
+        QCOMPARE(failureOf(feetech::operations::changeBaud(servo, k1M)),
+                 OperationFailure::NothingToDo);
+        QCOMPARE(failureOf(feetech::operations::changeBaud(servo, 12345)),
+                 OperationFailure::InvalidRequest);
+        QCOMPARE(failureOf(feetech::operations::apply(servo, {})), OperationFailure::NothingToDo);
+        QCOMPARE(failureOf(feetech::operations::ping(1, k1M)), OperationFailure::None);
+    }
+
+    void anOperationWhoseTurnComesAfterTheLinkClosedIsNotConnected()
+    {
+        QVERIFY(scanIdsUpTo2At1M());
+        QSignalSpy finished(m_session.get(), &Session::operationFinished);
+        m_session->close();
+        m_session->submit(feetech::operations::ping(1, k1M));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        const auto result = finished.first().at(0).value<OperationResult>();
+        QVERIFY(!result.ok);
+        QCOMPARE(result.failure, OperationFailure::NotConnected);
     }
 
     void rebootAndClearStatus()
@@ -436,6 +479,11 @@ private slots:
         m_session->close();
         QTRY_VERIFY_WITH_TIMEOUT(ended(feetech::Operation::Identify), 10000);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        for (const QList<QVariant> &signal : std::as_const(finished)) {
+            const auto result = signal.at(0).value<OperationResult>();
+            if (result.operation == feetech::Operation::Identify)
+                QCOMPARE(result.failure, OperationFailure::LinkLost);
+        }
     }
 };
 

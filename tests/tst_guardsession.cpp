@@ -196,6 +196,26 @@ private slots:
         QVERIFY(!result.ok); // stopped, not finished
     }
 
+    void aMoveTestOfABlockedServoIsStoppedByTheGuard()
+    {
+        feetech::GuardSettings settings;
+        feetech::GuardLimits limits = feetech::defaultGuardLimits(m_servo.table());
+        limits.loadPercent = 5.0;
+        limits.holdTime = std::chrono::milliseconds(400);
+        settings.servos.insert({m_servo.id, m_servo.baud}, limits);
+        m_session->setGuardSettings(settings);
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
+        QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
+        QSignalSpy finished(m_session.get(), &feetech::Session::operationFinished);
+        m_session->submit(feetech::operations::moveTest(m_servo));
+        QVERIFY(waitFor(events, GuardCause::Overload, GuardStage::Acted));
+        QTRY_VERIFY_WITH_TIMEOUT(!finished.isEmpty(), 15000);
+        const auto result = finished.first().at(0).value<OperationResult>();
+        QCOMPARE(result.operation, feetech::Operation::MoveTest);
+        QVERIFY(!result.ok);
+        QCOMPARE(result.failure, feetech::OperationFailure::GuardStopped);
+    }
+
     void aServoNearItsMaximumTemperatureHasItsTorqueSwitchedOff()
     {
         QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) {
@@ -289,7 +309,7 @@ private slots:
         const OperationResult recovered =
             run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, false)); });
         QVERIFY2(recovered.ok, qPrintable(recovered.message));
-        QVERIFY(!recovered.stillLatched);
+        QCOMPARE(recovered.failure, feetech::OperationFailure::None);
         QCOMPARE(recovered.operation, feetech::Operation::RecoverOverload);
         QCOMPARE(simulatorValue(1, u"status") & 0x20, 0);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 1);
@@ -306,7 +326,7 @@ private slots:
         const OperationResult stuck =
             run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, false)); });
         QVERIFY(!stuck.ok);
-        QVERIFY(stuck.stillLatched);
+        QCOMPARE(stuck.failure, feetech::OperationFailure::StillLatched);
         QVERIFY2(stuck.message.contains(QLatin1String("power")), qPrintable(stuck.message));
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0); // left as the servo really is
         // The user switches the power off and on, then asks for the check.
@@ -317,7 +337,7 @@ private slots:
         const OperationResult checked =
             run([&] { m_session->submit(feetech::operations::recoverOverload(m_servo, true)); });
         QVERIFY2(checked.ok, qPrintable(checked.message));
-        QVERIFY(!checked.stillLatched);
+        QCOMPARE(checked.failure, feetech::OperationFailure::None);
         QCOMPARE(simulatorValue(1, u"status") & 0x20, 0);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0); // a check switches nothing on
     }

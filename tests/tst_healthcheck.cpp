@@ -239,6 +239,7 @@ private slots:
         const auto moved = moveTest(m_found.value(0));
         QVERIFY(moved.has_value());
         QVERIFY2(moved->ok, qPrintable(moved->message));
+        QCOMPARE(moved->failure, feetech::OperationFailure::None);
         QCOMPARE(moved->start, start);
         QCOMPARE(moved->target, start + feetech::HealthMoveTest::kAmplitude);
         QVERIFY(moved->metrics.has_value());
@@ -265,6 +266,31 @@ private slots:
         ServoHealth health;
         feetech::addMoveTest(health, *moved);
         QVERIFY2(health.verdict == Verdict::Ok, qPrintable(codes(health)));
+    }
+
+    void aServoWhoseLimitsLeaveNoRoomIsNotMoved()
+    {
+        startBus(busOptions(testsupport::servosAt(k1M, {u"STS3215"})));
+        const qint32 start = simulatorValue(1, u"present_position");
+        setSimulatorValue(1, u"min_angle_limit", start - 10);
+        setSimulatorValue(1, u"max_angle_limit", start + 10);
+        const auto moved = moveTest(m_found.value(0));
+        QVERIFY(moved.has_value());
+        QVERIFY(!moved->ok);
+        QCOMPARE(moved->failure, feetech::OperationFailure::NoRoomToMove);
+        QCOMPARE(writesTo(kGoalAddress), 0);
+    }
+
+    void aHealthCheckStoppedBeforeItsFirstServoSaysSo()
+    {
+        startBus(busOptions(testsupport::servosAt(k1M, {u"STS3215", u"STS3215"})));
+        const feetech::OperationResult result = run([&] {
+            m_session->submit(
+                feetech::operations::checkHealth(m_found, feetech::kDefaultHealthReads));
+            m_session->cancel(feetech::Operation::HealthCheck);
+        });
+        QVERIFY(!result.ok);
+        QCOMPARE(result.failure, feetech::OperationFailure::Stopped);
     }
 
     void aBlockedHornFailsTheMoveTest()

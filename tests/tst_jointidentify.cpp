@@ -238,8 +238,7 @@ private slots:
         }
         QVERIFY(result);
         QVERIFY(!result->ok);
-        QVERIFY2(result->message.contains(QStringLiteral("stopped answering")),
-                 qPrintable(result->message));
+        QCOMPARE(result->failure, feetech::OperationFailure::NoAnswer);
     }
 
     void allTorqueOffStopsItAndTheTorqueStaysOff()
@@ -257,7 +256,7 @@ private slots:
         for (const QList<QVariant> &signal : std::as_const(finished)) {
             const auto each = signal.at(0).value<feetech::OperationResult>();
             if (each.operation == feetech::Operation::Identify)
-                stopped = !each.ok && each.message.contains(QStringLiteral("All torque off"));
+                stopped = !each.ok && each.failure == feetech::OperationFailure::AfterTorqueOff;
         }
         QVERIFY(stopped);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0);

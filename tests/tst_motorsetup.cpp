@@ -61,6 +61,7 @@ private:
         [&] {
             QVERIFY2(!result.ok, qPrintable(result.message));
             QCOMPARE(int(result.search.verdict), int(verdict));
+            QCOMPARE(result.failure, result.search.failure());
             QVERIFY2(result.message.contains(QLatin1String("othing was written"))
                          || result.message.contains(QLatin1String("at a time"))
                          || result.message.contains(QLatin1String("no servo"), Qt::CaseInsensitive),
@@ -151,6 +152,7 @@ private slots:
     void noServoAnsweringWritesNothingAndSaysToCheckThePower()
     {
         const MotorSetupResult result = refusedSetUp(MotorSearch::Verdict::NoServo);
+        QCOMPARE(result.failure, feetech::OperationFailure::NoAnswer);
         QCOMPARE(result.message,
                  QStringLiteral("No servo answers at any rate: check the power and the cable, and "
                                 "connect the next servo."));
@@ -161,6 +163,7 @@ private slots:
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
         QVERIFY(plug(2, QStringLiteral("STS3215"), k1M));
         const MotorSetupResult result = refusedSetUp(MotorSearch::Verdict::SeveralServos);
+        QCOMPARE(result.failure, feetech::OperationFailure::SeveralServos);
         QVERIFY2(result.message.contains(QLatin1String("connect one servo at a time")),
                  qPrintable(result.message));
         QVERIFY(result.search.count >= 2);
@@ -171,6 +174,7 @@ private slots:
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
         const MotorSetupResult result = refusedSetUp(MotorSearch::Verdict::SharedId);
+        QCOMPARE(result.failure, feetech::OperationFailure::SharedId);
         QCOMPARE(result.message,
                  QStringLiteral("Two servos answer at ID 1; connect them one at a time."));
     }
@@ -190,6 +194,7 @@ private slots:
     {
         QVERIFY(plug(1, QStringLiteral("SCS15"), k1M));
         const MotorSetupResult result = refusedSetUp(MotorSearch::Verdict::WrongModel);
+        QCOMPARE(result.failure, feetech::OperationFailure::WrongModel);
         QVERIFY2(result.message.startsWith(QLatin1String("Found servo 1 at 1 Mbps, model SCS15")),
                  qPrintable(result.message));
         QVERIFY(result.message.contains(QLatin1String("shoulder_lift needs model STS3215")));
@@ -204,7 +209,7 @@ private slots:
             m_session->cancel(feetech::Operation::SetUpMotor);
         });
         QVERIFY(!result.ok);
-        QVERIFY(result.message.startsWith(QLatin1String("Stopped")));
+        QCOMPARE(result.failure, feetech::OperationFailure::Stopped);
         QCOMPARE(pluggedServos().first().revision, revision);
         QCOMPARE(pluggedServos().first().id, quint8(1));
     }

@@ -64,6 +64,7 @@ private slots:
         const auto result = writeThroughCut(QStringLiteral("after-unlock"));
         QVERIFY(result);
         QVERIFY(!result->ok);
+        QCOMPARE(result->failure, feetech::OperationFailure::NoAnswer);
         QVERIFY2(result->message.contains(QStringLiteral("may be left open")),
                  qPrintable(result->message));
         QCOMPARE(simulatorValue(1, u"max_angle_limit"), kOldLimit);

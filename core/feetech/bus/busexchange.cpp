@@ -128,6 +128,21 @@ QString failureText(const seriallink::TransactionResult &result)
     return {};
 }
 
+OperationFailure failureKind(const seriallink::TransactionResult &result)
+{
+    switch (result.failure) {
+    case seriallink::Failure::None:
+        return OperationFailure::None;
+    case seriallink::Failure::Timeout:
+        return OperationFailure::NoAnswer;
+    case seriallink::Failure::LinkDown:
+        return OperationFailure::LinkLost;
+    case seriallink::Failure::Cancelled:
+        return OperationFailure::Stopped;
+    }
+    return OperationFailure::None;
+}
+
 static QString readFailure(int address, int size, const seriallink::TransactionResult &result)
 {
     return Tr::tr("Reading %1 bytes at address %2: %3")
@@ -184,6 +199,11 @@ void BusExchange::noteLatency(std::chrono::microseconds latency)
 
 void BusExchange::runSteps(std::vector<Step> steps, StepDone done)
 {
+    for (Step &step : steps)
+        step = [this, step = std::move(step)](StepDone next) {
+            m_stepFailure = OperationFailure::None;
+            step(std::move(next));
+        };
     const quint64 generation = m_link.generation();
     auto runner = std::make_shared<StepRunner>(
         std::move(steps), [this, generation, done = std::move(done)](bool ok, const QString &m) {
@@ -191,6 +211,12 @@ void BusExchange::runSteps(std::vector<Step> steps, StepDone done)
                 done(ok, m);
         });
     runner->run();
+}
+
+void BusExchange::fail(const StepDone &next, OperationFailure kind, const QString &message)
+{
+    m_stepFailure = kind;
+    next(false, message);
 }
 
 void BusExchange::exchange(const Exchange &request, ExchangeDone done)
@@ -314,7 +340,8 @@ Step BusExchange::setBaud(qint32 baud)
 {
     return [this, baud](StepDone next) {
         if (!m_link.setBaudRate(baud)) {
-            next(false, Tr::tr("The port cannot be set to %1.").arg(baudText(baud)));
+            fail(next, OperationFailure::PortSetting,
+                 Tr::tr("The port cannot be set to %1.").arg(baudText(baud)));
             return;
         }
         next(true, {});
@@ -336,10 +363,11 @@ Step BusExchange::instruction(quint8 id, const QByteArray &request, bool expectR
         if (expectReply)
             ask.replyId = id;
         exchange(ask,
-                 [what, next](const seriallink::TransactionResult &result,
-                              const std::optional<Packet> &) {
+                 [this, what, next](const seriallink::TransactionResult &result,
+                                    const std::optional<Packet> &) {
                      if (!result.ok())
-                         next(false, Tr::tr("%1: %2").arg(what, failureText(result)));
+                         fail(next, failureKind(result),
+                              Tr::tr("%1: %2").arg(what, failureText(result)));
                      else
                          next(true, {});
                  });
@@ -371,8 +399,8 @@ Step BusExchange::writeValue(std::shared_ptr<ServoInfo> servo, const QString &ke
     QString error;
     const auto writes = encodeWrites(servo->table(), {{key, value}}, &error);
     if (!writes || writes->size() != 1)
-        return [error](StepDone next) {
-            next(false, error);
+        return [this, error](StepDone next) {
+            fail(next, OperationFailure::InvalidRequest, error);
         };
     const RegisterWrite registerWrite = writes->first();
     return [this, servo, registerWrite, key, sending](StepDone next) {
@@ -387,7 +415,8 @@ Step BusExchange::lock(std::shared_ptr<ServoInfo> servo, bool locked)
     return [this, servo, locked](StepDone next) {
         const Register *lock = registerAt(*servo, u"lock");
         if (!lock) {
-            next(false, Tr::tr("The servo's model has no known EEPROM lock register."));
+            fail(next, OperationFailure::Unsupported,
+                 Tr::tr("The servo's model has no known EEPROM lock register."));
             return;
         }
         const QString what = locked ? Tr::tr("Locking the EEPROM") : Tr::tr("Unlocking the EEPROM");
@@ -405,7 +434,7 @@ Step BusExchange::read(std::shared_ptr<ServoInfo> servo, int address, int size, 
                   next](const seriallink::TransactionResult &result,
                         const std::optional<Packet> &reply) {
                      if (!reply) {
-                         next(false, readFailure(address, size, result));
+                         fail(next, failureKind(result), readFailure(address, size, result));
                          return;
                      }
                      emit memoryRead(servo->id, servo->baud, address, reply->parameters, source,
@@ -454,7 +483,7 @@ Step BusExchange::readSpan(std::shared_ptr<ServoInfo> servo, QVector<Block> bloc
                     return;
                 }
                 if (result.failure != seriallink::Failure::Timeout) {
-                    next(false, readFailure(address, size, result));
+                    fail(next, failureKind(result), readFailure(address, size, result));
                     return;
                 }
                 // Firmware that answers short READs only: remembered once the blocks
@@ -480,13 +509,13 @@ Step BusExchange::identify(std::shared_ptr<ServoInfo> servo)
         ask.replyId = servo->id;
         ask.replyDataSize = kIdentitySize;
         exchange(ask,
-                 [servo, next](const seriallink::TransactionResult &result,
-                               const std::optional<Packet> &reply) {
+                 [this, servo, next](const seriallink::TransactionResult &result,
+                                     const std::optional<Packet> &reply) {
                      const auto info = reply
                          ? servoInfoFromIdentity(servo->id, servo->baud, reply->parameters)
                          : std::nullopt;
                      if (!info) {
-                         next(false,
+                         fail(next, reply ? OperationFailure::BadReply : failureKind(result),
                               Tr::tr("Reading the identity of servo %1: %2")
                                   .arg(servo->id)
                                   .arg(failureText(result)));
@@ -506,15 +535,17 @@ Step BusExchange::ping(quint8 id, bool mustAnswer, int retries)
         ask.replyId = id;
         ask.retryCount = retries;
         exchange(ask,
-                 [id, mustAnswer, next](const seriallink::TransactionResult &result,
-                                        const std::optional<Packet> &reply) {
+                 [this, id, mustAnswer, next](const seriallink::TransactionResult &result,
+                                              const std::optional<Packet> &reply) {
                      if (result.failure == seriallink::Failure::LinkDown
                          || result.failure == seriallink::Failure::Cancelled)
-                         next(false, failureText(result));
+                         fail(next, failureKind(result), failureText(result));
                      else if (mustAnswer && !reply)
-                         next(false, Tr::tr("Servo %1 does not answer.").arg(id));
+                         fail(next, OperationFailure::NoAnswer,
+                              Tr::tr("Servo %1 does not answer.").arg(id));
                      else if (!mustAnswer && reply)
-                         next(false, Tr::tr("ID %1 is already in use on this bus.").arg(id));
+                         fail(next, OperationFailure::IdInUse,
+                              Tr::tr("ID %1 is already in use on this bus.").arg(id));
                      else
                          next(true, {});
                  });
@@ -543,16 +574,17 @@ Step BusExchange::addressWrite(quint8 id, int address, quint8 value,
         ask.replyId = id;
         ask.alternateReplyId = alternateReplyId;
         ask.retryCount = 0; // a second write would go to an address that may have changed
-        exchange(ask,
-                 [next](const seriallink::TransactionResult &r, const std::optional<Packet> &) {
-                     // No answer is not a failure: the servo may already listen elsewhere. Whether
-                     // the write took is decided by finding it at the new address.
-                     if (r.failure == seriallink::Failure::LinkDown
-                         || r.failure == seriallink::Failure::Cancelled)
-                         next(false, failureText(r));
-                     else
-                         next(true, {});
-                 });
+        exchange(
+            ask,
+            [this, next](const seriallink::TransactionResult &r, const std::optional<Packet> &) {
+                // No answer is not a failure: the servo may already listen elsewhere. Whether
+                // the write took is decided by finding it at the new address.
+                if (r.failure == seriallink::Failure::LinkDown
+                    || r.failure == seriallink::Failure::Cancelled)
+                    fail(next, failureKind(r), failureText(r));
+                else
+                    next(true, {});
+            });
     };
 }
 
@@ -575,7 +607,7 @@ void BusExchange::searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> 
                               StepDone done)
 {
     if (rates.isEmpty()) {
-        done(false,
+        fail(done, OperationFailure::NoAnswer,
              Tr::tr("Servo %1 answers at no baud rate; scan the bus to find it.").arg(servo->id));
         return;
     }

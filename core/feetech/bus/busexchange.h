@@ -47,6 +47,8 @@ using ExchangeDone = std::function<void(const seriallink::TransactionResult &res
 
 // Why a transaction failed, in words for the user.
 QString failureText(const seriallink::TransactionResult &result);
+// The same, as the kind of an operation's failure.
+OperationFailure failureKind(const seriallink::TransactionResult &result);
 // The register `key` of the servo's table; none for an unknown model or a family without it.
 const Register *registerAt(const ServoInfo &servo, QStringView key);
 // "servo 3 at 1 Mbps"
@@ -79,6 +81,12 @@ public:
     // Runs the steps in turn; the first failure ends the run. Nothing is called back once the
     // link has ended or started again in between.
     void runSteps(std::vector<Step> steps, StepDone done);
+    // What kind of failure the step that failed last said it was: a step says it with fail(),
+    // and None stays when it said only its sentence (its operation knows the kind best then).
+    // Cleared as each step of a run starts, so it always speaks of the run's latest step.
+    OperationFailure stepFailure() const { return m_stepFailure; }
+    // Ends a step as failed, noting its kind for stepFailure().
+    void fail(const StepDone &next, OperationFailure kind, const QString &message);
 
     Step setBaud(qint32 baud);
     Step write(quint8 id, int address, const QByteArray &bytes, bool expectReply,
@@ -133,6 +141,7 @@ private:
     SessionTiming m_timing;
     std::deque<std::chrono::microseconds> m_latencies;
     QSet<qint64> m_refuseLongReads; // servos (baud and ID) read block by block
+    OperationFailure m_stepFailure = OperationFailure::None;
 };
 
 } // namespace feetech

@@ -113,18 +113,23 @@ Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
                      *modeNow = valueOf(table, *mode, bytes);
                  })([&bus, servo, heldAt, notInPositionMode, modeNow,
                      next](bool ok, const QString &message) {
-            if (!ok || !*modeNow) {
-                next(false, ok ? Tr::tr("The operating mode could not be read.") : message);
+            if (!ok) {
+                next(false, message);
+                return;
+            }
+            if (!*modeNow) {
+                bus.fail(next, OperationFailure::BadReply,
+                         Tr::tr("The operating mode could not be read."));
                 return;
             }
             if (**modeNow != 0) {
                 if (notInPositionMode)
                     *notInPositionMode = true;
-                next(false,
-                     Tr::tr("Servo %1 is not in position mode (mode %2): its goal is not a "
-                            "position, so it cannot be held there.")
-                         .arg(servo->id)
-                         .arg(**modeNow));
+                bus.fail(next, OperationFailure::Unsupported,
+                         Tr::tr("Servo %1 is not in position mode (mode %2): its goal is not a "
+                                "position, so it cannot be held there.")
+                             .arg(servo->id)
+                             .arg(**modeNow));
                 return;
             }
             writeGoalAtPresent(bus, servo, heldAt)(next);
@@ -147,15 +152,20 @@ Step writeGoalAtPresent(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
             [&table, &present, where](const QByteArray &bytes) {
                 *where = valueOf(table, present, bytes);
             })([&bus, servo, &table, &goal, where, heldAt, next](bool ok, const QString &message) {
-            if (!ok || !*where) {
-                next(false, ok ? Tr::tr("The present position could not be read.") : message);
+            if (!ok) {
+                next(false, message);
+                return;
+            }
+            if (!*where) {
+                bus.fail(next, OperationFailure::BadReply,
+                         Tr::tr("The present position could not be read."));
                 return;
             }
             QString error;
             const auto writes = encodeWrites(table, {{goal.key, **where}}, &error);
             if (!writes || writes->size() != 1) {
-                next(false,
-                     Tr::tr("The goal cannot be set to the present position (%1).").arg(error));
+                bus.fail(next, OperationFailure::InvalidRequest,
+                         Tr::tr("The goal cannot be set to the present position (%1).").arg(error));
                 return;
             }
             if (heldAt)

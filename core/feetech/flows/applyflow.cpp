@@ -111,7 +111,10 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
 {
     const QString refused = refusal(servo, writes);
     if (!refused.isEmpty()) {
-        finish({Operation::Write, false, refused, servo, {}});
+        OperationResult result {Operation::Write, false, refused, servo, {}};
+        result.failure =
+            servo.hasTable() ? OperationFailure::InvalidRequest : OperationFailure::Unsupported;
+        finish(result);
         return;
     }
     auto target = std::make_shared<ServoInfo>(servo);
@@ -153,6 +156,7 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
                 finish({Operation::Write, true, Tr::tr("Written and read back."), servo, {}});
                 return;
             }
+            const OperationFailure failure = m_bus.stepFailure();
             // Never leave the EEPROM open: lock it again, whatever failed (an unlock may have
             // landed unconfirmed even when nothing else went out).
             std::vector<Step> settle;
@@ -168,8 +172,9 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
                         target, item.address, int(item.bytes.size()), ReadSource::ReadBack)));
             }
             m_bus.runSteps(std::move(settle),
-                           [finish, servo, message, locked, sent](bool, const QString &) {
+                           [finish, servo, message, failure, locked, sent](bool, const QString &) {
                                OperationResult result {Operation::Write, false, message, servo, {}};
+                               result.failure = failure;
                                if (!*locked)
                                    result.message += u' ' + lockLeftOpenWarning();
                                result.writesSent = *sent;
@@ -227,7 +232,9 @@ void ApplyFlow::apply(const ServoInfo &servo, const ApplyPlan &plan, GuidedFlows
                  m_flows.changeBaud(at, baud, std::move(f));
              }});
     if (chain->steps.empty()) {
-        chain->finish({Operation::Write, false, Tr::tr("Nothing to write."), servo, {}});
+        OperationResult result {Operation::Write, false, Tr::tr("Nothing to write."), servo, {}};
+        result.failure = OperationFailure::NothingToDo;
+        chain->finish(result);
         return;
     }
     runChain(servo, chain, 0);

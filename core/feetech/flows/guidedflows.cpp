@@ -30,13 +30,17 @@ void GuidedFlows::changeId(const ServoInfo &servo, int newId, const QVector<int>
     OperationResult result {Operation::ChangeId, false, {}, servo, {}};
     const Register *idRegister = registerAt(servo, u"id");
     if (!idRegister) {
+        result.failure = OperationFailure::Unsupported;
         result.message =
             Tr::tr("Servo %1 is of an unknown model; its ID is not changed.").arg(servo.id);
     } else if (newId < 0 || newId > kMaxServoId) {
+        result.failure = OperationFailure::InvalidRequest;
         result.message = Tr::tr("ID %1 is out of range (0 to %2).").arg(newId).arg(kMaxServoId);
     } else if (newId == servo.id) {
+        result.failure = OperationFailure::NothingToDo;
         result.message = Tr::tr("The servo already has ID %1.").arg(newId);
     } else if (idsInUse.contains(newId)) {
+        result.failure = OperationFailure::IdInUse;
         result.message =
             Tr::tr("ID %1 is already in use on this bus; nothing was written.").arg(newId);
     }
@@ -68,6 +72,7 @@ void GuidedFlows::changeId(const ServoInfo &servo, int newId, const QVector<int>
                            return;
                        }
                        result.message = message;
+                       result.failure = m_bus.stepFailure();
                        if (!*unlocked) { // refused before anything was written
                            finish(result);
                            return;
@@ -92,15 +97,19 @@ void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish fini
     OperationResult result {Operation::ChangeBaud, false, {}, servo, {}};
     const Register *baudRegister = registerAt(servo, u"baud_rate");
     const std::optional<int> code = feetech::baudCode(newBaud);
-    if (!baudRegister)
+    if (!baudRegister) {
+        result.failure = OperationFailure::Unsupported;
         result.message = Tr::tr("Servo %1 is of an unknown model; its baud rate is not "
                                 "changed.")
                              .arg(servo.id);
-    else if (!code || *code > baudRegister->maximum)
+    } else if (!code || *code > baudRegister->maximum) {
+        result.failure = OperationFailure::InvalidRequest;
         result.message =
             Tr::tr("%1 is not a baud rate this servo supports.").arg(baudText(newBaud));
-    else if (newBaud == servo.baud)
+    } else if (newBaud == servo.baud) {
+        result.failure = OperationFailure::NothingToDo;
         result.message = Tr::tr("The servo already runs at %1.").arg(baudText(newBaud));
+    }
     if (!result.message.isEmpty()) {
         finish(result);
         return;
@@ -119,12 +128,12 @@ void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish fini
     steps.push_back(m_bus.setBaud(newBaud));
     steps.push_back(m_bus.lock(moved, true));
     steps.push_back(m_bus.identify(moved));
-    steps.push_back([moved, code](StepDone next) {
+    steps.push_back([this, moved, code](StepDone next) {
         if (moved->baudCode != *code)
-            next(false,
-                 Tr::tr("The servo reports baud code %1 instead of %2.")
-                     .arg(moved->baudCode)
-                     .arg(*code));
+            m_bus.fail(next, OperationFailure::NotVerified,
+                       Tr::tr("The servo reports baud code %1 instead of %2.")
+                           .arg(moved->baudCode)
+                           .arg(*code));
         else
             next(true, {});
     });
@@ -142,6 +151,7 @@ void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish fini
                 return;
             }
             result.message = message;
+            result.failure = m_bus.stepFailure();
             if (!*unlocked) {
                 finish(result);
                 return;
@@ -173,12 +183,14 @@ void GuidedFlows::calibrateMiddle(const ServoInfo &servo, Finish finish)
         servo.hasTable() ? servo.table().torqueValue(TorqueMode::CalibrateMiddle) : std::nullopt;
     if (method == MiddleCalibration::Unsupported || !offset || !torque
         || (method == MiddleCalibration::TorqueEnable128 && !calibrateValue)) {
-        finish({Operation::CalibrateMiddle,
-                false,
-                Tr::tr("Middle calibration is not available on this servo "
-                       "(SCS servos have no offset register)."),
-                servo,
-                {}});
+        OperationResult result {Operation::CalibrateMiddle,
+                                false,
+                                Tr::tr("Middle calibration is not available on this servo "
+                                       "(SCS servos have no offset register)."),
+                                servo,
+                                {}};
+        result.failure = OperationFailure::Unsupported;
+        finish(result);
         return;
     }
     auto target = std::make_shared<ServoInfo>(servo);
@@ -193,12 +205,14 @@ void GuidedFlows::calibrateMiddle(const ServoInfo &servo, Finish finish)
     steps.push_back(m_bus.read(target, offset->address, offset->size, ReadSource::ReadBack));
     m_bus.runSteps(std::move(steps),
                    [this, finish, servo, target](bool ok, const QString &message) {
-                       const OperationResult result {
+                       OperationResult result {
                            Operation::CalibrateMiddle,
                            ok,
                            ok ? Tr::tr("The present position is now the middle.") : message,
                            servo,
                            {}};
+                       if (!ok)
+                           result.failure = m_bus.stepFailure();
                        if (ok)
                            finish(result);
                        else
@@ -209,11 +223,14 @@ void GuidedFlows::calibrateMiddle(const ServoInfo &servo, Finish finish)
 void GuidedFlows::factoryReset(const ServoInfo &servo, Finish finish)
 {
     if (!servo.hasTable()) {
-        finish({Operation::FactoryReset,
-                false,
-                Tr::tr("Servo %1 is of an unknown model; it is not reset.").arg(servo.id),
-                servo,
-                {}});
+        OperationResult result {
+            Operation::FactoryReset,
+            false,
+            Tr::tr("Servo %1 is of an unknown model; it is not reset.").arg(servo.id),
+            servo,
+            {}};
+        result.failure = OperationFailure::Unsupported;
+        finish(result);
         return;
     }
     auto target = std::make_shared<ServoInfo>(servo);
@@ -233,15 +250,16 @@ void GuidedFlows::factoryReset(const ServoInfo &servo, Finish finish)
     steps.push_back(m_bus.identify(target));
     steps.push_back(m_bus.lock(target, true));
     m_bus.runSteps(std::move(steps), [this, finish, target](bool ok, const QString &message) {
-        const OperationResult result {
-            Operation::FactoryReset,
-            ok,
-            ok ? Tr::tr("Factory values restored; servo %1 answers at %2.")
-                     .arg(target->id)
-                     .arg(baudText(target->baud))
-               : message,
-            *target,
-            {}};
+        OperationResult result {Operation::FactoryReset,
+                                ok,
+                                ok ? Tr::tr("Factory values restored; servo %1 answers at %2.")
+                                         .arg(target->id)
+                                         .arg(baudText(target->baud))
+                                   : message,
+                                *target,
+                                {}};
+        if (!ok)
+            result.failure = m_bus.stepFailure();
         if (ok)
             finish(result);
         else
@@ -267,7 +285,9 @@ void GuidedFlows::reboot(const ServoInfo &servo, Finish finish)
     });
     m_bus.runSteps(std::move(steps), [this, finish, servo, clock](bool ok, const QString &message) {
         if (!ok) {
-            finish({Operation::Reboot, false, message, servo, {}});
+            OperationResult result {Operation::Reboot, false, message, servo, {}};
+            result.failure = m_bus.stepFailure();
+            finish(result);
             return;
         }
         waitForReboot(servo, clock, finish);
@@ -294,13 +314,16 @@ void GuidedFlows::waitForReboot(const ServoInfo &servo, std::shared_ptr<QElapsed
                                 servo,
                                 {}});
                     } else if (clock->elapsed() >= m_bus.timing().rebootGiveUp.count()) {
-                        finish({Operation::Reboot,
-                                false,
-                                Tr::tr("Servo %1 has not answered within %2 ms of the restart.")
-                                    .arg(servo.id)
-                                    .arg(clock->elapsed()),
-                                servo,
-                                {}});
+                        OperationResult result {
+                            Operation::Reboot,
+                            false,
+                            Tr::tr("Servo %1 has not answered within %2 ms of the restart.")
+                                .arg(servo.id)
+                                .arg(clock->elapsed()),
+                            servo,
+                            {}};
+                        result.failure = OperationFailure::NoAnswer;
+                        finish(result);
                     } else {
                         waitForReboot(servo, clock, finish);
                     }

@@ -76,7 +76,7 @@ void JointIdentify::run(const ServoInfo &servo, GuidedFlows::Finish finish, Paus
     if (!servo.hasTable() || !table.find(kGoalPosition) || !table.find(kPresentPosition)
         || !table.find(kTorqueEnable) || !table.torqueValue(TorqueMode::On)
         || !table.torqueValue(TorqueMode::Off)) {
-        end(run, false,
+        end(run, OperationFailure::Unsupported,
             Tr::tr("%1 is of a model ServoBench does not move (%2); it cannot be identified.")
                 .arg(servoName(servo), servo.model.name));
         return;
@@ -88,7 +88,8 @@ void JointIdentify::run(const ServoInfo &servo, GuidedFlows::Finish finish, Paus
         steps.push_back(std::move(step));
     m_bus.runSteps(std::move(steps), [this, run](bool ok, const QString &message) {
         if (!ok) {
-            end(run, false, Tr::tr("%1 does not answer: %2").arg(servoName(run->servo), message));
+            end(run, m_bus.stepFailure(),
+                Tr::tr("%1 does not answer: %2").arg(servoName(run->servo), message));
             return;
         }
         run->before = run->now;
@@ -103,11 +104,11 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
     const QHash<QString, qint32> &before = run->before;
     if (const QString refusal = whyNotToMove(servo, before, &run->torqueWasOn);
         !refusal.isEmpty()) {
-        end(run, false, refusal);
+        end(run, OperationFailure::Unsupported, refusal);
         return;
     }
     if (m_cancelled) {
-        end(run, false,
+        end(run, OperationFailure::Stopped,
             Tr::tr("Identifying %1 was stopped; nothing was written.").arg(servoName(servo)));
         return;
     }
@@ -119,7 +120,7 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
     const auto range = goalRange(table, read(kMinAngleLimit), read(kMaxAngleLimit));
     const qint32 start = before.value(kPresentPosition);
     if (!range || !range->contains(start)) {
-        end(run, false,
+        end(run, OperationFailure::NoRoomToMove,
             Tr::tr("%1 stands at %2, outside the goal positions it accepts: it is not moved.")
                 .arg(servoName(servo))
                 .arg(start));
@@ -128,7 +129,7 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
     const qint32 up = std::min(start + kAmplitude, range->maximum);
     const qint32 down = std::max(start - kAmplitude, range->minimum);
     if (up - down < kAmplitude) {
-        end(run, false,
+        end(run, OperationFailure::NoRoomToMove,
             Tr::tr("%1's angle limits leave no room to move it around %2.")
                 .arg(servoName(servo))
                 .arg(start));
@@ -164,7 +165,7 @@ void JointIdentify::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> ste
     steps.insert(steps.begin(), m_bus.setBaud(run->servo.baud));
     m_bus.runSteps(std::move(steps), [this, run, then](bool ok, const QString &message) {
         if (!ok) {
-            restore(run, false,
+            restore(run, false, m_bus.stepFailure(),
                     Tr::tr("%1 stopped answering: %2").arg(servoName(run->servo), message));
             return;
         }
@@ -176,11 +177,12 @@ void JointIdentify::nextLeg(std::shared_ptr<Run> run)
 {
     ++run->leg;
     if (run->leg >= run->legs.size()) {
-        restore(run, false, {});
+        restore(run, false, OperationFailure::None, {});
         return;
     }
     if (m_cancelled) {
-        restore(run, false, Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
+        restore(run, false, OperationFailure::Stopped,
+                Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
         return;
     }
     run->legClock.start();
@@ -193,12 +195,13 @@ void JointIdentify::poll(std::shared_ptr<Run> run)
     run->pause(m_bus.timing().identifyPollInterval, [this, run](bool torqueOff) {
         if (torqueOff) {
             restore(
-                run, true,
+                run, true, OperationFailure::AfterTorqueOff,
                 Tr::tr("All torque off: identifying %1 was stopped.").arg(servoName(run->servo)));
             return;
         }
         if (m_cancelled) {
-            restore(run, false, Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
+            restore(run, false, OperationFailure::Stopped,
+                    Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
             return;
         }
         run->now.remove(kMoving);
@@ -216,7 +219,8 @@ void JointIdentify::poll(std::shared_ptr<Run> run)
     });
 }
 
-void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, const QString &failure)
+void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, OperationFailure kind,
+                            const QString &failure)
 {
     const RegisterTable &table = run->servo.table();
     const QHash<QString, qint32> &before = run->before;
@@ -235,26 +239,29 @@ void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, const QStr
     if (!torqueOff)
         restored.append(kTorqueEnable);
     if (!run->changed) {
-        end(run, failure.isEmpty(), failure);
+        end(run, kind, failure);
         return;
     }
     for (Step &step : readSteps(run, restored))
         steps.push_back(std::move(step));
     m_bus.runSteps(
-        std::move(steps), [this, run, restored, failure](bool ok, const QString &message) {
+        std::move(steps), [this, run, restored, kind, failure](bool ok, const QString &message) {
+            const OperationFailure restoreFailure =
+                ok ? OperationFailure::NotVerified : m_bus.stepFailure();
             const QString problem = ok
                 ? notRestoredAsItWas(restored, run->before, run->now)
                 : Tr::tr("its registers could not be restored (%1); check its torque.")
                       .arg(message);
             if (!failure.isEmpty()) {
-                end(run, false, problem.isEmpty() ? failure : failure + QLatin1Char(' ') + problem);
+                end(run, kind, problem.isEmpty() ? failure : failure + QLatin1Char(' ') + problem);
                 return;
             }
             if (!problem.isEmpty()) {
-                end(run, false, Tr::tr("%1 was moved, but %2").arg(servoName(run->servo), problem));
+                end(run, restoreFailure,
+                    Tr::tr("%1 was moved, but %2").arg(servoName(run->servo), problem));
                 return;
             }
-            end(run, true,
+            end(run, OperationFailure::None,
                 (run->torqueWasOn ? Tr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
                                            "on, as it was.")
                                   : Tr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
@@ -264,9 +271,12 @@ void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, const QStr
         });
 }
 
-void JointIdentify::end(std::shared_ptr<Run> run, bool ok, const QString &message)
+void JointIdentify::end(std::shared_ptr<Run> run, OperationFailure failure, const QString &message)
 {
-    run->finish({Operation::Identify, ok, message, run->servo, {}});
+    OperationResult result {
+        Operation::Identify, failure == OperationFailure::None, message, run->servo, {}};
+    result.failure = failure;
+    run->finish(result);
 }
 
 } // namespace feetech

@@ -54,8 +54,11 @@ private:
                       std::function<void()> then);
     void nextLeg(std::shared_ptr<Run> run);
     void poll(std::shared_ptr<Run> run);
-    void restore(std::shared_ptr<Run> run, bool torqueOff, const QString &failure);
-    void end(std::shared_ptr<Run> run, bool ok, const QString &message);
+    // Puts back what was changed; `failure` (of kind `kind`) is why it ended early.
+    void restore(std::shared_ptr<Run> run, bool torqueOff, OperationFailure kind,
+                 const QString &failure);
+    // Succeeds when `failure` is None.
+    void end(std::shared_ptr<Run> run, OperationFailure failure, const QString &message);
     Step writeStep(std::shared_ptr<Run> run, const QString &key, qint32 value);
 
     BusExchange &m_bus;

@@ -38,6 +38,8 @@ struct MotorSearch
     QString message; // for the user: what was found and what to do
 
     bool foundOne() const { return verdict == Verdict::OneServo; }
+    // The verdict as the kind of the operation's failure (None when it found one servo).
+    OperationFailure failure() const;
     // The bus is not as a set-up needs it, and the message does not say so itself.
     bool needsNothingWrittenNote() const
     {

@@ -98,12 +98,13 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
     run->result.setUp = true;
     // Refused before anything is sent.
     if (target.id < 0 || target.id > kMaxServoId) {
-        finish(run, false,
+        finish(run, OperationFailure::InvalidRequest,
                Tr::tr("ID %1 is out of range (0 to %2).").arg(target.id).arg(kMaxServoId));
         return;
     }
     if (!baudCode(target.baud)) {
-        finish(run, false, Tr::tr("%1 is not a Feetech baud rate.").arg(baudText(target.baud)));
+        finish(run, OperationFailure::InvalidRequest,
+               Tr::tr("%1 is not a Feetech baud rate.").arg(baudText(target.baud)));
         return;
     }
     emit progress(1, kSetupSteps, Tr::tr("Looking for the servo at every baud rate…"));
@@ -111,7 +112,7 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
         run->result.search = search;
         run->result.stopped = search.stopped;
         if (!search.foundOne()) {
-            finish(run, false, search.message);
+            finish(run, search.failure(), search.message);
             return;
         }
         run->servo = run->result.from = search.servo;
@@ -119,7 +120,7 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
         // What the servo's table cannot take is refused before anything is written.
         const Register *baudRegister = registerAt(run->servo, u"baud_rate");
         if (!baudRegister || *baudCode(run->target.baud) > baudRegister->maximum) {
-            finish(run, false,
+            finish(run, OperationFailure::Unsupported,
                    Tr::tr("Model %1 cannot run at %2; nothing was written.")
                        .arg(run->servo.model.name, baudText(run->target.baud)));
             return;
@@ -129,7 +130,7 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
             items.append({it.key(), it.value()});
         QString error;
         if (!items.isEmpty() && !encodeWrites(run->servo.table(), items, &error)) {
-            finish(run, false,
+            finish(run, OperationFailure::InvalidRequest,
                    Tr::tr("The settings do not suit this servo (%1); nothing was written.")
                        .arg(error));
             return;
@@ -143,7 +144,7 @@ bool MotorSetup::stoppedBefore(std::shared_ptr<Run> run, const QString &step)
     if (!m_cancelled)
         return false;
     run->result.stopped = true;
-    finish(run, false,
+    finish(run, OperationFailure::Stopped,
            Tr::tr("Stopped before %1. The servo answers as %2; nothing more was written.")
                .arg(step, servoName(run->servo)));
     return true;
@@ -163,7 +164,7 @@ void MotorSetup::changeId(std::shared_ptr<Run> run)
     // The search found no other servo at any rate, so no ID is in use.
     m_flows.changeId(run->servo, id, {}, [this, run](const OperationResult &result) {
         if (!result.ok) {
-            finish(run, false, result.message);
+            finish(run, result.failure, result.message);
             return;
         }
         run->servo = result.servo;
@@ -185,7 +186,7 @@ void MotorSetup::changeBaud(std::shared_ptr<Run> run)
     }
     m_flows.changeBaud(run->servo, baud, [this, run](const OperationResult &result) {
         if (!result.ok) {
-            finish(run, false, result.message);
+            finish(run, result.failure, result.message);
             return;
         }
         run->servo = result.servo;
@@ -201,7 +202,7 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
         return;
     emit progress(4, kSetupSteps, Tr::tr("Writing %n setting(s)…", nullptr, int(settings.size())));
     if (settings.isEmpty()) {
-        finish(run, true, {});
+        finish(run, OperationFailure::None, {});
         return;
     }
     // Only what differs is written: the EEPROM keeps its writes for what changes.
@@ -209,7 +210,7 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
     readSettings(run->servo, run->target.settings.keys(), current,
                  [this, run, current](bool ok, const QString &message) {
                      if (!ok) {
-                         finish(run, false, message);
+                         finish(run, m_bus.stepFailure(), message);
                          return;
                      }
                      QVector<model::WriteItem> items;
@@ -226,7 +227,7 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
                      QString error;
                      const auto writes = encodeWrites(run->servo.table(), items, &error);
                      if (!writes) {
-                         finish(run, false, error);
+                         finish(run, OperationFailure::InvalidRequest, error);
                          return;
                      }
                      const bool eeprom =
@@ -236,7 +237,7 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
                          run->servo, *writes,
                          [this, run, items, eeprom](const OperationResult &result) {
                              if (!result.ok) {
-                                 finish(run, false, result.message);
+                                 finish(run, result.failure, result.message);
                                  return;
                              }
                              QStringList keys;
@@ -261,7 +262,7 @@ void MotorSetup::verifySettings(std::shared_ptr<Run> run)
         run->servo, run->target.settings.keys(), values,
         [this, run, values](bool ok, const QString &message) {
             if (!ok) {
-                finish(run, false, message);
+                finish(run, m_bus.stepFailure(), message);
                 return;
             }
             QStringList wrong;
@@ -279,13 +280,13 @@ void MotorSetup::verifySettings(std::shared_ptr<Run> run)
                                           : Tr::tr("nothing")));
             }
             if (!wrong.isEmpty()) {
-                finish(run, false,
+                finish(run, OperationFailure::NotVerified,
                        Tr::tr("Verification failed: %1.").arg(wrong.join(QStringLiteral("; "))));
                 return;
             }
             run->result.steps.append(Tr::tr("Read back: %n setting(s) hold their values.", nullptr,
                                             int(settings.size())));
-            finish(run, true, {});
+            finish(run, OperationFailure::None, {});
         });
 }
 
@@ -312,10 +313,12 @@ void MotorSetup::readSettings(const ServoInfo &servo, const QStringList &keys,
     });
 }
 
-void MotorSetup::finish(std::shared_ptr<Run> run, bool ok, const QString &message)
+void MotorSetup::finish(std::shared_ptr<Run> run, OperationFailure failure, const QString &message)
 {
     MotorSetupResult &result = run->result;
+    const bool ok = failure == OperationFailure::None;
     result.ok = ok;
+    result.failure = failure;
     result.to = run->servo;
     const QString who = run->target.joint.isEmpty() ? Tr::tr("The servo") : run->target.joint;
     result.message = ok ? Tr::tr("%1 is set up: %2, %n setting(s) verified.", nullptr,

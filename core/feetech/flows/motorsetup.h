@@ -35,6 +35,7 @@ struct MotorSetupResult
     bool ok = false;
     bool setUp = false; // a set-up (false: only a find)
     bool stopped = false; // cancelled between two steps
+    OperationFailure failure = OperationFailure::None; // why it did not succeed
     MotorSearch search;
     ServoInfo from; // where the servo was found
     ServoInfo to; // where it answers afterwards
@@ -103,7 +104,8 @@ private:
     void readSettings(const ServoInfo &servo, const QStringList &keys,
                       std::shared_ptr<QMap<QString, qint32>> values, StepDone next);
     bool stoppedBefore(std::shared_ptr<Run> run, const QString &step);
-    void finish(std::shared_ptr<Run> run, bool ok, const QString &message);
+    // Succeeds when `failure` is None.
+    void finish(std::shared_ptr<Run> run, OperationFailure failure, const QString &message);
 
     void checkNext(qint32 baud, std::shared_ptr<QVector<JointCheck>> joints, int index,
                    CheckDone done);

@@ -259,8 +259,9 @@ Step GuardKeeper::torqueOff(std::shared_ptr<ServoInfo> target)
         const Register *torque = table.find(u"torque_enable");
         const auto off = table.torqueValue(TorqueMode::Off);
         if (!torque || !off) {
-            next(false,
-                 Tr::tr("Servo %1 has no torque switch the guard could use.").arg(target->id));
+            m_bus.fail(
+                next, OperationFailure::Unsupported,
+                Tr::tr("Servo %1 has no torque switch the guard could use.").arg(target->id));
             return;
         }
         m_bus.runSteps({m_bus.write(target->id, torque->address, QByteArray(1, char(*off)),

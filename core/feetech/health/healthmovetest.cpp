@@ -72,7 +72,7 @@ void HealthMoveTest::run(const ServoInfo &servo, Pause pause,
     if (!servo.hasTable() || !table.find(kGoalPosition) || !table.find(kPresentPosition)
         || !table.find(kTorqueEnable) || !table.torqueValue(TorqueMode::On)
         || !table.torqueValue(TorqueMode::Off)) {
-        end(run, false,
+        end(run, OperationFailure::Unsupported,
             Tr::tr("%1 is of a model ServoBench does not move (%2): no move test.")
                 .arg(servoName(servo), servo.model.name));
         return;
@@ -84,7 +84,8 @@ void HealthMoveTest::run(const ServoInfo &servo, Pause pause,
         steps.push_back(std::move(step));
     m_bus.runSteps(std::move(steps), [this, run](bool ok, const QString &message) {
         if (!ok) {
-            end(run, false, Tr::tr("%1 does not answer: %2").arg(servoName(*run->servo), message));
+            end(run, m_bus.stepFailure(),
+                Tr::tr("%1 does not answer: %2").arg(servoName(*run->servo), message));
             return;
         }
         run->before = run->now;
@@ -99,7 +100,7 @@ void HealthMoveTest::begin(std::shared_ptr<Run> run)
     const QHash<QString, qint32> &before = run->before;
     if (const QString refusal = whyNotToMove(servo, before, &run->torqueWasOn);
         !refusal.isEmpty()) {
-        end(run, false, refusal);
+        end(run, OperationFailure::Unsupported, refusal);
         return;
     }
     const auto read = [&before](const QString &key) -> std::optional<qint64> {
@@ -113,7 +114,7 @@ void HealthMoveTest::begin(std::shared_ptr<Run> run)
     if (range && !range->contains(target))
         target = start - kAmplitude;
     if (!range || !range->contains(start) || !range->contains(target)) {
-        end(run, false,
+        end(run, OperationFailure::NoRoomToMove,
             Tr::tr("%1 stands at %2: its angle limits leave no room for a move of %3 steps.")
                 .arg(servoName(servo))
                 .arg(start)
@@ -147,7 +148,7 @@ void HealthMoveTest::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> st
     steps.insert(steps.begin(), m_bus.setBaud(run->servo->baud));
     m_bus.runSteps(std::move(steps), [this, run, then](bool ok, const QString &message) {
         if (!ok) {
-            restore(run, false,
+            restore(run, false, m_bus.stepFailure(),
                     Tr::tr("%1 stopped answering: %2").arg(servoName(*run->servo), message));
             return;
         }
@@ -165,14 +166,14 @@ void HealthMoveTest::poll(std::shared_ptr<Run> run)
 {
     run->pause(kPollInterval, [this, run](bool torqueOff) {
         if (run->stoppedByGuard) {
-            restore(run, false,
+            restore(run, false, OperationFailure::GuardStopped,
                     Tr::tr("The overload guard stopped the move test of %1; its goal stays where "
                            "the guard held it.")
                         .arg(servoName(*run->servo)));
             return;
         }
         if (torqueOff) {
-            restore(run, true,
+            restore(run, true, OperationFailure::AfterTorqueOff,
                     Tr::tr("All torque off: the move test of %1 was stopped.")
                         .arg(servoName(*run->servo)));
             return;
@@ -203,7 +204,7 @@ void HealthMoveTest::afterPoll(std::shared_ptr<Run> run)
     const bool there =
         std::abs(position - run->result.start) <= kReachTolerance && run->now.value(kMoving) == 0;
     if (there || elapsedMs >= kReturnTimeout.count()) {
-        restore(run, false,
+        restore(run, false, there ? OperationFailure::None : OperationFailure::NotVerified,
                 there ? QString()
                       : Tr::tr("%1 did not get back to %2 (it stands at %3).")
                             .arg(servoName(*run->servo))
@@ -214,10 +215,11 @@ void HealthMoveTest::afterPoll(std::shared_ptr<Run> run)
     poll(run);
 }
 
-void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, const QString &failure)
+void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, OperationFailure kind,
+                             const QString &failure)
 {
-    if (!run->changed) {
-        end(run, false, failure);
+    if (!run->changed) { // nothing was moved, so nothing was tested
+        end(run, kind == OperationFailure::None ? OperationFailure::NotVerified : kind, failure);
         return;
     }
     const RegisterTable &table = run->servo->table();
@@ -236,15 +238,18 @@ void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, const QSt
     for (Step &step : readSteps(run, restored))
         steps.push_back(std::move(step));
     m_bus.runSteps(
-        std::move(steps), [this, run, restored, failure](bool ok, const QString &message) {
+        std::move(steps), [this, run, restored, kind, failure](bool ok, const QString &message) {
+            const OperationFailure restoreFailure =
+                ok ? OperationFailure::NotVerified : m_bus.stepFailure();
             const QString problem = ok
                 ? notRestoredAsItWas(restored, run->before, run->now)
                 : Tr::tr("it could not be restored (%1); check its torque.").arg(message);
             if (!failure.isEmpty() || !problem.isEmpty()) {
-                end(run, false, QStringList {failure, problem}.join(QLatin1Char(' ')).trimmed());
+                end(run, failure.isEmpty() ? restoreFailure : kind,
+                    QStringList {failure, problem}.join(QLatin1Char(' ')).trimmed());
                 return;
             }
-            end(run, true,
+            end(run, OperationFailure::None,
                 (run->torqueWasOn
                      ? Tr::tr("%1 moved from %2 to %3 and back; its torque is on, as it was.")
                      : Tr::tr("%1 moved from %2 to %3 and back; its torque is off, as it was."))
@@ -254,9 +259,10 @@ void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, const QSt
         });
 }
 
-void HealthMoveTest::end(std::shared_ptr<Run> run, bool ok, const QString &message)
+void HealthMoveTest::end(std::shared_ptr<Run> run, OperationFailure failure, const QString &message)
 {
-    run->result.ok = ok;
+    run->result.ok = failure == OperationFailure::None;
+    run->result.failure = failure;
     run->result.message = message;
     run->done(run->result);
 }

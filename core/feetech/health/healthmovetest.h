@@ -50,8 +50,11 @@ private:
                       std::function<void()> then);
     void poll(std::shared_ptr<Run> run);
     void afterPoll(std::shared_ptr<Run> run);
-    void restore(std::shared_ptr<Run> run, bool torqueOff, const QString &failure);
-    void end(std::shared_ptr<Run> run, bool ok, const QString &message);
+    // Puts back what was changed; `failure` (of kind `kind`) is why it ended early.
+    void restore(std::shared_ptr<Run> run, bool torqueOff, OperationFailure kind,
+                 const QString &failure);
+    // Succeeds when `failure` is None.
+    void end(std::shared_ptr<Run> run, OperationFailure failure, const QString &message);
 
     BusExchange &m_bus;
     std::weak_ptr<Run> m_running;

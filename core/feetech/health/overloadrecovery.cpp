@@ -28,9 +28,9 @@ Step recoverOverload(BusExchange &bus, std::shared_ptr<ServoInfo> servo, bool ch
         const auto off = table.torqueValue(TorqueMode::Off);
         const auto on = table.torqueValue(TorqueMode::On);
         if (!torque || !status || !off || !on || !table.find(u"goal_position")) {
-            next(false,
-                 Tr::tr("%1 has no torque, goal or status register to recover with.")
-                     .arg(servoName(*servo)));
+            bus.fail(next, OperationFailure::Unsupported,
+                     Tr::tr("%1 has no torque, goal or status register to recover with.")
+                         .arg(servoName(*servo)));
             return;
         }
         const auto torqueWrite = [&bus, servo, torque](qint32 value, const QString &what) {
@@ -55,10 +55,13 @@ Step recoverOverload(BusExchange &bus, std::shared_ptr<ServoInfo> servo, bool ch
             std::move(steps),
             [&bus, servo, latched, torqueRegister, offValue, next](bool ok,
                                                                    const QString &message) {
-                if (!ok || !latched->has_value()) {
-                    next(false,
-                         ok ? Tr::tr("The status of %1 could not be read.").arg(servoName(*servo))
-                            : message);
+                if (!ok) {
+                    next(false, message); // the failed step has said its kind
+                    return;
+                }
+                if (!latched->has_value()) {
+                    bus.fail(next, OperationFailure::BadReply,
+                             Tr::tr("The status of %1 could not be read.").arg(servoName(*servo)));
                     return;
                 }
                 if (!**latched) {

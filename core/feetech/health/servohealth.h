@@ -56,6 +56,7 @@ struct MoveTestResult
     quint8 id = 0;
     qint32 baud = 0;
     bool ok = false; // moved, measured and put back as it was
+    OperationFailure failure = OperationFailure::None; // why not, when !ok
     QString message; // what happened, for the user
     qint32 start = 0; // steps: where it stood (and stands again)
     qint32 target = 0;

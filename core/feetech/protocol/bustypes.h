@@ -144,6 +144,31 @@ enum class Operation {
     CheckSharedId // reads only: whether several servos answer at one ID
 };
 
+// Why an operation that ran (or was due to run) on the bus did not succeed: stable, so callers
+// and tests branch on it rather than on OperationResult::message, the sentence for the user.
+enum class OperationFailure {
+    None,
+    NotConnected, // the port was closed when its turn came
+    LinkLost, // the link went down while it ran or waited, or the port closed under it
+    // All torque off was asked for after it was submitted: not sent, or stopped where it was
+    AfterTorqueOff,
+    PortSetting, // the port could not be set to the servo's baud rate
+    NoAnswer, // a servo stayed silent after every attempt
+    BadReply, // an answer came, but says nothing usable (too short, a value beyond decoding)
+    NotVerified, // what was read back differs from what was written or asked for
+    IdInUse, // the new ID (or the ID at the new rate) already answers
+    Unsupported, // the servo's model or its mode cannot do it, or the model is unknown
+    InvalidRequest, // asked for what cannot be: an ID or rate out of range, a value refused
+    NothingToDo, // the servo already is as asked, or nothing was asked for
+    Stopped, // stopped by the user or cancelled before it ended
+    GuardStopped, // the overload guard stopped the move
+    NoRoomToMove, // the servo stands where its limits leave no room for the move
+    StillLatched, // the overload bit stayed set: only a power cycle clears it
+    SharedId, // several servos answer at the ID
+    SeveralServos, // more than the one servo a motor set-up needs answers
+    WrongModel, // the one servo found is not of the model asked for
+};
+
 struct OperationResult
 {
     Operation operation = Operation::Read;
@@ -159,11 +184,10 @@ struct OperationResult
     // A Write that failed after its frames went out: they may have landed. What its read-backs
     // did not settle is reported as unknown, not as unwritten.
     bool writesSent = false;
-    // RecoverOverload: the overload bit stayed set; only a power cycle clears it.
-    bool stillLatched = false;
-    // Ended by the link going down (running, paused or still queued), not by the servo: whoever
-    // watches the connection reports that once.
-    bool linkLost = false;
+    // None when ok. LinkLost: ended by the link going down (running, paused or still queued),
+    // not by the servo; whoever watches the connection reports that once. StillLatched
+    // (RecoverOverload): only a power cycle clears the overload bit.
+    OperationFailure failure = OperationFailure::None;
     // The submission it answers (BusOperation::ticket), which BusClient turns into its reply;
     // 0 where nobody asked for one (the guard, servoctl).
     quint64 ticket = 0;

@@ -424,7 +424,7 @@ void MotionTest::onWriteFinished(const OperationResult &result)
 {
     if (!isRunning() || m_writesInFlight <= 0)
         return;
-    if (result.linkLost) { // onStatusChanged says so
+    if (result.failure == OperationFailure::LinkLost) { // onStatusChanged says so
         --m_writesInFlight;
         return;
     }

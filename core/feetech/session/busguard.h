@@ -35,7 +35,8 @@ public:
     // The newest thing the guard said about servo `index`.
     std::optional<GuardEvent> lastEvent(int index) const;
     // Torque off and on again, then the status checked; `checkOnly` after a power cycle. The
-    // result says stillLatched when a power cycle is due. Nullptr and *refusal when refused.
+    // result's failure is StillLatched when a power cycle is due. Nullptr and *refusal when
+    // refused.
     OperationReply *recoverOverload(int index, bool checkOnly, Refusal *refusal = nullptr);
 
 signals:

@@ -76,9 +76,9 @@ Step confirmTorqueOff(OperationContext &context, const ServoInfo &servo,
         const auto off =
             servo.hasTable() ? servo.table().torqueValue(TorqueMode::Off) : std::nullopt;
         if (!torque || !off) {
-            next(false,
-                 Tr::tr("%1 is of an unknown model; its torque was not read back.")
-                     .arg(feetech::servoName(servo)));
+            context.bus().fail(next, OperationFailure::Unsupported,
+                               Tr::tr("%1 is of an unknown model; its torque was not read back.")
+                                   .arg(feetech::servoName(servo)));
             return;
         }
         Exchange ask;
@@ -89,16 +89,19 @@ Step confirmTorqueOff(OperationContext &context, const ServoInfo &servo,
         const qint32 offValue = *off;
         context.bus().exchange(
             ask,
-            [&context, servo, confirmed, next, address,
-             offValue](const seriallink::TransactionResult &, const std::optional<Packet> &reply) {
+            [&context, servo, confirmed, next, address, offValue](
+                const seriallink::TransactionResult &answer, const std::optional<Packet> &reply) {
                 if (!reply) {
-                    next(false,
-                         Tr::tr("%1 did not confirm (no reply).").arg(feetech::servoName(servo)));
+                    context.bus().fail(
+                        next, failureKind(answer),
+                        Tr::tr("%1 did not confirm (no reply).").arg(feetech::servoName(servo)));
                     return;
                 }
                 context.noteMemory(servo.id, servo.baud, address, reply->parameters, reply->code);
                 if (quint8(reply->parameters.at(0)) != offValue) {
-                    next(false, Tr::tr("%1 still has torque on.").arg(feetech::servoName(servo)));
+                    context.bus().fail(
+                        next, OperationFailure::NotVerified,
+                        Tr::tr("%1 still has torque on.").arg(feetech::servoName(servo)));
                     return;
                 }
                 ++*confirmed;
@@ -113,14 +116,18 @@ void checkNextServo(OperationContext &context, QVector<ServoInfo> servos, int do
     const int total = int(servos.size());
     if (done >= total || context.health().isCancelled()) {
         const bool stopped = done < total;
-        context.finish({Operation::HealthCheck,
-                        !stopped,
-                        stopped ? Tr::tr("The health check was stopped after %1 of %n servo(s).",
-                                         nullptr, total)
-                                      .arg(done)
-                                : Tr::tr("%n servo(s) checked.", nullptr, total),
-                        {},
-                        {}});
+        OperationResult result {Operation::HealthCheck,
+                                !stopped,
+                                stopped ? Tr::tr("The health check was stopped after %1 of %n "
+                                                 "servo(s).",
+                                                 nullptr, total)
+                                              .arg(done)
+                                        : Tr::tr("%n servo(s) checked.", nullptr, total),
+                                {},
+                                {}};
+        if (stopped)
+            result.failure = OperationFailure::Stopped;
+        context.finish(result);
         return;
     }
     context.health().read(
@@ -152,6 +159,7 @@ BusOperation ping(quint8 id, qint32 baud)
             result.servo.id = id;
             result.servo.baud = baud;
             if (!ok) {
+                result.failure = context.bus().stepFailure();
                 context.finish(result);
                 return;
             }
@@ -163,6 +171,7 @@ BusOperation ping(quint8 id, qint32 baud)
                 [&context, result](const seriallink::TransactionResult &answer,
                                    const std::optional<Packet> &reply) mutable {
                     result.ok = reply.has_value();
+                    result.failure = reply ? OperationFailure::None : failureKind(answer);
                     result.latency = answer.latency;
                     result.message = reply ? Tr::tr("Servo %1 answers.").arg(result.servo.id)
                                            : Tr::tr("Servo %1 does not answer: %2")
@@ -181,7 +190,9 @@ BusOperation checkSharedId(const ServoInfo &servo)
     return operation(Operation::CheckSharedId, [servo](OperationContext &context) {
         context.bus().setBaud(servo.baud)([&context, servo](bool ok, const QString &message) {
             if (!ok) {
-                context.finish({Operation::CheckSharedId, false, message, servo, {}});
+                OperationResult result {Operation::CheckSharedId, false, message, servo, {}};
+                result.failure = context.bus().stepFailure();
+                context.finish(result);
                 return;
             }
             feetech::checkSharedId(
@@ -194,6 +205,9 @@ BusOperation checkSharedId(const ServoInfo &servo)
                         result.message = sharedIdRefusal(servo.id);
                     if (verdict == SharedIdVerdict::Failed || verdict == SharedIdVerdict::Silent) {
                         result.ok = false;
+                        result.failure = verdict == SharedIdVerdict::Failed
+                            ? failureKind(last)
+                            : OperationFailure::NoAnswer;
                         result.message = verdict == SharedIdVerdict::Failed
                             ? failureText(last)
                             : Tr::tr("%1 stopped answering: check the power and the cable, "
@@ -219,12 +233,15 @@ BusOperation read(const ServoInfo &servo, const QVector<Block> &blocks, ReadSour
             steps.push_back(context.bus().readBlocks(target, toRead, source));
             context.bus().runSteps(
                 std::move(steps), [&context, servo](bool ok, const QString &message) {
-                    context.finish(
-                        {Operation::Read,
-                         ok,
-                         ok ? Tr::tr("Read %1.").arg(feetech::servoName(servo)) : message,
-                         servo,
-                         {}});
+                    OperationResult result {Operation::Read,
+                                            ok,
+                                            ok ? Tr::tr("Read %1.").arg(feetech::servoName(servo))
+                                               : message,
+                                            servo,
+                                            {}};
+                    if (!ok)
+                        result.failure = context.bus().stepFailure();
+                    context.finish(result);
                 });
         });
     // The guard learns of every servo read, as early as it is asked for.
@@ -310,11 +327,15 @@ BusOperation clearStatus(const ServoInfo &servo)
                 context.bus().read(target, status->address, status->size, ReadSource::ReadBack));
         context.bus().runSteps(
             std::move(steps), [&context, servo](bool ok, const QString &message) {
-                context.finish({Operation::ClearStatus,
-                                ok,
-                                ok ? Tr::tr("Status of servo %1 cleared.").arg(servo.id) : message,
-                                servo,
-                                {}});
+                OperationResult result {Operation::ClearStatus,
+                                        ok,
+                                        ok ? Tr::tr("Status of servo %1 cleared.").arg(servo.id)
+                                           : message,
+                                        servo,
+                                        {}};
+                if (!ok)
+                    result.failure = context.bus().stepFailure();
+                context.finish(result);
             });
     });
 }
@@ -324,11 +345,13 @@ BusOperation lockEeprom(const ServoInfo &servo)
     return operation(Operation::LockEeprom, [servo](OperationContext &context) {
         const Register *lock = registerAt(servo, u"lock");
         if (!lock) {
-            context.finish({Operation::LockEeprom,
-                            false,
-                            Tr::tr("The servo's model has no known EEPROM lock register."),
-                            servo,
-                            {}});
+            OperationResult result {Operation::LockEeprom,
+                                    false,
+                                    Tr::tr("The servo's model has no known EEPROM lock register."),
+                                    servo,
+                                    {}};
+            result.failure = OperationFailure::Unsupported;
+            context.finish(result);
             return;
         }
         auto target = std::make_shared<ServoInfo>(servo);
@@ -350,7 +373,12 @@ BusOperation lockEeprom(const ServoInfo &servo)
                 else if (ok)
                     text = Tr::tr("Servo %1 still reads back unlocked after the lock was written.")
                                .arg(servo.id);
-                context.finish({Operation::LockEeprom, locked, text, servo, {}});
+                OperationResult result {Operation::LockEeprom, locked, text, servo, {}};
+                if (!ok)
+                    result.failure = context.bus().stepFailure();
+                else if (!locked)
+                    result.failure = OperationFailure::NotVerified;
+                context.finish(result);
             });
     });
 }
@@ -367,6 +395,7 @@ BusOperation sendPacket(const QByteArray &frame, qint32 baud, std::optional<quin
                     OperationResult result {Operation::SendPacket, false, message, {}, {}};
                     result.servo.baud = baud;
                     if (!ok) {
+                        result.failure = context.bus().stepFailure();
                         context.finish(result);
                         return;
                     }
@@ -388,6 +417,7 @@ BusOperation sendPacket(const QByteArray &frame, qint32 baud, std::optional<quin
                                                     const std::optional<Packet> &reply) mutable {
                             result.latency = answer.latency;
                             if (answer.failure == seriallink::Failure::LinkDown) {
+                                result.failure = OperationFailure::LinkLost;
                                 result.message = failureText(answer);
                             } else if (!replyId) {
                                 result.ok = true;
@@ -395,6 +425,8 @@ BusOperation sendPacket(const QByteArray &frame, qint32 baud, std::optional<quin
                                     Tr::tr("Sent; its answers, if any, are in the packet log.");
                             } else {
                                 result.ok = reply.has_value();
+                                if (!reply)
+                                    result.failure = failureKind(answer);
                                 result.message = reply ? Tr::tr("Servo %1 answered.").arg(*replyId)
                                                        : Tr::tr("Sent; servo %1 did not answer: %2")
                                                              .arg(*replyId)
@@ -461,7 +493,11 @@ BusOperation torqueOffAll(const QVector<qint32> &bauds, const QVector<ServoInfo>
                              nullptr, *confirmed)
                     : Tr::tr("Torque off was sent to the whole bus, but: %1")
                           .arg(problems->join(QLatin1Char(' ')));
-                context.finish({Operation::TorqueOff, problems->isEmpty(), message, {}, {}});
+                OperationResult result {Operation::TorqueOff, problems->isEmpty(), message, {}, {}};
+                // Sent to the whole bus either way: what failed is the confirmation.
+                if (!result.ok)
+                    result.failure = OperationFailure::NotVerified;
+                context.finish(result);
             });
     });
     made.priority = BusOperation::Priority::Emergency;
@@ -476,11 +512,13 @@ BusOperation syncWrite(qint32 baud, int address, int length, const QVector<SyncW
             context.guard().noteSyncWrite(baud, address, entries);
             const auto frame = feetech::syncWrite(quint8(address), quint8(length), entries);
             if (!frame) {
-                context.finish({Operation::SyncWrite,
-                                false,
-                                Tr::tr("The SYNC WRITE does not fit in one packet."),
-                                {},
-                                {}});
+                OperationResult result {Operation::SyncWrite,
+                                        false,
+                                        Tr::tr("The SYNC WRITE does not fit in one packet."),
+                                        {},
+                                        {}};
+                result.failure = OperationFailure::InvalidRequest;
+                context.finish(result);
                 return;
             }
             std::vector<Step> steps {
@@ -489,13 +527,16 @@ BusOperation syncWrite(qint32 baud, int address, int length, const QVector<SyncW
                                           Tr::tr("SYNC WRITE at %1").arg(baudText(baud)))};
             context.bus().runSteps(
                 std::move(steps), [&context, entries](bool ok, const QString &message) {
-                    context.finish({Operation::SyncWrite,
-                                    ok,
-                                    ok ? Tr::tr("Sent to %n servo(s) in one SYNC WRITE.", nullptr,
-                                                int(entries.size()))
-                                       : message,
-                                    {},
-                                    {}});
+                    OperationResult result {Operation::SyncWrite,
+                                            ok,
+                                            ok ? Tr::tr("Sent to %n servo(s) in one SYNC WRITE.",
+                                                        nullptr, int(entries.size()))
+                                               : message,
+                                            {},
+                                            {}};
+                    if (!ok)
+                        result.failure = context.bus().stepFailure();
+                    context.finish(result);
                 });
         },
         true);
@@ -514,11 +555,13 @@ BusOperation recoverOverload(const ServoInfo &servo, bool checkOnly)
                  feetech::recoverOverload(context.bus(), target, checkOnly, latched)},
                 [&context, servo, checkOnly, latched](bool ok, const QString &message) {
                     OperationResult result {Operation::RecoverOverload, ok, message, servo, {}};
-                    result.stillLatched = ok && latched->value_or(false);
-                    if (result.stillLatched) {
+                    if (!ok) {
+                        result.failure = context.bus().stepFailure();
+                    } else if (latched->value_or(false)) {
                         result.ok = false;
+                        result.failure = OperationFailure::StillLatched;
                         result.message = powerCycleSteps(servo).join(QLatin1Char('\n'));
-                    } else if (ok) {
+                    } else {
                         result.message = checkOnly
                             ? Tr::tr("Servo ID %1: the overload bit is clear; switch its torque "
                                      "on when you are ready.")
@@ -551,8 +594,10 @@ BusOperation findMotor(const MotorTarget &target)
             result.stopped = search.stopped;
             result.from = result.to = search.servo;
             result.message = search.message;
+            result.failure = search.failure();
             OperationResult finished {
                 Operation::FindMotor, result.ok, result.message, search.servo, {}};
+            finished.failure = result.failure;
             finished.detail = QVariant::fromValue(result);
             context.finish(finished);
         });
@@ -571,6 +616,7 @@ BusOperation setUpMotor(const MotorTarget &target)
             context.motorSetup().setUp(target, [&context](const MotorSetupResult &result) {
                 OperationResult finished {
                     Operation::SetUpMotor, result.ok, result.message, result.to, {}};
+                finished.failure = result.failure;
                 finished.detail = QVariant::fromValue(result);
                 context.finish(finished);
             });
@@ -635,6 +681,7 @@ BusOperation moveTest(const ServoInfo &servo)
                 [&context, servo](const MoveTestResult &result) {
                     OperationResult finished {
                         Operation::MoveTest, result.ok, result.message, servo, {}};
+                    finished.failure = result.failure;
                     finished.detail = QVariant::fromValue(result);
                     context.finish(finished);
                 });

@@ -52,7 +52,7 @@ BusOperation syncWrite(qint32 baud, int address, int length,
                        const QVector<SyncWriteEntry> &entries);
 // Torque off and on again, then the status checked (see recoverOverload in
 // overloadrecovery.h); with `checkOnly` (after a power cycle) only the status. The result's
-// stillLatched says a power cycle is needed.
+// failure StillLatched says a power cycle is needed.
 BusOperation recoverOverload(const ServoInfo &servo, bool checkOnly);
 // Motor set-up (MotorSetup): the one servo on the bus found at any rate; found and set up as
 // `target` says (the result's detail is the MotorSetupResult); the joints that already answer

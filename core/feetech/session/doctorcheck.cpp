@@ -63,7 +63,8 @@ void DoctorCheck::readNext()
         connect(reply, &OperationReply::finished, this,
                 [this, reading = m_next](const OperationResult &result) {
                     // A read the lost link dropped leaves the servo's condition unknown.
-                    if (m_running && m_guard.isActive() && m_next == reading && !result.linkLost)
+                    if (m_running && m_guard.isActive() && m_next == reading
+                        && result.failure != feetech::OperationFailure::LinkLost)
                         onRead(result.ok);
                 });
     }

@@ -221,7 +221,7 @@ void Session::onLinkDown(const QString &message)
     const auto failed = [&message](const BusOperation &operation) {
         OperationResult result {operation.kind, false, message, {}, {}};
         result.ticket = operation.ticket;
-        result.linkLost = true;
+        result.failure = OperationFailure::LinkLost;
         return result;
     };
     if (wasScanning)
@@ -334,16 +334,20 @@ void Session::startQueuedOperation()
                 emit scanFinished(false, Tr::tr("Not connected."));
             QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
         } else {
-            finishOperation({kind, false, Tr::tr("Not connected."), {}, {}});
+            OperationResult result {kind, false, Tr::tr("Not connected."), {}, {}};
+            result.failure = OperationFailure::NotConnected;
+            finishOperation(result);
         }
         return;
     }
     if (d->current.operation.powersServos && d->current.epoch != d->torqueOffEpoch) {
-        finishOperation({kind,
-                         false,
-                         Tr::tr("Not sent: all torque off was asked for after this write."),
-                         {},
-                         {}});
+        OperationResult result {kind,
+                                false,
+                                Tr::tr("Not sent: all torque off was asked for after this write."),
+                                {},
+                                {}};
+        result.failure = OperationFailure::AfterTorqueOff;
+        finishOperation(result);
         return;
     }
     if (kind == Operation::Identify)

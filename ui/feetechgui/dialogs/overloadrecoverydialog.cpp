@@ -75,7 +75,7 @@ void OverloadRecoveryDialog::onOperationFinished(const feetech::OperationResult 
         m_action->hide();
         return;
     }
-    if (result.stillLatched) {
+    if (result.failure == feetech::OperationFailure::StillLatched) {
         // Only a power cycle clears it: the steps, then a check that switches nothing on.
         m_checkOnly = true;
         m_text->setText(result.message);

@@ -681,7 +681,7 @@ void ControlPage::onWriteFinished(WriteKind kind, quint8 id, const feetech::Oper
     if (kind == WriteKind::Mode)
         m_modeEdited = false;
     // A write the lost link dropped is no failure of the servo's: the page shows the link.
-    if (!result.ok && !result.linkLost)
+    if (!result.ok && result.failure != feetech::OperationFailure::LinkLost)
         setStatus(tr("Writing to servo ID %1 failed: %2").arg(id).arg(result.message),
                   Severity::Error);
     syncFromDevice();

@@ -416,7 +416,7 @@ void JointTable::onTorqueWritten(const feetech::ServoAddress &servo,
     const bool requestedOn = *m_rows.at(row).torqueRequested == feetech::TorqueMode::On;
     m_rows[row].torqueRequested.reset();
     // A write the lost link dropped is no failure of the servo's: the window shows the link.
-    if (!result.ok && !result.linkLost)
+    if (!result.ok && result.failure != feetech::OperationFailure::LinkLost)
         setMessage(tr("%1: torque was not switched %2: %3")
                        .arg(servoName(row), requestedOn ? tr("on") : tr("off"), result.message),
                    Tone::Error);

@@ -43,7 +43,8 @@ void CalibrationSteps::startNext()
             connect(reply, &feetech::OperationReply::finished, this,
                     [this, running = m_next](const feetech::OperationResult &result) {
                         // A lost link is reported by the status handler, once.
-                        if (m_next == running && !result.linkLost)
+                        if (m_next == running
+                            && result.failure != feetech::OperationFailure::LinkLost)
                             onOperationFinished(result);
                     });
             return;
