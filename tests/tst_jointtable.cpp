@@ -317,7 +317,7 @@ private slots:
         const std::optional<feetech::Pose> saved = feetech::loadPose(path, &error);
         QVERIFY2(saved, qPrintable(error));
         QCOMPARE(saved->servos.size(), 4);
-        QCOMPARE(saved->find(4, k1M)->position, 444);
+        QCOMPARE(saved->find({4, k1M})->position, 444);
 
         for (int row = 0; row < 4; ++row)
             m_joints->setTarget(row, 10);

@@ -1,6 +1,8 @@
 // Poses: goal positions for several servos of a bus, kept as small JSON files.
 #pragma once
 
+#include "bustypes.h"
+
 #include <QByteArray>
 #include <QString>
 #include <QVector>
@@ -29,6 +31,7 @@ struct PoseEntry
         return id == other.id && baud == other.baud && position == other.position;
     }
     bool operator!=(const PoseEntry &other) const { return !(*this == other); }
+    ServoAddress address() const { return {id, baud}; }
 };
 
 struct Pose
@@ -36,8 +39,8 @@ struct Pose
     QString name; // optional, for the user
     QVector<PoseEntry> servos;
 
-    // The entry of the servo with this ID at this baud rate, or null.
-    const PoseEntry *find(quint8 id, qint32 baud) const;
+    // The entry of the servo at `servo`, or null.
+    const PoseEntry *find(const ServoAddress &servo) const;
 
     bool operator==(const Pose &other) const
     {
