@@ -384,9 +384,9 @@ private slots:
     void positionsAreLiveWhileTheMonitorRuns()
     {
         connectAndScan();
-        QString error;
-        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1, 2, 3}, 50, &error),
-                 qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1, 2, 3}, 50, &refusal),
+                 qPrintable(refusal.describe()));
         for (int row = 0; row < 4; ++row)
             QTRY_VERIFY_WITH_TIMEOUT(m_joints->isPositionLive(row), 10000);
         QVERIFY(!child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));
