@@ -9,7 +9,7 @@ namespace {
 
 bool sameServo(const feetech::ServoInfo &a, const feetech::ServoInfo &b)
 {
-    return a.id == b.id && a.baud == b.baud;
+    return a.address() == b.address();
 }
 
 bool sameServos(const QVector<feetech::ServoInfo> &a, const QVector<feetech::ServoInfo> &b)
