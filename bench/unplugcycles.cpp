@@ -250,9 +250,9 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
         break;
     }
     case Work::FeetechStream: {
-        QString error;
-        if (!client.telemetry()->subscribe(&client, {0, 1, 2, 3, 4, 5}, 50.0, &error))
-            return QStringLiteral("the stream did not start: ") + error;
+        feetech::Refusal refusal;
+        if (!client.telemetry()->subscribe(&client, {0, 1, 2, 3, 4, 5}, 50.0, &refusal))
+            return QStringLiteral("the stream did not start: ") + refusal.describe();
         qint64 samples = 0;
         const auto connection = QObject::connect(
             client.telemetry(), &feetech::TelemetryHub::samplesReceived,
@@ -268,7 +268,7 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
             return QStringLiteral("no reconnection");
         }
         // The stream is started again, as the Monitor page's Start does.
-        client.telemetry()->subscribe(&client, {0, 1, 2, 3, 4, 5}, 50.0, &error);
+        client.telemetry()->subscribe(&client, {0, 1, 2, 3, 4, 5}, 50.0);
         samples = 0;
         const bool flowing = waitUntil([&] { return samples > 30; });
         client.telemetry()->unsubscribe(&client);

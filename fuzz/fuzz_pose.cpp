@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     for (const feetech::PoseEntry &entry : pose->servos) {
         FUZZ_CHECK(entry.id <= feetech::kMaxServoId);
         FUZZ_CHECK(std::abs(entry.position) <= feetech::kPoseMaxMagnitude);
-        FUZZ_CHECK(pose->find(entry.id, entry.baud) == &entry); // no servo twice
+        FUZZ_CHECK(pose->find(entry.address()) == &entry); // no servo twice
     }
     const auto reread = feetech::poseFromJson(feetech::poseToJson(*pose), &error);
     FUZZ_CHECK(reread == pose);

@@ -195,8 +195,9 @@ private slots:
     void monitorNotesReachTheLinksPacketLog()
     {
         QSignalSpy logged(m_client->link(), &seriallink::LinkMirror::packetLogged);
-        QString error;
-        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1}, 50, &error), qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1}, 50, &refusal),
+                 qPrintable(refusal.describe()));
         // Servo 2 goes silent: the note that says so is in the log every view shows.
         setSimulatorValue(2, u"id", 20);
         const auto noted = [&logged] {
@@ -219,10 +220,10 @@ private slots:
     void aStreamTakesASilentServoOutOnlyAfterTheMissesItWasGiven()
     {
         QFETCH(int, misses);
-        QString error;
+        feetech::Refusal refusal;
         setSimulatorValue(2, u"id", 22); // servo 2 goes silent before the stream starts
-        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1}, 50, &error, misses),
-                 qPrintable(error));
+        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1}, 50, &refusal, misses),
+                 qPrintable(refusal.describe()));
         const auto silent = [this]() -> std::optional<feetech::ServoTelemetry> {
             for (const feetech::ServoTelemetry &servo : m_client->telemetry()->stats().servos) {
                 if (servo.id == 2 && servo.missing)
@@ -464,6 +465,10 @@ private slots:
         QCOMPARE(m_client->health()->moveTestBlocker(sharedIndex).code(), Code::SharedId);
         QVERIFY(!m_client->guard()->recoverOverload(unknownIndex, true, &refusal));
         QCOMPARE(refusal.code(), Code::UnknownModel);
+        QVERIFY(!m_client->telemetry()->subscribe(this, {0, unknownIndex}, 50, &refusal));
+        QCOMPARE(refusal.code(), Code::UndecodableFeedback);
+        QVERIFY2(refusal.describe().contains(QLatin1String("Servo 8")),
+                 qPrintable(refusal.describe()));
         // Nothing of all this was sent.
         QVERIFY(testsupport::feetechRequestsReceived(logPath(), Instruction::Write).isEmpty());
     }

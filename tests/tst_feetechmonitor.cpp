@@ -332,13 +332,18 @@ private slots:
                 });
         QObject monitor;
         auto test = std::make_unique<QObject>();
-        QString error;
-        QVERIFY(!hub.subscribe(&monitor, {}, 20, &error)); // nothing to stream: refused
-        QVERIFY(!error.isEmpty());
+        feetech::Refusal refusal;
+        QVERIFY(!hub.subscribe(&monitor, {}, 20, &refusal)); // nothing to stream: refused
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::NoServoToMonitor);
+        QVERIFY(!refusal.describe().isEmpty());
+        QVERIFY(!hub.subscribe(&monitor, {0}, -1, &refusal));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::NegativeRate);
+        QVERIFY(!hub.subscribe(&monitor, {0, 9}, 20, &refusal));
+        QCOMPARE(refusal.code(), feetech::Refusal::Code::NoServo);
         QVERIFY(!hub.isStreaming());
-        QVERIFY(hub.subscribe(&monitor, {0, 1}, 20, &error));
+        QVERIFY(hub.subscribe(&monitor, {0, 1}, 20, &refusal));
         QCOMPARE(hub.options().rateHz, 20.0);
-        QVERIFY(hub.subscribe(test.get(), {1, 3}, 50, &error));
+        QVERIFY(hub.subscribe(test.get(), {1, 3}, 50, &refusal));
         // The union, in the order first asked for, at the faster rate; nobody's stream replaced.
         QCOMPARE(hub.options().servos.size(), 3);
         QCOMPARE(hub.options().servos.at(0).id, quint8(1));
@@ -356,7 +361,7 @@ private slots:
         QVERIFY(hub.isSubscribed(&monitor));
         // As fast as the bus allows (0) is faster than any rate.
         QObject fastest;
-        QVERIFY(hub.subscribe(&fastest, {0}, 0, &error));
+        QVERIFY(hub.subscribe(&fastest, {0}, 0, &refusal));
         QCOMPARE(hub.options().rateHz, 0.0);
         hub.unsubscribe(&fastest);
         QCOMPARE(hub.options().rateHz, 20.0);

@@ -286,8 +286,9 @@ private slots:
         QVERIFY(slow >= 0 && fast >= 0);
         m_client->readServo(slow);
         QTRY_VERIFY_WITH_TIMEOUT(m_client->servos()->at(slow).read, 10000);
-        QVERIFY2(m_client->telemetry()->subscribe(this, {slow, fast}, 0, &error),
-                 qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->telemetry()->subscribe(this, {slow, fast}, 0, &refusal),
+                 qPrintable(refusal.describe()));
         const qint32 start = simulatorValue(1, u"present_position");
         const qint32 limit = simulatorValue(1, u"torque_limit");
 

@@ -317,7 +317,7 @@ private slots:
         const std::optional<feetech::Pose> saved = feetech::loadPose(path, &error);
         QVERIFY2(saved, qPrintable(error.describe()));
         QCOMPARE(saved->servos.size(), 4);
-        QCOMPARE(saved->find(4, k1M)->position, 444);
+        QCOMPARE(saved->find({4, k1M})->position, 444);
 
         for (int row = 0; row < 4; ++row)
             m_joints->setTarget(row, 10);
@@ -386,9 +386,9 @@ private slots:
     void positionsAreLiveWhileTheMonitorRuns()
     {
         connectAndScan();
-        QString error;
-        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1, 2, 3}, 50, &error),
-                 qPrintable(error));
+        feetech::Refusal refusal;
+        QVERIFY2(m_client->telemetry()->subscribe(this, {0, 1, 2, 3}, 50, &refusal),
+                 qPrintable(refusal.describe()));
         for (int row = 0; row < 4; ++row)
             QTRY_VERIFY_WITH_TIMEOUT(m_joints->isPositionLive(row), 10000);
         QVERIFY(!child<QLabel>("liveHint")->text().contains(QStringLiteral("not running")));

@@ -129,9 +129,9 @@ private slots:
     {
         const std::optional<Pose> pose = feetech::poseFromJson(feetech::poseToJson(armPose()));
         QVERIFY(pose);
-        QCOMPARE(pose->find(1, k1M)->position, 2048);
-        QCOMPARE(pose->find(1, 115200)->position, -300);
-        QVERIFY(!pose->find(4, k1M));
+        QCOMPARE(pose->find({1, k1M})->position, 2048);
+        QCOMPARE(pose->find({1, 115200})->position, -300);
+        QVERIFY(!pose->find({4, k1M}));
     }
 
     void invalidDocumentIsRefusedWithItsReason_data()

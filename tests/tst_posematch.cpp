@@ -15,7 +15,8 @@ constexpr qint32 k1M = 1000000;
 QVector<JointTarget> threeJoints()
 {
     const PositionRange range {0, 4095, true};
-    return {{1, k1M, std::nullopt, range}, {2, k1M, 100, range}, {1, 115200, 50, std::nullopt}};
+    return {
+        {{1, k1M}, std::nullopt, range}, {{2, k1M}, 100, range}, {{1, 115200}, 50, std::nullopt}};
 }
 
 } // namespace

@@ -243,7 +243,12 @@ bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
 bool MotionTest::ensureMonitor(int index, QString *error)
 {
     // Its servo at its rate, beside whatever else streams; nothing of another's stream changes.
-    return m_client->telemetry()->subscribe(this, {index}, m_timing.monitorRateHz, error);
+    Refusal refusal;
+    if (m_client->telemetry()->subscribe(this, {index}, m_timing.monitorRateHz, &refusal))
+        return true;
+    if (error)
+        *error = refusal.describe();
+    return false;
 }
 
 void MotionTest::restoreMonitor()

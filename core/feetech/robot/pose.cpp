@@ -144,11 +144,10 @@ util::JsonFormat poseFormat()
 
 } // namespace
 
-const PoseEntry *Pose::find(quint8 id, qint32 baud) const
+const PoseEntry *Pose::find(const ServoAddress &servo) const
 {
-    const auto it = std::find_if(servos.begin(), servos.end(), [&](const PoseEntry &entry) {
-        return entry.id == id && entry.baud == baud;
-    });
+    const auto it = std::find_if(servos.begin(), servos.end(),
+                                 [&](const PoseEntry &entry) { return entry.address() == servo; });
     return it == servos.end() ? nullptr : &*it;
 }
 

@@ -1,6 +1,7 @@
 // Poses: goal positions for several servos of a bus, kept as small JSON files.
 #pragma once
 
+#include "bustypes.h"
 #include "fileerror.h"
 
 #include <QByteArray>
@@ -31,6 +32,7 @@ struct PoseEntry
         return id == other.id && baud == other.baud && position == other.position;
     }
     bool operator!=(const PoseEntry &other) const { return !(*this == other); }
+    ServoAddress address() const { return {id, baud}; }
 };
 
 struct Pose
@@ -38,8 +40,8 @@ struct Pose
     QString name; // optional, for the user
     QVector<PoseEntry> servos;
 
-    // The entry of the servo with this ID at this baud rate, or null.
-    const PoseEntry *find(quint8 id, qint32 baud) const;
+    // The entry of the servo at `servo`, or null.
+    const PoseEntry *find(const ServoAddress &servo) const;
 
     bool operator==(const Pose &other) const
     {

@@ -8,7 +8,7 @@ namespace {
 bool listed(const QVector<JointTarget> &joints, const PoseEntry &entry)
 {
     for (const JointTarget &joint : joints) {
-        if (joint.id == entry.id && joint.baud == entry.baud)
+        if (joint.servo == entry.address())
             return true;
     }
     return false;
@@ -28,7 +28,7 @@ PoseMatch matchPose(const Pose &pose, const QVector<JointTarget> &joints,
     match.targets.resize(joints.size());
     for (int row = 0; row < joints.size(); ++row) {
         const JointTarget &joint = joints.at(row);
-        const PoseEntry *entry = pose.find(joint.id, joint.baud);
+        const PoseEntry *entry = pose.find(joint.servo);
         if (!entry) {
             match.rowsWithoutEntry.append(row);
             continue;
@@ -47,7 +47,7 @@ Pose poseFromTargets(const QString &name, const QVector<JointTarget> &joints)
     pose.name = name;
     for (const JointTarget &joint : joints) {
         if (joint.target)
-            pose.servos.append({joint.id, joint.baud, *joint.target});
+            pose.servos.append({joint.servo.id, joint.servo.baud, *joint.target});
     }
     return pose;
 }

@@ -14,8 +14,7 @@ namespace feetech {
 // One servo of the bus as a table of targets lists it.
 struct JointTarget
 {
-    quint8 id = 0;
-    qint32 baud = 0;
+    ServoAddress servo;
     std::optional<qint32> target; // nothing until one is set
     std::optional<PositionRange> range; // where it may be sent; nothing for an unknown model
 };

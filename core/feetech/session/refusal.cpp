@@ -73,6 +73,13 @@ Refusal Refusal::notConfirmed(quint8 servoId)
     return refusal;
 }
 
+Refusal Refusal::undecodableFeedback(quint8 servoId)
+{
+    Refusal refusal(Code::UndecodableFeedback);
+    refusal.m_servoId = servoId;
+    return refusal;
+}
+
 QString Refusal::describe() const
 {
     const int id = m_servoId.value_or(0);
@@ -118,6 +125,12 @@ QString Refusal::describe() const
         return Tr::tr("No servo to check: scan the bus first.");
     case Code::NotConfirmed:
         return Tr::tr("The move test moves servo %1: it runs only once that is confirmed.").arg(id);
+    case Code::NoServoToMonitor:
+        return Tr::tr("Choose at least one servo to monitor.");
+    case Code::NegativeRate:
+        return Tr::tr("The rate cannot be negative.");
+    case Code::UndecodableFeedback:
+        return Tr::tr("Servo %1 is of an unknown model: its feedback cannot be decoded.").arg(id);
     }
     return {};
 }

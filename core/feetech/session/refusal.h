@@ -33,6 +33,9 @@ public:
         NotAFeetechRate, // value: the baud rate
         NoServoToCheck, // a health check of no servo
         NotConfirmed, // servoId: the move test waits for the user's consent
+        NoServoToMonitor, // a telemetry subscription of no servo
+        NegativeRate, // a telemetry rate below 0
+        UndecodableFeedback, // servoId: an unknown model, whose feedback block is not known
     };
 
     Refusal() = default;
@@ -48,6 +51,7 @@ public:
     static Refusal badValue(quint8 servoId, const QString &reason);
     static Refusal notAFeetechRate(qint32 baud);
     static Refusal notConfirmed(quint8 servoId);
+    static Refusal undecodableFeedback(quint8 servoId);
 
     Code code() const { return m_code; }
     explicit operator bool() const { return m_code != Code::None; }

@@ -3,20 +3,13 @@
 
 #include "busclient.h"
 
-#include <QCoreApplication>
-
 #include <algorithm>
 
 namespace {
 
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
-};
-
 bool sameServo(const feetech::ServoInfo &a, const feetech::ServoInfo &b)
 {
-    return a.id == b.id && a.baud == b.baud;
+    return a.address() == b.address();
 }
 
 bool sameServos(const QVector<feetech::ServoInfo> &a, const QVector<feetech::ServoInfo> &b)
@@ -40,28 +33,25 @@ TelemetryHub::TelemetryHub(BusClient *client)
 }
 
 bool TelemetryHub::subscribe(const QObject *subscriber, const QVector<int> &indexes, double rateHz,
-                             QString *error, int missesBeforeMissing)
+                             Refusal *refusal, int missesBeforeMissing)
 {
-    const auto refuse = [error](const QString &why) {
-        if (error)
-            *error = why;
+    const auto refuse = [refusal](const Refusal &why) {
+        refused(why, refusal);
         return false;
     };
     if (!m_client->isConnected())
-        return refuse(Tr::tr("The bus is not connected."));
+        return refuse(Refusal(Refusal::Code::NotConnected));
     if (indexes.isEmpty())
-        return refuse(Tr::tr("Choose at least one servo to monitor."));
+        return refuse(Refusal(Refusal::Code::NoServoToMonitor));
     if (rateHz < 0)
-        return refuse(Tr::tr("The rate cannot be negative."));
+        return refuse(Refusal(Refusal::Code::NegativeRate));
     Subscription subscription {subscriber, {}, rateHz, std::max(1, missesBeforeMissing)};
     for (const int index : indexes) {
         if (index < 0 || index >= m_client->servos()->count())
-            return refuse(Tr::tr("No servo is selected."));
+            return refuse(Refusal(Refusal::Code::NoServo));
         const ServoInfo &info = m_client->servos()->at(index).info;
         if (!info.hasTable())
-            return refuse(Tr::tr("Servo %1 is of an unknown model: its feedback cannot be "
-                                 "decoded.")
-                              .arg(info.id));
+            return refuse(Refusal::undecodableFeedback(info.id));
         subscription.servos.append(info);
     }
     const auto known = std::find_if(

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bustypes.h"
+#include "refusal.h"
 #include "telemetry.h"
 
 #include <QHash>
@@ -30,9 +31,10 @@ public:
     // Asks for the feedback block of servos `indexes` at `rateHz` samples per second each (0:
     // as fast as the bus allows), replacing what `subscriber` asked before. A servo is taken
     // out after `missesBeforeMissing` missed cycles in a row (TelemetryOptions). False and
-    // *error, and nothing changed, when it cannot be streamed.
+    // *refusal, and nothing changed, when it cannot be streamed.
     bool subscribe(const QObject *subscriber, const QVector<int> &indexes, double rateHz,
-                   QString *error = nullptr, int missesBeforeMissing = kDefaultMissesBeforeMissing);
+                   Refusal *refusal = nullptr,
+                   int missesBeforeMissing = kDefaultMissesBeforeMissing);
     void unsubscribe(const QObject *subscriber);
     bool isSubscribed(const QObject *subscriber) const;
 

@@ -151,8 +151,7 @@ QVector<feetech::JointTarget> JointTable::joints() const
 {
     QVector<feetech::JointTarget> joints;
     for (int row = 0; row < rowCount(); ++row)
-        joints.append({m_rows.at(row).servo.id, m_rows.at(row).servo.baud, m_rows.at(row).target,
-                       targetRange(row)});
+        joints.append({m_rows.at(row).servo, m_rows.at(row).target, targetRange(row)});
     return joints;
 }
 

@@ -284,7 +284,8 @@ bool MonitorPage::start(QString *error)
         why = tr("Tick at least one servo to monitor.");
     } else {
         const bool fresh = !m_client->telemetry()->isSubscribed(this);
-        if (m_client->telemetry()->subscribe(this, selectedServos(), rate(), &why)) {
+        feetech::Refusal refusal;
+        if (m_client->telemetry()->subscribe(this, selectedServos(), rate(), &refusal)) {
             if (fresh) {
                 // A new run starts a new time line (its samples come later, queued); a
                 // restart keeps the present one going.
@@ -300,6 +301,7 @@ bool MonitorPage::start(QString *error)
             updateStatusLine();
             return true;
         }
+        why = refusal.describe();
     }
     if (error)
         *error = why;

@@ -91,7 +91,7 @@ void MonitorReadouts::refresh(const QVector<Row> &rows, const feetech::Telemetry
             latest != m_latest.end() && latest->sample.steadyUs != 0 ? &latest->sample : nullptr;
         const feetech::ServoTelemetry *health = nullptr;
         for (const feetech::ServoTelemetry &servo : std::as_const(stats.servos)) {
-            if (servo.id == key.id && servo.baud == key.baud)
+            if (feetech::ServoAddress {servo.id, servo.baud} == key)
                 health = &servo;
         }
 

@@ -91,13 +91,14 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
                                         ->deviceValue(QString::fromUtf16(feetech::kOffsetKey));
                 m_recordings[i].currentOffset = qint32(offset.value_or(0));
             }
-            QString error;
+            feetech::Refusal refusal;
             if (!m_client->telemetry()->subscribe(this, m_indexes, feetech::kRecordingRateHz,
-                                                  &error, feetech::kRecordingMissesBeforeLost)) {
+                                                  &refusal, feetech::kRecordingMissesBeforeLost)) {
                 // Back to the choice: torque is off, so only the recording is to start again.
                 m_stage = Stage::Choosing;
                 m_torqueOff->setEnabled(true);
-                fail(tr("Torque is off, but the recording could not start: %1").arg(error));
+                fail(tr("Torque is off, but the recording could not start: %1")
+                         .arg(refusal.describe()));
                 return;
             }
             m_freshPositions = QVector<std::optional<double>>(m_recordings.size());
@@ -452,10 +453,10 @@ void CalibrationWizard::recordAgain()
 {
     if (page() != Page::Results || m_stage != Stage::Choosing)
         return;
-    QString error;
-    if (!m_client->telemetry()->subscribe(this, m_indexes, feetech::kRecordingRateHz, &error,
+    feetech::Refusal refusal;
+    if (!m_client->telemetry()->subscribe(this, m_indexes, feetech::kRecordingRateHz, &refusal,
                                           feetech::kRecordingMissesBeforeLost))
-        return fail(error);
+        return fail(refusal.describe());
     for (feetech::JointRecording &joint : m_recordings)
         joint.range = {};
     m_freshPositions = QVector<std::optional<double>>(m_recordings.size());
