@@ -2,6 +2,8 @@
 // submitted to the session in its worker thread.
 #include "busclient.h"
 
+#include "busclient_p.h"
+
 #include "busoperations.h"
 #include "linksession.h"
 #include "registerkeys.h"
@@ -18,8 +20,9 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     : QObject(parent)
     , m_worker(QStringLiteral("feetech-link"), timing)
     , m_servos(new ServoList(this))
+    , d(std::make_unique<BusClientPrivate>())
 {
-    m_clock.start();
+    d->clock.start();
     Session *session = m_worker.session();
     // First, so the client has settled before the main window hears of a change.
     connect(&m_link, &seriallink::LinkMirror::statusChanged, this, [this](const auto &status) {
@@ -32,7 +35,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     connect(session, &Session::scanProgress, this, &BusClient::scanProgress);
     connect(session, &Session::servoFound, m_servos, &ServoList::add);
     connect(session, &Session::scanFinished, this, [this](bool completed, const QString &m) {
-        m_scanning = false;
+        d->scanning = false;
         emit busyChanged(isBusy());
         emit scanFinished(completed, m);
     });
@@ -45,8 +48,8 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
         m_servos->noteUpdated(index);
     });
     connect(session, &Session::operationProgress, this, [this](const OperationProgress &progress) {
-        const auto pending = m_pending.find(progress.ticket);
-        if (pending != m_pending.end() && pending->second.reply)
+        const auto pending = d->pending.find(progress.ticket);
+        if (pending != d->pending.end() && pending->second.reply)
             pending->second.reply->reportProgress(progress);
     });
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
@@ -59,17 +62,16 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
 
 BusClient::~BusClient() = default;
 
-bool BusClient::isBusy() const
+bool BusClient::isScanning() const
 {
-    return m_scanning || std::any_of(m_pending.begin(), m_pending.end(), [](const auto &entry) {
-               return entry.second.kind == Work::Foreground && !entry.second.dropped;
-           });
+    return d->scanning;
 }
 
-bool BusClient::hasLivePending() const
+bool BusClient::isBusy() const
 {
-    return std::any_of(m_pending.begin(), m_pending.end(),
-                       [](const auto &entry) { return !entry.second.dropped; });
+    return d->scanning || std::any_of(d->pending.begin(), d->pending.end(), [](const auto &entry) {
+               return entry.second.kind == Work::Foreground && !entry.second.dropped;
+           });
 }
 
 void BusClient::connectTo(const QString &portName, qint32 baud, seriallink::EchoMode echo)
@@ -85,10 +87,10 @@ void BusClient::disconnectFrom()
 
 void BusClient::scan(const ScanOptions &options)
 {
-    if (m_scanning)
+    if (d->scanning)
         return;
     m_servos->clear();
-    m_scanning = true;
+    d->scanning = true;
     emit busyChanged(true);
     m_worker.run([options](Session &s) { s.submit(operations::scan(options)); });
 }
@@ -135,7 +137,7 @@ void BusClient::onMemoryRead(quint8 id, qint32 baud, int address, const QByteArr
         return;
     Servo &entry = m_servos->entry(index);
     entry.statusByte = statusByte;
-    const qint64 now = m_clock.elapsed() + 1; // 0 means "never read"
+    const qint64 now = d->clock.elapsed() + 1; // 0 means "never read"
     for (const DecodedRegister &item : decodeRegisters(entry.info.table(), address, bytes)) {
         // A background refresh may have been read before the write went out: only the
         // read-back settles what is being written.
@@ -153,13 +155,13 @@ void BusClient::onOperationFinished(const OperationResult &result)
         return; // a scan ends through scanFinished
     if (result.operation == Operation::Guard)
         return; // the guard's own: reported as a guardEvent
-    const auto pending = m_pending.find(result.ticket);
-    if (pending == m_pending.end())
+    const auto pending = d->pending.find(result.ticket);
+    if (pending == d->pending.end())
         return; // not one of ours
-    const Pending target = pending->second;
+    const BusClientPrivate::Pending target = pending->second;
     // A step of an apply chain: the operation goes on, with the servo where it left it.
     if (result.final) {
-        m_pending.erase(pending);
+        d->pending.erase(pending);
     } else {
         pending->second.id = result.servo.id;
         pending->second.baud = result.servo.baud;
@@ -220,9 +222,9 @@ void BusClient::forgetWork()
 {
     const bool wasBusy = isBusy();
     // Their replies finish when the session reports what it dropped.
-    for (auto &entry : m_pending)
+    for (auto &entry : d->pending)
         entry.second.dropped = true;
-    m_scanning = false;
+    d->scanning = false;
     // The link went down with writes on their way: whether they landed is not known.
     for (int i = 0; i < m_servos->count(); ++i) {
         model::ParameterModel &parameters = *m_servos->at(i).parameters;
@@ -304,12 +306,12 @@ BusClient::startOperation(Operation operation, int index, Refusal *refusal, Work
 
 OperationReply *BusClient::submit(const BusOperation &operation, quint8 id, qint32 baud, Work kind)
 {
-    const quint64 ticket = ++m_lastTicket;
+    const quint64 ticket = ++d->lastTicket;
     const bool wasBusy = isBusy();
     OperationReply *reply = kind == Work::Background
         ? nullptr
         : new OperationReply(operation.kind, id, baud, kind == Work::Control, this);
-    m_pending[ticket] = {id, baud, kind, reply, false};
+    d->pending[ticket] = {id, baud, kind, reply, false};
     if (kind == Work::Foreground && !wasBusy)
         emit busyChanged(true);
     if (reply)
@@ -329,7 +331,7 @@ OperationReply *BusClient::readServo(int index)
 
 void BusClient::refreshRam(int index)
 {
-    if (isBusy() || hasLivePending() || index < 0 || index >= m_servos->count())
+    if (isBusy() || d->hasLivePending() || index < 0 || index >= m_servos->count())
         return; // the next refresh will come; real work goes first
     const ServoInfo &info = m_servos->at(index).info;
     if (!info.hasTable())

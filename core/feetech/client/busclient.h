@@ -20,7 +20,6 @@
 #include "telemetry.h"
 #include "telemetryhub.h"
 
-#include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
 
@@ -30,6 +29,8 @@
 #include <vector>
 
 namespace feetech {
+
+struct BusClientPrivate;
 
 // Each operation it submits returns an OperationReply (nullptr, with *refusal, when refused), which
 // finishes with the operation's result; submitted names every reply as it is made, for whoever
@@ -47,7 +48,7 @@ public:
     const seriallink::ConnectionStatus &status() const { return m_link.status(); }
     const seriallink::LinkCounters &counters() const { return m_link.counters(); }
     bool isConnected() const { return m_link.isConnected(); }
-    bool isScanning() const { return m_scanning; }
+    bool isScanning() const;
     bool isBusy() const;
 
     void connectTo(const QString &portName, qint32 baud = 1000000,
@@ -164,23 +165,7 @@ private:
     seriallink::SessionThread<Session> m_worker;
     seriallink::LinkMirror m_link;
     ServoList *m_servos = nullptr;
-    bool m_scanning = false;
-    // The operations submitted and not finished, by ticket: the servo each one works on (by
-    // its address before it ran, and after each step of an apply chain), its kind and reply.
-    // The link going down leaves them `dropped` (no longer busy) until the session reports
-    // their end.
-    struct Pending
-    {
-        quint8 id = 0;
-        qint32 baud = 0;
-        Work kind = Work::Foreground;
-        OperationReply *reply = nullptr;
-        bool dropped = false;
-    };
-    std::map<quint64, Pending> m_pending;
-    quint64 m_lastTicket = 0;
-    bool hasLivePending() const;
-    QElapsedTimer m_clock;
+    std::unique_ptr<BusClientPrivate> d; // the operations on their way, the scan, the clock
     BusGuard *m_guard = nullptr;
     TelemetryHub *m_telemetry = nullptr;
     MotorSetupService *m_motorSetup = nullptr;
