@@ -110,6 +110,25 @@ Step confirmTorqueOff(OperationContext &context, const ServoInfo &servo,
     };
 }
 
+// Sets the bus to `baud`, then runs `then` with `result`; a rate that cannot be set ends the
+// operation with `result`, not ok, saying why.
+void atBaud(OperationContext &context, qint32 baud, const OperationResult &result,
+            std::function<void(OperationResult)> then)
+{
+    context.bus().setBaud(baud)(
+        [&context, result, then = std::move(then)](bool ok, const QString &message) {
+            if (ok) {
+                then(result);
+                return;
+            }
+            OperationResult failed = result;
+            failed.ok = false;
+            failed.message = message;
+            failed.failure = context.bus().stepFailure();
+            context.finish(failed);
+        });
+}
+
 // The health check's next servo, or its end.
 void checkNextServo(OperationContext &context, QVector<ServoInfo> servos, int done, int reads)
 {
@@ -154,15 +173,10 @@ BusOperation scan(const ScanOptions &options)
 BusOperation ping(quint8 id, qint32 baud)
 {
     return operation(Operation::Ping, [id, baud](OperationContext &context) {
-        context.bus().setBaud(baud)([&context, id, baud](bool ok, const QString &message) {
-            OperationResult result {Operation::Ping, false, message, {}, {}};
-            result.servo.id = id;
-            result.servo.baud = baud;
-            if (!ok) {
-                result.failure = context.bus().stepFailure();
-                context.finish(result);
-                return;
-            }
+        OperationResult pinged {Operation::Ping, false, {}, {}, {}};
+        pinged.servo.id = id;
+        pinged.servo.baud = baud;
+        atBaud(context, baud, pinged, [&context, id](OperationResult result) {
             Exchange ask;
             ask.request = feetech::ping(id);
             ask.replyId = id;
@@ -188,35 +202,31 @@ BusOperation ping(quint8 id, qint32 baud)
 BusOperation checkSharedId(const ServoInfo &servo)
 {
     return operation(Operation::CheckSharedId, [servo](OperationContext &context) {
-        context.bus().setBaud(servo.baud)([&context, servo](bool ok, const QString &message) {
-            if (!ok) {
-                OperationResult result {Operation::CheckSharedId, false, message, servo, {}};
-                result.failure = context.bus().stepFailure();
-                context.finish(result);
-                return;
-            }
-            feetech::checkSharedId(
-                context.bus(), servo, false,
-                [&context, servo](SharedIdVerdict verdict,
-                                  const seriallink::TransactionResult &last) {
-                    OperationResult result {Operation::CheckSharedId, true, {}, servo, {}};
-                    result.servo.sharedId = verdict == SharedIdVerdict::Shared;
-                    if (result.servo.sharedId)
-                        result.message = sharedIdRefusal(servo.id);
-                    if (verdict == SharedIdVerdict::Failed || verdict == SharedIdVerdict::Silent) {
-                        result.ok = false;
-                        result.failure = verdict == SharedIdVerdict::Failed
-                            ? failureKind(last)
-                            : OperationFailure::NoAnswer;
-                        result.message = verdict == SharedIdVerdict::Failed
-                            ? failureText(last)
-                            : Tr::tr("%1 stopped answering: check the power and the cable, "
-                                     "then look again.")
-                                  .arg(servoName(servo));
-                    }
-                    context.finish(result);
-                });
-        });
+        atBaud(context, servo.baud, {Operation::CheckSharedId, false, {}, servo, {}},
+               [&context, servo](const OperationResult &) {
+                   feetech::checkSharedId(
+                       context.bus(), servo, false,
+                       [&context, servo](SharedIdVerdict verdict,
+                                         const seriallink::TransactionResult &last) {
+                           OperationResult result {Operation::CheckSharedId, true, {}, servo, {}};
+                           result.servo.sharedId = verdict == SharedIdVerdict::Shared;
+                           if (result.servo.sharedId)
+                               result.message = sharedIdRefusal(servo.id);
+                           if (verdict == SharedIdVerdict::Failed
+                               || verdict == SharedIdVerdict::Silent) {
+                               result.ok = false;
+                               result.failure = verdict == SharedIdVerdict::Failed
+                                   ? failureKind(last)
+                                   : OperationFailure::NoAnswer;
+                               result.message = verdict == SharedIdVerdict::Failed
+                                   ? failureText(last)
+                                   : Tr::tr("%1 stopped answering: check the power and the cable, "
+                                            "then look again.")
+                                         .arg(servoName(servo));
+                           }
+                           context.finish(result);
+                       });
+               });
     });
 }
 
@@ -390,51 +400,47 @@ BusOperation sendPacket(const QByteArray &frame, qint32 baud, std::optional<quin
     return operation(
         Operation::SendPacket,
         [frame, baud, replyId, replyDataSize](OperationContext &context) {
-            context.bus().setBaud(baud)(
-                [&context, frame, baud, replyId, replyDataSize](bool ok, const QString &message) {
-                    OperationResult result {Operation::SendPacket, false, message, {}, {}};
-                    result.servo.baud = baud;
-                    if (!ok) {
-                        result.failure = context.bus().stepFailure();
-                        context.finish(result);
-                        return;
-                    }
-                    Exchange ask;
-                    ask.request = frame;
-                    ask.retryCount = 0; // sent once, as the user built it
-                    if (replyId) {
-                        ask.replyId = replyId;
-                        ask.replyDataSize = replyDataSize;
-                        result.servo.id = *replyId;
-                    } else {
-                        ask.listenOnly = true;
-                        ask.silenceExpected = true;
-                        ask.replyTimeout = kListenWindow;
-                    }
-                    context.bus().exchange(
-                        ask,
-                        [&context, result, replyId](const seriallink::TransactionResult &answer,
-                                                    const std::optional<Packet> &reply) mutable {
-                            result.latency = answer.latency;
-                            if (answer.failure == seriallink::Failure::LinkDown) {
-                                result.failure = OperationFailure::LinkLost;
-                                result.message = failureText(answer);
-                            } else if (!replyId) {
-                                result.ok = true;
-                                result.message =
-                                    Tr::tr("Sent; its answers, if any, are in the packet log.");
-                            } else {
-                                result.ok = reply.has_value();
-                                if (!reply)
-                                    result.failure = failureKind(answer);
-                                result.message = reply ? Tr::tr("Servo %1 answered.").arg(*replyId)
-                                                       : Tr::tr("Sent; servo %1 did not answer: %2")
-                                                             .arg(*replyId)
-                                                             .arg(failureText(answer));
-                            }
-                            context.finish(result);
-                        });
-                });
+            OperationResult sent {Operation::SendPacket, false, {}, {}, {}};
+            sent.servo.baud = baud;
+            atBaud(context, baud, sent,
+                   [&context, frame, replyId, replyDataSize](OperationResult result) {
+                       Exchange ask;
+                       ask.request = frame;
+                       ask.retryCount = 0; // sent once, as the user built it
+                       if (replyId) {
+                           ask.replyId = replyId;
+                           ask.replyDataSize = replyDataSize;
+                           result.servo.id = *replyId;
+                       } else {
+                           ask.listenOnly = true;
+                           ask.silenceExpected = true;
+                           ask.replyTimeout = kListenWindow;
+                       }
+                       context.bus().exchange(
+                           ask,
+                           [&context, result, replyId](const seriallink::TransactionResult &answer,
+                                                       const std::optional<Packet> &reply) mutable {
+                               result.latency = answer.latency;
+                               if (answer.failure == seriallink::Failure::LinkDown) {
+                                   result.failure = OperationFailure::LinkLost;
+                                   result.message = failureText(answer);
+                               } else if (!replyId) {
+                                   result.ok = true;
+                                   result.message =
+                                       Tr::tr("Sent; its answers, if any, are in the packet log.");
+                               } else {
+                                   result.ok = reply.has_value();
+                                   if (!reply)
+                                       result.failure = failureKind(answer);
+                                   result.message = reply
+                                       ? Tr::tr("Servo %1 answered.").arg(*replyId)
+                                       : Tr::tr("Sent; servo %1 did not answer: %2")
+                                             .arg(*replyId)
+                                             .arg(failureText(answer));
+                               }
+                               context.finish(result);
+                           });
+                   });
         },
         true);
 }
