@@ -73,6 +73,18 @@ private:
         m_session->setGuardSettings(settings);
     }
 
+    // A guard set low enough to see even a torque-limited strain, and the horn held by a load.
+    bool blockUnderAStrictGuard()
+    {
+        feetech::GuardSettings settings;
+        feetech::GuardLimits limits = feetech::defaultGuardLimits(m_servo.table());
+        limits.loadPercent = 5.0;
+        limits.holdTime = std::chrono::milliseconds(400);
+        settings.servos.insert({m_servo.id, m_servo.baud}, limits);
+        m_session->setGuardSettings(settings);
+        return withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); });
+    }
+
     bool waitFor(QSignalSpy &spy, GuardCause cause, GuardStage stage)
     {
         return QTest::qWaitFor([&] { return find(eventsOf(spy), cause, stage).has_value(); },
@@ -178,14 +190,7 @@ private slots:
 
     void anIdentifyOfABlockedServoIsStoppedAndPutBack()
     {
-        // The wiggle limits the torque; a guard set low enough sees even that strain.
-        feetech::GuardSettings settings;
-        feetech::GuardLimits limits = feetech::defaultGuardLimits(m_servo.table());
-        limits.loadPercent = 5.0;
-        limits.holdTime = std::chrono::milliseconds(400);
-        settings.servos.insert({m_servo.id, m_servo.baud}, limits);
-        m_session->setGuardSettings(settings);
-        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
+        QVERIFY(blockUnderAStrictGuard());
         QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
         QSignalSpy finished(m_session.get(), &feetech::Session::operationFinished);
         m_session->submit(feetech::operations::identifyJoint(m_servo));
@@ -198,13 +203,7 @@ private slots:
 
     void aMoveTestOfABlockedServoIsStoppedByTheGuard()
     {
-        feetech::GuardSettings settings;
-        feetech::GuardLimits limits = feetech::defaultGuardLimits(m_servo.table());
-        limits.loadPercent = 5.0;
-        limits.holdTime = std::chrono::milliseconds(400);
-        settings.servos.insert({m_servo.id, m_servo.baud}, limits);
-        m_session->setGuardSettings(settings);
-        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) { s.setExternalLoad(1000); }));
+        QVERIFY(blockUnderAStrictGuard());
         QSignalSpy events(m_session.get(), &feetech::Session::guardEvent);
         QSignalSpy finished(m_session.get(), &feetech::Session::operationFinished);
         m_session->submit(feetech::operations::moveTest(m_servo));
