@@ -41,10 +41,11 @@ private slots:
         QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 65));
         QVERIFY(parameters->edit(QStringLiteral("id"), 7));
         QVERIFY(parameters->edit(QStringLiteral("baud_rate"), 4)); // code 4: 115200
-        QString error;
+        ApplyRefusal refusal;
         const auto plan =
-            planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Everything, &error);
-        QVERIFY2(plan.has_value(), qPrintable(error));
+            planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Everything, &refusal);
+        QVERIFY2(plan.has_value(), qPrintable(refusal.describe()));
+        QVERIFY(!refusal);
         QCOMPARE(plan->writtenKeys, QStringList {QStringLiteral("max_temperature")});
         QCOMPARE(plan->writes.size(), 1);
         QCOMPARE(plan->writes.first().address, servo.table().find(u"max_temperature")->address);
@@ -63,10 +64,12 @@ private slots:
         auto parameters = parametersOf(servo);
         QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 65));
         QVERIFY(parameters->edit(QStringLiteral("id"), 5));
-        QString error;
-        QVERIFY(!planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Everything, &error)
+        ApplyRefusal refusal;
+        QVERIFY(!planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Everything, &refusal)
                      .has_value());
-        QVERIFY2(error.contains(QStringLiteral("ID 5 is already in use")), qPrintable(error));
+        QCOMPARE(refusal.code(), ApplyRefusal::Code::IdInUse);
+        QCOMPARE(refusal.newId(), 5);
+        QCOMPARE(refusal.describe(), QStringLiteral("ID 5 is already in use on this bus."));
     }
 
     void aRegistersOnlyPlanLeavesThePendingIdAndBaudRateAlone()
@@ -76,28 +79,51 @@ private slots:
         QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 65));
         QVERIFY(parameters->edit(QStringLiteral("id"), 5)); // in use: not this plan's business
         QVERIFY(parameters->edit(QStringLiteral("baud_rate"), 4));
-        QString error;
+        ApplyRefusal refusal;
         const auto plan =
-            planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Registers, &error);
-        QVERIFY2(plan.has_value(), qPrintable(error));
+            planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Registers, &refusal);
+        QVERIFY2(plan.has_value(), qPrintable(refusal.describe()));
         QCOMPARE(plan->writtenKeys, QStringList {QStringLiteral("max_temperature")});
         QVERIFY(!plan->newId);
         QVERIFY(!plan->newBaud);
         // With only the ID and baud pending there is nothing for it to write.
         QVERIFY(parameters->edit(QStringLiteral("max_temperature"), 70));
         parameters->revert(QStringLiteral("max_temperature"));
-        QVERIFY(!planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Registers, &error));
-        QCOMPARE(error, QStringLiteral("Nothing to write."));
+        QVERIFY(!planApply(servo, *parameters, {3, 5}, feetech::ApplyScope::Registers, &refusal));
+        QCOMPARE(refusal.code(), ApplyRefusal::Code::NothingToWrite);
+        QCOMPARE(refusal.describe(), QStringLiteral("Nothing to write."));
     }
 
     void nothingPendingIsNothingToWrite()
     {
         const ServoInfo servo = sts3215(1);
         auto parameters = parametersOf(servo);
-        QString error;
-        QVERIFY(!planApply(servo, *parameters, {1}, feetech::ApplyScope::Everything, &error)
+        ApplyRefusal refusal;
+        QVERIFY(!planApply(servo, *parameters, {1}, feetech::ApplyScope::Everything, &refusal)
                      .has_value());
-        QCOMPARE(error, QStringLiteral("Nothing to write."));
+        QCOMPARE(refusal.code(), ApplyRefusal::Code::NothingToWrite);
+        QCOMPARE(refusal.describe(), QStringLiteral("Nothing to write."));
+    }
+
+    void aValueTheServoCannotTakeIsRefusedWithTheRegisterItNames()
+    {
+        const ServoInfo servo = sts3215(1);
+        auto parameters = parametersOf(servo);
+        // A parameter the servo's table does not have: no register to write it to.
+        QVector<model::Definition> definitions = parameters->definitions();
+        model::Definition stray;
+        stray.key = QStringLiteral("not_a_register");
+        stray.maximum = 10;
+        definitions.append(stray);
+        parameters->setDefinitions(definitions);
+        parameters->setDeviceValue(stray.key, 0);
+        QVERIFY(parameters->edit(stray.key, 3));
+        ApplyRefusal refusal;
+        QVERIFY(!planApply(servo, *parameters, {1}, feetech::ApplyScope::Registers, &refusal)
+                     .has_value());
+        QCOMPARE(refusal.code(), ApplyRefusal::Code::BadValue);
+        QVERIFY2(refusal.detail().contains(stray.key), qPrintable(refusal.detail()));
+        QCOMPARE(refusal.describe(), refusal.detail());
     }
 };
 

@@ -236,8 +236,11 @@ private slots:
         plan.index = index;
         plan.from = 500;
         plan.to = 2000;
-        QVERIFY(!m_page->motionTest()->startStep(plan, &error));
-        QVERIFY(error.contains(QLatin1String("angle limits")));
+        feetech::MotionTestRefusal refusal;
+        QVERIFY(!m_page->motionTest()->startStep(plan, &refusal));
+        QCOMPARE(refusal.code(), feetech::MotionTestRefusal::Code::OutsideRange);
+        QVERIFY(refusal.range().fromAngleLimits);
+        QVERIFY(refusal.describe().contains(QLatin1String("angle limits")));
         QVERIFY(!m_page->motionTest()->isRunning());
 
         // A goal inside the limits goes out after them: nothing was sent for the refused ones.
@@ -468,9 +471,11 @@ private slots:
         plan.index = index;
         plan.from = 2000;
         plan.to = 2200;
-        QString error;
-        QVERIFY(!m_page->motionTest()->validate(plan, feetech::MotionTest::Kind::Step, &error));
-        QVERIFY(error.contains(QLatin1String("position mode")));
+        feetech::MotionTestRefusal refusal;
+        QVERIFY(!m_page->motionTest()->validate(plan, feetech::MotionTest::Kind::Step, &refusal));
+        QCOMPARE(refusal.code(), feetech::MotionTestRefusal::Code::NotInPositionMode);
+        QCOMPARE(refusal.servoId(), quint8(1));
+        QVERIFY(refusal.describe().contains(QLatin1String("position mode")));
 
         // SCS has no mode register.
         m_page->setServo(m_client->servos()->indexOf({3, k1M}));

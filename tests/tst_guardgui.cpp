@@ -136,9 +136,9 @@ private slots:
     {
         blockServo();
         QSignalSpy failed(m_page->motionTest(), &feetech::MotionTest::failed);
-        QString error;
-        QVERIFY2(m_page->motionTest()->startSweep(testsupport::longSweep(m_index), &error),
-                 qPrintable(error));
+        feetech::MotionTestRefusal refusal;
+        QVERIFY2(m_page->motionTest()->startSweep(testsupport::longSweep(m_index), &refusal),
+                 qPrintable(refusal.describe()));
         QVERIFY(failed.wait(20000));
         const QString message = failed.first().at(0).toString();
         QVERIFY2(message.contains(QLatin1String("Guard")), qPrintable(message));

@@ -174,8 +174,8 @@ private slots:
         const int index = readServo(1);
         QVERIFY(index >= 0);
         feetech::MotionTest test(m_client.get(), testsupport::quickMotionTiming());
-        QString error;
-        QVERIFY2(test.startSweep(testsupport::longSweep(index), &error), qPrintable(error));
+        feetech::MotionTestRefusal why;
+        QVERIFY2(test.startSweep(testsupport::longSweep(index), &why), qPrintable(why.describe()));
         QCOMPARE(m_client->identify()->blocker(index).code(), feetech::Refusal::Code::ServoHeld);
         // The holder's reason is what the user reads.
         QVERIFY(m_client->identify()->blocker(index).describe().contains(
@@ -205,9 +205,11 @@ private slots:
         plan.index = index;
         plan.from = 1800;
         plan.to = 2300;
-        QString error;
-        QVERIFY(!test.startStep(plan, &error));
-        QVERIFY(error.contains(QStringLiteral("identified")));
+        feetech::MotionTestRefusal refusal;
+        QVERIFY(!test.startStep(plan, &refusal));
+        QCOMPARE(refusal.code(), feetech::MotionTestRefusal::Code::BeingIdentified);
+        QCOMPARE(refusal.servoId(), quint8(1));
+        QVERIFY(refusal.describe().contains(QStringLiteral("identified")));
         QTRY_VERIFY_WITH_TIMEOUT(!m_client->identify()->isRunning(index), 20000);
     }
 

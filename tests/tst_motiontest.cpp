@@ -10,6 +10,8 @@
 
 using feetech::MotionPlan;
 using feetech::MotionTest;
+using feetech::MotionTestRefusal;
+using Code = feetech::MotionTestRefusal::Code;
 
 namespace {
 
@@ -62,10 +64,13 @@ private slots:
 
     void nothingStartsWhileTheBusIsNotConnected()
     {
-        QString error;
-        QVERIFY(!m_test->validate(plan(0, 2000, 2200), MotionTest::Kind::Step, &error));
-        QVERIFY(!error.isEmpty());
-        QVERIFY(!m_test->startStep(plan(0, 2000, 2200), &error));
+        MotionTestRefusal refusal;
+        QVERIFY(!m_test->validate(plan(0, 2000, 2200), MotionTest::Kind::Step, &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
+        QVERIFY(!refusal.describe().isEmpty());
+        refusal = {};
+        QVERIFY(!m_test->startStep(plan(0, 2000, 2200), &refusal));
+        QCOMPARE(refusal.code(), Code::NotConnected);
         QVERIFY(!m_test->isRunning());
     }
 
@@ -74,20 +79,43 @@ private slots:
         const int index = readServo(1);
         QVERIFY(index >= 0);
         const qsizetype framesBefore = testsupport::feetechFramesReceived(logPath()).size();
-        QString error;
-        QVERIFY(!m_test->validate(plan(-1, 2000, 2200), MotionTest::Kind::Step, &error));
-        QVERIFY(!error.isEmpty());
-        error.clear();
+        MotionTestRefusal refusal;
+        QVERIFY(!m_test->validate(plan(-1, 2000, 2200), MotionTest::Kind::Step, &refusal));
+        QCOMPARE(refusal.code(), Code::NoServo);
+        QVERIFY(!refusal.describe().isEmpty());
         // Closer together than the reach tolerance: nothing to measure.
-        QVERIFY(!m_test->validate(plan(index, 2000, 2005), MotionTest::Kind::Step, &error));
-        QVERIFY(!error.isEmpty());
-        error.clear();
+        QVERIFY(!m_test->validate(plan(index, 2000, 2005), MotionTest::Kind::Step, &refusal));
+        QCOMPARE(refusal.code(), Code::TooClose);
+        QCOMPARE(refusal.limit(), m_test->timing().reachTolerance);
+        QVERIFY(!refusal.describe().isEmpty());
+        MotionPlan tooFast = plan(index, 2000, 2200);
+        tooFast.goalSpeed = 100000;
+        QVERIFY(!m_test->validate(tooFast, MotionTest::Kind::Step, &refusal));
+        QCOMPARE(refusal.code(), Code::SettingOutOfRange);
+        QVERIFY2(refusal.describe().contains(QString::number(refusal.maximum())),
+                 qPrintable(refusal.describe()));
+        MotionPlan tooLong = plan(index, 2000, 2200);
+        tooLong.recordSeconds = MotionPlan::kMaximumRecordSeconds + 1.0;
+        QVERIFY(!m_test->validate(tooLong, MotionTest::Kind::Step, &refusal));
+        QCOMPARE(refusal.code(), Code::BadRecordLength);
+        QCOMPARE(refusal.limit(), MotionPlan::kMaximumRecordSeconds);
+        QVERIFY(m_test->validate(tooLong, MotionTest::Kind::Sweep)); // a sweep records nothing
+        MotionPlan noLegs = plan(index, 2000, 2200);
+        noLegs.legs = 0;
+        QVERIFY(!m_test->validate(noLegs, MotionTest::Kind::Sweep, &refusal));
+        QCOMPARE(refusal.code(), Code::BadLegCount);
+        QCOMPARE(refusal.maximum(), qint64(MotionPlan::kMaximumLegs));
         m_client->servos()->parameters(index)->setDeviceValue(QStringLiteral("min_angle_limit"),
                                                               1000);
         m_client->servos()->parameters(index)->setDeviceValue(QStringLiteral("max_angle_limit"),
                                                               3000);
-        QVERIFY(!m_test->startSweep(plan(index, 500, 2200), &error));
-        QVERIFY2(error.contains(QLatin1String("3000")), qPrintable(error));
+        QVERIFY(!m_test->startSweep(plan(index, 500, 2200), &refusal));
+        QCOMPARE(refusal.code(), Code::OutsideRange);
+        QCOMPARE(refusal.from(), 500);
+        QVERIFY(refusal.range().fromAngleLimits);
+        QCOMPARE(refusal.range().maximum, 3000);
+        QVERIFY2(refusal.describe().contains(QLatin1String("3000")),
+                 qPrintable(refusal.describe()));
         QVERIFY(!m_test->isRunning());
         QCOMPARE(testsupport::feetechFramesReceived(logPath()).size(), framesBefore);
     }
@@ -100,8 +128,9 @@ private slots:
         QSignalSpy running(m_test.get(), &MotionTest::runningChanged);
         QSignalSpy finished(m_test.get(), &MotionTest::stepFinished);
         QSignalSpy failed(m_test.get(), &MotionTest::failed);
-        QString error;
-        QVERIFY2(m_test->startStep(plan(index, 2000, 2200), &error), qPrintable(error));
+        MotionTestRefusal refusal;
+        QVERIFY2(m_test->startStep(plan(index, 2000, 2200), &refusal),
+                 qPrintable(refusal.describe()));
         QVERIFY(m_test->isRunning());
         QCOMPARE(m_test->kind(), MotionTest::Kind::Step);
         QVERIFY(m_client->telemetry()->isStreaming()); // the test needs the stream
@@ -134,8 +163,9 @@ private slots:
         QVERIFY(index >= 0);
         QSignalSpy finished(m_test.get(), &MotionTest::sweepFinished);
         QSignalSpy failed(m_test.get(), &MotionTest::failed);
-        QString error;
-        QVERIFY2(m_test->startSweep(plan(index, 1800, 2100), &error), qPrintable(error));
+        MotionTestRefusal refusal;
+        QVERIFY2(m_test->startSweep(plan(index, 1800, 2100), &refusal),
+                 qPrintable(refusal.describe()));
         QCOMPARE(m_test->kind(), MotionTest::Kind::Sweep);
         QTRY_COMPARE_WITH_TIMEOUT(finished.size() + failed.size(), 1, 30000);
         QVERIFY2(failed.isEmpty(),
@@ -158,15 +188,18 @@ private slots:
         longSweep.legs = 40;
         QSignalSpy failed(m_test.get(), &MotionTest::failed);
         QSignalSpy progress(m_test.get(), &MotionTest::progress);
-        QString error;
-        QVERIFY2(m_test->startSweep(longSweep, &error), qPrintable(error));
+        MotionTestRefusal refusal;
+        QVERIFY2(m_test->startSweep(longSweep, &refusal), qPrintable(refusal.describe()));
+        QVERIFY(!m_test->validate(plan(index, 2000, 2200), MotionTest::Kind::Step, &refusal));
+        QCOMPARE(refusal.code(), Code::AlreadyRunning);
         QTRY_VERIFY_WITH_TIMEOUT(!progress.isEmpty(), 10000);
         m_test->cancel();
         QVERIFY(!m_test->isRunning());
         QCOMPARE(failed.size(), 1);
         QTRY_VERIFY(!m_client->telemetry()->isStreaming());
         // A second test may start at once.
-        QVERIFY(m_test->validate(plan(index, 2000, 2200), MotionTest::Kind::Step, &error));
+        QVERIFY2(m_test->validate(plan(index, 2000, 2200), MotionTest::Kind::Step, &refusal),
+                 qPrintable(refusal.describe()));
     }
 };
 

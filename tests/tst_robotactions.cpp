@@ -119,8 +119,9 @@ private slots:
         client()->readServo(index);
         QTRY_VERIFY(!client()->isBusy());
         feetech::MotionTest test(client(), testsupport::quickMotionTiming());
-        QString error;
-        QVERIFY2(test.startSweep(testsupport::longSweep(index), &error), qPrintable(error));
+        feetech::MotionTestRefusal refusal;
+        QVERIFY2(test.startSweep(testsupport::longSweep(index), &refusal),
+                 qPrintable(refusal.describe()));
         QTRY_VERIFY(!button->isEnabled());
         QVERIFY(button->toolTip().contains(QStringLiteral("motion test")));
         // The other servos stay free.

@@ -4684,6 +4684,73 @@ Eine belegte ID wird abgelehnt.</translation>
     </message>
 </context>
 <context>
+    <name>MotionTestRefusal</name>
+    <message>
+        <source>A test is already running.</source>
+        <translation>Es läuft bereits ein Test.</translation>
+    </message>
+    <message>
+        <source>The bus is not connected.</source>
+        <translation>Der Bus ist nicht verbunden.</translation>
+    </message>
+    <message>
+        <source>No servo is selected.</source>
+        <translation>Kein Servo ausgewählt.</translation>
+    </message>
+    <message>
+        <source>Servo ID %1 is being identified; wait until it is back.</source>
+        <translation>Servo-ID %1 wird gerade identifiziert; warten Sie, bis es wieder zurück ist.</translation>
+    </message>
+    <message>
+        <source>This servo&apos;s model is unknown: ServoBench does not move it.</source>
+        <translation>Das Modell dieses Servos ist unbekannt: ServoBench bewegt es nicht.</translation>
+    </message>
+    <message>
+        <source>This servo has no goal position register.</source>
+        <translation>Dieses Servo hat kein Zielpositionsregister.</translation>
+    </message>
+    <message>
+        <source>Servo ID %1 is not in position mode: set its operating mode to position first.</source>
+        <translation>Servo-ID %1 ist nicht im Positionsmodus: Stellen Sie seinen Betriebsmodus zuerst auf Position.</translation>
+    </message>
+    <message>
+        <source>the servo&apos;s angle limits</source>
+        <translation>der Winkelgrenzen des Servos</translation>
+    </message>
+    <message>
+        <source>the goal position range</source>
+        <translation>des Zielpositionsbereichs</translation>
+    </message>
+    <message>
+        <source>From (%1) and to (%2) must lie within %3, %4 to %5 steps.</source>
+        <translation>Von (%1) und Nach (%2) müssen innerhalb %3 liegen, %4 bis %5 Schritte.</translation>
+    </message>
+    <message>
+        <source>From and to must be more than %1 steps apart.</source>
+        <translation>Von und Nach müssen mehr als %1 Schritte auseinanderliegen.</translation>
+    </message>
+    <message>
+        <source>%1 must lie between %2 and %3.</source>
+        <translation>%1 muss zwischen %2 und %3 liegen.</translation>
+    </message>
+    <message>
+        <source>The recording must last more than 0 and at most %1 seconds.</source>
+        <translation>Die Aufzeichnung muss länger als 0 und höchstens %1 Sekunden dauern.</translation>
+    </message>
+    <message>
+        <source>A sweep has 1 to %1 legs.</source>
+        <translation>Ein Schwenk hat 1 bis %1 Fahrten.</translation>
+    </message>
+    <message>
+        <source>%1 is no longer on the bus.</source>
+        <translation>%1 ist nicht mehr am Bus.</translation>
+    </message>
+    <message>
+        <source>Servo ID %1</source>
+        <translation>Servo-ID %1</translation>
+    </message>
+</context>
+<context>
     <name>MotorFinder</name>
     <message>
         <source>this motor</source>
@@ -7700,68 +7767,12 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>%1 ist nicht mehr am Bus: Der Test wurde abgebrochen.</translation>
     </message>
     <message>
-        <source>A test is already running.</source>
-        <translation>Es läuft bereits ein Test.</translation>
-    </message>
-    <message>
-        <source>The bus is not connected.</source>
-        <translation>Der Bus ist nicht verbunden.</translation>
-    </message>
-    <message>
-        <source>No servo is selected.</source>
-        <translation>Kein Servo ausgewählt.</translation>
-    </message>
-    <message>
-        <source>This servo&apos;s model is unknown: ServoBench does not move it.</source>
-        <translation>Das Modell dieses Servos ist unbekannt: ServoBench bewegt es nicht.</translation>
-    </message>
-    <message>
-        <source>This servo has no goal position register.</source>
-        <translation>Dieses Servo hat kein Zielpositionsregister.</translation>
-    </message>
-    <message>
-        <source>Servo ID %1 is not in position mode: set its operating mode to position first.</source>
-        <translation>Servo-ID %1 ist nicht im Positionsmodus: Stellen Sie seinen Betriebsmodus zuerst auf Position.</translation>
-    </message>
-    <message>
-        <source>the servo&apos;s angle limits</source>
-        <translation>der Winkelgrenzen des Servos</translation>
-    </message>
-    <message>
-        <source>the goal position range</source>
-        <translation>des Zielpositionsbereichs</translation>
-    </message>
-    <message>
-        <source>From (%1) and to (%2) must lie within %3, %4 to %5 steps.</source>
-        <translation>Von (%1) und Nach (%2) müssen innerhalb %3 liegen, %4 bis %5 Schritte.</translation>
-    </message>
-    <message>
-        <source>From and to must be more than %1 steps apart.</source>
-        <translation>Von und Nach müssen mehr als %1 Schritte auseinanderliegen.</translation>
-    </message>
-    <message>
-        <source>%1 must lie between %2 and %3.</source>
-        <translation>%1 muss zwischen %2 und %3 liegen.</translation>
-    </message>
-    <message>
-        <source>The recording must last more than 0 and at most %1 seconds.</source>
-        <translation>Die Aufzeichnung muss länger als 0 und höchstens %1 Sekunden dauern.</translation>
-    </message>
-    <message>
-        <source>A sweep has 1 to %1 legs.</source>
-        <translation>Ein Schwenk hat 1 bis %1 Fahrten.</translation>
-    </message>
-    <message>
         <source>The test was stopped.</source>
         <translation>Der Test wurde abgebrochen.</translation>
     </message>
     <message>
         <source>Servo ID %1</source>
         <translation>Servo-ID %1</translation>
-    </message>
-    <message>
-        <source>%1 is no longer on the bus.</source>
-        <translation>%1 ist nicht mehr am Bus.</translation>
     </message>
     <message>
         <source>Moving to the start position %1…</source>
@@ -7806,10 +7817,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>The test was stopped: %1</source>
         <translation>Der Test wurde abgebrochen: %1</translation>
-    </message>
-    <message>
-        <source>Servo ID %1 is being identified; wait until it is back.</source>
-        <translation>Servo-ID %1 wird gerade identifiziert; warten Sie, bis es wieder zurück ist.</translation>
     </message>
     <message>
         <source>A motion test is running on servo ID %1.</source>

@@ -4664,6 +4664,73 @@ An ID in use is refused.</source>
     </message>
 </context>
 <context>
+    <name>MotionTestRefusal</name>
+    <message>
+        <source>A test is already running.</source>
+        <translation>已有测试正在运行。</translation>
+    </message>
+    <message>
+        <source>The bus is not connected.</source>
+        <translation>总线未连接。</translation>
+    </message>
+    <message>
+        <source>No servo is selected.</source>
+        <translation>未选择舵机。</translation>
+    </message>
+    <message>
+        <source>Servo ID %1 is being identified; wait until it is back.</source>
+        <translation>正在识别舵机 ID %1；请等待它恢复原位。</translation>
+    </message>
+    <message>
+        <source>This servo&apos;s model is unknown: ServoBench does not move it.</source>
+        <translation>此舵机的型号未知：ServoBench 不会驱动它。</translation>
+    </message>
+    <message>
+        <source>This servo has no goal position register.</source>
+        <translation>此舵机没有目标位置寄存器。</translation>
+    </message>
+    <message>
+        <source>Servo ID %1 is not in position mode: set its operating mode to position first.</source>
+        <translation>舵机 ID %1 不在位置模式：请先将其运行模式设为位置模式。</translation>
+    </message>
+    <message>
+        <source>the servo&apos;s angle limits</source>
+        <translation>舵机的角度限制</translation>
+    </message>
+    <message>
+        <source>the goal position range</source>
+        <translation>目标位置范围</translation>
+    </message>
+    <message>
+        <source>From (%1) and to (%2) must lie within %3, %4 to %5 steps.</source>
+        <translation>起点（%1）和终点（%2）必须在%3之内：%4 到 %5 步。</translation>
+    </message>
+    <message>
+        <source>From and to must be more than %1 steps apart.</source>
+        <translation>起点和终点必须相距超过 %1 步。</translation>
+    </message>
+    <message>
+        <source>%1 must lie between %2 and %3.</source>
+        <translation>%1 必须介于 %2 和 %3 之间。</translation>
+    </message>
+    <message>
+        <source>The recording must last more than 0 and at most %1 seconds.</source>
+        <translation>记录时长必须大于 0 且不超过 %1 秒。</translation>
+    </message>
+    <message>
+        <source>A sweep has 1 to %1 legs.</source>
+        <translation>一次扫动包含 1 到 %1 段。</translation>
+    </message>
+    <message>
+        <source>%1 is no longer on the bus.</source>
+        <translation>%1 已不在总线上。</translation>
+    </message>
+    <message>
+        <source>Servo ID %1</source>
+        <translation>舵机 ID %1</translation>
+    </message>
+</context>
+<context>
     <name>MotorFinder</name>
     <message>
         <source>this motor</source>
@@ -7668,62 +7735,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>%1 已不在总线上：测试已停止。</translation>
     </message>
     <message>
-        <source>A test is already running.</source>
-        <translation>已有测试正在运行。</translation>
-    </message>
-    <message>
-        <source>The bus is not connected.</source>
-        <translation>总线未连接。</translation>
-    </message>
-    <message>
-        <source>No servo is selected.</source>
-        <translation>未选择舵机。</translation>
-    </message>
-    <message>
-        <source>Servo ID %1 is being identified; wait until it is back.</source>
-        <translation>正在识别舵机 ID %1；请等待它恢复原位。</translation>
-    </message>
-    <message>
-        <source>This servo&apos;s model is unknown: ServoBench does not move it.</source>
-        <translation>此舵机的型号未知：ServoBench 不会驱动它。</translation>
-    </message>
-    <message>
-        <source>This servo has no goal position register.</source>
-        <translation>此舵机没有目标位置寄存器。</translation>
-    </message>
-    <message>
-        <source>Servo ID %1 is not in position mode: set its operating mode to position first.</source>
-        <translation>舵机 ID %1 不在位置模式：请先将其运行模式设为位置模式。</translation>
-    </message>
-    <message>
-        <source>the servo&apos;s angle limits</source>
-        <translation>舵机的角度限制</translation>
-    </message>
-    <message>
-        <source>the goal position range</source>
-        <translation>目标位置范围</translation>
-    </message>
-    <message>
-        <source>From (%1) and to (%2) must lie within %3, %4 to %5 steps.</source>
-        <translation>起点（%1）和终点（%2）必须在%3之内：%4 到 %5 步。</translation>
-    </message>
-    <message>
-        <source>From and to must be more than %1 steps apart.</source>
-        <translation>起点和终点必须相距超过 %1 步。</translation>
-    </message>
-    <message>
-        <source>%1 must lie between %2 and %3.</source>
-        <translation>%1 必须介于 %2 和 %3 之间。</translation>
-    </message>
-    <message>
-        <source>The recording must last more than 0 and at most %1 seconds.</source>
-        <translation>记录时长必须大于 0 且不超过 %1 秒。</translation>
-    </message>
-    <message>
-        <source>A sweep has 1 to %1 legs.</source>
-        <translation>一次扫动包含 1 到 %1 段。</translation>
-    </message>
-    <message>
         <source>A motion test is running on servo ID %1.</source>
         <translation>舵机 ID %1 正在进行运动测试。</translation>
     </message>
@@ -7734,10 +7745,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Servo ID %1</source>
         <translation>舵机 ID %1</translation>
-    </message>
-    <message>
-        <source>%1 is no longer on the bus.</source>
-        <translation>%1 已不在总线上。</translation>
     </message>
     <message>
         <source>Moving to the start position %1…</source>

@@ -252,30 +252,23 @@ OperationReply *BusClient::startApply(int index, Refusal *refusal, bool withAddr
     if (refused(writeBlocker(index), refusal))
         return nullptr;
     model::ParameterModel &parameters = *m_servos->parameters(index);
-    // planApply refuses with a sentence only; what it refuses for is told apart here, in its
-    // order, so that only a value it cannot encode is left to it.
-    const auto inScope = [withAddress](const QString &key) {
-        return withAddress || (key != QLatin1String("id") && key != QLatin1String("baud_rate"));
-    };
-    const QVector<model::Definition> &definitions = parameters.definitions();
-    if (std::none_of(definitions.begin(), definitions.end(), [&](const model::Definition &d) {
-            return inScope(d.key) && parameters.pendingValue(d.key).has_value();
-        })) {
-        refused(Refusal(Refusal::Code::NothingToWrite), refusal);
-        return nullptr;
-    }
-    const auto newId = withAddress ? parameters.pendingValue(QStringLiteral("id")) : std::nullopt;
-    if (newId && m_servos->idsInUse().contains(int(*newId))
-        && int(*newId) != m_servos->at(index).info.id) {
-        refused(Refusal::idInUse(int(*newId)), refusal);
-        return nullptr;
-    }
-    QString why;
+    ApplyRefusal why;
     // Without the address, the ID and baud rate edits stay pending for their own flows.
     const auto plan = planApply(m_servos->at(index).info, parameters, m_servos->idsInUse(),
                                 withAddress ? ApplyScope::Everything : ApplyScope::Registers, &why);
     if (!plan) {
-        refused(Refusal::badValue(why), refusal);
+        switch (why.code()) {
+        case ApplyRefusal::Code::None: // planApply says why whenever it makes no plan
+        case ApplyRefusal::Code::NothingToWrite:
+            refused(Refusal(Refusal::Code::NothingToWrite), refusal);
+            break;
+        case ApplyRefusal::Code::IdInUse:
+            refused(Refusal::idInUse(why.newId()), refusal);
+            break;
+        case ApplyRefusal::Code::BadValue:
+            refused(Refusal::badValue(why.detail()), refusal);
+            break;
+        }
         return nullptr;
     }
     // Exactly the planned registers are Writing; an ID or baud edit stays an edit until its

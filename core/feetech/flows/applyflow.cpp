@@ -35,8 +35,14 @@ QString lockLeftOpenWarning()
 } // namespace
 
 std::optional<ApplyPlan> planApply(const ServoInfo &servo, const model::ParameterModel &parameters,
-                                   const QVector<int> &idsInUse, ApplyScope scope, QString *error)
+                                   const QVector<int> &idsInUse, ApplyScope scope,
+                                   ApplyRefusal *refusal)
 {
+    const auto refuse = [refusal](const ApplyRefusal &why) {
+        if (refusal)
+            *refusal = why;
+        return std::nullopt;
+    };
     const bool everything = scope == ApplyScope::Everything;
     ApplyPlan plan;
     QVector<model::WriteItem> items;
@@ -54,19 +60,14 @@ std::optional<ApplyPlan> planApply(const ServoInfo &servo, const model::Paramete
             items.append({definition.key, *pending});
         }
     }
-    if (items.isEmpty() && !plan.newId && !plan.newBaud) {
-        if (error)
-            *error = Tr::tr("Nothing to write.");
-        return std::nullopt;
-    }
-    if (plan.newId && idsInUse.contains(*plan.newId) && *plan.newId != servo.id) {
-        if (error)
-            *error = Tr::tr("ID %1 is already in use on this bus.").arg(*plan.newId);
-        return std::nullopt;
-    }
-    const auto writes = encodeWrites(servo.table(), items, error);
+    if (items.isEmpty() && !plan.newId && !plan.newBaud)
+        return refuse(ApplyRefusal(ApplyRefusal::Code::NothingToWrite));
+    if (plan.newId && idsInUse.contains(*plan.newId) && *plan.newId != servo.id)
+        return refuse(ApplyRefusal::idInUse(*plan.newId));
+    QString why;
+    const auto writes = encodeWrites(servo.table(), items, &why);
     if (!writes)
-        return std::nullopt;
+        return refuse(ApplyRefusal::badValue(why));
     plan.writes = *writes;
     for (const model::WriteItem &item : std::as_const(items))
         plan.writtenKeys.append(item.key);

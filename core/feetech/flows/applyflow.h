@@ -1,6 +1,7 @@
 // Writing a servo's edits: locked register writes, and the apply chain (registers, ID, baud).
 #pragma once
 
+#include "applyrefusal.h"
 #include "busexchange.h"
 #include "bustypes.h"
 #include "guidedflows.h"
@@ -33,10 +34,12 @@ struct ApplyPlan
 // everything pending.
 enum class ApplyScope { Registers, Everything };
 
-// The plan for the edits pending in `parameters` of `servo`; nothing and *error when a value
-// cannot be written or there is nothing to write. The model is left as it is.
+// The plan for the edits pending in `parameters` of `servo`; nothing, and why in *refusal, when
+// there is nothing to write, the new ID is in use or a value cannot be written (checked in that
+// order). The model is left as it is.
 std::optional<ApplyPlan> planApply(const ServoInfo &servo, const model::ParameterModel &parameters,
-                                   const QVector<int> &idsInUse, ApplyScope scope, QString *error);
+                                   const QVector<int> &idsInUse, ApplyScope scope,
+                                   ApplyRefusal *refusal);
 
 // Lives in the session's thread; the session runs one write or apply at a time, as an operation.
 class ApplyFlow : public QObject

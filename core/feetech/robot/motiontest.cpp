@@ -85,77 +85,64 @@ void MotionTest::setTiming(const MotionTiming &timing)
     m_timing = timing;
 }
 
-bool MotionTest::validate(const MotionPlan &plan, Kind kind, QString *error) const
+bool MotionTest::validate(const MotionPlan &plan, Kind kind, MotionTestRefusal *refusal) const
 {
-    const auto refuse = [error](const QString &why) {
-        if (error)
-            *error = why;
+    const auto refuse = [refusal](const MotionTestRefusal &why) {
+        if (refusal)
+            *refusal = why;
         return false;
     };
+    using Code = MotionTestRefusal::Code;
     if (isRunning())
-        return refuse(tr("A test is already running."));
+        return refuse(MotionTestRefusal(Code::AlreadyRunning));
     if (!m_client->isConnected())
-        return refuse(tr("The bus is not connected."));
+        return refuse(MotionTestRefusal(Code::NotConnected));
     if (plan.index < 0 || plan.index >= m_client->servos()->count())
-        return refuse(tr("No servo is selected."));
+        return refuse(MotionTestRefusal(Code::NoServo));
     const ServoInfo &info = m_client->servos()->at(plan.index).info;
     if (m_client->identify()->isRunning(plan.index))
-        return refuse(tr("Servo ID %1 is being identified; wait until it is back.").arg(info.id));
+        return refuse(MotionTestRefusal::beingIdentified(info.id));
     if (!info.hasTable())
-        return refuse(tr("This servo's model is unknown: ServoBench does not move it."));
+        return refuse(MotionTestRefusal(Code::UnknownModel));
     const RegisterTable &table = info.table();
     const auto range = goalRange(*m_client, plan.index);
     if (!range || !table.find(kTorqueEnable))
-        return refuse(tr("This servo has no goal position register."));
+        return refuse(MotionTestRefusal(Code::NotMovable));
     const auto mode = m_client->servos()->parameters(plan.index)->deviceValue(kMode);
     if (table.find(kMode) && mode && *mode != kPositionMode)
-        return refuse(tr("Servo ID %1 is not in position mode: set its operating mode to "
-                         "position first.")
-                          .arg(info.id));
-    if (!range->contains(plan.from) || !range->contains(plan.to)) {
-        const QString limits =
-            range->fromAngleLimits ? tr("the servo's angle limits") : tr("the goal position range");
-        return refuse(tr("From (%1) and to (%2) must lie within %3, %4 to %5 steps.")
-                          .arg(plan.from)
-                          .arg(plan.to)
-                          .arg(limits)
-                          .arg(range->minimum)
-                          .arg(range->maximum));
-    }
+        return refuse(MotionTestRefusal::notInPositionMode(info.id));
+    if (!range->contains(plan.from) || !range->contains(plan.to))
+        return refuse(MotionTestRefusal::outsideRange(plan.from, plan.to, *range));
     if (std::abs(double(plan.to) - double(plan.from)) <= m_timing.reachTolerance)
-        return refuse(
-            tr("From and to must be more than %1 steps apart.").arg(m_timing.reachTolerance));
+        return refuse(MotionTestRefusal::tooClose(m_timing.reachTolerance));
     for (const auto &[key, value] :
          {std::pair(kGoalSpeed, plan.goalSpeed), std::pair(kAcceleration, plan.acceleration)}) {
         const Register *reg = table.find(key);
         if (reg && (value < reg->minimum || value > reg->maximum))
-            return refuse(tr("%1 must lie between %2 and %3.")
-                              .arg(reg->label)
-                              .arg(reg->minimum)
-                              .arg(reg->maximum));
+            return refuse(
+                MotionTestRefusal::settingOutOfRange(reg->label, reg->minimum, reg->maximum));
     }
     if (kind == Kind::Step
         && !(plan.recordSeconds > 0.0 && plan.recordSeconds <= MotionPlan::kMaximumRecordSeconds))
-        return refuse(tr("The recording must last more than 0 and at most %1 seconds.")
-                          .arg(MotionPlan::kMaximumRecordSeconds));
+        return refuse(MotionTestRefusal::badRecordLength(MotionPlan::kMaximumRecordSeconds));
     if (kind == Kind::Sweep && (plan.legs < 1 || plan.legs > MotionPlan::kMaximumLegs))
-        return refuse(tr("A sweep has 1 to %1 legs.").arg(MotionPlan::kMaximumLegs));
+        return refuse(MotionTestRefusal::badLegCount(MotionPlan::kMaximumLegs));
     return true;
 }
 
-bool MotionTest::startStep(const MotionPlan &plan, QString *error)
+bool MotionTest::startStep(const MotionPlan &plan, MotionTestRefusal *refusal)
 {
-    return start(plan, Kind::Step, error);
+    return start(plan, Kind::Step, refusal);
 }
 
-bool MotionTest::startSweep(const MotionPlan &plan, QString *error)
+bool MotionTest::startSweep(const MotionPlan &plan, MotionTestRefusal *refusal)
 {
-    return start(plan, Kind::Sweep, error);
+    return start(plan, Kind::Sweep, refusal);
 }
 
-bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
+bool MotionTest::start(const MotionPlan &plan, Kind kind, MotionTestRefusal *refusal)
 {
-    if (!validate(plan, kind, error))
+    if (!validate(plan, kind, refusal))
         return false;
     const ServoInfo &info = m_client->servos()->at(plan.index).info;
     m_plan = plan;
@@ -167,7 +154,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
     m_recording.clear();
     m_summary = {};
     m_leg = 0;
-    if (!ensureMonitor(plan.index, error))
+    if (!ensureMonitor(plan.index, refusal))
         return false;
 
     // The goal before the torque: a servo switched on first would head for a stale goal.
@@ -183,7 +170,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, QString *error)
         && m_client->servos()->parameters(plan.index)->deviceValue(kTorqueEnable)
             != std::optional<qint64>(*on))
         values.append({kTorqueEnable, *on});
-    if (!write(values, error)) {
+    if (!write(values, refusal)) {
         restoreMonitor();
         return false;
     }
@@ -219,19 +206,19 @@ QString MotionTest::servoName() const
     return tr("Servo ID %1").arg(m_servo.id);
 }
 
-bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
+bool MotionTest::write(const QVector<model::WriteItem> &values, MotionTestRefusal *refusal)
 {
     const int index = servoIndex();
     if (index < 0) {
-        if (error)
-            *error = tr("%1 is no longer on the bus.").arg(servoName());
+        if (refusal)
+            *refusal = MotionTestRefusal::servoGone(m_servo.id);
         return false;
     }
-    Refusal refusal;
-    OperationReply *reply = m_client->writeValues(index, values, &refusal);
+    Refusal refused;
+    OperationReply *reply = m_client->writeValues(index, values, &refused);
     if (!reply) {
-        if (error)
-            *error = refusal.describe();
+        if (refusal)
+            *refusal = MotionTestRefusal::clientRefused(refused);
         return false;
     }
     connect(reply, &OperationReply::finished, this, &MotionTest::onWriteFinished);
@@ -240,14 +227,14 @@ bool MotionTest::write(const QVector<model::WriteItem> &values, QString *error)
     return true;
 }
 
-bool MotionTest::ensureMonitor(int index, QString *error)
+bool MotionTest::ensureMonitor(int index, MotionTestRefusal *refusal)
 {
     // Its servo at its rate, beside whatever else streams; nothing of another's stream changes.
-    Refusal refusal;
-    if (m_client->telemetry()->subscribe(this, {index}, m_timing.monitorRateHz, &refusal))
+    Refusal refused;
+    if (m_client->telemetry()->subscribe(this, {index}, m_timing.monitorRateHz, &refused))
         return true;
-    if (error)
-        *error = refusal.describe();
+    if (refusal)
+        *refusal = MotionTestRefusal::clientRefused(refused);
     return false;
 }
 
@@ -326,9 +313,9 @@ void MotionTest::beginStep()
     // The last position before the step is where the step starts from: a servo held a few
     // steps off `from` (or one that never got there) is measured from where it really was.
     m_stepStart = m_lastPosition.value_or(double(m_plan.from));
-    QString error;
-    if (!write({{kGoalPosition, m_plan.to}}, &error)) {
-        fail(error);
+    MotionTestRefusal refusal;
+    if (!write({{kGoalPosition, m_plan.to}}, &refusal)) {
+        fail(refusal.describe());
         return;
     }
     m_recording.clear();
@@ -361,9 +348,9 @@ void MotionTest::beginLeg()
     SweepLeg leg;
     leg.target = m_legTarget;
     m_summary.legs.append(leg);
-    QString error;
-    if (!write({{kGoalPosition, m_legTarget}}, &error)) {
-        fail(error);
+    MotionTestRefusal refusal;
+    if (!write({{kGoalPosition, m_legTarget}}, &refusal)) {
+        fail(refusal.describe());
         return;
     }
     setPhase(Phase::Leg, m_timing.reachTimeout);

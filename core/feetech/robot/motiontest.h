@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bustypes.h"
+#include "motiontestrefusal.h"
 #include "parametermodel.h"
 #include "stepresponse.h"
 #include "telemetry.h"
@@ -92,15 +93,15 @@ public:
     const MotionTiming &timing() const { return m_timing; }
     void setTiming(const MotionTiming &timing); // for the next test
 
-    // Whether `plan` can run now; *error says why not (in words for the user).
-    bool validate(const MotionPlan &plan, Kind kind, QString *error = nullptr) const;
+    // Whether `plan` can run now; *refusal says why not.
+    bool validate(const MotionPlan &plan, Kind kind, MotionTestRefusal *refusal = nullptr) const;
     // Step test: torque on, goal = from, wait until it is there and still, then goal = to at
     // t0 and record the position for plan.recordSeconds; stepFinished with the metrics.
-    // False and *error when nothing was started (and nothing sent).
-    bool startStep(const MotionPlan &plan, QString *error = nullptr);
+    // False and *refusal when nothing was started (and nothing sent).
+    bool startStep(const MotionPlan &plan, MotionTestRefusal *refusal = nullptr);
     // Sweep: torque on, goal = from, then plan.legs moves alternating between to and from, each
     // waiting until it is reached (or the reach timeout), then a dwell; sweepFinished.
-    bool startSweep(const MotionPlan &plan, QString *error = nullptr);
+    bool startSweep(const MotionPlan &plan, MotionTestRefusal *refusal = nullptr);
     // Stops a running test (failed is emitted); the horn is held where it was last seen.
     void cancel();
 
@@ -121,11 +122,11 @@ signals:
 private:
     enum class Phase { Idle, Approaching, Recording, Collecting, Leg, Dwell };
 
-    bool start(const MotionPlan &plan, Kind kind, QString *error);
+    bool start(const MotionPlan &plan, Kind kind, MotionTestRefusal *refusal);
     int servoIndex() const; // -1 once the servo is gone
-    bool write(const QVector<model::WriteItem> &values, QString *error);
+    bool write(const QVector<model::WriteItem> &values, MotionTestRefusal *refusal);
     // The stream of its servo: subscribed while the test runs.
-    bool ensureMonitor(int index, QString *error);
+    bool ensureMonitor(int index, MotionTestRefusal *refusal);
     void restoreMonitor();
     void onTelemetry(const QVector<feetech::FeedbackSample> &samples);
     void onWriteFinished(const feetech::OperationResult &result);

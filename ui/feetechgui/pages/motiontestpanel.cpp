@@ -305,19 +305,20 @@ bool MotionTestPanel::confirmTest(feetech::MotionTest::Kind kind, const feetech:
 void MotionTestPanel::startTest(feetech::MotionTest::Kind kind)
 {
     const feetech::MotionPlan plan = testPlan();
-    QString error;
-    if (!m_test->validate(plan, kind, &error)) {
-        emit statusChanged(error, true);
+    feetech::MotionTestRefusal refusal;
+    if (!m_test->validate(plan, kind, &refusal)) {
+        emit statusChanged(refusal.describe(), true);
         return;
     }
     if (m_confirmMoves && !confirmTest(kind, plan))
         return;
     emit statusChanged({}, false);
     clearResults();
-    const bool started = kind == feetech::MotionTest::Kind::Step ? m_test->startStep(plan, &error)
-                                                                 : m_test->startSweep(plan, &error);
+    const bool started = kind == feetech::MotionTest::Kind::Step
+        ? m_test->startStep(plan, &refusal)
+        : m_test->startSweep(plan, &refusal);
     if (!started)
-        emit statusChanged(error, true);
+        emit statusChanged(refusal.describe(), true);
 }
 
 void MotionTestPanel::onStepFinished(const feetech::StepMetrics &metrics)

@@ -1,0 +1,47 @@
+// The refusals of the apply plan, and their sentences.
+#include "applyrefusal.h"
+
+#include <QCoreApplication>
+
+namespace {
+
+// The context the apply flow's sentences have always been translated in.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
+};
+
+} // namespace
+
+namespace feetech {
+
+ApplyRefusal ApplyRefusal::idInUse(int newId)
+{
+    ApplyRefusal refusal(Code::IdInUse);
+    refusal.m_newId = newId;
+    return refusal;
+}
+
+ApplyRefusal ApplyRefusal::badValue(const QString &reason)
+{
+    ApplyRefusal refusal(Code::BadValue);
+    refusal.m_detail = reason;
+    return refusal;
+}
+
+QString ApplyRefusal::describe() const
+{
+    switch (m_code) {
+    case Code::None:
+        return {};
+    case Code::NothingToWrite:
+        return Tr::tr("Nothing to write.");
+    case Code::IdInUse:
+        return Tr::tr("ID %1 is already in use on this bus.").arg(m_newId);
+    case Code::BadValue:
+        return m_detail;
+    }
+    return {};
+}
+
+} // namespace feetech
