@@ -5,6 +5,7 @@
 #include <QtTest>
 
 using sim::Hand;
+using sim::SimRefusal;
 using sim::VirtualFeetechBus;
 
 namespace {
@@ -13,13 +14,13 @@ constexpr qint64 kMs = 1000;
 
 std::unique_ptr<VirtualFeetechBus> armBus()
 {
-    QString error;
+    SimRefusal why;
     auto bus = VirtualFeetechBus::create({{1, QStringLiteral("STS3215"), 0},
                                           {2, QStringLiteral("STS3215"), 0},
                                           {3, QStringLiteral("SCS15"), 0}},
-                                         &error);
+                                         &why);
     if (!bus)
-        qFatal("%s", qPrintable(error));
+        qFatal("%s", qPrintable(why.describe()));
     return bus;
 }
 
@@ -219,8 +220,9 @@ private slots:
     void servosSharingAnIdAreTurnedByPlaceNotById()
     {
         auto bus = armBus();
+        SimRefusal why;
+        QVERIFY2(bus->setServoId(1, 1, &why), qPrintable(why.describe()));
         QString error;
-        QVERIFY2(bus->setServoId(1, 1, &error), qPrintable(error));
         QCOMPARE(bus->servo(1).id(), quint8(1));
         QVERIFY(!bus->hand().turn(1, 100, &error));
         QVERIFY2(error.contains(QLatin1String("#1, #2")), qPrintable(error));
@@ -231,14 +233,16 @@ private slots:
     void putAtIdSurvivesAPowerCycle()
     {
         auto bus = armBus();
-        QString error;
-        QVERIFY(bus->setServoId(2, 7, &error));
+        SimRefusal why;
+        QVERIFY(bus->setServoId(2, 7, &why));
         bus->powerCycle();
         QCOMPARE(bus->servo(2).id(), quint8(7));
-        QVERIFY(!bus->setServoId(2, 254, &error));
-        QVERIFY2(error.contains(QLatin1String("out of range")), qPrintable(error));
-        QVERIFY(!bus->setServoId(5, 1, &error));
-        QVERIFY2(error.contains(QLatin1String("#6")), qPrintable(error));
+        QVERIFY(!bus->setServoId(2, 254, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::IdOutOfRange);
+        QCOMPARE(why.servo(), 254);
+        QVERIFY(!bus->setServoId(5, 1, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::NoSuchPlace);
+        QCOMPARE(why.servo(), 6);
     }
 };
 

@@ -434,7 +434,11 @@ bool SimulatorDock::plugFactoryNew(const QString &model)
 {
     return onBus(
         [&model](sim::VirtualFeetechBus &bus, QString *error) {
-            return bus.plug({1, model, 0}, error);
+            sim::SimRefusal why;
+            if (bus.plug({1, model, 0}, &why))
+                return true;
+            *error = why.describe();
+            return false;
         },
         tr("Plugged in a factory-new %1 at ID 1.").arg(model));
 }
@@ -450,7 +454,11 @@ bool SimulatorDock::putSelectedAtId(int id)
 {
     return onSelected(
         [id](sim::VirtualFeetechBus &bus, int index, QString *error) {
-            return bus.setServoId(index, id, error);
+            sim::SimRefusal why;
+            if (bus.setServoId(index, id, &why))
+                return true;
+            *error = why.describe();
+            return false;
         },
         [this, id](int index) { return tr("Servo #%1 is now at ID %2.").arg(index + 1).arg(id); });
 }

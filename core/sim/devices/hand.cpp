@@ -94,8 +94,11 @@ void Hand::place(int index, double horn)
 
 bool Hand::turn(quint8 id, int position, QString *error)
 {
-    const auto index = m_bus.uniqueIndexOf(id, error);
-    return index && turnServo(*index, position, error);
+    SimRefusal why;
+    const auto index = m_bus.uniqueIndexOf(id, &why);
+    if (!index)
+        return fail(error, why.describe());
+    return turnServo(*index, position, error);
 }
 
 bool Hand::turnServo(int index, int position, QString *error)
@@ -110,8 +113,11 @@ bool Hand::turnServo(int index, int position, QString *error)
 
 bool Hand::sweep(quint8 id, int from, int to, double seconds, int cycles, Way way, QString *error)
 {
-    const auto index = m_bus.uniqueIndexOf(id, error);
-    return index && sweepServo(*index, from, to, seconds, cycles, way, error);
+    SimRefusal why;
+    const auto index = m_bus.uniqueIndexOf(id, &why);
+    if (!index)
+        return fail(error, why.describe());
+    return sweepServo(*index, from, to, seconds, cycles, way, error);
 }
 
 bool Hand::sweepServo(int index, int from, int to, double seconds, int cycles, Way way,

@@ -242,7 +242,11 @@ std::optional<int> servoIndex(const VirtualFeetechBus &bus, const QString &refer
                          .arg(feetech::kMaxServoId);
         return std::nullopt;
     }
-    return bus.uniqueIndexOf(quint8(*id), error);
+    SimRefusal why;
+    const auto index = bus.uniqueIndexOf(quint8(*id), &why);
+    if (!index && error)
+        *error = why.describe();
+    return index;
 }
 
 QString simulatorCommandHelp()
@@ -302,8 +306,11 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         if (words.size() != 1)
             return usage(QStringLiteral("plug ID:MODEL[@BAUD]"));
         const auto spec = parseServoSpec(words.first(), QStringLiteral("plug"), &why);
-        if (!spec || !bus->plug(*spec, &why))
+        if (!spec)
             return error(why);
+        SimRefusal refusal;
+        if (!bus->plug(*spec, &refusal))
+            return error(refusal.describe());
         const int index = bus->servoCount() - 1;
         const VirtualFeetechServo &servo = bus->servo(index);
         return ok(Tr::tr("plugged %1: %2 at %3 bps")
@@ -367,8 +374,9 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
     if (!id || *id < 0 || *id > feetech::kMaxServoId)
         return error(
             Tr::tr("\"%1\" is not an ID from 0 to %2").arg(words.at(1)).arg(feetech::kMaxServoId));
-    if (!bus->setServoId(*index, int(*id), &why))
-        return error(why);
+    SimRefusal refusal;
+    if (!bus->setServoId(*index, int(*id), &refusal))
+        return error(refusal.describe());
     return ok(Tr::tr("servo #%1 is now at ID %2").arg(*index + 1).arg(*id));
 }
 
