@@ -1,7 +1,8 @@
-// The simulated Feetech bus's refusals, and their sentences.
+// The simulated Feetech bus's and its hand's refusals, and their sentences.
 #include "simrefusal.h"
 
 #include "feetechpacket.h"
+#include "hand.h"
 #include "virtualfeetechservo.h"
 
 #include <QCoreApplication>
@@ -15,6 +16,12 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(VirtualFeetechBus)
 };
 
+// The context the hand's sentences have always been translated in.
+struct HandTr
+{
+    Q_DECLARE_TR_FUNCTIONS(Hand)
+};
+
 QString baudList()
 {
     QStringList rates;
@@ -26,6 +33,14 @@ QString baudList()
 } // namespace
 
 namespace sim {
+
+SimRefusal SimRefusal::ofServo(Code code, int place, int id, qint64 value, qint64 other)
+{
+    SimRefusal refusal(code, place, value);
+    refusal.m_id = id;
+    refusal.m_other = other;
+    return refusal;
+}
 
 SimRefusal SimRefusal::stateFile(Code code, const QString &file, int servo, qint64 value,
                                  qint64 other, const QString &name, const QString &busModel)
@@ -80,6 +95,24 @@ QString SimRefusal::describe() const
     case Code::StateImageModel:
     case Code::StateImageIdOrBaud:
         return Tr::tr("state file %1: %2").arg(m_file, stateReason());
+    case Code::PositionOutOfRange:
+        return HandTr::tr("position %1 is out of range: %2 turns from 0 to %3")
+            .arg(m_value)
+            .arg(Hand::describe(m_servo - 1, m_id))
+            .arg(m_other);
+    case Code::TorqueOn:
+        return HandTr::tr("%1 has its torque on: it holds its position and the hand cannot turn it")
+            .arg(Hand::describe(m_servo - 1, m_id));
+    case Code::SweepTooLong:
+        return HandTr::tr("a sweep takes more than 0 and at most %1 seconds")
+            .arg(Hand::kMaxSweepSeconds);
+    case Code::TooManyCycles:
+        return HandTr::tr("a sweep runs 0 (until released) to %1 times").arg(Hand::kMaxSweepCycles);
+    case Code::NoSeam:
+        return HandTr::tr("%1 is an SCS servo: it stops at 0 and %2, there is no "
+                          "seam to sweep across")
+            .arg(Hand::describe(m_servo - 1, m_id))
+            .arg(m_other);
     }
     return {};
 }

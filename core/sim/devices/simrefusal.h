@@ -1,5 +1,5 @@
-// Why the simulated Feetech bus refuses a bus description, a change or a state file: a code, and
-// a sentence.
+// Why the simulated Feetech bus or its hand refuses a bus description, a change, a state file or
+// a turn of a horn: a code, and a sentence.
 #pragma once
 
 #include <QString>
@@ -33,6 +33,11 @@ public:
         StateImageSize, // file; servo: the place
         StateImageModel, // file; servo: the place; value, other: major, minor; name: bus model
         StateImageIdOrBaud, // file; servo: the place
+        PositionOutOfRange, // servo: the place; id; value: the position; other: the highest
+        TorqueOn, // servo: the place; id: the hand cannot turn a servo holding its position
+        SweepTooLong, // the sweep's time is not above 0 and at most Hand::kMaxSweepSeconds
+        TooManyCycles, // the sweep's cycles are not 0 to Hand::kMaxSweepCycles
+        NoSeam, // servo: the place; id; other: the highest position of an SCS servo
     };
 
     SimRefusal() = default;
@@ -46,6 +51,8 @@ public:
         , m_name(name)
     { }
 
+    // A refusal of the servo at `place` (1-based) and `id`.
+    static SimRefusal ofServo(Code code, int place, int id, qint64 value = 0, qint64 other = 0);
     // A refusal of the state file `file`.
     static SimRefusal stateFile(Code code, const QString &file, int servo = 0, qint64 value = 0,
                                 qint64 other = 0, const QString &name = {},
@@ -54,7 +61,9 @@ public:
     Code code() const { return m_code; }
     explicit operator bool() const { return m_code != Code::None; }
     int servo() const { return m_servo; }
+    int id() const { return m_id; }
     qint64 value() const { return m_value; }
+    qint64 other() const { return m_other; }
     QString name() const { return m_name; }
     QString file() const { return m_file; }
 
@@ -65,6 +74,7 @@ private:
 
     Code m_code = Code::None;
     int m_servo = 0;
+    int m_id = 0;
     qint64 m_value = 0;
     qint64 m_other = 0;
     QString m_name;

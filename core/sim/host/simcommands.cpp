@@ -326,8 +326,9 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         const auto position = util::parseInteger(words.at(1));
         if (!position || *position < 0 || *position > 4095)
             return error(Tr::tr("\"%1\" is not a position from 0 to 4095").arg(words.at(1)));
-        if (!bus->hand().turnServo(*index, int(*position), &why))
-            return error(why);
+        SimRefusal refusal;
+        if (!bus->hand().turnServo(*index, int(*position), &refusal))
+            return error(refusal.describe());
         return ok(Tr::tr("turned %1 to %2").arg(place(*bus, *index)).arg(*position));
     }
     if (command == QLatin1String("sweep")) {
@@ -342,9 +343,10 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         const auto sweep = parseHandSweep(fields, QStringLiteral("sweep"), &why);
         if (!sweep)
             return error(why);
+        SimRefusal refusal;
         if (!bus->hand().sweepServo(*index, sweep->from, sweep->to, sweep->seconds, sweep->cycles,
-                                    sweep->way, &why))
-            return error(why);
+                                    sweep->way, &refusal))
+            return error(refusal.describe());
         const QString times = sweep->cycles == 0 ? Tr::tr("until released")
                                                  : Tr::tr("%n time(s)", nullptr, sweep->cycles);
         return ok(Tr::tr("sweeping %1 from %2 to %3 and back every %4 s, %5")

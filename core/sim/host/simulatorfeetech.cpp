@@ -83,11 +83,11 @@ std::unique_ptr<VirtualFeetechBus> createFeetechBus(const SimulatorOptions &opti
     if (options.robot)
         setUpRobot(*bus, *options.robot, loaded);
     for (const HandSweep &sweep : options.sweeps) {
-        QString why;
+        SimRefusal refusal;
         if (!bus->hand().sweep(sweep.id, sweep.from, sweep.to, sweep.seconds, sweep.cycles,
-                               sweep.way, &why)) {
+                               sweep.way, &refusal)) {
             if (error)
-                *error = Tr::tr("--hand for ID %1: %2").arg(sweep.id).arg(why);
+                *error = Tr::tr("--hand for ID %1: %2").arg(sweep.id).arg(refusal.describe());
             return nullptr;
         }
     }
