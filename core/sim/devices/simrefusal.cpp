@@ -1,4 +1,4 @@
-// The simulated Feetech bus's and its hand's refusals, and their sentences.
+// The simulated devices' refusals, and their sentences.
 #include "simrefusal.h"
 
 #include "feetechpacket.h"
@@ -113,6 +113,8 @@ QString SimRefusal::describe() const
                           "seam to sweep across")
             .arg(Hand::describe(m_servo - 1, m_id))
             .arg(m_other);
+    case Code::BadPtkValues:
+        return QStringLiteral("--values: ") + m_name;
     }
     return {};
 }

@@ -1,5 +1,5 @@
-// Why the simulated Feetech bus or its hand refuses a bus description, a change, a state file or
-// a turn of a horn: a code, and a sentence.
+// Why a simulated device refuses: the Feetech bus a bus description, a change or a state file,
+// its hand a turn of a horn, the PTK servo its starting values. A code, and a sentence.
 #pragma once
 
 #include <QString>
@@ -38,6 +38,7 @@ public:
         SweepTooLong, // the sweep's time is not above 0 and at most Hand::kMaxSweepSeconds
         TooManyCycles, // the sweep's cycles are not 0 to Hand::kMaxSweepCycles
         NoSeam, // servo: the place; id; other: the highest position of an SCS servo
+        BadPtkValues, // name: why the PTK servo's starting values (--values) do not parse
     };
 
     SimRefusal() = default;
