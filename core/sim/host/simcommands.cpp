@@ -305,9 +305,10 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
     if (command == QLatin1String("plug")) {
         if (words.size() != 1)
             return usage(QStringLiteral("plug ID:MODEL[@BAUD]"));
-        const auto spec = parseServoSpec(words.first(), QStringLiteral("plug"), &why);
+        OptionError badSpec;
+        const auto spec = parseServoSpec(words.first(), QStringLiteral("plug"), &badSpec);
         if (!spec)
-            return error(why);
+            return error(badSpec.describe());
         SimRefusal refusal;
         if (!bus->plug(*spec, &refusal))
             return error(refusal.describe());

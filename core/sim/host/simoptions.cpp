@@ -106,9 +106,10 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         if (option == QLatin1String("--link")) {
             options.linkPath = *text;
         } else if (option == QLatin1String("--faults")) {
-            const auto faults = FaultSettings::parse(*text, error);
+            OptionError why;
+            const auto faults = FaultSettings::parse(*text, &why);
             if (!faults)
-                return std::nullopt;
+                return fail(why.describe());
             options.faults = *faults;
         } else if (option == QLatin1String("--seed")) {
             const auto seed = util::parseInteger(*text);
@@ -161,9 +162,10 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         } else if (option == QLatin1String("--servo")) {
             if (!feetech)
                 return fail(Tr::tr("--servo is for a Feetech bus"));
-            const auto spec = parseServoSpec(*text, QStringLiteral("--servo"), error);
+            OptionError why;
+            const auto spec = parseServoSpec(*text, QStringLiteral("--servo"), &why);
             if (!spec)
-                return std::nullopt;
+                return fail(why.describe());
             options.servos.append(*spec);
         }
     }
@@ -180,32 +182,29 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
 }
 
 std::optional<FeetechServoSpec> parseServoSpec(const QString &text, const QString &source,
-                                               QString *error)
+                                               OptionError *error)
 {
-    const auto fail = [&](const QString &what) -> std::optional<FeetechServoSpec> {
-        if (error)
-            *error = what;
+    using Code = OptionError::Code;
+    const auto fail = [&](Code code, qint64 value = 0) -> std::optional<FeetechServoSpec> {
+        refused(OptionError(code, text, source, value), error);
         return std::nullopt;
     };
     const int colon = text.indexOf(u':');
     const int at = text.indexOf(u'@');
     const auto id = util::parseInteger(text.left(colon));
     if (colon <= 0 || !id)
-        return fail(Tr::tr("%1 \"%2\" is not ID:MODEL[@BAUD]").arg(source, text));
+        return fail(Code::NotAServoSpec);
     if (*id < 0 || *id > feetech::kMaxServoId)
-        return fail(Tr::tr("%1 \"%2\": ID %3 is over %4")
-                        .arg(source, text)
-                        .arg(*id)
-                        .arg(feetech::kMaxServoId));
+        return fail(Code::ServoIdOverMax, *id);
     FeetechServoSpec spec;
     spec.id = quint8(*id);
     spec.model = text.mid(colon + 1, at > colon ? at - colon - 1 : -1);
     if (spec.model.isEmpty())
-        return fail(Tr::tr("%1 \"%2\" names no model").arg(source, text));
+        return fail(Code::ServoWithoutModel);
     if (at > colon) {
         const auto baud = util::parseInteger(text.mid(at + 1));
         if (!baud || *baud <= 0 || *baud > 10'000'000)
-            return fail(Tr::tr("%1 \"%2\": bad baud rate").arg(source, text));
+            return fail(Code::ServoBadBaud);
         spec.baud = qint32(*baud);
     }
     return spec;

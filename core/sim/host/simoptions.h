@@ -3,6 +3,7 @@
 
 #include "faults.h"
 #include "hand.h"
+#include "optionerror.h"
 #include "robottemplate.h"
 #include "usbadapter.h"
 #include "virtualfeetechbus.h"
@@ -30,7 +31,7 @@ struct HandSweep
 
 // ID:MODEL[@BAUD], as --servo and the plug command take it; `source` names it in errors.
 std::optional<FeetechServoSpec> parseServoSpec(const QString &text, const QString &source,
-                                               QString *error);
+                                               OptionError *error);
 // FIELDS are ID FROM TO SECONDS [CYCLES] [up|down], already split; `source` names them in errors.
 std::optional<HandSweep> parseHandSweep(const QStringList &fields, const QString &source,
                                         QString *error);

@@ -1,0 +1,66 @@
+// servosim's refusals of option values, and their sentences.
+#include "optionerror.h"
+
+#include "feetechpacket.h"
+
+#include <QCoreApplication>
+
+namespace {
+
+// The contexts the sentences have always been translated in.
+struct FaultsTr
+{
+    Q_DECLARE_TR_FUNCTIONS(Faults)
+};
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(servosim)
+};
+
+} // namespace
+
+namespace sim {
+
+QString OptionError::describe() const
+{
+    switch (m_code) {
+    case Code::None:
+        return {};
+    case Code::FaultNotNameValue:
+        return FaultsTr::tr("--faults: \"%1\" is not NAME=VALUE").arg(m_text);
+    case Code::FaultNotANumber:
+        return FaultsTr::tr("--faults: \"%1\" is not a number").arg(m_text);
+    case Code::FaultDelayOutOfRange:
+        return FaultsTr::tr("--faults: delay is in milliseconds, 0 to 60000");
+    case Code::FaultNotAProbability:
+        return FaultsTr::tr("--faults: %1 is a probability from 0 to 1").arg(m_text);
+    case Code::UnknownFault:
+        return FaultsTr::tr("--faults: unknown fault \"%1\" (drop, corrupt, truncate, noise, "
+                            "delay, lost)")
+            .arg(m_text);
+    case Code::NotAServoSpec:
+        return Tr::tr("%1 \"%2\" is not ID:MODEL[@BAUD]").arg(m_source, m_text);
+    case Code::ServoIdOverMax:
+        return Tr::tr("%1 \"%2\": ID %3 is over %4")
+            .arg(m_source, m_text)
+            .arg(m_value)
+            .arg(feetech::kMaxServoId);
+    case Code::ServoWithoutModel:
+        return Tr::tr("%1 \"%2\" names no model").arg(m_source, m_text);
+    case Code::ServoBadBaud:
+        return Tr::tr("%1 \"%2\": bad baud rate").arg(m_source, m_text);
+    }
+    return {};
+}
+
+bool refused(const OptionError &error, OptionError *out)
+{
+    if (!error)
+        return false;
+    if (out)
+        *out = error;
+    return true;
+}
+
+} // namespace sim
