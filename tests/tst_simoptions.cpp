@@ -102,7 +102,7 @@ private slots:
         QVERIFY2(error.contains(expected), qPrintable(error));
     }
 
-    void badFaultsAndServoSpecsSayWhyByCode()
+    void badOptionValuesSayWhyByCode()
     {
         using Code = sim::OptionError::Code;
         sim::OptionError why;
@@ -130,6 +130,23 @@ private slots:
         QCOMPARE(specCode("1:STS3215@0"), Code::ServoBadBaud);
         QCOMPARE(why.source(), QStringLiteral("--servo"));
         QCOMPARE(specCode("1:STS3215@500000"), Code::None);
+
+        const auto sweepCode = [&why](const char *fields) {
+            return sim::parseHandSweep(QString::fromLatin1(fields).split(u':'),
+                                       QStringLiteral("--hand"), &why)
+                ? Code::None
+                : why.code();
+        };
+        QCOMPARE(sweepCode("1:0:100"), Code::SweepFields);
+        QCOMPARE(sweepCode("x:0:100:1"), Code::SweepBadId);
+        QCOMPARE(sweepCode("1:0:4096:1"), Code::SweepBadPositions);
+        QCOMPARE(sweepCode("1:0:100:0"), Code::SweepBadSeconds);
+        QCOMPARE(sweepCode("1:0:100:1:many"), Code::SweepBadCycles);
+        QCOMPARE(sweepCode("1:0:100:1:2:up"), Code::None);
+
+        QVERIFY(!sim::simulatedRobot(QStringLiteral("so102"), &why));
+        QCOMPARE(why.code(), Code::UnknownRobot);
+        QVERIFY(sim::simulatedRobot(QStringLiteral("SO101"), &why));
     }
 
     void feetechOnlyOptionsAreRefusedForPtk_data()

@@ -1,8 +1,9 @@
-// Why servosim refuses an option's value (--faults, --servo and the plug command's spec): a code,
-// and a sentence.
+// Why servosim refuses an option's value (--faults, --robot, --servo and --hand, and the plug and
+// sweep commands' fields): a code, and a sentence.
 #pragma once
 
 #include <QString>
+#include <QStringList>
 
 namespace sim {
 
@@ -24,6 +25,13 @@ public:
         ServoIdOverMax, // source; text; value: the ID
         ServoWithoutModel, // source; text
         ServoBadBaud, // source; text
+        SweepFields, // source: not ID FROM TO SECONDS [CYCLES] [up|down]
+        SweepBadId, // source; text: the ID field
+        SweepBadPositions, // source: FROM or TO is no position
+        SweepBadSeconds, // source; text: the SECONDS field
+        SweepBadCycles, // source; text: the CYCLES field
+        UnknownRobot, // text: the name asked for
+        BadRobotTemplate, // text: why the built-in template did not load (its FileError sentence)
     };
 
     OptionError() = default;
@@ -42,8 +50,12 @@ public:
     qint64 value() const { return m_value; }
 
     QString describe() const;
+    // The built-in robot templates servosim plays, as --robot names them.
+    static QStringList simulatedRobotNames();
 
 private:
+    QString sweepReason() const;
+
     Code m_code = Code::None;
     QString m_text;
     QString m_source;

@@ -341,9 +341,10 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         // The ID field is checked by servoIndex; the sweep's own fields by parseHandSweep.
         QStringList fields = words;
         fields[0] = QString::number(bus->servo(*index).id());
-        const auto sweep = parseHandSweep(fields, QStringLiteral("sweep"), &why);
+        OptionError badSweep;
+        const auto sweep = parseHandSweep(fields, QStringLiteral("sweep"), &badSweep);
         if (!sweep)
-            return error(why);
+            return error(badSweep.describe());
         SimRefusal refusal;
         if (!bus->hand().sweepServo(*index, sweep->from, sweep->to, sweep->seconds, sweep->cycles,
                                     sweep->way, &refusal))

@@ -34,10 +34,10 @@ std::optional<FeetechServoSpec> parseServoSpec(const QString &text, const QStrin
                                                OptionError *error);
 // FIELDS are ID FROM TO SECONDS [CYCLES] [up|down], already split; `source` names them in errors.
 std::optional<HandSweep> parseHandSweep(const QStringList &fields, const QString &source,
-                                        QString *error);
+                                        OptionError *error);
 // The built-in robot templates servosim plays: so100, so101 (follower arms), so100-leader,
-// so101-leader. Nothing and *error for another name.
-std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, QString *error);
+// so101-leader. Nothing and *error (UnknownRobot) for another name.
+std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, OptionError *error);
 // The robot's joints as servos on the bus, at the template's rate.
 QVector<FeetechServoSpec> robotServos(const feetech::RobotTemplate &robot);
 
