@@ -18,9 +18,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
 
     const QString path = QStringLiteral("fuzz.json");
     const QByteArray json = fuzz::input(data, size);
-    QString error;
-    if (!bus.loadStateJson(json, path, &error)) {
-        FUZZ_CHECK(error.contains(path));
+    sim::SimRefusal why;
+    if (!bus.loadStateJson(json, path, &why)) {
+        FUZZ_CHECK(why.file() == path);
+        FUZZ_CHECK(why.describe().contains(path));
         FUZZ_CHECK(bus.stateJson() == pristine);
         return 0;
     }
@@ -39,8 +40,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     }
     // What it saves now reads back as the same state.
     const QByteArray saved = bus.stateJson();
-    FUZZ_CHECK(bus.loadStateJson(saved, path, &error));
+    FUZZ_CHECK(bus.loadStateJson(saved, path, &why));
     FUZZ_CHECK(bus.stateJson() == saved);
-    FUZZ_CHECK(bus.loadStateJson(pristine, path, &error));
+    FUZZ_CHECK(bus.loadStateJson(pristine, path, &why));
     return 0;
 }

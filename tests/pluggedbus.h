@@ -48,13 +48,14 @@ protected:
     // Plugs a powered-up servo in (last in the bus's order); false and a warning when refused.
     bool plug(quint8 id, const QString &model, qint32 baud)
     {
-        QString error;
+        sim::SimRefusal why;
         bool plugged = false;
         m_simulator->call([&](sim::Simulator &simulator) {
-            plugged = simulator.feetechBus()->plug({id, model, baud}, &error);
+            plugged = simulator.feetechBus()->plug({id, model, baud}, &why);
         });
         if (!plugged)
-            qWarning("could not plug %s at ID %d: %s", qPrintable(model), id, qPrintable(error));
+            qWarning("could not plug %s at ID %d: %s", qPrintable(model), id,
+                     qPrintable(why.describe()));
         return plugged;
     }
 

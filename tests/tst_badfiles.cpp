@@ -109,7 +109,11 @@ private slots:
             QStringLiteral("simulator state"), QStringLiteral("state.json"),
             [](const QString &path) { return simulatedBus().saveState(path, nullptr); },
             [](const QString &path, QString *error) {
-                return simulatedBus().loadState(path, error);
+                sim::SimRefusal why;
+                if (simulatedBus().loadState(path, &why))
+                    return true;
+                *error = why.describe();
+                return false;
             });
     }
 

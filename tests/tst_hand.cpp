@@ -5,6 +5,7 @@
 #include <QtTest>
 
 using sim::Hand;
+using sim::SimRefusal;
 using sim::VirtualFeetechBus;
 
 namespace {
@@ -13,13 +14,13 @@ constexpr qint64 kMs = 1000;
 
 std::unique_ptr<VirtualFeetechBus> armBus()
 {
-    QString error;
+    SimRefusal why;
     auto bus = VirtualFeetechBus::create({{1, QStringLiteral("STS3215"), 0},
                                           {2, QStringLiteral("STS3215"), 0},
                                           {3, QStringLiteral("SCS15"), 0}},
-                                         &error);
+                                         &why);
     if (!bus)
-        qFatal("%s", qPrintable(error));
+        qFatal("%s", qPrintable(why.describe()));
     return bus;
 }
 
@@ -38,8 +39,8 @@ private slots:
     void turnPutsTheHornAtThePresentPositionAtOnce()
     {
         auto bus = armBus();
-        QString error;
-        QVERIFY2(bus->hand().turn(1, 1000, &error), qPrintable(error));
+        SimRefusal why;
+        QVERIFY2(bus->hand().turn(1, 1000, &why), qPrintable(why.describe()));
         QCOMPARE(present(*bus, 1), 1000);
         QVERIFY(bus->hand().turn(3, 1023));
         QCOMPARE(present(*bus, 3), 1023);
@@ -57,13 +58,16 @@ private slots:
     void turnRefusesPositionsOutsideTheServosRange()
     {
         auto bus = armBus();
-        QString error;
-        QVERIFY(!bus->hand().turn(1, 4096, &error));
-        QVERIFY2(error.contains(QLatin1String("0 to 4095")), qPrintable(error));
-        QVERIFY(!bus->hand().turn(3, 1024, &error));
-        QVERIFY2(error.contains(QLatin1String("0 to 1023")), qPrintable(error));
-        QVERIFY(!bus->hand().turn(9, 100, &error));
-        QVERIFY2(error.contains(QLatin1String("no servo has ID 9")), qPrintable(error));
+        SimRefusal why;
+        QVERIFY(!bus->hand().turn(1, 4096, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::PositionOutOfRange);
+        QCOMPARE(why.other(), 4095);
+        QVERIFY(!bus->hand().turn(3, 1024, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::PositionOutOfRange);
+        QCOMPARE(why.other(), 1023);
+        QVERIFY(!bus->hand().turn(9, 100, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::NoSuchId);
+        QCOMPARE(why.servo(), 9);
     }
 
     void aJointWithTorqueOnResistsTheHand()
@@ -71,11 +75,11 @@ private slots:
         auto bus = armBus();
         bus->findServo(2)->setValue(u"torque_enable", 1);
         const int before = present(*bus, 2);
-        QString error;
-        QVERIFY(!bus->hand().turn(2, before + 500, &error));
-        QVERIFY2(error.contains(QLatin1String("torque on")), qPrintable(error));
-        QVERIFY(!bus->hand().sweep(2, 100, 200, 1.0, 1, Hand::Way::Direct, &error));
-        QVERIFY2(error.contains(QLatin1String("torque on")), qPrintable(error));
+        SimRefusal why;
+        QVERIFY(!bus->hand().turn(2, before + 500, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::TorqueOn);
+        QVERIFY(!bus->hand().sweep(2, 100, 200, 1.0, 1, Hand::Way::Direct, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::TorqueOn);
         QCOMPARE(present(*bus, 2), before);
     }
 
@@ -160,19 +164,19 @@ private slots:
     void anScsServoHasNoSeamToCross()
     {
         auto bus = armBus();
-        QString error;
-        QVERIFY(!bus->hand().sweep(3, 900, 100, 1.0, 1, Hand::Way::Up, &error));
-        QVERIFY2(error.contains(QLatin1String("SCS")), qPrintable(error));
+        SimRefusal why;
+        QVERIFY(!bus->hand().sweep(3, 900, 100, 1.0, 1, Hand::Way::Up, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::NoSeam);
     }
 
     void sweepRefusesBadTimesAndCycles()
     {
         auto bus = armBus();
-        QString error;
-        QVERIFY(!bus->hand().sweep(1, 0, 100, 0.0, 1, Hand::Way::Direct, &error));
-        QVERIFY2(error.contains(QLatin1String("seconds")), qPrintable(error));
-        QVERIFY(!bus->hand().sweep(1, 0, 100, 1.0, -1, Hand::Way::Direct, &error));
-        QVERIFY2(error.contains(QLatin1String("times")), qPrintable(error));
+        SimRefusal why;
+        QVERIFY(!bus->hand().sweep(1, 0, 100, 0.0, 1, Hand::Way::Direct, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::SweepTooLong);
+        QVERIFY(!bus->hand().sweep(1, 0, 100, 1.0, -1, Hand::Way::Direct, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::TooManyCycles);
     }
 
     void torqueComingOnMidSweepMakesTheHandLetGo()
@@ -219,26 +223,29 @@ private slots:
     void servosSharingAnIdAreTurnedByPlaceNotById()
     {
         auto bus = armBus();
-        QString error;
-        QVERIFY2(bus->setServoId(1, 1, &error), qPrintable(error));
+        SimRefusal why;
+        QVERIFY2(bus->setServoId(1, 1, &why), qPrintable(why.describe()));
         QCOMPARE(bus->servo(1).id(), quint8(1));
-        QVERIFY(!bus->hand().turn(1, 100, &error));
-        QVERIFY2(error.contains(QLatin1String("#1, #2")), qPrintable(error));
-        QVERIFY(bus->hand().turnServo(1, 100, &error));
+        QVERIFY(!bus->hand().turn(1, 100, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::SharedId);
+        QCOMPARE(why.name(), QStringLiteral("#1, #2"));
+        QVERIFY(bus->hand().turnServo(1, 100, &why));
         QCOMPARE(bus->servo(1).value(u"present_position"), 100);
     }
 
     void putAtIdSurvivesAPowerCycle()
     {
         auto bus = armBus();
-        QString error;
-        QVERIFY(bus->setServoId(2, 7, &error));
+        SimRefusal why;
+        QVERIFY(bus->setServoId(2, 7, &why));
         bus->powerCycle();
         QCOMPARE(bus->servo(2).id(), quint8(7));
-        QVERIFY(!bus->setServoId(2, 254, &error));
-        QVERIFY2(error.contains(QLatin1String("out of range")), qPrintable(error));
-        QVERIFY(!bus->setServoId(5, 1, &error));
-        QVERIFY2(error.contains(QLatin1String("#6")), qPrintable(error));
+        QVERIFY(!bus->setServoId(2, 254, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::IdOutOfRange);
+        QCOMPARE(why.servo(), 254);
+        QVERIFY(!bus->setServoId(5, 1, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::NoSuchPlace);
+        QCOMPARE(why.servo(), 6);
     }
 };
 

@@ -150,9 +150,10 @@ private slots:
         sim::SimulatorThread simulator;
         QString error;
         auto opts = options(QStringLiteral("faults"));
+        sim::OptionError badFaults;
         const auto faults =
-            sim::FaultSettings::parse(QStringLiteral("drop=0.2,corrupt=0.2"), &error);
-        QVERIFY2(faults, qPrintable(error));
+            sim::FaultSettings::parse(QStringLiteral("drop=0.2,corrupt=0.2"), &badFaults);
+        QVERIFY2(faults, qPrintable(badFaults.describe()));
         opts.faults = *faults;
         opts.seed = 7;
         // Values no other query's reply holds, so a reply taken for the wrong query shows.

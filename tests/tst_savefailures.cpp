@@ -156,7 +156,11 @@ private slots:
         QTest::newRow("simulator state")
             << QStringLiteral("bus.json") << Save([](const QString &path, QString *error) {
                    sim::VirtualFeetechBus bus({{1, QStringLiteral("STS3215"), 0}});
-                   return bus.saveState(path, error);
+                   sim::SimRefusal why;
+                   if (bus.saveState(path, &why))
+                       return true;
+                   *error = why.describe();
+                   return false;
                });
         QTest::newRow("telemetry recording") << QStringLiteral("run.csv") << Save(recordTelemetry);
     }

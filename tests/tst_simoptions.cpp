@@ -102,6 +102,53 @@ private slots:
         QVERIFY2(error.contains(expected), qPrintable(error));
     }
 
+    void badOptionValuesSayWhyByCode()
+    {
+        using Code = sim::OptionError::Code;
+        sim::OptionError why;
+        const auto faultCode = [&why](const char *text) {
+            return sim::FaultSettings::parse(QString::fromLatin1(text), &why) ? Code::None
+                                                                              : why.code();
+        };
+        QCOMPARE(faultCode("drop"), Code::FaultNotNameValue);
+        QCOMPARE(faultCode("drop=x"), Code::FaultNotANumber);
+        QCOMPARE(faultCode("delay=70000"), Code::FaultDelayOutOfRange);
+        QCOMPARE(faultCode("drop=2"), Code::FaultNotAProbability);
+        QCOMPARE(faultCode("spill=0.1"), Code::UnknownFault);
+        QCOMPARE(why.text(), QStringLiteral("spill"));
+        QCOMPARE(faultCode("drop=0.5,delay=3"), Code::None);
+
+        const auto specCode = [&why](const char *text) {
+            return sim::parseServoSpec(QString::fromLatin1(text), QStringLiteral("--servo"), &why)
+                ? Code::None
+                : why.code();
+        };
+        QCOMPARE(specCode("x"), Code::NotAServoSpec);
+        QCOMPARE(specCode("254:STS3215"), Code::ServoIdOverMax);
+        QCOMPARE(why.value(), 254);
+        QCOMPARE(specCode("1:"), Code::ServoWithoutModel);
+        QCOMPARE(specCode("1:STS3215@0"), Code::ServoBadBaud);
+        QCOMPARE(why.source(), QStringLiteral("--servo"));
+        QCOMPARE(specCode("1:STS3215@500000"), Code::None);
+
+        const auto sweepCode = [&why](const char *fields) {
+            return sim::parseHandSweep(QString::fromLatin1(fields).split(u':'),
+                                       QStringLiteral("--hand"), &why)
+                ? Code::None
+                : why.code();
+        };
+        QCOMPARE(sweepCode("1:0:100"), Code::SweepFields);
+        QCOMPARE(sweepCode("x:0:100:1"), Code::SweepBadId);
+        QCOMPARE(sweepCode("1:0:4096:1"), Code::SweepBadPositions);
+        QCOMPARE(sweepCode("1:0:100:0"), Code::SweepBadSeconds);
+        QCOMPARE(sweepCode("1:0:100:1:many"), Code::SweepBadCycles);
+        QCOMPARE(sweepCode("1:0:100:1:2:up"), Code::None);
+
+        QVERIFY(!sim::simulatedRobot(QStringLiteral("so102"), &why));
+        QCOMPARE(why.code(), Code::UnknownRobot);
+        QVERIFY(sim::simulatedRobot(QStringLiteral("SO101"), &why));
+    }
+
     void feetechOnlyOptionsAreRefusedForPtk_data()
     {
         QTest::addColumn<QStringList>("arguments");

@@ -42,9 +42,9 @@ private slots:
     void aLostRequestIsNeverHeardUntilTheFaultsAreCleared()
     {
         auto opts = options(QStringLiteral("lost"));
-        QString error;
+        sim::OptionError error;
         const auto lost = sim::FaultSettings::parse(QStringLiteral("lost=1"), &error);
-        QVERIFY2(lost && lost->any(), qPrintable(error));
+        QVERIFY2(lost && lost->any(), qPrintable(error.describe()));
         opts.faults = *lost;
         testsupport::ConnectedSimulator simulator;
         QVERIFY2(simulator.start(opts, 115200), qPrintable(simulator.error));
@@ -152,9 +152,9 @@ private slots:
     {
         const auto stream = [&](const QString &name, quint32 seed) {
             auto opts = options(name);
-            QString error;
             opts.faults = *sim::FaultSettings::parse(
-                QStringLiteral("drop=0.2,corrupt=0.2,truncate=0.1,noise=0.1,delay=3"), &error);
+                QStringLiteral("drop=0.2,corrupt=0.2,truncate=0.1,noise=0.1,delay=3"), nullptr);
+            QString error;
             opts.seed = seed;
             sim::SimulatorThread simulator;
             if (!simulator.start(opts, &error))

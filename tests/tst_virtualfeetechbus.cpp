@@ -10,8 +10,10 @@
 
 using feetech::Instruction;
 using sim::Response;
+using sim::SimRefusal;
 using sim::VirtualFeetechBus;
 
+Q_DECLARE_METATYPE(sim::SimRefusal::Code)
 Q_DECLARE_METATYPE(sim::VirtualFeetechBus::ServoSpec)
 
 namespace {
@@ -218,11 +220,12 @@ private slots:
     void twoServosAtOneIdPingCleanlyButTheirPositionReadIsGarbled()
     {
         const Specs twins {{1, QStringLiteral("STS3215"), 0}, {1, QStringLiteral("STS3215"), 0}};
-        QString error;
-        QVERIFY(!VirtualFeetechBus::validate(twins, &error));
-        QVERIFY(error.contains(QStringLiteral("ID 1")));
-        auto bus = VirtualFeetechBus::create(twins, &error, VirtualFeetechBus::SharedIds::Allow);
-        QVERIFY2(bus, qPrintable(error));
+        SimRefusal why;
+        QVERIFY(!VirtualFeetechBus::validate(twins, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::IdTaken);
+        QCOMPARE(why.servo(), 1);
+        auto bus = VirtualFeetechBus::create(twins, &why, VirtualFeetechBus::SharedIds::Allow);
+        QVERIFY2(bus, qPrintable(why.describe()));
 
         QCOMPARE(bus->handleFrame(feetech::ping(1), k1M, 0).first().bytes, feetech::status(1, 0));
         const auto identity = bus->handleFrame(feetech::read(1, 3, 2), k1M, 0);
@@ -236,13 +239,14 @@ private slots:
     void servosPluggedInAndOutWhileRunningAnswerOnlyWhilePresent()
     {
         VirtualFeetechBus bus(Specs {{1, QStringLiteral("STS3215"), 0}});
-        QString error;
-        QVERIFY(!bus.plug({7, QStringLiteral("NoSuchServo"), 0}, &error));
-        QVERIFY(error.contains(QStringLiteral("NoSuchServo")));
-        QVERIFY2(bus.plug({7, QStringLiteral("STS3215"), 0}, &error), qPrintable(error));
+        SimRefusal why;
+        QVERIFY(!bus.plug({7, QStringLiteral("NoSuchServo"), 0}, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::UnknownModel);
+        QCOMPARE(why.name(), QStringLiteral("NoSuchServo"));
+        QVERIFY2(bus.plug({7, QStringLiteral("STS3215"), 0}, &why), qPrintable(why.describe()));
         QCOMPARE(bus.servoCount(), 2);
         QCOMPARE(replyIds(bus.handleFrame(feetech::ping(7), k1M, 0)), QVector<quint8> {7});
-        QVERIFY(bus.plug({1, QStringLiteral("STS3215"), 0}, &error)); // a second ID 1
+        QVERIFY(bus.plug({1, QStringLiteral("STS3215"), 0}, &why)); // a second ID 1
         QVERIFY(!feetech::decodePacket(
             bus.handleFrame(feetech::read(1, 56, 2), k1M, kMs).first().bytes));
 
@@ -303,12 +307,12 @@ private slots:
             const auto replies = bus.handleFrame(feetech::write(1, 5, byte(10)), k1M, 0);
             QCOMPARE(replyIds(replies), QVector<quint8> {1});
             bus.handleFrame(feetech::write(2, 5, byte(20)), k1M, 0); // locked: lost
-            QString error;
-            QVERIFY2(bus.saveState(path, &error), qPrintable(error));
+            SimRefusal why;
+            QVERIFY2(bus.saveState(path, &why), qPrintable(why.describe()));
         }
         VirtualFeetechBus restarted(mixedSpecs());
-        QString error;
-        QVERIFY2(restarted.loadState(path, &error), qPrintable(error));
+        SimRefusal why;
+        QVERIFY2(restarted.loadState(path, &why), qPrintable(why.describe()));
         QVERIFY(restarted.handleFrame(feetech::ping(1), k1M, 0).isEmpty());
         QCOMPARE(replyIds(restarted.handleFrame(feetech::ping(10), k1M, 0)), QVector<quint8> {10});
         QCOMPARE(replyIds(restarted.handleFrame(feetech::ping(2), k1M, 0)), QVector<quint8> {2});
@@ -328,8 +332,8 @@ private slots:
         QVERIFY(QFile::exists(path));
 
         VirtualFeetechBus restarted(mixedSpecs());
-        QString error;
-        QVERIFY2(restarted.loadState(path, &error), qPrintable(error));
+        SimRefusal why;
+        QVERIFY2(restarted.loadState(path, &why), qPrintable(why.describe()));
         QCOMPARE(restarted.servo(0).value(u"max_temperature"), 60);
     }
 
@@ -343,12 +347,14 @@ private slots:
         Specs other = mixedSpecs();
         other[1].model = QStringLiteral("SCS40");
         VirtualFeetechBus bus(other);
-        QString error;
-        QVERIFY(!bus.loadState(path, &error));
-        QVERIFY2(error.contains(QStringLiteral("SCS15")), qPrintable(error));
+        SimRefusal why;
+        QVERIFY(!bus.loadState(path, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::StateModelDiffers);
+        QCOMPARE(why.name(), QStringLiteral("SCS15"));
 
         VirtualFeetechBus shorter(Specs {{1, QStringLiteral("STS3215"), 0}});
-        QVERIFY(!shorter.loadState(path, &error));
+        QVERIFY(!shorter.loadState(path, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::StateServoCount);
     }
 
     void loadRejectsAFileThatIsNoState()
@@ -360,10 +366,12 @@ private slots:
         file.write(QJsonDocument(QJsonObject {{QStringLiteral("format"), 2}}).toJson());
         file.close();
         VirtualFeetechBus bus(mixedSpecs());
-        QString error;
-        QVERIFY(!bus.loadState(path, &error));
-        QVERIFY(!error.isEmpty());
-        QVERIFY(!bus.loadState(dir.filePath(QStringLiteral("missing.json")), &error));
+        SimRefusal why;
+        QVERIFY(!bus.loadState(path, &why));
+        QCOMPARE(why.code(), SimRefusal::Code::StateNotThisFormat);
+        QVERIFY(!why.describe().isEmpty());
+        QVERIFY(!bus.loadState(dir.filePath(QStringLiteral("missing.json")), &why));
+        QCOMPARE(why.code(), SimRefusal::Code::CannotReadState);
     }
 
     void aStateIsReadFromTextAsFromItsFile()
@@ -379,8 +387,8 @@ private slots:
         QCOMPARE(file.readAll(), saved.stateJson()); // the file holds exactly the text
 
         VirtualFeetechBus fromText(mixedSpecs());
-        QString error;
-        QVERIFY2(fromText.loadStateJson(saved.stateJson(), path, &error), qPrintable(error));
+        SimRefusal why;
+        QVERIFY2(fromText.loadStateJson(saved.stateJson(), path, &why), qPrintable(why.describe()));
         QCOMPARE(fromText.servo(0).value(u"max_temperature"), 60);
         QCOMPARE(fromText.stateJson(), saved.stateJson());
     }
@@ -392,10 +400,11 @@ private slots:
         QByteArray wrongImage = before;
         wrongImage.replace("\"eeprom\": \"", "\"eeprom\": \"zz");
         for (const QByteArray &text : {QByteArray("{\"format\": 1, \"servos\": ["), wrongImage}) {
-            QString error;
-            QVERIFY(!bus.loadStateJson(text, QStringLiteral("bench.json"), &error));
-            QVERIFY2(error.startsWith(QStringLiteral("state file bench.json: ")),
-                     qPrintable(error));
+            SimRefusal why;
+            QVERIFY(!bus.loadStateJson(text, QStringLiteral("bench.json"), &why));
+            QCOMPARE(why.file(), QStringLiteral("bench.json"));
+            QVERIFY2(why.describe().startsWith(QStringLiteral("state file bench.json: ")),
+                     qPrintable(why.describe()));
             QCOMPARE(bus.stateJson(), before);
         }
     }
@@ -403,29 +412,34 @@ private slots:
     void validationRejectsBadSpecs_data()
     {
         QTest::addColumn<Specs>("specs");
+        QTest::addColumn<SimRefusal::Code>("code");
         QTest::addColumn<QString>("mention");
         QTest::newRow("unknown model")
-            << Specs {{1, QStringLiteral("XYZ123"), 0}} << QStringLiteral("XYZ123");
+            << Specs {{1, QStringLiteral("XYZ123"), 0}} << SimRefusal::Code::UnknownModel
+            << QStringLiteral("XYZ123");
         QTest::newRow("model without a table")
-            << Specs {{1, QStringLiteral("SCS15-2"), 0}} << QStringLiteral("SCS15-2");
+            << Specs {{1, QStringLiteral("SCS15-2"), 0}} << SimRefusal::Code::NoRegisterTable
+            << QStringLiteral("SCS15-2");
         QTest::newRow("duplicate id at one baud")
             << Specs {{5, QStringLiteral("STS3215"), 0}, {5, QStringLiteral("SCS15"), 1000000}}
-            << QStringLiteral("5");
+            << SimRefusal::Code::IdTaken << QStringLiteral("5");
         QTest::newRow("id 254") << Specs {{254, QStringLiteral("STS3215"), 0}}
-                                << QStringLiteral("254");
+                                << SimRefusal::Code::IdOutOfRange << QStringLiteral("254");
         QTest::newRow("bad baud") << Specs {{1, QStringLiteral("STS3215"), 9600}}
-                                  << QStringLiteral("9600");
-        QTest::newRow("no servos") << Specs {} << QString();
+                                  << SimRefusal::Code::NotAFeetechRate << QStringLiteral("9600");
+        QTest::newRow("no servos") << Specs {} << SimRefusal::Code::NoServos << QString();
     }
 
     void validationRejectsBadSpecs()
     {
         QFETCH(Specs, specs);
+        QFETCH(SimRefusal::Code, code);
         QFETCH(QString, mention);
-        QString error;
-        QVERIFY(!VirtualFeetechBus::validate(specs, &error));
-        QVERIFY(error.contains(mention));
-        QVERIFY(!error.isEmpty());
+        SimRefusal why;
+        QVERIFY(!VirtualFeetechBus::validate(specs, &why));
+        QCOMPARE(why.code(), code);
+        QVERIFY(why.describe().contains(mention)); // the sentence names what is wrong
+        QVERIFY(!why.describe().isEmpty());
         QVERIFY(!VirtualFeetechBus::create(specs, nullptr));
     }
 
@@ -433,10 +447,10 @@ private slots:
     {
         const Specs specs {{5, QStringLiteral("STS3215"), 0},
                            {5, QStringLiteral("STS3215"), 500000}};
-        QString error;
-        QVERIFY2(VirtualFeetechBus::validate(specs, &error), qPrintable(error));
-        QVERIFY(VirtualFeetechBus::validate(mixedSpecs(), &error));
-        QVERIFY(VirtualFeetechBus::create(specs, &error));
+        SimRefusal why;
+        QVERIFY2(VirtualFeetechBus::validate(specs, &why), qPrintable(why.describe()));
+        QVERIFY(VirtualFeetechBus::validate(mixedSpecs(), &why));
+        QVERIFY(VirtualFeetechBus::create(specs, &why));
     }
 
     void modelsResolveByNameNumberOrFamily()

@@ -3135,10 +3135,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Servo #%1 (ID %2)</translation>
     </message>
     <message>
-        <source>there is no servo #%1 on the bus (it has %2)</source>
-        <translation>am Bus gibt es kein Servo #%1 (er hat %2)</translation>
-    </message>
-    <message>
         <source>position %1 is out of range: %2 turns from 0 to %3</source>
         <translation>Position %1 liegt außerhalb des Bereichs: %2 dreht von 0 bis %3</translation>
     </message>

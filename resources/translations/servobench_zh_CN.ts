@@ -3122,10 +3122,6 @@ An ID in use is refused.</source>
         <translation>舵机 #%1（ID %2）</translation>
     </message>
     <message>
-        <source>there is no servo #%1 on the bus (it has %2)</source>
-        <translation>总线上没有舵机 #%1（总线上有 %2 个）</translation>
-    </message>
-    <message>
         <source>position %1 is out of range: %2 turns from 0 to %3</source>
         <translation>位置 %1 超出范围：%2 的转动范围是 0 到 %3</translation>
     </message>

@@ -254,8 +254,9 @@ bool SimulatorDock::onBus(const BusWork &work, const QString &done)
             simulator.advanceNow();
             if (sim::VirtualFeetechBus *bus = simulator.feetechBus()) {
                 problem.clear();
-                if (!work(*bus, &problem) && problem.isEmpty())
-                    problem = tr("The simulator refused.");
+                sim::SimRefusal why;
+                if (!work(*bus, &why))
+                    problem = why ? why.describe() : tr("The simulator refused.");
             }
         });
     }
@@ -265,7 +266,7 @@ bool SimulatorDock::onBus(const BusWork &work, const QString &done)
 }
 
 bool SimulatorDock::onSelected(
-    const std::function<bool(sim::VirtualFeetechBus &, int, QString *)> &work,
+    const std::function<bool(sim::VirtualFeetechBus &, int, sim::SimRefusal *)> &work,
     const std::function<QString(int)> &done)
 {
     const int index = selectedIndex();
@@ -274,7 +275,7 @@ bool SimulatorDock::onSelected(
         return false;
     }
     return onBus(
-        [&](sim::VirtualFeetechBus &bus, QString *error) { return work(bus, index, error); },
+        [&](sim::VirtualFeetechBus &bus, sim::SimRefusal *why) { return work(bus, index, why); },
         done(index));
 }
 
@@ -384,8 +385,8 @@ void SimulatorDock::updateSelection()
 bool SimulatorDock::turnSelected(int position)
 {
     return onSelected(
-        [position](sim::VirtualFeetechBus &bus, int index, QString *error) {
-            return bus.hand().turnServo(index, position, error);
+        [position](sim::VirtualFeetechBus &bus, int index, sim::SimRefusal *why) {
+            return bus.hand().turnServo(index, position, why);
         },
         [this, position](int index) {
             return tr("Turned servo #%1 to %2.").arg(index + 1).arg(position);
@@ -395,9 +396,9 @@ bool SimulatorDock::turnSelected(int position)
 bool SimulatorDock::sweepSelected(int from, int to, double seconds, int cycles)
 {
     return onSelected(
-        [=](sim::VirtualFeetechBus &bus, int index, QString *error) {
+        [=](sim::VirtualFeetechBus &bus, int index, sim::SimRefusal *why) {
             return bus.hand().sweepServo(index, from, to, seconds, cycles, sim::Hand::Way::Direct,
-                                         error);
+                                         why);
         },
         [=](int index) {
             return tr("The hand sweeps servo #%1 from %2 to %3 and back every %4 s.")
@@ -411,19 +412,23 @@ bool SimulatorDock::sweepSelected(int from, int to, double seconds, int cycles)
 bool SimulatorDock::playBenchCase(BenchCases::Case benchCase)
 {
     if (!BenchCases::needsServo(benchCase)) {
-        return onBus([benchCase](sim::VirtualFeetechBus &bus,
-                                 QString *) { return BenchCases::play(benchCase, bus, -1); },
-                     BenchCases::outcome(benchCase, -1));
+        return onBus(
+            [benchCase](sim::VirtualFeetechBus &bus, sim::SimRefusal *) {
+                return BenchCases::play(benchCase, bus, -1);
+            },
+            BenchCases::outcome(benchCase, -1));
     }
-    return onSelected([benchCase](sim::VirtualFeetechBus &bus, int index,
-                                  QString *) { return BenchCases::play(benchCase, bus, index); },
-                      [benchCase](int index) { return BenchCases::outcome(benchCase, index); });
+    return onSelected(
+        [benchCase](sim::VirtualFeetechBus &bus, int index, sim::SimRefusal *) {
+            return BenchCases::play(benchCase, bus, index);
+        },
+        [benchCase](int index) { return BenchCases::outcome(benchCase, index); });
 }
 
 bool SimulatorDock::letGo()
 {
     return onBus(
-        [](sim::VirtualFeetechBus &bus, QString *) {
+        [](sim::VirtualFeetechBus &bus, sim::SimRefusal *) {
             bus.hand().stop();
             return true;
         },
@@ -433,8 +438,8 @@ bool SimulatorDock::letGo()
 bool SimulatorDock::plugFactoryNew(const QString &model)
 {
     return onBus(
-        [&model](sim::VirtualFeetechBus &bus, QString *error) {
-            return bus.plug({1, model, 0}, error);
+        [&model](sim::VirtualFeetechBus &bus, sim::SimRefusal *why) {
+            return bus.plug({1, model, 0}, why);
         },
         tr("Plugged in a factory-new %1 at ID 1.").arg(model));
 }
@@ -442,15 +447,15 @@ bool SimulatorDock::plugFactoryNew(const QString &model)
 bool SimulatorDock::unplugSelected()
 {
     return onSelected(
-        [](sim::VirtualFeetechBus &bus, int index, QString *) { return bus.unplug(index); },
+        [](sim::VirtualFeetechBus &bus, int index, sim::SimRefusal *) { return bus.unplug(index); },
         [this](int index) { return tr("Unplugged servo #%1.").arg(index + 1); });
 }
 
 bool SimulatorDock::putSelectedAtId(int id)
 {
     return onSelected(
-        [id](sim::VirtualFeetechBus &bus, int index, QString *error) {
-            return bus.setServoId(index, id, error);
+        [id](sim::VirtualFeetechBus &bus, int index, sim::SimRefusal *why) {
+            return bus.setServoId(index, id, why);
         },
         [this, id](int index) { return tr("Servo #%1 is now at ID %2.").arg(index + 1).arg(id); });
 }
@@ -458,7 +463,7 @@ bool SimulatorDock::putSelectedAtId(int id)
 bool SimulatorDock::powerCycle()
 {
     return onBus(
-        [](sim::VirtualFeetechBus &bus, QString *) {
+        [](sim::VirtualFeetechBus &bus, sim::SimRefusal *) {
             bus.powerCycle();
             return true;
         },

@@ -20,6 +20,7 @@ class QTableWidget;
 class QTimer;
 
 namespace sim {
+class SimRefusal;
 class SimulatorThread;
 class VirtualFeetechBus;
 } // namespace sim
@@ -77,12 +78,13 @@ private:
     QWidget *buildBenchCases();
     // Runs `work` on the bus in the simulator's thread and notes how it went: `done`, or the
     // error it gave; false without a bus.
-    using BusWork = std::function<bool(sim::VirtualFeetechBus &, QString *error)>;
+    using BusWork = std::function<bool(sim::VirtualFeetechBus &, sim::SimRefusal *why)>;
     bool onBus(const BusWork &work, const QString &done);
     // The same on the selected servo, whose index `work` and `done` get; false and a note when
     // none is selected.
-    bool onSelected(const std::function<bool(sim::VirtualFeetechBus &, int, QString *)> &work,
-                    const std::function<QString(int)> &done);
+    bool
+    onSelected(const std::function<bool(sim::VirtualFeetechBus &, int, sim::SimRefusal *)> &work,
+               const std::function<QString(int)> &done);
     void showNote(const QString &text, bool problem);
     void updateSelection();
     void choosePlug();

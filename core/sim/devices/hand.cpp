@@ -32,10 +32,9 @@ int maxPosition(const VirtualFeetechServo &servo)
     return fullCircle(servo) ? ServoMotion::kFullCircleSteps - 1 : ServoMotion::kScsMaxPosition;
 }
 
-bool fail(QString *error, const QString &message)
+bool fail(const SimRefusal &refusal, SimRefusal *why)
 {
-    if (error)
-        *error = message;
+    refused(refusal, why);
     return false;
 }
 
@@ -45,39 +44,38 @@ Hand::Hand(VirtualFeetechBus &bus)
     : m_bus(bus)
 { }
 
-QString Hand::describe(int index) const
+QString Hand::describe(int index, int id)
 {
-    return Tr::tr("servo #%1 (ID %2)").arg(index + 1).arg(m_bus.servo(index).id());
+    return Tr::tr("servo #%1 (ID %2)").arg(index + 1).arg(id);
 }
 
-bool Hand::checkServo(int index, std::initializer_list<int> positions, QString *error) const
+QString Hand::describe(int index) const
+{
+    return describe(index, m_bus.servo(index).id());
+}
+
+bool Hand::checkServo(int index, std::initializer_list<int> positions, SimRefusal *why) const
 {
     if (index < 0 || index >= m_bus.servoCount())
-        return fail(error,
-                    Tr::tr("there is no servo #%1 on the bus (it has %2)")
-                        .arg(index + 1)
-                        .arg(m_bus.servoCount()));
-    if (holdsTorque(index, error))
+        return fail(SimRefusal(SimRefusal::Code::NoSuchPlace, index + 1, m_bus.servoCount()), why);
+    if (holdsTorque(index, why))
         return false;
     const int maximum = maxPosition(m_bus.servo(index));
     for (const int position : positions) {
         if (position < 0 || position > maximum)
-            return fail(error,
-                        Tr::tr("position %1 is out of range: %2 turns from 0 to %3")
-                            .arg(position)
-                            .arg(describe(index))
-                            .arg(maximum));
+            return fail(SimRefusal::ofServo(SimRefusal::Code::PositionOutOfRange, index + 1,
+                                            m_bus.servo(index).id(), position, maximum),
+                        why);
     }
     return true;
 }
 
-bool Hand::holdsTorque(int index, QString *error) const
+bool Hand::holdsTorque(int index, SimRefusal *why) const
 {
     if (m_bus.servo(index).value(u"torque_enable") == 0)
         return false;
-    fail(error,
-         Tr::tr("%1 has its torque on: it holds its position and the hand cannot turn it")
-             .arg(describe(index)));
+    refused(SimRefusal::ofServo(SimRefusal::Code::TorqueOn, index + 1, m_bus.servo(index).id()),
+            why);
     return true;
 }
 
@@ -92,15 +90,15 @@ void Hand::place(int index, double horn)
     m_bus.servo(index).setPhysicalPosition(horn);
 }
 
-bool Hand::turn(quint8 id, int position, QString *error)
+bool Hand::turn(quint8 id, int position, SimRefusal *why)
 {
-    const auto index = m_bus.uniqueIndexOf(id, error);
-    return index && turnServo(*index, position, error);
+    const auto index = m_bus.uniqueIndexOf(id, why);
+    return index && turnServo(*index, position, why);
 }
 
-bool Hand::turnServo(int index, int position, QString *error)
+bool Hand::turnServo(int index, int position, SimRefusal *why)
 {
-    if (!checkServo(index, {position}, error))
+    if (!checkServo(index, {position}, why))
         return false;
     // A turn by hand ends a sweep of the same joint: one hand, one gesture.
     letGo(index);
@@ -108,33 +106,29 @@ bool Hand::turnServo(int index, int position, QString *error)
     return true;
 }
 
-bool Hand::sweep(quint8 id, int from, int to, double seconds, int cycles, Way way, QString *error)
+bool Hand::sweep(quint8 id, int from, int to, double seconds, int cycles, Way way, SimRefusal *why)
 {
-    const auto index = m_bus.uniqueIndexOf(id, error);
-    return index && sweepServo(*index, from, to, seconds, cycles, way, error);
+    const auto index = m_bus.uniqueIndexOf(id, why);
+    return index && sweepServo(*index, from, to, seconds, cycles, way, why);
 }
 
 bool Hand::sweepServo(int index, int from, int to, double seconds, int cycles, Way way,
-                      QString *error)
+                      SimRefusal *why)
 {
-    if (!checkServo(index, {from, to}, error))
+    if (!checkServo(index, {from, to}, why))
         return false;
     if (!(seconds > 0.0) || seconds > kMaxSweepSeconds)
-        return fail(
-            error,
-            Tr::tr("a sweep takes more than 0 and at most %1 seconds").arg(kMaxSweepSeconds));
+        return fail(SimRefusal(SimRefusal::Code::SweepTooLong), why);
     if (cycles < 0 || cycles > kMaxSweepCycles)
-        return fail(error,
-                    Tr::tr("a sweep runs 0 (until released) to %1 times").arg(kMaxSweepCycles));
+        return fail(SimRefusal(SimRefusal::Code::TooManyCycles), why);
     double end = to;
     const bool crosses = (way == Way::Up && to < from) || (way == Way::Down && to > from);
     if (crosses) {
         if (!fullCircle(m_bus.servo(index)))
-            return fail(error,
-                        Tr::tr("%1 is an SCS servo: it stops at 0 and %2, there is no "
-                               "seam to sweep across")
-                            .arg(describe(index))
-                            .arg(maxPosition(m_bus.servo(index))));
+            return fail(SimRefusal::ofServo(SimRefusal::Code::NoSeam, index + 1,
+                                            m_bus.servo(index).id(), 0,
+                                            maxPosition(m_bus.servo(index))),
+                        why);
         end += way == Way::Up ? ServoMotion::kFullCircleSteps : -ServoMotion::kFullCircleSteps;
     }
     letGo(index);
@@ -170,9 +164,9 @@ void Hand::advanceTo(qint64 nowUs)
 {
     for (auto it = m_sweeps.begin(); it != m_sweeps.end();) {
         const Sweep &sweep = *it;
-        QString resisted;
+        SimRefusal resisted;
         if (holdsTorque(sweep.index, &resisted)) {
-            m_notes.append(Tr::tr("the hand lets go: %1").arg(resisted));
+            m_notes.append(Tr::tr("the hand lets go: %1").arg(resisted.describe()));
             it = m_sweeps.erase(it);
             continue;
         }

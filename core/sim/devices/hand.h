@@ -3,6 +3,8 @@
 // Pure logic: time passes through the bus's advanceTo().
 #pragma once
 
+#include "simrefusal.h"
+
 #include <QString>
 #include <QStringList>
 #include <QtGlobal>
@@ -32,14 +34,16 @@ public:
     // holds the horn: an offset changed later changes the readings, not where the horn is, as on
     // a real servo. A servo with its torque on holds its position: the hand refuses it. By ID
     // the servo must be the only one at that ID.
-    bool turn(quint8 id, int position, QString *error = nullptr);
-    bool turnServo(int index, int position, QString *error = nullptr);
+    // Refused, *why says why: NoSuchId, SharedId, NoSuchPlace, TorqueOn, PositionOutOfRange,
+    // and for a sweep SweepTooLong, TooManyCycles, NoSeam.
+    bool turn(quint8 id, int position, SimRefusal *why = nullptr);
+    bool turnServo(int index, int position, SimRefusal *why = nullptr);
     // From FROM to TO and back in `seconds`, `cycles` times (0: until stop()); the horn starts
     // at FROM now and rests at FROM at the end. A sweep lets go when the servo's torque comes on.
     bool sweep(quint8 id, int from, int to, double seconds, int cycles = 0, Way way = Way::Direct,
-               QString *error = nullptr);
+               SimRefusal *why = nullptr);
     bool sweepServo(int index, int from, int to, double seconds, int cycles = 0,
-                    Way way = Way::Direct, QString *error = nullptr);
+                    Way way = Way::Direct, SimRefusal *why = nullptr);
     // Lets go of every servo; the number of sweeps stopped.
     int stop();
     bool isSweeping(int index) const;
@@ -51,6 +55,9 @@ public:
     void servoUnplugged(int index);
     // What the hand did on its own since the last call (a sweep ended or was resisted).
     QStringList takeNotes();
+
+    // How the hand's sentences name the servo at place `index` (0-based) with `id`.
+    static QString describe(int index, int id);
 
 private:
     struct Sweep
@@ -66,8 +73,8 @@ private:
     };
 
     // The servo exists, its torque is off and every position is in its range.
-    bool checkServo(int index, std::initializer_list<int> positions, QString *error) const;
-    bool holdsTorque(int index, QString *error) const;
+    bool checkServo(int index, std::initializer_list<int> positions, SimRefusal *why) const;
+    bool holdsTorque(int index, SimRefusal *why) const;
     // The horn's angle for a present position, with the servo's offset now.
     double hornAngle(int index, double position) const;
     void place(int index, double horn);

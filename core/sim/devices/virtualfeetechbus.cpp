@@ -29,14 +29,6 @@ using feetech::Instruction;
 
 namespace {
 
-QString baudList()
-{
-    QStringList rates;
-    for (int code = 0; VirtualFeetechServo::baudForCode(code) != 0; ++code)
-        rates.append(QString::number(VirtualFeetechServo::baudForCode(code)));
-    return rates.join(QLatin1String(", "));
-}
-
 bool isHex(const QString &text)
 {
     return std::all_of(text.cbegin(), text.cend(), [](QChar c) {
@@ -83,49 +75,41 @@ std::optional<feetech::ModelInfo> VirtualFeetechBus::resolveModel(QStringView na
     return std::nullopt;
 }
 
-bool VirtualFeetechBus::validate(const QVector<ServoSpec> &specs, QString *error,
+bool VirtualFeetechBus::validate(const QVector<ServoSpec> &specs, SimRefusal *why,
                                  SharedIds sharedIds)
 {
-    const auto fail = [error](const QString &message) {
-        if (error)
-            *error = message;
-        return false;
+    using Code = SimRefusal::Code;
+    const auto fail = [why](const SimRefusal &refusal) {
+        return !refused(refusal, why);
     };
     if (specs.isEmpty())
-        return fail(Tr::tr("a Feetech bus needs at least one servo"));
+        return fail(SimRefusal(Code::NoServos));
     QSet<QPair<int, qint32>> taken;
     for (const ServoSpec &spec : specs) {
         const auto model = resolveModel(spec.model);
         if (!model) {
             const auto known = feetech::ModelTable::builtIn().findByName(spec.model.trimmed());
             if (known)
-                return fail(Tr::tr("servo %1: model %2 has no register table to simulate")
-                                .arg(spec.id)
-                                .arg(known->name));
-            return fail(Tr::tr("servo %1: unknown model \"%2\"").arg(spec.id).arg(spec.model));
+                return fail(SimRefusal(Code::NoRegisterTable, spec.id, 0, known->name));
+            return fail(SimRefusal(Code::UnknownModel, spec.id, 0, spec.model));
         }
         if (spec.id > feetech::kMaxServoId)
-            return fail(Tr::tr("servo ID %1 is out of range: IDs are 0 to %2")
-                            .arg(spec.id)
-                            .arg(feetech::kMaxServoId));
+            return fail(SimRefusal(Code::IdOutOfRange, spec.id));
         const qint32 baud =
             spec.baud != 0 ? spec.baud : VirtualFeetechServo::defaultBaud(*model->family);
         if (!VirtualFeetechServo::baudCode(baud))
-            return fail(Tr::tr("servo %1: %2 bps is not a Feetech baud rate (%3)")
-                            .arg(spec.id)
-                            .arg(baud)
-                            .arg(baudList()));
+            return fail(SimRefusal(Code::NotAFeetechRate, spec.id, baud));
         if (sharedIds == SharedIds::Refuse && taken.contains({spec.id, baud}))
-            return fail(Tr::tr("two servos have ID %1 at %2 bps").arg(spec.id).arg(baud));
+            return fail(SimRefusal(Code::IdTaken, spec.id, baud));
         taken.insert({spec.id, baud});
     }
     return true;
 }
 
 std::unique_ptr<VirtualFeetechBus> VirtualFeetechBus::create(const QVector<ServoSpec> &specs,
-                                                             QString *error, SharedIds sharedIds)
+                                                             SimRefusal *why, SharedIds sharedIds)
 {
-    if (!validate(specs, error, sharedIds))
+    if (!validate(specs, why, sharedIds))
         return nullptr;
     return std::make_unique<VirtualFeetechBus>(specs);
 }
@@ -160,9 +144,9 @@ void VirtualFeetechBus::addSlot(const feetech::ModelInfo &model, quint8 id, qint
     m_slots.back().savedRevision = servo.eepromRevision();
 }
 
-bool VirtualFeetechBus::plug(const ServoSpec &spec, QString *error)
+bool VirtualFeetechBus::plug(const ServoSpec &spec, SimRefusal *why)
 {
-    if (!validate({spec}, error))
+    if (!validate({spec}, why))
         return false;
     const auto model = resolveModel(spec.model);
     addSlot(*model, spec.id,
@@ -183,22 +167,12 @@ bool VirtualFeetechBus::unplug(int index)
     return true;
 }
 
-bool VirtualFeetechBus::setServoId(int index, int id, QString *error)
+bool VirtualFeetechBus::setServoId(int index, int id, SimRefusal *why)
 {
-    if (index < 0 || index >= servoCount()) {
-        if (error)
-            *error = Tr::tr("there is no servo #%1 on the bus (it has %2)")
-                         .arg(index + 1)
-                         .arg(servoCount());
-        return false;
-    }
-    if (id < 0 || id > feetech::kMaxServoId) {
-        if (error)
-            *error = Tr::tr("servo ID %1 is out of range: IDs are 0 to %2")
-                         .arg(id)
-                         .arg(feetech::kMaxServoId);
-        return false;
-    }
+    if (index < 0 || index >= servoCount())
+        return !refused(SimRefusal(SimRefusal::Code::NoSuchPlace, index + 1, servoCount()), why);
+    if (id < 0 || id > feetech::kMaxServoId)
+        return !refused(SimRefusal(SimRefusal::Code::IdOutOfRange, id), why);
     m_slots[size_t(index)].servo.storeValue(u"id", id);
     saveIfChanged();
     return true;
@@ -430,22 +404,19 @@ QVector<int> VirtualFeetechBus::indexesOf(quint8 id) const
     return indexes;
 }
 
-std::optional<int> VirtualFeetechBus::uniqueIndexOf(quint8 id, QString *error) const
+std::optional<int> VirtualFeetechBus::uniqueIndexOf(quint8 id, SimRefusal *why) const
 {
     const QVector<int> indexes = indexesOf(id);
     if (indexes.size() == 1)
         return indexes.first();
-    if (error) {
-        if (indexes.isEmpty()) {
-            *error = Tr::tr("no servo has ID %1").arg(id);
-        } else {
-            QStringList places;
-            for (const int index : indexes)
-                places.append(QStringLiteral("#%1").arg(index + 1));
-            *error = Tr::tr("servos %1 share ID %2: name one by its place, as #N")
-                         .arg(places.join(QLatin1String(", ")))
-                         .arg(id);
-        }
+    if (indexes.isEmpty()) {
+        refused(SimRefusal(SimRefusal::Code::NoSuchId, id), why);
+    } else {
+        QStringList places;
+        for (const int index : indexes)
+            places.append(QStringLiteral("#%1").arg(index + 1));
+        refused(SimRefusal(SimRefusal::Code::SharedId, id, 0, places.join(QLatin1String(", "))),
+                why);
     }
     return std::nullopt;
 }
@@ -468,56 +439,54 @@ QByteArray VirtualFeetechBus::stateJson() const
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
-bool VirtualFeetechBus::saveState(const QString &path, QString *error) const
+bool VirtualFeetechBus::saveState(const QString &path, SimRefusal *why) const
 {
     util::SavingFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        if (error)
-            *error = Tr::tr("cannot write the state file %1: %2").arg(path, file.errorString());
-        return false;
-    }
+    const auto fail = [&] {
+        return !refused(SimRefusal::stateFile(SimRefusal::Code::CannotWriteState, path, 0, 0, 0,
+                                              file.errorString()),
+                        why);
+    };
+    if (!file.open(QIODevice::WriteOnly))
+        return fail();
     file.device().write(stateJson());
-    if (!file.commit()) {
-        if (error)
-            *error = Tr::tr("cannot write the state file %1: %2").arg(path, file.errorString());
-        return false;
-    }
+    if (!file.commit())
+        return fail();
     return true;
 }
 
-bool VirtualFeetechBus::loadState(const QString &path, QString *error)
+bool VirtualFeetechBus::loadState(const QString &path, SimRefusal *why)
 {
     // A whole bus of 253 servos saves to well under this: anything larger is another file.
     constexpr qint64 kMaxStateBytes = 16 * 1024 * 1024;
-    util::FileError why;
+    util::FileError cause;
     const auto json = util::readFile(path, kMaxStateBytes,
-                                     Tr::tr("larger than any state file (over 16 MB)"), &why);
-    if (!json) {
-        if (error)
-            *error = Tr::tr("state file %1: %2").arg(path, why.reason());
-        return false;
-    }
-    return loadStateJson(*json, path, error);
+                                     Tr::tr("larger than any state file (over 16 MB)"), &cause);
+    if (!json)
+        return !refused(
+            SimRefusal::stateFile(SimRefusal::Code::CannotReadState, path, 0, 0, 0, cause.reason()),
+            why);
+    return loadStateJson(*json, path, why);
 }
 
-bool VirtualFeetechBus::loadStateJson(const QByteArray &json, const QString &path, QString *error)
+bool VirtualFeetechBus::loadStateJson(const QByteArray &json, const QString &path, SimRefusal *why)
 {
-    const auto fail = [error, &path](const QString &message) {
-        if (error)
-            *error = Tr::tr("state file %1: %2").arg(path, message);
-        return false;
+    using Code = SimRefusal::Code;
+    const auto fail = [why, &path](Code code, int servo = 0, qint64 value = 0, qint64 other = 0,
+                                   const QString &name = {}, const QString &busModel = {}) {
+        return !refused(SimRefusal::stateFile(code, path, servo, value, other, name, busModel),
+                        why);
     };
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError)
-        return fail(Tr::tr("not valid JSON (%1)").arg(parseError.errorString()));
+        return fail(Code::StateNotJson, 0, 0, 0, parseError.errorString());
     const QJsonObject root = document.object();
     if (!document.isObject() || root.value(QStringLiteral("format")).toInt(-1) != kStateFormat)
-        return fail(Tr::tr("not a format %1 simulator state").arg(kStateFormat));
+        return fail(Code::StateNotThisFormat, 0, kStateFormat);
     const QJsonArray servos = root.value(QStringLiteral("servos")).toArray();
     if (servos.size() != servoCount())
-        return fail(
-            Tr::tr("it holds %1 servos, the bus has %2").arg(servos.size()).arg(servoCount()));
+        return fail(Code::StateServoCount, 0, servos.size(), servoCount());
 
     std::vector<QByteArray> images;
     for (int i = 0; i < servoCount(); ++i) {
@@ -525,14 +494,10 @@ bool VirtualFeetechBus::loadStateJson(const QByteArray &json, const QString &pat
         const QJsonObject entry = servos.at(i).toObject();
         const QString model = entry.value(QStringLiteral("model")).toString();
         if (model.compare(servo.modelName(), Qt::CaseInsensitive) != 0)
-            return fail(Tr::tr("servo %1 is a %2 in the file but a %3 on the bus")
-                            .arg(i + 1)
-                            .arg(model, servo.modelName()));
+            return fail(Code::StateModelDiffers, i + 1, 0, 0, model, servo.modelName());
         const QString hex = entry.value(QStringLiteral("eeprom")).toString();
         if (hex.size() != 2 * VirtualFeetechServo::kRegisterFileSize || !isHex(hex))
-            return fail(Tr::tr("servo %1: the EEPROM image is not %2 hex bytes")
-                            .arg(i + 1)
-                            .arg(VirtualFeetechServo::kRegisterFileSize));
+            return fail(Code::StateImageSize, i + 1, VirtualFeetechServo::kRegisterFileSize);
         const QByteArray image = QByteArray::fromHex(hex.toLatin1());
         const auto byteAt = [&](QStringView key) {
             const feetech::Register *reg = servo.table().find(key);
@@ -540,15 +505,11 @@ bool VirtualFeetechBus::loadStateJson(const QByteArray &json, const QString &pat
         };
         if (byteAt(u"model_major") != servo.model().major
             || byteAt(u"model_minor") != servo.model().minor)
-            return fail(Tr::tr("servo %1: the EEPROM image is of model %2/%3, not %4")
-                            .arg(i + 1)
-                            .arg(byteAt(u"model_major"))
-                            .arg(byteAt(u"model_minor"))
-                            .arg(servo.modelName()));
+            return fail(Code::StateImageModel, i + 1, byteAt(u"model_major"),
+                        byteAt(u"model_minor"), {}, servo.modelName());
         if (byteAt(u"id") > feetech::kMaxServoId
             || VirtualFeetechServo::baudForCode(byteAt(u"baud_rate")) == 0)
-            return fail(
-                Tr::tr("servo %1: the EEPROM image holds an invalid ID or baud code").arg(i + 1));
+            return fail(Code::StateImageIdOrBaud, i + 1);
         images.push_back(image);
     }
     for (int i = 0; i < servoCount(); ++i) {
@@ -577,10 +538,10 @@ void VirtualFeetechBus::saveIfChanged(bool slotsChanged)
         });
     if (!changed)
         return;
-    QString error;
-    if (!saveState(m_statePath, &error)) {
-        m_lastStateError = error;
-        qWarning("servosim: %s", qPrintable(error));
+    SimRefusal why;
+    if (!saveState(m_statePath, &why)) {
+        m_lastStateError = why.describe();
+        qWarning("servosim: %s", qPrintable(m_lastStateError));
         return; // tried again after the next frame
     }
     m_lastStateError.clear();

@@ -5,6 +5,7 @@
 #include "feetechpacket.h"
 #include "hand.h"
 #include "powercut.h"
+#include "simrefusal.h"
 #include "virtualdevice.h"
 #include "virtualfeetechservo.h"
 
@@ -41,10 +42,10 @@ public:
 
     // Unknown model, ID over 253, baud not a code of spec §6, and (unless allowed) two servos
     // with one ID at one baud.
-    static bool validate(const QVector<ServoSpec> &specs, QString *error,
+    static bool validate(const QVector<ServoSpec> &specs, SimRefusal *why,
                          SharedIds sharedIds = SharedIds::Refuse);
     static std::unique_ptr<VirtualFeetechBus> create(const QVector<ServoSpec> &specs,
-                                                     QString *error,
+                                                     SimRefusal *why,
                                                      SharedIds sharedIds = SharedIds::Refuse);
 
     // Specs must have passed validate(); invalid entries are skipped.
@@ -62,19 +63,21 @@ public:
     const VirtualFeetechServo &servo(int index) const { return m_slots.at(size_t(index)).servo; }
     VirtualFeetechServo *findServo(quint8 id); // first servo with this ID, any baud
     QVector<int> indexesOf(quint8 id) const; // every servo at this ID, any baud
-    // The one servo at `id`; nothing and *error when none is, or when several share it.
-    std::optional<int> uniqueIndexOf(quint8 id, QString *error) const;
+    // The one servo at `id`; nothing and *why (NoSuchId, SharedId) when none is, or when
+    // several share it.
+    std::optional<int> uniqueIndexOf(quint8 id, SimRefusal *why) const;
     qint64 nowUs() const { return m_nowUs; } // the time of the last advance or frame
     bool isRebooting(int index, qint64 nowUs) const;
 
     // Plugs a powered-up servo into the running bus (last in order); it may share an ID with
-    // another servo, as a factory-new servo at ID 1 does. False and *error for an invalid spec.
-    bool plug(const ServoSpec &spec, QString *error);
+    // another servo, as a factory-new servo at ID 1 does. False and *why for an invalid spec.
+    bool plug(const ServoSpec &spec, SimRefusal *why);
     // Unplugs the servo at `index`; later servos move up one place. False for a bad index.
     bool unplug(int index);
     // Puts the servo at `index` at a new ID, in its RAM and its EEPROM, as a set-up would; two
-    // servos may end up sharing one. False and *error for a bad index or ID.
-    bool setServoId(int index, int id, QString *error);
+    // servos may end up sharing one. False and *why (NoSuchPlace, IdOutOfRange) for a bad index or
+    // ID.
+    bool setServoId(int index, int id, SimRefusal *why);
 
     // Power, as a bench sees it. An unpowered servo hears and answers nothing and pushes nothing;
     // powered again it starts as after a power cycle. A broken daisy chain after place `index`
@@ -95,10 +98,10 @@ public:
     // State file: JSON {"format": 1, "servos": [{"model", "eeprom": hex of 256 bytes}...]} in
     // spec order. Loading checks every slot first (count, model, image) and changes nothing on
     // error; then every servo powers up from its image.
-    bool loadState(const QString &path, QString *error);
-    bool saveState(const QString &path, QString *error) const;
+    bool loadState(const QString &path, SimRefusal *why);
+    bool saveState(const QString &path, SimRefusal *why) const;
     // The same from and to the file's contents; `path` names the file in messages.
-    bool loadStateJson(const QByteArray &json, const QString &path, QString *error);
+    bool loadStateJson(const QByteArray &json, const QString &path, SimRefusal *why);
     QByteArray stateJson() const;
     // When set, the bus saves the state after every frame that changed an EEPROM image.
     void setStatePath(const QString &path);

@@ -32,15 +32,12 @@ QVector<Response> VirtualPtkServo::handleFrame(const QByteArray &frame, qint32 h
     return {}; // writes are fire-and-forget; unknown commands are ignored
 }
 
-bool VirtualPtkServo::setValues(const QString &assignments, QString *error)
+bool VirtualPtkServo::setValues(const QString &assignments, SimRefusal *why)
 {
-    QString why;
-    const auto values = ptk::parseAssignments(assignments.split(u',', Qt::SkipEmptyParts), &why);
-    if (!values) {
-        if (error)
-            *error = QStringLiteral("--values: ") + why;
-        return false;
-    }
+    QString reason;
+    const auto values = ptk::parseAssignments(assignments.split(u',', Qt::SkipEmptyParts), &reason);
+    if (!values)
+        return !refused(SimRefusal(SimRefusal::Code::BadPtkValues, 0, 0, reason), why);
     for (const ptk::ParameterInfo &meta : ptk::parameterInfos()) {
         if (const auto wire = values->value(meta.parameter))
             m_values.set(meta.parameter, *wire);

@@ -3,6 +3,7 @@
 
 #include "ptkframe.h"
 #include "ptkparameters.h"
+#include "simrefusal.h"
 #include "virtualdevice.h"
 
 #include <QSet>
@@ -26,8 +27,9 @@ public:
         m_values.set(parameter, wireValue);
     }
 
-    // Parses "gain=20,min_pulse_us=900" (user units) into the servo's values.
-    bool setValues(const QString &assignments, QString *error);
+    // Parses "gain=20,min_pulse_us=900" (user units) into the servo's values; false and *why
+    // (BadPtkValues) when they do not parse.
+    bool setValues(const QString &assignments, SimRefusal *why);
 
     // A servo that silently drops writes with this command byte (for Mismatch tests).
     void ignoreWrites(quint8 command) { m_ignoredWrites.insert(command); }

@@ -84,9 +84,13 @@ QString DemoServos::feetechPort(QString *error)
 QString DemoServos::armPort(QString *error)
 {
     SimulatorOptions options;
-    options.robot = simulatedRobot(QStringLiteral("so101"), error);
-    if (!options.robot)
+    OptionError why;
+    options.robot = simulatedRobot(QStringLiteral("so101"), &why);
+    if (!options.robot) {
+        if (error)
+            *error = why.describe();
         return QString();
+    }
     options.servos = robotServos(*options.robot);
     return startFeetech(m_arm, options, QStringLiteral("so101-arm"), error);
 }

@@ -2,45 +2,35 @@
 // generator, and lost requests from another.
 #include "faults.h"
 
-#include <QCoreApplication>
 #include <QStringList>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(Faults)
-};
-
-} // namespace
 
 namespace sim {
 
-std::optional<FaultSettings> FaultSettings::parse(const QString &text, QString *error)
+std::optional<FaultSettings> FaultSettings::parse(const QString &text, OptionError *error)
 {
+    using Code = OptionError::Code;
     FaultSettings settings;
-    const auto fail = [&](const QString &what) -> std::optional<FaultSettings> {
-        if (error)
-            *error = what;
+    const auto fail = [&](Code code, const QString &what = {}) -> std::optional<FaultSettings> {
+        refused(OptionError(code, what), error);
         return std::nullopt;
     };
     for (const QString &item : text.split(u',', Qt::SkipEmptyParts)) {
         const int eq = item.indexOf(u'=');
         if (eq <= 0)
-            return fail(Tr::tr("--faults: \"%1\" is not NAME=VALUE").arg(item));
+            return fail(Code::FaultNotNameValue, item);
         const QString name = item.left(eq).trimmed();
         bool ok = false;
         const double value = item.mid(eq + 1).toDouble(&ok);
         if (!ok)
-            return fail(Tr::tr("--faults: \"%1\" is not a number").arg(item.mid(eq + 1)));
+            return fail(Code::FaultNotANumber, item.mid(eq + 1));
         if (name == QLatin1String("delay")) {
             if (value < 0 || value > 60000)
-                return fail(Tr::tr("--faults: delay is in milliseconds, 0 to 60000"));
+                return fail(Code::FaultDelayOutOfRange);
             settings.delayMs = int(value);
             continue;
         }
         if (value < 0 || value > 1)
-            return fail(Tr::tr("--faults: %1 is a probability from 0 to 1").arg(name));
+            return fail(Code::FaultNotAProbability, name);
         if (name == QLatin1String("drop"))
             settings.drop = value;
         else if (name == QLatin1String("corrupt"))
@@ -52,9 +42,7 @@ std::optional<FaultSettings> FaultSettings::parse(const QString &text, QString *
         else if (name == QLatin1String("lost"))
             settings.lost = value;
         else
-            return fail(Tr::tr("--faults: unknown fault \"%1\" (drop, corrupt, truncate, noise, "
-                               "delay, lost)")
-                            .arg(name));
+            return fail(Code::UnknownFault, name);
     }
     return settings;
 }

@@ -1,6 +1,8 @@
 // Deterministic fault injection on the simulator's replies (--faults ... --seed N).
 #pragma once
 
+#include "optionerror.h"
+
 #include <QByteArray>
 #include <QRandomGenerator>
 #include <QString>
@@ -24,7 +26,7 @@ struct FaultSettings
     }
 
     // "drop=0.2,corrupt=0.1,delay=30,lost=0.1"; nothing (and *error) on a bad spec.
-    static std::optional<FaultSettings> parse(const QString &text, QString *error);
+    static std::optional<FaultSettings> parse(const QString &text, OptionError *error);
 };
 
 // What happened to one reply.

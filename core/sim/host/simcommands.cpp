@@ -242,7 +242,11 @@ std::optional<int> servoIndex(const VirtualFeetechBus &bus, const QString &refer
                          .arg(feetech::kMaxServoId);
         return std::nullopt;
     }
-    return bus.uniqueIndexOf(quint8(*id), error);
+    SimRefusal why;
+    const auto index = bus.uniqueIndexOf(quint8(*id), &why);
+    if (!index && error)
+        *error = why.describe();
+    return index;
 }
 
 QString simulatorCommandHelp()
@@ -301,9 +305,13 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
     if (command == QLatin1String("plug")) {
         if (words.size() != 1)
             return usage(QStringLiteral("plug ID:MODEL[@BAUD]"));
-        const auto spec = parseServoSpec(words.first(), QStringLiteral("plug"), &why);
-        if (!spec || !bus->plug(*spec, &why))
-            return error(why);
+        OptionError badSpec;
+        const auto spec = parseServoSpec(words.first(), QStringLiteral("plug"), &badSpec);
+        if (!spec)
+            return error(badSpec.describe());
+        SimRefusal refusal;
+        if (!bus->plug(*spec, &refusal))
+            return error(refusal.describe());
         const int index = bus->servoCount() - 1;
         const VirtualFeetechServo &servo = bus->servo(index);
         return ok(Tr::tr("plugged %1: %2 at %3 bps")
@@ -319,8 +327,9 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         const auto position = util::parseInteger(words.at(1));
         if (!position || *position < 0 || *position > 4095)
             return error(Tr::tr("\"%1\" is not a position from 0 to 4095").arg(words.at(1)));
-        if (!bus->hand().turnServo(*index, int(*position), &why))
-            return error(why);
+        SimRefusal refusal;
+        if (!bus->hand().turnServo(*index, int(*position), &refusal))
+            return error(refusal.describe());
         return ok(Tr::tr("turned %1 to %2").arg(place(*bus, *index)).arg(*position));
     }
     if (command == QLatin1String("sweep")) {
@@ -332,12 +341,14 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         // The ID field is checked by servoIndex; the sweep's own fields by parseHandSweep.
         QStringList fields = words;
         fields[0] = QString::number(bus->servo(*index).id());
-        const auto sweep = parseHandSweep(fields, QStringLiteral("sweep"), &why);
+        OptionError badSweep;
+        const auto sweep = parseHandSweep(fields, QStringLiteral("sweep"), &badSweep);
         if (!sweep)
-            return error(why);
+            return error(badSweep.describe());
+        SimRefusal refusal;
         if (!bus->hand().sweepServo(*index, sweep->from, sweep->to, sweep->seconds, sweep->cycles,
-                                    sweep->way, &why))
-            return error(why);
+                                    sweep->way, &refusal))
+            return error(refusal.describe());
         const QString times = sweep->cycles == 0 ? Tr::tr("until released")
                                                  : Tr::tr("%n time(s)", nullptr, sweep->cycles);
         return ok(Tr::tr("sweeping %1 from %2 to %3 and back every %4 s, %5")
@@ -367,8 +378,9 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
     if (!id || *id < 0 || *id > feetech::kMaxServoId)
         return error(
             Tr::tr("\"%1\" is not an ID from 0 to %2").arg(words.at(1)).arg(feetech::kMaxServoId));
-    if (!bus->setServoId(*index, int(*id), &why))
-        return error(why);
+    SimRefusal refusal;
+    if (!bus->setServoId(*index, int(*id), &refusal))
+        return error(refusal.describe());
     return ok(Tr::tr("servo #%1 is now at ID %2").arg(*index + 1).arg(*id));
 }
 

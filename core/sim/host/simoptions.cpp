@@ -106,9 +106,10 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         if (option == QLatin1String("--link")) {
             options.linkPath = *text;
         } else if (option == QLatin1String("--faults")) {
-            const auto faults = FaultSettings::parse(*text, error);
+            OptionError why;
+            const auto faults = FaultSettings::parse(*text, &why);
             if (!faults)
-                return std::nullopt;
+                return fail(why.describe());
             options.faults = *faults;
         } else if (option == QLatin1String("--seed")) {
             const auto seed = util::parseInteger(*text);
@@ -145,25 +146,28 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
                 return fail(Tr::tr("--robot is for a Feetech bus"));
             if (options.robot)
                 return fail(Tr::tr("--robot may be given once"));
-            options.robot = simulatedRobot(*text, error);
+            OptionError why;
+            options.robot = simulatedRobot(*text, &why);
             if (!options.robot)
-                return std::nullopt;
+                return fail(why.describe());
         } else if (option == QLatin1String("--hand")) {
             if (!feetech)
                 return fail(Tr::tr("--hand is for a Feetech bus"));
-            const auto sweep = parseHandSweep(text->split(u':'),
-                                              QStringLiteral("--hand \"%1\"").arg(*text), error);
+            OptionError why;
+            const auto sweep =
+                parseHandSweep(text->split(u':'), QStringLiteral("--hand \"%1\"").arg(*text), &why);
             if (!sweep)
-                return std::nullopt;
+                return fail(why.describe());
             options.sweeps.append(*sweep);
         } else if (option == QLatin1String("--command")) {
             options.commands.append(*text);
         } else if (option == QLatin1String("--servo")) {
             if (!feetech)
                 return fail(Tr::tr("--servo is for a Feetech bus"));
-            const auto spec = parseServoSpec(*text, QStringLiteral("--servo"), error);
+            OptionError why;
+            const auto spec = parseServoSpec(*text, QStringLiteral("--servo"), &why);
             if (!spec)
-                return std::nullopt;
+                return fail(why.describe());
             options.servos.append(*spec);
         }
     }
@@ -180,43 +184,40 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
 }
 
 std::optional<FeetechServoSpec> parseServoSpec(const QString &text, const QString &source,
-                                               QString *error)
+                                               OptionError *error)
 {
-    const auto fail = [&](const QString &what) -> std::optional<FeetechServoSpec> {
-        if (error)
-            *error = what;
+    using Code = OptionError::Code;
+    const auto fail = [&](Code code, qint64 value = 0) -> std::optional<FeetechServoSpec> {
+        refused(OptionError(code, text, source, value), error);
         return std::nullopt;
     };
     const int colon = text.indexOf(u':');
     const int at = text.indexOf(u'@');
     const auto id = util::parseInteger(text.left(colon));
     if (colon <= 0 || !id)
-        return fail(Tr::tr("%1 \"%2\" is not ID:MODEL[@BAUD]").arg(source, text));
+        return fail(Code::NotAServoSpec);
     if (*id < 0 || *id > feetech::kMaxServoId)
-        return fail(Tr::tr("%1 \"%2\": ID %3 is over %4")
-                        .arg(source, text)
-                        .arg(*id)
-                        .arg(feetech::kMaxServoId));
+        return fail(Code::ServoIdOverMax, *id);
     FeetechServoSpec spec;
     spec.id = quint8(*id);
     spec.model = text.mid(colon + 1, at > colon ? at - colon - 1 : -1);
     if (spec.model.isEmpty())
-        return fail(Tr::tr("%1 \"%2\" names no model").arg(source, text));
+        return fail(Code::ServoWithoutModel);
     if (at > colon) {
         const auto baud = util::parseInteger(text.mid(at + 1));
         if (!baud || *baud <= 0 || *baud > 10'000'000)
-            return fail(Tr::tr("%1 \"%2\": bad baud rate").arg(source, text));
+            return fail(Code::ServoBadBaud);
         spec.baud = qint32(*baud);
     }
     return spec;
 }
 
 std::optional<HandSweep> parseHandSweep(const QStringList &fields, const QString &source,
-                                        QString *error)
+                                        OptionError *error)
 {
-    const auto fail = [&](const QString &what) -> std::optional<HandSweep> {
-        if (error)
-            *error = QStringLiteral("%1: %2").arg(source, what);
+    using Code = OptionError::Code;
+    const auto fail = [&](Code code, const QString &text = {}) -> std::optional<HandSweep> {
+        refused(OptionError(code, text, source), error);
         return std::nullopt;
     };
     QStringList values = fields;
@@ -227,54 +228,42 @@ std::optional<HandSweep> parseHandSweep(const QStringList &fields, const QString
         values.removeLast();
     }
     if (values.size() < 4 || values.size() > 5)
-        return fail(Tr::tr("expected ID FROM TO SECONDS [CYCLES] [up|down]"));
+        return fail(Code::SweepFields);
     const auto id = util::parseInteger(values.at(0));
     if (!id || *id < 0 || *id > feetech::kMaxServoId)
-        return fail(Tr::tr("the ID must be 0 to %1, not \"%2\"")
-                        .arg(feetech::kMaxServoId)
-                        .arg(values.at(0)));
+        return fail(Code::SweepBadId, values.at(0));
     sweep.id = quint8(*id);
     const auto from = util::parseInteger(values.at(1));
     const auto to = util::parseInteger(values.at(2));
     if (!from || !to || *from < 0 || *to < 0 || *from > 4095 || *to > 4095)
-        return fail(Tr::tr("FROM and TO must be positions from 0 to 4095"));
+        return fail(Code::SweepBadPositions);
     sweep.from = int(*from);
     sweep.to = int(*to);
     bool ok = false;
     sweep.seconds = values.at(3).toDouble(&ok);
     if (!ok || !(sweep.seconds > 0.0) || sweep.seconds > Hand::kMaxSweepSeconds)
-        return fail(Tr::tr("SECONDS must be a number above 0 and at most %1, not \"%2\"")
-                        .arg(Hand::kMaxSweepSeconds)
-                        .arg(values.at(3)));
+        return fail(Code::SweepBadSeconds, values.at(3));
     if (values.size() == 5) {
         const auto cycles = util::parseInteger(values.at(4));
         if (!cycles || *cycles < 0 || *cycles > Hand::kMaxSweepCycles)
-            return fail(
-                Tr::tr("CYCLES must be a whole number from 0 (until released) to %1, not \"%2\"")
-                    .arg(Hand::kMaxSweepCycles)
-                    .arg(values.at(4)));
+            return fail(Code::SweepBadCycles, values.at(4));
         sweep.cycles = int(*cycles);
     }
     return sweep;
 }
 
-std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, QString *error)
+std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, OptionError *error)
 {
-    static const QStringList kNames {QStringLiteral("so101"), QStringLiteral("so100"),
-                                     QStringLiteral("so101-leader"),
-                                     QStringLiteral("so100-leader")};
     const QString key = name.trimmed().toLower();
-    if (!kNames.contains(key)) {
-        if (error)
-            *error =
-                Tr::tr("unknown robot \"%1\": use %2").arg(name, kNames.join(QLatin1String(", ")));
+    if (!OptionError::simulatedRobotNames().contains(key)) {
+        refused(OptionError(OptionError::Code::UnknownRobot, name), error);
         return std::nullopt;
     }
     const QString file = key.contains(u'-') ? key : key + QLatin1String("-follower");
     util::FileError why;
     auto robot = feetech::loadRobotTemplate(QStringLiteral(":/robots/%1.json").arg(file), &why);
-    if (!robot && error)
-        *error = why.describe();
+    if (!robot)
+        refused(OptionError(OptionError::Code::BadRobotTemplate, why.describe()), error);
     return robot;
 }
 

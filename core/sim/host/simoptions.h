@@ -3,6 +3,7 @@
 
 #include "faults.h"
 #include "hand.h"
+#include "optionerror.h"
 #include "robottemplate.h"
 #include "usbadapter.h"
 #include "virtualfeetechbus.h"
@@ -30,13 +31,13 @@ struct HandSweep
 
 // ID:MODEL[@BAUD], as --servo and the plug command take it; `source` names it in errors.
 std::optional<FeetechServoSpec> parseServoSpec(const QString &text, const QString &source,
-                                               QString *error);
+                                               OptionError *error);
 // FIELDS are ID FROM TO SECONDS [CYCLES] [up|down], already split; `source` names them in errors.
 std::optional<HandSweep> parseHandSweep(const QStringList &fields, const QString &source,
-                                        QString *error);
+                                        OptionError *error);
 // The built-in robot templates servosim plays: so100, so101 (follower arms), so100-leader,
-// so101-leader. Nothing and *error for another name.
-std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, QString *error);
+// so101-leader. Nothing and *error (UnknownRobot) for another name.
+std::optional<feetech::RobotTemplate> simulatedRobot(const QString &name, OptionError *error);
 // The robot's joints as servos on the bus, at the template's rate.
 QVector<FeetechServoSpec> robotServos(const feetech::RobotTemplate &robot);
 

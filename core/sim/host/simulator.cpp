@@ -45,8 +45,12 @@ std::unique_ptr<Simulator> Simulator::create(const SimulatorOptions &options, QS
     std::unique_ptr<VirtualDevice> device;
     if (options.kind == SimulatorOptions::Kind::Ptk) {
         auto servo = std::make_unique<VirtualPtkServo>();
-        if (!options.ptkValues.isEmpty() && !servo->setValues(options.ptkValues, error))
+        SimRefusal why;
+        if (!options.ptkValues.isEmpty() && !servo->setValues(options.ptkValues, &why)) {
+            if (error)
+                *error = why.describe();
             return nullptr;
+        }
         device = std::move(servo);
     } else {
         device = createFeetechBus(options, error);

@@ -52,20 +52,28 @@ std::unique_ptr<VirtualFeetechBus> createFeetechBus(const SimulatorOptions &opti
 {
     const auto sharing = options.allowSharedIds ? VirtualFeetechBus::SharedIds::Allow
                                                 : VirtualFeetechBus::SharedIds::Refuse;
-    auto bus = VirtualFeetechBus::create(options.servos, error, sharing);
+    SimRefusal why;
+    auto bus = VirtualFeetechBus::create(options.servos, &why, sharing);
     if (!bus) {
-        if (error && !options.allowSharedIds
-            && VirtualFeetechBus::validate(options.servos, nullptr,
-                                           VirtualFeetechBus::SharedIds::Allow))
-            *error += Tr::tr(" (--allow-shared-ids lets them share it, their replies colliding)");
+        if (error) {
+            *error = why.describe();
+            if (!options.allowSharedIds
+                && VirtualFeetechBus::validate(options.servos, nullptr,
+                                               VirtualFeetechBus::SharedIds::Allow))
+                *error +=
+                    Tr::tr(" (--allow-shared-ids lets them share it, their replies colliding)");
+        }
         return nullptr;
     }
     bool loaded = false;
     if (!options.statePath.isEmpty()) {
         // A missing file is a first run; anything else must load cleanly.
         if (QFileInfo::exists(options.statePath)) {
-            if (!bus->loadState(options.statePath, error))
+            if (!bus->loadState(options.statePath, &why)) {
+                if (error)
+                    *error = why.describe();
                 return nullptr;
+            }
             loaded = true;
         }
     }
@@ -75,11 +83,11 @@ std::unique_ptr<VirtualFeetechBus> createFeetechBus(const SimulatorOptions &opti
     if (options.robot)
         setUpRobot(*bus, *options.robot, loaded);
     for (const HandSweep &sweep : options.sweeps) {
-        QString why;
+        SimRefusal refusal;
         if (!bus->hand().sweep(sweep.id, sweep.from, sweep.to, sweep.seconds, sweep.cycles,
-                               sweep.way, &why)) {
+                               sweep.way, &refusal)) {
             if (error)
-                *error = Tr::tr("--hand for ID %1: %2").arg(sweep.id).arg(why);
+                *error = Tr::tr("--hand for ID %1: %2").arg(sweep.id).arg(refusal.describe());
             return nullptr;
         }
     }
