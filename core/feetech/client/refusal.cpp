@@ -19,65 +19,47 @@ namespace feetech {
 
 Refusal Refusal::sharedId(quint8 servoId)
 {
-    Refusal refusal(Code::SharedId);
-    refusal.m_servoId = servoId;
-    return refusal;
+    return Refusal(Code::SharedId, servoId, 0, {});
 }
 
 Refusal Refusal::unknownModel(quint8 servoId)
 {
-    Refusal refusal(Code::UnknownModel);
-    refusal.m_servoId = servoId;
-    return refusal;
+    return Refusal(Code::UnknownModel, servoId, 0, {});
 }
 
 Refusal Refusal::servoHeld(const QString &holderReason)
 {
-    Refusal refusal(Code::ServoHeld);
-    refusal.m_detail = holderReason;
-    return refusal;
+    return Refusal(Code::ServoHeld, std::nullopt, 0, holderReason);
 }
 
 Refusal Refusal::idInUse(int id)
 {
-    Refusal refusal(Code::IdInUse);
-    refusal.m_value = id;
-    return refusal;
+    return Refusal(Code::IdInUse, std::nullopt, id, {});
 }
 
 Refusal Refusal::badValue(const QString &reason)
 {
-    Refusal refusal(Code::BadValue);
-    refusal.m_detail = reason;
-    return refusal;
+    return Refusal(Code::BadValue, std::nullopt, 0, reason);
 }
 
 Refusal Refusal::badValue(quint8 servoId, const QString &reason)
 {
-    Refusal refusal = badValue(reason);
-    refusal.m_servoId = servoId;
-    return refusal;
+    return Refusal(Code::BadValue, servoId, 0, reason);
 }
 
 Refusal Refusal::notAFeetechRate(qint32 baud)
 {
-    Refusal refusal(Code::NotAFeetechRate);
-    refusal.m_value = baud;
-    return refusal;
+    return Refusal(Code::NotAFeetechRate, std::nullopt, baud, {});
 }
 
 Refusal Refusal::notConfirmed(quint8 servoId)
 {
-    Refusal refusal(Code::NotConfirmed);
-    refusal.m_servoId = servoId;
-    return refusal;
+    return Refusal(Code::NotConfirmed, servoId, 0, {});
 }
 
 Refusal Refusal::undecodableFeedback(quint8 servoId)
 {
-    Refusal refusal(Code::UndecodableFeedback);
-    refusal.m_servoId = servoId;
-    return refusal;
+    return Refusal(Code::UndecodableFeedback, servoId, 0, {});
 }
 
 QString Refusal::describe() const

@@ -69,6 +69,13 @@ public:
     friend bool operator!=(const Refusal &a, const Refusal &b) { return !(a == b); }
 
 private:
+    Refusal(Code code, std::optional<quint8> servoId, qint64 value, const QString &detail)
+        : m_code(code)
+        , m_servoId(servoId)
+        , m_value(value)
+        , m_detail(detail)
+    { }
+
     Code m_code = Code::None;
     std::optional<quint8> m_servoId;
     qint64 m_value = 0;
