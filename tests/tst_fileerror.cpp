@@ -5,9 +5,9 @@
 #include "profile.h"
 #include "ptkparameters.h"
 #include "robottemplate.h"
+#include "testfiles.h"
 
 #include <QDir>
-#include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -31,11 +31,7 @@ private:
 
     QString write(const QString &name, const QByteArray &contents)
     {
-        const QString path = m_dir.filePath(name);
-        QFile file(path);
-        if (!file.open(QIODevice::WriteOnly) || file.write(contents) != contents.size())
-            qFatal("cannot write %s", qPrintable(path));
-        return path;
+        return testsupport::writeTestFile(m_dir, name, contents);
     }
 
 private slots:

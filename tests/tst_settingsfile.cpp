@@ -2,6 +2,7 @@
 // text gives the same values, and text that is neither is refused naming its source.
 #include "registertable.h"
 #include "settingsfile.h"
+#include "testfiles.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -48,11 +49,7 @@ private:
 
     QString write(const QString &name, const QByteArray &contents)
     {
-        const QString path = m_dir.filePath(name);
-        QFile file(path);
-        if (!file.open(QIODevice::WriteOnly) || file.write(contents) != contents.size())
-            qFatal("cannot write %s", qPrintable(path));
-        return path;
+        return testsupport::writeTestFile(m_dir, name, contents);
     }
 
 private slots:
