@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -245,7 +246,8 @@ class FeetechSessionTest : public FeetechBusTest
 {
 protected:
     // Starts the simulator with `options` and opens a new session on its link at 1 Mbps without
-    // echo; m_found collects the servos its scans find. False and *error when the simulator
+    // echo; m_found collects the servos its scans find, in ID order (a servo that answered late
+    // is found in the scan's second look, after higher IDs). False and *error when the simulator
     // would not start.
     bool startSession(const sim::SimulatorOptions &options, QString *error)
     {
@@ -253,7 +255,12 @@ protected:
             return false;
         m_session = std::make_unique<feetech::Session>();
         connect(m_session.get(), &feetech::Session::servoFound, this,
-                [this](const feetech::ServoInfo &servo) { m_found.append(servo); });
+                [this](const feetech::ServoInfo &servo) {
+                    const auto before = std::find_if(
+                        m_found.begin(), m_found.end(),
+                        [&servo](const feetech::ServoInfo &found) { return found.id > servo.id; });
+                    m_found.insert(before, servo);
+                });
         m_session->open(m_simulator->linkPath(), 1000000, seriallink::EchoMode::Off);
         return true;
     }
