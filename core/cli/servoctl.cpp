@@ -5,10 +5,13 @@
 #include "decoder.h"
 #include "detectcommands.h"
 #include "feetechcommands.h"
+#include "feetechdescription.h"
 #include "feetechpacket.h"
 #include "hex.h"
 #include "ptkcommands.h"
 #include "ptkparameters.h"
+#include "sharecommand.h"
+#include "sharerecording.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -100,7 +103,13 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech calibration save --ids LIST [--names LIST] FILE\n"
     "                                         the servos' offsets and limits to a LeRobot file\n"
     "  feetech calibration load FILE          write a LeRobot calibration file, verified\n"
+    "  share --link PATH [--record FILE] [--watch] [--duration S]\n"
+    "                                         stand between another program and the servos:\n"
+    "                                         it opens PATH, every byte is forwarded; --json\n"
+    "                                         prints each transaction, --watch reads the\n"
+    "                                         servos in its idle gaps; alerts on stderr\n"
     "  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each\n"
+    "  decode --family feetech --log FILE     explain a recording of share, frame by frame\n"
     "  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)\n"
     "  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values\n"
     "  packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]\n"
@@ -129,15 +138,17 @@ public:
         try {
             const Arguments args(
                 raw,
-                {QStringLiteral("port"), QStringLiteral("baud"), QStringLiteral("family"),
-                 QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
-                 QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
-                 QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate"),
-                 QStringLiteral("model"), QStringLiteral("settings"), QStringLiteral("names"),
-                 QStringLiteral("full-turn"), QStringLiteral("out"), QStringLiteral("expect")},
+                {QStringLiteral("port"),      QStringLiteral("baud"),     QStringLiteral("family"),
+                 QStringLiteral("id"),        QStringLiteral("addr"),     QStringLiteral("data"),
+                 QStringLiteral("len"),       QStringLiteral("ids"),      QStringLiteral("echo"),
+                 QStringLiteral("duration"),  QStringLiteral("backup"),   QStringLiteral("rate"),
+                 QStringLiteral("model"),     QStringLiteral("settings"), QStringLiteral("names"),
+                 QStringLiteral("full-turn"), QStringLiteral("out"),      QStringLiteral("expect"),
+                 QStringLiteral("link"),      QStringLiteral("record"),   QStringLiteral("log")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
-                 QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check")});
+                 QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check"),
+                 QStringLiteral("watch")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);
@@ -165,6 +176,8 @@ public:
                 return runPtkCommand(args, rest, {m_out, m_err, m_json});
             if (command == QLatin1String("feetech"))
                 return runFeetechCommand(args, rest, {m_out, m_err, m_json});
+            if (command == QLatin1String("share"))
+                return runShareCommand(args, rest, {m_out, m_err, m_json});
             throw UsageError {Tr::tr("unknown command \"%1\" (try servoctl --help)").arg(command)};
         } catch (const UsageError &error) {
             m_err << "servoctl: " << error.message << '\n';
@@ -230,7 +243,10 @@ private:
 
     int decode(const Arguments &args, const QStringList &rest)
     {
-        allowOnly(args, {QStringLiteral("family")}, QStringLiteral("decode"));
+        allowOnly(args, {QStringLiteral("family"), QStringLiteral("log")},
+                  QStringLiteral("decode"));
+        if (args.has(QStringLiteral("log")))
+            return decodeLog(args, rest);
         if (rest.isEmpty())
             throw UsageError {Tr::tr("decode needs the bytes to decode, as hex")};
         QString error;
@@ -271,6 +287,67 @@ private:
             }
             m_out.flush();
         }
+        return ExitOk;
+    }
+
+    // A recording of `servoctl share`, frame by frame: each answer read beside the request it
+    // answers (the program's, or ServoBench's own).
+    int decodeLog(const Arguments &args, const QStringList &rest)
+    {
+        if (!rest.isEmpty())
+            throw UsageError {Tr::tr("decode --log takes the recording only, no bytes")};
+        if (args.has(QStringLiteral("family"))
+            && args.value(QStringLiteral("family")) != QLatin1String("feetech"))
+            throw UsageError {Tr::tr("share recordings are of Feetech buses: --family feetech")};
+        util::FileError error;
+        const auto frames = share::ShareRecording::load(args.value(QStringLiteral("log")), &error);
+        if (!frames) {
+            m_err << "servoctl: " << error.describe() << '\n';
+            m_err.flush();
+            return ExitUsage;
+        }
+        QByteArray programRequest;
+        QByteArray ownRequest;
+        QJsonArray array;
+        for (const share::RecordedFrame &frame : *frames) {
+            QString meaning = frame.note;
+            switch (frame.direction) {
+            case share::FrameDirection::FromProgram:
+                programRequest = frame.bytes;
+                meaning = feetech::describeFrame(frame.bytes, {});
+                break;
+            case share::FrameDirection::Own:
+                ownRequest = frame.bytes;
+                meaning = feetech::describeFrame(frame.bytes, {});
+                break;
+            case share::FrameDirection::ToProgram:
+                meaning = feetech::describeFrame(frame.bytes, programRequest);
+                break;
+            case share::FrameDirection::OwnAnswer:
+                meaning = feetech::describeFrame(frame.bytes, ownRequest);
+                break;
+            case share::FrameDirection::Note:
+                break;
+            }
+            const QString direction = share::ShareRecording::directionKey(frame.direction);
+            const QString time = QString::number(double(frame.timeUs) / 1e6, 'f', 6);
+            if (m_json) {
+                QJsonObject object {{QStringLiteral("time"), double(frame.timeUs) / 1e6},
+                                    {QStringLiteral("direction"), direction},
+                                    {QStringLiteral("summary"), meaning}};
+                if (frame.direction != share::FrameDirection::Note)
+                    object.insert(QStringLiteral("hex"), util::toHex(frame.bytes));
+                array.append(object);
+            } else if (frame.direction == share::FrameDirection::Note) {
+                m_out << time << ' ' << direction << "  " << meaning << '\n';
+            } else {
+                m_out << time << ' ' << direction << "  " << util::toHex(frame.bytes) << '\n'
+                      << "    " << meaning << '\n';
+            }
+        }
+        if (m_json)
+            printJson(array);
+        m_out.flush();
         return ExitOk;
     }
 

@@ -58,7 +58,7 @@ std::optional<std::chrono::microseconds> slowEnd(const std::deque<std::chrono::m
 RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, Describer describer,
                              QObject *parent)
     : QObject(parent)
-    , m_transport(transport)
+    , m_transport(&transport)
     , m_framer(format)
     , m_describer(std::move(describer))
 {
@@ -66,8 +66,7 @@ RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, De
     qRegisterMetaType<PacketLogEntry>();
     qRegisterMetaType<LinkCounters>();
     qRegisterMetaType<ConnectionStatus>();
-    connect(&m_transport, &Transport::received, this, &RequestEngine::onReceived);
-    connect(&m_transport, &Transport::bytesWritten, this, &RequestEngine::onBytesWritten);
+    connectTransport();
     m_clock.start();
     m_replyTimer = new PreciseTimer(this);
     m_countersTimer = new QTimer(this);
@@ -79,6 +78,23 @@ RequestEngine::RequestEngine(Transport &transport, const FrameFormat &format, De
             emit countersChanged(m_counters);
         }
     });
+}
+
+void RequestEngine::setTransport(Transport &transport)
+{
+    if (&transport == m_transport)
+        return;
+    cancelAll(Failure::Cancelled);
+    disconnect(m_transport, nullptr, this, nullptr);
+    m_transport = &transport;
+    m_framer.discardPending();
+    connectTransport();
+}
+
+void RequestEngine::connectTransport()
+{
+    connect(m_transport, &Transport::received, this, &RequestEngine::onReceived);
+    connect(m_transport, &Transport::bytesWritten, this, &RequestEngine::onBytesWritten);
 }
 
 RequestEngine::~RequestEngine() = default;
@@ -154,7 +170,7 @@ void RequestEngine::startNext()
     m_current = std::make_unique<Transaction>(std::move(queue.front()));
     queue.pop_front();
     m_attempts = 0;
-    if (!m_transport.isOpen()) {
+    if (!m_transport->isOpen()) {
         finish(Failure::LinkDown);
         return;
     }
@@ -179,12 +195,12 @@ void RequestEngine::send()
     // Whatever is still waiting belongs to an earlier exchange; it must not answer this one.
     // Input the port has not announced yet is taken in first (and dropped as stray while
     // nothing waits), or it would arrive after the request and pass for its answer.
-    m_transport.deliverPendingInput();
+    m_transport->deliverPendingInput();
     const QString beforeRequest = Tr::tr("stray input discarded before a request");
     // Also frames still in the framer: an answer that ended its exchange may have had company.
-    onInputBetweenRequests(m_transport.discardInput(), beforeRequest);
+    onInputBetweenRequests(m_transport->discardInput(), beforeRequest);
     if (m_framer.pendingBytes() > 0 && !m_waitedForUnfinished && m_current
-        && m_transport.isOpen()) {
+        && m_transport->isOpen()) {
         // The start of a frame is in: a late answer whose rest a USB adapter sends in its next
         // packet. Once, the request waits for it, so that it lands while nothing waits.
         m_waitedForUnfinished = true;
@@ -203,7 +219,7 @@ void RequestEngine::send()
         log(Direction::Stray, unfinished->bytes, beforeRequest);
     }
     m_framer.discardPending();
-    if (!m_current || !m_transport.isOpen()) {
+    if (!m_current || !m_transport->isOpen()) {
         // Reading the port found it gone; whoever handles that ends the transaction.
         if (m_current)
             finish(Failure::LinkDown);
@@ -232,7 +248,7 @@ void RequestEngine::send()
         log(Direction::Out, m_current->request);
     m_sentAtUs = m_clock.nsecsElapsed() / 1000;
     m_lastRequest = m_current->request;
-    m_transport.write(m_current->request);
+    m_transport->write(m_current->request);
     publishCounters();
     // A port that never confirms the write must not hang the queue.
     const quint64 generation = m_generation;
@@ -450,7 +466,7 @@ void RequestEngine::onTimeout(quint64 generation)
     if (m_state == State::AwaitingReply && m_current->expectsReply()) {
         // The answer may be waiting unread; if it completes the exchange, this timer is stale.
         const bool waitedForFirstByte = !m_firstByteDeadline;
-        m_transport.deliverPendingInput();
+        m_transport->deliverPendingInput();
         if (generation != m_generation || m_state == State::Idle || !m_current)
             return;
         if (waitedForFirstByte && m_firstByteDeadline)
@@ -471,7 +487,7 @@ void RequestEngine::onTimeout(quint64 generation)
     const bool counted = !m_current->silenceExpected;
     if (counted)
         ++m_counters.timeouts;
-    const bool retrying = m_attempts <= retryCount() && m_transport.isOpen();
+    const bool retrying = m_attempts <= retryCount() && m_transport->isOpen();
     // Its answer may still come if nothing came (garbled bytes were the device answering), and
     // if a frame was taken for an earlier request's late answer, which may have been this
     // one's, from a device that answers at once: its retry, the same request, may take it, the
@@ -698,7 +714,7 @@ bool RequestEngine::cameTooSoon(int frameBytes) const
 
 std::chrono::microseconds RequestEngine::wireTime(int bytes) const
 {
-    const qint32 baud = m_transport.baudRate() > 0 ? m_transport.baudRate() : 9600;
+    const qint32 baud = m_transport->baudRate() > 0 ? m_transport->baudRate() : 9600;
     // 8N1: ten bit times per byte.
     return std::chrono::microseconds(qint64(bytes) * 10 * 1'000'000 / baud);
 }

@@ -140,6 +140,11 @@ public:
                   QObject *parent = nullptr);
     ~RequestEngine() override;
 
+    // Talks through `transport` from now on (a shared bus puts its gate between the engine and
+    // the port); what was queued or in flight ends Cancelled.
+    void setTransport(Transport &transport);
+    Transport &transport() const { return *m_transport; }
+
     void setTiming(const EngineTiming &timing) { m_timing = timing; }
     const EngineTiming &timing() const { return m_timing; }
     void setEchoMode(EchoMode mode);
@@ -176,6 +181,7 @@ private:
     enum class State { Idle, Settling, Sending, AwaitingReply };
     enum class Decision { Unknown, Yes, No };
 
+    void connectTransport();
     void scheduleNext();
     void startNext();
     void send();
@@ -202,7 +208,7 @@ private:
     void noteAnswerTime(std::chrono::microseconds time);
     int retryCount() const;
 
-    Transport &m_transport;
+    Transport *m_transport;
     StreamFramer m_framer;
     Describer m_describer;
     EngineTiming m_timing;

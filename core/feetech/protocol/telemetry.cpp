@@ -110,13 +110,21 @@ std::optional<FeedbackSample> decodeFeedback(const RegisterTable &table, quint8 
     const Block block = table.feedbackBlock();
     if (block.size == 0 || bytes.size() < block.size)
         return std::nullopt;
+    return decodeFeedbackPart(table, id, baud, steadyUs, block.address, bytes.first(block.size),
+                              replyStatus);
+}
+
+std::optional<FeedbackSample> decodeFeedbackPart(const RegisterTable &table, quint8 id, qint32 baud,
+                                                 qint64 steadyUs, int address, QByteArrayView bytes,
+                                                 quint8 replyStatus)
+{
     FeedbackSample sample;
     sample.id = id;
     sample.baud = baud;
     sample.steadyUs = steadyUs;
     sample.replyStatus = replyStatus;
-    for (const DecodedRegister &item :
-         decodeRegisters(table, block.address, bytes.first(block.size))) {
+    bool measured = false;
+    for (const DecodedRegister &item : decodeRegisters(table, address, bytes)) {
         const QString &key = item.reg->key;
         if (key == u"status") {
             sample.servoStatus = quint8(item.value);
@@ -129,10 +137,14 @@ std::optional<FeedbackSample> decodeFeedback(const RegisterTable &table, quint8 
         for (const Quantity quantity : kAllQuantities) {
             const QuantityInfo &what = info(quantity);
             if (key == QLatin1String(what.registerKey)
-                && item.reg->unit == QString::fromUtf8(what.unit))
+                && item.reg->unit == QString::fromUtf8(what.unit)) {
                 sample.values.at(int(quantity)) = item.value * item.reg->scale;
+                measured = true;
+            }
         }
     }
+    if (!measured)
+        return std::nullopt;
     return sample;
 }
 

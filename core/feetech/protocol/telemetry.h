@@ -51,6 +51,11 @@ struct FeedbackSample
 std::optional<FeedbackSample> decodeFeedback(const RegisterTable &table, quint8 id, qint32 baud,
                                              qint64 steadyUs, QByteArrayView bytes,
                                              quint8 replyStatus);
+// The quantities that `bytes`, read from `address` on, cover (a program that reads only the
+// positions, say); the others stay empty. Nothing when they cover none.
+std::optional<FeedbackSample> decodeFeedbackPart(const RegisterTable &table, quint8 id, qint32 baud,
+                                                 qint64 steadyUs, int address, QByteArrayView bytes,
+                                                 quint8 replyStatus);
 qint64 steadyMicroseconds(); // now, on the samples' clock
 
 // The names of the servo-status bits that are set ("voltage, overload"), or "none".

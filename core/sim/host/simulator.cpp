@@ -63,7 +63,7 @@ std::unique_ptr<Simulator> Simulator::create(const SimulatorOptions &options, QS
 Simulator::Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDevice> device)
     : m_options(options)
     , m_device(std::move(device))
-    , m_pty(new PseudoTerminal(this))
+    , m_pty(new seriallink::PseudoTerminal(this))
     , m_sendTimer(new QTimer(this))
     , m_tickTimer(new QTimer(this))
 {
@@ -78,7 +78,7 @@ Simulator::Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDev
     connect(m_sendTimer, &QTimer::timeout, this, &Simulator::sendDue);
     m_tickTimer->setInterval(kTickMs);
     connect(m_tickTimer, &QTimer::timeout, this, &Simulator::advanceNow);
-    connect(m_pty, &PseudoTerminal::received, this, &Simulator::onReceived);
+    connect(m_pty, &seriallink::PseudoTerminal::received, this, &Simulator::onReceived);
 }
 
 Simulator::~Simulator()

@@ -74,7 +74,7 @@ private:
 
     SimulatorOptions m_options;
     std::unique_ptr<VirtualDevice> m_device;
-    PseudoTerminal *m_pty = nullptr;
+    seriallink::PseudoTerminal *m_pty = nullptr;
     SimLog m_log;
     std::optional<FaultInjector> m_faults;
     std::optional<UsbAdapter> m_adapter;

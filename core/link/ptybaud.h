@@ -3,10 +3,10 @@
 
 #include <QtGlobal>
 
-namespace sim {
+namespace seriallink {
 
 // TCGETS2 through the master: Linux answers a pty master's termios requests with the slave's
 // settings, which are the ones the client set. Returns 0 when unavailable.
 qint32 readSlaveBaudRate(int masterFd);
 
-} // namespace sim
+} // namespace seriallink

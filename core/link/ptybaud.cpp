@@ -7,7 +7,7 @@
 #include <sys/ioctl.h>
 #endif
 
-namespace sim {
+namespace seriallink {
 
 qint32 readSlaveBaudRate(int masterFd)
 {
@@ -24,4 +24,4 @@ qint32 readSlaveBaudRate(int masterFd)
 #endif
 }
 
-} // namespace sim
+} // namespace seriallink

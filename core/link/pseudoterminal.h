@@ -8,11 +8,11 @@
 
 class QSocketNotifier;
 
-namespace sim {
+namespace seriallink {
 
-// The simulator holds the master side. A client (QSerialPort, a vendor SDK) opens the symlink.
-// The slave is not kept open here, so the client's exclusive lock (TIOCEXCL) ends with its
-// close and a later client can open it again; while no client has it open, the master reports
+// The simulator or a shared bus holds the master side. A client (QSerialPort, a vendor SDK) opens
+// the symlink. The slave is not kept open here, so the client's exclusive lock (TIOCEXCL) ends with
+// its close and a later client can open it again; while no client has it open, the master reports
 // a hang-up, which is handled by polling until a client returns.
 class PseudoTerminal : public QObject
 {
@@ -51,4 +51,4 @@ private:
     QByteArray m_pending; // bytes the pty buffer could not take yet
 };
 
-} // namespace sim
+} // namespace seriallink

@@ -1,4 +1,4 @@
-// Pseudo-terminal master with a symlink to its slave, for the simulated servos.
+// Pseudo-terminal master with a symlink to its slave, for the simulated servos and a shared bus.
 #include "pseudoterminal.h"
 
 #include "ptybaud.h"
@@ -27,7 +27,7 @@ struct Tr
 
 } // namespace
 
-namespace sim {
+namespace seriallink {
 
 namespace {
 
@@ -215,4 +215,4 @@ void PseudoTerminal::flushPending() { }
 
 #endif // Q_OS_UNIX
 
-} // namespace sim
+} // namespace seriallink

@@ -1,0 +1,198 @@
+// The junction of a shared bus: forwarding both ways, own requests between the program's.
+#include "busgate.h"
+
+#include "precisetimer.h"
+
+#include <QMetaObject>
+
+namespace share {
+
+BusGate::BusGate(seriallink::SerialTransport &port, QObject *parent)
+    : Transport(parent)
+    , m_port(port)
+    , m_programFramer(m_format, seriallink::StreamFramer::BadChecksumPolicy::ConsumeFrame)
+    , m_portFramer(m_format, seriallink::StreamFramer::BadChecksumPolicy::ConsumeFrame)
+    , m_program([this](SharedTransaction &&transaction) {
+        if (transaction.unanswered())
+            ++m_counters.unanswered;
+        emit transactionEnded(transaction);
+    })
+    , m_own([this](SharedTransaction &&transaction) {
+        ++m_counters.ownTransactions;
+        emit transactionEnded(transaction);
+    })
+    , m_deadline(new seriallink::PreciseTimer(this))
+{
+    m_own.setOwn(true);
+    m_clock.start();
+    setBaudRate(port.baudRate());
+    connect(&m_port, &Transport::received, this, &BusGate::onPortBytes);
+    connect(&m_port, &Transport::failed, this, &Transport::failed);
+}
+
+BusGate::~BusGate() = default;
+
+bool BusGate::isOpen() const
+{
+    return m_port.isOpen();
+}
+
+qint32 BusGate::baudRate() const
+{
+    return m_port.baudRate();
+}
+
+void BusGate::setBaudRate(qint32 baud)
+{
+    m_program.setBaudRate(baud);
+    m_own.setBaudRate(baud);
+}
+
+QByteArray BusGate::discardInput()
+{
+    return {}; // nothing is kept back from the engine: the port's bytes come as they arrive
+}
+
+void BusGate::deliverPendingInput()
+{
+    m_port.deliverPendingInput();
+}
+
+bool BusGate::programBusy() const
+{
+    return m_program.isOutstanding() || m_programFramer.pendingBytes() > 0;
+}
+
+void BusGate::write(const QByteArray &bytes)
+{
+    m_ownWaiting += bytes;
+    pump();
+}
+
+void BusGate::fromProgram(const QByteArray &bytes)
+{
+    if (!m_port.isOpen()) {
+        // A real wire loses what is sent while the adapter is unplugged; so does this.
+        m_counters.bytesWhileAway += bytes.size();
+        return;
+    }
+    if (m_ownActive || !m_held.isEmpty()) {
+        m_held += bytes;
+        m_counters.heldBytes += bytes.size();
+        return;
+    }
+    forwardProgramBytes(bytes);
+}
+
+void BusGate::forwardProgramBytes(const QByteArray &bytes)
+{
+    m_port.write(bytes);
+    m_counters.bytesFromProgram += bytes.size();
+    m_programFramer.append(bytes);
+    passFrames(m_programFramer, FrameDirection::FromProgram, nullptr);
+    armDeadline();
+}
+
+void BusGate::onPortBytes(const QByteArray &bytes)
+{
+    if (m_ownActive) {
+        emit received(bytes);
+        m_portFramer.append(bytes);
+        passFrames(m_portFramer, FrameDirection::OwnAnswer, &m_own);
+    } else {
+        emit toProgram(bytes);
+        m_counters.bytesToProgram += bytes.size();
+        m_portFramer.append(bytes);
+        passFrames(m_portFramer, FrameDirection::ToProgram, &m_program);
+    }
+    pump();
+}
+
+void BusGate::passFrames(seriallink::StreamFramer &framer, FrameDirection direction,
+                         TransactionTracker *tracker)
+{
+    while (const std::optional<seriallink::StreamItem> item = framer.next()) {
+        const qint64 now = nowUs();
+        const bool frame = item->kind == seriallink::StreamItem::Kind::Frame;
+        if (!frame)
+            m_counters.garbledBytes += item->bytes.size();
+        if (direction == FrameDirection::FromProgram) {
+            if (frame) {
+                ++m_counters.framesFromProgram;
+                m_program.request(item->bytes, now);
+            }
+        } else {
+            if (frame && direction == FrameDirection::ToProgram)
+                ++m_counters.framesToProgram;
+            tracker->heard(*item, now);
+        }
+        emit framePassed({now, direction, item->bytes, {}});
+    }
+}
+
+void BusGate::pump()
+{
+    if (m_ownActive && !m_own.isOutstanding()) {
+        m_ownActive = false;
+        m_program.setEchoes(m_own.echoes());
+        const QByteArray held = std::exchange(m_held, {});
+        if (!held.isEmpty())
+            forwardProgramBytes(held);
+    }
+    if (!m_ownActive && !m_ownWaiting.isEmpty() && !programBusy())
+        startOwnRequest();
+    armDeadline();
+}
+
+void BusGate::startOwnRequest()
+{
+    const QByteArray request = std::exchange(m_ownWaiting, {});
+    m_ownActive = true;
+    m_own.setEchoes(m_program.echoes());
+    m_port.write(request);
+    const qint64 now = nowUs();
+    m_own.request(request, now);
+    emit framePassed({now, FrameDirection::Own, request, {}});
+    // The engine counts its wait from this; told later, as a port would, never inside write().
+    QMetaObject::invokeMethod(
+        this, [this, size = request.size()] { emit bytesWritten(size); }, Qt::QueuedConnection);
+    if (!m_own.isOutstanding())
+        pump(); // nothing answers it (a broadcast): the program goes on at once
+}
+
+void BusGate::armDeadline()
+{
+    std::optional<qint64> deadline = m_program.deadlineUs();
+    if (const auto own = m_own.deadlineUs())
+        deadline = deadline ? qMin(*deadline, *own) : *own;
+    if (!deadline) {
+        m_deadline->stop();
+        return;
+    }
+    m_deadline->start(std::chrono::microseconds(qMax<qint64>(0, *deadline - nowUs())),
+                      [this] { onDeadline(); });
+}
+
+void BusGate::onDeadline()
+{
+    const qint64 now = nowUs();
+    m_program.expire(now);
+    m_own.expire(now);
+    pump();
+}
+
+void BusGate::portLost()
+{
+    m_counters.bytesWhileAway += m_held.size();
+    m_held.clear();
+    m_ownWaiting.clear();
+    m_ownActive = false;
+    m_programFramer.discardPending();
+    m_portFramer.discardPending();
+    const qint64 now = nowUs() + (qint64(1) << 40); // everything outstanding is over
+    m_program.expire(now);
+    m_own.expire(now);
+    m_deadline->stop();
+}
+
+} // namespace share

@@ -1,0 +1,72 @@
+// Pairs the requests on a shared bus with the answers the bus gave, as the bytes pass.
+#pragma once
+
+#include "sharedtransaction.h"
+#include "streamframer.h"
+
+#include <chrono>
+#include <functional>
+#include <optional>
+
+namespace share {
+
+// Sees frames only, never touches the bytes: the share forwards them as they come and shows
+// this tracker the same frames. A request is outstanding until its answers are all in, its
+// time is up, or the next request comes (its sender has given up waiting). A frame equal to
+// the request before any answer is the adapter's echo; the first request tells whether the
+// adapter echoes, and the answer then waits for it.
+class TransactionTracker
+{
+public:
+    using Completed = std::function<void(SharedTransaction &&transaction)>;
+
+    explicit TransactionTracker(Completed completed);
+
+    // For the wire time in each request's wait.
+    void setBaudRate(qint32 baud) { m_baud = baud > 0 ? baud : m_baud; }
+    // How long an answer may take beyond its wire time before the request counts unanswered.
+    void setAnswerWait(std::chrono::microseconds wait) { m_answerWait = wait; }
+    // Whether the adapter sends every byte back (nothing: not known yet).
+    std::optional<bool> echoes() const { return m_echoes; }
+    void setEchoes(std::optional<bool> echoes) { m_echoes = echoes; }
+    // The transactions it completes are ServoBench's own.
+    void setOwn(bool own) { m_own = own; }
+
+    // A whole request frame left for the bus at `nowUs`; one still outstanding ends first.
+    void request(const QByteArray &frame, qint64 nowUs);
+    // A piece the bus sent back: a frame, a frame with a bad checksum, or bytes that are none.
+    void heard(const seriallink::StreamItem &item, qint64 nowUs);
+    // Ends the outstanding request when its time is up; true when it ended.
+    bool expire(qint64 nowUs);
+
+    bool isOutstanding() const { return m_current.has_value(); }
+    // When expire() should be called next; nothing while no request is outstanding.
+    std::optional<qint64> deadlineUs() const;
+
+    qint64 strayFrames() const { return m_strayFrames; }
+    qint64 strayBytes() const { return m_strayBytes; }
+
+private:
+    struct Outstanding
+    {
+        SharedTransaction transaction;
+        QVector<quint8> ids; // who may answer; empty: anyone (a broadcast PING)
+        int replySize = 0; // the answers' bytes together, for the wire time
+        bool echoSeen = false;
+    };
+
+    void complete();
+    bool isAnswer(const QByteArray &frame) const;
+    qint64 wireTimeUs(int bytes) const;
+
+    Completed m_completed;
+    std::optional<Outstanding> m_current;
+    std::optional<bool> m_echoes;
+    qint32 m_baud = 1000000;
+    std::chrono::microseconds m_answerWait {30000};
+    bool m_own = false;
+    qint64 m_strayFrames = 0;
+    qint64 m_strayBytes = 0;
+};
+
+} // namespace share
