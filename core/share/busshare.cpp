@@ -188,9 +188,7 @@ void BusShare::onLinkStatus()
                     "back; the share waits for it.")
                  .arg(m_link.status().message));
     } else {
-        // The link reopened the port at the rate it had: the program's rate is set again.
-        m_programBaud = 0;
-        followProgramRate();
+        // The link reopened the port at the rate it had, the last the program set.
         note(Tr::tr("The adapter is back: the share goes on."));
     }
 }
