@@ -139,6 +139,42 @@ private slots:
         QCOMPARE(m_share->counters().unanswered, 6);
     }
 
+    void servoctlScansAndReadsThroughTheShareAsItWouldTheAdapter()
+    {
+        startShare(busOptions(testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"SCS0009"})));
+        // servoctl's own event loop runs the share too: they share this thread.
+        const auto scan = testsupport::runServoctl(
+            {QStringLiteral("--port"), programPath(), QStringLiteral("--json"),
+             QStringLiteral("feetech"), QStringLiteral("scan")});
+        QVERIFY2(scan.exitCode == 0, qPrintable(scan.err));
+        const QJsonArray servos = QJsonDocument::fromJson(scan.out.toUtf8()).array();
+        QCOMPARE(servos.size(), 3);
+        QVERIFY(servos.at(2)[QStringLiteral("model")].toString().contains(QStringLiteral("SCS0009")));
+        const auto read = testsupport::runServoctl(
+            {QStringLiteral("--port"), programPath(), QStringLiteral("feetech"),
+             QStringLiteral("get"), QStringLiteral("--id"), QStringLiteral("2"),
+             QStringLiteral("present_voltage")});
+        QVERIFY2(read.exitCode == 0, qPrintable(read.err));
+        // Every ID was asked once by the program's scan; none by ServoBench itself.
+        QVERIFY(m_share->counters().framesFromProgram > 250);
+        QCOMPARE(m_share->counters().ownTransactions, 0);
+    }
+
+    void garbageFromEitherSideIsPassedOnAndCounted()
+    {
+        startShare(busOptions(testsupport::servosAt(k1M, {u"STS3215"})));
+        const bool answered = asProgram([path = programPath()] {
+            BlockingClient program;
+            if (!program.open(path, k1M))
+                return false;
+            program.exchange(QByteArray::fromHex("00ff12ffff"), 0, std::chrono::milliseconds(5));
+            return program.ask(feetech::ping(1), 1).has_value();
+        });
+        QVERIFY(answered);
+        QTRY_VERIFY(m_share->counters().garbledBytes > 0);
+        QCOMPARE(m_share->counters().bytesFromProgram, qint64(5 + 6));
+    }
+
     void aSyncReadLoopIsAnsweredEveryTimeAndDecodedByKey()
     {
         startShare(busOptions(testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"STS3215"})));

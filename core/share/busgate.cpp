@@ -7,6 +7,12 @@
 
 namespace share {
 
+namespace {
+
+constexpr std::chrono::milliseconds kOwnAnswerWait {100};
+
+} // namespace
+
 BusGate::BusGate(seriallink::SerialTransport &port, QObject *parent)
     : Transport(parent)
     , m_port(port)
@@ -24,6 +30,10 @@ BusGate::BusGate(seriallink::SerialTransport &port, QObject *parent)
     , m_deadline(new seriallink::PreciseTimer(this))
 {
     m_own.setOwn(true);
+    // An own request goes only to a servo known to answer: its answer is waited for long, so
+    // that a late one (a loaded machine, a USB adapter's latency timer) can never reach the
+    // program after its held bytes have gone on.
+    m_own.setAnswerWait(kOwnAnswerWait);
     m_clock.start();
     setBaudRate(port.baudRate());
     connect(&m_port, &Transport::received, this, &BusGate::onPortBytes);
