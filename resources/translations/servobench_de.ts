@@ -285,6 +285,45 @@
     </message>
 </context>
 <context>
+    <name>BusShare</name>
+    <message>
+        <source>The bus is shared already, at %1.</source>
+        <translation>Der Bus wird bereits geteilt, unter %1.</translation>
+    </message>
+    <message>
+        <source>The port is not open: connect to the bus first.</source>
+        <translation>Der Port ist nicht geöffnet: zuerst mit dem Bus verbinden.</translation>
+    </message>
+    <message>
+        <source>Name the path the other program opens.</source>
+        <translation>Den Pfad angeben, den das andere Programm öffnet.</translation>
+    </message>
+    <message>
+        <source>%1 is the bus&apos;s own port: give the other program another path.</source>
+        <translation>%1 ist der eigene Port des Busses: dem anderen Programm einen anderen Pfad geben.</translation>
+    </message>
+    <message>
+        <source>The program set %1 baud, which the port refuses; it stays at %2 baud.</source>
+        <translation>Das Programm hat %1 Baud eingestellt, was der Port ablehnt; er bleibt bei %2 Baud.</translation>
+    </message>
+    <message>
+        <source>The program set %1 baud; the port follows.</source>
+        <translation>Das Programm hat %1 Baud eingestellt; der Port folgt.</translation>
+    </message>
+    <message>
+        <source>The adapter went away (%1): what the program sends is lost until it is back; the share waits for it.</source>
+        <translation>Der Adapter ist weg (%1): was das Programm sendet, geht verloren, bis er zurück ist; die Freigabe wartet auf ihn.</translation>
+    </message>
+    <message>
+        <source>The adapter is back: the share goes on.</source>
+        <translation>Der Adapter ist zurück: die Freigabe läuft weiter.</translation>
+    </message>
+    <message>
+        <source>%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; %5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s).</source>
+        <translation>%1 Frame(s) (%2 Bytes) vom Programm, %3 Frame(s) (%4 Bytes) zurück; %5 Anfrage(n) unbeantwortet, %6 verstümmelte(s) Byte(s), %7 Warnung(en), %8 Beobachtungs-Lesevorgang/-vorgänge.</translation>
+    </message>
+</context>
+<context>
     <name>CalibrationActions</name>
     <message>
         <source>&amp;Calibrate arm…</source>
@@ -7165,6 +7204,83 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>ShareAlerts</name>
+    <message>
+        <source>Servo %1 reports overload: it stopped holding (torque off) until it is switched on again. Look for a blocked joint or a load too heavy for it.</source>
+        <translation>Servo %1 meldet Überlast: es hält nicht mehr (Drehmoment aus), bis es wieder eingeschaltet wird. Nach einem blockierten Gelenk oder einer zu schweren Last suchen.</translation>
+    </message>
+    <message>
+        <source>Servo %1 answers with error bits set: %2.</source>
+        <translation>Servo %1 antwortet mit gesetzten Fehlerbits: %2.</translation>
+    </message>
+    <message>
+        <source>Answers at ID %1 come garbled again and again: two servos may share this ID. Connect them one at a time and give each its own ID.</source>
+        <translation>Antworten unter ID %1 kommen immer wieder verstümmelt: zwei Servos teilen sich womöglich diese ID. Sie einzeln anschließen und jedem eine eigene ID geben.</translation>
+    </message>
+    <message>
+        <source>Servo %1 is at %2 °C, within %3 °C of its maximum (%4 °C): it will soon cut its torque. Let it cool, or lighten its load.</source>
+        <translation>Servo %1 hat %2 °C, weniger als %3 °C unter seinem Maximum (%4 °C): es schaltet bald sein Drehmoment ab. Abkühlen lassen oder die Last verringern.</translation>
+    </message>
+    <message>
+        <source>Servo %1 measures %2 V, outside its limits %3-%4 V: check the supply.</source>
+        <translation>Servo %1 misst %2 V, außerhalb seiner Grenzen %3-%4 V: die Versorgung prüfen.</translation>
+    </message>
+    <message>
+        <source>The program set phase bit 4 of servo %1 (multi-turn): its positions will leave 0-4095 and a calibration made without it no longer fits.</source>
+        <translation>Das Programm hat Phasen-Bit 4 von Servo %1 gesetzt (Mehrfachumdrehung): seine Positionen verlassen 0-4095, und eine Kalibrierung ohne dieses Bit passt nicht mehr.</translation>
+    </message>
+    <message>
+        <source>The program switched torque on at servo %1 with its goal %2 steps from where it stands (%3 → %4): the horn jumps.</source>
+        <translation>Das Programm hat das Drehmoment von Servo %1 eingeschaltet, während sein Ziel %2 Schritte von seiner Stellung entfernt ist (%3 → %4): das Horn springt.</translation>
+    </message>
+    <message>
+        <source>The program unlocked the EEPROM of servo %1 and has not locked it again: a stray write now changes its settings for good.</source>
+        <translation>Das Programm hat das EEPROM von Servo %1 entsperrt und nicht wieder gesperrt: ein versehentlicher Schreibvorgang ändert seine Einstellungen jetzt dauerhaft.</translation>
+    </message>
+</context>
+<context>
+    <name>ShareCommand</name>
+    <message>
+        <source>share takes no --%1</source>
+        <translation>share kennt kein --%1</translation>
+    </message>
+    <message>
+        <source>share takes no arguments besides its options</source>
+        <translation>share nimmt außer seinen Optionen keine Argumente</translation>
+    </message>
+    <message>
+        <source>share needs --port: the adapter the servos are on</source>
+        <translation>share braucht --port: den Adapter, an dem die Servos hängen</translation>
+    </message>
+    <message>
+        <source>share needs --link PATH: the path the other program opens</source>
+        <translation>share braucht --link PFAD: den Pfad, den das andere Programm öffnet</translation>
+    </message>
+    <message>
+        <source>Sharing %1 at %2 baud: give the other program %3 (%4). Ctrl-C ends.</source>
+        <translation>%1 wird mit %2 Baud geteilt: dem anderen Programm %3 (%4) geben. Strg-C beendet.</translation>
+    </message>
+    <message>
+        <source>alert %1 at ID %2: %3</source>
+        <translation>Warnung %1 bei ID %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>ShareRecording</name>
+    <message>
+        <source>it is larger than any recording (1 GiB)</source>
+        <translation>sie ist größer als jede Aufzeichnung (1 GiB)</translation>
+    </message>
+    <message>
+        <source>line %1 is not &quot;&lt;seconds&gt; &lt;direction&gt; &lt;hex&gt;&quot;</source>
+        <translation>Zeile %1 ist nicht &quot;&lt;seconds&gt; &lt;direction&gt; &lt;hex&gt;&quot;</translation>
+    </message>
+    <message>
+        <source>this is no ServoBench share recording</source>
+        <translation>dies ist keine ServoBench-Freigabeaufzeichnung</translation>
+    </message>
+</context>
+<context>
     <name>SharedIdCheck</name>
     <message>
         <source>Two or more servos answer at ID %1 (their replies come back garbled): nothing is written to it while it is shared. Connect them one at a time and give each its own ID.</source>
@@ -8905,6 +9021,26 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>ptk nimmt kein --%1 an</translation>
     </message>
     <message>
+        <source>--echo must be auto, on or off</source>
+        <translation>--echo muss auto, on oder off sein</translation>
+    </message>
+    <message>
+        <source>drive_mode %1 is LeRobot&apos;s software setting (the direction inverted), held by no register: it is kept in the file only</source>
+        <translation>drive_mode %1 ist eine Software-Einstellung von LeRobot (die Richtung umgekehrt), die kein Register hält: Sie wird nur in der Datei geführt</translation>
+    </message>
+    <message>
+        <source>%1: note: %2</source>
+        <translation>%1: Hinweis: %2</translation>
+    </message>
+    <message>
+        <source>note: servo %1&apos;s EEPROM is unlocked (lock = 0), as some programs (LeRobot among them) leave it: a setting written to it now survives a power cut. servoctl locks it again after each of its own EEPROM writes; to lock it now: servoctl feetech lock --id %1</source>
+        <translation>Hinweis: Das EEPROM von Servo %1 ist entsperrt (lock = 0), wie manche Programme (darunter LeRobot) es hinterlassen: Eine jetzt geschriebene Einstellung übersteht einen Stromausfall. servoctl sperrt es nach jedem eigenen EEPROM-Schreibvorgang wieder; um es jetzt zu sperren: servoctl feetech lock --id %1</translation>
+    </message>
+    <message>
+        <source>servo %1 answers with error bits 0x%2 (%3): servoctl doctor says why</source>
+        <translation>Servo %1 antwortet mit Fehlerbits 0x%2 (%3): servoctl doctor sagt, warum</translation>
+    </message>
+    <message>
         <source>usage: servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
 
 commands:
@@ -8968,7 +9104,13 @@ commands:
   feetech calibration save --ids LIST [--names LIST] FILE
                                          the servos&apos; offsets and limits to a LeRobot file
   feetech calibration load FILE          write a LeRobot calibration file, verified
+  share --link PATH [--record FILE] [--watch] [--duration S]
+                                         stand between another program and the servos:
+                                         it opens PATH, every byte is forwarded; --json
+                                         prints each transaction, --watch reads the
+                                         servos in its idle gaps; alerts on stderr
   decode [--family ptk|feetech] HEX...   split bytes into frames and explain each
+  decode --family feetech --log FILE     explain a recording of share, frame by frame
   packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)
   packet ptk write NAME=VALUE...         print the PTK write frames carrying these values
   packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]
@@ -9047,7 +9189,13 @@ Befehle:
   feetech calibration save --ids LIST [--names LIST] FILE
                                          Offsets und Grenzen der Servos in eine LeRobot-Datei
   feetech calibration load FILE          eine LeRobot-Kalibrierdatei schreiben, überprüft
+  share --link PATH [--record FILE] [--watch] [--duration S]
+                                         zwischen einem anderen Programm und den Servos:
+                                         es öffnet PATH, jedes Byte wird weitergeleitet;
+                                         --json gibt jede Transaktion aus, --watch liest
+                                         die Servos in seinen Pausen; Warnungen auf stderr
   decode [--family ptk|feetech] HEX...   Bytes in Frames zerlegen und jeden erklären
+  decode --family feetech --log FILE     eine Aufzeichnung von share Frame für Frame erklären
   packet ptk query CMD                   einen PTK-Abfrage-Frame ausgeben (CMD: 0x38, 56 oder N1..N8)
   packet ptk write NAME=VALUE...         die PTK-Schreib-Frames mit diesen Werten ausgeben
   packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]
@@ -9065,24 +9213,12 @@ Exit-Status: 0 erledigt, 1 Geräte- oder Verbindungsfehler, 2 Aufruffehler (nich
 </translation>
     </message>
     <message>
-        <source>--echo must be auto, on or off</source>
-        <translation>--echo muss auto, on oder off sein</translation>
+        <source>decode --log takes the recording only, no bytes</source>
+        <translation>decode --log nimmt nur die Aufzeichnung, keine Bytes</translation>
     </message>
     <message>
-        <source>drive_mode %1 is LeRobot&apos;s software setting (the direction inverted), held by no register: it is kept in the file only</source>
-        <translation>drive_mode %1 ist eine Software-Einstellung von LeRobot (die Richtung umgekehrt), die kein Register hält: Sie wird nur in der Datei geführt</translation>
-    </message>
-    <message>
-        <source>%1: note: %2</source>
-        <translation>%1: Hinweis: %2</translation>
-    </message>
-    <message>
-        <source>note: servo %1&apos;s EEPROM is unlocked (lock = 0), as some programs (LeRobot among them) leave it: a setting written to it now survives a power cut. servoctl locks it again after each of its own EEPROM writes; to lock it now: servoctl feetech lock --id %1</source>
-        <translation>Hinweis: Das EEPROM von Servo %1 ist entsperrt (lock = 0), wie manche Programme (darunter LeRobot) es hinterlassen: Eine jetzt geschriebene Einstellung übersteht einen Stromausfall. servoctl sperrt es nach jedem eigenen EEPROM-Schreibvorgang wieder; um es jetzt zu sperren: servoctl feetech lock --id %1</translation>
-    </message>
-    <message>
-        <source>servo %1 answers with error bits 0x%2 (%3): servoctl doctor says why</source>
-        <translation>Servo %1 antwortet mit Fehlerbits 0x%2 (%3): servoctl doctor sagt, warum</translation>
+        <source>share recordings are of Feetech buses: --family feetech</source>
+        <translation>Freigabeaufzeichnungen sind von Feetech-Bussen: --family feetech</translation>
     </message>
 </context>
 <context>

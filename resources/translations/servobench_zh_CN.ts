@@ -284,6 +284,45 @@
     </message>
 </context>
 <context>
+    <name>BusShare</name>
+    <message>
+        <source>The bus is shared already, at %1.</source>
+        <translation>总线已在共享中，路径为 %1。</translation>
+    </message>
+    <message>
+        <source>The port is not open: connect to the bus first.</source>
+        <translation>端口未打开：请先连接总线。</translation>
+    </message>
+    <message>
+        <source>Name the path the other program opens.</source>
+        <translation>请指定另一个程序要打开的路径。</translation>
+    </message>
+    <message>
+        <source>%1 is the bus&apos;s own port: give the other program another path.</source>
+        <translation>%1 是总线自身的端口：请给另一个程序另一个路径。</translation>
+    </message>
+    <message>
+        <source>The program set %1 baud, which the port refuses; it stays at %2 baud.</source>
+        <translation>该程序设置了 %1 波特率，端口拒绝了它；端口保持 %2 波特率。</translation>
+    </message>
+    <message>
+        <source>The program set %1 baud; the port follows.</source>
+        <translation>该程序设置了 %1 波特率；端口随之更改。</translation>
+    </message>
+    <message>
+        <source>The adapter went away (%1): what the program sends is lost until it is back; the share waits for it.</source>
+        <translation>适配器已断开（%1）：在它恢复之前，该程序发送的数据会丢失；共享会等待它恢复。</translation>
+    </message>
+    <message>
+        <source>The adapter is back: the share goes on.</source>
+        <translation>适配器已恢复：共享继续。</translation>
+    </message>
+    <message>
+        <source>%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; %5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s).</source>
+        <translation>来自该程序 %1 帧（%2 字节），返回给它 %3 帧（%4 字节）；%5 个请求无应答，%6 个乱码字节，%7 条警报，%8 次监视读取。</translation>
+    </message>
+</context>
+<context>
     <name>CalibrationActions</name>
     <message>
         <source>&amp;Calibrate arm…</source>
@@ -7129,6 +7168,83 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>ShareAlerts</name>
+    <message>
+        <source>Servo %1 reports overload: it stopped holding (torque off) until it is switched on again. Look for a blocked joint or a load too heavy for it.</source>
+        <translation>舵机 %1 报告过载：在重新开启扭矩之前它已停止保持（扭矩关闭）。请检查关节是否被卡住，或负载是否过重。</translation>
+    </message>
+    <message>
+        <source>Servo %1 answers with error bits set: %2.</source>
+        <translation>舵机 %1 的应答带有错误位：%2。</translation>
+    </message>
+    <message>
+        <source>Answers at ID %1 come garbled again and again: two servos may share this ID. Connect them one at a time and give each its own ID.</source>
+        <translation>ID %1 的应答屡次出现乱码：可能有两个舵机共用此 ID。请逐个连接它们，并为每个舵机设置各自的 ID。</translation>
+    </message>
+    <message>
+        <source>Servo %1 is at %2 °C, within %3 °C of its maximum (%4 °C): it will soon cut its torque. Let it cool, or lighten its load.</source>
+        <translation>舵机 %1 温度为 %2 °C，距其最高温度（%4 °C）不到 %3 °C：它很快会切断扭矩。请让它冷却，或减轻负载。</translation>
+    </message>
+    <message>
+        <source>Servo %1 measures %2 V, outside its limits %3-%4 V: check the supply.</source>
+        <translation>舵机 %1 测得 %2 V，超出其限制 %3-%4 V：请检查电源。</translation>
+    </message>
+    <message>
+        <source>The program set phase bit 4 of servo %1 (multi-turn): its positions will leave 0-4095 and a calibration made without it no longer fits.</source>
+        <translation>该程序设置了舵机 %1 的相位第 4 位（多圈）：其位置将超出 0-4095，不含此设置的校准将不再适用。</translation>
+    </message>
+    <message>
+        <source>The program switched torque on at servo %1 with its goal %2 steps from where it stands (%3 → %4): the horn jumps.</source>
+        <translation>该程序在舵机 %1 的目标距当前位置 %2 步时开启了扭矩（%3 → %4）：舵盘会跳动。</translation>
+    </message>
+    <message>
+        <source>The program unlocked the EEPROM of servo %1 and has not locked it again: a stray write now changes its settings for good.</source>
+        <translation>该程序解锁了舵机 %1 的 EEPROM 且未重新锁定：此时一次误写就会永久改变其设置。</translation>
+    </message>
+</context>
+<context>
+    <name>ShareCommand</name>
+    <message>
+        <source>share takes no --%1</source>
+        <translation>share 不接受 --%1</translation>
+    </message>
+    <message>
+        <source>share takes no arguments besides its options</source>
+        <translation>share 除选项外不接受参数</translation>
+    </message>
+    <message>
+        <source>share needs --port: the adapter the servos are on</source>
+        <translation>share 需要 --port：舵机所在的适配器</translation>
+    </message>
+    <message>
+        <source>share needs --link PATH: the path the other program opens</source>
+        <translation>share 需要 --link PATH：另一个程序要打开的路径</translation>
+    </message>
+    <message>
+        <source>Sharing %1 at %2 baud: give the other program %3 (%4). Ctrl-C ends.</source>
+        <translation>正在以 %2 波特率共享 %1：请把 %3（%4）交给另一个程序。按 Ctrl-C 结束。</translation>
+    </message>
+    <message>
+        <source>alert %1 at ID %2: %3</source>
+        <translation>警报 %1，ID %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>ShareRecording</name>
+    <message>
+        <source>it is larger than any recording (1 GiB)</source>
+        <translation>它比任何记录都大（1 GiB）</translation>
+    </message>
+    <message>
+        <source>line %1 is not &quot;&lt;seconds&gt; &lt;direction&gt; &lt;hex&gt;&quot;</source>
+        <translation>第 %1 行不是 &quot;&lt;seconds&gt; &lt;direction&gt; &lt;hex&gt;&quot;</translation>
+    </message>
+    <message>
+        <source>this is no ServoBench share recording</source>
+        <translation>这不是 ServoBench 共享记录</translation>
+    </message>
+</context>
+<context>
     <name>SharedIdCheck</name>
     <message>
         <source>Two or more servos answer at ID %1 (their replies come back garbled): nothing is written to it while it is shared. Connect them one at a time and give each its own ID.</source>
@@ -8741,166 +8857,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>舵机没有应答</translation>
     </message>
     <message>
-        <source>usage: servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
-
-commands:
-  ports                                  list serial ports
-  detect                                 find out what answers on the port: a PTK servo
-                                         or a Feetech bus (its rates and servos); only
-                                         queries, PINGs and READs are sent
-  doctor [--expect LIST [--baud N]]      say what is wrong with the bus and what to do;
-                                         LIST: the servos expected, in chain order
-                                         (1,2,3 or 1-6), at --baud (1000000)
-  ptk read                               read the PTK servo&apos;s thirteen parameters
-  ptk write NAME=VALUE...                change parameters (full sequence, verified)
-  ptk save FILE | ptk load FILE          save the servo to a profile / program one
-  ptk monitor [--duration S] [--csv]     poll continuously, one row per full refresh
-  feetech scan [--baud N|all] [--ids A-B] [--thorough]
-                                         find the servos on the bus (IDs 0-253)
-  feetech ping --id N                    check that a servo answers; its model
-  feetech read --id N                    read every register of a servo
-  feetech get --id N KEY...              read some registers
-  feetech set --id N KEY=VALUE...        write registers (register units), verified
-  feetech save --id N FILE               save the servo&apos;s EEPROM settings to a profile
-  feetech load --id N FILE               write the values of a profile that differ
-  feetech load --ids LIST FILE           the same for several servos (1,2,3 or 1-6);
-                                         FILE may be a robot template: each servo gets
-                                         its joint&apos;s settings by ID; a profile&apos;s
-                                         position_offset is not copied; a servo with
-                                         torque on is refused offset/limit changes
-  feetech set-id --id N NEW              give the servo a new ID (refused if taken)
-  feetech set-baud --id N BAUD           move the servo to another baud rate (bps)
-  feetech calibrate-middle --id N        make the present position the middle
-  feetech factory-reset --id N [--backup FILE]
-                                         save a backup profile, then restore factory values
-  feetech reboot --id N                  restart the servo and wait for it
-  feetech lock --id N                    close an EEPROM lock left open, read it back
-  feetech recover --id N [--check]       after an overload trip: torque off and on, goal
-                                         at the present position, the overload bit read;
-                                         still set: the power-cycle steps (exit 1); after
-                                         the power cycle --check only reads the bit
-  feetech setup-motor --id N [--baud BPS] [--model MODEL] [--settings ROBOT]
-                                         the one servo on the bus (any ID, any rate) gets
-                                         ID N and rate BPS (default 1000000, or the
-                                         robot&apos;s), verified; ROBOT: a robot template file,
-                                         whose joint with ID N gives the model to expect
-                                         and the settings to write and verify
-  feetech identify --id N                wiggle the servo slowly so you see which it is
-  feetech health --ids LIST [--move-test]
-                                         check each servo: model and firmware, voltage and
-                                         temperature against its limits, status bits, load,
-                                         20 reads&apos; retries and errors, position against its
-                                         limits; --move-test also moves each servo without
-                                         a fault 100 steps and back (rise time, overshoot,
-                                         steady-state error); exit 1 when a servo has a fault
-  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
-                                         stream position, speed, load, voltage,
-                                         temperature and current (SYNC READ)
-  feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
-                    [--dry-run] --out FILE
-                                         torque off, record each joint&apos;s range by hand
-                                         (Enter ends), centre it on the encoder: offset
-                                         and limits written, LeRobot calibration saved
-  feetech calibration save --ids LIST [--names LIST] FILE
-                                         the servos&apos; offsets and limits to a LeRobot file
-  feetech calibration load FILE          write a LeRobot calibration file, verified
-  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each
-  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)
-  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values
-  packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]
-      INSTRUCTION: ping read write reg-write action sync-write sync-read
-                   recovery reboot reset calibrate
-
-options: --port PATH (device commands), --baud N (PTK: 115200; Feetech: the servo&apos;s
-         rate, 1000000),
-         --echo auto|on|off (single-wire adapter echo; default auto)
-
-The overload and thermal guard watches every servo a command drives (identify, and set
-while it runs); its warnings and actions are printed on stderr.
-
-exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
-</source>
-        <translation>用法：servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
-
-命令：
-  ports                                  列出串口
-  detect                                 查明端口上是什么在应答：PTK 舵机
-                                         还是 Feetech 总线（及其波特率和舵机）；只发送
-                                         查询、PING 和 READ
-  doctor [--expect LIST [--baud N]]      指出总线有什么问题以及该怎么做；
-                                         LIST：预期的舵机，按串联顺序排列
-                                         （1,2,3 或 1-6），波特率为 --baud（1000000）
-  ptk read                               读取 PTK 舵机的十三个参数
-  ptk write NAME=VALUE...                修改参数（完整流程，写后验证）
-  ptk save FILE | ptk load FILE          将舵机保存为配置文件 / 用配置文件编程舵机
-  ptk monitor [--duration S] [--csv]     持续轮询，每次完整刷新输出一行
-  feetech scan [--baud N|all] [--ids A-B] [--thorough]
-                                         查找总线上的舵机（ID 0-253）
-  feetech ping --id N                    检查舵机是否应答；显示其型号
-  feetech read --id N                    读取舵机的所有寄存器
-  feetech get --id N KEY...              读取部分寄存器
-  feetech set --id N KEY=VALUE...        写入寄存器（寄存器单位），写后验证
-  feetech save --id N FILE               将舵机的 EEPROM 设置保存为配置文件
-  feetech load --id N FILE               写入配置文件中与舵机不同的值
-  feetech load --ids LIST FILE           对多个舵机执行相同操作（1,2,3 或 1-6）；
-                                         FILE 可以是机器人模板：每个舵机按 ID 获得
-                                         对应关节的设置；配置文件中的
-                                         position_offset 不会被复制；扭矩开启的舵机
-                                         将拒绝偏移/限制的更改
-  feetech set-id --id N NEW              为舵机设置新 ID（若已被占用则拒绝）
-  feetech set-baud --id N BAUD           将舵机改为另一个波特率（bps）
-  feetech calibrate-middle --id N        将当前位置设为中位
-  feetech factory-reset --id N [--backup FILE]
-                                         保存备份配置文件，然后恢复出厂值
-  feetech reboot --id N                  重启舵机并等待其恢复
-  feetech lock --id N                    关闭未上锁的 EEPROM 锁标志并回读
-  feetech recover --id N [--check]       过载保护触发后：关闭再开启扭矩，将目标
-                                         设为当前位置，读取过载位；
-                                         若仍置位：给出断电重启步骤（退出码 1）；断电
-                                         重启后，--check 只读取该位
-  feetech setup-motor --id N [--baud BPS] [--model MODEL] [--settings ROBOT]
-                                         为总线上唯一的舵机（任意 ID、任意波特率）设置
-                                         ID N 和波特率 BPS（默认 1000000，或机器人的
-                                         波特率），写后验证；ROBOT：机器人模板文件，
-                                         其中 ID 为 N 的关节给出预期的型号
-                                         以及要写入并验证的设置
-  feetech identify --id N                缓慢摆动舵机，让你看出是哪一个
-  feetech health --ids LIST [--move-test]
-                                         检查每个舵机：型号和固件，电压和温度是否
-                                         在限制之内，状态位，负载，
-                                         20 次读取的重试和错误，位置是否在其
-                                         限制之内；--move-test 还会让每个无故障的舵机
-                                         移动 100 步再返回（上升时间、超调、
-                                         稳态误差）；有舵机存在故障时退出码为 1
-  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
-                                         连续输出位置、速度、负载、电压、
-                                         温度和电流（SYNC READ）
-  feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
-                    [--dry-run] --out FILE
-                                         关闭扭矩，用手记录每个关节的范围
-                                         （按 Enter 结束），使其在编码器上居中：写入偏移
-                                         和限制，保存 LeRobot 校准文件
-  feetech calibration save --ids LIST [--names LIST] FILE
-                                         将舵机的偏移和限制保存到 LeRobot 文件
-  feetech calibration load FILE          写入 LeRobot 校准文件，写后验证
-  decode [--family ptk|feetech] HEX...   将字节拆分为帧并逐一解释
-  packet ptk query CMD                   打印 PTK 查询帧（CMD：0x38、56 或 N1..N8）
-  packet ptk write NAME=VALUE...         打印携带这些值的 PTK 写入帧
-  packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]
-      INSTRUCTION: ping read write reg-write action sync-write sync-read
-                   recovery reboot reset calibrate
-
-选项：   --port PATH（设备命令），--baud N（PTK：115200；Feetech：舵机的
-         波特率，1000000），
-         --echo auto|on|off（单线适配器回显；默认 auto）
-
-过载和过热保护会监视命令驱动的每个舵机（identify，以及 set
-运行期间）；其警告和动作输出到 stderr。
-
-退出状态：0 完成，1 设备或链路故障，2 用法错误（未发送任何内容）
-</translation>
-    </message>
-    <message>
         <source>no command given (try servoctl --help)</source>
         <translation>未指定命令（请尝试 servoctl --help）</translation>
     </message>
@@ -9039,6 +8995,186 @@ exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
     <message>
         <source>servo %1 answers with error bits 0x%2 (%3): servoctl doctor says why</source>
         <translation>舵机 %1 的应答带有错误位 0x%2（%3）：servoctl doctor 会说明原因</translation>
+    </message>
+    <message>
+        <source>usage: servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
+
+commands:
+  ports                                  list serial ports
+  detect                                 find out what answers on the port: a PTK servo
+                                         or a Feetech bus (its rates and servos); only
+                                         queries, PINGs and READs are sent
+  doctor [--expect LIST [--baud N]]      say what is wrong with the bus and what to do;
+                                         LIST: the servos expected, in chain order
+                                         (1,2,3 or 1-6), at --baud (1000000)
+  ptk read                               read the PTK servo&apos;s thirteen parameters
+  ptk write NAME=VALUE...                change parameters (full sequence, verified)
+  ptk save FILE | ptk load FILE          save the servo to a profile / program one
+  ptk monitor [--duration S] [--csv]     poll continuously, one row per full refresh
+  feetech scan [--baud N|all] [--ids A-B] [--thorough]
+                                         find the servos on the bus (IDs 0-253)
+  feetech ping --id N                    check that a servo answers; its model
+  feetech read --id N                    read every register of a servo
+  feetech get --id N KEY...              read some registers
+  feetech set --id N KEY=VALUE...        write registers (register units), verified
+  feetech save --id N FILE               save the servo&apos;s EEPROM settings to a profile
+  feetech load --id N FILE               write the values of a profile that differ
+  feetech load --ids LIST FILE           the same for several servos (1,2,3 or 1-6);
+                                         FILE may be a robot template: each servo gets
+                                         its joint&apos;s settings by ID; a profile&apos;s
+                                         position_offset is not copied; a servo with
+                                         torque on is refused offset/limit changes
+  feetech set-id --id N NEW              give the servo a new ID (refused if taken)
+  feetech set-baud --id N BAUD           move the servo to another baud rate (bps)
+  feetech calibrate-middle --id N        make the present position the middle
+  feetech factory-reset --id N [--backup FILE]
+                                         save a backup profile, then restore factory values
+  feetech reboot --id N                  restart the servo and wait for it
+  feetech lock --id N                    close an EEPROM lock left open, read it back
+  feetech recover --id N [--check]       after an overload trip: torque off and on, goal
+                                         at the present position, the overload bit read;
+                                         still set: the power-cycle steps (exit 1); after
+                                         the power cycle --check only reads the bit
+  feetech setup-motor --id N [--baud BPS] [--model MODEL] [--settings ROBOT]
+                                         the one servo on the bus (any ID, any rate) gets
+                                         ID N and rate BPS (default 1000000, or the
+                                         robot&apos;s), verified; ROBOT: a robot template file,
+                                         whose joint with ID N gives the model to expect
+                                         and the settings to write and verify
+  feetech identify --id N                wiggle the servo slowly so you see which it is
+  feetech health --ids LIST [--move-test]
+                                         check each servo: model and firmware, voltage and
+                                         temperature against its limits, status bits, load,
+                                         20 reads&apos; retries and errors, position against its
+                                         limits; --move-test also moves each servo without
+                                         a fault 100 steps and back (rise time, overshoot,
+                                         steady-state error); exit 1 when a servo has a fault
+  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
+                                         stream position, speed, load, voltage,
+                                         temperature and current (SYNC READ)
+  feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
+                    [--dry-run] --out FILE
+                                         torque off, record each joint&apos;s range by hand
+                                         (Enter ends), centre it on the encoder: offset
+                                         and limits written, LeRobot calibration saved
+  feetech calibration save --ids LIST [--names LIST] FILE
+                                         the servos&apos; offsets and limits to a LeRobot file
+  feetech calibration load FILE          write a LeRobot calibration file, verified
+  share --link PATH [--record FILE] [--watch] [--duration S]
+                                         stand between another program and the servos:
+                                         it opens PATH, every byte is forwarded; --json
+                                         prints each transaction, --watch reads the
+                                         servos in its idle gaps; alerts on stderr
+  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each
+  decode --family feetech --log FILE     explain a recording of share, frame by frame
+  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)
+  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values
+  packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]
+      INSTRUCTION: ping read write reg-write action sync-write sync-read
+                   recovery reboot reset calibrate
+
+options: --port PATH (device commands), --baud N (PTK: 115200; Feetech: the servo&apos;s
+         rate, 1000000),
+         --echo auto|on|off (single-wire adapter echo; default auto)
+
+The overload and thermal guard watches every servo a command drives (identify, and set
+while it runs); its warnings and actions are printed on stderr.
+
+exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
+</source>
+        <translation>用法：servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
+
+命令：
+  ports                                  列出串口
+  detect                                 查明端口上是什么在应答：PTK 舵机
+                                         还是 Feetech 总线（及其波特率和舵机）；只发送
+                                         查询、PING 和 READ
+  doctor [--expect LIST [--baud N]]      指出总线有什么问题以及该怎么做；
+                                         LIST：预期的舵机，按串联顺序排列
+                                         （1,2,3 或 1-6），波特率为 --baud（1000000）
+  ptk read                               读取 PTK 舵机的十三个参数
+  ptk write NAME=VALUE...                修改参数（完整流程，写后验证）
+  ptk save FILE | ptk load FILE          将舵机保存为配置文件 / 用配置文件编程舵机
+  ptk monitor [--duration S] [--csv]     持续轮询，每次完整刷新输出一行
+  feetech scan [--baud N|all] [--ids A-B] [--thorough]
+                                         查找总线上的舵机（ID 0-253）
+  feetech ping --id N                    检查舵机是否应答；显示其型号
+  feetech read --id N                    读取舵机的所有寄存器
+  feetech get --id N KEY...              读取部分寄存器
+  feetech set --id N KEY=VALUE...        写入寄存器（寄存器单位），写后验证
+  feetech save --id N FILE               将舵机的 EEPROM 设置保存为配置文件
+  feetech load --id N FILE               写入配置文件中与舵机不同的值
+  feetech load --ids LIST FILE           对多个舵机执行相同操作（1,2,3 或 1-6）；
+                                         FILE 可以是机器人模板：每个舵机按 ID 获得
+                                         对应关节的设置；配置文件中的
+                                         position_offset 不会被复制；扭矩开启的舵机
+                                         将拒绝偏移/限制的更改
+  feetech set-id --id N NEW              为舵机设置新 ID（若已被占用则拒绝）
+  feetech set-baud --id N BAUD           将舵机改为另一个波特率（bps）
+  feetech calibrate-middle --id N        将当前位置设为中位
+  feetech factory-reset --id N [--backup FILE]
+                                         保存备份配置文件，然后恢复出厂值
+  feetech reboot --id N                  重启舵机并等待其恢复
+  feetech lock --id N                    关闭未上锁的 EEPROM 锁标志并回读
+  feetech recover --id N [--check]       过载保护触发后：关闭再开启扭矩，将目标
+                                         设为当前位置，读取过载位；
+                                         若仍置位：给出断电重启步骤（退出码 1）；断电
+                                         重启后，--check 只读取该位
+  feetech setup-motor --id N [--baud BPS] [--model MODEL] [--settings ROBOT]
+                                         为总线上唯一的舵机（任意 ID、任意波特率）设置
+                                         ID N 和波特率 BPS（默认 1000000，或机器人的
+                                         波特率），写后验证；ROBOT：机器人模板文件，
+                                         其中 ID 为 N 的关节给出预期的型号
+                                         以及要写入并验证的设置
+  feetech identify --id N                缓慢摆动舵机，让你看出是哪一个
+  feetech health --ids LIST [--move-test]
+                                         检查每个舵机：型号和固件，电压和温度是否
+                                         在限制之内，状态位，负载，
+                                         20 次读取的重试和错误，位置是否在其
+                                         限制之内；--move-test 还会让每个无故障的舵机
+                                         移动 100 步再返回（上升时间、超调、
+                                         稳态误差）；有舵机存在故障时退出码为 1
+  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
+                                         连续输出位置、速度、负载、电压、
+                                         温度和电流（SYNC READ）
+  feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
+                    [--dry-run] --out FILE
+                                         关闭扭矩，用手记录每个关节的范围
+                                         （按 Enter 结束），使其在编码器上居中：写入偏移
+                                         和限制，保存 LeRobot 校准文件
+  feetech calibration save --ids LIST [--names LIST] FILE
+                                         将舵机的偏移和限制保存到 LeRobot 文件
+  feetech calibration load FILE          写入 LeRobot 校准文件，写后验证
+  share --link PATH [--record FILE] [--watch] [--duration S]
+                                         介于另一个程序和舵机之间：该程序打开 PATH，
+                                         每个字节都被转发；--json 打印每个事务，
+                                         --watch 在其空闲间隙读取舵机；
+                                         警报输出到 stderr
+  decode [--family ptk|feetech] HEX...   将字节拆分为帧并逐一解释
+  decode --family feetech --log FILE     逐帧解释 share 的记录
+  packet ptk query CMD                   打印 PTK 查询帧（CMD：0x38、56 或 N1..N8）
+  packet ptk write NAME=VALUE...         打印携带这些值的 PTK 写入帧
+  packet feetech INSTRUCTION [--id N] [--addr A] [--data HEX] [--len N] [--ids LIST]
+      INSTRUCTION: ping read write reg-write action sync-write sync-read
+                   recovery reboot reset calibrate
+
+选项：   --port PATH（设备命令），--baud N（PTK：115200；Feetech：舵机的
+         波特率，1000000），
+         --echo auto|on|off（单线适配器回显；默认 auto）
+
+过载和过热保护会监视命令驱动的每个舵机（identify，以及 set
+运行期间）；其警告和动作输出到 stderr。
+
+退出状态：0 完成，1 设备或链路故障，2 用法错误（未发送任何内容）
+</translation>
+    </message>
+    <message>
+        <source>decode --log takes the recording only, no bytes</source>
+        <translation>decode --log 只接受记录文件，不接受字节</translation>
+    </message>
+    <message>
+        <source>share recordings are of Feetech buses: --family feetech</source>
+        <translation>共享记录属于飞特总线：--family feetech</translation>
     </message>
 </context>
 <context>
