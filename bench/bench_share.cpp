@@ -29,6 +29,7 @@ struct LoopRun
     int incomplete = 0;
     double seconds = 0;
     double medianRoundTripUs = 0;
+    double slowRoundTripUs = 0; // the 95th percentile: the loop's rate feels its slow end too
 };
 
 // SYNC READs of the feedback block of every servo, back to back, for kRunSeconds.
@@ -58,9 +59,11 @@ LoopRun syncReadLoop(const QString &path)
             ++run.incomplete;
     }
     run.seconds = double(clock.nsecsElapsed()) / 1e9;
-    std::nth_element(roundTrips.begin(), roundTrips.begin() + long(roundTrips.size() / 2),
-                     roundTrips.end());
-    run.medianRoundTripUs = roundTrips.empty() ? 0 : roundTrips[roundTrips.size() / 2];
+    std::sort(roundTrips.begin(), roundTrips.end());
+    if (!roundTrips.empty()) {
+        run.medianRoundTripUs = roundTrips[roundTrips.size() / 2];
+        run.slowRoundTripUs = roundTrips[roundTrips.size() * 95 / 100];
+    }
     return run;
 }
 
@@ -78,7 +81,8 @@ QJsonObject describe(const LoopRun &run)
     return {{QStringLiteral("cycles_per_s"), run.cycles / run.seconds},
             {QStringLiteral("samples_per_s"), run.cycles * kServos / run.seconds},
             {QStringLiteral("incomplete"), run.incomplete},
-            {QStringLiteral("median_round_trip_us"), run.medianRoundTripUs}};
+            {QStringLiteral("median_round_trip_us"), run.medianRoundTripUs},
+            {QStringLiteral("p95_round_trip_us"), run.slowRoundTripUs}};
 }
 
 } // namespace

@@ -103,6 +103,10 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech calibration save --ids LIST [--names LIST] FILE\n"
     "                                         the servos' offsets and limits to a LeRobot file\n"
     "  feetech calibration load FILE          write a LeRobot calibration file, verified\n"
+    "  feetech teleop --leader PORT --calibration FILE --leader-calibration FILE\n"
+    "                 [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--release]\n"
+    "                                         the leader arm on PORT drives this follower,\n"
+    "                                         joints matched by name; Ctrl-C holds\n"
     "  share --link PATH [--record FILE] [--watch] [--duration S]\n"
     "                                         stand between another program and the servos:\n"
     "                                         it opens PATH, every byte is forwarded; --json\n"
@@ -137,18 +141,23 @@ public:
     {
         try {
             const Arguments args(
-                raw,
-                {QStringLiteral("port"),      QStringLiteral("baud"),     QStringLiteral("family"),
-                 QStringLiteral("id"),        QStringLiteral("addr"),     QStringLiteral("data"),
-                 QStringLiteral("len"),       QStringLiteral("ids"),      QStringLiteral("echo"),
-                 QStringLiteral("duration"),  QStringLiteral("backup"),   QStringLiteral("rate"),
-                 QStringLiteral("model"),     QStringLiteral("settings"), QStringLiteral("names"),
-                 QStringLiteral("full-turn"), QStringLiteral("out"),      QStringLiteral("expect"),
-                 QStringLiteral("link"),      QStringLiteral("record"),   QStringLiteral("log")},
+                raw, {QStringLiteral("port"),        QStringLiteral("baud"),
+                      QStringLiteral("family"),      QStringLiteral("id"),
+                      QStringLiteral("addr"),        QStringLiteral("data"),
+                      QStringLiteral("len"),         QStringLiteral("ids"),
+                      QStringLiteral("echo"),        QStringLiteral("duration"),
+                      QStringLiteral("backup"),      QStringLiteral("rate"),
+                      QStringLiteral("model"),       QStringLiteral("settings"),
+                      QStringLiteral("names"),       QStringLiteral("full-turn"),
+                      QStringLiteral("out"),         QStringLiteral("expect"),
+                      QStringLiteral("link"),        QStringLiteral("record"),
+                      QStringLiteral("log"),         QStringLiteral("leader"),
+                      QStringLiteral("calibration"), QStringLiteral("leader-calibration"),
+                      QStringLiteral("max-speed")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
                  QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check"),
-                 QStringLiteral("watch")});
+                 QStringLiteral("watch"), QStringLiteral("release")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);

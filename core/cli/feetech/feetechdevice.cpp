@@ -132,6 +132,13 @@ FeetechDevice::FeetechDevice(const Arguments &args, const Output &output)
     m_trace = args.flag(QStringLiteral("trace"));
 }
 
+FeetechDevice::FeetechDevice(const QString &port, const Arguments &args, const Output &output)
+    : m_output(output)
+    , m_port(port)
+    , m_echo(echoModeOption(args))
+    , m_trace(args.flag(QStringLiteral("trace")))
+{ }
+
 bool FeetechDevice::open(qint32 baud)
 {
     m_session = std::make_unique<feetech::Session>();

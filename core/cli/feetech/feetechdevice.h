@@ -56,8 +56,11 @@ class FeetechDevice
 {
 public:
     FeetechDevice(const Arguments &args, const Output &output);
+    // On `port` rather than --port (a second bus: teleoperation's leader arm).
+    FeetechDevice(const QString &port, const Arguments &args, const Output &output);
 
     feetech::Session &session() { return *m_session; }
+    const QString &port() const { return m_port; }
     const QString &error() const { return m_error; }
 
     bool open(qint32 baud);

@@ -216,6 +216,8 @@ void TelemetryCycle::endCycle()
         state.history.pop_front();
     if (!state.timer)
         state.due = true; // as fast as the bus allows: the next cycle follows at once
+    if (state.options.publishEachCycle)
+        flush();
     // An operation that waited goes before the next cycle.
     if (m_cycleEnded)
         m_cycleEnded();

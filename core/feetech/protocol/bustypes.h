@@ -87,6 +87,9 @@ struct TelemetryOptions
     std::chrono::milliseconds missingProbeInterval {1000};
     // servoctl --trace: every frame in the packet log, not only the failures.
     bool logEveryFrame = false;
+    // Each cycle's samples go out as the cycle ends, not batched (a loop that acts on every
+    // cycle, such as teleoperation, waits for no batch).
+    bool publishEachCycle = false;
     // Names the stream in its samples and statistics, so a client that started a new one can
     // tell late news of the old one apart.
     quint64 stream = 0;

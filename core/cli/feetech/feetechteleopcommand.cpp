@@ -1,0 +1,339 @@
+// servoctl feetech teleop: checks that nothing can jump, holds, then one SYNC READ of the leader
+// and one SYNC WRITE to the follower per cycle until Ctrl-C, SIGTERM or --duration.
+#include "feetechteleopcommand.h"
+
+#include "armcalibration.h"
+#include "registerkeys.h"
+#include "telemetry.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QFileInfo>
+#include <QJsonObject>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+// The servoctl translation context, as in every servoctl file.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(servoctl)
+};
+
+constexpr double kDefaultRateHz = 50.0;
+constexpr double kDefaultMaxSpeed = 90.0; // degrees per second
+constexpr double kStepsPerDegree = 4096.0 / 360.0;
+
+} // namespace
+
+namespace cli {
+
+using feetech::LeRobotMotor;
+
+std::optional<QVector<ServoInfo>>
+FeetechTeleopCommand::identifyArm(FeetechDevice &device, const QVector<LeRobotMotor> &motors,
+                                  const QString &calibrationPath, int *exitCode)
+{
+    QVector<ServoInfo> servos;
+    for (const LeRobotMotor &motor : motors) {
+        const auto servo = device.identify(quint8(motor.id), busBaud());
+        if (!servo) {
+            m_output.err << "servoctl: "
+                         << Tr::tr("joint %1 (servo %2) does not answer: %3")
+                                .arg(motor.name)
+                                .arg(motor.id)
+                                .arg(device.error())
+                         << '\n';
+            *exitCode = ExitUsage;
+            return std::nullopt;
+        }
+        QVector<feetech::Block> blocks;
+        for (const QStringView key :
+             {QStringView(feetech::kOffsetKey), QStringView(feetech::kMinimumLimitKey),
+              QStringView(feetech::kMaximumLimitKey)}) {
+            if (const feetech::Register *reg = servo->table().find(key))
+                blocks.append({reg->address, reg->size});
+        }
+        const auto memory = device.read(*servo, blocks);
+        if (!memory) {
+            *exitCode = fail(device.error());
+            return std::nullopt;
+        }
+        const QHash<QString, qint32> values = valuesByKey(decodeMemory(servo->table(), *memory));
+        const QStringList mismatches = feetech::calibrationMismatches(
+            feetech::calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax), values);
+        if (!mismatches.isEmpty()) {
+            m_output.err << "servoctl: "
+                         << Tr::tr("joint %1 (servo %2) does not hold what %3 says (%4): write "
+                                   "the file to the arm first: servoctl --port %5 feetech "
+                                   "calibration load %3")
+                                .arg(motor.name)
+                                .arg(motor.id)
+                                .arg(QDir::toNativeSeparators(calibrationPath),
+                                     mismatches.join(QStringLiteral("; ")), device.port())
+                         << '\n';
+            *exitCode = ExitUsage;
+            return std::nullopt;
+        }
+        servos.append(*servo);
+    }
+    return servos;
+}
+
+std::optional<QVector<qint32>>
+FeetechTeleopCommand::presentPositions(FeetechDevice &device, const QVector<ServoInfo> &servos)
+{
+    QVector<qint32> positions;
+    for (const ServoInfo &servo : servos) {
+        const feetech::Register *reg = servo.table().find(feetech::registerkeys::kPresentPosition);
+        if (!reg)
+            return std::nullopt;
+        const auto memory = device.read(servo, {{reg->address, reg->size}});
+        if (!memory)
+            return std::nullopt;
+        positions.append(valuesByKey(decodeMemory(servo.table(), *memory))
+                             .value(feetech::registerkeys::kPresentPosition));
+    }
+    return positions;
+}
+
+bool FeetechTeleopCommand::writeAll(FeetechDevice &device, const QVector<ServoInfo> &servos,
+                                    const QString &key, const QVector<qint32> &values)
+{
+    const feetech::RegisterTable &table = servos.first().table();
+    const feetech::Register *reg = table.find(key);
+    if (!reg)
+        return false;
+    QVector<feetech::SyncWriteEntry> entries;
+    for (int i = 0; i < servos.size(); ++i)
+        entries.append({servos.at(i).id, *feetech::encodeValue(values.at(i), table.format(*reg))});
+    const auto result =
+        device.operate(feetech::operations::syncWrite(busBaud(), reg->address, reg->size, entries));
+    return result && result->ok;
+}
+
+int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operands)
+{
+    allowOptions(what,
+                 {QStringLiteral("leader"), QStringLiteral("calibration"),
+                  QStringLiteral("leader-calibration"), QStringLiteral("rate"),
+                  QStringLiteral("duration"), QStringLiteral("max-speed")});
+    expectOperands(what, operands, 0, {});
+    for (const char *option : {"port", "leader", "calibration", "leader-calibration"}) {
+        if (!m_args.has(QLatin1String(option)))
+            throw UsageError {Tr::tr("%1 needs --port FOLLOWER, --leader PORT, --calibration "
+                                     "FILE and --leader-calibration FILE")
+                                  .arg(what)};
+    }
+    const QString followerPort = m_args.value(QStringLiteral("port"));
+    const QString leaderPort = m_args.value(QStringLiteral("leader"));
+    const auto samePort = [](const QString &a, const QString &b) {
+        const QString canonicalA = QFileInfo(a).canonicalFilePath();
+        return a == b || (!canonicalA.isEmpty() && canonicalA == QFileInfo(b).canonicalFilePath());
+    };
+    if (samePort(followerPort, leaderPort))
+        throw UsageError {Tr::tr("--leader and --port name the same port: the leader and the "
+                                 "follower are two arms on two adapters")};
+    const double rate = m_args.has(QStringLiteral("rate"))
+        ? double(integerOption(m_args, QStringLiteral("rate"), 1, 200))
+        : kDefaultRateHz;
+    const double maxSpeed = m_args.has(QStringLiteral("max-speed"))
+        ? double(integerOption(m_args, QStringLiteral("max-speed"), 1, 720))
+        : kDefaultMaxSpeed;
+    const std::optional<double> duration = durationOption(m_args);
+    const bool release = m_args.flag(QStringLiteral("release"));
+
+    util::FileError error;
+    const QString followerFile = m_args.value(QStringLiteral("calibration"));
+    const QString leaderFile = m_args.value(QStringLiteral("leader-calibration"));
+    const auto followerMotors = feetech::loadLeRobotCalibration(followerFile, &error);
+    if (!followerMotors)
+        throw UsageError {error.describe()};
+    const auto leaderMotors = feetech::loadLeRobotCalibration(leaderFile, &error);
+    if (!leaderMotors)
+        throw UsageError {error.describe()};
+    QStringList missing;
+    const auto mapping = feetech::TeleopMapping::match(*followerMotors, *leaderMotors, &missing);
+    if (!mapping)
+        throw UsageError {Tr::tr("the two files name different joints: %1")
+                              .arg(missing.join(QStringLiteral(", ")))};
+    QVector<LeRobotMotor> followerJoints;
+    QVector<LeRobotMotor> leaderJoints;
+    for (const feetech::TeleopJoint &joint : mapping->joints()) {
+        followerJoints.append(joint.follower);
+        leaderJoints.append(joint.leader);
+    }
+
+    FeetechDevice follower(m_args, m_output);
+    FeetechDevice leader(leaderPort, m_args, m_output);
+    if (!follower.open(busBaud()))
+        return fail(follower.error());
+    if (!leader.open(busBaud()))
+        return fail(leader.error());
+    int refused = ExitOk;
+    const auto followerServos = identifyArm(follower, followerJoints, followerFile, &refused);
+    if (!followerServos)
+        return refused;
+    const auto leaderServos = identifyArm(leader, leaderJoints, leaderFile, &refused);
+    if (!leaderServos)
+        return refused;
+
+    // Safe start: the follower holds where it stands (its first goal), then its torque goes on.
+    const auto standing = presentPositions(follower, *followerServos);
+    if (!standing)
+        return fail(follower.error());
+    const feetech::RegisterTable &table = followerServos->first().table();
+    const qint32 torqueOn = table.torqueValue(feetech::TorqueMode::On).value_or(1);
+    if (!writeAll(follower, *followerServos, feetech::registerkeys::kGoalPosition, *standing)
+        || !writeAll(follower, *followerServos, feetech::registerkeys::kTorqueEnable,
+                     QVector<qint32>(followerServos->size(), torqueOn)))
+        return fail(follower.error().isEmpty() ? Tr::tr("the follower's torque could not be "
+                                                        "switched on")
+                                               : follower.error());
+    m_output.err << Tr::tr("servoctl: the follower holds; it moves to the leader's pose at "
+                           "%1°/s at most, then follows. Ctrl-C stops (it holds).")
+                        .arg(maxSpeed)
+                 << '\n';
+    m_output.err.flush();
+
+    // The loop: the leader's stream gives each cycle's positions, the follower gets one SYNC
+    // WRITE of the goals (the newest waits while one is on the wire), each step limited.
+    const feetech::Register *goal = table.find(feetech::registerkeys::kGoalPosition);
+    QVector<double> sent(standing->begin(), standing->end());
+    std::optional<QVector<qint32>> waiting;
+    bool writing = false;
+    qint64 writes = 0;
+    QElapsedTimer sinceWrite;
+    sinceWrite.start();
+    QVector<qint64> latencies;
+    qint64 writeStartedUs = 0;
+    qint64 leaderSampleUs = 0;
+    const double stepsPerSecond = maxSpeed * kStepsPerDegree;
+    QEventLoop loop;
+    bool linkLost = false;
+    QString lostMessage;
+
+    const auto send = [&](const QVector<qint32> &targets, qint64 sampleUs) {
+        const double seconds = std::max(0.001, sinceWrite.nsecsElapsed() / 1e9);
+        sinceWrite.restart();
+        QVector<feetech::SyncWriteEntry> entries;
+        for (int i = 0; i < targets.size(); ++i) {
+            const double reach = stepsPerSecond * seconds;
+            sent[i] += std::clamp(double(targets.at(i)) - sent.at(i), -reach, reach);
+            entries.append(
+                {followerServos->at(i).id,
+                 *feetech::encodeValue(qint32(std::lround(sent.at(i))), table.format(*goal))});
+        }
+        writing = true;
+        writeStartedUs = sampleUs;
+        follower.session().submit(
+            feetech::operations::syncWrite(busBaud(), goal->address, goal->size, entries));
+    };
+    QObject::connect(&follower.session(), &feetech::Session::operationFinished, &loop,
+                     [&](const feetech::OperationResult &result) {
+                         if (result.operation != feetech::Operation::SyncWrite || !writing)
+                             return;
+                         writing = false;
+                         ++writes;
+                         latencies.append(feetech::steadyMicroseconds() - writeStartedUs);
+                         if (waiting)
+                             send(*std::exchange(waiting, std::nullopt), leaderSampleUs);
+                     });
+    QObject::connect(
+        &leader.session(), &feetech::Session::telemetry, &loop,
+        [&](const QVector<feetech::FeedbackSample> &samples) {
+            QVector<qint32> targets = *standing;
+            int seen = 0;
+            for (const feetech::FeedbackSample &sample : samples) {
+                const int joint =
+                    int(std::find_if(leaderServos->begin(), leaderServos->end(),
+                                     [&](const ServoInfo &servo) { return servo.id == sample.id; })
+                        - leaderServos->begin());
+                const auto position = sample.value(feetech::Quantity::Position);
+                if (joint >= leaderServos->size() || !position)
+                    continue;
+                targets[joint] = mapping->followerGoal(joint, qint32(*position));
+                ++seen;
+            }
+            if (seen < leaderServos->size())
+                return; // a cycle some joint missed: its goal is not guessed
+            leaderSampleUs = samples.first().steadyUs;
+            if (writing)
+                waiting = targets;
+            else
+                send(targets, leaderSampleUs);
+        });
+    for (FeetechDevice *device : {&follower, &leader}) {
+        QObject::connect(&device->session(), &feetech::Session::statusChanged, &loop,
+                         [&, device](const seriallink::ConnectionStatus &status) {
+                             if (status.state == seriallink::ConnectionState::Connected)
+                                 return;
+                             linkLost = true;
+                             lostMessage = Tr::tr("%1 was lost: %2")
+                                               .arg(device == &follower ? Tr::tr("the follower")
+                                                                        : Tr::tr("the leader"),
+                                                    status.message);
+                             loop.quit();
+                         });
+    }
+    feetech::TelemetryOptions stream;
+    stream.servos = *leaderServos;
+    stream.rateHz = rate;
+    stream.publishEachCycle = true;
+    QElapsedTimer running;
+    running.start();
+    QTimer::singleShot(0, &loop, [&leader, stream] { leader.session().startTelemetry(stream); });
+    runUntilInterrupted(loop, duration);
+    const double seconds = running.nsecsElapsed() / 1e9;
+    leader.session().stopTelemetry();
+    waiting.reset();
+    QElapsedTimer draining;
+    draining.start();
+    while (writing && draining.elapsed() < 1000
+           && follower.session().status().state == seriallink::ConnectionState::Connected)
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
+
+    // Stop: the follower holds where it is (or goes limp with --release), if it can be reached.
+    bool stopped = false;
+    if (follower.session().status().state == seriallink::ConnectionState::Connected) {
+        if (release) {
+            stopped = writeAll(follower, *followerServos, feetech::registerkeys::kTorqueEnable,
+                               QVector<qint32>(followerServos->size(), 0));
+        } else if (const auto here = presentPositions(follower, *followerServos)) {
+            stopped =
+                writeAll(follower, *followerServos, feetech::registerkeys::kGoalPosition, *here);
+        }
+    }
+    std::sort(latencies.begin(), latencies.end());
+    const double medianMs = latencies.isEmpty() ? 0.0 : latencies.at(latencies.size() / 2) / 1e3;
+    if (m_output.json)
+        printJson(m_output.out,
+                  QJsonObject {{QStringLiteral("cycles"), writes},
+                               {QStringLiteral("rate_hz"), writes / std::max(seconds, 1e-3)},
+                               {QStringLiteral("median_latency_ms"), medianMs},
+                               {QStringLiteral("released"), release && stopped},
+                               {QStringLiteral("held"), !release && stopped},
+                               {QStringLiteral("lost"), linkLost}});
+    m_output.err << Tr::tr("servoctl: %1 cycle(s) in %2 s (%3 per second), leader to follower "
+                           "%4 ms (median)")
+                        .arg(writes)
+                        .arg(seconds, 0, 'f', 1)
+                        .arg(writes / std::max(seconds, 1e-3), 0, 'f', 1)
+                        .arg(medianMs, 0, 'f', 1)
+                 << '\n';
+    m_output.err << (stopped ? (release ? Tr::tr("servoctl: the follower's torque is off")
+                                        : Tr::tr("servoctl: the follower holds where it is"))
+                             : Tr::tr("servoctl: the follower could not be reached to stop it"))
+                 << '\n';
+    m_output.err.flush();
+    if (linkLost)
+        return fail(lostMessage);
+    return stopped ? ExitOk : ExitDeviceFailure;
+}
+
+} // namespace cli
