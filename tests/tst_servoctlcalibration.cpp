@@ -228,6 +228,53 @@ private slots:
         QVERIFY2(feetech::loadLeRobotCalibration(out, &error), qPrintable(error.describe()));
     }
 
+    void aReplacedMotorIsCalibratedAloneAndTheFilesOtherJointsAreKept()
+    {
+        startArm(3);
+        const QString file = writeTestFile(
+            QStringLiteral("arm.json"),
+            QByteArray(R"({"shoulder_pan": {"id": 1, "drive_mode": 0, "homing_offset": 11,
+                             "range_min": 900, "range_max": 3100},
+                           "shoulder_lift": {"id": 2, "drive_mode": 1, "homing_offset": -7,
+                             "range_min": 800, "range_max": 3300},
+                           "elbow_flex": {"id": 3, "drive_mode": 0, "homing_offset": 5,
+                             "range_min": 1000, "range_max": 3000}})"));
+        ScriptedHand hand(*m_simulator);
+        hand.place(2, 2000);
+        hand.script(2, {1200, 2800, 2000});
+        hand.start([this] { return recording(); });
+        const auto result =
+            servoctl({QStringLiteral("feetech"), QStringLiteral("calibrate"),
+                      QStringLiteral("--ids"), QStringLiteral("2"), QStringLiteral("--duration"),
+                      QStringLiteral("4"), QStringLiteral("--update"), file});
+        QVERIFY2(hand.done(), qPrintable(result.err + result.out));
+        QVERIFY2(result.exitCode == 0, qPrintable(result.err + result.out));
+        // Only the new motor's registers were written.
+        QCOMPARE(testsupport::writesReceived(logPath(), 1, kOffsetAddress), 0);
+        QCOMPARE(testsupport::writesReceived(logPath(), 3, kOffsetAddress), 0);
+        QVERIFY(testsupport::writesReceived(logPath(), 2, kOffsetAddress) > 0);
+        util::FileError error;
+        const auto motors = feetech::loadLeRobotCalibration(file, &error);
+        QVERIFY2(motors, qPrintable(error.describe()));
+        QCOMPARE(motors->size(), 3);
+        QCOMPARE(motors->at(0).homingOffset, 11);
+        QCOMPARE(motors->at(0).rangeMin, 900);
+        QCOMPARE(motors->at(2).rangeMax, 3000);
+        const feetech::LeRobotMotor &replaced = motors->at(1);
+        QCOMPARE(replaced.name, QStringLiteral("shoulder_lift"));
+        QCOMPARE(replaced.driveMode, 1); // LeRobot's setting, kept
+        QCOMPARE(replaced.homingOffset, simulatorValue(2, u"position_offset"));
+        QCOMPARE(replaced.rangeMin, simulatorValue(2, u"min_angle_limit"));
+        QVERIFY(replaced.rangeMin != 800);
+        // A servo the file does not name is refused before anything is sent.
+        const auto refused =
+            servoctl({QStringLiteral("feetech"), QStringLiteral("calibrate"),
+                      QStringLiteral("--ids"), QStringLiteral("9"), QStringLiteral("--duration"),
+                      QStringLiteral("1"), QStringLiteral("--update"), file});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains(QStringLiteral("no joint of")), qPrintable(refused.err));
+    }
+
     void usageErrorsSendNothing_data()
     {
         QTest::addColumn<QString>("arguments");

@@ -96,10 +96,11 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "                                         stream position, speed, load, voltage,\n"
     "                                         temperature and current (SYNC READ)\n"
     "  feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]\n"
-    "                    [--dry-run] --out FILE\n"
+    "                    [--dry-run] --out FILE | --update FILE\n"
     "                                         torque off, record each joint's range by hand\n"
     "                                         (Enter ends), centre it on the encoder: offset\n"
     "                                         and limits written, LeRobot calibration saved\n"
+    "                                         (--update: into FILE, its other joints kept)\n"
     "  feetech calibration save --ids LIST [--names LIST] FILE\n"
     "                                         the servos' offsets and limits to a LeRobot file\n"
     "  feetech calibration load FILE          write a LeRobot calibration file, verified\n"
@@ -153,7 +154,7 @@ public:
                       QStringLiteral("link"),        QStringLiteral("record"),
                       QStringLiteral("log"),         QStringLiteral("leader"),
                       QStringLiteral("calibration"), QStringLiteral("leader-calibration"),
-                      QStringLiteral("max-speed")},
+                      QStringLiteral("max-speed"),   QStringLiteral("update")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
                  QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check"),

@@ -14,6 +14,7 @@
 #include <QSocketNotifier>
 #include <QTimer>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -150,10 +151,35 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
 {
     allowOptions(what,
                  {QStringLiteral("ids"), QStringLiteral("names"), QStringLiteral("full-turn"),
-                  QStringLiteral("duration"), QStringLiteral("out"), QStringLiteral("dry-run")});
+                  QStringLiteral("duration"), QStringLiteral("out"), QStringLiteral("update"),
+                  QStringLiteral("dry-run")});
     expectOperands(what, operands, 0, {});
     const QVector<quint8> ids = jointIds(what);
-    const QStringList names = jointNames(ids);
+    // --update FILE: these joints calibrated anew (a motor replaced), the file's others kept.
+    std::optional<QVector<feetech::LeRobotMotor>> updated;
+    QStringList names;
+    if (m_args.has(QStringLiteral("update"))) {
+        if (m_args.has(QStringLiteral("out")) || m_args.has(QStringLiteral("names")))
+            throw UsageError {Tr::tr("%1 --update FILE takes the joints' names from the file and "
+                                     "saves to it: no --out or --names")
+                                  .arg(what)};
+        util::FileError error;
+        updated = feetech::loadLeRobotCalibration(m_args.value(QStringLiteral("update")), &error);
+        if (!updated)
+            throw UsageError {error.describe()};
+        for (const quint8 id : ids) {
+            const auto motor = std::find_if(updated->begin(), updated->end(),
+                                            [id](const auto &m) { return m.id == id; });
+            if (motor == updated->end())
+                throw UsageError {
+                    Tr::tr("servo %1 is no joint of %2")
+                        .arg(id)
+                        .arg(QDir::toNativeSeparators(m_args.value(QStringLiteral("update"))))};
+            names.append(motor->name);
+        }
+    } else {
+        names = jointNames(ids);
+    }
     QVector<quint8> fullTurn;
     if (m_args.has(QStringLiteral("full-turn"))) {
         try {
@@ -168,10 +194,10 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
         }
     }
     const std::optional<double> duration = durationOption(m_args);
-    if (!m_args.has(QStringLiteral("out")))
+    if (!m_args.has(QStringLiteral("out")) && !updated)
         throw UsageError {
             Tr::tr("%1 needs --out FILE: the LeRobot calibration file to save").arg(what)};
-    const QString out = m_args.value(QStringLiteral("out"));
+    const QString out = m_args.value(updated ? QStringLiteral("update") : QStringLiteral("out"));
     checkFolder(out);
     if (!duration && !isTerminal(stdin))
         throw UsageError {Tr::tr("%1 needs --duration S when standard input is not a terminal "
@@ -270,8 +296,21 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
             {joint.name, joint.id, 0, result.offset, result.minimumLimit, result.maximumLimit});
     }
     m_output.out.flush();
+    if (updated) {
+        // The file's joints, each as it was unless it was calibrated now (drive_mode kept).
+        for (const feetech::LeRobotMotor &motor : std::as_const(saved)) {
+            for (feetech::LeRobotMotor &kept : *updated) {
+                if (kept.id != motor.id)
+                    continue;
+                kept.homingOffset = motor.homingOffset;
+                kept.rangeMin = motor.rangeMin;
+                kept.rangeMax = motor.rangeMax;
+            }
+        }
+    }
     util::FileError error;
-    const bool fileSaved = !saved.isEmpty() && feetech::saveLeRobotCalibration(saved, out, &error);
+    const bool fileSaved = !saved.isEmpty()
+        && feetech::saveLeRobotCalibration(updated ? *updated : saved, out, &error);
     if (m_output.json) {
         printJson(m_output.out,
                   QJsonObject {{QStringLiteral("dry_run"), dryRun},
