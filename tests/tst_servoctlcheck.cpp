@@ -127,6 +127,29 @@ private slots:
         QCOMPARE(writesReceived(), 0);
     }
 
+    void theTemplatesBitsToClearAreFoundAndFixedKeepingTheOtherBits()
+    {
+        startArm();
+        // Phase bit 4 is also a rule of its own; the template names another bit too.
+        const QString path =
+            writeTestFile(QStringLiteral("arm.json"),
+                          R"({"format": "servobench-robot", "version": 1, "name": "Test arm",
+                "clear_bits": {"phase": [4, 7]},
+                "joints": [{"name": "base", "id": 1, "model": "STS3215"}]})");
+        QVERIFY(!path.isEmpty());
+        const qint32 phase = simulatorValue(1, u"phase");
+        QCOMPARE(phase & 0x90, 0); // set up as LeRobot does
+        setSimulatorValue(1, u"phase", phase | 0x80);
+        const QJsonArray rows =
+            arrayOf(check(QStringLiteral("--ids 1 --json --robot ") + path).out);
+        QCOMPARE(rows.size(), 1);
+        QCOMPARE(rows.at(0)[QStringLiteral("code")].toString(), QStringLiteral("template"));
+        QCOMPARE(rows.at(0)[QStringLiteral("expected")].toInt(), phase);
+        const auto fixed = check(QStringLiteral("--ids 1 --fix --robot ") + path);
+        QVERIFY2(fixed.exitCode == 0, qPrintable(fixed.out));
+        QCOMPARE(simulatorValue(1, u"phase"), phase);
+    }
+
     void withoutARobotTemplateItsDifferencesAreNotFindings()
     {
         startArm();

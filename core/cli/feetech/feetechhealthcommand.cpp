@@ -134,9 +134,8 @@ auto FeetechHealthCommand::identifyEach(FeetechDevice &device, const QVector<qui
 
 feetech::SettingsExpectations FeetechHealthCommand::expectations(const QString &what) const
 {
-    feetech::SettingsExpectations expected;
     if (!m_args.has(QStringLiteral("robot")))
-        return expected;
+        return {};
     const QString name = m_args.value(QStringLiteral("robot"));
     const QString builtIn = QStringLiteral(":/robots/%1.json").arg(name);
     const QString path = QFileInfo::exists(builtIn) ? builtIn : name;
@@ -144,10 +143,7 @@ feetech::SettingsExpectations FeetechHealthCommand::expectations(const QString &
     const auto robot = feetech::loadRobotTemplate(path, &error);
     if (!robot)
         throw UsageError {Tr::tr("%1 --robot: %2").arg(what, error.describe())};
-    expected.source = feetech::robotDisplayName(robot->name);
-    for (const feetech::RobotJoint &joint : robot->joints)
-        expected.byId.insert(quint8(joint.id), joint.settings);
-    return expected;
+    return feetech::settingsExpectations(*robot);
 }
 
 int FeetechHealthCommand::check(const QString &what, const QStringList &operands)
@@ -171,9 +167,6 @@ int FeetechHealthCommand::check(const QString &what, const QStringList &operands
             reachable.append(identified.at(i).servo);
     }
     if (!reachable.isEmpty()) {
-        QStringList keys;
-        for (const auto &settings : expected.byId)
-            keys += settings.keys();
         const auto connection =
             QObject::connect(&device.session(), &feetech::Session::operationProgress,
                              [&readings, &ids](const feetech::OperationProgress &progress) {
@@ -181,7 +174,8 @@ int FeetechHealthCommand::check(const QString &what, const QStringList &operands
                                      progress.detail.value<feetech::SettingsReading>();
                                  readings[ids.indexOf(reading.servo.id)] = reading;
                              });
-        const auto result = device.operate(feetech::operations::checkSettings(reachable, keys));
+        const auto result =
+            device.operate(feetech::operations::checkSettings(reachable, expected.keys()));
         QObject::disconnect(connection);
         if (!result || !result->ok)
             return fail(result ? result->message : device.error());

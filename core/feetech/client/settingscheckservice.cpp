@@ -35,14 +35,11 @@ OperationReply *SettingsCheckService::check(const QVector<int> &indexes,
     }
     if (refused(why, refusal))
         return nullptr;
-    QStringList keys;
-    for (const auto &settings : expected.byId)
-        keys += settings.keys();
     m_checking = true;
     m_readings.clear();
     m_expected = expected;
-    OperationReply *reply = m_client->submit(operations::checkSettings(servos, keys), 0, 0,
-                                             BusClient::Work::Foreground);
+    OperationReply *reply = m_client->submit(operations::checkSettings(servos, expected.keys()), 0,
+                                             0, BusClient::Work::Foreground);
     connect(reply, &OperationReply::progress, this, [this](const OperationProgress &progress) {
         m_readings.append(progress.detail.value<SettingsReading>());
     });

@@ -47,11 +47,11 @@ QString number(double value, int decimals)
 class ServoFindings
 {
 public:
-    ServoFindings(const SettingsReading &reading, const QMap<QString, qint32> &expected,
-                  QString source)
+    ServoFindings(const SettingsReading &reading, const SettingsExpectations &expected)
         : m_reading(reading)
-        , m_expected(expected)
-        , m_source(std::move(source))
+        , m_expected(expected.byId.value(reading.servo.id))
+        , m_cleared(expected.clearedBitsById.value(reading.servo.id))
+        , m_source(expected.source)
     { }
 
     std::optional<qint32> value(const QString &key) const
@@ -107,6 +107,22 @@ public:
         }
     }
 
+    // The template's bits to clear that are set; the other bits stay as they are.
+    void addTemplateBits()
+    {
+        for (auto it = m_cleared.cbegin(); it != m_cleared.cend(); ++it) {
+            const auto held = value(it.key());
+            if (!held || !(quint32(*held) & it.value()))
+                continue;
+            add(QStringLiteral("template"), it.key(), qint32(quint32(*held) & ~it.value()),
+                Tr::tr("%1 is %2 with bits 0x%3 set; %4 clears them.")
+                    .arg(it.key())
+                    .arg(*held)
+                    .arg(quint32(*held) & it.value(), 2, 16, QLatin1Char('0'))
+                    .arg(m_source));
+        }
+    }
+
     QVector<SettingsFinding> take()
     {
         const RegisterTable &table = m_reading.servo.table();
@@ -122,6 +138,7 @@ public:
 private:
     const SettingsReading &m_reading;
     QMap<QString, qint32> m_expected;
+    QMap<QString, quint32> m_cleared;
     QString m_source;
     QVector<SettingsFinding> m_findings;
 };
@@ -259,6 +276,17 @@ QJsonValue optionalJson(const std::optional<qint32> &value)
 
 } // namespace
 
+QStringList SettingsExpectations::keys() const
+{
+    QStringList found;
+    for (const auto &settings : byId)
+        found += settings.keys();
+    for (const auto &bits : clearedBitsById)
+        found += bits.keys();
+    found.removeDuplicates();
+    return found;
+}
+
 bool needsTorqueOff(const QString &key)
 {
     return key == kMinAngleLimit || key == kMaxAngleLimit || key == kMode || key == kTorqueLimit
@@ -279,11 +307,12 @@ QVector<SettingsFinding> checkSettings(const QVector<SettingsReading> &readings,
             findings.append(finding);
             continue;
         }
-        ServoFindings servo(reading, expected.byId.value(reading.servo.id), expected.source);
+        ServoFindings servo(reading, expected);
         checkMotion(servo);
         checkBus(servo);
         checkVoltage(servo);
         servo.addTemplateDifferences();
+        servo.addTemplateBits();
         findings += servo.take();
         for (const SettingsFinding &finding : firmware) {
             if (finding.servo.id == reading.servo.id && finding.servo.baud == reading.servo.baud)

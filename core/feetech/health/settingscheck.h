@@ -31,6 +31,10 @@ struct SettingsExpectations
 {
     QString source; // the template's name, for the findings' reasons
     QMap<quint8, QMap<QString, qint32>> byId;
+    QMap<quint8, QMap<QString, quint32>> clearedBitsById; // bits that must be clear, by key
+
+    // Every register key they name: what the check must read beyond its own.
+    QStringList keys() const;
 };
 
 struct SettingsFinding

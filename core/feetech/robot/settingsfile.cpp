@@ -156,14 +156,31 @@ QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &c
 
 QVector<model::WriteItem>
 changedValues(const QVector<model::WriteItem> &wanted,
-              const std::function<std::optional<qint64>(const QString &key)> &current)
+              const std::function<std::optional<qint64>(const QString &key)> &current,
+              const QMap<QString, quint32> &cleared)
 {
     QVector<model::WriteItem> changed;
     for (const model::WriteItem &item : wanted) {
         if (current(item.key) != std::optional<qint64>(item.value))
             changed.append(item);
     }
+    for (auto it = cleared.cbegin(); it != cleared.cend(); ++it) {
+        const auto held = current(it.key());
+        if (held && (quint64(*held) & it.value()))
+            changed.append({it.key(), qint64(quint64(*held) & ~quint64(it.value()))});
+    }
     return changed;
+}
+
+QMap<QString, quint32> SettingsFile::clearedBitsFor(const ServoInfo &servo) const
+{
+    if (!m_robot)
+        return {};
+    for (const RobotJoint &joint : m_robot->joints) {
+        if (joint.id == servo.id)
+            return joint.clearedBits;
+    }
+    return {};
 }
 
 QString leftOutNote(const QVector<ProgramOutcome> &outcomes)

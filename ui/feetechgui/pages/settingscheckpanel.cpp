@@ -114,15 +114,10 @@ void SettingsCheckPanel::chooseTemplate(const QString &name)
 
 feetech::SettingsExpectations SettingsCheckPanel::expectations() const
 {
-    feetech::SettingsExpectations expected;
     const int chosen = m_template->currentIndex() - 1;
     if (chosen < 0 || chosen >= m_templates.size())
-        return expected;
-    const feetech::RobotTemplate &robot = m_templates.at(chosen);
-    expected.source = feetech::robotDisplayName(robot.name);
-    for (const feetech::RobotJoint &joint : robot.joints)
-        expected.byId.insert(quint8(joint.id), joint.settings);
-    return expected;
+        return {};
+    return feetech::settingsExpectations(m_templates.at(chosen));
 }
 
 bool SettingsCheckPanel::check(QString *error)
