@@ -150,6 +150,34 @@ private slots:
         QCOMPARE(simulatorValue(1, u"phase"), phase);
     }
 
+    void factoryServosLoadedWithTheTemplateNeedNoSecondPass()
+    {
+        QString error;
+        QVERIFY2(
+            startSimulator(
+                busOptions(testsupport::servosAt(
+                    k1M, {u"STS3215", u"STS3215", u"STS3215", u"STS3215", u"STS3215", u"STS3215"})),
+                &error),
+            qPrintable(error));
+        for (quint8 id = 1; id <= 6; ++id) {
+            QVERIFY(withServo(id, k1M, [](sim::VirtualFeetechServo &s) {
+                s.setValue(u"phase", s.value(u"phase") | 0x10); // as some servos leave the factory
+                s.setValue(u"return_delay", 250);
+            }));
+        }
+        QCOMPARE(check(QStringLiteral("--ids 1-6 --robot so101-follower")).exitCode, 1);
+        const QString robot =
+            QStringLiteral(SERVOBENCH_SOURCE_DIR "/resources/robots/so101-follower.json");
+        const auto loaded = runServoctl({QStringLiteral("--port"), m_simulator->linkPath(),
+                                         QStringLiteral("feetech"), QStringLiteral("load"),
+                                         QStringLiteral("--ids"), QStringLiteral("1-6"), robot});
+        QVERIFY2(loaded.exitCode == 0, qPrintable(loaded.err + loaded.out));
+        for (quint8 id = 1; id <= 6; ++id)
+            QCOMPARE(simulatorValue(id, u"phase") & 0x10, 0);
+        const auto after = check(QStringLiteral("--ids 1-6 --robot so101-follower"));
+        QVERIFY2(after.exitCode == 0, qPrintable(after.out));
+    }
+
     void withoutARobotTemplateItsDifferencesAreNotFindings()
     {
         startArm();
