@@ -92,6 +92,18 @@ private slots:
         QVERIFY(!finding.why.isEmpty());
     }
 
+    void bit4OfAPhaseRegisterWithoutTheMultiTurnBitIsNoFinding()
+    {
+        // An SCS servo's phase register names no multi-turn bit.
+        const QByteArray identity {"\x03\x00\x01\x05\x0f\x01\x00\x00\x01", 9};
+        SettingsReading reading = healthy(1);
+        reading.servo = *feetech::servoInfoFromIdentity(1, 1000000, identity);
+        QCOMPARE(reading.servo.model.name, QStringLiteral("SCS15"));
+        reading.values[QStringLiteral("phase")] = 0x10;
+        const auto findings = feetech::checkSettings({reading});
+        QVERIFY2(findings.isEmpty(), qPrintable(codes(findings).join(u' ')));
+    }
+
     void aZeroTorqueLimitIsGivenBackTheMaximumTorque()
     {
         SettingsReading reading = healthy(1);

@@ -143,9 +143,18 @@ private:
     QVector<SettingsFinding> m_findings;
 };
 
+// Whether the family's phase register has the multi-turn bit (not every family's bit 4 is it).
+bool hasMultiTurnBit(const Register *phase)
+{
+    return phase && std::any_of(phase->bits.begin(), phase->bits.end(), [](const BitName &named) {
+               return named.bit == kMultiTurnBit;
+           });
+}
+
 void checkMotion(ServoFindings &servo)
 {
-    if (const auto phase = servo.value(kPhase); phase && (*phase & (1 << kMultiTurnBit))) {
+    if (const auto phase = servo.value(kPhase);
+        phase && (*phase & (1 << kMultiTurnBit)) && hasMultiTurnBit(servo.reg(kPhase))) {
         servo.add(QStringLiteral("multi-turn"), kPhase,
                   servo.expected(kPhase, *phase & ~(1 << kMultiTurnBit)),
                   Tr::tr("Phase bit 4 is set: the servo counts whole turns, so its position "
