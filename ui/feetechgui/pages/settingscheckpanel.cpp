@@ -68,7 +68,12 @@ SettingsCheckPanel::SettingsCheckPanel(feetech::BusClient *client, QWidget *pare
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
     m_table->verticalHeader()->hide();
+    for (const Column column : {IdColumn, SettingColumn, ValueColumn, ExpectedColumn, FixColumn})
+        m_table->horizontalHeader()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+    // The reasons and the results are sentences: they share what room is left.
     m_table->horizontalHeader()->setSectionResizeMode(WhyColumn, QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(ResultColumn, QHeaderView::Stretch);
+    m_table->setFocusPolicy(Qt::NoFocus); // nothing to select; the Fix buttons take the focus
     m_table->setWordWrap(true);
     layout->addWidget(m_table, 1);
     m_state = new QLabel(this);
