@@ -186,6 +186,21 @@ private slots:
         QVERIFY(!panel->fixAllButton()->isEnabled());
     }
 
+    void aFixOfAServoUnpluggedSinceTheCheckSaysWhyInItsRow()
+    {
+        startSimulatorAndScan({u"STS3215", u"STS3215"});
+        SettingsCheckPanel *panel = m_page->settingsPanel();
+        setSimulatorValue(2, u"return_delay", 250);
+        checkSettings();
+        QCOMPARE(panel->table()->rowCount(), 1);
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
+        clickFix(panel->fixButton(0));
+        const QString result = settingsCell(0, SettingsCheckPanel::ResultColumn);
+        QVERIFY2(result.contains(QStringLiteral("servo 2 does not answer")), qPrintable(result));
+        QVERIFY(panel->fixButton(0)->isEnabled()); // it may be tried again once plugged in
+        QVERIFY(!panel->stateLabel()->text().isEmpty());
+    }
+
     void withoutServosTheSettingsCheckIsRefusedWithItsReason()
     {
         SettingsCheckPanel *panel = m_page->settingsPanel();

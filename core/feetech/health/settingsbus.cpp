@@ -105,7 +105,7 @@ void writeFixes(BusExchange &bus, std::shared_ptr<FixRun> run)
             run->done(run->outcomes);
             return;
         }
-        failUnsettled(*run, message);
+        failUnsettled(*run, Tr::tr("not verified: %1").arg(message));
         if (!eeprom) {
             run->done(run->outcomes);
             return;
@@ -190,7 +190,11 @@ void fixSettings(BusExchange &bus, const QVector<SettingsFinding> &findings,
         steps.push_back(std::move(step));
     bus.runSteps(std::move(steps), [&bus, run](bool ok, const QString &message) {
         if (!ok) {
-            failUnsettled(*run, message);
+            failUnsettled(*run,
+                          Tr::tr("not written: servo %1 does not answer (%2); check its "
+                                 "cable and power")
+                              .arg(run->servo->id)
+                              .arg(message));
             run->done(run->outcomes);
             return;
         }
