@@ -61,7 +61,7 @@ private slots:
         QTest::addColumn<QString>("code");
         QTest::addColumn<qint32>("expected");
         QTest::addColumn<bool>("needsTorqueOff");
-        QTest::newRow("phase bit 4") << "phase" << 28 << "multi-turn" << 12 << false;
+        QTest::newRow("phase bit 4") << "phase" << 28 << "multi-turn" << 12 << true;
         QTest::newRow("torque limit 0")
             << "torque_limit" << 0 << "torque-limit-zero" << 1000 << true;
         QTest::newRow("maximum torque 0")

@@ -298,8 +298,10 @@ QStringList SettingsExpectations::keys() const
 
 bool needsTorqueOff(const QString &key)
 {
+    // The phase register changes how the position reads: under torque the servo would chase
+    // its goal through the new reading.
     return key == kMinAngleLimit || key == kMaxAngleLimit || key == kMode || key == kTorqueLimit
-        || key == QLatin1String("position_offset");
+        || key == kPhase || key == QLatin1String("position_offset");
 }
 
 QVector<SettingsFinding> checkSettings(const QVector<SettingsReading> &readings,

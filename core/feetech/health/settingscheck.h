@@ -49,7 +49,7 @@ struct SettingsFinding
     QString valueText; // what was read when it is no register value (the firmware)
     std::optional<qint32> expected; // what fixes it; none: nothing to write fixes it
     QString why; // translated
-    // Writing it with torque on could move the horn (limits, offset, mode, torque limit).
+    // Writing it with torque on could move the horn (limits, offset, mode, torque limit, phase).
     bool needsTorqueOff = false;
 
     bool fixable() const { return expected.has_value(); }

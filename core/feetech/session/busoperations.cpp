@@ -212,6 +212,7 @@ void fixNextServo(OperationContext &context, QVector<QVector<SettingsFinding>> s
         context.finish(result);
         return;
     }
+    context.reportProgress({0, done, int(servos.size()), {}, {}});
     fixSettings(context.bus(), servos.at(done),
                 [&context, servos, done, outcomes](const QVector<SettingsFixOutcome> &fixed) {
                     if (!context.isLinkOpen())

@@ -37,7 +37,8 @@ SettingsCheckPanel::SettingsCheckPanel(feetech::BusClient *client, QWidget *pare
            "bit, torque limits at 0, a mode other than position, angle limits, a slow return "
            "delay, an unlocked EEPROM, mixed firmware, voltage limits the supply breaks, and "
            "what differs from the robot template. It only reads; Fix writes the expected value "
-           "and reads it back (limits, offset, mode and torque limit only with torque off)."),
+           "and reads it back (limits, offset, mode, torque limit and phase only with torque "
+           "off)."),
         this);
     intro->setWordWrap(true);
     layout->addWidget(intro);
