@@ -143,15 +143,17 @@ SettingsFile::batchValuesFor(const ServoInfo &servo, QStringList *leftOut, QStri
 QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &changed,
                       std::optional<qint64> torque)
 {
+    // The phase register changes how the position reads, so the servo would chase its goal.
     static const QStringList moving {kOffsetKey, QStringLiteral("min_angle_limit"),
                                      QStringLiteral("max_angle_limit"),
-                                     QStringLiteral("goal_position")};
+                                     QStringLiteral("goal_position"), QStringLiteral("phase")};
     const bool moves = std::any_of(changed.cbegin(), changed.cend(),
                                    [](const auto &item) { return moving.contains(item.key); });
     const auto off = servo.hasTable() ? servo.table().torqueValue(TorqueMode::Off) : std::nullopt;
     if (!moves || (torque && off && *torque == *off))
         return {};
-    return Tr::tr("torque is on: switch it off before changing the position offset or limits");
+    return Tr::tr("torque is on: switch it off before changing the position offset, limits or "
+                  "phase");
 }
 
 QVector<model::WriteItem>

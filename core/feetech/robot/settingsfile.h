@@ -61,7 +61,7 @@ changedValues(const QVector<model::WriteItem> &wanted,
               const QMap<QString, quint32> &cleared = {});
 
 // Why `changed` may not be written to `servo` whose torque_enable holds `torque` (none when it was
-// not read): under torque a new offset, limit or goal moves the horn. Empty when it may.
+// not read): under torque a new offset, limit, goal or phase moves the horn. Empty when it may.
 QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &changed,
                       std::optional<qint64> torque);
 
