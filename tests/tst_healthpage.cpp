@@ -1,9 +1,12 @@
 // GUI tests of the Health page against a simulated bus: the empty state, a check with its
-// verdicts in colour, cancelling, the move test's confirmation, and saving the report.
+// verdicts in colour, cancelling, the move test's confirmation, saving the report, and the
+// Settings section: its findings, Fix and Fix all, verified on the simulated bus.
 #include "feetechbus.h"
 #include "feetechworkspace.h"
 #include "healthpage.h"
+#include "settingscheckpanel.h"
 
+#include <QComboBox>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLabel>
@@ -56,6 +59,32 @@ private:
         QVERIFY(!m_page->progressBar()->isVisible());
     }
 
+    // Clicks Check settings and waits for the findings.
+    void checkSettings()
+    {
+        SettingsCheckPanel *panel = m_page->settingsPanel();
+        QSignalSpy checked(m_client->settingsCheck(), &feetech::SettingsCheckService::checked);
+        QTRY_VERIFY_WITH_TIMEOUT(panel->checkButton()->isEnabled(), 10000);
+        QTest::mouseClick(panel->checkButton(), Qt::LeftButton);
+        QVERIFY(checked.wait(20000));
+    }
+
+    // Clicks `button` (a Fix or Fix all) and waits for the fix's outcomes.
+    void clickFix(QPushButton *button)
+    {
+        QSignalSpy fixed(m_client->settingsCheck(), &feetech::SettingsCheckService::fixed);
+        QVERIFY(button);
+        QTRY_VERIFY_WITH_TIMEOUT(button->isEnabled(), 10000);
+        QTest::mouseClick(button, Qt::LeftButton);
+        QVERIFY(fixed.wait(20000));
+    }
+
+    QString settingsCell(int row, int column) const
+    {
+        const QTableWidgetItem *item = m_page->settingsPanel()->table()->item(row, column);
+        return item ? item->text() : QString();
+    }
+
     int writesReceived() const
     {
         return int(
@@ -90,6 +119,97 @@ private slots:
         QVERIFY(!m_page->check(&error));
         QVERIFY(!error.isEmpty());
         QCOMPARE(m_page->stateLabel()->text(), error);
+    }
+
+    void aSettingsFindingIsShownAndItsFixMakesItGoAwayOnTheBus()
+    {
+        startSimulatorAndScan({u"STS3215", u"STS3215"});
+        SettingsCheckPanel *panel = m_page->settingsPanel();
+        QVERIFY(panel->isVisible());
+        setSimulatorValue(2, u"return_delay", 250);
+        checkSettings();
+        QCOMPARE(panel->table()->rowCount(), 1);
+        QCOMPARE(settingsCell(0, SettingsCheckPanel::IdColumn), QStringLiteral("2"));
+        QCOMPARE(settingsCell(0, SettingsCheckPanel::SettingColumn),
+                 QStringLiteral("return_delay"));
+        QCOMPARE(settingsCell(0, SettingsCheckPanel::ValueColumn), QStringLiteral("250"));
+        QCOMPARE(settingsCell(0, SettingsCheckPanel::ExpectedColumn), QStringLiteral("0"));
+        QVERIFY(!settingsCell(0, SettingsCheckPanel::WhyColumn).isEmpty());
+        QCOMPARE(writesReceived(), 0);
+
+        clickFix(panel->fixButton(0));
+        QCOMPARE(settingsCell(0, SettingsCheckPanel::ResultColumn),
+                 QStringLiteral("Fixed, verified"));
+        QVERIFY(!panel->fixButton(0)->isEnabled());
+        QCOMPARE(simulatorValue(2, u"return_delay"), 0);
+        QCOMPARE(simulatorValue(2, u"lock"), 1);
+
+        checkSettings();
+        QCOMPARE(panel->table()->rowCount(), 0);
+        QVERIFY(panel->stateLabel()->text().contains(QStringLiteral("No problem")));
+    }
+
+    void fixAllFixesWhatTorqueAllowsAndSaysWhyNotForTheRest()
+    {
+        startSimulatorAndScan({u"STS3215", u"STS3215"});
+        SettingsCheckPanel *panel = m_page->settingsPanel();
+        panel->chooseTemplate(QStringLiteral("SO-101 follower arm"));
+        setSimulatorValue(1, u"mode", 1);
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) {
+            s.setValue(u"goal_position", s.value(u"present_position"));
+            s.setValue(u"torque_enable", 1);
+        }));
+        checkSettings();
+        QVERIFY(panel->table()->rowCount() > 1);
+        int modeRow = -1;
+        for (int row = 0; row < panel->table()->rowCount(); ++row) {
+            if (settingsCell(row, SettingsCheckPanel::SettingColumn) == QLatin1String("mode")
+                && settingsCell(row, SettingsCheckPanel::IdColumn) == QLatin1String("1"))
+                modeRow = row;
+        }
+        QVERIFY(modeRow >= 0);
+        clickFix(panel->fixAllButton());
+        QVERIFY2(settingsCell(modeRow, SettingsCheckPanel::ResultColumn)
+                     .contains(QStringLiteral("torque is on")),
+                 qPrintable(settingsCell(modeRow, SettingsCheckPanel::ResultColumn)));
+        QVERIFY(panel->fixButton(modeRow)->isEnabled()); // it can be tried again, torque off
+        QCOMPARE(simulatorValue(1, u"mode"), 1);
+        // The template's gains are written, and nothing else is left to fix.
+        QCOMPARE(simulatorValue(1, u"p_gain"), 16);
+        QCOMPARE(simulatorValue(2, u"p_gain"), 16);
+        QVERIFY(m_page->settingsPanel()->fixAllButton()->isEnabled());
+        setSimulatorValue(1, u"torque_enable", 0);
+        clickFix(panel->fixButton(modeRow));
+        QCOMPARE(settingsCell(modeRow, SettingsCheckPanel::ResultColumn),
+                 QStringLiteral("Fixed, verified"));
+        QCOMPARE(simulatorValue(1, u"mode"), 0);
+        QVERIFY(!panel->fixAllButton()->isEnabled());
+    }
+
+    void aFixOfAServoUnpluggedSinceTheCheckSaysWhyInItsRow()
+    {
+        startSimulatorAndScan({u"STS3215", u"STS3215"});
+        SettingsCheckPanel *panel = m_page->settingsPanel();
+        setSimulatorValue(2, u"return_delay", 250);
+        checkSettings();
+        QCOMPARE(panel->table()->rowCount(), 1);
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
+        clickFix(panel->fixButton(0));
+        const QString result = settingsCell(0, SettingsCheckPanel::ResultColumn);
+        QVERIFY2(result.contains(QStringLiteral("servo 2 does not answer")), qPrintable(result));
+        QVERIFY(panel->fixButton(0)->isEnabled()); // it may be tried again once plugged in
+        QVERIFY(!panel->stateLabel()->text().isEmpty());
+    }
+
+    void withoutServosTheSettingsCheckIsRefusedWithItsReason()
+    {
+        SettingsCheckPanel *panel = m_page->settingsPanel();
+        QVERIFY(!panel->checkButton()->isEnabled());
+        QVERIFY(!panel->fixAllButton()->isEnabled());
+        QString error;
+        QVERIFY(!panel->check(&error));
+        QVERIFY(!error.isEmpty());
+        QCOMPARE(panel->stateLabel()->text(), error);
     }
 
     void theWorkspaceHasAHealthTab()

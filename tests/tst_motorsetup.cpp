@@ -115,13 +115,30 @@ private slots:
         QCOMPARE(result.from.baud, factoryBaud);
         QCOMPARE(result.to.id, quint8(6));
         QCOMPARE(result.to.baud, k1M);
-        QCOMPARE(result.verified, target.settings);
+        QCOMPARE(result.verified.value(QStringLiteral("phase")) & 0x10, 0);
+        QMap<QString, qint32> settings = result.verified;
+        settings.remove(QStringLiteral("phase")); // a bit to clear, not a value
+        QCOMPARE(settings, target.settings);
         QVERIFY(result.message.contains(QLatin1String("gripper is set up")));
         QCOMPARE(progress.size(), 5);
         QCOMPARE(progress.last().at(0).value<feetech::OperationProgress>().done, 5);
         verifySetUp(0, m_robot, *m_robot.joint(u"gripper"));
         powerCycle();
         verifySetUp(0, m_robot, *m_robot.joint(u"gripper"), Settings::EepromOnly);
+    }
+
+    void phaseBit4IsClearedAndThePhasesOtherBitsKept()
+    {
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        QVERIFY(withServo(1, k1M, [](sim::VirtualFeetechServo &s) {
+            s.storeValue(u"phase", 0x80 | 0x10 | 0x01); // feedback reversed, multi-turn, driver
+        }));
+        const MotorTarget target = jointTarget(2);
+        QCOMPARE(target.clearedBits.value(QStringLiteral("phase")), 0x10u);
+        const MotorSetupResult result = setUp(target);
+        QVERIFY2(result.ok, qPrintable(result.message));
+        QCOMPARE(result.verified.value(QStringLiteral("phase")), 0x81);
+        QCOMPARE(simulatorValue(2, u"phase"), 0x81);
     }
 
     void aServoAlreadySetUpIsOnlyVerified()
@@ -251,9 +268,7 @@ private slots:
         QVERIFY(plug(3, QStringLiteral("SCS15"), k1M));
         QVERIFY(plug(4, QStringLiteral("STS3215"), 115200)); // not at the template's rate
         powerCycle(); // RAM settings (acceleration) start afresh; the set-up holds
-        QVector<JointCheck> joints;
-        for (const feetech::RobotJoint &joint : m_robot.joints)
-            joints.append({joint.id, joint.model, joint.settings, std::nullopt, {}});
+        const QVector<JointCheck> joints = feetech::jointChecks(m_robot);
         QSignalSpy checked(m_session.get(), &feetech::Session::operationFinished);
         m_session->submit(feetech::operations::checkJoints(k1M, joints));
         QVERIFY(checked.wait(20000));

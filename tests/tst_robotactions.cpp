@@ -190,12 +190,14 @@ private slots:
                          1,
                          QStringLiteral("STS3215"),
                          false,
-                         {{QStringLiteral("d_gain"), 11}}},
+                         {{QStringLiteral("d_gain"), 11}},
+                         {}},
                         {QStringLiteral("elbow"),
                          2,
                          QStringLiteral("STS3215"),
                          false,
-                         {{QStringLiteral("d_gain"), 12}}}};
+                         {{QStringLiteral("d_gain"), 12}},
+                         {}}};
         BatchResultDialog *dialog = applyToAll(feetech::SettingsFile::fromTemplate(robot));
         QVERIFY(dialog);
         QCOMPARE(simulatorValue(1, u"d_gain"), 11);

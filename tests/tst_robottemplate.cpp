@@ -94,6 +94,49 @@ private slots:
         QVERIFY(!leader.joint(u"elbow_flex")->settings.contains(QStringLiteral("p_gain")));
     }
 
+    void everyBuiltInArmClearsPhaseBit4OnEveryJointAsLeRobotDoes()
+    {
+        for (const RobotTemplate &robot : feetech::builtInRobotTemplates()) {
+            for (const feetech::RobotJoint &joint : robot.joints)
+                QCOMPARE(joint.clearedBits.value(QStringLiteral("phase")), 0x10u);
+        }
+        const RobotTemplate &follower = feetech::builtInRobotTemplates().at(2);
+        QCOMPARE(feetech::motorTarget(follower, follower.joints.first()).clearedBits,
+                 follower.joints.first().clearedBits);
+        QCOMPARE(feetech::jointChecks(follower).first().clearedBits,
+                 follower.joints.first().clearedBits);
+        const auto expected = feetech::settingsExpectations(follower);
+        QCOMPARE(expected.clearedBitsById.value(6).value(QStringLiteral("phase")), 0x10u);
+        QCOMPARE(expected.byId.value(6).value(QStringLiteral("max_torque")), 500);
+        QVERIFY(expected.keys().contains(QStringLiteral("phase")));
+    }
+
+    void aJointsOwnBitsToClearGoOnTopOfTheCommonOnes()
+    {
+        QJsonObject arm =
+            armObject({joint(QStringLiteral("base"), 1), joint(QStringLiteral("arm"), 2)});
+        arm.insert(QStringLiteral("clear_bits"),
+                   QJsonObject {{QStringLiteral("phase"), QJsonArray {4}}});
+        QJsonArray joints = arm.value(QStringLiteral("joints")).toArray();
+        QJsonObject second = joints.at(1).toObject();
+        second.insert(QStringLiteral("clear_bits"),
+                      QJsonObject {{QStringLiteral("phase"), QJsonArray {7}},
+                                   {QStringLiteral("unload_conditions"), QJsonArray {0, 1}}});
+        joints[1] = second;
+        arm.insert(QStringLiteral("joints"), joints);
+        util::FileError error;
+        const auto robot = feetech::robotTemplateFromJson(json(arm), kSource, &error);
+        QVERIFY2(robot, qPrintable(error.describe()));
+        QCOMPARE(robot->joints.at(0).clearedBits.value(QStringLiteral("phase")), 0x10u);
+        QCOMPARE(robot->joints.at(1).clearedBits.value(QStringLiteral("phase")), 0x90u);
+        QCOMPARE(robot->joints.at(1).clearedBits.value(QStringLiteral("unload_conditions")), 0x03u);
+        // Saved and read again, each joint keeps its own.
+        const auto again =
+            feetech::robotTemplateFromJson(feetech::robotTemplateToJson(*robot), kSource, &error);
+        QVERIFY2(again, qPrintable(error.describe()));
+        QCOMPARE(again->joints.at(1).clearedBits, robot->joints.at(1).clearedBits);
+    }
+
     void aJointsOwnSettingsGoOnTopOfTheCommonOnes()
     {
         util::FileError error;
@@ -228,6 +271,29 @@ private slots:
             << json(armObject({joint(QStringLiteral("base"), 1,
                                      {{QStringLiteral("p_gain"), QStringLiteral("16")}})}))
             << QStringLiteral("\"p_gain\" must be a whole number") << Code::WrongType;
+        QJsonObject bitTooHigh = armObject(two);
+        bitTooHigh.insert(QStringLiteral("clear_bits"),
+                          QJsonObject {{QStringLiteral("phase"), QJsonArray {8}}});
+        QTest::newRow("a bit the register has not")
+            << json(bitTooHigh) << QStringLiteral("clear_bits: \"phase\" has bits 0 to 7")
+            << Code::BadValue;
+        QJsonObject bitsNoList = armObject(two);
+        bitsNoList.insert(QStringLiteral("clear_bits"), QJsonObject {{QStringLiteral("phase"), 4}});
+        QTest::newRow("bits that are no list")
+            << json(bitsNoList) << QStringLiteral("\"phase\" must be a list of bit numbers")
+            << Code::WrongType;
+        QJsonObject bitsOfLock = armObject(two);
+        bitsOfLock.insert(QStringLiteral("clear_bits"),
+                          QJsonObject {{QStringLiteral("lock"), QJsonArray {0}}});
+        QTest::newRow("the lock's bits by the back door")
+            << json(bitsOfLock) << QStringLiteral("\"lock\" is set by its own flow")
+            << Code::BadValue;
+        QJsonObject bitsOfReadOnly = armObject(two);
+        bitsOfReadOnly.insert(QStringLiteral("clear_bits"),
+                              QJsonObject {{QStringLiteral("status"), QJsonArray {0}}});
+        QTest::newRow("bits of a read-only register")
+            << json(bitsOfReadOnly) << QStringLiteral("\"status\" is no writable register")
+            << Code::UnknownKey;
         QJsonObject extra = joint(QStringLiteral("base"), 1);
         extra.insert(QStringLiteral("colour"), QStringLiteral("red"));
         QTest::newRow("unknown entry")

@@ -203,13 +203,15 @@ private slots:
                          1,
                          QStringLiteral("STS3215"),
                          false,
-                         {{QStringLiteral("p_gain"), 25}}},
+                         {{QStringLiteral("p_gain"), 25}},
+                         {}},
                         {QStringLiteral("elbow"),
                          2,
                          QStringLiteral("STS3215"),
                          false,
-                         {{QStringLiteral("p_gain"), 27}, {QStringLiteral("max_torque"), 500}}},
-                        {QStringLiteral("wrist"), 3, QStringLiteral("STS3215"), false, {}}};
+                         {{QStringLiteral("p_gain"), 27}, {QStringLiteral("max_torque"), 500}},
+                         {}},
+                        {QStringLiteral("wrist"), 3, QStringLiteral("STS3215"), false, {}, {}}};
         const QString path =
             writeTestFile(QStringLiteral("arm.json"), feetech::robotTemplateToJson(robot));
         const auto result = feetech({QStringLiteral("--json"), QStringLiteral("load"),
@@ -239,7 +241,8 @@ private slots:
                          1,
                          QStringLiteral("STS3215"),
                          false,
-                         {{QStringLiteral("p_gain"), 25}}}};
+                         {{QStringLiteral("p_gain"), 25}},
+                         {}}};
         const QString path =
             writeTestFile(QStringLiteral("one.json"), feetech::robotTemplateToJson(robot));
         const auto result =

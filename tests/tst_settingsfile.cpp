@@ -1,5 +1,6 @@
 // Tests feetech::SettingsFile's reading: a profile or a robot template from a file or from its
-// text gives the same values, and text that is neither is refused naming its source.
+// text gives the same values, and text that is neither is refused naming its source; a
+// template's bits to clear become writes only where they are set; what torque refuses.
 #include "registertable.h"
 #include "settingsfile.h"
 #include "testfiles.h"
@@ -53,6 +54,32 @@ private:
     }
 
 private slots:
+    void aTemplatesBitsToClearAreWrittenOnlyWhereSetKeepingTheOtherBits()
+    {
+        const QByteArray text = R"({"format": "servobench-robot", "version": 1, "name": "Arm",
+                                    "clear_bits": {"phase": [4]},
+                                    "joints": [{"name": "base", "id": 1, "model": "STS3215"}]})";
+        util::FileError error;
+        const auto file = feetech::SettingsFile::fromJson(text, QStringLiteral("arm.json"), &error);
+        QVERIFY2(file, qPrintable(error.describe()));
+        const auto cleared = file->clearedBitsFor(sts3215(1));
+        QCOMPARE(cleared.value(QStringLiteral("phase")), 0x10u);
+        QVERIFY(file->clearedBitsFor(sts3215(2)).isEmpty()); // no joint with that ID
+        const auto phaseIs = [](qint64 phase) {
+            return [phase](const QString &key) -> std::optional<qint64> {
+                return key == QLatin1String("phase") ? std::optional<qint64>(phase) : std::nullopt;
+            };
+        };
+        const auto set = feetech::changedValues({}, phaseIs(0x9c), cleared);
+        QCOMPARE(set.size(), 1);
+        QCOMPARE(set.first().key, QStringLiteral("phase"));
+        QCOMPARE(set.first().value, 0x8c);
+        QVERIFY(feetech::changedValues({}, phaseIs(0x0c), cleared).isEmpty());
+        // Under torque a new phase is refused as a new offset is: the position would read anew.
+        QVERIFY(!feetech::torqueRefusal(sts3215(1), set, 1).isEmpty());
+        QVERIFY(feetech::torqueRefusal(sts3215(1), set, 0).isEmpty());
+    }
+
     void aProfileReadFromTextIsTheProfileReadFromItsFile()
     {
         util::FileError error;

@@ -92,6 +92,17 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "                                         a fault 100 steps and back (rise time, overshoot,\n"
     "                                         steady-state error); exit 1 when a servo has a "
     "fault\n"
+    "  feetech check --ids LIST [--robot ROBOT] [--fix]\n"
+    "                                         find settings that stop a servo moving or make it\n"
+    "                                         misbehave: phase bit 4 (multi-turn), torque limit\n"
+    "                                         or maximum torque 0, a mode other than position,\n"
+    "                                         angle limits, return delay, an open EEPROM, mixed\n"
+    "                                         firmware, voltage limits the supply breaks; ROBOT\n"
+    "                                         (so101-follower, ... or a template file) adds its\n"
+    "                                         settings; --fix writes the expected values, read\n"
+    "                                         back (limits, offset, mode, torque limit and phase\n"
+    "                                         only with torque off); exit 1 when something is "
+    "left\n"
     "  feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]\n"
     "                                         stream position, speed, load, voltage,\n"
     "                                         temperature and current (SYNC READ)\n"
@@ -142,23 +153,38 @@ public:
     {
         try {
             const Arguments args(
-                raw, {QStringLiteral("port"),        QStringLiteral("baud"),
-                      QStringLiteral("family"),      QStringLiteral("id"),
-                      QStringLiteral("addr"),        QStringLiteral("data"),
-                      QStringLiteral("len"),         QStringLiteral("ids"),
-                      QStringLiteral("echo"),        QStringLiteral("duration"),
-                      QStringLiteral("backup"),      QStringLiteral("rate"),
-                      QStringLiteral("model"),       QStringLiteral("settings"),
-                      QStringLiteral("names"),       QStringLiteral("full-turn"),
-                      QStringLiteral("out"),         QStringLiteral("expect"),
-                      QStringLiteral("link"),        QStringLiteral("record"),
-                      QStringLiteral("log"),         QStringLiteral("leader"),
-                      QStringLiteral("calibration"), QStringLiteral("leader-calibration"),
-                      QStringLiteral("max-speed"),   QStringLiteral("update")},
+                raw,
+                {QStringLiteral("port"),
+                 QStringLiteral("baud"),
+                 QStringLiteral("family"),
+                 QStringLiteral("id"),
+                 QStringLiteral("addr"),
+                 QStringLiteral("data"),
+                 QStringLiteral("len"),
+                 QStringLiteral("ids"),
+                 QStringLiteral("echo"),
+                 QStringLiteral("duration"),
+                 QStringLiteral("backup"),
+                 QStringLiteral("rate"),
+                 QStringLiteral("model"),
+                 QStringLiteral("settings"),
+                 QStringLiteral("names"),
+                 QStringLiteral("full-turn"),
+                 QStringLiteral("out"),
+                 QStringLiteral("expect"),
+                 QStringLiteral("robot"),
+                 QStringLiteral("link"),
+                 QStringLiteral("record"),
+                 QStringLiteral("log"),
+                 QStringLiteral("leader"),
+                 QStringLiteral("calibration"),
+                 QStringLiteral("leader-calibration"),
+                 QStringLiteral("max-speed"),
+                 QStringLiteral("update")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
                  QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check"),
-                 QStringLiteral("watch"), QStringLiteral("release")});
+                 QStringLiteral("fix"), QStringLiteral("watch"), QStringLiteral("release")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);

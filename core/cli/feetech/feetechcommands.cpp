@@ -68,6 +68,7 @@ int runFeetechCommand(const Arguments &args, const QStringList &rest, const Outp
         {"monitor", &runIn<FeetechMonitorCommand, &FeetechMonitorCommand::monitor>},
         {"identify", &runIn<FeetechFlowCommands, &FeetechFlowCommands::identify>},
         {"health", &runIn<FeetechHealthCommand, &FeetechHealthCommand::health>},
+        {"check", &runIn<FeetechHealthCommand, &FeetechHealthCommand::check>},
         {"calibrate", &runIn<FeetechCalibrationCommands, &FeetechCalibrationCommands::calibrate>},
         {"calibration",
          &runIn<FeetechCalibrationCommands, &FeetechCalibrationCommands::calibration>},

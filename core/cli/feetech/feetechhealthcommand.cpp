@@ -1,7 +1,12 @@
-// servoctl feetech health: the health check of servos --ids, and with --move-test their move test.
+// servoctl feetech health and check: the health check with its move test, the settings check
+// with its fixes.
 #include "feetechhealthcommand.h"
 
 #include "healthmovetest.h"
+#include "robottemplate.h"
+
+#include <QDir>
+#include <QFileInfo>
 
 #include <QCoreApplication>
 
@@ -40,23 +45,12 @@ int FeetechHealthCommand::health(const QString &what, const QStringList &operand
     // A servo that does not answer is a servo with a fault, not the end of the check.
     QVector<feetech::HealthReading> readings(ids.size());
     QVector<ServoInfo> reachable;
+    const QVector<Identified> identified = identifyEach(device, ids);
     for (int i = 0; i < ids.size(); ++i) {
-        readings[i].servo.id = ids.at(i);
-        readings[i].servo.baud = busBaud();
-        // Addresses 0-8 by READ, not PING first: a servo with its voltage bit set answers a
-        // PING with status 0x01, a frame byte for byte the PING itself, taken for its echo.
-        const auto memory = device.read(readings.at(i).servo,
-                                        {{feetech::kIdentityAddress, feetech::kIdentitySize}});
-        const auto servo = memory ? feetech::servoInfoFromIdentity(
-                               ids.at(i), busBaud(), memory->value(feetech::kIdentityAddress))
-                                  : std::nullopt;
-        if (servo) {
-            readings[i].servo = *servo;
-            reachable.append(*servo);
-        } else {
-            readings[i].failure =
-                memory ? Tr::tr("its identity (addresses 0-8) could not be read") : device.error();
-        }
+        readings[i].servo = identified.at(i).servo;
+        readings[i].failure = identified.at(i).failure;
+        if (identified.at(i).failure.isEmpty())
+            reachable.append(identified.at(i).servo);
     }
     if (!reachable.isEmpty()) {
         const auto connection =
@@ -113,6 +107,194 @@ int FeetechHealthCommand::health(const QString &what, const QStringList &operand
             printHealth(servo, moveTest);
     }
     return feetech::anyFault(servos) ? ExitDeviceFailure : ExitOk;
+}
+
+auto FeetechHealthCommand::identifyEach(FeetechDevice &device, const QVector<quint8> &ids)
+    -> QVector<Identified>
+{
+    QVector<Identified> identified(ids.size());
+    for (int i = 0; i < ids.size(); ++i) {
+        identified[i].servo.id = ids.at(i);
+        identified[i].servo.baud = busBaud();
+        // Addresses 0-8 by READ, not PING first: a servo with its voltage bit set answers a
+        // PING with status 0x01, a frame byte for byte the PING itself, taken for its echo.
+        const auto memory = device.read(identified.at(i).servo,
+                                        {{feetech::kIdentityAddress, feetech::kIdentitySize}});
+        const auto servo = memory ? feetech::servoInfoFromIdentity(
+                               ids.at(i), busBaud(), memory->value(feetech::kIdentityAddress))
+                                  : std::nullopt;
+        if (servo)
+            identified[i].servo = *servo;
+        else
+            identified[i].failure =
+                memory ? Tr::tr("its identity (addresses 0-8) could not be read") : device.error();
+    }
+    return identified;
+}
+
+feetech::SettingsExpectations FeetechHealthCommand::expectations(const QString &what) const
+{
+    if (!m_args.has(QStringLiteral("robot")))
+        return {};
+    const QString name = m_args.value(QStringLiteral("robot"));
+    const QString builtIn = QStringLiteral(":/robots/%1.json").arg(name);
+    const QString path = QFileInfo::exists(builtIn) ? builtIn : name;
+    util::FileError error;
+    const auto robot = feetech::loadRobotTemplate(path, &error);
+    if (!robot)
+        throw UsageError {Tr::tr("%1 --robot: %2").arg(what, error.describe())};
+    return feetech::settingsExpectations(*robot);
+}
+
+int FeetechHealthCommand::check(const QString &what, const QStringList &operands)
+{
+    allowOptions(what, {QStringLiteral("ids"), QStringLiteral("robot"), QStringLiteral("fix")});
+    expectOperands(what, operands, 0, {});
+    const QVector<quint8> ids = jointIds(what);
+    const feetech::SettingsExpectations expected = expectations(what);
+    const bool fix = m_args.flag(QStringLiteral("fix"));
+    FeetechDevice device(m_args, m_output);
+    if (!device.open(busBaud()))
+        return fail(device.error());
+
+    QVector<feetech::SettingsReading> readings(ids.size());
+    QVector<ServoInfo> reachable;
+    const QVector<Identified> identified = identifyEach(device, ids);
+    for (int i = 0; i < ids.size(); ++i) {
+        readings[i].servo = identified.at(i).servo;
+        readings[i].failure = identified.at(i).failure;
+        if (identified.at(i).failure.isEmpty())
+            reachable.append(identified.at(i).servo);
+    }
+    if (!reachable.isEmpty()) {
+        const auto connection =
+            QObject::connect(&device.session(), &feetech::Session::operationProgress,
+                             [&readings, &ids](const feetech::OperationProgress &progress) {
+                                 const auto reading =
+                                     progress.detail.value<feetech::SettingsReading>();
+                                 readings[ids.indexOf(reading.servo.id)] = reading;
+                             });
+        const auto result =
+            device.operate(feetech::operations::checkSettings(reachable, expected.keys()));
+        QObject::disconnect(connection);
+        if (!result || !result->ok)
+            return fail(result ? result->message : device.error());
+    }
+    const QVector<feetech::SettingsFinding> findings = feetech::checkSettings(readings, expected);
+
+    if (!fix || findings.isEmpty()) {
+        if (m_output.json) {
+            QJsonArray rows;
+            for (const feetech::SettingsFinding &finding : findings)
+                rows.append(feetech::settingsFindingJson(finding));
+            printJson(m_output.out, rows);
+        } else {
+            printFindings(findings, int(ids.size()));
+        }
+        return findings.isEmpty() ? ExitOk : ExitDeviceFailure;
+    }
+
+    QVector<feetech::SettingsFinding> fixable;
+    for (const feetech::SettingsFinding &finding : findings) {
+        if (finding.fixable())
+            fixable.append(finding);
+    }
+    QVector<feetech::SettingsFixOutcome> outcomes;
+    if (!fixable.isEmpty()) {
+        m_output.err << Tr::tr("fixing %n setting(s)…", nullptr, int(fixable.size())) << '\n';
+        m_output.err.flush();
+        const auto result = device.operate(feetech::operations::fixSettings(fixable));
+        if (!result || !result->detail.canConvert<QVector<feetech::SettingsFixOutcome>>())
+            return fail(result ? result->message : device.error());
+        outcomes = result->detail.value<QVector<feetech::SettingsFixOutcome>>();
+    }
+    // Every finding once, in the check's order: fixed or not, and why.
+    QVector<feetech::SettingsFixOutcome> rows;
+    int pending = 0;
+    for (const feetech::SettingsFinding &finding : findings) {
+        if (finding.fixable()) {
+            rows.append(outcomes.value(pending++));
+            continue;
+        }
+        feetech::SettingsFixOutcome notFixable;
+        notFixable.finding = finding;
+        notFixable.code = feetech::SettingsFixOutcome::Code::NotFixable;
+        notFixable.why = Tr::tr("nothing to write fixes this");
+        rows.append(notFixable);
+    }
+    if (m_output.json) {
+        QJsonArray json;
+        for (const feetech::SettingsFixOutcome &outcome : std::as_const(rows))
+            json.append(feetech::settingsFixJson(outcome));
+        printJson(m_output.out, json);
+    } else {
+        printFixes(rows);
+    }
+    const bool allFixed = std::all_of(rows.begin(), rows.end(),
+                                      [](const auto &outcome) { return outcome.verified(); });
+    return allFixed ? ExitOk : ExitDeviceFailure;
+}
+
+namespace {
+
+QString valueText(const feetech::SettingsFinding &finding)
+{
+    if (!finding.valueText.isEmpty())
+        return finding.valueText;
+    return finding.value ? QString::number(*finding.value) : QStringLiteral("-");
+}
+
+QString expectedText(const feetech::SettingsFinding &finding)
+{
+    return finding.expected ? QString::number(*finding.expected) : QStringLiteral("-");
+}
+
+} // namespace
+
+void FeetechHealthCommand::printFindings(const QVector<feetech::SettingsFinding> &findings,
+                                         int servos)
+{
+    QTextStream &out = m_output.out;
+    if (findings.isEmpty()) {
+        out << Tr::tr("No problem found in the settings of %n servo(s).", nullptr, servos) << '\n';
+        out.flush();
+        return;
+    }
+    out << QStringLiteral("%1  %2  %3  %4  %5")
+               .arg(Tr::tr("ID"), -4)
+               .arg(Tr::tr("SETTING"), -18)
+               .arg(Tr::tr("VALUE"), -8)
+               .arg(Tr::tr("EXPECTED"), -8)
+               .arg(Tr::tr("WHY"))
+        << '\n';
+    for (const feetech::SettingsFinding &finding : findings)
+        out << QStringLiteral("%1  %2  %3  %4  %5")
+                   .arg(finding.servo.id, -4)
+                   .arg(finding.key.isEmpty() ? finding.code : finding.key, -18)
+                   .arg(valueText(finding), -8)
+                   .arg(expectedText(finding), -8)
+                   .arg(finding.why)
+            << '\n';
+    out << Tr::tr("%n finding(s); --fix writes the expected values and reads them back.", nullptr,
+                  int(findings.size()))
+        << '\n';
+    out.flush();
+}
+
+void FeetechHealthCommand::printFixes(const QVector<feetech::SettingsFixOutcome> &outcomes)
+{
+    QTextStream &out = m_output.out;
+    for (const feetech::SettingsFixOutcome &outcome : outcomes) {
+        const feetech::SettingsFinding &finding = outcome.finding;
+        out << Tr::tr("servo %1 %2: %3 → %4: %5")
+                   .arg(finding.servo.id)
+                   .arg(finding.key.isEmpty() ? finding.code : finding.key, valueText(finding),
+                        expectedText(finding), feetech::fixOutcomeText(outcome))
+            << '\n';
+        if (!outcome.verified())
+            out << "  " << finding.why << '\n';
+    }
+    out.flush();
 }
 
 void FeetechHealthCommand::printHealth(const feetech::ServoHealth &health, bool moveAsked)

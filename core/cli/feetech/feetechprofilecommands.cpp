@@ -57,10 +57,11 @@ QJsonObject outcomeJson(const feetech::ProgramOutcome &outcome)
             {QStringLiteral("left_out"), QJsonArray::fromStringList(outcome.leftOut)}};
 }
 
-// The values of `wanted` that `servo` does not hold yet (it is read whole); nothing and *error
-// when it cannot be read.
+// The values of `wanted` that `servo` does not hold yet (it is read whole), and the bits of
+// `cleared` it has set, cleared; nothing and *error when it cannot be read.
 std::optional<QVector<model::WriteItem>> changedOn(FeetechDevice &device, const ServoInfo &servo,
                                                    const QVector<model::WriteItem> &wanted,
+                                                   const QMap<QString, quint32> &cleared,
                                                    QString *error,
                                                    std::optional<qint64> *torque = nullptr)
 {
@@ -72,12 +73,15 @@ std::optional<QVector<model::WriteItem>> changedOn(FeetechDevice &device, const 
     const QHash<QString, qint32> current = valuesByKey(decodeMemory(servo.table(), *memory));
     if (torque && current.contains(QStringLiteral("torque_enable")))
         *torque = current.value(QStringLiteral("torque_enable"));
-    return feetech::changedValues(wanted, [&current](const QString &key) -> std::optional<qint64> {
-        const auto found = current.constFind(key);
-        if (found == current.constEnd())
-            return std::nullopt;
-        return *found;
-    });
+    return feetech::changedValues(
+        wanted,
+        [&current](const QString &key) -> std::optional<qint64> {
+            const auto found = current.constFind(key);
+            if (found == current.constEnd())
+                return std::nullopt;
+            return *found;
+        },
+        cleared);
 }
 
 } // namespace
@@ -144,7 +148,8 @@ int FeetechProfileCommands::load(const QString &what, const QStringList &operand
         }
     }
     std::optional<qint64> torque;
-    const auto changed = changedOn(*target->device, servo, *wanted, &error, &torque);
+    const auto changed =
+        changedOn(*target->device, servo, *wanted, file.clearedBitsFor(servo), &error, &torque);
     if (!changed)
         return fail(error);
     const QVector<model::WriteItem> &items = *changed;
@@ -189,7 +194,9 @@ feetech::ProgramOutcome FeetechProfileCommands::programOne(FeetechDevice &device
     QString error;
     const auto wanted = file.batchValuesFor(*servo, &outcome.leftOut, &error);
     std::optional<qint64> torque;
-    const auto items = wanted ? changedOn(device, *servo, *wanted, &error, &torque) : std::nullopt;
+    const auto items = wanted
+        ? changedOn(device, *servo, *wanted, file.clearedBitsFor(*servo), &error, &torque)
+        : std::nullopt;
     if (!items) {
         outcome.error = error;
         return outcome;

@@ -57,6 +57,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     m_telemetry = new TelemetryHub(this);
     m_motorSetup = new MotorSetupService(this);
     m_health = new HealthService(this);
+    m_settingsCheck = new SettingsCheckService(this);
     m_identify = new IdentifyService(this);
 }
 

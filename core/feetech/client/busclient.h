@@ -17,6 +17,7 @@
 #include "servohealth.h"
 #include "servolist.h"
 #include "sessionthread.h"
+#include "settingscheckservice.h"
 #include "telemetry.h"
 #include "telemetryhub.h"
 
@@ -141,6 +142,8 @@ public:
     MotorSetupService *motorSetup() const { return m_motorSetup; }
     // The health check and its confirmed move test.
     HealthService *health() const { return m_health; }
+    // The settings check and its fixes.
+    SettingsCheckService *settingsCheck() const { return m_settingsCheck; }
     // Identifying a joint, and the servos held by what moves them meanwhile.
     IdentifyService *identify() const { return m_identify; }
 
@@ -170,6 +173,7 @@ private:
     TelemetryHub *m_telemetry = nullptr;
     MotorSetupService *m_motorSetup = nullptr;
     HealthService *m_health = nullptr;
+    SettingsCheckService *m_settingsCheck = nullptr;
     IdentifyService *m_identify = nullptr;
 };
 

@@ -198,16 +198,18 @@ void MotorSetup::changeBaud(std::shared_ptr<Run> run)
 void MotorSetup::writeSettings(std::shared_ptr<Run> run)
 {
     const QMap<QString, qint32> &settings = run->target.settings;
+    const QMap<QString, quint32> &cleared = run->target.clearedBits;
     if (stoppedBefore(run, Tr::tr("writing its settings")))
         return;
-    emit progress(4, kSetupSteps, Tr::tr("Writing %n setting(s)…", nullptr, int(settings.size())));
-    if (settings.isEmpty()) {
+    emit progress(4, kSetupSteps,
+                  Tr::tr("Writing %n setting(s)…", nullptr, int(settings.size() + cleared.size())));
+    if (settings.isEmpty() && cleared.isEmpty()) {
         finish(run, OperationFailure::None, {});
         return;
     }
     // Only what differs is written: the EEPROM keeps its writes for what changes.
     auto current = std::make_shared<QMap<QString, qint32>>();
-    readSettings(run->servo, run->target.settings.keys(), current,
+    readSettings(run->servo, settings.keys() + cleared.keys(), current,
                  [this, run, current](bool ok, const QString &message) {
                      if (!ok) {
                          finish(run, m_bus.stepFailure(), message);
@@ -218,6 +220,13 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
                      for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
                          if (!current->contains(it.key()) || current->value(it.key()) != it.value())
                              items.append({it.key(), it.value()});
+                     }
+                     // A register's other bits stay as the servo holds them.
+                     const QMap<QString, quint32> &cleared = run->target.clearedBits;
+                     for (auto it = cleared.cbegin(); it != cleared.cend(); ++it) {
+                         const qint32 held = current->value(it.key());
+                         if (current->contains(it.key()) && (quint32(held) & it.value()))
+                             items.append({it.key(), qint32(quint32(held) & ~it.value())});
                      }
                      if (items.isEmpty()) {
                          run->result.steps.append(Tr::tr("It already holds every setting."));
@@ -259,7 +268,7 @@ void MotorSetup::verifySettings(std::shared_ptr<Run> run)
     emit progress(5, kSetupSteps, Tr::tr("Reading the settings back…"));
     auto values = std::make_shared<QMap<QString, qint32>>();
     readSettings(
-        run->servo, run->target.settings.keys(), values,
+        run->servo, run->target.settings.keys() + run->target.clearedBits.keys(), values,
         [this, run, values](bool ok, const QString &message) {
             if (!ok) {
                 finish(run, m_bus.stepFailure(), message);
@@ -279,13 +288,27 @@ void MotorSetup::verifySettings(std::shared_ptr<Run> run)
                                           ? QString::number(values->value(it.key()))
                                           : Tr::tr("nothing")));
             }
+            const QMap<QString, quint32> &cleared = run->target.clearedBits;
+            for (auto it = cleared.cbegin(); it != cleared.cend(); ++it) {
+                if (!values->contains(it.key())) {
+                    wrong.append(Tr::tr("%1 could not be read back").arg(it.key()));
+                    continue;
+                }
+                const qint32 held = values->value(it.key());
+                run->result.verified.insert(it.key(), held);
+                if (quint32(held) & it.value())
+                    wrong.append(Tr::tr("%1 reads %2, with bits 0x%3 still set")
+                                     .arg(it.key())
+                                     .arg(held)
+                                     .arg(quint32(held) & it.value(), 2, 16, QLatin1Char('0')));
+            }
             if (!wrong.isEmpty()) {
                 finish(run, OperationFailure::NotVerified,
                        Tr::tr("Verification failed: %1.").arg(wrong.join(QStringLiteral("; "))));
                 return;
             }
             run->result.steps.append(Tr::tr("Read back: %n setting(s) hold their values.", nullptr,
-                                            int(settings.size())));
+                                            int(settings.size() + cleared.size())));
             finish(run, OperationFailure::None, {});
         });
 }
@@ -381,10 +404,10 @@ void MotorSetup::compareSettings(JointCheck &joint, std::function<void()> then)
 {
     const ServoInfo servo = *joint.found;
     QStringList kept;
-    for (auto it = joint.settings.cbegin(); it != joint.settings.cend(); ++it) {
-        const Register *reg = registerAt(servo, it.key());
-        if (reg && reg->storage == Storage::Eeprom)
-            kept.append(it.key());
+    for (const QString &key : joint.settings.keys() + joint.clearedBits.keys()) {
+        const Register *reg = registerAt(servo, key);
+        if (reg && reg->storage == Storage::Eeprom && !kept.contains(key))
+            kept.append(key);
     }
     if (!servoIsModel(servo, joint.model) || kept.isEmpty()) {
         then();
@@ -394,12 +417,18 @@ void MotorSetup::compareSettings(JointCheck &joint, std::function<void()> then)
     JointCheck *target = &joint; // the vector outlives the run: checkNext owns it
     readSettings(servo, kept, values, [target, kept, values, then](bool ok, const QString &) {
         for (const QString &key : kept) {
-            const qint32 wanted = target->settings.value(key);
+            const qint32 held = values->value(key);
             if (!ok || !values->contains(key))
                 target->differing.append(Tr::tr("%1 could not be read").arg(key));
-            else if (values->value(key) != wanted)
+            else if (target->settings.contains(key) && held != target->settings.value(key))
                 target->differing.append(
-                    Tr::tr("%1 is %2, not %3").arg(key).arg(values->value(key)).arg(wanted));
+                    Tr::tr("%1 is %2, not %3").arg(key).arg(held).arg(target->settings.value(key)));
+            else if (quint32(held) & target->clearedBits.value(key))
+                target->differing.append(Tr::tr("%1 is %2, with bits 0x%3 set")
+                                             .arg(key)
+                                             .arg(held)
+                                             .arg(quint32(held) & target->clearedBits.value(key), 2,
+                                                  16, QLatin1Char('0')));
         }
         then();
     });

@@ -27,6 +27,9 @@ struct MotorTarget
     qint32 baud = 1000000;
     QString model; // as the model table names it; empty: any model with a register table
     QMap<QString, qint32> settings; // register units by key, written and verified
+    // Bits to clear in registers by key (a mask each), the other bits kept as the servo holds
+    // them: read, cleared, written when they were set, verified.
+    QMap<QString, quint32> clearedBits;
 };
 
 // A find or a set-up: what was found, what it became, and each step done.
@@ -54,6 +57,7 @@ struct JointCheck
     QMap<QString, qint32> settings;
     std::optional<ServoInfo> found; // who answers at that ID at the template's rate
     QStringList differing; // "p_gain is 32, not 16": EEPROM settings that do not hold
+    QMap<QString, quint32> clearedBits; // bits of EEPROM registers that must be clear
 
     bool done() const;
     // Why a servo at the joint's ID is not set up as the joint (empty when done or nothing

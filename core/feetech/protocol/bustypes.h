@@ -144,7 +144,9 @@ enum class Operation {
     RecoverOverload, // torque off and on again after an overload trip, then the status checked
     LockEeprom, // the EEPROM lock closed and read back (a lock left open)
     SendPacket, // a frame built by hand (the packet window), sent once as it is
-    CheckSharedId // reads only: whether several servos answer at one ID
+    CheckSharedId, // reads only: whether several servos answer at one ID
+    CheckSettings, // reads only: the settings check's reads of each servo
+    FixSettings // the settings check's fixes of one servo, each read back
 };
 
 // Why an operation that ran (or was due to run) on the bus did not succeed: stable, so callers

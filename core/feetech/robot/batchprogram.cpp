@@ -121,7 +121,8 @@ void BatchProgram::diffAndWrite(int index)
     }
     model::ParameterModel &parameters = *m_client->servos()->parameters(index);
     const QVector<model::WriteItem> changed = changedValues(
-        *wanted, [&parameters](const QString &key) { return parameters.deviceValue(key); });
+        *wanted, [&parameters](const QString &key) { return parameters.deviceValue(key); },
+        m_file->clearedBitsFor(info));
     for (const model::WriteItem &item : changed)
         m_current.changed.append(item.key);
     const QString refused =

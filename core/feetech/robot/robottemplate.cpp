@@ -34,6 +34,7 @@ constexpr char kJointsKey[] = "joints";
 constexpr char kIdKey[] = "id";
 constexpr char kModelKey[] = "model";
 constexpr char kFullTurnKey[] = "full_turn";
+constexpr char kClearBitsKey[] = "clear_bits";
 
 // Registers whose writing has a flow of its own: a template never sets them.
 constexpr const char16_t *kFlowOnlyKeys[] = {u"id", u"baud_rate", u"lock", u"torque_enable"};
@@ -43,7 +44,7 @@ util::JsonFormat robotFormat()
     util::JsonFormat format;
     format.marker = kMarker;
     format.version = kVersion;
-    format.keys = {kNameKey, kBaudKey, kSettingsKey, kJointsKey};
+    format.keys = {kNameKey, kBaudKey, kSettingsKey, kClearBitsKey, kJointsKey};
     format.notAnObject = Tr::tr("not a ServoBench robot template (the document is not a JSON "
                                 "object)");
     format.wrongMarker = Tr::tr("not a ServoBench robot template (\"%1\" is not \"%2\")");
@@ -122,14 +123,76 @@ bool readSettings(const QJsonValue &value, const RegisterTable &table,
     return true;
 }
 
-bool readJoint(const QJsonValue &value, const QJsonValue &common, RobotJoint &joint,
+// Bits to clear by register key ({"phase": [4]}), checked against `table`; false and *why naming
+// the first wrong one.
+bool readClearedBits(const QJsonValue &value, const RegisterTable &table,
+                     QMap<QString, quint32> &cleared, util::FileError *why)
+{
+    if (value.isUndefined())
+        return true;
+    const QString field = QLatin1String(kClearBitsKey);
+    if (!value.isObject())
+        return failWith(why, Code::WrongType,
+                        Tr::tr("\"%1\" must be an object of bit numbers by register").arg(field),
+                        field);
+    const QJsonObject object = value.toObject();
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const Register *reg = table.find(it.key());
+        if (!reg || !reg->writable())
+            return failWith(why, Code::UnknownKey,
+                            Tr::tr("%1: \"%2\" is no writable register of %3 servos")
+                                .arg(field, it.key(), familyName(table.family())),
+                            it.key());
+        if (std::any_of(std::begin(kFlowOnlyKeys), std::end(kFlowOnlyKeys),
+                        [&](const char16_t *key) { return it.key() == QStringView(key); }))
+            return failWith(
+                why, Code::BadValue,
+                Tr::tr("%1: \"%2\" is set by its own flow, not by a template").arg(field, it.key()),
+                it.key());
+        if (!it.value().isArray() || it.value().toArray().isEmpty())
+            return failWith(why, Code::WrongType,
+                            Tr::tr("%1: \"%2\" must be a list of bit numbers").arg(field, it.key()),
+                            it.key());
+        quint32 mask = 0;
+        for (const QJsonValue &bit : it.value().toArray()) {
+            if (!isWhole(bit) || bit.toInt() < 0 || bit.toInt() >= reg->size * 8) {
+                failWith(why, Code::BadValue,
+                         Tr::tr("%1: \"%2\" has bits 0 to %3")
+                             .arg(field, it.key())
+                             .arg(reg->size * 8 - 1),
+                         it.key());
+                why->withValue(QString::number(bit.toDouble()));
+                return false;
+            }
+            mask |= 1u << bit.toInt();
+        }
+        cleared[it.key()] |= mask;
+    }
+    return true;
+}
+
+QJsonObject clearedBitsJson(const QMap<QString, quint32> &cleared)
+{
+    QJsonObject json;
+    for (auto it = cleared.begin(); it != cleared.end(); ++it) {
+        QJsonArray bits;
+        for (int bit = 0; bit < 32; ++bit) {
+            if (it.value() & (1u << bit))
+                bits.append(bit);
+        }
+        json.insert(it.key(), bits);
+    }
+    return json;
+}
+
+bool readJoint(const QJsonValue &value, const QJsonObject &root, RobotJoint &joint,
                util::FileError *why)
 {
     if (!value.isObject())
         return failWith(why, Code::WrongType, Tr::tr("every joint must be a JSON object"), {});
     const QJsonObject object = value.toObject();
     if (const auto unknown = util::firstUnknownKey(
-            object, {kNameKey, kIdKey, kModelKey, kFullTurnKey, kSettingsKey}))
+            object, {kNameKey, kIdKey, kModelKey, kFullTurnKey, kSettingsKey, kClearBitsKey}))
         return failWith(why, Code::UnknownKey, Tr::tr("unknown entry \"%1\"").arg(*unknown),
                         *unknown);
     joint.name = object.value(QLatin1String(kNameKey)).toString();
@@ -161,8 +224,11 @@ bool readJoint(const QJsonValue &value, const QJsonValue &common, RobotJoint &jo
                         QLatin1String(kFullTurnKey));
     joint.fullTurn = fullTurn.toBool(false);
     const RegisterTable &table = RegisterTable::forFamily(*model->family);
-    return readSettings(common, table, joint.settings, why)
-        && readSettings(object.value(QLatin1String(kSettingsKey)), table, joint.settings, why);
+    return readSettings(root.value(QLatin1String(kSettingsKey)), table, joint.settings, why)
+        && readSettings(object.value(QLatin1String(kSettingsKey)), table, joint.settings, why)
+        && readClearedBits(root.value(QLatin1String(kClearBitsKey)), table, joint.clearedBits, why)
+        && readClearedBits(object.value(QLatin1String(kClearBitsKey)), table, joint.clearedBits,
+                           why);
 }
 
 } // namespace
@@ -208,11 +274,10 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
         return failOn(Code::MissingField,
                       Tr::tr("\"%1\" must list the robot's joints").arg(QLatin1String(kJointsKey)),
                       kJointsKey);
-    const QJsonValue common = root->value(QLatin1String(kSettingsKey));
     for (int i = 0; i < joints.size(); ++i) {
         RobotJoint joint;
         const QString where = Tr::tr("joint %1").arg(i + 1);
-        if (!readJoint(joints.at(i), common, joint, &why))
+        if (!readJoint(joints.at(i), *root, joint, &why))
             return fail(util::FileError(why.code(),
                                         where
                                             + (joint.name.isEmpty()
@@ -244,15 +309,26 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
 
 MotorTarget motorTarget(const RobotTemplate &robot, const RobotJoint &joint)
 {
-    return {joint.name, joint.id, robot.baud, joint.model, joint.settings};
+    return {joint.name, joint.id, robot.baud, joint.model, joint.settings, joint.clearedBits};
 }
 
 QVector<JointCheck> jointChecks(const RobotTemplate &robot)
 {
     QVector<JointCheck> joints;
     for (const RobotJoint &joint : robot.joints)
-        joints.append({joint.id, joint.model, joint.settings, std::nullopt, {}});
+        joints.append({joint.id, joint.model, joint.settings, std::nullopt, {}, joint.clearedBits});
     return joints;
+}
+
+SettingsExpectations settingsExpectations(const RobotTemplate &robot)
+{
+    SettingsExpectations expected;
+    expected.source = robotDisplayName(robot.name);
+    for (const RobotJoint &joint : robot.joints) {
+        expected.byId.insert(quint8(joint.id), joint.settings);
+        expected.clearedBitsById.insert(quint8(joint.id), joint.clearedBits);
+    }
+    return expected;
 }
 
 QByteArray robotTemplateToJson(const RobotTemplate &robot)
@@ -262,11 +338,14 @@ QByteArray robotTemplateToJson(const RobotTemplate &robot)
         QJsonObject settings;
         for (auto it = joint.settings.begin(); it != joint.settings.end(); ++it)
             settings.insert(it.key(), it.value());
-        joints.append(QJsonObject {{QLatin1String(kNameKey), joint.name},
-                                   {QLatin1String(kIdKey), joint.id},
-                                   {QLatin1String(kModelKey), joint.model},
-                                   {QLatin1String(kFullTurnKey), joint.fullTurn},
-                                   {QLatin1String(kSettingsKey), settings}});
+        QJsonObject written {{QLatin1String(kNameKey), joint.name},
+                             {QLatin1String(kIdKey), joint.id},
+                             {QLatin1String(kModelKey), joint.model},
+                             {QLatin1String(kFullTurnKey), joint.fullTurn},
+                             {QLatin1String(kSettingsKey), settings}};
+        if (!joint.clearedBits.isEmpty())
+            written.insert(QLatin1String(kClearBitsKey), clearedBitsJson(joint.clearedBits));
+        joints.append(written);
     }
     const QJsonObject root {{QLatin1String(util::kFormatKey), QLatin1String(kMarker)},
                             {QLatin1String(util::kVersionKey), kVersion},

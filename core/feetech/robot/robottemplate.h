@@ -5,6 +5,7 @@
 #include "fileerror.h"
 #include "motorsetup.h"
 #include "registertable.h"
+#include "settingscheck.h"
 
 #include <QByteArray>
 #include <QMap>
@@ -24,6 +25,9 @@ struct RobotJoint
     // Register values (register units, by key) written and verified at set-up: the template's
     // common settings with the joint's own on top.
     QMap<QString, qint32> settings;
+    // Bits to clear (a mask per register key), the register's other bits kept: the template's
+    // common ones with the joint's own on top. Phase bit 4 (multi-turn feedback), say.
+    QMap<QString, quint32> clearedBits;
 };
 
 struct RobotTemplate
@@ -37,7 +41,8 @@ struct RobotTemplate
 
 // Parses and validates a template: format, names, unique IDs, known models with a register
 // table, and every setting a writable register of that model within its range (the ID, the baud
-// rate, the lock and torque enable are set by the flows, never by a template). On failure
+// rate, the lock and torque enable are set by the flows, never by a template); every bit to
+// clear a bit of such a register. On failure
 // nothing, and *error naming `source` and the joint and field at fault.
 std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const QString &source,
                                                    util::FileError *error);
@@ -46,6 +51,9 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
 MotorTarget motorTarget(const RobotTemplate &robot, const RobotJoint &joint);
 // What a check of the robot's joints looks for: each joint's ID, model and settings.
 QVector<JointCheck> jointChecks(const RobotTemplate &robot);
+
+// What the settings check expects of each joint, by ID: its settings and its bits to clear.
+SettingsExpectations settingsExpectations(const RobotTemplate &robot);
 
 QByteArray robotTemplateToJson(const RobotTemplate &robot);
 

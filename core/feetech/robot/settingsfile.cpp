@@ -143,27 +143,46 @@ SettingsFile::batchValuesFor(const ServoInfo &servo, QStringList *leftOut, QStri
 QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &changed,
                       std::optional<qint64> torque)
 {
+    // The phase register changes how the position reads, so the servo would chase its goal.
     static const QStringList moving {kOffsetKey, QStringLiteral("min_angle_limit"),
                                      QStringLiteral("max_angle_limit"),
-                                     QStringLiteral("goal_position")};
+                                     QStringLiteral("goal_position"), QStringLiteral("phase")};
     const bool moves = std::any_of(changed.cbegin(), changed.cend(),
                                    [](const auto &item) { return moving.contains(item.key); });
     const auto off = servo.hasTable() ? servo.table().torqueValue(TorqueMode::Off) : std::nullopt;
     if (!moves || (torque && off && *torque == *off))
         return {};
-    return Tr::tr("torque is on: switch it off before changing the position offset or limits");
+    return Tr::tr("torque is on: switch it off before changing the position offset, limits or "
+                  "phase");
 }
 
 QVector<model::WriteItem>
 changedValues(const QVector<model::WriteItem> &wanted,
-              const std::function<std::optional<qint64>(const QString &key)> &current)
+              const std::function<std::optional<qint64>(const QString &key)> &current,
+              const QMap<QString, quint32> &cleared)
 {
     QVector<model::WriteItem> changed;
     for (const model::WriteItem &item : wanted) {
         if (current(item.key) != std::optional<qint64>(item.value))
             changed.append(item);
     }
+    for (auto it = cleared.cbegin(); it != cleared.cend(); ++it) {
+        const auto held = current(it.key());
+        if (held && (quint64(*held) & it.value()))
+            changed.append({it.key(), qint64(quint64(*held) & ~quint64(it.value()))});
+    }
     return changed;
+}
+
+QMap<QString, quint32> SettingsFile::clearedBitsFor(const ServoInfo &servo) const
+{
+    if (!m_robot)
+        return {};
+    for (const RobotJoint &joint : m_robot->joints) {
+        if (joint.id == servo.id)
+            return joint.clearedBits;
+    }
+    return {};
 }
 
 QString leftOutNote(const QVector<ProgramOutcome> &outcomes)

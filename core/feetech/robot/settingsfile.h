@@ -42,6 +42,9 @@ public:
     // calibration, not a setting to copy, so it is left out (its key added to *leftOut).
     std::optional<QVector<model::WriteItem>>
     batchValuesFor(const ServoInfo &servo, QStringList *leftOut, QString *error) const;
+    // The bits the template's joint of `servo`'s ID clears (a mask per register key); none for a
+    // profile.
+    QMap<QString, quint32> clearedBitsFor(const ServoInfo &servo) const;
 
 private:
     QString m_source; // the file, for messages
@@ -50,13 +53,15 @@ private:
 };
 
 // The values of `wanted` that `current` (the servo's value of a key, none when unknown) does not
-// already hold: what programming the servo writes.
+// already hold, then each register of `cleared` whose current value has any of its bits set,
+// with them cleared: what programming the servo writes.
 QVector<model::WriteItem>
 changedValues(const QVector<model::WriteItem> &wanted,
-              const std::function<std::optional<qint64>(const QString &key)> &current);
+              const std::function<std::optional<qint64>(const QString &key)> &current,
+              const QMap<QString, quint32> &cleared = {});
 
 // Why `changed` may not be written to `servo` whose torque_enable holds `torque` (none when it was
-// not read): under torque a new offset, limit or goal moves the horn. Empty when it may.
+// not read): under torque a new offset, limit, goal or phase moves the horn. Empty when it may.
 QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &changed,
                       std::optional<qint64> torque);
 

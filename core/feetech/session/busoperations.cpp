@@ -12,6 +12,7 @@
 #include "jointidentify.h"
 #include "operationcontext.h"
 #include "overloadrecovery.h"
+#include "settingsbus.h"
 #include "sharedidcheck.h"
 #include "transport.h"
 
@@ -160,6 +161,67 @@ void checkNextServo(OperationContext &context, QVector<ServoInfo> servos, int do
                 checkNextServo(context, servos, done + 1, reads);
             });
         });
+}
+
+// The settings check's next servo, or its end.
+void readNextSettings(OperationContext &context, QVector<ServoInfo> servos, QStringList keys,
+                      int done)
+{
+    const int total = int(servos.size());
+    if (done >= total) {
+        context.finish({Operation::CheckSettings,
+                        true,
+                        Tr::tr("The settings of %n servo(s) read.", nullptr, total),
+                        {},
+                        {}});
+        return;
+    }
+    readSettings(context.bus(), servos.at(done), keys,
+                 [&context, servos, keys, done](const SettingsReading &reading) {
+                     if (!context.isLinkOpen())
+                         return; // the session has ended the check with the link
+                     context.reportProgress(
+                         {0, done + 1, int(servos.size()), {}, QVariant::fromValue(reading)});
+                     context.continueLater(Operation::CheckSettings,
+                                           [&context, servos, keys, done] {
+                                               readNextSettings(context, servos, keys, done + 1);
+                                           });
+                 });
+}
+
+// The fixes of the next servo among `findings` (grouped by servo), or the end.
+void fixNextServo(OperationContext &context, QVector<QVector<SettingsFinding>> servos, int done,
+                  QVector<SettingsFixOutcome> outcomes)
+{
+    if (done >= servos.size()) {
+        const int verified = int(
+            std::count_if(outcomes.begin(), outcomes.end(),
+                          [](const SettingsFixOutcome &outcome) { return outcome.verified(); }));
+        const bool ok = verified == outcomes.size();
+        OperationResult result {
+            Operation::FixSettings,
+            ok,
+            Tr::tr("%1 of %n setting(s) fixed and verified.", nullptr, int(outcomes.size()))
+                .arg(verified),
+            servos.isEmpty() ? ServoInfo {} : servos.first().first().servo,
+            {}};
+        if (!ok)
+            result.failure = OperationFailure::NotVerified;
+        result.writesSent = true;
+        result.detail = QVariant::fromValue(outcomes);
+        context.finish(result);
+        return;
+    }
+    context.reportProgress({0, done, int(servos.size()), {}, {}});
+    fixSettings(context.bus(), servos.at(done),
+                [&context, servos, done, outcomes](const QVector<SettingsFixOutcome> &fixed) {
+                    if (!context.isLinkOpen())
+                        return;
+                    context.continueLater(
+                        Operation::FixSettings, [&context, servos, done, outcomes, fixed] {
+                            fixNextServo(context, servos, done + 1, outcomes + fixed);
+                        });
+                });
 }
 
 } // namespace
@@ -693,6 +755,31 @@ BusOperation moveTest(const ServoInfo &servo)
                 });
         },
         true);
+}
+
+BusOperation checkSettings(const QVector<ServoInfo> &servos, const QStringList &keys)
+{
+    return operation(Operation::CheckSettings, [servos, keys](OperationContext &context) {
+        readNextSettings(context, servos, keys, 0);
+    });
+}
+
+BusOperation fixSettings(const QVector<SettingsFinding> &findings)
+{
+    QVector<QVector<SettingsFinding>> servos;
+    for (const SettingsFinding &finding : findings) {
+        auto same = std::find_if(servos.begin(), servos.end(), [&finding](const auto &group) {
+            return group.first().servo.address() == finding.servo.address();
+        });
+        if (same == servos.end())
+            servos.append({finding});
+        else
+            same->append(finding);
+    }
+    // A torque limit raised with torque on would move the horn: it needs torque off, and is
+    // refused then; so the fix itself does not power the servos.
+    return operation(Operation::FixSettings,
+                     [servos](OperationContext &context) { fixNextServo(context, servos, 0, {}); });
 }
 
 } // namespace feetech::operations

@@ -7,6 +7,7 @@
 #include "busoperation.h"
 #include "bustypes.h"
 #include "motorsetup.h"
+#include "settingscheck.h"
 
 #include <optional>
 
@@ -67,5 +68,12 @@ BusOperation checkHealth(const QVector<ServoInfo> &servos, int reads);
 // The move test (HealthMoveTest; the result's detail is the MoveTestResult): the caller submits
 // it only once the user confirmed it.
 BusOperation moveTest(const ServoInfo &servo);
+// Reads only. Each servo in turn gets its settings read (readSettings in settingsbus.h, with
+// `keys` beyond what the rules read); each reading comes as progress (its detail the
+// SettingsReading), and the bus is free for All torque off and telemetry between two servos.
+BusOperation checkSettings(const QVector<ServoInfo> &servos, const QStringList &keys);
+// The fixes of `findings`, servo by servo (fixSettings in settingsbus.h); the result's detail is
+// the QVector<SettingsFixOutcome>, one per finding in their order. ok when every one verified.
+BusOperation fixSettings(const QVector<SettingsFinding> &findings);
 
 } // namespace feetech::operations

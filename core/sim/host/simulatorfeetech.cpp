@@ -41,6 +41,9 @@ void setUpRobot(VirtualFeetechBus &bus, const feetech::RobotTemplate &robot, boo
             for (auto setting = joint.settings.cbegin(); setting != joint.settings.cend();
                  ++setting)
                 servo.storeValue(setting.key(), setting.value());
+            for (auto bits = joint.clearedBits.cbegin(); bits != joint.clearedBits.cend(); ++bits)
+                servo.storeValue(bits.key(),
+                                 qint32(quint32(servo.value(bits.key())) & ~bits.value()));
         }
         servo.setPhysicalPosition(restPosition(joint.name) + servo.value(u"position_offset"));
     }

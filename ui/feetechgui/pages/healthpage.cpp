@@ -5,10 +5,12 @@
 #include "busclient.h"
 #include "healthmovetest.h"
 #include "palette.h"
+#include "settingscheckpanel.h"
 #include "widgethelpers.h"
 
 #include <QDir>
 #include <QFileDialog>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -110,6 +112,14 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
     m_state->setObjectName(QStringLiteral("healthState"));
     m_state->setWordWrap(true);
     layout->addWidget(m_state);
+
+    auto *settings = new QGroupBox(tr("Settings"), this);
+    settings->setObjectName(QStringLiteral("healthSettings"));
+    auto *settingsLayout = new QVBoxLayout(settings);
+    m_settings = new SettingsCheckPanel(m_client, settings);
+    settingsLayout->addWidget(m_settings);
+    layout->addWidget(settings, 1);
+    connect(m_settings, &SettingsCheckPanel::message, this, &HealthPage::message);
 
     connect(m_check, &QPushButton::clicked, this, [this] { check(); });
     connect(m_cancel, &QPushButton::clicked, this, &HealthPage::cancel);

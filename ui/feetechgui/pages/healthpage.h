@@ -1,5 +1,6 @@
 // The Health page of the Feetech workspace: the bus at a glance (one row per servo, its verdict
-// and reasons), the check, the confirmed move test and the report saved as HTML or JSON.
+// and reasons), the check, the confirmed move test, the report saved as HTML or JSON, and the
+// Settings section (the settings check and its fixes).
 #pragma once
 
 #include "healthreport.h"
@@ -16,6 +17,7 @@ class QProgressBar;
 class QPushButton;
 class QStackedWidget;
 class QTableWidget;
+class SettingsCheckPanel;
 
 namespace feetech {
 class BusClient;
@@ -67,6 +69,7 @@ public:
     QProgressBar *progressBar() const { return m_progress; }
     QLabel *emptyState() const { return m_empty; }
     QLabel *stateLabel() const { return m_state; }
+    SettingsCheckPanel *settingsPanel() const { return m_settings; }
 
 signals:
     void problem(const QString &message);
@@ -99,4 +102,5 @@ private:
     QPushButton *m_save = nullptr;
     QProgressBar *m_progress = nullptr;
     QLabel *m_state = nullptr;
+    SettingsCheckPanel *m_settings = nullptr;
 };

@@ -234,12 +234,15 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
         updateActions();
     });
     // The status bar tells the outcome of every operation, whoever asked for it; the page
-    // shows how far an apply chain or a health check has got while it is busy.
+    // shows how far an apply chain, a health check or a settings check or fix has got while it
+    // is busy.
     connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
         connect(reply, &feetech::OperationReply::finished, this,
                 &FeetechWorkspace::onOperationFinished);
         if (reply->operation() == feetech::Operation::Write
-            || reply->operation() == feetech::Operation::HealthCheck)
+            || reply->operation() == feetech::Operation::HealthCheck
+            || reply->operation() == feetech::Operation::CheckSettings
+            || reply->operation() == feetech::Operation::FixSettings)
             connect(reply, &feetech::OperationReply::progress, m_settings,
                     [this](const feetech::OperationProgress &progress) {
                         m_settings->setProgress(progress.done, progress.total);
