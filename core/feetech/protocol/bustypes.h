@@ -141,7 +141,8 @@ enum class Operation {
     RecoverOverload, // torque off and on again after an overload trip, then the status checked
     LockEeprom, // the EEPROM lock closed and read back (a lock left open)
     SendPacket, // a frame built by hand (the packet window), sent once as it is
-    CheckSharedId // reads only: whether several servos answer at one ID
+    CheckSharedId, // reads only: whether several servos answer at one ID
+    Replay // a recorded motion played on several servos, eased in, held at the end
 };
 
 // Why an operation that ran (or was due to run) on the bus did not succeed: stable, so callers
