@@ -100,6 +100,19 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech calibration save --ids LIST [--names LIST] FILE\n"
     "                                         the servos' offsets and limits to a LeRobot file\n"
     "  feetech calibration load FILE          write a LeRobot calibration file, verified\n"
+    "  feetech record --ids LIST --out FILE [--names LIST] [--rate HZ] [--duration S]\n"
+    "                                         record the positions moved by hand (torque left\n"
+    "                                         as it is) until --duration or Ctrl-C: CSV with\n"
+    "                                         time_s and a column per joint (id_N or NAME@N),\n"
+    "                                         in steps; --rate frames per second (default 50)\n"
+    "  feetech replay FILE [--speed X] [--ease S] [--loop N] [--release]\n"
+    "                                         play a recording: refused when a frame is beyond\n"
+    "                                         a servo's angle limits; torque on where the arm\n"
+    "                                         stands, a gentle move to the first frame (over S\n"
+    "                                         seconds; default from the distance), the frames\n"
+    "                                         at their times (--speed 2: twice as fast), N\n"
+    "                                         times, then hold (--release: torque off). Ctrl-C\n"
+    "                                         holds the arm where it is\n"
     "  decode [--family ptk|feetech] HEX...   split bytes into frames and explain each\n"
     "  packet ptk query CMD                   print a PTK query frame (CMD: 0x38, 56 or N1..N8)\n"
     "  packet ptk write NAME=VALUE...         print the PTK write frames carrying these values\n"
@@ -129,15 +142,17 @@ public:
         try {
             const Arguments args(
                 raw,
-                {QStringLiteral("port"), QStringLiteral("baud"), QStringLiteral("family"),
-                 QStringLiteral("id"), QStringLiteral("addr"), QStringLiteral("data"),
-                 QStringLiteral("len"), QStringLiteral("ids"), QStringLiteral("echo"),
-                 QStringLiteral("duration"), QStringLiteral("backup"), QStringLiteral("rate"),
-                 QStringLiteral("model"), QStringLiteral("settings"), QStringLiteral("names"),
-                 QStringLiteral("full-turn"), QStringLiteral("out"), QStringLiteral("expect")},
+                {QStringLiteral("port"),      QStringLiteral("baud"),     QStringLiteral("family"),
+                 QStringLiteral("id"),        QStringLiteral("addr"),     QStringLiteral("data"),
+                 QStringLiteral("len"),       QStringLiteral("ids"),      QStringLiteral("echo"),
+                 QStringLiteral("duration"),  QStringLiteral("backup"),   QStringLiteral("rate"),
+                 QStringLiteral("model"),     QStringLiteral("settings"), QStringLiteral("names"),
+                 QStringLiteral("full-turn"), QStringLiteral("out"),      QStringLiteral("expect"),
+                 QStringLiteral("speed"),     QStringLiteral("ease"),     QStringLiteral("loop")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
-                 QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check")});
+                 QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check"),
+                 QStringLiteral("release")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
                 m_out << Tr::tr(kUsage);

@@ -5,6 +5,7 @@
 #include "feetechflowcommands.h"
 #include "feetechhealthcommand.h"
 #include "feetechmonitorcommand.h"
+#include "feetechmotioncommands.h"
 #include "feetechprofilecommands.h"
 #include "feetechregistercommands.h"
 #include "feetechsetupcommand.h"
@@ -70,6 +71,8 @@ int runFeetechCommand(const Arguments &args, const QStringList &rest, const Outp
         {"calibrate", &runIn<FeetechCalibrationCommands, &FeetechCalibrationCommands::calibrate>},
         {"calibration",
          &runIn<FeetechCalibrationCommands, &FeetechCalibrationCommands::calibration>},
+        {"record", &runIn<FeetechMotionCommands, &FeetechMotionCommands::record>},
+        {"replay", &runIn<FeetechMotionCommands, &FeetechMotionCommands::replay>},
     };
     for (const auto &[name, runner] : kCommands) {
         if (command == QLatin1String(name))
