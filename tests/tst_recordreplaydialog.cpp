@@ -21,6 +21,12 @@
 
 using testsupport::ScriptedHand;
 
+namespace {
+
+constexpr int kGoalAddress = 42;
+
+} // namespace
+
 class TestRecordReplayDialog : public testsupport::FeetechBusTest
 {
     Q_OBJECT
@@ -158,6 +164,18 @@ private slots:
         QCOMPARE(simulatorValue(1, u"torque_enable"), 1);
         const int goal = simulatorValue(1, u"goal_position");
         QVERIFY2(goal < 2900, qPrintable(QString::number(goal)));
+        // The last goal servo 1 got is the hold's own WRITE, after the replay's SYNC WRITEs.
+        std::optional<feetech::Packet> lastGoal;
+        for (const feetech::Packet &packet : testsupport::feetechPacketsReceived(logPath())) {
+            const bool goalWrite = !packet.parameters.isEmpty()
+                && quint8(packet.parameters.at(0)) == kGoalAddress
+                && ((packet.code == quint8(feetech::Instruction::Write) && packet.id == 1)
+                    || packet.code == quint8(feetech::Instruction::SyncWrite));
+            if (goalWrite)
+                lastGoal = packet;
+        }
+        QVERIFY(lastGoal);
+        QCOMPARE(lastGoal->code, quint8(feetech::Instruction::Write));
         QTRY_VERIFY(qAbs(simulatorValue(1, u"present_position") - goal) <= 10);
         QCOMPARE(simulatorValue(1, u"goal_position"), goal);
         QVERIFY(!dialog.stopButton()->isEnabled());

@@ -18,18 +18,19 @@ namespace {
 constexpr int kGoalAddress = 42;
 constexpr int kTorqueAddress = 40;
 
-// A goal-position frame the bus received: when (the simulator's clock, seconds), how
-// (SYNC WRITE or WRITE) and each servo's goal.
+// A write the bus received: when (the simulator's clock, seconds), how (SYNC WRITE or WRITE),
+// where, and the 2-byte value each servo got there.
 struct GoalFrame
 {
-    int index = 0; // in the log's goal frames
+    int index = 0; // among the frames of its kind
     double seconds = 0.0;
     bool sync = false;
+    int address = 0;
     QMap<quint8, int> goals;
 };
 
-// The goal frames of the simulator's log, in order.
-QVector<GoalFrame> goalFrames(const QString &logPath)
+// The WRITE and SYNC WRITE frames of the simulator's log, in order.
+QVector<GoalFrame> writeFrames(const QString &logPath)
 {
     QVector<GoalFrame> frames;
     QFile file(logPath);
@@ -44,22 +45,23 @@ QVector<GoalFrame> goalFrames(const QString &logPath)
                                 .trimmed();
         const auto bytes = util::parseHex(hex);
         const auto packet = bytes ? feetech::decodePacket(*bytes) : std::nullopt;
-        if (!packet || packet->parameters.size() < 3
-            || quint8(packet->parameters.at(0)) != kGoalAddress)
+        if (!packet || packet->parameters.size() < 2)
             continue;
         GoalFrame frame;
         frame.seconds = parts.at(0).toDouble();
+        frame.address = quint8(packet->parameters.at(0));
         const QByteArray &p = packet->parameters;
-        const auto word = [&p](int at) {
-            return quint8(p.at(at)) | (quint8(p.at(at + 1)) << 8);
+        const auto value = [&p](int at, int size) {
+            return size == 1 ? int(quint8(p.at(at)))
+                             : quint8(p.at(at)) | (quint8(p.at(at + 1)) << 8);
         };
         if (packet->code == quint8(feetech::Instruction::SyncWrite)) {
             frame.sync = true;
             const int length = quint8(p.at(1));
             for (int at = 2; at + length < p.size() + 1; at += length + 1)
-                frame.goals.insert(quint8(p.at(at)), word(at + 1));
+                frame.goals.insert(quint8(p.at(at)), value(at + 1, length));
         } else if (packet->code == quint8(feetech::Instruction::Write)) {
-            frame.goals.insert(packet->id, word(1));
+            frame.goals.insert(packet->id, value(1, int(p.size()) - 1));
         } else {
             continue;
         }
@@ -67,6 +69,29 @@ QVector<GoalFrame> goalFrames(const QString &logPath)
         frames.append(frame);
     }
     return frames;
+}
+
+// Those that wrote goal positions, indexed among themselves.
+QVector<GoalFrame> goalFrames(const QString &logPath)
+{
+    QVector<GoalFrame> goals;
+    for (GoalFrame frame : writeFrames(logPath)) {
+        if (frame.address != kGoalAddress)
+            continue;
+        frame.index = int(goals.size());
+        goals.append(frame);
+    }
+    return goals;
+}
+
+// Where in writeFrames the first write of `address` to servo `id` is; -1 when none.
+int firstWrite(const QVector<GoalFrame> &frames, int address, quint8 id)
+{
+    for (const GoalFrame &frame : frames) {
+        if (frame.address == address && frame.goals.contains(id))
+            return frame.index;
+    }
+    return -1;
 }
 
 } // namespace
@@ -237,6 +262,13 @@ private slots:
         }
         QVERIFY(qAbs(first.value(1) - 1000) <= 2);
         QVERIFY(qAbs(first.value(2) - 1700) <= 2);
+        // And it came before torque on.
+        const QVector<GoalFrame> writes = writeFrames(logPath());
+        for (const quint8 id : {1, 2}) {
+            const int torqueOn = firstWrite(writes, kTorqueAddress, id);
+            QVERIFY(torqueOn >= 0);
+            QVERIFY(firstWrite(writes, kGoalAddress, id) < torqueOn);
+        }
         // Then the goals walk to the first frame in small steps, never a jump.
         int previous = first.value(1);
         int steps = 0;
@@ -348,6 +380,12 @@ private slots:
         QCOMPARE(simulatorValue(1, u"torque_enable"), 1);
         const int goal = simulatorValue(1, u"goal_position");
         QVERIFY2(goal < 2000 + 40 * 49, qPrintable(QString::number(goal)));
+        // The hold wrote where each servo stood after the last goal the replay sent.
+        const QVector<GoalFrame> goals = goalFrames(logPath());
+        QVERIFY(!goals.last().sync);
+        QCOMPARE(goals.last().goals.value(1, -1), -1);
+        QCOMPARE(goals.at(goals.size() - 2).goals.value(1), goal);
+        QVERIFY(!goals.at(goals.size() - 2).sync);
         QTRY_VERIFY(qAbs(simulatorValue(1, u"present_position") - goal) <= 10);
         QCOMPARE(simulatorValue(1, u"goal_position"), goal);
     }
