@@ -320,6 +320,37 @@ private slots:
         }
     }
 
+    void theEaseTakesAsLongAsAskedButNeverRushes_data()
+    {
+        QTest::addColumn<QStringList>("options");
+        QTest::addColumn<double>("seconds");
+        // 1000 steps to go: 2.5 s at the default 400 steps/s, never under 1 s (1000 steps/s).
+        QTest::newRow("default") << QStringList() << 2.5;
+        QTest::newRow("--ease 1.5")
+            << QStringList {QStringLiteral("--ease"), QStringLiteral("1.5")} << 1.5;
+        QTest::newRow("--ease 0") << QStringList {QStringLiteral("--ease"), QStringLiteral("0")}
+                                  << 1.0;
+    }
+
+    void theEaseTakesAsLongAsAskedButNeverRushes()
+    {
+        QFETCH(QStringList, options);
+        QFETCH(double, seconds);
+        startArm(1000, 1800);
+        const QString file = writeRecording(QStringLiteral("ease.csv"), 3, 0.1);
+        const auto result = servoctl(QStringList {QStringLiteral("replay"), file} + options);
+        QVERIFY2(result.exitCode == 0, qPrintable(result.err));
+        const QVector<GoalFrame> goals = goalFrames(logPath());
+        const QVector<GoalFrame> play = played(goals, 0, 3);
+        checkFramesInOrder(play, 3);
+        const auto firstSync = std::find_if(goals.cbegin(), goals.cend(),
+                                            [](const GoalFrame &frame) { return frame.sync; });
+        QVERIFY(firstSync != goals.cend());
+        const double measured = play.first().seconds - firstSync->seconds;
+        QVERIFY2(measured > seconds * 0.8 && measured < seconds * 1.5,
+                 qPrintable(QStringLiteral("%1 s for %2 s").arg(measured).arg(seconds)));
+    }
+
     void replayLoopsEasingBackToTheFirstFrameBetweenLoops()
     {
         startArm(2000, 1800);
@@ -456,6 +487,20 @@ private slots:
         QVERIFY2(result.err.contains(said), qPrintable(result.err));
         QCOMPARE(goalFrames(logPath()).size(), 0);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+    }
+
+    void twoServosAtOneIdAreNotReplayed()
+    {
+        sim::SimulatorOptions options = busOptions(
+            {{1, QStringLiteral("STS3215"), 1000000}, {1, QStringLiteral("STS3215"), 1000000}});
+        options.allowSharedIds = true;
+        QString error;
+        QVERIFY2(startSimulator(options, &error), qPrintable(error));
+        const QString file = writeTestFile(QStringLiteral("one.csv"), "time_s,id_1\n0,2000\n");
+        const auto result = servoctl({QStringLiteral("replay"), file});
+        QCOMPARE(result.exitCode, 1);
+        QVERIFY2(result.err.contains(QStringLiteral("at ID 1")), qPrintable(result.err));
+        QCOMPARE(writeFrames(logPath()).size(), 0);
     }
 
     void aBusLostDuringReplayExitsOneSayingSo()

@@ -190,6 +190,8 @@ FeetechMotionCommands::replayedServos(FeetechDevice &device,
                                   .arg(joint.column())
                                   .arg(joint.id)
                                   .arg(servo->modelNumber())};
+        if (sharesItsId(device, *servo))
+            return std::nullopt;
         servos.append(*servo);
     }
     return servos;

@@ -21,7 +21,8 @@ private:
     QVector<feetech::MotionJoint> recordedJoints(const QVector<quint8> &ids) const;
     double numberOption(const QString &name, double fallback,
                         const std::function<bool(double)> &accepts, const QString &range) const;
-    // The servo of every joint of the recording; usage errors for a joint that matches none.
+    // The servo of every joint of the recording; usage errors for a joint that matches none;
+    // nothing, once the failure is printed, for a lost link or several servos at one ID.
     std::optional<QVector<ServoInfo>>
     replayedServos(FeetechDevice &device, const feetech::MotionRecording &recording, qint32 baud);
 };
