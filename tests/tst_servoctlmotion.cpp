@@ -228,13 +228,20 @@ private slots:
         });
         interrupter.start(5);
         const QString out = path(QStringLiteral("ids.csv"));
-        const auto result = servoctl({QStringLiteral("record"), QStringLiteral("--ids"),
-                                      QStringLiteral("1-2"), QStringLiteral("--out"), out});
+        const auto result =
+            servoctl({QStringLiteral("--json"), QStringLiteral("record"), QStringLiteral("--ids"),
+                      QStringLiteral("1-2"), QStringLiteral("--out"), out});
         QVERIFY(!interrupter.isActive());
         QVERIFY2(result.exitCode == 0, qPrintable(result.err));
         util::FileError error;
         const auto recording = feetech::loadMotionRecording(out, &error);
         QVERIFY2(recording, qPrintable(error.describe()));
+        const QJsonObject report = QJsonDocument::fromJson(result.out.toUtf8()).object();
+        QCOMPARE(report[QStringLiteral("file")].toString(), out);
+        QCOMPARE(report[QStringLiteral("frames")].toInt(), int(recording->frames.size()));
+        QCOMPARE(report[QStringLiteral("complete")].toBool(), true);
+        QCOMPARE(report[QStringLiteral("joints")].toArray().at(1).toString(),
+                 QStringLiteral("id_2"));
         QCOMPARE(recording->joints.size(), 2);
         QCOMPARE(recording->joints.at(0).column(), QStringLiteral("id_1"));
         QCOMPARE(recording->joints.at(1).column(), QStringLiteral("id_2"));

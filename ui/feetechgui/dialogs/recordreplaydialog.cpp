@@ -125,6 +125,8 @@ RecordReplayDialog::RecordReplayDialog(feetech::BusClient *client, QWidget *pare
     layout->addWidget(m_progress);
     layout->addWidget(m_status);
     layout->addWidget(buttons);
+    // Wide enough for a frame's positions on two lines rather than a column of them.
+    setMinimumWidth(fontMetrics().averageCharWidth() * 60);
 
     connect(m_record, &QPushButton::clicked, this, [this] {
         if (m_capture->isRecording())
