@@ -38,7 +38,6 @@ struct MotionReplay::Run
     // The ease under way.
     QVector<qint32> easeFrom;
     qint64 easeNs = 0;
-    QVector<qint32> lastSent;
     int loop = 0;
     int sent = -1; // the frame of this loop sent last
     bool easing = false;
@@ -165,7 +164,6 @@ void MotionReplay::begin(std::shared_ptr<Run> run)
                 Tr::tr("The servos could not be held where they stand: %1").arg(message));
             return;
         }
-        run->lastSent = present;
         run->reported.start();
         startEase(run, present);
     });
@@ -322,16 +320,14 @@ void MotionReplay::send(std::shared_ptr<Run> run, const QVector<qint32> &goals,
         steps.push_back(m_bus.instruction(kBroadcastId, *frame, false,
                                           Tr::tr("SYNC WRITE at %1").arg(baudText(baud))));
     }
-    m_bus.runSteps(std::move(steps),
-                   [this, run, goals, then = std::move(then)](bool ok, const QString &message) {
-                       if (!ok) {
-                           end(run, m_bus.stepFailure(),
-                               Tr::tr("The replay stopped: %1").arg(message));
-                           return;
-                       }
-                       run->lastSent = goals;
-                       then();
-                   });
+    m_bus.runSteps(
+        std::move(steps), [this, run, then = std::move(then)](bool ok, const QString &message) {
+            if (!ok) {
+                end(run, m_bus.stepFailure(), Tr::tr("The replay stopped: %1").arg(message));
+                return;
+            }
+            then();
+        });
 }
 
 void MotionReplay::waitUntil(std::shared_ptr<Run> run, qint64 dueNs, std::function<void()> then)
