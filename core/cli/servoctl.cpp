@@ -115,6 +115,19 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "  feetech calibration save --ids LIST [--names LIST] FILE\n"
     "                                         the servos' offsets and limits to a LeRobot file\n"
     "  feetech calibration load FILE          write a LeRobot calibration file, verified\n"
+    "  feetech record --ids LIST --out FILE [--names LIST] [--rate HZ] [--duration S]\n"
+    "                                         record the positions moved by hand (torque left\n"
+    "                                         as it is) until --duration or Ctrl-C: CSV with\n"
+    "                                         time_s and a column per joint (id_N or NAME@N),\n"
+    "                                         in steps; --rate frames per second (default 50)\n"
+    "  feetech replay FILE [--speed X] [--ease S] [--loop N] [--release]\n"
+    "                                         play a recording: refused when a frame is beyond\n"
+    "                                         a servo's angle limits; torque on where the arm\n"
+    "                                         stands, a gentle move to the first frame (over S\n"
+    "                                         seconds; default from the distance), the frames\n"
+    "                                         at their times (--speed 2: twice as fast), N\n"
+    "                                         times, then hold (--release: torque off). Ctrl-C\n"
+    "                                         holds the arm where it is\n"
     "  feetech teleop --leader PORT --calibration FILE --leader-calibration FILE\n"
     "                 [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--release]\n"
     "                                         the leader arm on PORT drives this follower,\n"
@@ -180,7 +193,10 @@ public:
                  QStringLiteral("calibration"),
                  QStringLiteral("leader-calibration"),
                  QStringLiteral("max-speed"),
-                 QStringLiteral("update")},
+                 QStringLiteral("update"),
+                 QStringLiteral("speed"),
+                 QStringLiteral("ease"),
+                 QStringLiteral("loop")},
                 {QStringLiteral("json"), QStringLiteral("trace"), QStringLiteral("csv"),
                  QStringLiteral("thorough"), QStringLiteral("help"), QStringLiteral("version"),
                  QStringLiteral("dry-run"), QStringLiteral("move-test"), QStringLiteral("check"),

@@ -16,7 +16,9 @@
 #include "ptkclient.h"
 #include "ptkworkspace.h"
 #include "recentfiles.h"
+#include "recordreplaydialog.h"
 #include "robotactions.h"
+#include "servolist.h"
 #include "setupwizard.h"
 #include "shortcutsdialog.h"
 #include "simulatordock.h"
@@ -289,6 +291,26 @@ void MainWindow::createMenus()
     connect(calibration, &CalibrationActions::message, this, [this](const QString &text) {
         m_problem->hide();
         statusBar()->showMessage(text, kStatusMessageMs);
+    });
+
+    // Recording an arm moved by hand and playing it back: a scanned bus, the dialog non-modal.
+    QAction *recordReplay = robot->addAction(tr("Record and &replay…"));
+    recordReplay->setObjectName(QStringLiteral("recordReplayAction"));
+    recordReplay->setToolTip(tr("Record joints moved by hand and play the motion back"));
+    const auto updateRecordReplay = [this, recordReplay] {
+        recordReplay->setEnabled(m_feetech->isConnected() && m_feetech->servos()->count() > 0);
+    };
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, recordReplay, updateRecordReplay);
+    connect(m_feetech->servos(), &feetech::ServoList::servosChanged, recordReplay,
+            updateRecordReplay);
+    updateRecordReplay();
+    connect(recordReplay, &QAction::triggered, this, [this] {
+        auto *dialog = findChild<RecordReplayDialog *>();
+        if (!dialog)
+            dialog = new RecordReplayDialog(m_feetech.get(), this);
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
     });
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));

@@ -43,7 +43,7 @@ void FeetechCommandGroup::allowOptions(const QString &what, const QStringList &a
     }
     for (const QString &flag :
          {QStringLiteral("thorough"), QStringLiteral("csv"), QStringLiteral("dry-run"),
-          QStringLiteral("move-test"), QStringLiteral("check")}) {
+          QStringLiteral("move-test"), QStringLiteral("check"), QStringLiteral("release")}) {
         if (m_args.flag(flag) && !allowed.contains(flag))
             throw UsageError {Tr::tr("%1 takes no --%2").arg(what, flag)};
     }

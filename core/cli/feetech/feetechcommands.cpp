@@ -5,10 +5,11 @@
 #include "feetechflowcommands.h"
 #include "feetechhealthcommand.h"
 #include "feetechmonitorcommand.h"
-#include "feetechteleopcommand.h"
+#include "feetechmotioncommands.h"
 #include "feetechprofilecommands.h"
 #include "feetechregistercommands.h"
 #include "feetechsetupcommand.h"
+#include "feetechteleopcommand.h"
 
 #include <QCoreApplication>
 #include <QVector>
@@ -73,6 +74,8 @@ int runFeetechCommand(const Arguments &args, const QStringList &rest, const Outp
         {"calibration",
          &runIn<FeetechCalibrationCommands, &FeetechCalibrationCommands::calibration>},
         {"teleop", &runIn<FeetechTeleopCommand, &FeetechTeleopCommand::teleop>},
+        {"record", &runIn<FeetechMotionCommands, &FeetechMotionCommands::record>},
+        {"replay", &runIn<FeetechMotionCommands, &FeetechMotionCommands::replay>},
     };
     for (const auto &[name, runner] : kCommands) {
         if (command == QLatin1String(name))

@@ -62,6 +62,11 @@ Refusal Refusal::undecodableFeedback(quint8 servoId)
     return Refusal(Code::UndecodableFeedback, servoId, 0, {});
 }
 
+Refusal Refusal::jointNotFound(quint8 servoId)
+{
+    return Refusal(Code::JointNotFound, servoId, 0, {});
+}
+
 QString Refusal::describe() const
 {
     const int id = m_servoId.value_or(0);
@@ -113,6 +118,13 @@ QString Refusal::describe() const
         return Tr::tr("The rate cannot be negative.");
     case Code::UndecodableFeedback:
         return Tr::tr("Servo %1 is of an unknown model: its feedback cannot be decoded.").arg(id);
+    case Code::JointNotFound:
+        return Tr::tr("The recording moves servo %1, which the scan did not find: nothing was "
+                      "moved.")
+            .arg(id);
+    case Code::SeveralRates:
+        return Tr::tr("The servos to record answer at different baud rates: choose servos at "
+                      "one rate.");
     }
     return {};
 }

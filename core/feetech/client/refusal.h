@@ -36,6 +36,8 @@ public:
         NoServoToMonitor, // a telemetry subscription of no servo
         NegativeRate, // a telemetry rate below 0
         UndecodableFeedback, // servoId: an unknown model, whose feedback block is not known
+        JointNotFound, // servoId: a recording's joint whose servo the scan did not find
+        SeveralRates, // a recording of servos at different baud rates
     };
 
     Refusal() = default;
@@ -52,6 +54,7 @@ public:
     static Refusal notAFeetechRate(qint32 baud);
     static Refusal notConfirmed(quint8 servoId);
     static Refusal undecodableFeedback(quint8 servoId);
+    static Refusal jointNotFound(quint8 servoId);
 
     Code code() const { return m_code; }
     explicit operator bool() const { return m_code != Code::None; }

@@ -146,7 +146,8 @@ enum class Operation {
     SendPacket, // a frame built by hand (the packet window), sent once as it is
     CheckSharedId, // reads only: whether several servos answer at one ID
     CheckSettings, // reads only: the settings check's reads of each servo
-    FixSettings // the settings check's fixes of one servo, each read back
+    FixSettings, // the settings check's fixes of one servo, each read back
+    Replay // a recorded motion played on several servos, eased in, held at the end
 };
 
 // Why an operation that ran (or was due to run) on the bus did not succeed: stable, so callers

@@ -782,4 +782,33 @@ BusOperation fixSettings(const QVector<SettingsFinding> &findings)
                      [servos](OperationContext &context) { fixNextServo(context, servos, 0, {}); });
 }
 
+BusOperation replayMotion(const ReplayPlan &plan)
+{
+    BusOperation made = operation(
+        Operation::Replay,
+        [plan](OperationContext &context) {
+            for (const ServoInfo &servo : plan.servos)
+                context.guard().noteDriven(servo); // the guard watches the move as any other
+            MotionReplay::Hooks hooks;
+            hooks.finish = context.finisher();
+            hooks.pause = [&context](std::chrono::milliseconds delay,
+                                     std::function<void(bool torqueOff)> resume) {
+                context.pauseFor(delay, std::move(resume));
+            };
+            hooks.progress = [&context](const OperationProgress &progress) {
+                context.reportProgress(progress);
+            };
+            hooks.sent = [&context](qint32 baud, int address,
+                                    const QVector<SyncWriteEntry> &entries) {
+                context.guard().noteSyncWrite(baud, address, entries);
+            };
+            context.replay().run(plan, std::move(hooks));
+        },
+        true);
+    made.submitted = [](OperationContext &context) {
+        context.replay().clearCancel();
+    };
+    return made;
+}
+
 } // namespace feetech::operations

@@ -1,11 +1,12 @@
 // The operations a Feetech bus session runs, each made as a BusOperation to submit
 // (Session::submit, BusClient::submit): reads, writes and apply chains, the guided flows, All
-// torque off, motor set-up, identify, the health check and hand-built packets.
+// torque off, motor set-up, identify, the health check, motion replay and hand-built packets.
 #pragma once
 
 #include "applyflow.h"
 #include "busoperation.h"
 #include "bustypes.h"
+#include "motionreplay.h"
 #include "motorsetup.h"
 #include "settingscheck.h"
 
@@ -75,5 +76,11 @@ BusOperation checkSettings(const QVector<ServoInfo> &servos, const QStringList &
 // The fixes of `findings`, servo by servo (fixSettings in settingsbus.h); the result's detail is
 // the QVector<SettingsFixOutcome>, one per finding in their order. ok when every one verified.
 BusOperation fixSettings(const QVector<SettingsFinding> &findings);
+// A recorded motion (MotionReplay): checked against the servos' angle limits before anything
+// moves, torque on without a jump, eased in, played at the recorded times by SYNC WRITE, held
+// or released at the end. Each goal sent comes as progress (its detail a ReplayPosition); the
+// bus is free for telemetry and All torque off between two. Session::cancel stops it with the
+// servos held where they stand.
+BusOperation replayMotion(const ReplayPlan &plan);
 
 } // namespace feetech::operations

@@ -68,12 +68,14 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     d->apply = new ApplyFlow(*d->bus, *d->flows, this);
     d->motorSetup = new MotorSetup(*d->bus, *d->flows, *d->apply, this);
     d->identify = new JointIdentify(*d->bus, this);
+    d->replay = new MotionReplay(*d->bus, this);
     d->health = new HealthCheck(*d->bus, this);
     d->moveTest = new HealthMoveTest(*d->bus, this);
     d->guard = new GuardKeeper(*d->bus, this);
     qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::HealthReading>();
     qRegisterMetaType<feetech::MoveTestResult>();
+    qRegisterMetaType<feetech::ReplayPosition>();
     qRegisterMetaType<feetech::ServoInfo>();
     qRegisterMetaType<feetech::ScanOptions>();
     qRegisterMetaType<feetech::ReadSource>();
@@ -122,6 +124,8 @@ Session::Session(const SessionTiming &timing, QObject *parent)
         // puts back what it changed. A move test ends and leaves it as the guard did.
         if (d->identifying)
             d->identify->cancel();
+        // A replay would drive it again with its next goal: it stops, holding where it stands.
+        d->replay->cancel();
         d->moveTest->stopForGuard(servo.id, servo.baud);
     });
     d->telemetry->setBusBusy([this] { return d->running || d->guard->cycle().inCycle(); });
@@ -137,6 +141,7 @@ Session::~Session()
     delete d->guard;
     delete d->moveTest;
     delete d->health;
+    delete d->replay;
     delete d->identify;
     delete d->motorSetup;
     delete d->apply;
@@ -274,6 +279,9 @@ void Session::cancel(Operation kind)
         break;
     case Operation::HealthCheck:
         d->health->cancel();
+        break;
+    case Operation::Replay:
+        d->replay->cancel();
         break;
     default:
         break; // the others are short: they run to their end

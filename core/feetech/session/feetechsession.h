@@ -51,7 +51,7 @@ public:
     // guard and All torque off.
     void submit(const feetech::BusOperation &operation);
     // Not queued: a running or waiting operation of this kind (a scan, an identify, a motor
-    // set-up or joint check, a health check) stops before its next step, cleanly.
+    // set-up or joint check, a health check, a replay) stops before its next step, cleanly.
     void cancel(feetech::Operation kind);
 
     // Telemetry: a cycle of SYNC READs (one READ per servo where the family has no SYNC READ)

@@ -11,6 +11,7 @@
 #include "healthcheck.h"
 #include "healthmovetest.h"
 #include "jointidentify.h"
+#include "motionreplay.h"
 #include "motorsetup.h"
 #include "telemetrycycle.h"
 
@@ -42,6 +43,7 @@ struct SessionPrivate
     ApplyFlow *apply = nullptr;
     MotorSetup *motorSetup = nullptr;
     JointIdentify *identify = nullptr;
+    MotionReplay *replay = nullptr;
     HealthCheck *health = nullptr;
     HealthMoveTest *moveTest = nullptr;
     GuardKeeper *guard = nullptr;

@@ -41,6 +41,11 @@ JointIdentify &OperationContext::identify() const
     return *m_session.d->identify;
 }
 
+MotionReplay &OperationContext::replay() const
+{
+    return *m_session.d->replay;
+}
+
 HealthCheck &OperationContext::health() const
 {
     return *m_session.d->health;

@@ -17,6 +17,7 @@ class GuardKeeper;
 class HealthCheck;
 class HealthMoveTest;
 class JointIdentify;
+class MotionReplay;
 class MotorSetup;
 class Session;
 
@@ -33,6 +34,7 @@ public:
     ApplyFlow &apply() const;
     MotorSetup &motorSetup() const;
     JointIdentify &identify() const;
+    MotionReplay &replay() const;
     HealthCheck &health() const;
     HealthMoveTest &moveTest() const;
     GuardKeeper &guard() const;
