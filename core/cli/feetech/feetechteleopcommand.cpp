@@ -122,7 +122,8 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     allowOptions(what,
                  {QStringLiteral("leader"), QStringLiteral("calibration"),
                   QStringLiteral("leader-calibration"), QStringLiteral("rate"),
-                  QStringLiteral("duration"), QStringLiteral("max-speed")});
+                  QStringLiteral("duration"), QStringLiteral("max-speed"),
+                  QStringLiteral("release")});
     expectOperands(what, operands, 0, {});
     for (const char *option : {"port", "leader", "calibration", "leader-calibration"}) {
         if (!m_args.has(QLatin1String(option)))
