@@ -2,6 +2,7 @@
 // and a follower: the safe start, tracking in LeRobot's units, the stop that holds or releases,
 // a bus lost, and what is refused before anything moves.
 #include "feetechbus.h"
+#include "motionrecording.h"
 #include "robottemplate.h"
 #include "servoctlrun.h"
 #include "simoptions.h"

@@ -3,6 +3,7 @@
 #include "feetechteleopcommand.h"
 
 #include "armcalibration.h"
+#include "motionrecording.h"
 #include "registerkeys.h"
 #include "telemetry.h"
 
@@ -122,7 +123,7 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     allowOptions(what,
                  {QStringLiteral("leader"), QStringLiteral("calibration"),
                   QStringLiteral("leader-calibration"), QStringLiteral("rate"),
-                  QStringLiteral("duration"), QStringLiteral("max-speed"),
+                  QStringLiteral("duration"), QStringLiteral("max-speed"), QStringLiteral("record"),
                   QStringLiteral("release")});
     expectOperands(what, operands, 0, {});
     for (const char *option : {"port", "leader", "calibration", "leader-calibration"}) {
@@ -148,6 +149,10 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
         : kDefaultMaxSpeed;
     const std::optional<double> duration = durationOption(m_args);
     const bool release = m_args.flag(QStringLiteral("release"));
+    // --record FILE: the follower's goals, as `feetech replay` plays them back on it.
+    const QString recordPath = m_args.value(QStringLiteral("record"));
+    if (!recordPath.isEmpty())
+        checkFolder(recordPath);
 
     util::FileError error;
     const QString followerFile = m_args.value(QStringLiteral("calibration"));
@@ -215,6 +220,10 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     qint64 writeStartedUs = 0;
     qint64 leaderSampleUs = 0;
     const double stepsPerSecond = maxSpeed * kStepsPerDegree;
+    feetech::MotionRecording recording;
+    for (int i = 0; i < followerServos->size(); ++i)
+        recording.joints.append({mapping->joints().at(i).name, followerServos->at(i).id});
+    QElapsedTimer recordingClock;
     QEventLoop loop;
     bool linkLost = false;
     QString lostMessage;
@@ -310,6 +319,16 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
                 writeAll(follower, *followerServos, feetech::registerkeys::kGoalPosition, *here);
         }
     }
+    util::FileError recordError;
+    const bool recorded =
+        !recordPath.isEmpty() && feetech::saveMotionRecording(recordPath, recording, &recordError);
+    if (recordError)
+        m_output.err << "servoctl: " << recordError.describe() << '\n';
+    else if (recorded)
+        m_output.err << Tr::tr("servoctl: %n frame(s) of the follower's goals recorded in %1",
+                               nullptr, int(recording.frames.size()))
+                            .arg(QDir::toNativeSeparators(recordPath))
+                     << '\n';
     std::sort(latencies.begin(), latencies.end());
     const double medianMs = latencies.isEmpty() ? 0.0 : latencies.at(latencies.size() / 2) / 1e3;
     if (m_output.json)
