@@ -1249,6 +1249,14 @@
         <source>%1 bps is not a Feetech baud rate.</source>
         <translation>%1 bps ist keine Feetech-Baudrate.</translation>
     </message>
+    <message>
+        <source>The recording moves servo %1, which the scan did not find: nothing was moved.</source>
+        <translation>Die Aufzeichnung bewegt Servo %1, das der Scan nicht gefunden hat: Nichts wurde bewegt.</translation>
+    </message>
+    <message>
+        <source>The servos to record answer at different baud rates: choose servos at one rate.</source>
+        <translation>Die aufzuzeichnenden Servos antworten mit unterschiedlichen Baudraten: Wählen Sie Servos mit derselben Rate.</translation>
+    </message>
 </context>
 <context>
     <name>FeetechGuard</name>
@@ -2736,6 +2744,110 @@
         <source>%1 stopped answering: check the power and the cable, then look again.</source>
         <translation>%1 antwortet nicht mehr: Prüfen Sie Stromversorgung und Kabel und suchen Sie dann erneut.</translation>
     </message>
+    <message>
+        <source>There is nothing to replay.</source>
+        <translation>Es gibt nichts wiederzugeben.</translation>
+    </message>
+    <message>
+        <source>%1 is of a model ServoBench does not move (%2): nothing was replayed.</source>
+        <translation>%1 ist von einem Modell, das ServoBench nicht bewegt (%2): Es wurde nichts wiedergegeben.</translation>
+    </message>
+    <message>
+        <source>A servo does not answer: %1 Nothing was replayed.</source>
+        <translation>Ein Servo antwortet nicht: %1 Es wurde nichts wiedergegeben.</translation>
+    </message>
+    <message>
+        <source>Frame %1 (at %2 s) asks %3 for %4, outside the positions it accepts (%5 to %6): nothing was moved.</source>
+        <translation>Frame %1 (bei %2 s) verlangt von %3 die Position %4, außerhalb der Positionen, die es annimmt (%5 bis %6): Nichts wurde bewegt.</translation>
+    </message>
+    <message>
+        <source>The replay was stopped; nothing was moved.</source>
+        <translation>Die Wiedergabe wurde gestoppt; nichts wurde bewegt.</translation>
+    </message>
+    <message>
+        <source>The servos could not be held where they stand: %1</source>
+        <translation>Die Servos konnten nicht an ihrer Stelle gehalten werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Played %n frame(s)</source>
+        <translation>
+            <numerusform>%n Frame abgespielt</numerusform>
+            <numerusform>%n Frames abgespielt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n time(s)</source>
+        <translation>
+            <numerusform>(%n Durchlauf)</numerusform>
+            <numerusform>(%n Durchläufe)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 %2; the arm holds the last frame.</source>
+        <translation>%1 %2; der Arm hält den letzten Frame.</translation>
+    </message>
+    <message>
+        <source>%1 %2, but torque could not be switched off: %3</source>
+        <translation>%1 %2, aber das Drehmoment konnte nicht abgeschaltet werden: %3</translation>
+    </message>
+    <message>
+        <source>%1 %2; torque is off.</source>
+        <translation>%1 %2; das Drehmoment ist aus.</translation>
+    </message>
+    <message>
+        <source>%1 cannot take goal %2 with the others in one SYNC WRITE.</source>
+        <translation>%1 kann Ziel %2 nicht zusammen mit den anderen in einem SYNC WRITE annehmen.</translation>
+    </message>
+    <message>
+        <source>The replay stopped: %1</source>
+        <translation>Die Wiedergabe wurde abgebrochen: %1</translation>
+    </message>
+    <message>
+        <source>All torque off: the replay was stopped.</source>
+        <translation>Alle Drehmomente aus: Die Wiedergabe wurde gestoppt.</translation>
+    </message>
+    <message>
+        <source>Loop %1 of %2: easing to the first frame</source>
+        <translation>Durchlauf %1 von %2: sanfte Fahrt zum ersten Frame</translation>
+    </message>
+    <message>
+        <source>Loop %1 of %2: playing %3 frames over %4 s</source>
+        <translation>Durchlauf %1 von %2: %3 Frames über %4 s werden abgespielt</translation>
+    </message>
+    <message>
+        <source>Loop %1 of %2: frame %3 of %4</source>
+        <translation>Durchlauf %1 von %2: Frame %3 von %4</translation>
+    </message>
+    <message>
+        <source>while easing to the first frame (loop %1 of %2)</source>
+        <translation>während der sanften Fahrt zum ersten Frame (Durchlauf %1 von %2)</translation>
+    </message>
+    <message>
+        <source>at %1 s of %2 s (loop %3 of %4)</source>
+        <translation>bei %1 s von %2 s (Durchlauf %3 von %4)</translation>
+    </message>
+    <message>
+        <source>The replay was stopped %1; the arm holds where it stood.</source>
+        <translation>Die Wiedergabe wurde %1 gestoppt; der Arm hält, wo er stand.</translation>
+    </message>
+    <message>
+        <source>The replay was stopped %1, but the arm could not be held: %2</source>
+        <translation>Die Wiedergabe wurde %1 gestoppt, aber der Arm konnte nicht gehalten werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>The settings of %n servo(s) read.</source>
+        <translation>
+            <numerusform>Einstellungen von %n Servo gelesen.</numerusform>
+            <numerusform>Einstellungen von %n Servos gelesen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n setting(s) fixed and verified.</source>
+        <translation>
+            <numerusform>%1 von %n Einstellung behoben und überprüft.</numerusform>
+            <numerusform>%1 von %n Einstellungen behoben und überprüft.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>
@@ -3333,6 +3445,10 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>not checked</source>
         <translation>nicht geprüft</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
     </message>
 </context>
 <context>
@@ -4186,6 +4302,14 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>&lt;p&gt;Home: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;Website: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>Record and &amp;replay…</source>
+        <translation>Aufzeichnen und &amp;wiedergeben…</translation>
+    </message>
+    <message>
+        <source>Record joints moved by hand and play the motion back</source>
+        <translation>Von Hand bewegte Gelenke aufzeichnen und die Bewegung wiedergeben</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -4521,6 +4645,69 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Scan the bus to find servos.</source>
         <translation>Scannen Sie den Bus, um Servos zu finden.</translation>
+    </message>
+</context>
+<context>
+    <name>MotionRecording</name>
+    <message>
+        <source>servo %1</source>
+        <translation>Servo %1</translation>
+    </message>
+    <message>
+        <source>%1 (servo %2)</source>
+        <translation>%1 (Servo %2)</translation>
+    </message>
+    <message>
+        <source>the file is empty: a recording starts with a header line (time_s and one column per joint)</source>
+        <translation>die Datei ist leer: Eine Aufzeichnung beginnt mit einer Kopfzeile (time_s und eine Spalte pro Gelenk)</translation>
+    </message>
+    <message>
+        <source>the first column of the header is &quot;%1&quot;, not time_s: this is not a motion recording</source>
+        <translation>die erste Spalte der Kopfzeile ist &quot;%1&quot;, nicht time_s: Dies ist keine Bewegungsaufzeichnung</translation>
+    </message>
+    <message>
+        <source>column &quot;%1&quot; names no servo: a joint&apos;s column is id_N or NAME@N, N its servo&apos;s ID (0 to 253)</source>
+        <translation>Spalte &quot;%1&quot; nennt kein Servo: Die Spalte eines Gelenks heißt id_N oder NAME@N, wobei N die ID seines Servos ist (0 bis 253)</translation>
+    </message>
+    <message>
+        <source>servo %1 has two columns</source>
+        <translation>Servo %1 hat zwei Spalten</translation>
+    </message>
+    <message>
+        <source>the header names no joint after time_s</source>
+        <translation>die Kopfzeile nennt nach time_s kein Gelenk</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <source>line %1 has %2 cells where the header has %3</source>
+        <translation>Zeile %1 hat %2 Zellen, die Kopfzeile aber %3</translation>
+    </message>
+    <message>
+        <source>line %1: the time &quot;%2&quot; is not a number of seconds from 0</source>
+        <translation>Zeile %1: die Zeit &quot;%2&quot; ist keine Anzahl Sekunden ab 0</translation>
+    </message>
+    <message>
+        <source>line %1: the time goes back, from %2 s to %3 s</source>
+        <translation>Zeile %1: die Zeit läuft rückwärts, von %2 s auf %3 s</translation>
+    </message>
+    <message>
+        <source>line %1: &quot;%2&quot; is no position of %3 (a number of steps)</source>
+        <translation>Zeile %1: &quot;%2&quot; ist keine Position von %3 (eine Anzahl Schritte)</translation>
+    </message>
+    <message>
+        <source>the recording has a header but no frame</source>
+        <translation>die Aufzeichnung hat eine Kopfzeile, aber keinen Frame</translation>
+    </message>
+    <message>
+        <source>the file is too large for a motion recording</source>
+        <translation>die Datei ist zu groß für eine Bewegungsaufzeichnung</translation>
+    </message>
+    <message>
+        <source>nothing was recorded</source>
+        <translation>es wurde nichts aufgezeichnet</translation>
     </message>
 </context>
 <context>
@@ -4966,6 +5153,18 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>%1 is %2, not %3</source>
         <translation>%1 ist %2, nicht %3</translation>
+    </message>
+    <message>
+        <source>%1 could not be read back</source>
+        <translation>%1 konnte nicht zurückgelesen werden</translation>
+    </message>
+    <message>
+        <source>%1 reads %2, with bits 0x%3 still set</source>
+        <translation>%1 ist %2, die Bits 0x%3 sind noch gesetzt</translation>
+    </message>
+    <message>
+        <source>%1 is %2, with bits 0x%3 set</source>
+        <translation>%1 ist %2, mit gesetzten Bits 0x%3</translation>
     </message>
 </context>
 <context>
@@ -5967,6 +6166,158 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>RecordReplayDialog</name>
+    <message>
+        <source>Record and replay</source>
+        <translation>Aufzeichnung und Wiedergabe</translation>
+    </message>
+    <message>
+        <source>Joints to record</source>
+        <translation>Aufzuzeichnende Gelenke</translation>
+    </message>
+    <message>
+        <source>The servos whose positions are recorded; their torque is left as it is, so switch it off to move them by hand</source>
+        <translation>Die Servos, deren Positionen aufgezeichnet werden; ihr Drehmoment bleibt, wie es ist: Schalten Sie es ab, um sie von Hand zu bewegen</translation>
+    </message>
+    <message>
+        <source>&amp;Record</source>
+        <translation>&amp;Aufzeichnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Öffnen…</translation>
+    </message>
+    <message>
+        <source>&amp;Save…</source>
+        <translation>&amp;Speichern…</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Nothing recorded yet.</source>
+        <translation>Noch nichts aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> ×</translation>
+    </message>
+    <message>
+        <source>2 plays twice as fast, 0.5 at half speed</source>
+        <translation>2 spielt doppelt so schnell ab, 0.5 mit halber Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Between two loops the arm eases back to the first frame</source>
+        <translation>Zwischen zwei Durchläufen fährt der Arm sanft zum ersten Frame zurück</translation>
+    </message>
+    <message>
+        <source>Switch torque off at the end</source>
+        <translation>Am Ende Drehmoment abschalten</translation>
+    </message>
+    <message>
+        <source>Otherwise the arm holds the last frame</source>
+        <translation>Sonst hält der Arm den letzten Frame</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>Abs&amp;pielen</translation>
+    </message>
+    <message>
+        <source>Torque on where the arm stands, a gentle move to the first frame, then the frames at their recorded times</source>
+        <translation>Drehmoment an, wo der Arm steht, eine sanfte Fahrt zum ersten Frame, dann die Frames zu ihren aufgezeichneten Zeiten</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>S&amp;topp</translation>
+    </message>
+    <message>
+        <source>Stop recording, or stop the replay with the arm held where it stands</source>
+        <translation>Die Aufzeichnung stoppen oder die Wiedergabe stoppen, wobei der Arm an seiner Stelle gehalten wird</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>Geschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>Loops:</source>
+        <translation>Durchläufe:</translation>
+    </message>
+    <message>
+        <source>Nothing was recorded: not every joint answered.</source>
+        <translation>Es wurde nichts aufgezeichnet: Nicht jedes Gelenk hat geantwortet.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recorded %n frame(s) over %1 s.</source>
+        <translation>
+            <numerusform>%n Frame über %1 s aufgezeichnet.</numerusform>
+            <numerusform>%n Frames über %1 s aufgezeichnet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Servo %1 (%2, %3 bps)</source>
+        <translation>Servo %1 (%2, %3 bps)</translation>
+    </message>
+    <message>
+        <source>Stop &amp;recording</source>
+        <translation>Aufzeichnung &amp;beenden</translation>
+    </message>
+    <message>
+        <source>Recording: move the joints by hand, then Stop.</source>
+        <translation>Aufzeichnung läuft: Bewegen Sie die Gelenke von Hand, dann „Stopp“.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording: %n frame(s), %1 s</source>
+        <translation>
+            <numerusform>Aufzeichnung: %n Frame, %1 s</numerusform>
+            <numerusform>Aufzeichnung: %n Frames, %1 s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Replaying: the arm eases to the first frame first.</source>
+        <translation>Wiedergabe: Der Arm fährt zuerst sanft zum ersten Frame.</translation>
+    </message>
+    <message>
+        <source>Stopping: the arm is held where it stands…</source>
+        <translation>Wird gestoppt: Der Arm wird an seiner Stelle gehalten…</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 s of %2 s, frame %3 of %4 — %5</source>
+        <translation>%1 s von %2 s, Frame %3 von %4 — %5</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <source>Motion recordings (*.csv)</source>
+        <translation>Bewegungsaufzeichnungen (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save recording</source>
+        <translation>Aufzeichnung speichern</translation>
+    </message>
+    <message numerus="yes">
+        <source>Opened %1: %n frame(s) over %2 s.</source>
+        <translation>
+            <numerusform>%1 geöffnet: %n Frame über %2 s.</numerusform>
+            <numerusform>%1 geöffnet: %n Frames über %2 s.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>In %1 gespeichert.</translation>
+    </message>
+</context>
+<context>
     <name>RegisterTable</name>
     <message>
         <source>not valid JSON at offset %1: %2</source>
@@ -6471,6 +6822,26 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>the template has format version %1 and was written by a newer ServoBench; this version reads format version %2 and older</source>
         <translation>die Vorlage hat die Formatversion %1 und wurde von einem neueren ServoBench geschrieben; diese Version liest Formatversion %2 und älter</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be an object of bit numbers by register</source>
+        <translation>&quot;%1&quot; muss ein Objekt mit Bitnummern nach Register sein</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is no writable register of %3 servos</source>
+        <translation>%1: &quot;%2&quot; ist kein beschreibbares Register von %3-Servos</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is set by its own flow, not by a template</source>
+        <translation>%1: &quot;%2&quot; wird über einen eigenen Ablauf gesetzt, nicht über eine Vorlage</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; must be a list of bit numbers</source>
+        <translation>%1: &quot;%2&quot; muss eine Liste von Bitnummern sein</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; has bits 0 to %3</source>
+        <translation>%1: &quot;%2&quot; hat die Bits 0 bis %3</translation>
     </message>
 </context>
 <context>
@@ -7000,6 +7371,198 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>SettingsCheck</name>
+    <message>
+        <source>not written: torque is on, and writing %1 could move the horn; switch the torque off first</source>
+        <translation>nicht geschrieben: Das Drehmoment ist an, und das Schreiben von %1 könnte das Servohorn bewegen; schalten Sie das Drehmoment zuerst ab</translation>
+    </message>
+    <message>
+        <source>written, but it reads back %1, not %2</source>
+        <translation>geschrieben, aber zurückgelesen ergibt sich %1, nicht %2</translation>
+    </message>
+    <message>
+        <source>not verified: %1</source>
+        <translation>nicht überprüft: %1</translation>
+    </message>
+    <message>
+        <source>ServoBench has no register table for model %1.</source>
+        <translation>ServoBench hat keine Registertabelle für Modell %1.</translation>
+    </message>
+    <message>
+        <source>nothing to write fixes this</source>
+        <translation>kein Schreibvorgang behebt dies</translation>
+    </message>
+    <message>
+        <source>not written: servo %1 does not answer (%2); check its cable and power</source>
+        <translation>nicht geschrieben: Servo %1 antwortet nicht (%2); prüfen Sie Kabel und Stromversorgung</translation>
+    </message>
+    <message>
+        <source>%1 is %2; %3 sets %4 (a RAM register: it is lost at power-off and set again at every connect).</source>
+        <translation>%1 ist %2; %3 setzt %4 (ein RAM-Register: Es geht beim Ausschalten verloren und wird bei jedem Verbinden neu gesetzt).</translation>
+    </message>
+    <message>
+        <source>%1 is %2; %3 sets %4.</source>
+        <translation>%1 ist %2; %3 setzt %4.</translation>
+    </message>
+    <message>
+        <source>%1 is %2 with bits 0x%3 set; %4 clears them.</source>
+        <translation>%1 ist %2 mit gesetzten Bits 0x%3; %4 löscht sie.</translation>
+    </message>
+    <message>
+        <source>Phase bit 4 is set: the servo counts whole turns, so its position leaves 0-4095 and goals and calibration no longer match it.</source>
+        <translation>Phasen-Bit 4 ist gesetzt: Das Servo zählt ganze Umdrehungen, daher verlässt seine Position 0-4095, und Ziele und Kalibrierung passen nicht mehr dazu.</translation>
+    </message>
+    <message>
+        <source>The torque limit is 0: the servo has no force to move with.</source>
+        <translation>Die Drehmomentgrenze ist 0: Das Servo hat keine Kraft, um sich zu bewegen.</translation>
+    </message>
+    <message>
+        <source>The maximum torque is 0: at every power-on the torque limit starts at 0, and the servo does not move.</source>
+        <translation>Das maximale Drehmoment ist 0: Bei jedem Einschalten beginnt die Drehmomentgrenze bei 0, und das Servo bewegt sich nicht.</translation>
+    </message>
+    <message>
+        <source>The operating mode is %1, not position (0): a joint does not follow its goal position.</source>
+        <translation>Der Betriebsmodus ist %1, nicht Position (0): Ein Gelenk folgt seiner Zielposition nicht.</translation>
+    </message>
+    <message>
+        <source>Both angle limits are 0: the servo turns without end (multi-turn or wheel), not as a joint.</source>
+        <translation>Beide Winkelgrenzen sind 0: Das Servo dreht endlos (Multiturn oder Rad), nicht als Gelenk.</translation>
+    </message>
+    <message>
+        <source>The minimum angle limit %1 is not below the maximum %2: the servo refuses every goal.</source>
+        <translation>Die untere Winkelgrenze %1 liegt nicht unter der oberen %2: Das Servo lehnt jedes Ziel ab.</translation>
+    </message>
+    <message>
+        <source>The servo waits %1 µs before each answer: every read of the bus is that much slower.</source>
+        <translation>Das Servo wartet vor jeder Antwort %1 µs: Jeder Lesevorgang am Bus wird um so viel langsamer.</translation>
+    </message>
+    <message>
+        <source>The EEPROM is unlocked: a stray write would change settings for good.</source>
+        <translation>Das EEPROM ist entsperrt: Ein versehentlicher Schreibvorgang würde Einstellungen dauerhaft ändern.</translation>
+    </message>
+    <message>
+        <source>The supply reads %1 V, above the maximum voltage setting of %2 V: the servo reports a voltage error and may not move. Use a supply it is made for, or raise the limit if it is a higher-voltage model.</source>
+        <translation>Die Versorgungsspannung beträgt %1 V, über der eingestellten Maximalspannung von %2 V: Das Servo meldet einen Spannungsfehler und bewegt sich womöglich nicht. Verwenden Sie eine Versorgung, für die es ausgelegt ist, oder heben Sie die Grenze an, wenn es ein Modell für höhere Spannung ist.</translation>
+    </message>
+    <message>
+        <source>The supply reads %1 V, below the minimum voltage setting of %2 V: the servo reports a voltage error and may not move. Charge the battery or check the supply.</source>
+        <translation>Die Versorgungsspannung beträgt %1 V, unter der eingestellten Minimalspannung von %2 V: Das Servo meldet einen Spannungsfehler und bewegt sich womöglich nicht. Laden Sie den Akku oder prüfen Sie die Versorgung.</translation>
+    </message>
+    <message>
+        <source>Its settings could not be read: %1</source>
+        <translation>Seine Einstellungen konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>fixed, verified</source>
+        <translation>behoben, überprüft</translation>
+    </message>
+</context>
+<context>
+    <name>SettingsCheckPanel</name>
+    <message>
+        <source>Finds the settings that stop a servo moving or make it misbehave: multi-turn phase bit, torque limits at 0, a mode other than position, angle limits, a slow return delay, an unlocked EEPROM, mixed firmware, voltage limits the supply breaks, and what differs from the robot template. It only reads; Fix writes the expected value and reads it back (limits, offset, mode, torque limit and phase only with torque off).</source>
+        <translation>Findet die Einstellungen, die ein Servo an der Bewegung hindern oder es fehlerhaft arbeiten lassen: Multiturn-Phasenbit, Drehmomentgrenzen bei 0, ein anderer Betriebsmodus als Position, Winkelgrenzen, eine lange Antwortverzögerung, ein entsperrtes EEPROM, gemischte Firmware, Spannungsgrenzen, die die Versorgung verletzt, und was von der Robotervorlage abweicht. Es wird nur gelesen; „Beheben“ schreibt den erwarteten Wert und liest ihn zurück (Grenzen, Offset, Modus, Drehmomentgrenze und Phase nur bei abgeschaltetem Drehmoment).</translation>
+    </message>
+    <message>
+        <source>Also compare the servos with this robot template&apos;s settings</source>
+        <translation>Die Servos auch mit den Einstellungen dieser Robotervorlage vergleichen</translation>
+    </message>
+    <message>
+        <source>No robot template</source>
+        <translation>Keine Robotervorlage</translation>
+    </message>
+    <message>
+        <source>Check settings</source>
+        <translation>Einstellungen prüfen</translation>
+    </message>
+    <message>
+        <source>Read the settings of every servo found</source>
+        <translation>Die Einstellungen jedes gefundenen Servos lesen</translation>
+    </message>
+    <message>
+        <source>Fix all</source>
+        <translation>Alle beheben</translation>
+    </message>
+    <message>
+        <source>Write the expected value of every finding that a write fixes, each read back</source>
+        <translation>Für jeden Befund, den ein Schreibvorgang behebt, den erwarteten Wert schreiben und jeweils zurücklesen</translation>
+    </message>
+    <message>
+        <source>Robot:</source>
+        <translation>Roboter:</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Einstellung</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Expected</source>
+        <translation>Erwartet</translation>
+    </message>
+    <message>
+        <source>Why</source>
+        <translation>Warum</translation>
+    </message>
+    <message>
+        <source>Fix</source>
+        <translation>Beheben</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>No problem found in the settings.</source>
+        <translation>In den Einstellungen wurde kein Problem gefunden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s).</source>
+        <translation>
+            <numerusform>%n Befund.</numerusform>
+            <numerusform>%n Befunde.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading the settings of %n servo(s)…</source>
+        <translation>
+            <numerusform>Einstellungen von %n Servo werden gelesen…</numerusform>
+            <numerusform>Einstellungen von %n Servos werden gelesen…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>There is no finding in row %1.</source>
+        <translation>In Zeile %1 gibt es keinen Befund.</translation>
+    </message>
+    <message>
+        <source>Writing and reading back…</source>
+        <translation>Schreiben und Zurücklesen…</translation>
+    </message>
+    <message>
+        <source>Nothing to write fixes this</source>
+        <translation>Kein Schreibvorgang behebt dies</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2 to servo %3 and read it back</source>
+        <translation>%1 = %2 auf Servo %3 schreiben und zurücklesen</translation>
+    </message>
+    <message>
+        <source>Fixed, verified</source>
+        <translation>Behoben, überprüft</translation>
+    </message>
+    <message>
+        <source>%1 Check again to see the servos as they are now.</source>
+        <translation>%1 Prüfen Sie erneut, um die Servos in ihrem jetzigen Zustand zu sehen.</translation>
+    </message>
+</context>
+<context>
     <name>SettingsFile</name>
     <message>
         <source>the file is too large for a profile or a robot template</source>
@@ -7022,10 +7585,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>%1 passt nicht zu Servo %2: %3</translation>
     </message>
     <message>
-        <source>torque is on: switch it off before changing the position offset or limits</source>
-        <translation>Drehmoment ist an: Schalten Sie es ab, bevor Sie Positionsoffset oder Grenzen ändern</translation>
-    </message>
-    <message>
         <source>Not copied from the profile: %1 (each servo&apos;s own calibration, not a setting to copy; use a robot template or Load calibration for it).</source>
         <translation>Nicht aus dem Profil kopiert: %1 (die eigene Kalibrierung jedes Servos, keine Einstellung zum Kopieren; verwenden Sie dafür eine Robotervorlage oder Kalibrierung laden).</translation>
     </message>
@@ -7040,6 +7599,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>failed</source>
         <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>torque is on: switch it off before changing the position offset, limits or phase</source>
+        <translation>Drehmoment ist an: Schalten Sie es ab, bevor Sie Positionsoffset, Grenzen oder Phase ändern</translation>
     </message>
 </context>
 <context>
@@ -7611,6 +8174,17 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>Time (s)</source>
         <translation>Zeit (s)</translation>
+    </message>
+</context>
+<context>
+    <name>TeleopMapping</name>
+    <message>
+        <source>%1 (not in the leader&apos;s file)</source>
+        <translation>%1 (nicht in der Datei des Führungsarms)</translation>
+    </message>
+    <message>
+        <source>%1 (not in the follower&apos;s file)</source>
+        <translation>%1 (nicht in der Datei des Folgearms)</translation>
     </message>
 </context>
 <context>
@@ -9041,6 +9615,192 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Servo %1 antwortet mit Fehlerbits 0x%2 (%3): servoctl doctor sagt, warum</translation>
     </message>
     <message>
+        <source>decode --log takes the recording only, no bytes</source>
+        <translation>decode --log nimmt nur die Aufzeichnung, keine Bytes</translation>
+    </message>
+    <message>
+        <source>share recordings are of Feetech buses: --family feetech</source>
+        <translation>Freigabeaufzeichnungen sind von Feetech-Bussen: --family feetech</translation>
+    </message>
+    <message>
+        <source>%1 --update FILE takes the joints&apos; names from the file and saves to it: no --out or --names</source>
+        <translation>%1 --update FILE übernimmt die Gelenknamen aus der Datei und speichert in sie: kein --out oder --names</translation>
+    </message>
+    <message>
+        <source>servo %1 is no joint of %2</source>
+        <translation>Servo %1 ist kein Gelenk von %2</translation>
+    </message>
+    <message>
+        <source>%1 --robot: %2</source>
+        <translation>%1 --robot: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>fixing %n setting(s)…</source>
+        <translation>
+            <numerusform>%n Einstellung wird behoben…</numerusform>
+            <numerusform>%n Einstellungen werden behoben…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing to write fixes this</source>
+        <translation>kein Schreibvorgang behebt dies</translation>
+    </message>
+    <message numerus="yes">
+        <source>No problem found in the settings of %n servo(s).</source>
+        <translation>
+            <numerusform>In den Einstellungen von %n Servo wurde kein Problem gefunden.</numerusform>
+            <numerusform>In den Einstellungen von %n Servos wurde kein Problem gefunden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>SETTING</source>
+        <translation>EINSTELLUNG</translation>
+    </message>
+    <message>
+        <source>VALUE</source>
+        <translation>WERT</translation>
+    </message>
+    <message>
+        <source>EXPECTED</source>
+        <translation>ERWARTET</translation>
+    </message>
+    <message>
+        <source>WHY</source>
+        <translation>WARUM</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s); --fix writes the expected values and reads them back.</source>
+        <translation>
+            <numerusform>%n Befund; --fix schreibt die erwarteten Werte und liest sie zurück.</numerusform>
+            <numerusform>%n Befunde; --fix schreibt die erwarteten Werte und liest sie zurück.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>servo %1 %2: %3 → %4: %5</source>
+        <translation>Servo %1 %2: %3 → %4: %5</translation>
+    </message>
+    <message>
+        <source>--%1 must be %2</source>
+        <translation>--%1 muss %2 sein</translation>
+    </message>
+    <message>
+        <source>%1 needs --out FILE: the CSV file to record into</source>
+        <translation>%1 braucht --out FILE: die CSV-Datei, in die aufgezeichnet wird</translation>
+    </message>
+    <message>
+        <source>a number of frames per second from 1 to %1</source>
+        <translation>eine Anzahl Frames pro Sekunde von 1 bis %1</translation>
+    </message>
+    <message>
+        <source>servo %1 is of an unknown model (%2): its position cannot be read</source>
+        <translation>Servo %1 hat ein unbekanntes Modell (%2): Seine Position kann nicht gelesen werden</translation>
+    </message>
+    <message numerus="yes">
+        <source>recording %n joint(s); move them by hand, Ctrl-C ends</source>
+        <translation>
+            <numerusform>%n Gelenk wird aufgezeichnet; bewegen Sie es von Hand, Ctrl-C beendet</numerusform>
+            <numerusform>%n Gelenke werden aufgezeichnet; bewegen Sie sie von Hand, Ctrl-C beendet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no frame was recorded: not every servo answered; nothing was written</source>
+        <translation>es wurde kein Frame aufgezeichnet: Nicht jedes Servo hat geantwortet; nichts geschrieben</translation>
+    </message>
+    <message numerus="yes">
+        <source>recorded %n frame(s) of %1 joint(s) over %2 s into %3</source>
+        <translation>
+            <numerusform>%n Frame von %1 Gelenk(en) über %2 s in %3 aufgezeichnet</numerusform>
+            <numerusform>%n Frames von %1 Gelenk(en) über %2 s in %3 aufgezeichnet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1; what was recorded until then is in %2</source>
+        <translation>%1; was bis dahin aufgezeichnet wurde, steht in %2</translation>
+    </message>
+    <message>
+        <source>column %1 matches no servo: %2; nothing was moved</source>
+        <translation>Spalte %1 passt zu keinem Servo: %2; nichts wurde bewegt</translation>
+    </message>
+    <message>
+        <source>column %1: servo %2 is of an unknown model (%3); nothing was moved</source>
+        <translation>Spalte %1: Servo %2 hat ein unbekanntes Modell (%3); nichts wurde bewegt</translation>
+    </message>
+    <message>
+        <source>a number above 0 (2 plays twice as fast)</source>
+        <translation>eine Zahl über 0 (2 spielt doppelt so schnell ab)</translation>
+    </message>
+    <message>
+        <source>a number of seconds from 0</source>
+        <translation>eine Anzahl Sekunden ab 0</translation>
+    </message>
+    <message>
+        <source>interrupted again before the arm was held: check the servos&apos; torque</source>
+        <translation>erneut unterbrochen, bevor der Arm gehalten wurde: Prüfen Sie das Drehmoment der Servos</translation>
+    </message>
+    <message>
+        <source>joint %1 (servo %2) does not answer: %3</source>
+        <translation>Gelenk %1 (Servo %2) antwortet nicht: %3</translation>
+    </message>
+    <message>
+        <source>joint %1 (servo %2) does not hold what %3 says (%4): write the file to the arm first: servoctl --port %5 feetech calibration load %3</source>
+        <translation>Gelenk %1 (Servo %2) enthält nicht, was %3 angibt (%4): Schreiben Sie die Datei zuerst auf den Arm: servoctl --port %5 feetech calibration load %3</translation>
+    </message>
+    <message>
+        <source>%1 needs --port FOLLOWER, --leader PORT, --calibration FILE and --leader-calibration FILE</source>
+        <translation>%1 braucht --port FOLLOWER, --leader PORT, --calibration FILE und --leader-calibration FILE</translation>
+    </message>
+    <message>
+        <source>--leader and --port name the same port: the leader and the follower are two arms on two adapters</source>
+        <translation>--leader und --port nennen denselben Anschluss: Führungs- und Folgearm sind zwei Arme an zwei Adaptern</translation>
+    </message>
+    <message>
+        <source>the two files name different joints: %1</source>
+        <translation>die beiden Dateien nennen verschiedene Gelenke: %1</translation>
+    </message>
+    <message>
+        <source>the follower&apos;s torque could not be switched on</source>
+        <translation>das Drehmoment des Folgearms konnte nicht eingeschaltet werden</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower holds; it moves to the leader&apos;s pose at %1°/s at most, then follows. Ctrl-C stops (it holds).</source>
+        <translation>servoctl: Der Folgearm hält; er fährt mit höchstens %1°/s in die Pose des Führungsarms und folgt ihm dann. Ctrl-C stoppt (er hält).</translation>
+    </message>
+    <message>
+        <source>%1 was lost: %2</source>
+        <translation>%1 ist nicht mehr erreichbar: %2</translation>
+    </message>
+    <message>
+        <source>the follower</source>
+        <translation>der Folgearm</translation>
+    </message>
+    <message>
+        <source>the leader</source>
+        <translation>der Führungsarm</translation>
+    </message>
+    <message numerus="yes">
+        <source>servoctl: %n frame(s) of the follower&apos;s goals recorded in %1</source>
+        <translation>
+            <numerusform>servoctl: %n Frame der Ziele des Folgearms in %1 aufgezeichnet</numerusform>
+            <numerusform>servoctl: %n Frames der Ziele des Folgearms in %1 aufgezeichnet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>servoctl: %1 cycle(s) in %2 s (%3 per second), leader to follower %4 ms (median)</source>
+        <translation>servoctl: %1 Zyklen in %2 s (%3 pro Sekunde), Führungs- zu Folgearm %4 ms (Median)</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower&apos;s torque is off</source>
+        <translation>servoctl: Das Drehmoment des Folgearms ist aus</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower holds where it is</source>
+        <translation>servoctl: Der Folgearm hält an seiner Stelle</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower could not be reached to stop it</source>
+        <translation>servoctl: Der Folgearm war zum Anhalten nicht erreichbar</translation>
+    </message>
+    <message>
         <source>usage: servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
 
 commands:
@@ -9093,17 +9853,47 @@ commands:
                                          limits; --move-test also moves each servo without
                                          a fault 100 steps and back (rise time, overshoot,
                                          steady-state error); exit 1 when a servo has a fault
+  feetech check --ids LIST [--robot ROBOT] [--fix]
+                                         find settings that stop a servo moving or make it
+                                         misbehave: phase bit 4 (multi-turn), torque limit
+                                         or maximum torque 0, a mode other than position,
+                                         angle limits, return delay, an open EEPROM, mixed
+                                         firmware, voltage limits the supply breaks; ROBOT
+                                         (so101-follower, ... or a template file) adds its
+                                         settings; --fix writes the expected values, read
+                                         back (limits, offset, mode, torque limit and phase
+                                         only with torque off); exit 1 when something is left
   feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
                                          stream position, speed, load, voltage,
                                          temperature and current (SYNC READ)
   feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
-                    [--dry-run] --out FILE
+                    [--dry-run] --out FILE | --update FILE
                                          torque off, record each joint&apos;s range by hand
                                          (Enter ends), centre it on the encoder: offset
                                          and limits written, LeRobot calibration saved
+                                         (--update: into FILE, its other joints kept)
   feetech calibration save --ids LIST [--names LIST] FILE
                                          the servos&apos; offsets and limits to a LeRobot file
   feetech calibration load FILE          write a LeRobot calibration file, verified
+  feetech record --ids LIST --out FILE [--names LIST] [--rate HZ] [--duration S]
+                                         record the positions moved by hand (torque left
+                                         as it is) until --duration or Ctrl-C: CSV with
+                                         time_s and a column per joint (id_N or NAME@N),
+                                         in steps; --rate frames per second (default 50)
+  feetech replay FILE [--speed X] [--ease S] [--loop N] [--release]
+                                         play a recording: refused when a frame is beyond
+                                         a servo&apos;s angle limits; torque on where the arm
+                                         stands, a gentle move to the first frame (over S
+                                         seconds; default from the distance), the frames
+                                         at their times (--speed 2: twice as fast), N
+                                         times, then hold (--release: torque off). Ctrl-C
+                                         holds the arm where it is
+  feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
+                 [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
+                 [--release]
+                                         the leader arm on PORT drives this follower,
+                                         joints matched by name; Ctrl-C holds;
+                                         --record: the follower&apos;s goals, for replay
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          stand between another program and the servos:
                                          it opens PATH, every byte is forwarded; --json
@@ -9178,17 +9968,47 @@ Befehle:
                                          seinen Grenzen; --move-test bewegt zudem jedes Servo ohne
                                          Fehler um 100 Schritte und zurück (Anstiegszeit, Überschwingen,
                                          bleibende Regelabweichung); Exit 1, wenn ein Servo einen Fehler hat
+  feetech check --ids LIST [--robot ROBOT] [--fix]
+                                         Einstellungen finden, die ein Servo an der Bewegung hindern oder
+                                         es fehlerhaft arbeiten lassen: Phasen-Bit 4 (Multiturn), Drehmomentgrenze
+                                         oder max. Drehmoment 0, ein anderer Betriebsmodus als Position,
+                                         Winkelgrenzen, Antwortverzögerung, ein offenes EEPROM, gemischte
+                                         Firmware, Spannungsgrenzen, die die Versorgung verletzt; ROBOT
+                                         (so101-follower, ... oder eine Vorlagendatei) fügt seine
+                                         Einstellungen hinzu; --fix schreibt die erwarteten Werte und liest
+                                         sie zurück (Grenzen, Offset, Modus, Drehmomentgrenze und Phase
+                                         nur bei Drehmoment aus); Exit 1, wenn etwas übrig bleibt
   feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
                                          Position, Geschwindigkeit, Last, Spannung, Temperatur
                                          und Strom fortlaufend ausgeben (SYNC READ)
   feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
-                    [--dry-run] --out FILE
+                    [--dry-run] --out FILE | --update FILE
                                          Drehmoment aus, Bereich jedes Gelenks von Hand aufzeichnen
                                          (Enter beendet), auf dem Encoder zentrieren: Offset und
                                          Grenzen geschrieben, LeRobot-Kalibrierung gespeichert
+                                         (--update: in FILE, dessen andere Gelenke erhalten bleiben)
   feetech calibration save --ids LIST [--names LIST] FILE
                                          Offsets und Grenzen der Servos in eine LeRobot-Datei
   feetech calibration load FILE          eine LeRobot-Kalibrierdatei schreiben, überprüft
+  feetech record --ids LIST --out FILE [--names LIST] [--rate HZ] [--duration S]
+                                         die von Hand bewegten Positionen aufzeichnen (Drehmoment bleibt,
+                                         wie es ist) bis --duration oder Ctrl-C: CSV mit
+                                         time_s und einer Spalte pro Gelenk (id_N oder NAME@N),
+                                         in Schritten; --rate Frames pro Sekunde (Standard 50)
+  feetech replay FILE [--speed X] [--ease S] [--loop N] [--release]
+                                         eine Aufzeichnung abspielen: abgelehnt, wenn ein Frame außerhalb
+                                         der Winkelgrenzen eines Servos liegt; Drehmoment an, wo der Arm
+                                         steht, eine sanfte Fahrt zum ersten Frame (über S
+                                         Sekunden; Standard nach der Entfernung), die Frames
+                                         zu ihren Zeiten (--speed 2: doppelt so schnell), N
+                                         Mal, dann halten (--release: Drehmoment aus). Ctrl-C
+                                         hält den Arm, wo er ist
+  feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
+                 [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
+                 [--release]
+                                         der Führungsarm an PORT steuert diesen Folgearm,
+                                         Gelenke nach Namen zugeordnet; Ctrl-C hält;
+                                         --record: die Ziele des Folgearms, zur Wiedergabe
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          zwischen einem anderen Programm und den Servos:
                                          es öffnet PATH, jedes Byte wird weitergeleitet;
@@ -9211,14 +10031,6 @@ Der Überlast- und Temperaturschutz überwacht jedes Servo, das ein Befehl anste
 
 Exit-Status: 0 erledigt, 1 Geräte- oder Verbindungsfehler, 2 Aufruffehler (nichts gesendet)
 </translation>
-    </message>
-    <message>
-        <source>decode --log takes the recording only, no bytes</source>
-        <translation>decode --log nimmt nur die Aufzeichnung, keine Bytes</translation>
-    </message>
-    <message>
-        <source>share recordings are of Feetech buses: --family feetech</source>
-        <translation>Freigabeaufzeichnungen sind von Feetech-Bussen: --family feetech</translation>
     </message>
 </context>
 <context>

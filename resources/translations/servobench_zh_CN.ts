@@ -1244,6 +1244,14 @@
         <source>%1 bps is not a Feetech baud rate.</source>
         <translation>%1 bps 不是飞特的波特率。</translation>
     </message>
+    <message>
+        <source>The recording moves servo %1, which the scan did not find: nothing was moved.</source>
+        <translation>该记录会移动舵机 %1，但扫描未找到它：未移动任何舵机。</translation>
+    </message>
+    <message>
+        <source>The servos to record answer at different baud rates: choose servos at one rate.</source>
+        <translation>要记录的舵机在不同的波特率下应答：请选择同一波特率的舵机。</translation>
+    </message>
 </context>
 <context>
     <name>FeetechGuard</name>
@@ -2723,6 +2731,106 @@
         <source>%1 stopped answering: check the power and the cable, then look again.</source>
         <translation>%1 已停止应答：请检查电源和电缆，然后重新查找。</translation>
     </message>
+    <message>
+        <source>There is nothing to replay.</source>
+        <translation>没有可回放的内容。</translation>
+    </message>
+    <message>
+        <source>%1 is of a model ServoBench does not move (%2): nothing was replayed.</source>
+        <translation>%1 的型号是 ServoBench 不会移动的型号（%2）：未回放任何内容。</translation>
+    </message>
+    <message>
+        <source>A servo does not answer: %1 Nothing was replayed.</source>
+        <translation>有舵机无应答：%1 未回放任何内容。</translation>
+    </message>
+    <message>
+        <source>Frame %1 (at %2 s) asks %3 for %4, outside the positions it accepts (%5 to %6): nothing was moved.</source>
+        <translation>第 %1 帧（%2 秒处）要求 %3 移动到 %4，超出其可接受的位置（%5 到 %6）：未移动任何舵机。</translation>
+    </message>
+    <message>
+        <source>The replay was stopped; nothing was moved.</source>
+        <translation>回放已停止；未移动任何舵机。</translation>
+    </message>
+    <message>
+        <source>The servos could not be held where they stand: %1</source>
+        <translation>无法使舵机保持在当前位置：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Played %n frame(s)</source>
+        <translation>
+            <numerusform>已回放 %n 帧</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n time(s)</source>
+        <translation>
+            <numerusform>共 %n 遍</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 %2; the arm holds the last frame.</source>
+        <translation>%1，%2；机械臂保持最后一帧的姿态。</translation>
+    </message>
+    <message>
+        <source>%1 %2, but torque could not be switched off: %3</source>
+        <translation>%1，%2，但无法关闭扭矩：%3</translation>
+    </message>
+    <message>
+        <source>%1 %2; torque is off.</source>
+        <translation>%1，%2；扭矩已关闭。</translation>
+    </message>
+    <message>
+        <source>%1 cannot take goal %2 with the others in one SYNC WRITE.</source>
+        <translation>%1 无法与其他舵机在同一条 SYNC WRITE 中接收目标 %2。</translation>
+    </message>
+    <message>
+        <source>The replay stopped: %1</source>
+        <translation>回放已中止：%1</translation>
+    </message>
+    <message>
+        <source>All torque off: the replay was stopped.</source>
+        <translation>全部关闭扭矩：回放已停止。</translation>
+    </message>
+    <message>
+        <source>Loop %1 of %2: easing to the first frame</source>
+        <translation>第 %1/%2 遍：正在平缓移动到第一帧</translation>
+    </message>
+    <message>
+        <source>Loop %1 of %2: playing %3 frames over %4 s</source>
+        <translation>第 %1/%2 遍：正在 %4 秒内播放 %3 帧</translation>
+    </message>
+    <message>
+        <source>Loop %1 of %2: frame %3 of %4</source>
+        <translation>第 %1/%2 遍：第 %3/%4 帧</translation>
+    </message>
+    <message>
+        <source>while easing to the first frame (loop %1 of %2)</source>
+        <translation>在平缓移动到第一帧期间（第 %1/%2 遍）</translation>
+    </message>
+    <message>
+        <source>at %1 s of %2 s (loop %3 of %4)</source>
+        <translation>在第 %1 秒（共 %2 秒，第 %3/%4 遍）</translation>
+    </message>
+    <message>
+        <source>The replay was stopped %1; the arm holds where it stood.</source>
+        <translation>回放已%1停止；机械臂保持在停止时的位置。</translation>
+    </message>
+    <message>
+        <source>The replay was stopped %1, but the arm could not be held: %2</source>
+        <translation>回放已%1停止，但无法使机械臂保持位置：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>The settings of %n servo(s) read.</source>
+        <translation>
+            <numerusform>已读取 %n 个舵机的设置。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n setting(s) fixed and verified.</source>
+        <translation>
+            <numerusform>%n 项设置中已有 %1 项修复并验证。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>
@@ -3318,6 +3426,10 @@ An ID in use is refused.</source>
     <message>
         <source>not checked</source>
         <translation>未检查</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>设置</translation>
     </message>
 </context>
 <context>
@@ -4169,6 +4281,14 @@ An ID in use is refused.</source>
         <source>&lt;p&gt;Home: &lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</source>
         <translation>&lt;p&gt;项目主页：&lt;a href=&quot;%1&quot;&gt;%1&lt;/a&gt;&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>Record and &amp;replay…</source>
+        <translation>记录与回放(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Record joints moved by hand and play the motion back</source>
+        <translation>记录手动移动的关节，并回放该动作</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -4501,6 +4621,69 @@ An ID in use is refused.</source>
     <message>
         <source>Scan the bus to find servos.</source>
         <translation>扫描总线以查找舵机。</translation>
+    </message>
+</context>
+<context>
+    <name>MotionRecording</name>
+    <message>
+        <source>servo %1</source>
+        <translation>舵机 %1</translation>
+    </message>
+    <message>
+        <source>%1 (servo %2)</source>
+        <translation>%1（舵机 %2）</translation>
+    </message>
+    <message>
+        <source>the file is empty: a recording starts with a header line (time_s and one column per joint)</source>
+        <translation>文件为空：记录应以表头行开始（time_s 及每个关节一列）</translation>
+    </message>
+    <message>
+        <source>the first column of the header is &quot;%1&quot;, not time_s: this is not a motion recording</source>
+        <translation>表头的第一列是 &quot;%1&quot;，而不是 time_s：这不是动作记录</translation>
+    </message>
+    <message>
+        <source>column &quot;%1&quot; names no servo: a joint&apos;s column is id_N or NAME@N, N its servo&apos;s ID (0 to 253)</source>
+        <translation>列 &quot;%1&quot; 未对应任何舵机：关节列名应为 id_N 或 NAME@N，N 为其舵机的 ID（0 到 253）</translation>
+    </message>
+    <message>
+        <source>servo %1 has two columns</source>
+        <translation>舵机 %1 有两列</translation>
+    </message>
+    <message>
+        <source>the header names no joint after time_s</source>
+        <translation>表头在 time_s 之后没有任何关节</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>第 %1 行</translation>
+    </message>
+    <message>
+        <source>line %1 has %2 cells where the header has %3</source>
+        <translation>第 %1 行有 %2 个单元格，而表头有 %3 个</translation>
+    </message>
+    <message>
+        <source>line %1: the time &quot;%2&quot; is not a number of seconds from 0</source>
+        <translation>第 %1 行：时间 &quot;%2&quot; 不是从 0 起的秒数</translation>
+    </message>
+    <message>
+        <source>line %1: the time goes back, from %2 s to %3 s</source>
+        <translation>第 %1 行：时间倒退，从 %2 秒退到 %3 秒</translation>
+    </message>
+    <message>
+        <source>line %1: &quot;%2&quot; is no position of %3 (a number of steps)</source>
+        <translation>第 %1 行：&quot;%2&quot; 不是 %3 的位置（应为步数）</translation>
+    </message>
+    <message>
+        <source>the recording has a header but no frame</source>
+        <translation>该记录只有表头，没有任何帧</translation>
+    </message>
+    <message>
+        <source>the file is too large for a motion recording</source>
+        <translation>文件太大，不可能是动作记录</translation>
+    </message>
+    <message>
+        <source>nothing was recorded</source>
+        <translation>未记录任何内容</translation>
     </message>
 </context>
 <context>
@@ -4943,6 +5126,18 @@ An ID in use is refused.</source>
     <message>
         <source>%1 is %2, not %3</source>
         <translation>%1 为 %2，而不是 %3</translation>
+    </message>
+    <message>
+        <source>%1 could not be read back</source>
+        <translation>无法回读 %1</translation>
+    </message>
+    <message>
+        <source>%1 reads %2, with bits 0x%3 still set</source>
+        <translation>%1 读数为 %2，位 0x%3 仍处于置位状态</translation>
+    </message>
+    <message>
+        <source>%1 is %2, with bits 0x%3 set</source>
+        <translation>%1 为 %2，位 0x%3 已置位</translation>
     </message>
 </context>
 <context>
@@ -5938,6 +6133,155 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>RecordReplayDialog</name>
+    <message>
+        <source>Record and replay</source>
+        <translation>记录与回放</translation>
+    </message>
+    <message>
+        <source>Joints to record</source>
+        <translation>要记录的关节</translation>
+    </message>
+    <message>
+        <source>The servos whose positions are recorded; their torque is left as it is, so switch it off to move them by hand</source>
+        <translation>记录这些舵机的位置；其扭矩保持不变，因此要手动移动它们，请先关闭扭矩</translation>
+    </message>
+    <message>
+        <source>&amp;Record</source>
+        <translation>记录(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>&amp;Save…</source>
+        <translation>保存(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>记录</translation>
+    </message>
+    <message>
+        <source>Nothing recorded yet.</source>
+        <translation>尚未记录任何内容。</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>回放</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> ×</translation>
+    </message>
+    <message>
+        <source>2 plays twice as fast, 0.5 at half speed</source>
+        <translation>2 表示以两倍速度播放，0.5 表示以一半速度播放</translation>
+    </message>
+    <message>
+        <source>Between two loops the arm eases back to the first frame</source>
+        <translation>两遍之间，机械臂会平缓地回到第一帧</translation>
+    </message>
+    <message>
+        <source>Switch torque off at the end</source>
+        <translation>结束时关闭扭矩</translation>
+    </message>
+    <message>
+        <source>Otherwise the arm holds the last frame</source>
+        <translation>否则机械臂保持最后一帧的姿态</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>播放(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Torque on where the arm stands, a gentle move to the first frame, then the frames at their recorded times</source>
+        <translation>在机械臂当前位置开启扭矩，平缓移动到第一帧，然后按记录的时间播放各帧</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>停止(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Stop recording, or stop the replay with the arm held where it stands</source>
+        <translation>停止记录，或停止回放并使机械臂保持在当前位置</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <source>Loops:</source>
+        <translation>遍数：</translation>
+    </message>
+    <message>
+        <source>Nothing was recorded: not every joint answered.</source>
+        <translation>未记录任何内容：并非所有关节都有应答。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recorded %n frame(s) over %1 s.</source>
+        <translation>
+            <numerusform>已在 %1 秒内记录 %n 帧。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Servo %1 (%2, %3 bps)</source>
+        <translation>舵机 %1（%2，%3 bps）</translation>
+    </message>
+    <message>
+        <source>Stop &amp;recording</source>
+        <translation>停止记录(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Recording: move the joints by hand, then Stop.</source>
+        <translation>正在记录：请手动移动关节，然后点“停止”。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording: %n frame(s), %1 s</source>
+        <translation>
+            <numerusform>正在记录：%n 帧，%1 秒</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Replaying: the arm eases to the first frame first.</source>
+        <translation>正在回放：机械臂先平缓移动到第一帧。</translation>
+    </message>
+    <message>
+        <source>Stopping: the arm is held where it stands…</source>
+        <translation>正在停止：机械臂保持在当前位置…</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1 s of %2 s, frame %3 of %4 — %5</source>
+        <translation>%1 秒 / %2 秒，第 %3/%4 帧 — %5</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>打开记录</translation>
+    </message>
+    <message>
+        <source>Motion recordings (*.csv)</source>
+        <translation>动作记录 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save recording</source>
+        <translation>保存记录</translation>
+    </message>
+    <message numerus="yes">
+        <source>Opened %1: %n frame(s) over %2 s.</source>
+        <translation>
+            <numerusform>已打开 %1：%2 秒内共 %n 帧。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>已保存到 %1。</translation>
+    </message>
+</context>
+<context>
     <name>RegisterTable</name>
     <message>
         <source>not valid JSON at offset %1: %2</source>
@@ -6441,6 +6785,26 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>the template has format version %1 and was written by a newer ServoBench; this version reads format version %2 and older</source>
         <translation>该模板的格式版本为 %1，由较新版本的 ServoBench 写入；本版本只能读取格式版本 %2 及更早版本</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be an object of bit numbers by register</source>
+        <translation>&quot;%1&quot; 必须是以寄存器为键、以位编号为值的对象</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is no writable register of %3 servos</source>
+        <translation>%1：&quot;%2&quot; 不是 %3 舵机的可写寄存器</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is set by its own flow, not by a template</source>
+        <translation>%1：&quot;%2&quot; 由其专门的流程设置，不能通过模板设置</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; must be a list of bit numbers</source>
+        <translation>%1：&quot;%2&quot; 必须是位编号列表</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; has bits 0 to %3</source>
+        <translation>%1：&quot;%2&quot; 的位为 0 到 %3</translation>
     </message>
 </context>
 <context>
@@ -6966,6 +7330,196 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>SettingsCheck</name>
+    <message>
+        <source>not written: torque is on, and writing %1 could move the horn; switch the torque off first</source>
+        <translation>未写入：扭矩已开启，写入 %1 可能使舵盘移动；请先关闭扭矩</translation>
+    </message>
+    <message>
+        <source>written, but it reads back %1, not %2</source>
+        <translation>已写入，但回读为 %1，而不是 %2</translation>
+    </message>
+    <message>
+        <source>not verified: %1</source>
+        <translation>未验证：%1</translation>
+    </message>
+    <message>
+        <source>ServoBench has no register table for model %1.</source>
+        <translation>ServoBench 没有型号 %1 的寄存器表。</translation>
+    </message>
+    <message>
+        <source>nothing to write fixes this</source>
+        <translation>无法通过写入修复</translation>
+    </message>
+    <message>
+        <source>not written: servo %1 does not answer (%2); check its cable and power</source>
+        <translation>未写入：舵机 %1 无应答（%2）；请检查其线缆和电源</translation>
+    </message>
+    <message>
+        <source>%1 is %2; %3 sets %4 (a RAM register: it is lost at power-off and set again at every connect).</source>
+        <translation>%1 为 %2；%3 将其设为 %4（RAM 寄存器：断电后丢失，每次连接时重新设置）。</translation>
+    </message>
+    <message>
+        <source>%1 is %2; %3 sets %4.</source>
+        <translation>%1 为 %2；%3 将其设为 %4。</translation>
+    </message>
+    <message>
+        <source>%1 is %2 with bits 0x%3 set; %4 clears them.</source>
+        <translation>%1 为 %2，位 0x%3 已置位；%4 会将其清除。</translation>
+    </message>
+    <message>
+        <source>Phase bit 4 is set: the servo counts whole turns, so its position leaves 0-4095 and goals and calibration no longer match it.</source>
+        <translation>相位第 4 位已置位：舵机会累计整圈数，因此其位置会超出 0-4095，目标和校准都不再与之相符。</translation>
+    </message>
+    <message>
+        <source>The torque limit is 0: the servo has no force to move with.</source>
+        <translation>扭矩限制为 0：舵机没有可用于运动的力量。</translation>
+    </message>
+    <message>
+        <source>The maximum torque is 0: at every power-on the torque limit starts at 0, and the servo does not move.</source>
+        <translation>最大扭矩为 0：每次上电时扭矩限制都从 0 开始，舵机不会运动。</translation>
+    </message>
+    <message>
+        <source>The operating mode is %1, not position (0): a joint does not follow its goal position.</source>
+        <translation>运行模式为 %1，而不是位置模式（0）：关节不会跟随其目标位置。</translation>
+    </message>
+    <message>
+        <source>Both angle limits are 0: the servo turns without end (multi-turn or wheel), not as a joint.</source>
+        <translation>两个角度限制均为 0：舵机会无限转动（多圈或轮式），而不是作为关节工作。</translation>
+    </message>
+    <message>
+        <source>The minimum angle limit %1 is not below the maximum %2: the servo refuses every goal.</source>
+        <translation>最小角度限制 %1 不小于最大角度限制 %2：舵机会拒绝所有目标。</translation>
+    </message>
+    <message>
+        <source>The servo waits %1 µs before each answer: every read of the bus is that much slower.</source>
+        <translation>舵机每次应答前会等待 %1 µs：总线上的每次读取都会因此变慢。</translation>
+    </message>
+    <message>
+        <source>The EEPROM is unlocked: a stray write would change settings for good.</source>
+        <translation>EEPROM 未上锁：一次误写就会永久更改设置。</translation>
+    </message>
+    <message>
+        <source>The supply reads %1 V, above the maximum voltage setting of %2 V: the servo reports a voltage error and may not move. Use a supply it is made for, or raise the limit if it is a higher-voltage model.</source>
+        <translation>电源电压为 %1 V，高于最高电压设置 %2 V：舵机会报告电压错误，可能无法运动。请使用适合它的电源；如果它是更高电压的型号，则提高该限制。</translation>
+    </message>
+    <message>
+        <source>The supply reads %1 V, below the minimum voltage setting of %2 V: the servo reports a voltage error and may not move. Charge the battery or check the supply.</source>
+        <translation>电源电压为 %1 V，低于最低电压设置 %2 V：舵机会报告电压错误，可能无法运动。请给电池充电或检查电源。</translation>
+    </message>
+    <message>
+        <source>Its settings could not be read: %1</source>
+        <translation>无法读取其设置：%1</translation>
+    </message>
+    <message>
+        <source>fixed, verified</source>
+        <translation>已修复，已验证</translation>
+    </message>
+</context>
+<context>
+    <name>SettingsCheckPanel</name>
+    <message>
+        <source>Finds the settings that stop a servo moving or make it misbehave: multi-turn phase bit, torque limits at 0, a mode other than position, angle limits, a slow return delay, an unlocked EEPROM, mixed firmware, voltage limits the supply breaks, and what differs from the robot template. It only reads; Fix writes the expected value and reads it back (limits, offset, mode, torque limit and phase only with torque off).</source>
+        <translation>查找会让舵机无法运动或行为异常的设置：多圈相位位、为 0 的扭矩限制、位置模式以外的运行模式、角度限制、过慢的返回延时、未上锁的 EEPROM、不一致的固件、电源不满足的电压限制，以及与机器人模板不同之处。该检查只读取；“修复”会写入预期值并回读（限制、偏移、模式、扭矩限制和相位仅在扭矩关闭时写入）。</translation>
+    </message>
+    <message>
+        <source>Also compare the servos with this robot template&apos;s settings</source>
+        <translation>同时将舵机与此机器人模板的设置进行比较</translation>
+    </message>
+    <message>
+        <source>No robot template</source>
+        <translation>无机器人模板</translation>
+    </message>
+    <message>
+        <source>Check settings</source>
+        <translation>检查设置</translation>
+    </message>
+    <message>
+        <source>Read the settings of every servo found</source>
+        <translation>读取找到的每个舵机的设置</translation>
+    </message>
+    <message>
+        <source>Fix all</source>
+        <translation>全部修复</translation>
+    </message>
+    <message>
+        <source>Write the expected value of every finding that a write fixes, each read back</source>
+        <translation>为每个可通过写入修复的问题写入预期值，并逐一回读</translation>
+    </message>
+    <message>
+        <source>Robot:</source>
+        <translation>机器人：</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>设置项</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Expected</source>
+        <translation>预期值</translation>
+    </message>
+    <message>
+        <source>Why</source>
+        <translation>原因</translation>
+    </message>
+    <message>
+        <source>Fix</source>
+        <translation>修复</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>No problem found in the settings.</source>
+        <translation>设置中未发现问题。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s).</source>
+        <translation>
+            <numerusform>发现 %n 个问题。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading the settings of %n servo(s)…</source>
+        <translation>
+            <numerusform>正在读取 %n 个舵机的设置…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>There is no finding in row %1.</source>
+        <translation>第 %1 行没有问题。</translation>
+    </message>
+    <message>
+        <source>Writing and reading back…</source>
+        <translation>正在写入并回读…</translation>
+    </message>
+    <message>
+        <source>Nothing to write fixes this</source>
+        <translation>无法通过写入修复</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2 to servo %3 and read it back</source>
+        <translation>将 %1 = %2 写入舵机 %3 并回读</translation>
+    </message>
+    <message>
+        <source>Fixed, verified</source>
+        <translation>已修复，已验证</translation>
+    </message>
+    <message>
+        <source>%1 Check again to see the servos as they are now.</source>
+        <translation>%1 请重新检查，以查看舵机的当前状态。</translation>
+    </message>
+</context>
+<context>
     <name>SettingsFile</name>
     <message>
         <source>the file is too large for a profile or a robot template</source>
@@ -6988,10 +7542,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>%1 不适用于舵机 %2：%3</translation>
     </message>
     <message>
-        <source>torque is on: switch it off before changing the position offset or limits</source>
-        <translation>扭矩已开启：更改位置偏移或角度限制前请先关闭扭矩</translation>
-    </message>
-    <message>
         <source>Not copied from the profile: %1 (each servo&apos;s own calibration, not a setting to copy; use a robot template or Load calibration for it).</source>
         <translation>未从配置文件复制：%1（这是每个舵机各自的校准，不是可复制的设置；请使用机器人模板或“加载校准”）。</translation>
     </message>
@@ -7006,6 +7556,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>failed</source>
         <translation>失败</translation>
+    </message>
+    <message>
+        <source>torque is on: switch it off before changing the position offset, limits or phase</source>
+        <translation>扭矩已开启：更改位置偏移、角度限制或相位前请先关闭扭矩</translation>
     </message>
 </context>
 <context>
@@ -7575,6 +8129,17 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Time (s)</source>
         <translation>时间（秒）</translation>
+    </message>
+</context>
+<context>
+    <name>TeleopMapping</name>
+    <message>
+        <source>%1 (not in the leader&apos;s file)</source>
+        <translation>%1（不在主臂的文件中）</translation>
+    </message>
+    <message>
+        <source>%1 (not in the follower&apos;s file)</source>
+        <translation>%1（不在从臂的文件中）</translation>
     </message>
 </context>
 <context>
@@ -8997,6 +9562,186 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>舵机 %1 的应答带有错误位 0x%2（%3）：servoctl doctor 会说明原因</translation>
     </message>
     <message>
+        <source>decode --log takes the recording only, no bytes</source>
+        <translation>decode --log 只接受记录文件，不接受字节</translation>
+    </message>
+    <message>
+        <source>share recordings are of Feetech buses: --family feetech</source>
+        <translation>共享记录属于飞特总线：--family feetech</translation>
+    </message>
+    <message>
+        <source>%1 --update FILE takes the joints&apos; names from the file and saves to it: no --out or --names</source>
+        <translation>%1 --update FILE 从该文件获取关节名称并保存到该文件：不能使用 --out 或 --names</translation>
+    </message>
+    <message>
+        <source>servo %1 is no joint of %2</source>
+        <translation>舵机 %1 不是 %2 的关节</translation>
+    </message>
+    <message>
+        <source>%1 --robot: %2</source>
+        <translation>%1 --robot：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>fixing %n setting(s)…</source>
+        <translation>
+            <numerusform>正在修复 %n 项设置…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing to write fixes this</source>
+        <translation>无法通过写入修复</translation>
+    </message>
+    <message numerus="yes">
+        <source>No problem found in the settings of %n servo(s).</source>
+        <translation>
+            <numerusform>%n 个舵机的设置中未发现问题。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>SETTING</source>
+        <translation>设置项</translation>
+    </message>
+    <message>
+        <source>VALUE</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>EXPECTED</source>
+        <translation>预期值</translation>
+    </message>
+    <message>
+        <source>WHY</source>
+        <translation>原因</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n finding(s); --fix writes the expected values and reads them back.</source>
+        <translation>
+            <numerusform>发现 %n 个问题；--fix 会写入预期值并回读。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>servo %1 %2: %3 → %4: %5</source>
+        <translation>舵机 %1 %2：%3 → %4：%5</translation>
+    </message>
+    <message>
+        <source>--%1 must be %2</source>
+        <translation>--%1 必须是%2</translation>
+    </message>
+    <message>
+        <source>%1 needs --out FILE: the CSV file to record into</source>
+        <translation>%1 需要 --out FILE：用于记录的 CSV 文件</translation>
+    </message>
+    <message>
+        <source>a number of frames per second from 1 to %1</source>
+        <translation>每秒帧数，取值 1 到 %1</translation>
+    </message>
+    <message>
+        <source>servo %1 is of an unknown model (%2): its position cannot be read</source>
+        <translation>舵机 %1 为未知型号（%2）：无法读取其位置</translation>
+    </message>
+    <message numerus="yes">
+        <source>recording %n joint(s); move them by hand, Ctrl-C ends</source>
+        <translation>
+            <numerusform>正在记录 %n 个关节；请手动移动它们，按 Ctrl-C 结束</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no frame was recorded: not every servo answered; nothing was written</source>
+        <translation>未记录任何帧：并非所有舵机都有应答；未写入任何内容</translation>
+    </message>
+    <message numerus="yes">
+        <source>recorded %n frame(s) of %1 joint(s) over %2 s into %3</source>
+        <translation>
+            <numerusform>已将 %1 个关节在 %2 秒内的 %n 帧记录到 %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1; what was recorded until then is in %2</source>
+        <translation>%1；此前记录的内容保存在 %2 中</translation>
+    </message>
+    <message>
+        <source>column %1 matches no servo: %2; nothing was moved</source>
+        <translation>列 %1 与任何舵机都不匹配：%2；未移动任何舵机</translation>
+    </message>
+    <message>
+        <source>column %1: servo %2 is of an unknown model (%3); nothing was moved</source>
+        <translation>列 %1：舵机 %2 为未知型号（%3）；未移动任何舵机</translation>
+    </message>
+    <message>
+        <source>a number above 0 (2 plays twice as fast)</source>
+        <translation>大于 0 的数（2 表示以两倍速度播放）</translation>
+    </message>
+    <message>
+        <source>a number of seconds from 0</source>
+        <translation>不小于 0 的秒数</translation>
+    </message>
+    <message>
+        <source>interrupted again before the arm was held: check the servos&apos; torque</source>
+        <translation>机械臂保持位置之前再次被中断：请检查舵机的扭矩</translation>
+    </message>
+    <message>
+        <source>joint %1 (servo %2) does not answer: %3</source>
+        <translation>关节 %1（舵机 %2）无应答：%3</translation>
+    </message>
+    <message>
+        <source>joint %1 (servo %2) does not hold what %3 says (%4): write the file to the arm first: servoctl --port %5 feetech calibration load %3</source>
+        <translation>关节 %1（舵机 %2）中的值与 %3 不符（%4）：请先将该文件写入机械臂：servoctl --port %5 feetech calibration load %3</translation>
+    </message>
+    <message>
+        <source>%1 needs --port FOLLOWER, --leader PORT, --calibration FILE and --leader-calibration FILE</source>
+        <translation>%1 需要 --port FOLLOWER、--leader PORT、--calibration FILE 和 --leader-calibration FILE</translation>
+    </message>
+    <message>
+        <source>--leader and --port name the same port: the leader and the follower are two arms on two adapters</source>
+        <translation>--leader 和 --port 指定了同一个端口：主臂和从臂是接在两个适配器上的两条机械臂</translation>
+    </message>
+    <message>
+        <source>the two files name different joints: %1</source>
+        <translation>两个文件中的关节不一致：%1</translation>
+    </message>
+    <message>
+        <source>the follower&apos;s torque could not be switched on</source>
+        <translation>无法开启从臂的扭矩</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower holds; it moves to the leader&apos;s pose at %1°/s at most, then follows. Ctrl-C stops (it holds).</source>
+        <translation>servoctl：从臂保持位置；它以最高 %1°/s 的速度移动到主臂的姿态，然后跟随。按 Ctrl-C 停止（从臂保持位置）。</translation>
+    </message>
+    <message>
+        <source>%1 was lost: %2</source>
+        <translation>%1已失去连接：%2</translation>
+    </message>
+    <message>
+        <source>the follower</source>
+        <translation>从臂</translation>
+    </message>
+    <message>
+        <source>the leader</source>
+        <translation>主臂</translation>
+    </message>
+    <message numerus="yes">
+        <source>servoctl: %n frame(s) of the follower&apos;s goals recorded in %1</source>
+        <translation>
+            <numerusform>servoctl：已将从臂目标的 %n 帧记录到 %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>servoctl: %1 cycle(s) in %2 s (%3 per second), leader to follower %4 ms (median)</source>
+        <translation>servoctl：%2 秒内 %1 个周期（每秒 %3 个），主臂到从臂的延迟 %4 ms（中位数）</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower&apos;s torque is off</source>
+        <translation>servoctl：从臂的扭矩已关闭</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower holds where it is</source>
+        <translation>servoctl：从臂保持在当前位置</translation>
+    </message>
+    <message>
+        <source>servoctl: the follower could not be reached to stop it</source>
+        <translation>servoctl：无法连接从臂以使其停止</translation>
+    </message>
+    <message>
         <source>usage: servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
 
 commands:
@@ -9049,17 +9794,47 @@ commands:
                                          limits; --move-test also moves each servo without
                                          a fault 100 steps and back (rise time, overshoot,
                                          steady-state error); exit 1 when a servo has a fault
+  feetech check --ids LIST [--robot ROBOT] [--fix]
+                                         find settings that stop a servo moving or make it
+                                         misbehave: phase bit 4 (multi-turn), torque limit
+                                         or maximum torque 0, a mode other than position,
+                                         angle limits, return delay, an open EEPROM, mixed
+                                         firmware, voltage limits the supply breaks; ROBOT
+                                         (so101-follower, ... or a template file) adds its
+                                         settings; --fix writes the expected values, read
+                                         back (limits, offset, mode, torque limit and phase
+                                         only with torque off); exit 1 when something is left
   feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
                                          stream position, speed, load, voltage,
                                          temperature and current (SYNC READ)
   feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
-                    [--dry-run] --out FILE
+                    [--dry-run] --out FILE | --update FILE
                                          torque off, record each joint&apos;s range by hand
                                          (Enter ends), centre it on the encoder: offset
                                          and limits written, LeRobot calibration saved
+                                         (--update: into FILE, its other joints kept)
   feetech calibration save --ids LIST [--names LIST] FILE
                                          the servos&apos; offsets and limits to a LeRobot file
   feetech calibration load FILE          write a LeRobot calibration file, verified
+  feetech record --ids LIST --out FILE [--names LIST] [--rate HZ] [--duration S]
+                                         record the positions moved by hand (torque left
+                                         as it is) until --duration or Ctrl-C: CSV with
+                                         time_s and a column per joint (id_N or NAME@N),
+                                         in steps; --rate frames per second (default 50)
+  feetech replay FILE [--speed X] [--ease S] [--loop N] [--release]
+                                         play a recording: refused when a frame is beyond
+                                         a servo&apos;s angle limits; torque on where the arm
+                                         stands, a gentle move to the first frame (over S
+                                         seconds; default from the distance), the frames
+                                         at their times (--speed 2: twice as fast), N
+                                         times, then hold (--release: torque off). Ctrl-C
+                                         holds the arm where it is
+  feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
+                 [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
+                 [--release]
+                                         the leader arm on PORT drives this follower,
+                                         joints matched by name; Ctrl-C holds;
+                                         --record: the follower&apos;s goals, for replay
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          stand between another program and the servos:
                                          it opens PATH, every byte is forwarded; --json
@@ -9134,17 +9909,47 @@ exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
                                          限制之内；--move-test 还会让每个无故障的舵机
                                          移动 100 步再返回（上升时间、超调、
                                          稳态误差）；有舵机存在故障时退出码为 1
+  feetech check --ids LIST [--robot ROBOT] [--fix]
+                                         查找会让舵机无法运动或行为异常的设置：
+                                         相位第 4 位（多圈），扭矩限制
+                                         或最大扭矩为 0，位置模式以外的运行模式，
+                                         角度限制，返回延时，未上锁的 EEPROM，不一致的
+                                         固件，电源不满足的电压限制；ROBOT
+                                         （so101-follower、... 或模板文件）会加入其
+                                         设置；--fix 写入预期值并回读
+                                         （限制、偏移、模式、扭矩限制和相位
+                                         仅在扭矩关闭时写入）；仍有问题时退出码为 1
   feetech monitor --ids LIST [--rate HZ|max] [--duration S] [--csv]
                                          连续输出位置、速度、负载、电压、
                                          温度和电流（SYNC READ）
   feetech calibrate --ids LIST [--names LIST] [--full-turn LIST] [--duration S]
-                    [--dry-run] --out FILE
+                    [--dry-run] --out FILE | --update FILE
                                          关闭扭矩，用手记录每个关节的范围
                                          （按 Enter 结束），使其在编码器上居中：写入偏移
                                          和限制，保存 LeRobot 校准文件
+                                         （--update：保存到 FILE，保留其中的其他关节）
   feetech calibration save --ids LIST [--names LIST] FILE
                                          将舵机的偏移和限制保存到 LeRobot 文件
   feetech calibration load FILE          写入 LeRobot 校准文件，写后验证
+  feetech record --ids LIST --out FILE [--names LIST] [--rate HZ] [--duration S]
+                                         记录手动移动的位置（扭矩保持
+                                         原样），直到 --duration 结束或按 Ctrl-C：CSV 包含
+                                         time_s 及每个关节一列（id_N 或 NAME@N），
+                                         单位为步；--rate 为每秒帧数（默认 50）
+  feetech replay FILE [--speed X] [--ease S] [--loop N] [--release]
+                                         播放记录：若有帧超出舵机的角度限制
+                                         则拒绝；在机械臂当前位置开启扭矩，
+                                         平缓移动到第一帧（用时 S
+                                         秒；默认根据距离确定），再按各帧的
+                                         时间播放（--speed 2：两倍速），共 N
+                                         遍，之后保持（--release：关闭扭矩）。Ctrl-C
+                                         使机械臂保持在当前位置
+  feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
+                 [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
+                 [--release]
+                                         PORT 上的主臂驱动此从臂，
+                                         关节按名称对应；Ctrl-C 使其保持；
+                                         --record：记录从臂的目标，供回放使用
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          介于另一个程序和舵机之间：该程序打开 PATH，
                                          每个字节都被转发；--json 打印每个事务，
@@ -9167,14 +9972,6 @@ exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
 
 退出状态：0 完成，1 设备或链路故障，2 用法错误（未发送任何内容）
 </translation>
-    </message>
-    <message>
-        <source>decode --log takes the recording only, no bytes</source>
-        <translation>decode --log 只接受记录文件，不接受字节</translation>
-    </message>
-    <message>
-        <source>share recordings are of Feetech buses: --family feetech</source>
-        <translation>共享记录属于飞特总线：--family feetech</translation>
     </message>
 </context>
 <context>
