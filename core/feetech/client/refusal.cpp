@@ -113,6 +113,13 @@ QString Refusal::describe() const
         return Tr::tr("The rate cannot be negative.");
     case Code::UndecodableFeedback:
         return Tr::tr("Servo %1 is of an unknown model: its feedback cannot be decoded.").arg(id);
+    case Code::BusShared:
+        return Tr::tr("The bus is shared with another program: this would change the port's rate "
+                      "under it. Stop sharing first.");
+    case Code::AlreadyShared:
+        return Tr::tr("The bus is shared already.");
+    case Code::NoSharePath:
+        return Tr::tr("Name the path the other program opens.");
     }
     return {};
 }

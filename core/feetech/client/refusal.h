@@ -36,6 +36,9 @@ public:
         NoServoToMonitor, // a telemetry subscription of no servo
         NegativeRate, // a telemetry rate below 0
         UndecodableFeedback, // servoId: an unknown model, whose feedback block is not known
+        BusShared, // the bus is shared with another program and this would get in its way
+        AlreadyShared, // the bus is shared already
+        NoSharePath, // no path given for the other program to open
     };
 
     Refusal() = default;

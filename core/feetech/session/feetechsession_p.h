@@ -6,12 +6,14 @@
 #include "busexchange.h"
 #include "busoperation.h"
 #include "busscan.h"
+#include "busshare.h"
 #include "guardkeeper.h"
 #include "guidedflows.h"
 #include "healthcheck.h"
 #include "healthmovetest.h"
 #include "jointidentify.h"
 #include "motorsetup.h"
+#include "sharelogentries.h"
 #include "telemetrycycle.h"
 
 #include <deque>
@@ -45,6 +47,8 @@ struct SessionPrivate
     HealthCheck *health = nullptr;
     HealthMoveTest *moveTest = nullptr;
     GuardKeeper *guard = nullptr;
+    share::BusShare *share = nullptr;
+    share::ShareLogEntries shareLog; // the other program's frames, for the packet log
 
     std::deque<Queued> queue;
     bool running = false;
