@@ -258,6 +258,34 @@ private slots:
         program.close();
     }
 
+    void theWatchReadsOnlyOnceAsked()
+    {
+        QVERIFY(startSharing());
+        ProgramPort program;
+        QVERIFY(program.open(sharePath()));
+        QVERIFY(program.readModel(1));
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->servos()->count(), 1, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(testsupport::feetechFramesReceived(logPath()).size(), 1, 5000);
+
+        // In the program's idle gaps it reads the servo the program uses, one READ at a time.
+        m_client->share()->setWatch(true);
+        QVERIFY(m_client->share()->isWatching());
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->share()->watchReads() > 0, 5000);
+        QVERIFY(!testsupport::feetechRequestsReceived(logPath(), feetech::Instruction::Read, 1)
+                     .isEmpty());
+        // The program is answered as before.
+        QVERIFY(program.readModel(1));
+        program.close();
+    }
+
+    void reconnectingEndsTheShare()
+    {
+        QVERIFY(startSharing());
+        m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->share()->state(), ShareService::State::Off, 10000);
+        QVERIFY(!QFileInfo::exists(sharePath()));
+    }
+
     void stopSharingGivesTheBusBack()
     {
         QVERIFY(startSharing());

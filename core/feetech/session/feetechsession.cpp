@@ -249,6 +249,7 @@ bool Session::isStreaming() const
 
 void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode echo)
 {
+    d->share->stop(); // shared at the port being left: the other program's port goes with it
     d->bus->forgetLatencies();
     if (d->link->open(portName, baud, echo))
         d->link->setState(seriallink::ConnectionState::Connected);
