@@ -6,11 +6,13 @@
 #include "busclient.h"
 #include "feetechpacket.h"
 #include "hex.h"
+#include "monitorpage.h"
 #include "packetlogdock.h"
 #include "packetlogmodel.h"
 #include "registertable.h"
 #include "sharedialog.h"
 #include "sharerecordingwindow.h"
+#include "telemetryplot.h"
 
 #include <QAction>
 #include <QApplication>
@@ -166,6 +168,36 @@ private slots:
         QVERIFY(dialog->pathEdit()->isEnabled());
         QVERIFY(dialog->startStopButton()->text().contains(QLatin1String("Start")));
         QVERIFY(!QFileInfo::exists(sharePath()));
+    }
+
+    void theMonitorPlotsTheProgramsReads()
+    {
+        connectWithoutScan();
+        ShareDialog *dialog = openShareDialog();
+        QVERIFY(startSharing(*dialog));
+        ProgramPort program;
+        QVERIFY(program.open(sharePath()));
+        QVERIFY(program.readModel(1));
+        QTRY_COMPARE_WITH_TIMEOUT(client()->servos()->count(), 1, 5000);
+
+        MonitorPage *monitor = workspace()->monitorPage();
+        monitor->setSelectedServos({0});
+        QString error;
+        QVERIFY2(monitor->start(&error), qPrintable(error));
+        QLabel *status = monitor->findChild<QLabel *>(QStringLiteral("monitorStatus"));
+        QVERIFY(status->text().contains(QLatin1String("other program")));
+        const feetech::Block block = testsupport::stsFeedbackBlock();
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(
+                program.ask(feetech::syncRead(quint8(block.address), quint8(block.size), {1}), 1)
+                    .size(),
+                1);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            monitor->plot()->bufferedPointCount(1, feetech::Quantity::Position, k1M) >= 3, 5000);
+        // Only the program's requests reached the servos.
+        QCOMPARE(testsupport::feetechFramesReceived(logPath()), program.requests());
+        monitor->stop();
+        program.close();
     }
 
     void thePacketLogOpensTheRecordingOfAShare()
