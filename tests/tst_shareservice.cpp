@@ -132,6 +132,10 @@ private slots:
         QVERIFY(batch.first().value(feetech::Quantity::Voltage).has_value());
         QVERIFY(batch.first().value(feetech::Quantity::Temperature).has_value());
         QVERIFY(m_client->telemetry()->latestSample(index).has_value());
+        // What it read shows in the servo's parameters as well.
+        QTRY_COMPARE_WITH_TIMEOUT(
+            m_client->servos()->parameters(index)->deviceValue(QStringLiteral("present_position")),
+            std::optional<qint32>(simulatorValue(1, u"present_position")), 5000);
 
         // The packet log has the program's frames: five requests, seven answers.
         QTRY_COMPARE_WITH_TIMEOUT(programLines(), 12, 5000);

@@ -29,6 +29,10 @@ namespace {
 
 using Queued = SessionPrivate::Queued;
 
+// Where a READ's address and a status frame's data begin: after header, ID, length and the
+// instruction or error byte.
+constexpr int kShareDataFrom = 5;
+
 // Where a paused or continued operation goes back in: behind any All torque off.
 std::deque<Queued>::iterator afterTorqueOff(std::deque<Queued> &queue)
 {
@@ -146,6 +150,25 @@ void Session::connectShare()
                     && frame.direction != share::FrameDirection::ToProgram)
                     return;
                 d->link->logEntry(d->shareLog.entry(frame, QDateTime::currentMSecsSinceEpoch()));
+            });
+    // What the program reads of a servo's memory is what the servo holds: the parameter models
+    // show it as a background refresh would, with no read of ours.
+    connect(d->share, &share::BusShare::transactionEnded, this,
+            [this](const share::SharedTransaction &transaction) {
+                const quint8 code = transaction.instruction();
+                if (transaction.own
+                    || (code != quint8(Instruction::Read) && code != quint8(Instruction::SyncRead))
+                    || transaction.request.size() <= kShareDataFrom)
+                    return;
+                const int address = quint8(transaction.request.at(kShareDataFrom));
+                const qint32 baud = d->link->transport().baudRate();
+                for (const QByteArray &reply : transaction.replies) {
+                    if (reply.size() <= kShareDataFrom + 1)
+                        continue;
+                    emit memoryRead(quint8(reply.at(2)), baud, address,
+                                    reply.mid(kShareDataFrom, reply.size() - kShareDataFrom - 1),
+                                    ReadSource::Refresh, quint8(reply.at(4)));
+                }
             });
     connect(d->share, &share::BusShare::alertRaised, this, [this](const share::ShareAlert &alert) {
         d->link->logNote(Tr::tr("Shared bus alert at ID %1: %2").arg(alert.id).arg(alert.message),

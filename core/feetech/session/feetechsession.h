@@ -40,9 +40,10 @@ public:
     const seriallink::LinkCounters &counters() const;
     seriallink::LinkSession &link();
     // The bus shared with another program (off until started). While it shares, telemetry
-    // cycles and the guard's reads wait (the program's own reads feed the telemetry instead),
-    // operations go between the program's transactions, and those that would change the port's
-    // rate under it (changesPortRate) end at once with OperationFailure::BusShared.
+    // cycles and the guard's reads wait (the program's own reads feed the telemetry instead,
+    // and memoryRead as a refresh would), operations go between the program's transactions,
+    // and those that would change the port's rate under it (changesPortRate) end at once with
+    // OperationFailure::BusShared.
     share::BusShare &share();
     static bool changesPortRate(feetech::Operation kind);
     bool isBusy() const;
