@@ -53,7 +53,7 @@ private slots:
         m_controller = std::make_unique<ConnectionController>(m_ptk.get(), m_feetech.get());
         // The scan a window would start from its workspace.
         connect(m_controller.get(), &ConnectionController::scanWanted, m_feetech.get(),
-                &feetech::BusClient::scan);
+                [this](const feetech::ScanOptions &options) { m_feetech->scan(options); });
     }
 
     void cleanup()

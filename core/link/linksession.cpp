@@ -106,6 +106,11 @@ void LinkSession::logNote(const QString &note, bool error)
     emit packetLogged(entry);
 }
 
+void LinkSession::logEntry(const PacketLogEntry &entry)
+{
+    emit packetLogged(entry);
+}
+
 void LinkSession::endLink(const QString &message, Failure failure)
 {
     ++m_generation;

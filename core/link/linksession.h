@@ -65,6 +65,9 @@ public:
     // A line of the packet log that is no frame (a servo that stopped answering, say): it goes
     // wherever the link's frames go, so every view of the log shows it.
     void logNote(const QString &note, bool error = false);
+    // A line of the packet log made elsewhere on this link (the frames another program sends
+    // and hears on a shared bus): it goes wherever the link's own frames go.
+    void logEntry(const PacketLogEntry &entry);
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);

@@ -81,12 +81,15 @@ QString BusShare::start(const ShareOptions &options)
         m_recording.write(frame);
         if (frame.direction == FrameDirection::ToProgram)
             m_watch->noteActivity();
+        emit framePassed(frame);
     });
     m_programBaud = m_terminal->hostBaudRate();
     m_portAway = false;
+    m_announced.clear(); // whoever listens now hears of every servo again
     m_sharing = true;
     m_watch->setEnabled(options.watch);
     m_ticks.start();
+    emit sharingChanged(true);
     return {};
 }
 
@@ -106,6 +109,7 @@ void BusShare::stop()
     delete m_terminal;
     m_terminal = nullptr;
     m_recording.close();
+    emit sharingChanged(false);
 }
 
 bool BusShare::isSharing() const
@@ -204,6 +208,7 @@ void BusShare::onTransaction(const SharedTransaction &ended)
     SharedTransaction transaction = ended;
     const qint32 baud = m_link.transport().baudRate();
     m_servos.learn(transaction, baud);
+    announceServos();
     const quint8 code = transaction.instruction();
     if ((code == quint8(feetech::Instruction::Read)
          || code == quint8(feetech::Instruction::SyncRead))
@@ -234,6 +239,23 @@ void BusShare::onTransaction(const SharedTransaction &ended)
              {},
              QStringLiteral("alert %1 %2: %3").arg(alert.code).arg(alert.id).arg(alert.message)});
         emit alertRaised(alert);
+    }
+}
+
+void BusShare::announceServos()
+{
+    for (const quint8 id : m_servos.ids()) {
+        const auto told = m_announced.constFind(id);
+        if (told != m_announced.cend() && *told)
+            continue; // its whole identity was told already
+        const std::optional<feetech::ServoInfo> known = m_servos.knownServo(id);
+        if (!known)
+            continue;
+        const bool whole = m_servos.info(id).has_value();
+        if (told != m_announced.cend() && !whole)
+            continue; // nothing new since its model was told
+        m_announced.insert(id, whole);
+        emit servoSeen(*known);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "sharerecording.h"
 #include "telemetry.h"
 
+#include <QHash>
 #include <QObject>
 #include <QTimer>
 
@@ -72,6 +73,13 @@ signals:
     void feedbackSeen(const QVector<feetech::FeedbackSample> &samples);
     // Something that happened to the share: a rate the program set, the adapter lost or back.
     void noted(const QString &text);
+    // Every frame (or run of bytes that is none) as it passed, each way, as the recording has it.
+    void framePassed(const share::RecordedFrame &frame);
+    // A servo the traffic showed: once its model is known, and again once its whole identity
+    // (addresses 0-8) is (ObservedServos::knownServo).
+    void servoSeen(const feetech::ServoInfo &servo);
+    // Sharing began (start succeeded) or ended (stop).
+    void sharingChanged(bool sharing);
 
 private:
     void onTransaction(const SharedTransaction &transaction);
@@ -79,6 +87,7 @@ private:
     void followProgramRate();
     void onLinkStatus();
     void note(const QString &text);
+    void announceServos();
 
     seriallink::LinkSession &m_link;
     seriallink::PseudoTerminal *m_terminal = nullptr;
@@ -88,6 +97,7 @@ private:
     ShareAlerts m_alerts;
     ShareRecording m_recording;
     QTimer m_ticks; // alerts that time raises
+    QHash<quint8, bool> m_announced; // servos told of by servoSeen: whether with their identity
     qint32 m_programBaud = 0;
     bool m_portAway = false;
     bool m_sharing = false;

@@ -132,6 +132,22 @@ std::optional<feetech::ServoInfo> ObservedServos::info(quint8 id) const
         id, servo.baud, QByteArrayView(servo.memory).sliced(0, feetech::kIdentitySize));
 }
 
+std::optional<feetech::ServoInfo> ObservedServos::knownServo(quint8 id) const
+{
+    if (std::optional<feetech::ServoInfo> whole = info(id))
+        return whole;
+    if (!table(id))
+        return std::nullopt;
+    const Servo &servo = m_servos.value(id);
+    feetech::ServoInfo known;
+    known.id = id;
+    known.baud = servo.baud;
+    known.modelMajor = quint8(servo.memory.at(kModelAddress));
+    known.modelMinor = quint8(servo.memory.at(kModelAddress + 1));
+    known.model = feetech::ModelTable::builtIn().identify(known.modelMajor, known.modelMinor);
+    return known;
+}
+
 std::optional<qint32> ObservedServos::value(quint8 id, QStringView key) const
 {
     const feetech::RegisterTable *known = table(id);

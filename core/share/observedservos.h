@@ -29,6 +29,9 @@ public:
     const feetech::RegisterTable *table(quint8 id) const;
     // What addresses 0-8 said, once all of them have been seen.
     std::optional<feetech::ServoInfo> info(quint8 id) const;
+    // What is known of it once its model is: info() when addresses 0-8 have all been seen,
+    // else its ID, rate and model (a program reads the model number alone when it connects).
+    std::optional<feetech::ServoInfo> knownServo(quint8 id) const;
     // A register's last value, when its bytes have been seen and the model is known.
     std::optional<qint32> value(quint8 id, QStringView key) const;
     // A register's last value in its unit (raw times the table's scale).

@@ -20,6 +20,7 @@
 #include "robotactions.h"
 #include "servolist.h"
 #include "setupwizard.h"
+#include "sharedialog.h"
 #include "shortcutsdialog.h"
 #include "simulatordock.h"
 #include "welcomepanel.h"
@@ -143,12 +144,31 @@ MainWindow::MainWindow(QWidget *parent)
     m_connection = std::make_unique<ConnectionController>(m_ptk.get(), m_feetech.get());
     followConnection();
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, this,
-            [this] { updateTorqueOffAction(); });
+            [this] { updateFeetechBusActions(); });
     // Whatever page moves the servos, the guard's warnings and actions show here.
     connect(m_feetech->guard(), &feetech::BusGuard::event, this,
             [this](const feetech::GuardEvent &event) {
                 statusBar()->showMessage(event.message, kGuardMessageMs);
             });
+    // A shared bus's alerts: whichever page is open (the packet log has them too).
+    connect(m_feetech->share(), &feetech::ShareService::alertRaised, this,
+            [this](const share::ShareAlert &alert) {
+                statusBar()->showMessage(
+                    tr("Shared bus, servo %1: %2").arg(alert.id).arg(alert.message),
+                    kGuardMessageMs);
+            });
+    connect(m_feetech->share(), &feetech::ShareService::stateChanged, this,
+            [this](feetech::ShareService::State state) {
+                if (state == feetech::ShareService::State::Sharing)
+                    statusBar()->showMessage(
+                        tr("Sharing the bus: the other program opens %1.")
+                            .arg(QDir::toNativeSeparators(m_feetech->share()->linkPath())),
+                        kStatusMessageMs);
+                else if (state == feetech::ShareService::State::Off)
+                    statusBar()->showMessage(tr("The bus is not shared."), kStatusMessageMs);
+            });
+    connect(m_feetech->share(), &feetech::ShareService::startFailed, this,
+            [this](const QString &why) { statusBar()->showMessage(why, kStatusMessageMs); });
 
     m_connectionState = new QLabel(tr("Not connected"), this);
     m_connectionState->setObjectName(QStringLiteral("connectionState"));
@@ -248,6 +268,21 @@ void MainWindow::createMenus()
     });
     packets->setObjectName(QStringLiteral("packetWindowAction"));
     packets->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+
+    // Another program (LeRobot, a script) on the same servos, through ServoBench.
+    m_shareBus = link->addAction(tr("Share this &bus…"));
+    m_shareBus->setObjectName(QStringLiteral("shareBusAction"));
+    m_shareBus->setToolTip(tr("Give another program a port of its own on this Feetech bus and "
+                              "watch its traffic"));
+    m_shareBus->setEnabled(false);
+    connect(m_shareBus, &QAction::triggered, this, [this] {
+        auto *dialog = findChild<ShareDialog *>();
+        if (!dialog)
+            dialog = new ShareDialog(m_feetech.get(), this);
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+    });
 
     // The emergency stop of the Feetech bus. Esc reaches it from every page of the window; a
     // dialog that is open keeps Esc for itself (and a modal one blocks the bus work anyway).
@@ -409,12 +444,13 @@ void MainWindow::showProtocol(bool feetech)
     for (QAction *action : std::as_const(m_ptkActions))
         action->setEnabled(!feetech);
     m_pollRate->setVisible(!feetech);
-    updateTorqueOffAction();
+    updateFeetechBusActions();
 }
 
-void MainWindow::updateTorqueOffAction()
+void MainWindow::updateFeetechBusActions()
 {
     m_allTorqueOff->setEnabled(m_connection->isFeetechActive() && m_feetech->isConnected());
+    m_shareBus->setEnabled(m_connection->isFeetechActive() && m_feetech->isConnected());
 }
 
 void MainWindow::connectToPort(const QString &port)

@@ -88,7 +88,7 @@ private:
     void chooseProfileToLoad();
     void showProblem(const QString &message);
     void showProtocol(bool feetech);
-    void updateTorqueOffAction(); // enabled while a Feetech bus is connected
+    void updateFeetechBusActions(); // enabled while a Feetech bus is connected
     void updatePollRate();
     // Auto's probe runs: its progress in a dialog whose Cancel stops it.
     void showDetection(const QString &port);
@@ -105,6 +105,7 @@ private:
     PtkWorkspace *m_ptkWorkspace = nullptr;
     FeetechWorkspace *m_feetechWorkspace = nullptr;
     QAction *m_allTorqueOff = nullptr; // Esc: torque off on the whole Feetech bus
+    QAction *m_shareBus = nullptr; // Link > Share this bus…
     QStackedWidget *m_pages = nullptr;
     QList<QAction *> m_ptkActions; // Link menu entries that only mean something for PTK
     PacketLogDock *m_packetLog = nullptr;

@@ -3,6 +3,7 @@
 
 #include "packetlogmodel.h"
 #include "palette.h"
+#include "sharerecordingwindow.h"
 #include "widgethelpers.h"
 
 #include <QAction>
@@ -112,6 +113,14 @@ PacketLogDock::PacketLogDock(QWidget *parent)
     m_export->setToolTip(tr("Save the frames shown to a tab-separated text file"));
     connect(m_export, &QAction::triggered, this, &PacketLogDock::exportLog);
     addButton(m_export, "exportLogButton");
+
+    m_openRecording = new QAction(style()->standardIcon(QStyle::SP_DialogOpenButton),
+                                  tr("Open recording…"), this);
+    m_openRecording->setObjectName(QStringLiteral("openRecordingAction"));
+    m_openRecording->setToolTip(tr("Show a shared bus's recording (Link > Share this bus…) with "
+                                   "the meaning of each frame"));
+    connect(m_openRecording, &QAction::triggered, this, &PacketLogDock::chooseRecording);
+    addButton(m_openRecording, "openRecordingButton");
 
     toolBar->addSeparator();
     m_errorsOnly = new QAction(tr("Errors only"), this);
@@ -232,4 +241,31 @@ void PacketLogDock::exportLog()
     QString error;
     if (!m_model->exportToFile(path, &error))
         QMessageBox::warning(this, tr("Export packet log"), error);
+}
+
+void PacketLogDock::chooseRecording()
+{
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open a shared bus recording"), QDir::homePath(),
+                                     tr("Share recordings (*.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!openRecording(path, &error))
+        QMessageBox::warning(this, tr("Open recording"), error);
+}
+
+ShareRecordingWindow *PacketLogDock::openRecording(const QString &path, QString *error)
+{
+    util::FileError why;
+    const auto frames = share::ShareRecording::load(path, &why);
+    if (!frames) {
+        if (error)
+            *error = why.describe();
+        return nullptr;
+    }
+    auto *window = new ShareRecordingWindow(path, *frames, this);
+    window->show();
+    window->raise();
+    return window;
 }

@@ -14,6 +14,7 @@ class PacketLogModel;
 }
 
 class PacketLogProxy;
+class ShareRecordingWindow;
 
 class PacketLogDock : public QDockWidget
 {
@@ -28,8 +29,13 @@ public:
 
     QTableView *view() const { return m_view; }
 
+    // Shows the shared-bus recording at `path` in a window of its own, read-only; nullptr and
+    // *error (the file's fault, for the user) when it cannot be read.
+    ShareRecordingWindow *openRecording(const QString &path, QString *error);
+
 private:
     void exportLog();
+    void chooseRecording();
     void showCounts(int total, int errors);
     void updateCounts();
     void setErrorsOnly(bool errorsOnly);
@@ -42,6 +48,7 @@ private:
     QAction *m_clear = nullptr;
     QAction *m_export = nullptr;
     QAction *m_errorsOnly = nullptr;
+    QAction *m_openRecording = nullptr;
     QLabel *m_counts = nullptr;
     int m_shownTotal = 0;
     int m_shownErrors = 0;

@@ -59,6 +59,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     m_health = new HealthService(this);
     m_settingsCheck = new SettingsCheckService(this);
     m_identify = new IdentifyService(this);
+    m_share = new ShareService(this);
 }
 
 BusClient::~BusClient() = default;
@@ -86,14 +87,17 @@ void BusClient::disconnectFrom()
     m_worker.run([](Session &s) { s.close(); });
 }
 
-void BusClient::scan(const ScanOptions &options)
+bool BusClient::scan(const ScanOptions &options, Refusal *refusal)
 {
+    if (refused(m_share->isActive() ? Refusal(Refusal::Code::BusShared) : Refusal(), refusal))
+        return false;
     if (d->scanning)
-        return;
+        return true;
     m_servos->clear();
     d->scanning = true;
     emit busyChanged(true);
     m_worker.run([options](Session &s) { s.submit(operations::scan(options)); });
+    return true;
 }
 
 void BusClient::cancelScan()
@@ -327,6 +331,8 @@ void BusClient::refreshRam(int index)
 {
     if (isBusy() || d->hasLivePending() || index < 0 || index >= m_servos->count())
         return; // the next refresh will come; real work goes first
+    if (m_share->isActive())
+        return; // a shared bus carries the other program's reads, not ours
     const ServoInfo &info = m_servos->at(index).info;
     if (!info.hasTable())
         return;
@@ -355,6 +361,8 @@ OperationReply *BusClient::changeBaud(int index, qint32 newBaud, Refusal *refusa
 {
     if (refused(writeBlocker(index), refusal))
         return nullptr;
+    if (refused(m_share->isActive() ? Refusal(Refusal::Code::BusShared) : Refusal(), refusal))
+        return nullptr;
     return startOperation(
         Operation::ChangeBaud, index, refusal, Work::Foreground,
         [newBaud](const ServoInfo &info) { return operations::changeBaud(info, newBaud); });
@@ -375,6 +383,8 @@ OperationReply *BusClient::calibrateMiddle(int index, Refusal *refusal)
 OperationReply *BusClient::factoryReset(int index, Refusal *refusal)
 {
     if (refused(writeBlocker(index), refusal))
+        return nullptr;
+    if (refused(m_share->isActive() ? Refusal(Refusal::Code::BusShared) : Refusal(), refusal))
         return nullptr;
     return startOperation(Operation::FactoryReset, index, refusal, Work::Foreground,
                           &operations::factoryReset);
@@ -443,6 +453,9 @@ OperationReply *BusClient::allTorqueOff()
     }
     if (bauds.isEmpty() && status().baud > 0)
         bauds.append(status().baud); // nothing scanned yet: the rate the port is at
+    // A shared bus stays at the rate the other program set: torque off goes at that one only.
+    if (m_share->state() == ShareService::State::Sharing && m_share->portBaud() > 0)
+        bauds = {m_share->portBaud()};
     return submit(operations::torqueOffAll(bauds, servos), 0, 0, Work::Emergency);
 }
 

@@ -18,6 +18,7 @@
 #include "servolist.h"
 #include "sessionthread.h"
 #include "settingscheckservice.h"
+#include "shareservice.h"
 #include "telemetry.h"
 #include "telemetryhub.h"
 
@@ -56,8 +57,9 @@ public:
                    seriallink::EchoMode echo = seriallink::EchoMode::Auto);
     void disconnectFrom();
 
-    // Forgets the servos found before, then looks for servos as `options` say.
-    void scan(const ScanOptions &options);
+    // Forgets the servos found before, then looks for servos as `options` say. False and
+    // *refusal, nothing changed, while the bus is shared (a scan changes the port's rate).
+    bool scan(const ScanOptions &options, Refusal *refusal = nullptr);
     void cancelScan();
 
     // The servos found, each with its parameter model, in the order the tree shows them.
@@ -70,7 +72,8 @@ public:
     Refusal commandBlocker(int index) const;
 
     OperationReply *readServo(int index);
-    // Present values and other RAM registers, in the background; skipped while busy.
+    // Present values and other RAM registers, in the background; skipped while busy or while
+    // the bus is shared with another program.
     void refreshRam(int index);
     // Writes the servo's edits (except ID and baud rate: see changeId / changeBaud) and reads
     // them back. Nullptr and *refusal when nothing was sent.
@@ -146,6 +149,8 @@ public:
     SettingsCheckService *settingsCheck() const { return m_settingsCheck; }
     // Identifying a joint, and the servos held by what moves them meanwhile.
     IdentifyService *identify() const { return m_identify; }
+    // The bus shared with another program.
+    ShareService *share() const { return m_share; }
 
 signals:
     void statusChanged(const seriallink::ConnectionStatus &status);
@@ -175,6 +180,7 @@ private:
     HealthService *m_health = nullptr;
     SettingsCheckService *m_settingsCheck = nullptr;
     IdentifyService *m_identify = nullptr;
+    ShareService *m_share = nullptr;
 };
 
 // The goal positions servo `index` accepts (goalrange.h); nothing for an unknown servo or a

@@ -18,6 +18,8 @@ OperationReply *MotorSetupService::start(const BusOperation &operation, Refusal 
         why = Refusal(Refusal::Code::NotConnected);
     else if (m_client->isBusy())
         why = Refusal(Refusal::Code::Busy);
+    else if (m_client->share()->isActive() && Session::changesPortRate(operation.kind))
+        why = Refusal(Refusal::Code::BusShared);
     if (refused(why, refusal))
         return nullptr;
     // No servo of the list is its target: the work finds its own servo.

@@ -125,6 +125,13 @@ QString Refusal::describe() const
     case Code::SeveralRates:
         return Tr::tr("The servos to record answer at different baud rates: choose servos at "
                       "one rate.");
+    case Code::BusShared:
+        return Tr::tr("The bus is shared with another program: this would change the port's rate "
+                      "under it. Stop sharing first.");
+    case Code::AlreadyShared:
+        return Tr::tr("The bus is shared already.");
+    case Code::NoSharePath:
+        return Tr::tr("Name the path the other program opens.");
     }
     return {};
 }

@@ -38,6 +38,9 @@ public:
         UndecodableFeedback, // servoId: an unknown model, whose feedback block is not known
         JointNotFound, // servoId: a recording's joint whose servo the scan did not find
         SeveralRates, // a recording of servos at different baud rates
+        BusShared, // the bus is shared with another program and this would get in its way
+        AlreadyShared, // the bus is shared already
+        NoSharePath, // no path given for the other program to open
     };
 
     Refusal() = default;

@@ -2,6 +2,7 @@
 #include "telemetryhub.h"
 
 #include "busclient.h"
+#include "busshare.h"
 
 #include <algorithm>
 
@@ -28,6 +29,8 @@ TelemetryHub::TelemetryHub(BusClient *client)
     Session *session = client->session();
     connect(session, &Session::telemetry, this, &TelemetryHub::onSamples);
     connect(session, &Session::telemetryStats, this, &TelemetryHub::onStats);
+    connect(&session->share(), &share::BusShare::feedbackSeen, this,
+            &TelemetryHub::onSharedSamples);
     // Samples belong to the servos as scanned: a new list starts without them.
     connect(client->servos(), &ServoList::servosChanged, this, [this] { m_latest.clear(); });
 }
@@ -171,6 +174,23 @@ void TelemetryHub::onSamples(const QVector<FeedbackSample> &samples, quint64 str
     for (const FeedbackSample &sample : samples)
         m_latest.insert({sample.id, sample.baud}, sample);
     emit samplesReceived(samples);
+}
+
+void TelemetryHub::onSharedSamples(const QVector<FeedbackSample> &samples)
+{
+    QVector<FeedbackSample> streamed;
+    for (const FeedbackSample &sample : samples) {
+        m_latest.insert({sample.id, sample.baud}, sample);
+        const bool asked = m_streaming
+            && std::any_of(m_options.servos.begin(), m_options.servos.end(),
+                           [&sample](const ServoInfo &servo) {
+                               return servo.address() == ServoAddress {sample.id, sample.baud};
+                           });
+        if (asked)
+            streamed.append(sample);
+    }
+    if (!streamed.isEmpty())
+        emit samplesReceived(streamed);
 }
 
 void TelemetryHub::onStats(const TelemetryStats &stats)

@@ -20,7 +20,8 @@ class BusClient;
 // Belongs to a BusClient (BusClient::telemetry()). Each subscriber (the Monitor page, the
 // calibration wizard, a motion test) asks for its servos at its rate; the session streams the
 // union, so none of them replaces or restores another's stream. A subscriber that is destroyed
-// unsubscribes; a stream the session ends (the link went down) ends every subscription.
+// unsubscribes; a stream the session ends (the link went down) ends every subscription. While
+// the bus is shared with another program the samples are those of the program's own reads.
 class TelemetryHub : public QObject
 {
     Q_OBJECT
@@ -64,6 +65,9 @@ private:
     void update();
     void stop();
     void onSamples(const QVector<FeedbackSample> &samples, quint64 stream);
+    // What another program read of the feedback block on a shared bus (the session's own
+    // cycles wait meanwhile): the newest of each servo, and the subscribers' servos passed on.
+    void onSharedSamples(const QVector<FeedbackSample> &samples);
     void onStats(const TelemetryStats &stats);
 
     BusClient *m_client;

@@ -173,6 +173,9 @@ enum class OperationFailure {
     SharedId, // several servos answer at the ID
     SeveralServos, // more than the one servo a motor set-up needs answers
     WrongModel, // the one servo found is not of the model asked for
+    // The bus is shared with another program, and the operation would change the port's rate
+    // under it (a scan, a new baud rate, a motor set-up, a factory reset)
+    BusShared,
 };
 
 struct OperationResult

@@ -8,6 +8,7 @@
 #include "linksession.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QTimer>
 
 #include <algorithm>
@@ -27,6 +28,10 @@ namespace feetech {
 namespace {
 
 using Queued = SessionPrivate::Queued;
+
+// Where a READ's address and a status frame's data begin: after header, ID, length and the
+// instruction or error byte.
+constexpr int kShareDataFrom = 5;
 
 // Where a paused or continued operation goes back in: behind any All torque off.
 std::deque<Queued>::iterator afterTorqueOff(std::deque<Queued> &queue)
@@ -72,6 +77,7 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     d->health = new HealthCheck(*d->bus, this);
     d->moveTest = new HealthMoveTest(*d->bus, this);
     d->guard = new GuardKeeper(*d->bus, this);
+    d->share = new share::BusShare(*d->link, this);
     qRegisterMetaType<feetech::ApplyPlan>();
     qRegisterMetaType<feetech::HealthReading>();
     qRegisterMetaType<feetech::MoveTestResult>();
@@ -128,16 +134,74 @@ Session::Session(const SessionTiming &timing, QObject *parent)
         d->replay->cancel();
         d->moveTest->stopForGuard(servo.id, servo.baud);
     });
-    d->telemetry->setBusBusy([this] { return d->running || d->guard->cycle().inCycle(); });
+    // While the bus is shared neither adds traffic: the program's own reads are the telemetry.
+    d->telemetry->setBusBusy(
+        [this] { return d->running || d->guard->cycle().inCycle() || d->share->isSharing(); });
     d->telemetry->setCycleEnded([this] { onCycleEnded(); });
-    d->guard->cycle().setBusBusy([this] { return d->running || d->telemetry->inCycle(); });
+    d->guard->cycle().setBusBusy(
+        [this] { return d->running || d->telemetry->inCycle() || d->share->isSharing(); });
     d->guard->cycle().setCycleEnded([this] { onCycleEnded(); });
+    connectShare();
+}
+
+void Session::connectShare()
+{
+    // The other program's frames go into the packet log; ServoBench's own requests through the
+    // share are logged by the engine as always.
+    connect(d->share, &share::BusShare::framePassed, this,
+            [this](const share::RecordedFrame &frame) {
+                if (frame.direction != share::FrameDirection::FromProgram
+                    && frame.direction != share::FrameDirection::ToProgram)
+                    return;
+                d->link->logEntry(d->shareLog.entry(frame, QDateTime::currentMSecsSinceEpoch()));
+            });
+    // What the program reads of a servo's memory is what the servo holds: the parameter models
+    // show it as a background refresh would, with no read of ours.
+    connect(d->share, &share::BusShare::transactionEnded, this,
+            [this](const share::SharedTransaction &transaction) {
+                const quint8 code = transaction.instruction();
+                if (transaction.own
+                    || (code != quint8(Instruction::Read) && code != quint8(Instruction::SyncRead))
+                    || transaction.request.size() <= kShareDataFrom)
+                    return;
+                const int address = quint8(transaction.request.at(kShareDataFrom));
+                const qint32 baud = d->link->transport().baudRate();
+                for (const QByteArray &reply : transaction.replies) {
+                    if (reply.size() <= kShareDataFrom + 1)
+                        continue;
+                    emit memoryRead(quint8(reply.at(2)), baud, address,
+                                    reply.mid(kShareDataFrom, reply.size() - kShareDataFrom - 1),
+                                    ReadSource::Refresh, quint8(reply.at(4)));
+                }
+            });
+    connect(d->share, &share::BusShare::alertRaised, this, [this](const share::ShareAlert &alert) {
+        d->link->logNote(Tr::tr("Shared bus alert at ID %1: %2").arg(alert.id).arg(alert.message),
+                         true);
+    });
+    connect(d->share, &share::BusShare::noted, this,
+            [this](const QString &text) { d->link->logNote(Tr::tr("Shared bus: %1").arg(text)); });
+    connect(d->share, &share::BusShare::sharingChanged, this, [this](bool sharing) {
+        if (sharing) {
+            d->shareLog = {};
+            return;
+        }
+        // The bus is ServoBench's again: the streams and the guard's reads go on.
+        QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                if (!d->running && !inCycle())
+                    startCycleIfDue();
+            },
+            Qt::QueuedConnection);
+    });
 }
 
 Session::~Session()
 {
     close();
     // The parts go while the state they report into is still there, the last made first.
+    delete d->share;
     delete d->guard;
     delete d->moveTest;
     delete d->health;
@@ -155,6 +219,25 @@ Session::~Session()
 seriallink::LinkSession &Session::link()
 {
     return *d->link;
+}
+
+share::BusShare &Session::share()
+{
+    return *d->share;
+}
+
+bool Session::changesPortRate(Operation kind)
+{
+    switch (kind) {
+    case Operation::Scan:
+    case Operation::ChangeBaud:
+    case Operation::FindMotor:
+    case Operation::SetUpMotor:
+    case Operation::FactoryReset:
+        return true;
+    default:
+        return false;
+    }
 }
 
 bool Session::isBusy() const
@@ -194,6 +277,7 @@ bool Session::isStreaming() const
 
 void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode echo)
 {
+    d->share->stop(); // shared at the port being left: the other program's port goes with it
     d->bus->forgetLatencies();
     if (d->link->open(portName, baud, echo))
         d->link->setState(seriallink::ConnectionState::Connected);
@@ -201,6 +285,7 @@ void Session::open(const QString &portName, qint32 baud, seriallink::EchoMode ec
 
 void Session::close()
 {
+    d->share->stop(); // the other program's port goes with the bus
     d->link->close();
 }
 
@@ -346,6 +431,18 @@ void Session::startQueuedOperation()
             result.failure = OperationFailure::NotConnected;
             finishOperation(result);
         }
+        return;
+    }
+    if (d->share->isSharing() && changesPortRate(kind)) {
+        const QString why = Tr::tr("Not while the bus is shared with another program: this would "
+                                   "change the port's rate under it. Stop sharing first.");
+        if (kind == Operation::Scan) {
+            onScanFinished(false, why);
+            return;
+        }
+        OperationResult result {kind, false, why, {}, {}};
+        result.failure = OperationFailure::BusShared;
+        finishOperation(result);
         return;
     }
     if (d->current.operation.powersServos && d->current.epoch != d->torqueOffEpoch) {

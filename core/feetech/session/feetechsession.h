@@ -18,6 +18,10 @@ namespace seriallink {
 class LinkSession;
 }
 
+namespace share {
+class BusShare;
+}
+
 namespace feetech {
 
 struct SessionPrivate;
@@ -35,6 +39,13 @@ public:
     const seriallink::ConnectionStatus &status() const;
     const seriallink::LinkCounters &counters() const;
     seriallink::LinkSession &link();
+    // The bus shared with another program (off until started). While it shares, telemetry
+    // cycles and the guard's reads wait (the program's own reads feed the telemetry instead,
+    // and memoryRead as a refresh would), operations go between the program's transactions,
+    // and those that would change the port's rate under it (changesPortRate) end at once with
+    // OperationFailure::BusShared.
+    share::BusShare &share();
+    static bool changesPortRate(feetech::Operation kind);
     bool isBusy() const;
     // How quickly servos answer on this port: the median of the last answers (none before the
     // first), from the end of the request to the first byte of the reply.
@@ -86,6 +97,7 @@ signals:
 private:
     friend class OperationContext; // how operations report, yield and end their turn
 
+    void connectShare();
     void onLinkDown(const QString &message);
     void finishOperation(const OperationResult &result);
     // Ends the running operation's turn on the bus; `resume` runs as the next operation.

@@ -6,6 +6,7 @@
 #include "busexchange.h"
 #include "busoperation.h"
 #include "busscan.h"
+#include "busshare.h"
 #include "guardkeeper.h"
 #include "guidedflows.h"
 #include "healthcheck.h"
@@ -13,6 +14,7 @@
 #include "jointidentify.h"
 #include "motionreplay.h"
 #include "motorsetup.h"
+#include "sharelogentries.h"
 #include "telemetrycycle.h"
 
 #include <deque>
@@ -47,6 +49,8 @@ struct SessionPrivate
     HealthCheck *health = nullptr;
     HealthMoveTest *moveTest = nullptr;
     GuardKeeper *guard = nullptr;
+    share::BusShare *share = nullptr;
+    share::ShareLogEntries shareLog; // the other program's frames, for the packet log
 
     std::deque<Queued> queue;
     bool running = false;

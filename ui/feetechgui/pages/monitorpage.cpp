@@ -96,6 +96,8 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
         connect(m_client->telemetry(), &feetech::TelemetryHub::streamingChanged, this,
                 &MonitorPage::onMonitoringChanged);
         connect(m_client, &feetech::BusClient::statusChanged, this, &MonitorPage::onStatusChanged);
+        connect(m_client->share(), &feetech::ShareService::stateChanged, this,
+                &MonitorPage::updateStatusLine);
     }
     onQuantityToggled();
     rebuildServoList();
@@ -510,7 +512,11 @@ void MonitorPage::updateStatusLine()
 {
     const QLocale locale;
     QString text;
-    if (isRunning()) {
+    if (isRunning() && m_client
+        && m_client->share()->state() == feetech::ShareService::State::Sharing) {
+        // The session's own cycles wait: what plots is what the other program reads.
+        text = tr("Shared bus · showing the other program's reads, none of ServoBench's own");
+    } else if (isRunning()) {
         text = tr("Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late")
                    .arg(locale.toString(m_stats.cyclesPerSecond, 'f', 0),
                         locale.toString(m_stats.samplesPerSecond, 'f', 0),

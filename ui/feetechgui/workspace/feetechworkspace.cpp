@@ -446,6 +446,10 @@ void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
         emit problem(tr("Connect to the bus before scanning."));
         return;
     }
+    if (m_client->share()->isActive()) {
+        emit problem(feetech::Refusal(feetech::Refusal::Code::BusShared).describe());
+        return;
+    }
     m_scanOptions = options;
     m_current.reset();
     m_scan->hide();
