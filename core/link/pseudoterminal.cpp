@@ -31,16 +31,20 @@ namespace seriallink {
 
 namespace {
 
-// While no client holds the slave, the master reads EIO: look again this often.
+// While no client holds the slave, the master reads EIO: look again this often, and at first
+// more often, for a while: a program that closes the port to open it again at once (LeRobot at
+// every connect) must not wait for its first bytes to be read.
 constexpr int kHangupPollMs = 20;
+constexpr int kQuickPollMs = 2;
+constexpr qint64 kQuickPollPeriodMs = 500;
 
 } // namespace
 
 PseudoTerminal::PseudoTerminal(QObject *parent)
     : QObject(parent)
 {
-    m_hangupPoll.setInterval(kHangupPollMs);
     m_hangupPoll.setSingleShot(true);
+    m_hangupPoll.setTimerType(Qt::PreciseTimer);
     connect(&m_hangupPoll, &QTimer::timeout, this, [this] {
         if (m_readNotifier)
             m_readNotifier->setEnabled(true);
@@ -152,12 +156,17 @@ void PseudoTerminal::readAvailable()
         if (count < 0 && errno == EIO) {
             // No client holds the slave: stop the notifier firing and look again later.
             m_readNotifier->setEnabled(false);
-            m_hangupPoll.start();
+            if (!m_hungUpSince.isValid())
+                m_hungUpSince.start();
+            m_hangupPoll.start(m_hungUpSince.elapsed() < kQuickPollPeriodMs ? kQuickPollMs
+                                                                            : kHangupPollMs);
         }
         break;
     }
-    if (!bytes.isEmpty())
+    if (!bytes.isEmpty()) {
+        m_hungUpSince.invalidate(); // a client is there: the next hang-up starts a quick look
         emit received(bytes);
+    }
 }
 
 void PseudoTerminal::write(const QByteArray &bytes)

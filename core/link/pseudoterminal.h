@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -48,6 +49,7 @@ private:
     QSocketNotifier *m_readNotifier = nullptr;
     QSocketNotifier *m_writeNotifier = nullptr;
     QTimer m_hangupPoll {this}; // a child, so it moves threads with us
+    QElapsedTimer m_hungUpSince; // since the last client let go (invalid while one is there)
     QByteArray m_pending; // bytes the pty buffer could not take yet
 };
 
