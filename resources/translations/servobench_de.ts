@@ -1257,6 +1257,18 @@
         <source>The servos to record answer at different baud rates: choose servos at one rate.</source>
         <translation>Die aufzuzeichnenden Servos antworten mit unterschiedlichen Baudraten: Wählen Sie Servos mit derselben Rate.</translation>
     </message>
+    <message>
+        <source>The bus is shared with another program: this would change the port&apos;s rate under it. Stop sharing first.</source>
+        <translation>Der Bus wird mit einem anderen Programm geteilt: Dies würde ihm die Baudrate des Ports unbemerkt ändern. Beenden Sie zuerst die Freigabe.</translation>
+    </message>
+    <message>
+        <source>The bus is shared already.</source>
+        <translation>Der Bus wird bereits geteilt.</translation>
+    </message>
+    <message>
+        <source>Name the path the other program opens.</source>
+        <translation>Den Pfad angeben, den das andere Programm öffnet.</translation>
+    </message>
 </context>
 <context>
     <name>FeetechGuard</name>
@@ -2848,6 +2860,18 @@
             <numerusform>%1 von %n Einstellungen behoben und überprüft.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Shared bus alert at ID %1: %2</source>
+        <translation>Warnung am geteilten Bus bei ID %1: %2</translation>
+    </message>
+    <message>
+        <source>Shared bus: %1</source>
+        <translation>Geteilter Bus: %1</translation>
+    </message>
+    <message>
+        <source>Not while the bus is shared with another program: this would change the port&apos;s rate under it. Stop sharing first.</source>
+        <translation>Nicht, solange der Bus mit einem anderen Programm geteilt wird: Dies würde ihm die Baudrate des Ports unbemerkt ändern. Beenden Sie zuerst die Freigabe.</translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>
@@ -4310,6 +4334,26 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Record joints moved by hand and play the motion back</source>
         <translation>Von Hand bewegte Gelenke aufzeichnen und die Bewegung wiedergeben</translation>
     </message>
+    <message>
+        <source>Shared bus, servo %1: %2</source>
+        <translation>Geteilter Bus, Servo %1: %2</translation>
+    </message>
+    <message>
+        <source>Sharing the bus: the other program opens %1.</source>
+        <translation>Bus wird geteilt: Das andere Programm öffnet %1.</translation>
+    </message>
+    <message>
+        <source>The bus is not shared.</source>
+        <translation>Der Bus wird nicht geteilt.</translation>
+    </message>
+    <message>
+        <source>Share this &amp;bus…</source>
+        <translation>Diesen &amp;Bus teilen…</translation>
+    </message>
+    <message>
+        <source>Give another program a port of its own on this Feetech bus and watch its traffic</source>
+        <translation>Einem anderen Programm einen eigenen Port an diesem Feetech-Bus geben und seinen Datenverkehr beobachten</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -4487,6 +4531,10 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Streaming · %1 cycles/s · %2 samples/s · %3 missed · %4 late</source>
         <translation>Streaming · %1 Zyklen/s · %2 Messwerte/s · %3 verpasst · %4 verspätet</translation>
+    </message>
+    <message>
+        <source>Shared bus · showing the other program&apos;s reads, none of ServoBench&apos;s own</source>
+        <translation>Geteilter Bus · zeigt die Lesevorgänge des anderen Programms, keine eigenen von ServoBench</translation>
     </message>
 </context>
 <context>
@@ -5292,6 +5340,26 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>Tab-separated text (*.tsv *.txt);;All files (*)</source>
         <translation>Tabulatorgetrennter Text (*.tsv *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Open recording…</source>
+        <translation>Aufzeichnung öffnen…</translation>
+    </message>
+    <message>
+        <source>Show a shared bus&apos;s recording (Link &gt; Share this bus…) with the meaning of each frame</source>
+        <translation>Die Aufzeichnung eines geteilten Busses (Verbindung &gt; Diesen Bus teilen…) mit der Bedeutung jedes Frames anzeigen</translation>
+    </message>
+    <message>
+        <source>Open a shared bus recording</source>
+        <translation>Aufzeichnung eines geteilten Busses öffnen</translation>
+    </message>
+    <message>
+        <source>Share recordings (*.txt);;All files (*)</source>
+        <translation>Freigabeaufzeichnungen (*.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>Aufzeichnung öffnen</translation>
     </message>
 </context>
 <context>
@@ -7829,6 +7897,124 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>ShareDialog</name>
+    <message>
+        <source>Share this bus</source>
+        <translation>Diesen Bus teilen</translation>
+    </message>
+    <message>
+        <source>ServoBench keeps the port and gives another program (LeRobot, a script) a port of its own: open the path below in it. Every byte passes both ways unchanged. Its traffic shows in the packet log, its servos in the servo tree, its reads of position, load, voltage and temperature in the Monitor, without a read of ServoBench&apos;s own. ServoBench&apos;s operations wait for the gaps between its transactions; a scan or a new baud rate waits until sharing stops; All torque off always goes.</source>
+        <translation>ServoBench behält den Port und gibt einem anderen Programm (LeRobot, einem Skript) einen eigenen Port: Öffnen Sie darin den Pfad unten. Jedes Byte läuft unverändert in beide Richtungen. Sein Datenverkehr erscheint im Paketprotokoll, seine Servos im Servobaum, seine Lesevorgänge von Position, Last, Spannung und Temperatur im Monitor, ohne einen eigenen Lesevorgang von ServoBench. Die Operationen von ServoBench warten auf die Lücken zwischen seinen Transaktionen; ein Scan oder eine neue Baudrate wartet, bis die Freigabe endet; „Alle Drehmomente aus“ geht immer durch.</translation>
+    </message>
+    <message>
+        <source>The path the other program opens as its serial port</source>
+        <translation>Der Pfad, den das andere Programm als seinen seriellen Port öffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Copy path</source>
+        <translation>Pfad &amp;kopieren</translation>
+    </message>
+    <message>
+        <source>No recording</source>
+        <translation>Keine Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Every frame with its time and direction; the packet log&apos;s Open recording… shows it</source>
+        <translation>Jeder Frame mit Zeit und Richtung; „Aufzeichnung öffnen…“ im Paketprotokoll zeigt sie an</translation>
+    </message>
+    <message>
+        <source>C&amp;hoose…</source>
+        <translation>&amp;Auswählen…</translation>
+    </message>
+    <message>
+        <source>&amp;Watch: read the program&apos;s servos in its idle gaps</source>
+        <translation>&amp;Beobachten: die Servos des Programms in seinen Pausen lesen</translation>
+    </message>
+    <message>
+        <source>One READ at a time, only while the program leaves the bus quiet, so alerts also cover what the program does not read itself</source>
+        <translation>Jeweils ein READ, nur solange das Programm den Bus ruhen lässt, damit Warnungen auch abdecken, was das Programm nicht selbst liest</translation>
+    </message>
+    <message>
+        <source>Path for the other program:</source>
+        <translation>Pfad für das andere Programm:</translation>
+    </message>
+    <message>
+        <source>Recording file:</source>
+        <translation>Aufzeichnungsdatei:</translation>
+    </message>
+    <message>
+        <source>Alerts:</source>
+        <translation>Warnungen:</translation>
+    </message>
+    <message>
+        <source>Copied %1: paste it as the other program&apos;s port.</source>
+        <translation>%1 kopiert: Fügen Sie es als Port des anderen Programms ein.</translation>
+    </message>
+    <message>
+        <source>Record the shared bus to</source>
+        <translation>Geteilten Bus aufzeichnen in</translation>
+    </message>
+    <message>
+        <source>Share recordings (*.txt);;All files (*)</source>
+        <translation>Freigabeaufzeichnungen (*.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Start sharing</source>
+        <translation>Freigabe &amp;starten</translation>
+    </message>
+    <message>
+        <source>Not sharing.</source>
+        <translation>Keine Freigabe.</translation>
+    </message>
+    <message>
+        <source>Connect to a Feetech bus first.</source>
+        <translation>Verbinden Sie sich zuerst mit einem Feetech-Bus.</translation>
+    </message>
+    <message>
+        <source>&amp;Stop sharing</source>
+        <translation>Freigabe &amp;beenden</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Wird gestartet…</translation>
+    </message>
+    <message>
+        <source>Sharing at %1 baud: give the other program %2 (the pseudo-terminal %3).</source>
+        <translation>Geteilt mit %1 Baud: Geben Sie dem anderen Programm %2 (das Pseudo-Terminal %3).</translation>
+    </message>
+    <message>
+        <source>From the program: %1 frame(s). Back to it: %2 frame(s). Unanswered: %3. Garbled bytes: %4. Alerts: %5. Watch reads: %6.</source>
+        <translation>Vom Programm: %1 Frame(s). Zurück: %2 Frame(s). Unbeantwortet: %3. Verstümmelte Bytes: %4. Warnungen: %5. Beobachtungs-Lesevorgänge: %6.</translation>
+    </message>
+    <message>
+        <source>%1  ID %2: %3</source>
+        <translation>%1  ID %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>ShareLogEntries</name>
+    <message>
+        <source>Shared bus: %1</source>
+        <translation>Geteilter Bus: %1</translation>
+    </message>
+    <message>
+        <source>Not a whole frame (passed on to the other program)</source>
+        <translation>Kein vollständiger Frame (an das andere Programm weitergegeben)</translation>
+    </message>
+    <message>
+        <source>Not a whole frame</source>
+        <translation>Kein vollständiger Frame</translation>
+    </message>
+    <message>
+        <source>Other program: %1</source>
+        <translation>Anderes Programm: %1</translation>
+    </message>
+    <message>
+        <source>ServoBench (shared bus): %1</source>
+        <translation>ServoBench (geteilter Bus): %1</translation>
+    </message>
+</context>
+<context>
     <name>ShareRecording</name>
     <message>
         <source>it is larger than any recording (1 GiB)</source>
@@ -7841,6 +8027,60 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>this is no ServoBench share recording</source>
         <translation>dies ist keine ServoBench-Freigabeaufzeichnung</translation>
+    </message>
+</context>
+<context>
+    <name>ShareRecordingWindow</name>
+    <message>
+        <source>Recording %1</source>
+        <translation>Aufzeichnung %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s) and note(s) from %1, in the order they passed; the time is seconds since sharing began.</source>
+        <translation>
+            <numerusform>%n Eintrag (Frame oder Hinweis) aus %1; die Zeit ist in Sekunden seit Beginn der Freigabe angegeben.</numerusform>
+            <numerusform>%n Frames und Hinweise aus %1, in der Reihenfolge ihres Durchlaufs; die Zeit ist in Sekunden seit Beginn der Freigabe angegeben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Von</translation>
+    </message>
+    <message>
+        <source>Bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>program → bus</source>
+        <translation>Programm → Bus</translation>
+    </message>
+    <message>
+        <source>bus → program</source>
+        <translation>Bus → Programm</translation>
+    </message>
+    <message>
+        <source>ServoBench → bus</source>
+        <translation>ServoBench → Bus</translation>
+    </message>
+    <message>
+        <source>bus → ServoBench</source>
+        <translation>Bus → ServoBench</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>Hinweis</translation>
     </message>
 </context>
 <context>

@@ -1252,6 +1252,18 @@
         <source>The servos to record answer at different baud rates: choose servos at one rate.</source>
         <translation>要记录的舵机在不同的波特率下应答：请选择同一波特率的舵机。</translation>
     </message>
+    <message>
+        <source>The bus is shared with another program: this would change the port&apos;s rate under it. Stop sharing first.</source>
+        <translation>总线正与另一个程序共享：这会在该程序不知情的情况下更改端口的波特率。请先停止共享。</translation>
+    </message>
+    <message>
+        <source>The bus is shared already.</source>
+        <translation>总线已在共享中。</translation>
+    </message>
+    <message>
+        <source>Name the path the other program opens.</source>
+        <translation>请指定另一个程序要打开的路径。</translation>
+    </message>
 </context>
 <context>
     <name>FeetechGuard</name>
@@ -2831,6 +2843,18 @@
             <numerusform>%n 项设置中已有 %1 项修复并验证。</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Shared bus alert at ID %1: %2</source>
+        <translation>共享总线警报，ID %1：%2</translation>
+    </message>
+    <message>
+        <source>Shared bus: %1</source>
+        <translation>共享总线：%1</translation>
+    </message>
+    <message>
+        <source>Not while the bus is shared with another program: this would change the port&apos;s rate under it. Stop sharing first.</source>
+        <translation>总线与另一个程序共享期间不能执行此操作：这会在该程序不知情的情况下更改端口的波特率。请先停止共享。</translation>
+    </message>
 </context>
 <context>
     <name>FeetechTelemetry</name>
@@ -4289,6 +4313,26 @@ An ID in use is refused.</source>
         <source>Record joints moved by hand and play the motion back</source>
         <translation>记录手动移动的关节，并回放该动作</translation>
     </message>
+    <message>
+        <source>Shared bus, servo %1: %2</source>
+        <translation>共享总线，舵机 %1：%2</translation>
+    </message>
+    <message>
+        <source>Sharing the bus: the other program opens %1.</source>
+        <translation>正在共享总线：另一个程序打开 %1。</translation>
+    </message>
+    <message>
+        <source>The bus is not shared.</source>
+        <translation>总线未在共享。</translation>
+    </message>
+    <message>
+        <source>Share this &amp;bus…</source>
+        <translation>共享此总线(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>Give another program a port of its own on this Feetech bus and watch its traffic</source>
+        <translation>为另一个程序在此 Feetech 总线上提供专用端口，并监视其通信</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -4466,6 +4510,10 @@ An ID in use is refused.</source>
     <message>
         <source>Save the charts as they are shown as one PNG image</source>
         <translation>将当前显示的图表保存为一张 PNG 图像</translation>
+    </message>
+    <message>
+        <source>Shared bus · showing the other program&apos;s reads, none of ServoBench&apos;s own</source>
+        <translation>共享总线 · 显示另一个程序的读取，不含 ServoBench 自身的读取</translation>
     </message>
 </context>
 <context>
@@ -5262,6 +5310,26 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Tab-separated text (*.tsv *.txt);;All files (*)</source>
         <translation>制表符分隔文本 (*.tsv *.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Open recording…</source>
+        <translation>打开记录…</translation>
+    </message>
+    <message>
+        <source>Show a shared bus&apos;s recording (Link &gt; Share this bus…) with the meaning of each frame</source>
+        <translation>显示共享总线的记录（连接 &gt; 共享此总线…）及每一帧的含义</translation>
+    </message>
+    <message>
+        <source>Open a shared bus recording</source>
+        <translation>打开共享总线记录</translation>
+    </message>
+    <message>
+        <source>Share recordings (*.txt);;All files (*)</source>
+        <translation>共享记录 (*.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>打开记录</translation>
     </message>
 </context>
 <context>
@@ -7784,6 +7852,124 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>ShareDialog</name>
+    <message>
+        <source>Share this bus</source>
+        <translation>共享此总线</translation>
+    </message>
+    <message>
+        <source>ServoBench keeps the port and gives another program (LeRobot, a script) a port of its own: open the path below in it. Every byte passes both ways unchanged. Its traffic shows in the packet log, its servos in the servo tree, its reads of position, load, voltage and temperature in the Monitor, without a read of ServoBench&apos;s own. ServoBench&apos;s operations wait for the gaps between its transactions; a scan or a new baud rate waits until sharing stops; All torque off always goes.</source>
+        <translation>ServoBench 保留该端口，并为另一个程序（LeRobot、脚本）提供专用端口：在该程序中打开下方的路径。每个字节都原样双向传递。其通信显示在数据包日志中，其舵机显示在舵机树中，其对位置、负载、电压和温度的读取显示在“监视”中，ServoBench 自身无需读取。ServoBench 的操作会等待该程序各事务之间的间隙；扫描或更改波特率须等到共享停止；“全部关闭扭矩”始终有效。</translation>
+    </message>
+    <message>
+        <source>The path the other program opens as its serial port</source>
+        <translation>另一个程序作为串口打开的路径</translation>
+    </message>
+    <message>
+        <source>&amp;Copy path</source>
+        <translation>复制路径(&amp;C)</translation>
+    </message>
+    <message>
+        <source>No recording</source>
+        <translation>不记录</translation>
+    </message>
+    <message>
+        <source>Every frame with its time and direction; the packet log&apos;s Open recording… shows it</source>
+        <translation>记录每一帧及其时间和方向；可用数据包日志中的“打开记录…”查看</translation>
+    </message>
+    <message>
+        <source>C&amp;hoose…</source>
+        <translation>选择(&amp;H)…</translation>
+    </message>
+    <message>
+        <source>&amp;Watch: read the program&apos;s servos in its idle gaps</source>
+        <translation>监视(&amp;W)：在该程序的空闲间隙读取其舵机</translation>
+    </message>
+    <message>
+        <source>One READ at a time, only while the program leaves the bus quiet, so alerts also cover what the program does not read itself</source>
+        <translation>每次一条 READ，仅在该程序让总线空闲时进行，使警报也能覆盖该程序自身未读取的内容</translation>
+    </message>
+    <message>
+        <source>Path for the other program:</source>
+        <translation>给另一个程序的路径：</translation>
+    </message>
+    <message>
+        <source>Recording file:</source>
+        <translation>记录文件：</translation>
+    </message>
+    <message>
+        <source>Alerts:</source>
+        <translation>警报：</translation>
+    </message>
+    <message>
+        <source>Copied %1: paste it as the other program&apos;s port.</source>
+        <translation>已复制 %1：请将其粘贴为另一个程序的端口。</translation>
+    </message>
+    <message>
+        <source>Record the shared bus to</source>
+        <translation>将共享总线记录到</translation>
+    </message>
+    <message>
+        <source>Share recordings (*.txt);;All files (*)</source>
+        <translation>共享记录 (*.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>&amp;Start sharing</source>
+        <translation>开始共享(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Not sharing.</source>
+        <translation>未在共享。</translation>
+    </message>
+    <message>
+        <source>Connect to a Feetech bus first.</source>
+        <translation>请先连接到 Feetech 总线。</translation>
+    </message>
+    <message>
+        <source>&amp;Stop sharing</source>
+        <translation>停止共享(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>正在启动…</translation>
+    </message>
+    <message>
+        <source>Sharing at %1 baud: give the other program %2 (the pseudo-terminal %3).</source>
+        <translation>正在以 %1 波特率共享：请把 %2（伪终端 %3）交给另一个程序。</translation>
+    </message>
+    <message>
+        <source>From the program: %1 frame(s). Back to it: %2 frame(s). Unanswered: %3. Garbled bytes: %4. Alerts: %5. Watch reads: %6.</source>
+        <translation>来自该程序：%1 帧。返回给它：%2 帧。无应答：%3。乱码字节：%4。警报：%5。监视读取：%6。</translation>
+    </message>
+    <message>
+        <source>%1  ID %2: %3</source>
+        <translation>%1  ID %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>ShareLogEntries</name>
+    <message>
+        <source>Shared bus: %1</source>
+        <translation>共享总线：%1</translation>
+    </message>
+    <message>
+        <source>Not a whole frame (passed on to the other program)</source>
+        <translation>不是完整的帧（已转交给另一个程序）</translation>
+    </message>
+    <message>
+        <source>Not a whole frame</source>
+        <translation>不是完整的帧</translation>
+    </message>
+    <message>
+        <source>Other program: %1</source>
+        <translation>另一个程序：%1</translation>
+    </message>
+    <message>
+        <source>ServoBench (shared bus): %1</source>
+        <translation>ServoBench（共享总线）：%1</translation>
+    </message>
+</context>
+<context>
     <name>ShareRecording</name>
     <message>
         <source>it is larger than any recording (1 GiB)</source>
@@ -7796,6 +7982,59 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>this is no ServoBench share recording</source>
         <translation>这不是 ServoBench 共享记录</translation>
+    </message>
+</context>
+<context>
+    <name>ShareRecordingWindow</name>
+    <message>
+        <source>Recording %1</source>
+        <translation>记录 %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s) and note(s) from %1, in the order they passed; the time is seconds since sharing began.</source>
+        <translation>
+            <numerusform>来自 %1 的 %n 条帧和备注，按经过的顺序排列；时间为自共享开始以来的秒数。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>时间（秒）</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <source>Bytes</source>
+        <translation>字节</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>program → bus</source>
+        <translation>程序 → 总线</translation>
+    </message>
+    <message>
+        <source>bus → program</source>
+        <translation>总线 → 程序</translation>
+    </message>
+    <message>
+        <source>ServoBench → bus</source>
+        <translation>ServoBench → 总线</translation>
+    </message>
+    <message>
+        <source>bus → ServoBench</source>
+        <translation>总线 → ServoBench</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>备注</translation>
     </message>
 </context>
 <context>
