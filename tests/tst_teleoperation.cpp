@@ -36,6 +36,8 @@ private slots:
         QSignalSpy ended(&teleop, &Teleoperation::ended);
         QVERIFY2(teleop.start(settings()), qPrintable(teleop.message()));
         QCOMPARE(teleop.state(), Teleoperation::State::Starting);
+        QVERIFY(!teleop.start(settings())); // one run at a time
+        QCOMPARE(teleop.problem(), Teleoperation::Problem::None);
         QTRY_COMPARE_WITH_TIMEOUT(teleop.state(), Teleoperation::State::Running, 15000);
         QCOMPARE(teleop.mapping().joints().size(), 6);
         QTRY_VERIFY_WITH_TIMEOUT(qAbs(simulatorValue(2, u"goal_position") - (standing + 600)) <= 20,

@@ -51,7 +51,7 @@ Teleoperation::~Teleoperation() = default;
 bool Teleoperation::start(const TeleopSettings &settings)
 {
     if (m_state != State::Idle)
-        return refuse(Problem::BusFailed, tr("Teleoperation is already running."));
+        return false; // the run goes on, and what it will say is its own
     m_problem = Problem::None;
     m_message.clear();
     m_settings = settings;

@@ -52,7 +52,8 @@ public:
     explicit Teleoperation(BusClient *follower, QObject *parent = nullptr);
     ~Teleoperation() override;
 
-    // False, with problem() and message(), when refused (nothing sent).
+    // False, with problem() and message(), when refused (nothing sent); false and nothing
+    // changed while a run has not ended.
     bool start(const TeleopSettings &settings);
     // Ends the loop; the follower holds where it is once ended() comes.
     void stop();
