@@ -84,6 +84,9 @@ public:
     const std::optional<feetech::PortProbeReport> &probeReport() const { return m_probe; }
     // The running simulator of the demo's Feetech bus or arm; null for anything else.
     sim::SimulatorThread *simulator() const { return m_simulator; }
+    // The demo's simulators, null until a simulated port was first opened: more of them (a
+    // leader arm for the simulated arm) start from here.
+    sim::DemoServos *demo() const { return m_demo.get(); }
 
     // What the doctor needs from whoever shows it: the servos it expects on a port, whether it
     // is shown (a full scan is checked only then), and the options of the last scan.

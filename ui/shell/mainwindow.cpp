@@ -6,6 +6,7 @@
 #include "calibrationfiles.h"
 #include "connectionbar.h"
 #include "connectioncontroller.h"
+#include "demoservos.h"
 #include "doctorpanel.h"
 #include "feetechworkspace.h"
 #include "languagemenu.h"
@@ -23,6 +24,7 @@
 #include "sharedialog.h"
 #include "shortcutsdialog.h"
 #include "simulatordock.h"
+#include "teleopdialog.h"
 #include "welcomepanel.h"
 #include "windowmemory.h"
 
@@ -343,6 +345,35 @@ void MainWindow::createMenus()
         auto *dialog = findChild<RecordReplayDialog *>();
         if (!dialog)
             dialog = new RecordReplayDialog(m_feetech.get(), this);
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+    });
+
+    // A leader arm on a second adapter drives the arm on this bus: a scanned bus, non-modal.
+    QAction *teleoperate = robot->addAction(tr("&Teleoperate…"));
+    teleoperate->setObjectName(QStringLiteral("teleoperateAction"));
+    teleoperate->setToolTip(tr("Move this arm with a leader arm on another port"));
+    const auto updateTeleoperate = [this, teleoperate] {
+        teleoperate->setEnabled(m_feetech->isConnected() && m_feetech->servos()->count() > 0);
+    };
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, teleoperate, updateTeleoperate);
+    connect(m_feetech->servos(), &feetech::ServoList::servosChanged, teleoperate,
+            updateTeleoperate);
+    updateTeleoperate();
+    connect(teleoperate, &QAction::triggered, this, [this] {
+        auto *dialog = findChild<TeleopDialog *>();
+        if (!dialog)
+            dialog = new TeleopDialog(m_feetech.get(), this);
+        // On the demo's simulated arm, the demo offers a simulated leader arm too.
+        std::function<QString(QString *)> simulatedLeader;
+        if (m_connection->simulator() && m_connection->demo()) {
+            simulatedLeader = [demo = m_connection->demo()](QString *error) {
+                return demo->leaderArmPort(error);
+            };
+        }
+        if (dialog->teleoperation()->state() == feetech::Teleoperation::State::Idle)
+            dialog->setSimulatedLeader(simulatedLeader);
         dialog->show();
         dialog->raise();
         dialog->activateWindow();

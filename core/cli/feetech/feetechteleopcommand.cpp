@@ -6,6 +6,7 @@
 #include "motionrecording.h"
 #include "registerkeys.h"
 #include "telemetry.h"
+#include "teleoploop.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -16,7 +17,6 @@
 #include <QTimer>
 
 #include <algorithm>
-#include <cmath>
 
 namespace {
 
@@ -25,10 +25,6 @@ struct Tr
 {
     Q_DECLARE_TR_FUNCTIONS(servoctl)
 };
-
-constexpr double kDefaultRateHz = 50.0;
-constexpr double kDefaultMaxSpeed = 90.0; // degrees per second
-constexpr double kStepsPerDegree = 4096.0 / 360.0;
 
 } // namespace
 
@@ -143,10 +139,10 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
                                  "follower are two arms on two adapters")};
     const double rate = m_args.has(QStringLiteral("rate"))
         ? double(integerOption(m_args, QStringLiteral("rate"), 1, 200))
-        : kDefaultRateHz;
+        : feetech::TeleopLoop::kDefaultRateHz;
     const double maxSpeed = m_args.has(QStringLiteral("max-speed"))
         ? double(integerOption(m_args, QStringLiteral("max-speed"), 1, 720))
-        : kDefaultMaxSpeed;
+        : feetech::TeleopLoop::kDefaultMaxSpeed;
     const std::optional<double> duration = durationOption(m_args);
     const bool release = m_args.flag(QStringLiteral("release"));
     // --record FILE: the follower's goals, as `feetech replay` plays them back on it.
@@ -209,75 +205,22 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
 
     // The loop: the leader's stream gives each cycle's positions, the follower gets one SYNC
     // WRITE of the goals (the newest waits while one is on the wire), each step limited.
-    const feetech::Register *goal = table.find(feetech::registerkeys::kGoalPosition);
-    QVector<double> sent(standing->begin(), standing->end());
-    std::optional<QVector<qint32>> waiting;
-    bool writing = false;
-    qint64 writes = 0;
-    QElapsedTimer sinceWrite;
-    sinceWrite.start();
-    QVector<qint64> latencies;
-    qint64 writeStartedUs = 0;
-    qint64 leaderSampleUs = 0;
-    const double stepsPerSecond = maxSpeed * kStepsPerDegree;
-    feetech::MotionRecording recording;
-    for (int i = 0; i < followerServos->size(); ++i)
-        recording.joints.append({mapping->joints().at(i).name, followerServos->at(i).id});
-    QElapsedTimer recordingClock;
+    feetech::TeleopLoop teleop(*mapping, *followerServos, *leaderServos, *standing, maxSpeed);
     QEventLoop loop;
     bool linkLost = false;
     QString lostMessage;
-
-    const auto send = [&](const QVector<qint32> &targets, qint64 sampleUs) {
-        const double seconds = std::max(0.001, sinceWrite.nsecsElapsed() / 1e9);
-        sinceWrite.restart();
-        QVector<feetech::SyncWriteEntry> entries;
-        for (int i = 0; i < targets.size(); ++i) {
-            const double reach = stepsPerSecond * seconds;
-            sent[i] += std::clamp(double(targets.at(i)) - sent.at(i), -reach, reach);
-            entries.append(
-                {followerServos->at(i).id,
-                 *feetech::encodeValue(qint32(std::lround(sent.at(i))), table.format(*goal))});
-        }
-        writing = true;
-        writeStartedUs = sampleUs;
-        follower.session().submit(
-            feetech::operations::syncWrite(busBaud(), goal->address, goal->size, entries));
-    };
     QObject::connect(&follower.session(), &feetech::Session::operationFinished, &loop,
                      [&](const feetech::OperationResult &result) {
-                         if (result.operation != feetech::Operation::SyncWrite || !writing)
+                         if (result.operation != feetech::Operation::SyncWrite)
                              return;
-                         writing = false;
-                         ++writes;
-                         latencies.append(feetech::steadyMicroseconds() - writeStartedUs);
-                         if (waiting)
-                             send(*std::exchange(waiting, std::nullopt), leaderSampleUs);
+                         if (const auto next = teleop.takeWriteFinished())
+                             follower.session().submit(*next);
                      });
-    QObject::connect(
-        &leader.session(), &feetech::Session::telemetry, &loop,
-        [&](const QVector<feetech::FeedbackSample> &samples) {
-            QVector<qint32> targets = *standing;
-            int seen = 0;
-            for (const feetech::FeedbackSample &sample : samples) {
-                const int joint =
-                    int(std::find_if(leaderServos->begin(), leaderServos->end(),
-                                     [&](const ServoInfo &servo) { return servo.id == sample.id; })
-                        - leaderServos->begin());
-                const auto position = sample.value(feetech::Quantity::Position);
-                if (joint >= leaderServos->size() || !position)
-                    continue;
-                targets[joint] = mapping->followerGoal(joint, qint32(*position));
-                ++seen;
-            }
-            if (seen < leaderServos->size())
-                return; // a cycle some joint missed: its goal is not guessed
-            leaderSampleUs = samples.first().steadyUs;
-            if (writing)
-                waiting = targets;
-            else
-                send(targets, leaderSampleUs);
-        });
+    QObject::connect(&leader.session(), &feetech::Session::telemetry, &loop,
+                     [&](const QVector<feetech::FeedbackSample> &samples) {
+                         if (const auto write = teleop.takeLeaderCycle(samples))
+                             follower.session().submit(*write);
+                     });
     for (FeetechDevice *device : {&follower, &leader}) {
         QObject::connect(&device->session(), &feetech::Session::statusChanged, &loop,
                          [&, device](const seriallink::ConnectionStatus &status) {
@@ -301,10 +244,10 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     runUntilInterrupted(loop, duration);
     const double seconds = running.nsecsElapsed() / 1e9;
     leader.session().stopTelemetry();
-    waiting.reset();
+    teleop.stop();
     QElapsedTimer draining;
     draining.start();
-    while (writing && draining.elapsed() < 1000
+    while (teleop.isWriting() && draining.elapsed() < 1000
            && follower.session().status().state == seriallink::ConnectionState::Connected)
         QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 50);
 
@@ -320,17 +263,17 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
         }
     }
     util::FileError recordError;
-    const bool recorded =
-        !recordPath.isEmpty() && feetech::saveMotionRecording(recordPath, recording, &recordError);
+    const bool recorded = !recordPath.isEmpty()
+        && feetech::saveMotionRecording(recordPath, teleop.recording(), &recordError);
     if (recordError)
         m_output.err << "servoctl: " << recordError.describe() << '\n';
     else if (recorded)
         m_output.err << Tr::tr("servoctl: %n frame(s) of the follower's goals recorded in %1",
-                               nullptr, int(recording.frames.size()))
+                               nullptr, int(teleop.recording().frames.size()))
                             .arg(QDir::toNativeSeparators(recordPath))
                      << '\n';
-    std::sort(latencies.begin(), latencies.end());
-    const double medianMs = latencies.isEmpty() ? 0.0 : latencies.at(latencies.size() / 2) / 1e3;
+    const qint64 writes = teleop.cycles();
+    const double medianMs = teleop.medianLatencyMs();
     if (m_output.json)
         printJson(m_output.out,
                   QJsonObject {{QStringLiteral("cycles"), writes},

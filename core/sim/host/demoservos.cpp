@@ -14,6 +14,8 @@ DemoServos::~DemoServos()
         m_feetech->stop();
     if (m_arm)
         m_arm->stop();
+    if (m_leaderArm)
+        m_leaderArm->stop();
 }
 
 bool DemoServos::ensureFolder(QString *error)
@@ -83,16 +85,32 @@ QString DemoServos::feetechPort(QString *error)
 
 QString DemoServos::armPort(QString *error)
 {
+    return startArm(m_arm, QStringLiteral("so101"), QStringLiteral("so101-arm"), {}, error);
+}
+
+QString DemoServos::leaderArmPort(QString *error)
+{
+    // A hand that never tires, so the follower has something to follow.
+    const QVector<HandSweep> sweeps = {{3, 1500, 2600, 4.0, 0, Hand::Way::Direct},
+                                       {4, 1700, 2400, 3.0, 0, Hand::Way::Direct}};
+    return startArm(m_leaderArm, QStringLiteral("so101-leader"), QStringLiteral("so101-leader"),
+                    sweeps, error);
+}
+
+QString DemoServos::startArm(std::unique_ptr<SimulatorThread> &slot, const QString &robot,
+                             const QString &name, const QVector<HandSweep> &sweeps, QString *error)
+{
     SimulatorOptions options;
     OptionError why;
-    options.robot = simulatedRobot(QStringLiteral("so101"), &why);
+    options.robot = simulatedRobot(robot, &why);
     if (!options.robot) {
         if (error)
             *error = why.describe();
         return QString();
     }
     options.servos = robotServos(*options.robot);
-    return startFeetech(m_arm, options, QStringLiteral("so101-arm"), error);
+    options.sweeps = sweeps;
+    return startFeetech(slot, options, name, error);
 }
 
 } // namespace sim
