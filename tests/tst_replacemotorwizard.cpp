@@ -275,6 +275,12 @@ private slots:
         for (const testsupport::PluggedServo &servo : pluggedServos())
             QCOMPARE(servo.revision, quint64(0));
         QCOMPARE(m_wizard->page(), ReplaceMotorWizard::Page::SetUp);
+        // The port closed (the adapter pulled out): said, and nothing can be started.
+        m_client->disconnectFrom();
+        QTRY_VERIFY2_WITH_TIMEOUT(status().contains(QLatin1String("port is closed")),
+                                  qPrintable(status()), 10000);
+        QVERIFY(
+            !m_wizard->findChild<QPushButton *>(QStringLiteral("replaceFindButton"))->isEnabled());
     }
 
     void theArmScannedWithoutTheNewServoIsSaid()

@@ -72,7 +72,12 @@ ReplaceMotorWizard::ReplaceMotorWizard(feetech::BusClient *client, QWidget *pare
             &ReplaceMotorWizard::onProgress);
     connect(m_flow, &feetech::MotorSetupFlow::finished, this, &ReplaceMotorWizard::onSetUpFinished);
     connect(m_client, &feetech::BusClient::scanFinished, this, &ReplaceMotorWizard::onScanFinished);
-    connect(m_client, &feetech::BusClient::statusChanged, this, &ReplaceMotorWizard::updateActions);
+    connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
+        updateActions();
+        if (!m_client->isConnected() && page() != Page::Choice)
+            showStatus(tr("The Feetech port is closed: open it again to go on."),
+                       palette::Tone::Error);
+    });
     connect(m_client, &feetech::BusClient::busyChanged, this, &ReplaceMotorWizard::updateActions);
     showPage(Page::Choice);
 }
