@@ -186,6 +186,50 @@ private slots:
         QCOMPARE(again.at(0).driveMode, 1);
     }
 
+    void aReplacedJointIsUpdatedAndTheFilesOthersKept()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("arm.json"));
+        QVector<LeRobotMotor> file {{QStringLiteral("shoulder_pan"), 1, 0, -1200, 800, 3300},
+                                    {QStringLiteral("elbow_flex"), 3, 1, 40, 900, 3100},
+                                    {QStringLiteral("wrist_roll"), 5, 0, 15, 0, 4095}};
+        util::FileError error;
+        QVERIFY(saveLeRobotCalibration(file, path, &error));
+        const QByteArray before = [&] {
+            QFile saved(path);
+            return saved.open(QIODevice::ReadOnly) ? saved.readAll() : QByteArray();
+        }();
+
+        // The new servo's name and drive_mode are the file's, whatever the calibration says.
+        QVERIFY2(updateLeRobotCalibrationFile({{QStringLiteral("id_3"), 3, 0, -300, 1000, 2900}},
+                                              path, &error),
+                 qPrintable(error.describe()));
+        const auto updated = loadLeRobotCalibration(path, &error);
+        QVERIFY(updated);
+        QCOMPARE(updated->size(), 3);
+        QCOMPARE(updated->at(0).homingOffset, -1200);
+        QCOMPARE(updated->at(0).rangeMax, 3300);
+        const LeRobotMotor *elbow = leRobotMotorWithId(*updated, 3);
+        QVERIFY(elbow);
+        QCOMPARE(elbow->name, QStringLiteral("elbow_flex"));
+        QCOMPARE(elbow->driveMode, 1);
+        QCOMPARE(elbow->homingOffset, -300);
+        QCOMPARE(elbow->rangeMin, 1000);
+        QCOMPARE(elbow->rangeMax, 2900);
+        QCOMPARE(updated->at(2).homingOffset, 15);
+        QVERIFY(before != leRobotCalibrationToJson(*updated));
+
+        // A joint the file lacks: refused, the file left as it was.
+        const QByteArray now = leRobotCalibrationToJson(*updated);
+        QVERIFY(!updateLeRobotCalibrationFile({{QStringLiteral("gripper"), 6, 0, 0, 100, 200}},
+                                              path, &error));
+        QCOMPARE(error.code(), Code::MissingField);
+        QVERIFY2(error.describe().contains(QLatin1String("no joint has ID 6")),
+                 qPrintable(error.describe()));
+        QCOMPARE(leRobotCalibrationToJson(*loadLeRobotCalibration(path, &error)), now);
+        QVERIFY(!leRobotMotorWithId(*updated, 6));
+    }
+
     void theFolderFollowsLeRobotsEnvironment()
     {
         const QByteArray saved[] = {qgetenv("HF_LEROBOT_CALIBRATION"), qgetenv("HF_LEROBOT_HOME"),

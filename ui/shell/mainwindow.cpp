@@ -18,6 +18,7 @@
 #include "ptkworkspace.h"
 #include "recentfiles.h"
 #include "recordreplaydialog.h"
+#include "replacemotorwizard.h"
 #include "robotactions.h"
 #include "servolist.h"
 #include "setupwizard.h"
@@ -314,6 +315,23 @@ void MainWindow::createMenus()
         auto *wizard = findChild<SetupWizard *>();
         if (!wizard)
             wizard = new SetupWizard(m_feetech.get(), this);
+        wizard->show();
+        wizard->raise();
+        wizard->activateWindow();
+    });
+    // Replacing one joint's motor: its set-up needs an open port only, as Set up motors; the
+    // wizard scans the arm itself before calibrating the joint.
+    QAction *replaceMotor = robot->addAction(tr("Re&place a motor…"));
+    replaceMotor->setObjectName(QStringLiteral("replaceMotorAction"));
+    replaceMotor->setToolTip(tr("Set up a new servo as one joint of an arm and calibrate that "
+                                "joint alone into the arm's LeRobot file"));
+    replaceMotor->setEnabled(false);
+    connect(m_feetech.get(), &feetech::BusClient::statusChanged, replaceMotor,
+            [this, replaceMotor] { replaceMotor->setEnabled(m_feetech->isConnected()); });
+    connect(replaceMotor, &QAction::triggered, this, [this] {
+        auto *wizard = findChild<ReplaceMotorWizard *>();
+        if (!wizard)
+            wizard = new ReplaceMotorWizard(m_feetech.get(), this);
         wizard->show();
         wizard->raise();
         wizard->activateWindow();

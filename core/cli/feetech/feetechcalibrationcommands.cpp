@@ -168,9 +168,8 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
         if (!updated)
             throw UsageError {error.describe()};
         for (const quint8 id : ids) {
-            const auto motor = std::find_if(updated->begin(), updated->end(),
-                                            [id](const auto &m) { return m.id == id; });
-            if (motor == updated->end())
+            const feetech::LeRobotMotor *motor = feetech::leRobotMotorWithId(*updated, id);
+            if (!motor)
                 throw UsageError {
                     Tr::tr("servo %1 is no joint of %2")
                         .arg(id)
@@ -296,21 +295,10 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
             {joint.name, joint.id, 0, result.offset, result.minimumLimit, result.maximumLimit});
     }
     m_output.out.flush();
-    if (updated) {
-        // The file's joints, each as it was unless it was calibrated now (drive_mode kept).
-        for (const feetech::LeRobotMotor &motor : std::as_const(saved)) {
-            for (feetech::LeRobotMotor &kept : *updated) {
-                if (kept.id != motor.id)
-                    continue;
-                kept.homingOffset = motor.homingOffset;
-                kept.rangeMin = motor.rangeMin;
-                kept.rangeMax = motor.rangeMax;
-            }
-        }
-    }
     util::FileError error;
     const bool fileSaved = !saved.isEmpty()
-        && feetech::saveLeRobotCalibration(updated ? *updated : saved, out, &error);
+        && feetech::saveLeRobotCalibration(
+            updated ? feetech::updatedLeRobotCalibration(*updated, saved) : saved, out, &error);
     if (m_output.json) {
         printJson(m_output.out,
                   QJsonObject {{QStringLiteral("dry_run"), dryRun},

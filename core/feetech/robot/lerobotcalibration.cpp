@@ -230,6 +230,50 @@ void keepDriveModes(QVector<LeRobotMotor> &motors, const QString &path)
     }
 }
 
+const LeRobotMotor *leRobotMotorWithId(const QVector<LeRobotMotor> &motors, int id)
+{
+    const auto motor = std::find_if(motors.begin(), motors.end(),
+                                    [id](const LeRobotMotor &m) { return m.id == id; });
+    return motor == motors.end() ? nullptr : &*motor;
+}
+
+QVector<LeRobotMotor> updatedLeRobotCalibration(QVector<LeRobotMotor> file,
+                                                const QVector<LeRobotMotor> &calibrated)
+{
+    for (const LeRobotMotor &motor : calibrated) {
+        for (LeRobotMotor &kept : file) {
+            if (kept.id != motor.id)
+                continue;
+            kept.homingOffset = motor.homingOffset;
+            kept.rangeMin = motor.rangeMin;
+            kept.rangeMax = motor.rangeMax;
+        }
+    }
+    return file;
+}
+
+bool updateLeRobotCalibrationFile(const QVector<LeRobotMotor> &calibrated, const QString &path,
+                                  util::FileError *error)
+{
+    const auto file = loadLeRobotCalibration(path, error);
+    if (!file)
+        return false;
+    for (const LeRobotMotor &motor : calibrated) {
+        if (!leRobotMotorWithId(*file, motor.id)) {
+            util::report(error,
+                         util::FileError(util::FileError::Code::MissingField,
+                                         Tr::tr("no joint has ID %1 (%2): it is not this arm's "
+                                                "file")
+                                             .arg(motor.id)
+                                             .arg(motor.name))
+                             .withField(QString::number(motor.id))
+                             .inFile(path, util::FileError::Action::CheckingSave));
+            return false;
+        }
+    }
+    return saveLeRobotCalibration(updatedLeRobotCalibration(*file, calibrated), path, error);
+}
+
 QString leRobotCalibrationFolder()
 {
     if (const QString folder = environment("HF_LEROBOT_CALIBRATION"); !folder.isEmpty())

@@ -57,6 +57,19 @@ bool saveLeRobotCalibration(const QVector<LeRobotMotor> &motors, const QString &
 // each joint's drive_mode from the file there, by joint name (nothing when there is none).
 void keepDriveModes(QVector<LeRobotMotor> &motors, const QString &path);
 
+// The motor of `motors` with ID `id`; nullptr when there is none.
+const LeRobotMotor *leRobotMotorWithId(const QVector<LeRobotMotor> &motors, int id);
+// A file's motors after some of its joints were calibrated anew (a motor replaced): each joint of
+// `calibrated` takes the place of the file's joint of the same ID, with the file's name and
+// drive_mode; the file's other joints stay as they are. A calibrated joint the file lacks is
+// left out: check with leRobotMotorWithId first.
+QVector<LeRobotMotor> updatedLeRobotCalibration(QVector<LeRobotMotor> file,
+                                                const QVector<LeRobotMotor> &calibrated);
+// Loads the file at `path`, updates it with `calibrated` and saves it back; false and *error
+// when it cannot be read or saved, or lacks a joint of `calibrated` (then it is left as it was).
+bool updateLeRobotCalibrationFile(const QVector<LeRobotMotor> &calibrated, const QString &path,
+                                  util::FileError *error);
+
 // Where LeRobot keeps calibration files, as it finds it: $HF_LEROBOT_CALIBRATION, else
 // $HF_LEROBOT_HOME/calibration, else $HF_HOME/lerobot/calibration, with HF_HOME defaulting to
 // $XDG_CACHE_HOME/huggingface and that to ~/.cache/huggingface.

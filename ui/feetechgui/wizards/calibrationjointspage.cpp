@@ -232,6 +232,30 @@ bool CalibrationJointsPage::choose(Choice *choice, QString *error) const
     return true;
 }
 
+bool CalibrationJointsPage::keepOnly(int id, const QString &name, bool fullTurn)
+{
+    int kept = -1;
+    for (int row = 0; row < m_jointTable->rowCount(); ++row) {
+        if (m_jointTable->item(row, IdColumn)->text() == QString::number(id))
+            kept = row;
+    }
+    if (kept < 0)
+        return false;
+    // The other joints keep what the arm's file says of them: they are not shown. The file
+    // names the joint, so its name and tick cannot be changed; its full-turn flag can.
+    for (int row = 0; row < m_jointTable->rowCount(); ++row) {
+        m_jointTable->item(row, CalibrateColumn)
+            ->setCheckState(row == kept ? Qt::Checked : Qt::Unchecked);
+        m_jointTable->setRowHidden(row, row != kept);
+    }
+    m_jointTable->item(kept, CalibrateColumn)->setFlags(Qt::ItemIsEnabled);
+    m_jointTable->item(kept, NameColumn)->setText(name);
+    m_jointTable->item(kept, NameColumn)->setFlags(Qt::ItemIsEnabled);
+    m_jointTable->item(kept, FullTurnColumn)->setCheckState(fullTurn ? Qt::Checked : Qt::Unchecked);
+    m_template->setEnabled(false);
+    return true;
+}
+
 feetech::CalibrationOrder CalibrationJointsPage::order() const
 {
     return m_middleFirst->isChecked() ? feetech::CalibrationOrder::MiddlePoseFirst

@@ -54,6 +54,10 @@ public:
 
     QPushButton *nextButton() const { return m_next; }
 
+    // Ticks the servo with ID `id` alone, named `name` (a replaced motor, calibrated into its
+    // arm's file), and locks the choice; false when no scanned servo has that ID.
+    bool keepOnly(int id, const QString &name, bool fullTurn);
+
 private:
     void fillJointTable();
 

@@ -13,6 +13,7 @@
 
 #include <QDir>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -114,9 +115,15 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             m_cancel->setEnabled(true);
             m_resultsPage->saveButton()->setEnabled(!writtenMotors().isEmpty());
             m_resultsPage->recordAgainButton()->setEnabled(false);
-            m_status->setText(allOk ? tr("Every joint was written and verified. Save LeRobot's "
-                                         "file if you use LeRobot with this arm.")
-                                    : tr("Not every joint was written: see the status column."));
+            if (!allOk)
+                m_status->setText(tr("Not every joint was written: see the status column."));
+            else if (!m_updatedFile.isEmpty())
+                m_status->setText(tr("The joint was written and verified. Save it into %1: the "
+                                     "file's other joints stay as they are.")
+                                      .arg(QDir::toNativeSeparators(m_updatedFile)));
+            else
+                m_status->setText(tr("Every joint was written and verified. Save LeRobot's "
+                                     "file if you use LeRobot with this arm."));
             emit writingFinished(allOk);
         }
     });
@@ -488,17 +495,35 @@ bool CalibrationWizard::saveLeRobotFile(const QString &path, util::FileError *er
                                      tr("No joint was written: there is nothing to save.")));
         return false;
     }
+    if (!m_updatedFile.isEmpty())
+        return feetech::updateLeRobotCalibrationFile(motors, path, error);
     feetech::keepDriveModes(motors, path);
     return feetech::saveLeRobotCalibration(motors, path, error);
 }
 
+bool CalibrationWizard::calibrateReplacedMotor(int id, const QString &name, bool fullTurn,
+                                               const QString &file)
+{
+    if (m_stage != Stage::Choosing || !m_jointsPage->keepOnly(id, name, fullTurn))
+        return false;
+    m_updatedFile = file;
+    setWindowTitle(tr("Calibrate the new %1 servo").arg(name));
+    m_resultsPage->saveButton()->setText(tr("&Save into %1").arg(QFileInfo(file).fileName()));
+    m_resultsPage->saveButton()->setToolTip(
+        tr("Update %1: this joint's offset and range replaced, the other joints kept")
+            .arg(QDir::toNativeSeparators(file)));
+    return true;
+}
+
 void CalibrationWizard::chooseFileToSave()
 {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Save LeRobot calibration"),
-                                     QDir(defaultCalibrationFolder(m_jointsPage->chosenTemplate()))
-                                         .filePath(QStringLiteral("arm.json")),
-                                     tr("LeRobot calibration (*.json)"));
+    const QString path = !m_updatedFile.isEmpty()
+        ? m_updatedFile
+        : QFileDialog::getSaveFileName(
+            this, tr("Save LeRobot calibration"),
+            QDir(defaultCalibrationFolder(m_jointsPage->chosenTemplate()))
+                .filePath(QStringLiteral("arm.json")),
+            tr("LeRobot calibration (*.json)"));
     if (path.isEmpty())
         return;
     util::FileError error;

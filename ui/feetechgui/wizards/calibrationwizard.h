@@ -43,8 +43,13 @@ public:
     const QVector<feetech::JointCalibration> &results() const { return m_results; }
     // What the last write left of the results: written and verified, per joint.
     QVector<feetech::LeRobotMotor> writtenMotors() const;
-    // Saves the written joints; false and *error when it could not.
+    // Saves the written joints; false and *error when it could not. Once calibrateReplacedMotor
+    // chose a file, that file is updated instead: the written joint replaced, the others kept.
     bool saveLeRobotFile(const QString &path, util::FileError *error) const;
+    // Calibrates the servo with ID `id` alone (a replaced motor) as the joint `name` of the
+    // LeRobot file `file`, which Save updates; false when no scanned servo has that ID.
+    bool calibrateReplacedMotor(int id, const QString &name, bool fullTurn, const QString &file);
+    const QString &updatedFile() const { return m_updatedFile; }
 
     // The steps, for tests and keyboard users alike (each is what its page's button does).
     void goToWarning(); // from the joint choice
@@ -89,6 +94,7 @@ private:
     QVector<feetech::JointCalibration> m_results;
     QVector<bool> m_written; // per result: written and verified
     QVector<int> m_writeRows; // the result row of each write step
+    QString m_updatedFile; // the arm's file a replaced motor is calibrated into
 
     QStackedWidget *m_pages = nullptr;
     CalibrationJointsPage *m_jointsPage = nullptr;
