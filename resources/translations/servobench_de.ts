@@ -699,6 +699,22 @@
         <source>, full turn</source>
         <translation>, volle Umdrehung</translation>
     </message>
+    <message>
+        <source>The joint was written and verified. Save it into %1: the file&apos;s other joints stay as they are.</source>
+        <translation>Das Gelenk wurde geschrieben und verifiziert. Speichern Sie es in %1: Die anderen Gelenke der Datei bleiben unverändert.</translation>
+    </message>
+    <message>
+        <source>Calibrate the new %1 servo</source>
+        <translation>Das neue Servo %1 kalibrieren</translation>
+    </message>
+    <message>
+        <source>&amp;Save into %1</source>
+        <translation>In %1 &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Update %1: this joint&apos;s offset and range replaced, the other joints kept</source>
+        <translation>%1 aktualisieren: Offset und Bereich dieses Gelenks werden ersetzt, die anderen Gelenke bleiben erhalten</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionBar</name>
@@ -4034,6 +4050,10 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>the file is too large for a calibration</source>
         <translation>die Datei ist zu groß für eine Kalibrierung</translation>
     </message>
+    <message>
+        <source>no joint has ID %1 (%2): it is not this arm&apos;s file</source>
+        <translation>kein Gelenk hat ID %1 (%2): es ist nicht die Datei dieses Arms</translation>
+    </message>
 </context>
 <context>
     <name>LinkSession</name>
@@ -4353,6 +4373,22 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Give another program a port of its own on this Feetech bus and watch its traffic</source>
         <translation>Einem anderen Programm einen eigenen Port an diesem Feetech-Bus geben und seinen Datenverkehr beobachten</translation>
+    </message>
+    <message>
+        <source>Re&amp;place a motor…</source>
+        <translation>Motor &amp;ersetzen…</translation>
+    </message>
+    <message>
+        <source>Set up a new servo as one joint of an arm and calibrate that joint alone into the arm&apos;s LeRobot file</source>
+        <translation>Ein neues Servo als Gelenk eines Arms einrichten, nur dieses Gelenk kalibrieren und es in die LeRobot-Datei des Arms übernehmen</translation>
+    </message>
+    <message>
+        <source>&amp;Teleoperate…</source>
+        <translation>&amp;Teleoperation…</translation>
+    </message>
+    <message>
+        <source>Move this arm with a leader arm on another port</source>
+        <translation>Diesen Arm mit einem Führungsarm an einem anderen Anschluss bewegen</translation>
     </message>
 </context>
 <context>
@@ -6640,6 +6676,180 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>ReplaceMotorWizard</name>
+    <message>
+        <source>Replace a motor</source>
+        <translation>Motor ersetzen</translation>
+    </message>
+    <message>
+        <source>The Feetech port is closed: open it again to go on.</source>
+        <translation>Der Feetech-Anschluss ist geschlossen: Öffnen Sie ihn erneut, um fortzufahren.</translation>
+    </message>
+    <message>
+        <source>A new servo takes the place of one joint of an arm set up and calibrated before. ServoBench sets it up as that joint (its ID, the robot&apos;s baud rate and the joint&apos;s settings, each read back), then calibrates that joint alone and updates the arm&apos;s LeRobot calibration file with it: the file&apos;s other joints stay as they are.</source>
+        <translation>Ein neues Servo ersetzt ein Gelenk eines zuvor eingerichteten und kalibrierten Arms. ServoBench richtet es als dieses Gelenk ein (seine ID, die Baudrate des Roboters und die Einstellungen des Gelenks, jeweils zurückgelesen), kalibriert dann nur dieses Gelenk und aktualisiert damit die LeRobot-Kalibrierdatei des Arms: Die anderen Gelenke der Datei bleiben unverändert.</translation>
+    </message>
+    <message>
+        <source>Robot:</source>
+        <translation>Roboter:</translation>
+    </message>
+    <message>
+        <source>Joint replaced:</source>
+        <translation>Ersetztes Gelenk:</translation>
+    </message>
+    <message>
+        <source>The arm&apos;s LeRobot calibration file</source>
+        <translation>Die LeRobot-Kalibrierdatei des Arms</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Choose the arm&apos;s LeRobot calibration file</source>
+        <translation>Die LeRobot-Kalibrierdatei des Arms auswählen</translation>
+    </message>
+    <message>
+        <source>Calibration file:</source>
+        <translation>Kalibrierdatei:</translation>
+    </message>
+    <message>
+        <source>&amp;Next</source>
+        <translation>&amp;Weiter</translation>
+    </message>
+    <message>
+        <source>Check that the file has the joint, then set up the new servo</source>
+        <translation>Prüfen, ob die Datei das Gelenk enthält, dann das neue Servo einrichten</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Zurück</translation>
+    </message>
+    <message>
+        <source>Choose another joint or file</source>
+        <translation>Ein anderes Gelenk oder eine andere Datei wählen</translation>
+    </message>
+    <message>
+        <source>&amp;Find</source>
+        <translation>&amp;Suchen</translation>
+    </message>
+    <message>
+        <source>Look for the one servo on the bus, at every ID and baud rate; nothing is written</source>
+        <translation>Das eine Servo am Bus suchen, bei jeder ID und Baudrate; es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>&amp;Set up</source>
+        <translation>&amp;Einrichten</translation>
+    </message>
+    <message>
+        <source>Give the servo found the joint&apos;s ID, the robot&apos;s baud rate and the joint&apos;s settings, each read back</source>
+        <translation>Dem gefundenen Servo die ID des Gelenks, die Baudrate des Roboters und die Einstellungen des Gelenks geben, jeweils zurückgelesen</translation>
+    </message>
+    <message>
+        <source>S&amp;can the arm</source>
+        <translation>Arm s&amp;cannen</translation>
+    </message>
+    <message>
+        <source>Look for the arm&apos;s servos at the robot&apos;s baud rate; nothing is written</source>
+        <translation>Die Servos des Arms bei der Baudrate des Roboters suchen; es wird nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate the joint…</source>
+        <translation>Gelenk &amp;kalibrieren…</translation>
+    </message>
+    <message>
+        <source>Record the new servo&apos;s range by hand and update the calibration file</source>
+        <translation>Den Bereich des neuen Servos von Hand aufzeichnen und die Kalibrierdatei aktualisieren</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1 (ID %2)</translation>
+    </message>
+    <message>
+        <source>The arm&apos;s LeRobot calibration</source>
+        <translation>LeRobot-Kalibrierung des Arms</translation>
+    </message>
+    <message>
+        <source>LeRobot calibration (*.json)</source>
+        <translation>LeRobot-Kalibrierung (*.json)</translation>
+    </message>
+    <message>
+        <source>Open the Feetech port the new servo is connected to first.</source>
+        <translation>Öffnen Sie zuerst den Feetech-Anschluss, an dem das neue Servo angeschlossen ist.</translation>
+    </message>
+    <message>
+        <source>Choose the robot and the joint whose motor is replaced.</source>
+        <translation>Wählen Sie den Roboter und das Gelenk, dessen Motor ersetzt wird.</translation>
+    </message>
+    <message>
+        <source>Choose the arm&apos;s LeRobot calibration file: the new joint&apos;s calibration goes into it.</source>
+        <translation>Wählen Sie die LeRobot-Kalibrierdatei des Arms: Die Kalibrierung des neuen Gelenks wird darin gespeichert.</translation>
+    </message>
+    <message>
+        <source>%1 has no joint with ID %2: choose the file of the arm whose %3 motor is replaced.</source>
+        <translation>%1 hat kein Gelenk mit ID %2: Wählen Sie die Datei des Arms, dessen Motor %3 ersetzt wird.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Unplug every servo of the arm from the bus&lt;/b&gt; and connect only the new servo for &lt;b&gt;%1&lt;/b&gt;, then press &lt;i&gt;Find&lt;/i&gt;.&lt;br&gt;&lt;small&gt;Keep the power on. A new servo answers at ID 1 and 1 Mbps; ServoBench finds it at any ID and rate and gives it ID %2 and %3.&lt;/small&gt;</source>
+        <translation>&lt;b&gt;Trennen Sie alle Servos des Arms vom Bus&lt;/b&gt; und schließen Sie nur das neue Servo für &lt;b&gt;%1&lt;/b&gt; an, dann drücken Sie &lt;i&gt;Suchen&lt;/i&gt;.&lt;br&gt;&lt;small&gt;Lassen Sie die Stromversorgung eingeschaltet. Ein neues Servo antwortet bei ID 1 und 1 Mbps; ServoBench findet es bei jeder ID und Rate und gibt ihm ID %2 und %3.&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>Looking for the servo at every baud rate…</source>
+        <translation>Das Servo wird bei jeder Baudrate gesucht…</translation>
+    </message>
+    <message>
+        <source>Setting up the servo…</source>
+        <translation>Das Servo wird eingerichtet…</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2: %3</source>
+        <translation>Schritt %1 von %2: %3</translation>
+    </message>
+    <message>
+        <source>Nothing was written to any servo.</source>
+        <translation>Auf kein Servo wurde etwas geschrieben.</translation>
+    </message>
+    <message>
+        <source>Done before that:</source>
+        <translation>Davor erledigt:</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Found one servo:&lt;/b&gt; servo %1 at %2, model %3. Press &lt;i&gt;Set up&lt;/i&gt; to make it the %4 joint.</source>
+        <translation>&lt;b&gt;Ein Servo gefunden:&lt;/b&gt; Servo %1 bei %2, Modell %3. Drücken Sie &lt;i&gt;Einrichten&lt;/i&gt;, um es zum Gelenk %4 zu machen.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Put the arm back together:&lt;/b&gt; connect every servo in its chain as before, keep the power on, and press &lt;i&gt;Scan the arm&lt;/i&gt;. The %1 joint is then calibrated alone into %2.</source>
+        <translation>&lt;b&gt;Bauen Sie den Arm wieder zusammen:&lt;/b&gt; Verbinden Sie alle Servos wie zuvor in ihrer Kette, lassen Sie die Stromversorgung eingeschaltet und drücken Sie &lt;i&gt;Arm scannen&lt;/i&gt;. Danach wird nur das Gelenk %1 kalibriert und in %2 übernommen.</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate %1…</source>
+        <translation>%1 &amp;kalibrieren…</translation>
+    </message>
+    <message>
+        <source>Looking for the arm&apos;s servos at %1…</source>
+        <translation>Die Servos des Arms werden bei %1 gesucht…</translation>
+    </message>
+    <message>
+        <source>The new %1 servo does not answer at ID %2 and %3: check its cable and the power, then scan again.</source>
+        <translation>Das neue Servo %1 antwortet nicht bei ID %2 und %3: Prüfen Sie sein Kabel und die Stromversorgung und scannen Sie dann erneut.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n servo(s) answer, the new one among them.</source>
+        <translation>
+            <numerusform>%n Servo antwortet, darunter das neue.</numerusform>
+            <numerusform>%n Servos antworten, darunter das neue.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The scan did not list servo %1: scan the arm again.</source>
+        <translation>Servo %1 fehlt im Scan: Scannen Sie den Arm erneut.</translation>
+    </message>
+    <message>
+        <source>Stopping after this step…</source>
+        <translation>Anhalten nach diesem Schritt…</translation>
+    </message>
+</context>
+<context>
     <name>RequestEngine</name>
     <message>
         <source>stray input discarded before a request</source>
@@ -8417,6 +8627,179 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>TeleopDialog</name>
+    <message>
+        <source>Teleoperate</source>
+        <translation>Teleoperation</translation>
+    </message>
+    <message>
+        <source>Arms</source>
+        <translation>Arme</translation>
+    </message>
+    <message>
+        <source>The leader arm&apos;s adapter: a second port, not the one the window has open</source>
+        <translation>Der Adapter des Führungsarms: ein zweiter Anschluss, nicht der, den das Fenster geöffnet hat</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>&amp;Aktualisieren</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Die seriellen Anschlüsse erneut auflisten</translation>
+    </message>
+    <message>
+        <source>The arm on %1 (the window&apos;s bus)</source>
+        <translation>Der Arm an %1 (der Bus des Fensters)</translation>
+    </message>
+    <message>
+        <source>None: connect to the follower arm&apos;s bus first</source>
+        <translation>Keiner: Verbinden Sie sich zuerst mit dem Bus des Folgearms</translation>
+    </message>
+    <message>
+        <source>A LeRobot calibration file (.json)</source>
+        <translation>Eine LeRobot-Kalibrierdatei (.json)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s calibration file</source>
+        <translation>Die Kalibrierdatei des Folgearms</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s calibration file</source>
+        <translation>Die Kalibrierdatei des Führungsarms</translation>
+    </message>
+    <message>
+        <source> °/s</source>
+        <translation> °/s</translation>
+    </message>
+    <message>
+        <source>No joint of the follower moves faster, so it eases to the leader&apos;s pose at the start</source>
+        <translation>Kein Gelenk des Folgearms bewegt sich schneller, sodass er zu Beginn sanft in die Pose des Führungsarms fährt</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>How often the leader is read; each reading is one write to the follower, as fast as the follower&apos;s bus takes them</source>
+        <translation>Wie oft der Führungsarm gelesen wird; jeder Messwert ergibt einen Schreibvorgang auf den Folgearm, so schnell, wie der Bus des Folgearms sie aufnimmt</translation>
+    </message>
+    <message>
+        <source>Follower:</source>
+        <translation>Folgearm:</translation>
+    </message>
+    <message>
+        <source>Follower&apos;s calibration:</source>
+        <translation>Kalibrierung des Folgearms:</translation>
+    </message>
+    <message>
+        <source>Leader port:</source>
+        <translation>Anschluss des Führungsarms:</translation>
+    </message>
+    <message>
+        <source>Leader&apos;s calibration:</source>
+        <translation>Kalibrierung des Führungsarms:</translation>
+    </message>
+    <message>
+        <source>Maximum speed:</source>
+        <translation>Höchstgeschwindigkeit:</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>Rate:</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <source>Check both arms against their files, hold the follower where it stands, then follow the leader</source>
+        <translation>Beide Arme mit ihren Dateien abgleichen, den Folgearm an seiner Stelle halten und dann dem Führungsarm folgen</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>S&amp;topp</translation>
+    </message>
+    <message>
+        <source>Stop following: the follower holds where it is</source>
+        <translation>Folgen beenden: Der Folgearm hält an seiner Stelle</translation>
+    </message>
+    <message>
+        <source>Joints (LeRobot&apos;s units: −100…100, the gripper 0…100)</source>
+        <translation>Gelenke (Einheiten von LeRobot: −100…100, der Greifer 0…100)</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>Gelenk</translation>
+    </message>
+    <message>
+        <source>Leader</source>
+        <translation>Führungsarm</translation>
+    </message>
+    <message>
+        <source>Follower&apos;s goal</source>
+        <translation>Ziel des Folgearms</translation>
+    </message>
+    <message>
+        <source>The joints both files name show here once started.</source>
+        <translation>Die Gelenke, die beide Dateien nennen, erscheinen hier nach dem Start.</translation>
+    </message>
+    <message>
+        <source>Loop: not running.</source>
+        <translation>Schleife: läuft nicht.</translation>
+    </message>
+    <message>
+        <source>Simulated SO-101 leader arm</source>
+        <translation>Simulierter SO-101-Führungsarm</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>LeRobot calibration files (*.json);;All files (*)</source>
+        <translation>LeRobot-Kalibrierdateien (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The simulated leader arm could not start: %1</source>
+        <translation>Der simulierte Führungsarm konnte nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>Where the leader&apos;s %1 is</source>
+        <translation>Wo %1 des Führungsarms steht</translation>
+    </message>
+    <message>
+        <source>The goal last sent to the follower&apos;s %1, within its speed limit</source>
+        <translation>Das zuletzt an %1 des Folgearms gesendete Ziel, innerhalb seiner Geschwindigkeitsgrenze</translation>
+    </message>
+    <message>
+        <source>Loop: waiting for the leader&apos;s first reading.</source>
+        <translation>Schleife: wartet auf den ersten Messwert des Führungsarms.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Loop: %1 cycles a second; leader to follower %2 ms (median %3 ms); %n cycle(s) so far</source>
+        <translation>
+            <numerusform>Schleife: %1 Zyklen pro Sekunde; Führungs- zu Folgearm %2 ms (Median %3 ms); bisher %n Zyklus</numerusform>
+            <numerusform>Schleife: %1 Zyklen pro Sekunde; Führungs- zu Folgearm %2 ms (Median %3 ms); bisher %n Zyklen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Loop: stopped after %n cycle(s); leader to follower %1 ms (median)</source>
+        <translation>
+            <numerusform>Schleife: nach %n Zyklus gestoppt; Führungs- zu Folgearm %1 ms (Median)</numerusform>
+            <numerusform>Schleife: nach %n Zyklen gestoppt; Führungs- zu Folgearm %1 ms (Median)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>TeleopMapping</name>
     <message>
         <source>%1 (not in the leader&apos;s file)</source>
@@ -8773,6 +9156,104 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>%1; the incomplete file %2 was removed.</source>
         <translation>%1; die unvollständige Datei %2 wurde entfernt.</translation>
+    </message>
+</context>
+<context>
+    <name>feetech::TeleopBus</name>
+    <message>
+        <source>The follower&apos;s bus is not open.</source>
+        <translation>Der Bus des Folgearms ist nicht geöffnet.</translation>
+    </message>
+</context>
+<context>
+    <name>feetech::Teleoperation</name>
+    <message>
+        <source>Connect to the follower arm&apos;s bus first: it is the bus the window has open.</source>
+        <translation>Verbinden Sie sich zuerst mit dem Bus des Folgearms: Es ist der Bus, den das Fenster geöffnet hat.</translation>
+    </message>
+    <message>
+        <source>Choose the leader arm&apos;s port.</source>
+        <translation>Wählen Sie den Anschluss des Führungsarms.</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s port is the follower&apos;s: the leader and the follower are two arms on two adapters.</source>
+        <translation>Der Anschluss des Führungsarms ist der des Folgearms: Führungs- und Folgearm sind zwei Arme an zwei Adaptern.</translation>
+    </message>
+    <message>
+        <source>The two files name different joints: %1.</source>
+        <translation>Die beiden Dateien nennen verschiedene Gelenke: %1.</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s joint %1 (servo %2) is not on the bus the window has open: scan it, or choose the follower&apos;s file.</source>
+        <translation>Gelenk %1 (Servo %2) des Folgearms ist nicht an dem Bus, den das Fenster geöffnet hat: Scannen Sie den Bus oder wählen Sie die Datei des Folgearms.</translation>
+    </message>
+    <message>
+        <source>Opening the leader&apos;s port…</source>
+        <translation>Anschluss des Führungsarms wird geöffnet…</translation>
+    </message>
+    <message>
+        <source>Stopped before the follower moved.</source>
+        <translation>Gestoppt, bevor sich der Folgearm bewegt hat.</translation>
+    </message>
+    <message>
+        <source>Checking the leader&apos;s joints…</source>
+        <translation>Gelenke des Führungsarms werden geprüft…</translation>
+    </message>
+    <message>
+        <source>The leader was lost: %1</source>
+        <translation>Der Führungsarm ist nicht mehr erreichbar: %1</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s port could not be opened: %1</source>
+        <translation>Der Anschluss des Führungsarms konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>The follower was lost: %1. It could not be told to hold.</source>
+        <translation>Der Folgearm ist nicht mehr erreichbar: %1. Er konnte nicht angewiesen werden zu halten.</translation>
+    </message>
+    <message>
+        <source>Checking the follower&apos;s joints…</source>
+        <translation>Gelenke des Folgearms werden geprüft…</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s joint %1 (servo %2) does not answer: %3</source>
+        <translation>Gelenk %1 (Servo %2) des Führungsarms antwortet nicht: %3</translation>
+    </message>
+    <message>
+        <source>its model is unknown</source>
+        <translation>sein Modell ist unbekannt</translation>
+    </message>
+    <message>
+        <source>Joint %1 (servo %2) does not hold what %3 says (%4): write the file to the arm first (Robot &gt; Calibration files).</source>
+        <translation>Gelenk %1 (Servo %2) enthält nicht, was %3 angibt (%4): Schreiben Sie die Datei zuerst auf den Arm (Roboter &gt; Kalibrierdateien).</translation>
+    </message>
+    <message>
+        <source>The follower holds where it stands…</source>
+        <translation>Der Folgearm hält an seiner Stelle…</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s torque could not be switched on.</source>
+        <translation>Das Drehmoment des Folgearms konnte nicht eingeschaltet werden.</translation>
+    </message>
+    <message>
+        <source>Servo %1 reports no position.</source>
+        <translation>Servo %1 meldet keine Position.</translation>
+    </message>
+    <message>
+        <source>Following the leader.</source>
+        <translation>Folgt dem Führungsarm.</translation>
+    </message>
+    <message>
+        <source>The follower could not be told to hold.</source>
+        <translation>Der Folgearm konnte nicht angewiesen werden zu halten.</translation>
+    </message>
+    <message>
+        <source>Stopped: the follower holds where it is.</source>
+        <translation>Gestoppt: Der Folgearm hält an seiner Stelle.</translation>
+    </message>
+    <message>
+        <source>%1 The follower holds where it is.</source>
+        <translation>%1 Der Folgearm hält an seiner Stelle.</translation>
     </message>
 </context>
 <context>

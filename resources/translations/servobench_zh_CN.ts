@@ -697,6 +697,22 @@
         <source>, full turn</source>
         <translation>，整圈</translation>
     </message>
+    <message>
+        <source>The joint was written and verified. Save it into %1: the file&apos;s other joints stay as they are.</source>
+        <translation>该关节已写入并验证。请将其保存到 %1：文件中的其他关节保持不变。</translation>
+    </message>
+    <message>
+        <source>Calibrate the new %1 servo</source>
+        <translation>校准新的 %1 舵机</translation>
+    </message>
+    <message>
+        <source>&amp;Save into %1</source>
+        <translation>保存到 %1(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Update %1: this joint&apos;s offset and range replaced, the other joints kept</source>
+        <translation>更新 %1：替换此关节的偏移和范围，保留其他关节</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionBar</name>
@@ -4014,6 +4030,10 @@ An ID in use is refused.</source>
         <source>the file is too large for a calibration</source>
         <translation>文件过大，不可能是校准文件</translation>
     </message>
+    <message>
+        <source>no joint has ID %1 (%2): it is not this arm&apos;s file</source>
+        <translation>没有关节的 ID 为 %1（%2）：这不是此机械臂的文件</translation>
+    </message>
 </context>
 <context>
     <name>LinkSession</name>
@@ -4332,6 +4352,22 @@ An ID in use is refused.</source>
     <message>
         <source>Give another program a port of its own on this Feetech bus and watch its traffic</source>
         <translation>为另一个程序在此 Feetech 总线上提供专用端口，并监视其通信</translation>
+    </message>
+    <message>
+        <source>Re&amp;place a motor…</source>
+        <translation>更换舵机(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Set up a new servo as one joint of an arm and calibrate that joint alone into the arm&apos;s LeRobot file</source>
+        <translation>将新舵机设置为机械臂的某个关节，只校准该关节，并将结果写入机械臂的 LeRobot 文件</translation>
+    </message>
+    <message>
+        <source>&amp;Teleoperate…</source>
+        <translation>遥操作(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>Move this arm with a leader arm on another port</source>
+        <translation>用另一个端口上的主臂操控此机械臂</translation>
     </message>
 </context>
 <context>
@@ -6604,6 +6640,179 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>ReplaceMotorWizard</name>
+    <message>
+        <source>Replace a motor</source>
+        <translation>更换舵机</translation>
+    </message>
+    <message>
+        <source>The Feetech port is closed: open it again to go on.</source>
+        <translation>Feetech 端口已关闭：请重新打开以继续。</translation>
+    </message>
+    <message>
+        <source>A new servo takes the place of one joint of an arm set up and calibrated before. ServoBench sets it up as that joint (its ID, the robot&apos;s baud rate and the joint&apos;s settings, each read back), then calibrates that joint alone and updates the arm&apos;s LeRobot calibration file with it: the file&apos;s other joints stay as they are.</source>
+        <translation>新舵机将替换一条此前已设置并校准过的机械臂上的某个关节。ServoBench 会将其设置为该关节（其 ID、机器人的波特率和该关节的设置，每项都会回读），然后只校准该关节，并用结果更新机械臂的 LeRobot 校准文件：文件中的其他关节保持不变。</translation>
+    </message>
+    <message>
+        <source>Robot:</source>
+        <translation>机器人：</translation>
+    </message>
+    <message>
+        <source>Joint replaced:</source>
+        <translation>更换的关节：</translation>
+    </message>
+    <message>
+        <source>The arm&apos;s LeRobot calibration file</source>
+        <translation>机械臂的 LeRobot 校准文件</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>浏览(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>Choose the arm&apos;s LeRobot calibration file</source>
+        <translation>选择机械臂的 LeRobot 校准文件</translation>
+    </message>
+    <message>
+        <source>Calibration file:</source>
+        <translation>校准文件：</translation>
+    </message>
+    <message>
+        <source>&amp;Next</source>
+        <translation>下一步(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Check that the file has the joint, then set up the new servo</source>
+        <translation>检查文件中是否有该关节，然后设置新舵机</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>上一步(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Choose another joint or file</source>
+        <translation>选择其他关节或文件</translation>
+    </message>
+    <message>
+        <source>&amp;Find</source>
+        <translation>查找(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Look for the one servo on the bus, at every ID and baud rate; nothing is written</source>
+        <translation>在所有 ID 和波特率下查找总线上唯一的舵机；不写入任何内容</translation>
+    </message>
+    <message>
+        <source>&amp;Set up</source>
+        <translation>设置(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Give the servo found the joint&apos;s ID, the robot&apos;s baud rate and the joint&apos;s settings, each read back</source>
+        <translation>为找到的舵机设置该关节的 ID、机器人的波特率和该关节的设置，每项都会回读</translation>
+    </message>
+    <message>
+        <source>S&amp;can the arm</source>
+        <translation>扫描机械臂(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Look for the arm&apos;s servos at the robot&apos;s baud rate; nothing is written</source>
+        <translation>以机器人的波特率查找机械臂的舵机；不写入任何内容</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate the joint…</source>
+        <translation>校准关节(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Record the new servo&apos;s range by hand and update the calibration file</source>
+        <translation>手动记录新舵机的范围，并更新校准文件</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1 (ID %2)</translation>
+    </message>
+    <message>
+        <source>The arm&apos;s LeRobot calibration</source>
+        <translation>机械臂的 LeRobot 校准文件</translation>
+    </message>
+    <message>
+        <source>LeRobot calibration (*.json)</source>
+        <translation>LeRobot 校准文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Open the Feetech port the new servo is connected to first.</source>
+        <translation>请先打开连接新舵机的 Feetech 端口。</translation>
+    </message>
+    <message>
+        <source>Choose the robot and the joint whose motor is replaced.</source>
+        <translation>请选择机器人以及要更换舵机的关节。</translation>
+    </message>
+    <message>
+        <source>Choose the arm&apos;s LeRobot calibration file: the new joint&apos;s calibration goes into it.</source>
+        <translation>请选择机械臂的 LeRobot 校准文件：新关节的校准将写入其中。</translation>
+    </message>
+    <message>
+        <source>%1 has no joint with ID %2: choose the file of the arm whose %3 motor is replaced.</source>
+        <translation>%1 中没有 ID 为 %2 的关节：请选择更换了 %3 舵机的那条机械臂的文件。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Unplug every servo of the arm from the bus&lt;/b&gt; and connect only the new servo for &lt;b&gt;%1&lt;/b&gt;, then press &lt;i&gt;Find&lt;/i&gt;.&lt;br&gt;&lt;small&gt;Keep the power on. A new servo answers at ID 1 and 1 Mbps; ServoBench finds it at any ID and rate and gives it ID %2 and %3.&lt;/small&gt;</source>
+        <translation>&lt;b&gt;从总线上拔下机械臂的所有舵机&lt;/b&gt;，只连接 &lt;b&gt;%1&lt;/b&gt; 的新舵机，然后点击&lt;i&gt;查找&lt;/i&gt;。&lt;br&gt;&lt;small&gt;请保持通电。新舵机在 ID 1、1 Mbps 下应答；ServoBench 能在任意 ID 和波特率下找到它，并将其设为 ID %2 和 %3。&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>Looking for the servo at every baud rate…</source>
+        <translation>正在所有波特率下查找舵机…</translation>
+    </message>
+    <message>
+        <source>Setting up the servo…</source>
+        <translation>正在设置舵机…</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2: %3</source>
+        <translation>第 %1 步，共 %2 步：%3</translation>
+    </message>
+    <message>
+        <source>Nothing was written to any servo.</source>
+        <translation>未向任何舵机写入内容。</translation>
+    </message>
+    <message>
+        <source>Done before that:</source>
+        <translation>此前已完成：</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Found one servo:&lt;/b&gt; servo %1 at %2, model %3. Press &lt;i&gt;Set up&lt;/i&gt; to make it the %4 joint.</source>
+        <translation>&lt;b&gt;找到一个舵机：&lt;/b&gt;舵机 %1，位于 %2，型号 %3。点击&lt;i&gt;设置&lt;/i&gt;将其设为 %4 关节。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Put the arm back together:&lt;/b&gt; connect every servo in its chain as before, keep the power on, and press &lt;i&gt;Scan the arm&lt;/i&gt;. The %1 joint is then calibrated alone into %2.</source>
+        <translation>&lt;b&gt;重新组装机械臂：&lt;/b&gt;像之前一样将所有舵机串联，保持通电，然后点击&lt;i&gt;扫描机械臂&lt;/i&gt;。随后只校准 %1 关节，并将结果写入 %2。</translation>
+    </message>
+    <message>
+        <source>&amp;Calibrate %1…</source>
+        <translation>校准 %1(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Looking for the arm&apos;s servos at %1…</source>
+        <translation>正在以 %1 查找机械臂的舵机…</translation>
+    </message>
+    <message>
+        <source>The new %1 servo does not answer at ID %2 and %3: check its cable and the power, then scan again.</source>
+        <translation>新的 %1 舵机在 ID %2、%3 下无应答：请检查其电缆和电源，然后重新扫描。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n servo(s) answer, the new one among them.</source>
+        <translation>
+            <numerusform>%n 个舵机有应答，其中包括新舵机。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The scan did not list servo %1: scan the arm again.</source>
+        <translation>扫描结果中没有舵机 %1：请重新扫描机械臂。</translation>
+    </message>
+    <message>
+        <source>Stopping after this step…</source>
+        <translation>将在此步骤后停止…</translation>
+    </message>
+</context>
+<context>
     <name>RequestEngine</name>
     <message>
         <source>stray input discarded before a request</source>
@@ -8371,6 +8580,177 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>TeleopDialog</name>
+    <message>
+        <source>Teleoperate</source>
+        <translation>遥操作</translation>
+    </message>
+    <message>
+        <source>Arms</source>
+        <translation>机械臂</translation>
+    </message>
+    <message>
+        <source>The leader arm&apos;s adapter: a second port, not the one the window has open</source>
+        <translation>主臂的适配器：第二个端口，而不是本窗口已打开的端口</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>刷新(&amp;F)</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>重新列出串口</translation>
+    </message>
+    <message>
+        <source>The arm on %1 (the window&apos;s bus)</source>
+        <translation>%1 上的机械臂（本窗口的总线）</translation>
+    </message>
+    <message>
+        <source>None: connect to the follower arm&apos;s bus first</source>
+        <translation>无：请先连接到从臂的总线</translation>
+    </message>
+    <message>
+        <source>A LeRobot calibration file (.json)</source>
+        <translation>LeRobot 校准文件 (.json)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s calibration file</source>
+        <translation>从臂的校准文件</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s calibration file</source>
+        <translation>主臂的校准文件</translation>
+    </message>
+    <message>
+        <source> °/s</source>
+        <translation> °/s</translation>
+    </message>
+    <message>
+        <source>No joint of the follower moves faster, so it eases to the leader&apos;s pose at the start</source>
+        <translation>从臂的任何关节都不会超过此速度，因此开始时它会平缓地移动到主臂的姿态</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>How often the leader is read; each reading is one write to the follower, as fast as the follower&apos;s bus takes them</source>
+        <translation>读取主臂的频率；每次读取对应一次向从臂的写入，速度以从臂总线能承受的为限</translation>
+    </message>
+    <message>
+        <source>Follower:</source>
+        <translation>从臂：</translation>
+    </message>
+    <message>
+        <source>Follower&apos;s calibration:</source>
+        <translation>从臂校准：</translation>
+    </message>
+    <message>
+        <source>Leader port:</source>
+        <translation>主臂端口：</translation>
+    </message>
+    <message>
+        <source>Leader&apos;s calibration:</source>
+        <translation>主臂校准：</translation>
+    </message>
+    <message>
+        <source>Maximum speed:</source>
+        <translation>最大速度：</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>频率：</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>开始(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Check both arms against their files, hold the follower where it stands, then follow the leader</source>
+        <translation>将两条机械臂与各自的文件核对，使从臂保持在当前位置，然后跟随主臂</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>停止(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Stop following: the follower holds where it is</source>
+        <translation>停止跟随：从臂保持在当前位置</translation>
+    </message>
+    <message>
+        <source>Joints (LeRobot&apos;s units: −100…100, the gripper 0…100)</source>
+        <translation>关节（LeRobot 单位：−100…100，夹爪 0…100）</translation>
+    </message>
+    <message>
+        <source>Joint</source>
+        <translation>关节</translation>
+    </message>
+    <message>
+        <source>Leader</source>
+        <translation>主臂</translation>
+    </message>
+    <message>
+        <source>Follower&apos;s goal</source>
+        <translation>从臂目标</translation>
+    </message>
+    <message>
+        <source>The joints both files name show here once started.</source>
+        <translation>启动后，这里会显示两个文件中都有的关节。</translation>
+    </message>
+    <message>
+        <source>Loop: not running.</source>
+        <translation>循环：未运行。</translation>
+    </message>
+    <message>
+        <source>Simulated SO-101 leader arm</source>
+        <translation>模拟 SO-101 主臂</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>LeRobot calibration files (*.json);;All files (*)</source>
+        <translation>LeRobot 校准文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The simulated leader arm could not start: %1</source>
+        <translation>模拟主臂无法启动：%1</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>Where the leader&apos;s %1 is</source>
+        <translation>主臂 %1 的位置</translation>
+    </message>
+    <message>
+        <source>The goal last sent to the follower&apos;s %1, within its speed limit</source>
+        <translation>最后发送给从臂 %1 的目标，受其速度限制约束</translation>
+    </message>
+    <message>
+        <source>Loop: waiting for the leader&apos;s first reading.</source>
+        <translation>循环：正在等待主臂的首次读数。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Loop: %1 cycles a second; leader to follower %2 ms (median %3 ms); %n cycle(s) so far</source>
+        <translation>
+            <numerusform>循环：每秒 %1 个周期；主臂到从臂 %2 ms（中位数 %3 ms）；至今共 %n 个周期</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Loop: stopped after %n cycle(s); leader to follower %1 ms (median)</source>
+        <translation>
+            <numerusform>循环：%n 个周期后已停止；主臂到从臂 %1 ms（中位数）</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>TeleopMapping</name>
     <message>
         <source>%1 (not in the leader&apos;s file)</source>
@@ -8726,6 +9106,104 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>%1; the incomplete file %2 was removed.</source>
         <translation>%1；不完整的文件 %2 已删除。</translation>
+    </message>
+</context>
+<context>
+    <name>feetech::TeleopBus</name>
+    <message>
+        <source>The follower&apos;s bus is not open.</source>
+        <translation>从臂的总线未打开。</translation>
+    </message>
+</context>
+<context>
+    <name>feetech::Teleoperation</name>
+    <message>
+        <source>Connect to the follower arm&apos;s bus first: it is the bus the window has open.</source>
+        <translation>请先连接到从臂的总线：即本窗口打开的总线。</translation>
+    </message>
+    <message>
+        <source>Choose the leader arm&apos;s port.</source>
+        <translation>请选择主臂的端口。</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s port is the follower&apos;s: the leader and the follower are two arms on two adapters.</source>
+        <translation>主臂的端口与从臂相同：主臂和从臂是接在两个适配器上的两条机械臂。</translation>
+    </message>
+    <message>
+        <source>The two files name different joints: %1.</source>
+        <translation>两个文件中的关节不一致：%1。</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s joint %1 (servo %2) is not on the bus the window has open: scan it, or choose the follower&apos;s file.</source>
+        <translation>从臂的关节 %1（舵机 %2）不在本窗口打开的总线上：请扫描该总线，或选择从臂的文件。</translation>
+    </message>
+    <message>
+        <source>Opening the leader&apos;s port…</source>
+        <translation>正在打开主臂的端口…</translation>
+    </message>
+    <message>
+        <source>Stopped before the follower moved.</source>
+        <translation>已在从臂移动之前停止。</translation>
+    </message>
+    <message>
+        <source>Checking the leader&apos;s joints…</source>
+        <translation>正在检查主臂的关节…</translation>
+    </message>
+    <message>
+        <source>The leader was lost: %1</source>
+        <translation>主臂已失去连接：%1</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s port could not be opened: %1</source>
+        <translation>无法打开主臂的端口：%1</translation>
+    </message>
+    <message>
+        <source>The follower was lost: %1. It could not be told to hold.</source>
+        <translation>从臂已失去连接：%1。无法令其保持位置。</translation>
+    </message>
+    <message>
+        <source>Checking the follower&apos;s joints…</source>
+        <translation>正在检查从臂的关节…</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s joint %1 (servo %2) does not answer: %3</source>
+        <translation>主臂的关节 %1（舵机 %2）无应答：%3</translation>
+    </message>
+    <message>
+        <source>its model is unknown</source>
+        <translation>其型号未知</translation>
+    </message>
+    <message>
+        <source>Joint %1 (servo %2) does not hold what %3 says (%4): write the file to the arm first (Robot &gt; Calibration files).</source>
+        <translation>关节 %1（舵机 %2）中的值与 %3 不符（%4）：请先将该文件写入机械臂（机器人 &gt; 校准文件）。</translation>
+    </message>
+    <message>
+        <source>The follower holds where it stands…</source>
+        <translation>从臂正保持在当前位置…</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s torque could not be switched on.</source>
+        <translation>无法开启从臂的扭矩。</translation>
+    </message>
+    <message>
+        <source>Servo %1 reports no position.</source>
+        <translation>舵机 %1 未报告位置。</translation>
+    </message>
+    <message>
+        <source>Following the leader.</source>
+        <translation>正在跟随主臂。</translation>
+    </message>
+    <message>
+        <source>The follower could not be told to hold.</source>
+        <translation>无法令从臂保持位置。</translation>
+    </message>
+    <message>
+        <source>Stopped: the follower holds where it is.</source>
+        <translation>已停止：从臂保持在当前位置。</translation>
+    </message>
+    <message>
+        <source>%1 The follower holds where it is.</source>
+        <translation>%1 从臂保持在当前位置。</translation>
     </message>
 </context>
 <context>
