@@ -23,4 +23,12 @@ void shrinkToOneRow(QTableView *view)
                            + view->verticalHeader()->defaultSectionSize() + 2 * view->frameWidth());
 }
 
+QString stepList(const QStringList &steps)
+{
+    QString html = QStringLiteral("<ul style=\"margin-left: 0px; -qt-list-indent: 1;\">");
+    for (const QString &step : steps)
+        html += QStringLiteral("<li>%1</li>").arg(step.toHtmlEscaped());
+    return html + QStringLiteral("</ul>");
+}
+
 } // namespace widgethelpers

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 
 class QPushButton;
 class QTableView;
@@ -18,5 +19,9 @@ QPushButton *actionButton(const QString &text, const char *name, const QString &
 // some 30 pixels more): on a 1366x768 screen the pages need the height. Call it once the rows'
 // default height is set.
 void shrinkToOneRow(QTableView *view);
+
+// Steps for the user as a rich-text bullet list, each step's text escaped (the wizards' "do this,
+// then this").
+QString stepList(const QStringList &steps);
 
 } // namespace widgethelpers

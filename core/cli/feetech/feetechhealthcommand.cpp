@@ -32,6 +32,37 @@ QString measuredText(const std::optional<double> &value, int decimals, const QSt
 
 } // namespace
 
+template<typename Reading>
+std::optional<FeetechHealthCommand::Readings<Reading>> FeetechHealthCommand::readEach(
+    FeetechDevice &device, const QVector<quint8> &ids,
+    const std::function<feetech::BusOperation(const QVector<ServoInfo> &)> &operation)
+{
+    Readings<Reading> read;
+    read.readings.resize(ids.size());
+    const QVector<Identified> identified = identifyEach(device, ids);
+    for (int i = 0; i < ids.size(); ++i) {
+        read.readings[i].servo = identified.at(i).servo;
+        read.readings[i].failure = identified.at(i).failure;
+        if (identified.at(i).failure.isEmpty())
+            read.reachable.append(identified.at(i).servo);
+    }
+    if (read.reachable.isEmpty())
+        return read;
+    const auto connection =
+        QObject::connect(&device.session(), &feetech::Session::operationProgress,
+                         [&read, &ids](const feetech::OperationProgress &progress) {
+                             const auto reading = progress.detail.value<Reading>();
+                             read.readings[ids.indexOf(reading.servo.id)] = reading;
+                         });
+    const auto result = device.operate(operation(read.reachable));
+    QObject::disconnect(connection);
+    if (!result || !result->ok) {
+        fail(result ? result->message : device.error());
+        return std::nullopt;
+    }
+    return read;
+}
+
 int FeetechHealthCommand::health(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("ids"), QStringLiteral("move-test")});
@@ -43,29 +74,14 @@ int FeetechHealthCommand::health(const QString &what, const QStringList &operand
         return fail(device.error());
 
     // A servo that does not answer is a servo with a fault, not the end of the check.
-    QVector<feetech::HealthReading> readings(ids.size());
-    QVector<ServoInfo> reachable;
-    const QVector<Identified> identified = identifyEach(device, ids);
-    for (int i = 0; i < ids.size(); ++i) {
-        readings[i].servo = identified.at(i).servo;
-        readings[i].failure = identified.at(i).failure;
-        if (identified.at(i).failure.isEmpty())
-            reachable.append(identified.at(i).servo);
-    }
-    if (!reachable.isEmpty()) {
-        const auto connection =
-            QObject::connect(&device.session(), &feetech::Session::operationProgress,
-                             [&readings, &ids](const feetech::OperationProgress &progress) {
-                                 const auto reading =
-                                     progress.detail.value<feetech::HealthReading>();
-                                 readings[ids.indexOf(reading.servo.id)] = reading;
-                             });
-        const auto result = device.operate(
-            feetech::operations::checkHealth(reachable, feetech::kDefaultHealthReads));
-        QObject::disconnect(connection);
-        if (!result || !result->ok)
-            return fail(result ? result->message : device.error());
-    }
+    const auto read =
+        readEach<feetech::HealthReading>(device, ids, [](const QVector<ServoInfo> &servos) {
+            return feetech::operations::checkHealth(servos, feetech::kDefaultHealthReads);
+        });
+    if (!read)
+        return ExitDeviceFailure;
+    const QVector<feetech::HealthReading> &readings = read->readings;
+    const QVector<ServoInfo> &reachable = read->reachable;
     QVector<feetech::ServoHealth> servos;
     for (const feetech::HealthReading &reading : std::as_const(readings))
         servos.append(feetech::assessHealth(reading));
@@ -157,30 +173,14 @@ int FeetechHealthCommand::check(const QString &what, const QStringList &operands
     if (!device.open(busBaud()))
         return fail(device.error());
 
-    QVector<feetech::SettingsReading> readings(ids.size());
-    QVector<ServoInfo> reachable;
-    const QVector<Identified> identified = identifyEach(device, ids);
-    for (int i = 0; i < ids.size(); ++i) {
-        readings[i].servo = identified.at(i).servo;
-        readings[i].failure = identified.at(i).failure;
-        if (identified.at(i).failure.isEmpty())
-            reachable.append(identified.at(i).servo);
-    }
-    if (!reachable.isEmpty()) {
-        const auto connection =
-            QObject::connect(&device.session(), &feetech::Session::operationProgress,
-                             [&readings, &ids](const feetech::OperationProgress &progress) {
-                                 const auto reading =
-                                     progress.detail.value<feetech::SettingsReading>();
-                                 readings[ids.indexOf(reading.servo.id)] = reading;
-                             });
-        const auto result =
-            device.operate(feetech::operations::checkSettings(reachable, expected.keys()));
-        QObject::disconnect(connection);
-        if (!result || !result->ok)
-            return fail(result ? result->message : device.error());
-    }
-    const QVector<feetech::SettingsFinding> findings = feetech::checkSettings(readings, expected);
+    const auto read = readEach<feetech::SettingsReading>(
+        device, ids, [&expected](const QVector<ServoInfo> &servos) {
+            return feetech::operations::checkSettings(servos, expected.keys());
+        });
+    if (!read)
+        return ExitDeviceFailure;
+    const QVector<feetech::SettingsFinding> findings =
+        feetech::checkSettings(read->readings, expected);
 
     if (!fix || findings.isEmpty()) {
         if (m_output.json) {

@@ -36,14 +36,6 @@ QLabel *richLabel(const QString &objectName, QWidget *parent)
     return label;
 }
 
-QString stepList(const QStringList &steps)
-{
-    QString html = QStringLiteral("<ul style=\"margin-left: 0px; -qt-list-indent: 1;\">");
-    for (const QString &step : steps)
-        html += QStringLiteral("<li>%1</li>").arg(step.toHtmlEscaped());
-    return html + QStringLiteral("</ul>");
-}
-
 } // namespace
 
 ReplaceMotorWizard::ReplaceMotorWizard(feetech::BusClient *client, QWidget *parent)
@@ -377,7 +369,8 @@ void ReplaceMotorWizard::onSetUpFinished(feetech::MotorSetupFlow::Work work,
         if (result.search.needsNothingWrittenNote())
             html += QStringLiteral("<br>") + tr("Nothing was written to any servo.");
         else if (result.steps.size() > 1)
-            html += QStringLiteral("<br>") + tr("Done before that:") + stepList(result.steps);
+            html += QStringLiteral("<br>") + tr("Done before that:")
+                + widgethelpers::stepList(result.steps);
         showStatus(html, result.stopped ? palette::Tone::Warning : palette::Tone::Error);
         return;
     }
@@ -394,7 +387,8 @@ void ReplaceMotorWizard::onSetUpFinished(feetech::MotorSetupFlow::Work work,
     if (work != Work::SettingUp)
         return;
     m_setUpDone->setText(
-        QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped()) + stepList(result.steps)
+        QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped())
+        + widgethelpers::stepList(result.steps)
         + tr("<b>Put the arm back together:</b> connect every servo in its chain as before, keep "
              "the power on, and press <i>Scan the arm</i>. The %1 joint is then calibrated alone "
              "into %2.")

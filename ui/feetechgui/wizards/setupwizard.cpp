@@ -3,6 +3,7 @@
 #include "setupwizard.h"
 
 #include "registertable.h"
+#include "widgethelpers.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -26,14 +27,6 @@ QString servoDescription(const feetech::ServoInfo &servo)
     return SetupWizard::tr("servo %1 at %2, model %3, firmware %4")
         .arg(servo.id)
         .arg(feetech::baudText(servo.baud), servo.model.name, servo.firmware());
-}
-
-QString stepList(const QStringList &steps)
-{
-    QString html = QStringLiteral("<ul style=\"margin-left: 0px; -qt-list-indent: 1;\">");
-    for (const QString &step : steps)
-        html += QStringLiteral("<li>%1</li>").arg(step.toHtmlEscaped());
-    return html + QStringLiteral("</ul>");
 }
 
 } // namespace
@@ -444,7 +437,8 @@ void SetupWizard::showSetUp(const feetech::MotorSetupResult &result)
         if (result.search.needsNothingWrittenNote())
             html += QStringLiteral("<br>") + tr("Nothing was written to any servo.");
         if (result.steps.size() > 1) // more than the find
-            html += QStringLiteral("<br>") + tr("Done before that:") + stepList(result.steps);
+            html += QStringLiteral("<br>") + tr("Done before that:")
+                + widgethelpers::stepList(result.steps);
         showOutcome(html, result.stopped ? palette::Tone::Warning : palette::Tone::Error);
         showJoints();
         updateActions();
@@ -452,8 +446,8 @@ void SetupWizard::showSetUp(const feetech::MotorSetupResult &result)
     }
     // The flow has moved on to the next joint to do, if any.
     const int next = m_flow->currentJoint();
-    QString html =
-        QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped()) + stepList(result.steps);
+    QString html = QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped())
+        + widgethelpers::stepList(result.steps);
     html += next >= 0 ? tr("Unplug it and connect the next servo: <b>%1</b>.")
                             .arg(m_flow->robot().joints.at(next).name.toHtmlEscaped())
                       : tr("Every joint is set up.");
