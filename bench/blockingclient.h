@@ -31,8 +31,9 @@ public:
 
     // Sends a request, then collects status frames until `answers` have come or `timeout` has
     // passed since the last byte; every frame heard, in order (an echo is skipped).
-    QVector<QByteArray> exchange(const QByteArray &request, int answers,
-                                 std::chrono::milliseconds timeout = std::chrono::milliseconds(250));
+    QVector<QByteArray>
+    exchange(const QByteArray &request, int answers,
+             std::chrono::milliseconds timeout = std::chrono::milliseconds(250));
     // One answer's frame from `id`, or nothing.
     std::optional<QByteArray>
     ask(const QByteArray &request, quint8 id,
