@@ -1,7 +1,8 @@
 // bench_report TARGETS RESULTS: one Markdown table of the benchmark figures in RESULTS (one
 // <program>.json per program, as bench/run-all saves them) against the targets in TARGETS
 // (bench/targets.json). Exit 0 when every measured figure meets its target, 1 when one does not
-// or is missing, 2 when the targets file cannot be read.
+// or is missing (a GUI figure measured on another platform than its target names counts as
+// missing), 2 when the targets file cannot be read.
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -46,6 +47,12 @@ public:
         if (!value.isDouble())
             return {std::nullopt, QStringLiteral("no %1 in %2.json").arg(path, program)};
         return {value.toDouble(), {}};
+    }
+
+    // The text at top-level `key` of <program>.json; empty when there is none.
+    QString text(const QString &program, const QString &key)
+    {
+        return load(program).object().value(key).toString();
     }
 
 private:
@@ -135,6 +142,20 @@ Row evaluate(const QJsonObject &entry, Results &results)
     if (!measured.value) {
         row.measured = QStringLiteral("missing (%1)").arg(measured.problem);
         return row;
+    }
+    // A GUI figure counts only from the display it names: Qt's offscreen platform draws nothing,
+    // so its CPU and start-up times are not what a user sees.
+    const QString platform = entry.value(QStringLiteral("platform")).toString();
+    if (!platform.isEmpty()) {
+        const QString used = results.text(entry.value(QStringLiteral("program")).toString(),
+                                          QStringLiteral("platform"));
+        if (used != platform) {
+            row.measured =
+                QStringLiteral("%1, not counted: measured on %2, not on %3")
+                    .arg(withUnit(number(*measured.value), unit),
+                         used.isEmpty() ? QStringLiteral("an unnamed platform") : used, platform);
+            return row;
+        }
     }
     double compared = *measured.value;
     row.measured = withUnit(number(compared), unit);
