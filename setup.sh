@@ -18,6 +18,7 @@ usage() {
     echo "       ./setup.sh build          only install what is missing and build"
     echo "       ./setup.sh package        build the Debian package into build/"
     echo "       ./setup.sh package --check  the same, then install it and check what it installed"
+    echo "       ./setup.sh bench          build and run every benchmark (bench/run-all), GUI ones under Xvfb"
 }
 
 install_missing() {
@@ -97,6 +98,14 @@ case "$command" in
     build)
         install_missing
         build build
+        ;;
+    bench)
+        # The GUI figures count only from a real X server (the offscreen platform draws
+        # nothing): Xvfb gives the benchmarks one, through xvfb-run.
+        packages+=(xvfb xauth)
+        install_missing
+        build build
+        exec bench/run-all build "$@"
         ;;
     package)
         # dpkg-shlibdeps (dpkg-dev, which needs file) works out the package's dependencies.
