@@ -1,11 +1,10 @@
 // servoctl feetech teleop against two simulated arms, a leader turned by the simulator's hand
 // and a follower: the safe start, tracking in LeRobot's units, the stop that holds or releases,
 // a bus lost, and what is refused before anything moves.
-#include "feetechbus.h"
 #include "motionrecording.h"
 #include "robottemplate.h"
 #include "servoctlrun.h"
-#include "simoptions.h"
+#include "teleoparms.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -13,51 +12,14 @@
 
 using testsupport::runServoctl;
 
-namespace {
-
-constexpr int kGoalAddress = 42;
-constexpr int kTorqueAddress = 40;
-
-// The SYNC WRITEs the follower heard at `address`: each as its entries' values by ID.
-QVector<QMap<int, int>> syncWrites(const QString &logPath, int address, int size)
-{
-    QVector<QMap<int, int>> writes;
-    for (const feetech::Packet &packet :
-         testsupport::feetechRequestsReceived(logPath, feetech::Instruction::SyncWrite)) {
-        if (packet.parameters.size() < 2 || quint8(packet.parameters.at(0)) != address)
-            continue;
-        QMap<int, int> values;
-        for (int at = 2; at + size < packet.parameters.size() + 1; at += 1 + size) {
-            int value = quint8(packet.parameters.at(at + 1));
-            if (size == 2)
-                value |= quint8(packet.parameters.at(at + 2)) << 8;
-            values.insert(quint8(packet.parameters.at(at)), value);
-        }
-        writes.append(values);
-    }
-    return writes;
-}
-
-} // namespace
-
-class TestServoctlTeleop : public testsupport::FeetechBusTest
+class TestServoctlTeleop : public testsupport::TeleopArmsTest
 {
     Q_OBJECT
 
 private:
-    sim::SimulatorOptions armOptions(const QString &name, const QString &robot) const
-    {
-        sim::SimulatorOptions options =
-            testsupport::feetechBusOptions(m_dir, name, QVector<sim::FeetechServoSpec> {});
-        options.robot = sim::simulatedRobot(robot, nullptr);
-        options.servos = sim::robotServos(*options.robot);
-        return options;
-    }
-
     // The follower on "bus" (the test's simulator, logging to bus.log) and the leader on
-    // "leader", with a calibration file saved from each (which reads only: every write the
-    // follower's log holds is the teleoperation's).
-    void startArms()
+    // "leader", with a calibration file of each, and no client on either: servoctl opens them.
+    void startArmsForServoctl()
     {
         QString error;
         QVERIFY2(startSimulator(armOptions(QStringLiteral("bus"), QStringLiteral("so101")), &error),
@@ -66,20 +28,9 @@ private:
         QVERIFY2(m_leader->start(
                      armOptions(QStringLiteral("leader"), QStringLiteral("so101-leader")), &error),
                  qPrintable(error));
-        const QString names =
-            QStringLiteral("shoulder_pan,shoulder_lift,elbow_flex,wrist_flex,wrist_roll,gripper");
-        for (const auto &[port, file] : {std::pair {m_simulator->linkPath(), followerFile()},
-                                         std::pair {m_leader->linkPath(), leaderFile()}}) {
-            const auto saved = runServoctl(
-                {QStringLiteral("--port"), port, QStringLiteral("feetech"),
-                 QStringLiteral("calibration"), QStringLiteral("save"), QStringLiteral("--ids"),
-                 QStringLiteral("1-6"), QStringLiteral("--names"), names, file});
-            QVERIFY2(saved.exitCode == 0, qPrintable(saved.err));
-        }
+        QVERIFY(!writeCalibration(*m_simulator, followerFile()).isEmpty());
+        QVERIFY(!writeCalibration(*m_leader, leaderFile()).isEmpty());
     }
-
-    QString followerFile() const { return m_dir.filePath(QStringLiteral("follower.json")); }
-    QString leaderFile() const { return m_dir.filePath(QStringLiteral("leader.json")); }
 
     testsupport::ServoctlResult teleop(const QStringList &more = {}) const
     {
@@ -92,28 +43,12 @@ private:
                            + more);
     }
 
-    bool turnLeader(quint8 id, int position)
-    {
-        bool turned = false;
-        m_leader->call([&](sim::Simulator &simulator) {
-            turned = simulator.feetechBus()->hand().turn(id, position);
-        });
-        return turned;
-    }
-
-    std::unique_ptr<sim::SimulatorThread> m_leader;
-
 private slots:
-    void cleanup()
-    {
-        m_leader.reset();
-        m_simulator.reset();
-        QFile::remove(logPath());
-    }
+    void cleanup() { stopArms(); }
 
     void theFollowerHoldsFirstThenEasesToTheLeaderAndHoldsWhenStopped()
     {
-        startArms();
+        startArmsForServoctl();
         const qint32 standing = simulatorValue(2, u"present_position");
         QVERIFY(turnLeader(2, standing + 600));
         const auto result = teleop({QStringLiteral("--duration"), QStringLiteral("2.5"),
@@ -123,8 +58,8 @@ private slots:
         QVERIFY(summary[QStringLiteral("cycles")].toInt() > 20);
         QVERIFY(summary[QStringLiteral("held")].toBool());
 
-        const auto goals = syncWrites(logPath(), kGoalAddress, 2);
-        const auto torque = syncWrites(logPath(), kTorqueAddress, 1);
+        const auto goals = syncWrites(kGoalAddress, 2);
+        const auto torque = syncWrites(kTorqueAddress, 1);
         QVERIFY(goals.size() > 20);
         QCOMPARE(torque.size(), 1);
         // The first goal is where the follower stood, before torque went on.
@@ -147,11 +82,11 @@ private slots:
 
     void releaseLeavesTheFollowerLimp()
     {
-        startArms();
+        startArmsForServoctl();
         const auto result = teleop(
             {QStringLiteral("--duration"), QStringLiteral("0.5"), QStringLiteral("--release")});
         QVERIFY2(result.exitCode == 0, qPrintable(result.err));
-        const auto torque = syncWrites(logPath(), kTorqueAddress, 1);
+        const auto torque = syncWrites(kTorqueAddress, 1);
         QCOMPARE(torque.size(), 2);
         QCOMPARE(torque.last().value(1), 0);
         QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
@@ -159,7 +94,7 @@ private slots:
 
     void whatCannotWorkIsRefusedBeforeAnythingMoves()
     {
-        startArms();
+        startArmsForServoctl();
         // The same port twice.
         auto refused = runServoctl({QStringLiteral("--port"), m_simulator->linkPath(),
                                     QStringLiteral("feetech"), QStringLiteral("teleop"),
@@ -206,7 +141,7 @@ private slots:
 
     void theLeaderLostStopsWithTheFollowerHolding()
     {
-        startArms();
+        startArmsForServoctl();
         QTimer::singleShot(800, this, [this] { m_leader.reset(); });
         const auto result = teleop({QStringLiteral("--duration"), QStringLiteral("10")});
         QCOMPARE(result.exitCode, 1);

@@ -2,6 +2,7 @@
 #include "palette.h"
 
 #include <QGuiApplication>
+#include <QLabel>
 
 namespace palette {
 
@@ -33,6 +34,18 @@ QColor toneColor(Tone tone, bool dark)
         return dark ? QColor(120, 170, 255) : QColor(25, 90, 190);
     }
     return {};
+}
+
+void showInTone(QLabel *label, const QString &text, Tone tone)
+{
+    // The window's palette, not the label's: the label's own text colour is the last tone set.
+    const QPalette &window = label->window()->palette();
+    QPalette colours = label->palette();
+    colours.setColor(QPalette::WindowText,
+                     tone == Tone::Accent ? window.color(QPalette::WindowText)
+                                          : toneColor(tone, window));
+    label->setPalette(colours);
+    label->setText(text);
 }
 
 } // namespace palette

@@ -4,6 +4,9 @@
 
 #include <QColor>
 #include <QPalette>
+#include <QString>
+
+class QLabel;
 
 namespace palette {
 
@@ -20,5 +23,9 @@ inline QColor toneColor(Tone tone, const QPalette &palette)
 {
     return toneColor(tone, isDark(palette));
 }
+
+// Shows `text` in `label` in the tone's colour; Accent keeps the palette's own text colour (an
+// outcome that is neither good nor bad, as the wizards report a step).
+void showInTone(QLabel *label, const QString &text, Tone tone);
 
 } // namespace palette

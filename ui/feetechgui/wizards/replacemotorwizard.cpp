@@ -247,12 +247,7 @@ void ReplaceMotorWizard::showPage(Page page)
 
 void ReplaceMotorWizard::showStatus(const QString &html, palette::Tone tone)
 {
-    QPalette colours = m_status->palette();
-    colours.setColor(QPalette::WindowText,
-                     tone == palette::Tone::Accent ? palette().color(QPalette::WindowText)
-                                                   : palette::toneColor(tone, palette()));
-    m_status->setPalette(colours);
-    m_status->setText(html);
+    palette::showInTone(m_status, html, tone);
 }
 
 void ReplaceMotorWizard::updateActions()

@@ -288,12 +288,7 @@ void SetupWizard::showCurrent()
 
 void SetupWizard::showOutcome(const QString &html, palette::Tone tone)
 {
-    QPalette colours = m_outcome->palette();
-    colours.setColor(QPalette::WindowText,
-                     tone == palette::Tone::Accent ? palette().color(QPalette::WindowText)
-                                                   : palette::toneColor(tone, palette()));
-    m_outcome->setPalette(colours);
-    m_outcome->setText(html);
+    palette::showInTone(m_outcome, html, tone);
 }
 
 void SetupWizard::updateActions()
