@@ -112,10 +112,18 @@ void RequestEngine::setEchoMode(EchoMode mode)
 
 void RequestEngine::submit(Transaction transaction)
 {
+    const bool leavesAtOnce = transaction.leavesAtOnce;
     if (transaction.priority == Transaction::Priority::Command)
         m_commands.push_back(std::move(transaction));
     else
         m_polls.push_back(std::move(transaction));
+    if (leavesAtOnce && m_finishStartsNext && m_state == State::Idle && !m_startingAtOnce) {
+        // The finish under way would start it once `done` returns: it starts now instead.
+        m_startingAtOnce = true;
+        startNext();
+        m_startingAtOnce = false;
+        return;
+    }
     scheduleNext();
 }
 
@@ -150,10 +158,24 @@ void RequestEngine::cancelPolls()
     }
 }
 
+struct RequestEngine::HandlingEvent
+{
+    explicit HandlingEvent(RequestEngine &engine)
+        : engine(engine)
+    {
+        ++engine.m_eventDepth;
+    }
+    ~HandlingEvent() { --engine.m_eventDepth; }
+    HandlingEvent(const HandlingEvent &) = delete;
+    HandlingEvent &operator=(const HandlingEvent &) = delete;
+    RequestEngine &engine;
+};
+
 void RequestEngine::scheduleNext()
 {
-    // Queued, so that a `done` callback submitting the next request never recurses.
-    if (m_nextScheduled || m_state != State::Idle)
+    // Queued, so that a `done` callback submitting the next request never recurses; a finish
+    // that starts the next one itself, once its callback has returned, needs no pass.
+    if (m_nextScheduled || m_state != State::Idle || m_finishStartsNext)
         return;
     m_nextScheduled = true;
     QMetaObject::invokeMethod(this, &RequestEngine::startNext, Qt::QueuedConnection);
@@ -259,6 +281,7 @@ void RequestEngine::send()
 
 void RequestEngine::onBytesWritten(qint64 count)
 {
+    const HandlingEvent handling(*this);
     if (m_state != State::Sending)
         return;
     m_writtenBytes += count;
@@ -323,6 +346,7 @@ void RequestEngine::armAfterFirstByte()
 void RequestEngine::onReceived(const QByteArray &bytes)
 {
     qCDebug(lcRaw) << "rx" << bytes.toHex(' ');
+    const HandlingEvent handling(*this);
     if (m_state == State::Idle || m_state == State::Settling || !m_current) {
         // Nothing is waiting for these: a late reply, noise, or an echo after the fact.
         onInputBetweenRequests(bytes, Tr::tr("received while no request was waiting"));
@@ -461,6 +485,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
 
 void RequestEngine::onTimeout(quint64 generation)
 {
+    const HandlingEvent handling(*this);
     if (generation != m_generation || m_state == State::Idle || !m_current)
         return; // a timer of an exchange that has already ended
     if (m_state == State::AwaitingReply && m_current->expectsReply()) {
@@ -552,9 +577,25 @@ void RequestEngine::finish(Failure failure, const QByteArray &reply)
     m_state = State::Idle;
     ++m_generation;
     publishCounters();
+    // Ended by what the port or a timer just did, the next transaction (whatever `done` queues
+    // first) starts once `done` has returned, in this pass: nothing of this handler runs after
+    // a finish. Not while a finish is already starting one, where a lost link would finish the
+    // whole queue in one deep recursion.
+    const bool startHere = m_eventDepth > 0 && !m_startingAtOnce;
+    const bool outerFinishStarts = m_finishStartsNext;
+    m_finishStartsNext = startHere;
     if (done && done->done)
         done->done(result);
-    scheduleNext();
+    m_finishStartsNext = outerFinishStarts;
+    if (!startHere) {
+        scheduleNext();
+        return;
+    }
+    if (m_state != State::Idle)
+        return;
+    m_startingAtOnce = true;
+    startNext();
+    m_startingAtOnce = false;
 }
 
 bool RequestEngine::takeLateAnswer(const QByteArray &frame)

@@ -122,6 +122,10 @@ struct Transaction
     std::function<bool(const QByteArray &frame, std::chrono::microseconds after)> lateAnswer;
     bool expectsReply() const { return bool(acceptsReply) || bool(collectsReplies); }
     std::function<void(const TransactionResult &)> done;
+    // Submitted from the `done` of the transaction before (a stream's next read), it leaves at
+    // once, before that `done` returns: what `done` does after submitting it (decoding the
+    // answers) overlaps its time on the wire instead of delaying it.
+    bool leavesAtOnce = false;
 };
 
 // Lives in the link's worker thread with its transport; everything is driven by signals and
@@ -184,6 +188,9 @@ private:
     void connectTransport();
     void scheduleNext();
     void startNext();
+    // Where an answer, a write or a time-out ends a transaction, the next one starts at once, in
+    // the same pass: a stream's next request leaves without a trip through the event loop.
+    struct HandlingEvent;
     void send();
     void onBytesWritten(qint64 count);
     void onReceived(const QByteArray &bytes);
@@ -251,6 +258,9 @@ private:
     qint64 m_quietUntilMs = 0; // no request goes out before this: a late reply may be on its way
     quint64 m_generation = 0; // stale timer firings carry an old generation and are ignored
     bool m_nextScheduled = false;
+    int m_eventDepth = 0; // inside the handling of an answer, a write or a time-out
+    bool m_finishStartsNext = false; // the finish under way starts the next transaction itself
+    bool m_startingAtOnce = false; // a next transaction is being started by a finish
     bool m_waitedForUnfinished = false; // a request waited once for the rest of a frame
     bool m_countersDirty = false;
     QTimer *m_countersTimer = nullptr; // a child, so it follows the engine to its thread

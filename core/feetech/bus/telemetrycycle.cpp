@@ -282,6 +282,7 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
                                              transaction.expectedReplySize);
         transaction.logFailuresOnly = !m_state->options.logEveryFrame;
         transaction.timeoutIsNote = true;
+        transaction.leavesAtOnce = true;
         auto answered = std::make_shared<QVector<bool>>(ids.size(), false);
         // Each answer is decoded once, as it is accepted, and kept for the end of the read.
         auto answers = std::make_shared<QVector<Packet>>();
@@ -333,12 +334,29 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
             if (!alive || link != m_bus.link().generation() || stream != m_generation || !m_state)
                 return;
             const qint64 now = steadyMicroseconds();
-            if (!answers->isEmpty()) {
-                m_bus.noteLatency(result.latency);
-                noteAnswerTime(result.completedAfter);
+            const auto noteAnswers = [&] {
+                if (!answers->isEmpty()) {
+                    m_bus.noteLatency(result.latency);
+                    noteAnswerTime(result.completedAfter);
+                }
+                for (const Packet &packet : std::as_const(*answers))
+                    noteAnswer(servoIndexes.at(ids.indexOf(packet.id)), packet, now);
+            };
+            if (answers->size() == ids.size()) {
+                // Everyone answered: the next read leaves first (leavesAtOnce), and these
+                // answers are decoded while it crosses the wire; the bus is idle until it goes.
+                const qint64 cyclesBefore = m_state->stats.cycles;
+                next();
+                if (!alive || link != m_bus.link().generation() || stream != m_generation
+                    || !m_state)
+                    return;
+                const bool cycleEnded = m_state->stats.cycles != cyclesBefore;
+                noteAnswers();
+                if (cycleEnded && m_state->options.publishEachCycle)
+                    flush();
+                return;
             }
-            for (const Packet &packet : std::as_const(*answers))
-                noteAnswer(servoIndexes.at(ids.indexOf(packet.id)), packet, now);
+            noteAnswers();
             QStringList silent;
             for (int i = 0; i < ids.size(); ++i) {
                 if (!answered->at(i)) {
