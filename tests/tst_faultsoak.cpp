@@ -28,7 +28,7 @@ private:
 
     // A PTK transaction costs more (eight queries a read, twelve writes an apply): fewer.
     static constexpr int kFeetechTransactions = 150;
-    static constexpr int kPtkTransactions = 60;
+    static constexpr int kPtkTransactions = 36;
 
 private slots:
     void feetechShowsOnlyHeldValuesAndReportsEveryWriteTruly()
