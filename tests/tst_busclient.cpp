@@ -501,7 +501,7 @@ private slots:
     {
         using Code = feetech::Refusal::Code;
         m_client->disconnectFrom();
-        QTRY_COMPARE_WITH_TIMEOUT(m_client->status().state,
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->link()->status().state,
                                   seriallink::ConnectionState::Disconnected, 10000);
         feetech::Refusal refusal;
         QCOMPARE(m_client->writeBlocker(0).code(), Code::NotConnected);
@@ -530,7 +530,7 @@ private slots:
         QVERIFY(m_client->apply(0));
         QVERIFY(m_client->isBusy());
         m_client->disconnectFrom();
-        QTRY_COMPARE_WITH_TIMEOUT(m_client->status().state,
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->link()->status().state,
                                   seriallink::ConnectionState::Disconnected, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!busy.isEmpty() && !busy.last().at(0).toBool(), 10000);
         QVERIFY(!m_client->isBusy());

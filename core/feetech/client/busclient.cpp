@@ -110,7 +110,7 @@ void BusClient::cancelScan()
 
 Refusal BusClient::writeBlocker(int index) const
 {
-    if (!isConnected())
+    if (!m_link.isConnected())
         return Refusal(Refusal::Code::NotConnected);
     if (index < 0 || index >= m_servos->count())
         return Refusal(Refusal::Code::NoServo);
@@ -292,7 +292,7 @@ BusClient::startOperation(Operation operation, int index, Refusal *refusal, Work
         refused(Refusal(Refusal::Code::NoServo), refusal);
         return nullptr;
     }
-    if (!isConnected()) {
+    if (!m_link.isConnected()) {
         refused(Refusal(Refusal::Code::NotConnected), refusal);
         return nullptr;
     }
@@ -418,7 +418,7 @@ OperationReply *BusClient::lockEeprom(int index, Refusal *refusal)
 OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem> &values,
                                        Refusal *refusal)
 {
-    if (!isConnected() || index < 0 || index >= m_servos->count()
+    if (!m_link.isConnected() || index < 0 || index >= m_servos->count()
         || !m_servos->at(index).info.hasTable() || m_servos->at(index).info.sharedId) {
         // The same reasons as for any write, except a busy bus: control writes queue up.
         const Refusal blocker = writeBlocker(index);
@@ -451,8 +451,8 @@ OperationReply *BusClient::allTorqueOff()
             bauds.append(m_servos->at(i).info.baud);
         servos.append(m_servos->at(i).info);
     }
-    if (bauds.isEmpty() && status().baud > 0)
-        bauds.append(status().baud); // nothing scanned yet: the rate the port is at
+    if (bauds.isEmpty() && m_link.status().baud > 0)
+        bauds.append(m_link.status().baud); // nothing scanned yet: the rate the port is at
     // A shared bus stays at the rate the other program set: torque off goes at that one only.
     if (m_share->state() == ShareService::State::Sharing && m_share->portBaud() > 0)
         bauds = {m_share->portBaud()};
@@ -465,7 +465,7 @@ QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, Refusal
         refused(why, refusal);
         return QVector<OperationReply *>();
     };
-    if (!isConnected())
+    if (!m_link.isConnected())
         return refuse(Refusal(Refusal::Code::NotConnected));
     if (goals.isEmpty())
         return refuse(Refusal(Refusal::Code::NothingToMove));
@@ -516,7 +516,7 @@ OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
                                       Refusal *refusal)
 {
     Refusal why;
-    if (!isConnected())
+    if (!m_link.isConnected())
         why = Refusal(Refusal::Code::NotConnected);
     else if (!decodePacket(frame))
         why = Refusal(Refusal::Code::NotAFrame);

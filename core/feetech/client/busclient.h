@@ -47,9 +47,6 @@ public:
 
     // The link's state, counters and packet log, on this thread.
     seriallink::LinkMirror *link() { return &m_link; }
-    const seriallink::ConnectionStatus &status() const { return m_link.status(); }
-    const seriallink::LinkCounters &counters() const { return m_link.counters(); }
-    bool isConnected() const { return m_link.isConnected(); }
     bool isScanning() const;
     bool isBusy() const;
 

@@ -39,7 +39,7 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
         refresh();
     });
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
-        if (!m_client->isConnected())
+        if (!m_client->link()->isConnected())
             m_dismissed.clear();
     });
     connect(m_lock, &QPushButton::clicked, this, [this] {
