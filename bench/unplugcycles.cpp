@@ -235,7 +235,7 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
                                                  now == 70 ? 71 : 70);
             reply = client.apply(0, &refusal);
         } else {
-            reply = client.reboot(0, &refusal);
+            reply = client.commands()->reboot(0, &refusal);
         }
         if (!reply)
             return QStringLiteral("refused: ") + refusal.describe();

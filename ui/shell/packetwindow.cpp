@@ -469,7 +469,7 @@ void PacketWindow::sendNext()
     bool accepted = false;
     if (frame.protocol == PacketFrame::Protocol::Feetech) {
         feetech::Refusal refusal;
-        feetech::OperationReply *reply = m_feetech->sendPacket(
+        feetech::OperationReply *reply = m_feetech->commands()->sendPacket(
             frame.bytes, frame.baud, frame.replyId, frame.replyDataSize, &refusal);
         error = refusal.describe();
         if (reply)

@@ -191,9 +191,9 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_calibrate, &QPushButton::clicked, this, &FeetechWorkspace::calibrateMiddle);
     connect(m_factoryReset, &QPushButton::clicked, this, &FeetechWorkspace::factoryReset);
     connect(m_reboot, &QPushButton::clicked, this,
-            [this] { run(&feetech::BusClient::reboot, tr("Restarting the servo…")); });
+            [this] { run(&feetech::ServoCommands::reboot, tr("Restarting the servo…")); });
     connect(m_clearStatus, &QPushButton::clicked, this,
-            [this] { run(&feetech::BusClient::clearStatus, tr("Clearing the status…")); });
+            [this] { run(&feetech::ServoCommands::clearStatus, tr("Clearing the status…")); });
     connect(m_memory, &MemoryTablePage::problem, this, &FeetechWorkspace::problem);
 
     const auto readCurrent = [this] {
@@ -493,11 +493,11 @@ void FeetechWorkspace::apply()
 }
 
 void FeetechWorkspace::run(
-    feetech::OperationReply *(feetech::BusClient::*operation)(int, feetech::Refusal *),
+    feetech::OperationReply *(feetech::ServoCommands::*operation)(int, feetech::Refusal *),
     const QString &what)
 {
     feetech::Refusal refusal;
-    if (!(m_client->*operation)(currentIndex(), &refusal))
+    if (!(m_client->commands()->*operation)(currentIndex(), &refusal))
         emit problem(refusal.describe());
     else
         emit message(what);
@@ -561,7 +561,7 @@ void FeetechWorkspace::calibrateMiddle()
             .arg(servoTitle()),
         QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel);
     if (answer == QMessageBox::Ok)
-        run(&feetech::BusClient::calibrateMiddle, tr("Calibrating the middle…"));
+        run(&feetech::ServoCommands::calibrateMiddle, tr("Calibrating the middle…"));
 }
 
 void FeetechWorkspace::factoryReset()
@@ -592,7 +592,7 @@ void FeetechWorkspace::factoryReset()
             .arg(QDir::toNativeSeparators(path).toHtmlEscaped(), servoTitle()),
         QMessageBox::Reset | QMessageBox::Cancel, QMessageBox::Cancel);
     if (answer == QMessageBox::Reset)
-        run(&feetech::BusClient::factoryReset, tr("Restoring factory values…"));
+        run(&feetech::ServoCommands::factoryReset, tr("Restoring factory values…"));
 }
 
 void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &result)

@@ -44,7 +44,7 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
     });
     connect(m_lock, &QPushButton::clicked, this, [this] {
         feetech::Refusal refusal;
-        if (m_index >= 0 && !m_client->lockEeprom(m_index, &refusal))
+        if (m_index >= 0 && !m_client->commands()->lockEeprom(m_index, &refusal))
             emit problem(refusal.describe());
     });
     connect(m_client->servos(), &feetech::ServoList::servoUpdated, this, [this](int index) {
