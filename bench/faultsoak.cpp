@@ -223,7 +223,7 @@ SoakCounts soakFeetech(const SoakOptions &options)
 
     feetech::BusClient client;
     client.connectTo(bus.linkPath, kFeetechBaud);
-    runUntil([&] { return client.isConnected(); },
+    runUntil([&] { return client.link()->isConnected(); },
              [&](QEventLoop &loop) {
                  QObject::connect(&client, &feetech::BusClient::statusChanged, &loop,
                                   &QEventLoop::quit);
@@ -277,7 +277,7 @@ SoakCounts soakFeetech(const SoakOptions &options)
                      QStringLiteral("%1: a read never finished (busy %2, link %3, at %4)")
                          .arg(who)
                          .arg(client.isBusy())
-                         .arg(int(client.status().state))
+                         .arg(int(client.link()->status().state))
                          .arg(transaction));
             } else if (result->ok) {
                 ++counts.readsOk;

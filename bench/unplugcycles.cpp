@@ -235,7 +235,7 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
                                                  now == 70 ? 71 : 70);
             reply = client.apply(0, &refusal);
         } else {
-            reply = client.reboot(0, &refusal);
+            reply = client.commands()->reboot(0, &refusal);
         }
         if (!reply)
             return QStringLiteral("refused: ") + refusal.describe();
@@ -259,11 +259,11 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
             [&samples](const QVector<feetech::FeedbackSample> &batch) { samples += batch.size(); });
         waitUntil([&] { return samples > 30; });
         bench.unplug();
-        if (!waitUntil([&] { return client.status().state == Connection::Lost; })) {
+        if (!waitUntil([&] { return client.link()->status().state == Connection::Lost; })) {
             QObject::disconnect(connection);
             return QStringLiteral("the lost port was not noticed");
         }
-        if (!bench.plugIn() || !waitUntil([&] { return client.isConnected(); })) {
+        if (!bench.plugIn() || !waitUntil([&] { return client.link()->isConnected(); })) {
             QObject::disconnect(connection);
             return QStringLiteral("no reconnection");
         }
@@ -278,11 +278,11 @@ QString feetechCycle(feetech::BusClient &client, Bench &bench, Work work)
     default:
         break;
     }
-    if (!waitUntil([&] { return client.status().state == Connection::Lost; }))
+    if (!waitUntil([&] { return client.link()->status().state == Connection::Lost; }))
         return QStringLiteral("the lost port was not noticed");
     if (!bench.plugIn())
         return QStringLiteral("the simulator did not start again");
-    if (!waitUntil([&] { return client.isConnected(); }))
+    if (!waitUntil([&] { return client.link()->isConnected(); }))
         return QStringLiteral("no reconnection");
     if (work == Work::FeetechScan && !scan(client))
         return QStringLiteral("the scan after reconnecting did not find the six servos");
@@ -418,7 +418,7 @@ CycleReport runCycles(Work work, int cycles)
     } else if (work != Work::ServoctlMonitor && work != Work::ServoctlSet) {
         busClient = std::make_unique<feetech::BusClient>(busTiming);
         busClient->connectTo(bench.port(), k1M);
-        if (!waitUntil([&] { return busClient->isConnected(); }) || !scan(*busClient))
+        if (!waitUntil([&] { return busClient->link()->isConnected(); }) || !scan(*busClient))
             problem(0, QStringLiteral("no first connection and scan"));
         else
             feetechShowsWhatItHolds(*busClient, bench, 0);

@@ -91,7 +91,7 @@ inline bool connectAndScan(feetech::BusClient &client, const QString &link, int 
                            seriallink::EchoMode echo = seriallink::EchoMode::Auto)
 {
     client.connectTo(link, 1000000, echo);
-    if (!QTest::qWaitFor([&] { return client.isConnected(); }, 10000)) {
+    if (!QTest::qWaitFor([&] { return client.link()->isConnected(); }, 10000)) {
         qWarning("not connected to %s within 10 s", qPrintable(link));
         return false;
     }

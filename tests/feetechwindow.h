@@ -46,7 +46,7 @@ protected:
     {
         m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
         m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY(client()->isConnected());
+        QTRY_VERIFY(client()->link()->isConnected());
         feetech::ScanOptions options;
         options.lastId = lastId;
         QSignalSpy finished(client(), &feetech::BusClient::scanFinished);

@@ -383,18 +383,18 @@ private slots:
         QCOMPARE(refusal.code(), Code::SharedId);
         QVERIFY2(refusal.describe().contains(QLatin1String("ID 7")),
                  qPrintable(refusal.describe()));
-        QCOMPARE(m_client->commandBlocker(sharedIndex).code(), Code::SharedId);
+        QCOMPARE(m_client->commands()->blocker(sharedIndex).code(), Code::SharedId);
         QCOMPARE(m_client->identify()->blocker(sharedIndex).code(), Code::SharedId);
 
         QVERIFY(!m_client->apply(unknownIndex, &refusal));
         QCOMPARE(refusal.code(), Code::UnknownModel);
         QVERIFY(!refusal.describe().isEmpty());
-        QVERIFY(!m_client->commandBlocker(unknownIndex)); // an unknown model may be rebooted
+        QVERIFY(!m_client->commands()->blocker(unknownIndex)); // an unknown model may be rebooted
 
-        QVERIFY(!m_client->factoryReset(42, &refusal));
+        QVERIFY(!m_client->commands()->factoryReset(42, &refusal));
         QCOMPARE(refusal.code(), Code::NoServo);
         QVERIFY(!refusal.describe().isEmpty());
-        QVERIFY(!m_client->lockEeprom(-1, &refusal));
+        QVERIFY(!m_client->commands()->lockEeprom(-1, &refusal));
         QCOMPARE(refusal.code(), Code::NoServo);
 
         QVERIFY(!m_client->changeId(0, 2, &refusal));
@@ -403,7 +403,7 @@ private slots:
         QVERIFY2(refusal.describe().contains(QLatin1String("ID 2")),
                  qPrintable(refusal.describe()));
 
-        QVERIFY(!m_client->calibrateMiddle(scsIndex, &refusal));
+        QVERIFY(!m_client->commands()->calibrateMiddle(scsIndex, &refusal));
         QCOMPARE(refusal.code(), Code::NoMiddleCalibration);
         QVERIFY(!refusal.describe().isEmpty());
 
@@ -437,10 +437,11 @@ private slots:
         QVERIFY2(refusal.describe().startsWith(QLatin1String("Servo 1: ")),
                  qPrintable(refusal.describe()));
 
-        QVERIFY(!m_client->sendPacket(QByteArray("\xff\xff\x01", 3), k1M, 1, 0, &refusal));
+        QVERIFY(
+            !m_client->commands()->sendPacket(QByteArray("\xff\xff\x01", 3), k1M, 1, 0, &refusal));
         QCOMPARE(refusal.code(), Code::NotAFrame);
         QVERIFY(!refusal.describe().isEmpty());
-        QVERIFY(!m_client->sendPacket(feetech::ping(1), 12345, 1, 0, &refusal));
+        QVERIFY(!m_client->commands()->sendPacket(feetech::ping(1), 12345, 1, 0, &refusal));
         QCOMPARE(refusal.code(), Code::NotAFeetechRate);
         QVERIFY2(refusal.describe().contains(QLatin1String("12345")),
                  qPrintable(refusal.describe()));
@@ -482,11 +483,11 @@ private slots:
         QVERIFY(!m_client->changeBaud(1, 500000, &refusal));
         QCOMPARE(refusal.code(), Code::Busy);
         QVERIFY(!refusal.describe().isEmpty());
-        QCOMPARE(m_client->commandBlocker(1).code(), Code::Busy);
+        QCOMPARE(m_client->commands()->blocker(1).code(), Code::Busy);
         QCOMPARE(m_client->identify()->blocker(1).code(), Code::Busy);
-        QVERIFY(!m_client->lockEeprom(1, &refusal));
+        QVERIFY(!m_client->commands()->lockEeprom(1, &refusal));
         QCOMPARE(refusal.code(), Code::Busy);
-        QVERIFY(!m_client->reboot(1, &refusal));
+        QVERIFY(!m_client->commands()->reboot(1, &refusal));
         QCOMPARE(refusal.code(), Code::Busy);
         QVERIFY(!m_client->health()->check({0, 1}, 1, &refusal));
         QCOMPARE(refusal.code(), Code::Busy);
@@ -501,7 +502,7 @@ private slots:
     {
         using Code = feetech::Refusal::Code;
         m_client->disconnectFrom();
-        QTRY_COMPARE_WITH_TIMEOUT(m_client->status().state,
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->link()->status().state,
                                   seriallink::ConnectionState::Disconnected, 10000);
         feetech::Refusal refusal;
         QCOMPARE(m_client->writeBlocker(0).code(), Code::NotConnected);
@@ -510,11 +511,11 @@ private slots:
         QCOMPARE(refusal.code(), Code::NotConnected);
         QVERIFY(!m_client->writeValues(0, {{kMaxTemperature, 70}}, &refusal));
         QCOMPARE(refusal.code(), Code::NotConnected);
-        QVERIFY(!m_client->reboot(0, &refusal));
+        QVERIFY(!m_client->commands()->reboot(0, &refusal));
         QCOMPARE(refusal.code(), Code::NotConnected);
         QVERIFY(m_client->moveAll({{0, 2048}}, &refusal).isEmpty());
         QCOMPARE(refusal.code(), Code::NotConnected);
-        QVERIFY(!m_client->sendPacket(feetech::ping(1), k1M, 1, 0, &refusal));
+        QVERIFY(!m_client->commands()->sendPacket(feetech::ping(1), k1M, 1, 0, &refusal));
         QCOMPARE(refusal.code(), Code::NotConnected);
         QVERIFY(!m_client->health()->check({0}, 1, &refusal));
         QCOMPARE(refusal.code(), Code::NotConnected);
@@ -530,7 +531,7 @@ private slots:
         QVERIFY(m_client->apply(0));
         QVERIFY(m_client->isBusy());
         m_client->disconnectFrom();
-        QTRY_COMPARE_WITH_TIMEOUT(m_client->status().state,
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->link()->status().state,
                                   seriallink::ConnectionState::Disconnected, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!busy.isEmpty() && !busy.last().at(0).toBool(), 10000);
         QVERIFY(!m_client->isBusy());

@@ -100,7 +100,7 @@ private slots:
         m_controller->connectTo(request(ConnectionController::Protocol::Feetech));
         QCOMPARE(problem.size(), 1);
         QCOMPARE(problem.first().first().toString(), QStringLiteral("Enter a baud rate."));
-        QCOMPARE(m_feetech->status().state, seriallink::ConnectionState::Disconnected);
+        QCOMPARE(m_feetech->link()->status().state, seriallink::ConnectionState::Disconnected);
         QVERIFY(!m_controller->isDetecting());
     }
 
@@ -113,7 +113,7 @@ private slots:
         QSignalSpy simulator(m_controller.get(), &ConnectionController::simulatorChanged);
         m_controller->setFeetechActive(true);
         m_controller->connectTo(request(ConnectionController::Protocol::Feetech, k1M));
-        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         QCOMPARE(named.size(), 1);
         QCOMPARE(named.first().first().toString(), m_simulator->linkPath());
         // Not the demo's: no Simulator dock.
@@ -123,7 +123,7 @@ private slots:
         QVERIFY(!m_ptk->isConnected());
         // Disconnect closes the active client.
         m_controller->disconnectFrom();
-        QTRY_COMPARE_WITH_TIMEOUT(m_feetech->status().state,
+        QTRY_COMPARE_WITH_TIMEOUT(m_feetech->link()->status().state,
                                   seriallink::ConnectionState::Disconnected, 10000);
     }
 
@@ -174,7 +174,7 @@ private slots:
         QCOMPARE(detected.size(), 1);
         QCOMPARE(detected.first().first().toInt(), 115200);
         QVERIFY(!m_controller->isFeetechActive());
-        QVERIFY(!m_feetech->isConnected());
+        QVERIFY(!m_feetech->link()->isConnected());
     }
 
     void disconnectDuringTheProbeCancelsItAndConnectsNothing()
@@ -192,7 +192,7 @@ private slots:
         QVERIFY(message.first().first().toString().contains(QStringLiteral("cancelled")));
         QCOMPARE(active.size(), 2);
         QCOMPARE(active.last().first().toBool(), false);
-        QVERIFY(!m_feetech->isConnected());
+        QVERIFY(!m_feetech->link()->isConnected());
         QVERIFY(!m_ptk->isConnected());
     }
 
@@ -214,7 +214,7 @@ private slots:
                  QStringList {feetech::doctorcodes::kNoBytes});
         QCOMPARE(wanted.size(), 1);
         QCOMPARE(problem.size(), 1);
-        QVERIFY(!m_feetech->isConnected());
+        QVERIFY(!m_feetech->link()->isConnected());
         QVERIFY(!m_ptk->isConnected());
     }
 
@@ -240,7 +240,7 @@ private slots:
         QSignalSpy findings(m_controller.get(), &ConnectionController::doctorFindings);
         m_controller->setFeetechActive(true);
         m_controller->connectTo(request(ConnectionController::Protocol::Feetech, k1M));
-        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         m_feetech->scan(options);
         QTRY_COMPARE_WITH_TIMEOUT(findings.size(), 1, 30000);
         QCOMPARE(checking.size(), 1);
@@ -261,7 +261,7 @@ private slots:
         QSignalSpy checking(m_controller.get(), &ConnectionController::doctorChecking);
         QSignalSpy wanted(m_controller.get(), &ConnectionController::doctorWanted);
         m_controller->connectTo(request(ConnectionController::Protocol::Feetech, k1M));
-        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         feetech::ScanOptions options;
         options.lastId = 10;
         QSignalSpy scanned(m_feetech.get(), &feetech::BusClient::scanFinished);
@@ -296,7 +296,7 @@ private slots:
                  simulator.first().first().value<sim::SimulatorThread *>());
         QCOMPARE(m_controller->portShown(), QStringLiteral("simulated Feetech bus"));
         QVERIFY(m_controller->portPath() != demo.port); // the simulator's pseudo-terminal
-        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(scanWanted.size(), 1, 10000);
     }
 };

@@ -112,7 +112,7 @@ private slots:
         QCOMPARE(currentWorkspace(), m_window->ptkWorkspace());
         QCOMPARE(m_window->connectionBar()->echoMode(), seriallink::EchoMode::On);
         QCOMPARE(m_window->connectionBar()->baud(), 115200);
-        QVERIFY(!m_window->feetechClient()->isConnected());
+        QVERIFY(!m_window->feetechClient()->link()->isConnected());
     }
 
     void disconnectDuringTheProbeCancelsItAndConnectsNothing()
@@ -126,7 +126,7 @@ private slots:
         QTest::mouseClick(button, Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(!m_window->connection()->isDetecting(), 30000);
         QCOMPARE(button->text(), QStringLiteral("Connect"));
-        QVERIFY(!m_window->feetechClient()->isConnected());
+        QVERIFY(!m_window->feetechClient()->link()->isConnected());
         QVERIFY(!m_window->ptkClient()->isConnected());
         QVERIFY(!m_window->doctorPanel()->isVisible());
     }
@@ -142,7 +142,7 @@ private slots:
         QCOMPARE(codesOf(m_window->doctorPanel()->findings()),
                  QStringList {feetech::doctorcodes::kNoBytes});
         QCOMPARE(m_window->doctorPanel()->findingList()->topLevelItemCount(), 1);
-        QVERIFY(!m_window->feetechClient()->isConnected());
+        QVERIFY(!m_window->feetechClient()->link()->isConnected());
         QVERIFY(!m_window->ptkClient()->isConnected());
     }
 
@@ -156,7 +156,7 @@ private slots:
         QVERIFY(expectation->currentIndex() > 0);
         m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
         m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY(m_window->feetechClient()->isConnected());
+        QTRY_VERIFY(m_window->feetechClient()->link()->isConnected());
         feetech::ScanOptions options;
         options.lastId = 10;
         m_window->feetechWorkspace()->startScan(options);
@@ -180,7 +180,7 @@ private slots:
         feetech::rememberServos(m_simulator->linkPath(), {one, two});
         m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
         m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY(m_window->feetechClient()->isConnected());
+        QTRY_VERIFY(m_window->feetechClient()->link()->isConnected());
         feetech::ScanOptions options;
         options.lastId = 10;
         m_window->feetechWorkspace()->startScan(options);

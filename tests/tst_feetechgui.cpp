@@ -100,7 +100,7 @@ private slots:
         m_window->show();
         m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
         m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY(client()->isConnected());
+        QTRY_VERIFY(client()->link()->isConnected());
         feetech::ScanOptions scan;
         scan.lastId = 10;
         QSignalSpy finished(client(), &feetech::BusClient::scanFinished);

@@ -290,7 +290,7 @@ private slots:
         QVERIFY(
             runUntil([&] { return samples.value(1) >= 1500 && samples.value(3) >= 1500; }, 30000));
         QVERIFY(client.telemetry()->isStreaming());
-        QVERIFY(client.isConnected());
+        QVERIFY(client.link()->isConnected());
         QCOMPARE(samples.value(2), 0); // no longer selected
         QCOMPARE(client.telemetry()->stats().servos.size(), 2);
         QCOMPARE(client.telemetry()->latestSample(0)->id, quint8(1));
@@ -310,7 +310,7 @@ private slots:
         samples.clear();
         QTRY_VERIFY_WITH_TIMEOUT(samples.value(4) >= 50, 10000);
         QVERIFY(client.telemetry()->isStreaming());
-        QVERIFY(client.isConnected());
+        QVERIFY(client.link()->isConnected());
         for (const feetech::ServoTelemetry &servo : client.telemetry()->stats().servos)
             QVERIFY(!servo.missing);
         client.telemetry()->unsubscribe(this);

@@ -276,7 +276,7 @@ private slots:
                                 &error),
                  qPrintable(error));
         m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Auto);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->link()->isConnected(), 10000);
         feetech::ScanOptions options;
         options.lastId = 4;
         options.bauds = {k500k, k1M};

@@ -297,7 +297,7 @@ private slots:
         for (int row = 1; row < 4; ++row)
             m_joints->setTarget(row, 100);
         m_client->disconnectFrom();
-        QTRY_VERIFY(!m_client->isConnected());
+        QTRY_VERIFY(!m_client->link()->isConnected());
         QVERIFY(!m_joints->moveAll(&error));
         QVERIFY2(error.contains(QStringLiteral("not connected")), qPrintable(error));
         QVERIFY(!child<QPushButton>("moveAllButton")->isEnabled());

@@ -59,7 +59,7 @@ private slots:
         QVERIFY2(startEmptyBus(&error), qPrintable(error));
         m_client = std::make_unique<feetech::BusClient>();
         m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->link()->isConnected(), 10000);
         m_flow = std::make_unique<feetech::MotorSetupFlow>(m_client.get());
         m_flow->setRobot(m_robot);
     }

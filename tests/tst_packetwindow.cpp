@@ -100,7 +100,7 @@ private slots:
         QVERIFY(!child<QPushButton>("sendPacketButton")->isEnabled()); // not connected yet
 
         m_feetech->connectTo(m_simulator->linkPath(), k1M);
-        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         QTRY_VERIFY(child<QPushButton>("sendPacketButton")->isEnabled());
         QVERIFY(sendForm());
         // The answer: servo 1, no error, the two bytes of its present position (2048 = 00 08).
@@ -111,7 +111,7 @@ private slots:
     void aWriteToTheIdRegisterAsksFirstAndSendsNothingWhenRefused()
     {
         m_feetech->connectTo(m_simulator->linkPath(), k1M);
-        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         choose("instructionCombo", int(feetech::Instruction::Write));
         child<QSpinBox>("packetIdSpin")->setValue(1);
         child<QSpinBox>("packetAddressSpin")->setValue(5); // the ID
@@ -137,7 +137,7 @@ private slots:
     void theHistoryIsResentAndSavedAndLoadedAsASequence()
     {
         m_feetech->connectTo(m_simulator->linkPath(), k1M);
-        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         choose("instructionCombo", int(feetech::Instruction::Ping));
         child<QSpinBox>("packetIdSpin")->setValue(2);
         QVERIFY(sendForm());

@@ -91,7 +91,7 @@ private slots:
         OperationLog finishedLog(&client);
         QSignalSpy finished(&finishedLog, &OperationLog::finished);
         feetech::Refusal refusal;
-        QVERIFY2(client.lockEeprom(index, &refusal), qPrintable(refusal.describe()));
+        QVERIFY2(client.commands()->lockEeprom(index, &refusal), qPrintable(refusal.describe()));
         QVERIFY(finished.wait(10000));
         const auto result = finished.last().first().value<feetech::OperationResult>();
         QVERIFY2(result.ok, qPrintable(result.message));

@@ -115,7 +115,7 @@ private slots:
         QVERIFY2(startEmptyBus(&error), qPrintable(error));
         m_client = std::make_unique<feetech::BusClient>(testsupport::patientTiming());
         m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->link()->isConnected(), 10000);
         m_file = m_dir.filePath(QStringLiteral("follower.json"));
         util::FileError fileError;
         QVERIFY2(feetech::saveLeRobotCalibration(kArmFile, m_file, &fileError),

@@ -93,7 +93,7 @@ private:
     {
         m_window->connectionBar()->setProtocol(ConnectionBar::Protocol::Feetech);
         m_window->connectToPort(m_simulator->linkPath());
-        QTRY_VERIFY_WITH_TIMEOUT(client()->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(client()->link()->isConnected(), 10000);
     }
 
 private slots:

@@ -87,7 +87,7 @@ private slots:
         connect(m_client->link(), &seriallink::LinkMirror::packetLogged, this,
                 [this](const seriallink::PacketLogEntry &entry) { m_log.append(entry); });
         m_client->connectTo(m_simulator->linkPath(), k1M, seriallink::EchoMode::Off);
-        QTRY_VERIFY_WITH_TIMEOUT(m_client->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->link()->isConnected(), 10000);
     }
 
     void cleanup()

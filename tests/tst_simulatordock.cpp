@@ -241,10 +241,10 @@ private slots:
         MainWindow window;
         window.show();
         window.startArmDemo();
-        QTRY_VERIFY_WITH_TIMEOUT(window.feetechClient()->isConnected(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.feetechClient()->link()->isConnected(), 10000);
         QVERIFY(window.simulatorDock()->isVisible());
         window.feetechClient()->disconnectFrom();
-        QTRY_COMPARE_WITH_TIMEOUT(window.feetechClient()->status().state,
+        QTRY_COMPARE_WITH_TIMEOUT(window.feetechClient()->link()->status().state,
                                   seriallink::ConnectionState::Disconnected, 10000);
         window.startDemo();
         QVERIFY(!window.simulatorDock()->isVisible());

@@ -191,7 +191,7 @@ void ConnectionController::onFeetechScanFinished(bool completed)
 
 void ConnectionController::rescanForDoctor()
 {
-    if (m_feetechActive && m_feetech->isConnected()) {
+    if (m_feetechActive && m_feetech->link()->isConnected()) {
         // A probe only hears who answers a broadcast: on an open bus, the scan says more.
         feetech::ScanOptions options = m_lastScanOptions();
         if (m_probe)
@@ -200,7 +200,7 @@ void ConnectionController::rescanForDoctor()
         return;
     }
     if (m_ptk->status().state != seriallink::ConnectionState::Disconnected
-        || m_feetech->status().state != seriallink::ConnectionState::Disconnected)
+        || m_feetech->link()->status().state != seriallink::ConnectionState::Disconnected)
         return; // a PTK servo, or a link still opening: nothing to re-scan
     if (m_portPath.isEmpty()) {
         emit problem(tr("Choose a serial port first."));

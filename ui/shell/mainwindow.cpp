@@ -296,7 +296,7 @@ void MainWindow::createMenus()
     m_allTorqueOff->setToolTip(tr("Switch the torque of every servo on the Feetech bus off"));
     m_allTorqueOff->setEnabled(false);
     connect(m_allTorqueOff, &QAction::triggered, this, [this] {
-        if (!m_connection->isFeetechActive() || !m_feetech->isConnected())
+        if (!m_connection->isFeetechActive() || !m_feetech->link()->isConnected())
             return;
         statusBar()->showMessage(tr("Torque off: sent to every servo…"));
         m_feetech->allTorqueOff();
@@ -310,7 +310,7 @@ void MainWindow::createMenus()
     setUpMotors->setObjectName(QStringLiteral("setUpMotorsAction"));
     setUpMotors->setEnabled(false);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, setUpMotors,
-            [this, setUpMotors] { setUpMotors->setEnabled(m_feetech->isConnected()); });
+            [this, setUpMotors] { setUpMotors->setEnabled(m_feetech->link()->isConnected()); });
     connect(setUpMotors, &QAction::triggered, this, [this] {
         auto *wizard = findChild<SetupWizard *>();
         if (!wizard)
@@ -327,7 +327,7 @@ void MainWindow::createMenus()
                                 "joint alone into the arm's LeRobot file"));
     replaceMotor->setEnabled(false);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, replaceMotor,
-            [this, replaceMotor] { replaceMotor->setEnabled(m_feetech->isConnected()); });
+            [this, replaceMotor] { replaceMotor->setEnabled(m_feetech->link()->isConnected()); });
     connect(replaceMotor, &QAction::triggered, this, [this] {
         auto *wizard = findChild<ReplaceMotorWizard *>();
         if (!wizard)
@@ -353,7 +353,8 @@ void MainWindow::createMenus()
     recordReplay->setObjectName(QStringLiteral("recordReplayAction"));
     recordReplay->setToolTip(tr("Record joints moved by hand and play the motion back"));
     const auto updateRecordReplay = [this, recordReplay] {
-        recordReplay->setEnabled(m_feetech->isConnected() && m_feetech->servos()->count() > 0);
+        recordReplay->setEnabled(m_feetech->link()->isConnected()
+                                 && m_feetech->servos()->count() > 0);
     };
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, recordReplay, updateRecordReplay);
     connect(m_feetech->servos(), &feetech::ServoList::servosChanged, recordReplay,
@@ -373,7 +374,8 @@ void MainWindow::createMenus()
     teleoperate->setObjectName(QStringLiteral("teleoperateAction"));
     teleoperate->setToolTip(tr("Move this arm with a leader arm on another port"));
     const auto updateTeleoperate = [this, teleoperate] {
-        teleoperate->setEnabled(m_feetech->isConnected() && m_feetech->servos()->count() > 0);
+        teleoperate->setEnabled(m_feetech->link()->isConnected()
+                                && m_feetech->servos()->count() > 0);
     };
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, teleoperate, updateTeleoperate);
     connect(m_feetech->servos(), &feetech::ServoList::servosChanged, teleoperate,
@@ -498,8 +500,8 @@ void MainWindow::showProtocol(bool feetech)
 
 void MainWindow::updateFeetechBusActions()
 {
-    m_allTorqueOff->setEnabled(m_connection->isFeetechActive() && m_feetech->isConnected());
-    m_shareBus->setEnabled(m_connection->isFeetechActive() && m_feetech->isConnected());
+    m_allTorqueOff->setEnabled(m_connection->isFeetechActive() && m_feetech->link()->isConnected());
+    m_shareBus->setEnabled(m_connection->isFeetechActive() && m_feetech->link()->isConnected());
 }
 
 void MainWindow::connectToPort(const QString &port)
@@ -557,7 +559,7 @@ void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
     const bool active = status.state != ConnectionState::Disconnected;
     m_connectionBar->setSessionActive(active);
     const bool nothingOpen = m_ptk->status().state == ConnectionState::Disconnected
-        && m_feetech->status().state == ConnectionState::Disconnected;
+        && m_feetech->link()->status().state == ConnectionState::Disconnected;
     if (nothingOpen)
         m_pages->setCurrentWidget(m_welcome);
     else if (m_pages->currentWidget() == m_welcome)

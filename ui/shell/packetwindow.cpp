@@ -410,7 +410,7 @@ void PacketWindow::updatePreview()
     m_preview->setText(frame ? util::toHex(frame->bytes) : QString());
     m_meaning->setText(frame ? packetsequence::describe(*frame) : why);
     const bool feetech = m_tabs->currentIndex() == kFeetechTab;
-    const bool open = feetech ? m_feetech->isConnected() : m_ptk->isConnected();
+    const bool open = feetech ? m_feetech->link()->isConnected() : m_ptk->isConnected();
     m_send->setEnabled(frame.has_value() && open && !m_sending);
     m_send->setToolTip(open          ? QString()
                            : feetech ? tr("Connect to a Feetech bus first")
@@ -435,7 +435,7 @@ bool PacketWindow::send(const QVector<PacketFrame> &frames, QString *error)
         return fail(tr("There is nothing to send."));
     for (const PacketFrame &frame : frames) {
         const bool feetech = frame.protocol == PacketFrame::Protocol::Feetech;
-        if (feetech ? !m_feetech->isConnected() : !m_ptk->isConnected())
+        if (feetech ? !m_feetech->link()->isConnected() : !m_ptk->isConnected())
             return fail(feetech ? tr("Connect to a Feetech bus first.")
                                 : tr("Connect to a PTK servo first."));
     }
@@ -469,7 +469,7 @@ void PacketWindow::sendNext()
     bool accepted = false;
     if (frame.protocol == PacketFrame::Protocol::Feetech) {
         feetech::Refusal refusal;
-        feetech::OperationReply *reply = m_feetech->sendPacket(
+        feetech::OperationReply *reply = m_feetech->commands()->sendPacket(
             frame.bytes, frame.baud, frame.replyId, frame.replyDataSize, &refusal);
         error = refusal.describe();
         if (reply)

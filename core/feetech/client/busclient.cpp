@@ -55,6 +55,7 @@ BusClient::BusClient(const SessionTiming &timing, QObject *parent)
     connect(session, &Session::operationFinished, this, &BusClient::onOperationFinished);
     m_guard = new BusGuard(this);
     m_telemetry = new TelemetryHub(this);
+    m_commands = new ServoCommands(this);
     m_motorSetup = new MotorSetupService(this);
     m_health = new HealthService(this);
     m_settingsCheck = new SettingsCheckService(this);
@@ -110,7 +111,7 @@ void BusClient::cancelScan()
 
 Refusal BusClient::writeBlocker(int index) const
 {
-    if (!isConnected())
+    if (!m_link.isConnected())
         return Refusal(Refusal::Code::NotConnected);
     if (index < 0 || index >= m_servos->count())
         return Refusal(Refusal::Code::NoServo);
@@ -119,16 +120,6 @@ Refusal BusClient::writeBlocker(int index) const
         return Refusal::sharedId(m_servos->at(index).info.id);
     if (!m_servos->at(index).info.hasTable())
         return Refusal(Refusal::Code::UnknownModel);
-    if (isBusy())
-        return Refusal(Refusal::Code::Busy);
-    return {};
-}
-
-Refusal BusClient::commandBlocker(int index) const
-{
-    // An unknown model may be rebooted or cleared; a shared ID is not sent anything.
-    if (index >= 0 && index < m_servos->count() && m_servos->at(index).info.sharedId)
-        return Refusal::sharedId(m_servos->at(index).info.id);
     if (isBusy())
         return Refusal(Refusal::Code::Busy);
     return {};
@@ -292,7 +283,7 @@ BusClient::startOperation(Operation operation, int index, Refusal *refusal, Work
         refused(Refusal(Refusal::Code::NoServo), refusal);
         return nullptr;
     }
-    if (!isConnected()) {
+    if (!m_link.isConnected()) {
         refused(Refusal(Refusal::Code::NotConnected), refusal);
         return nullptr;
     }
@@ -368,57 +359,12 @@ OperationReply *BusClient::changeBaud(int index, qint32 newBaud, Refusal *refusa
         [newBaud](const ServoInfo &info) { return operations::changeBaud(info, newBaud); });
 }
 
-OperationReply *BusClient::calibrateMiddle(int index, Refusal *refusal)
-{
-    if (refused(writeBlocker(index), refusal))
-        return nullptr;
-    if (middleCalibration(m_servos->at(index).info) == MiddleCalibration::Unsupported) {
-        refused(Refusal(Refusal::Code::NoMiddleCalibration), refusal);
-        return nullptr;
-    }
-    return startOperation(Operation::CalibrateMiddle, index, refusal, Work::Foreground,
-                          &operations::calibrateMiddle);
-}
-
-OperationReply *BusClient::factoryReset(int index, Refusal *refusal)
-{
-    if (refused(writeBlocker(index), refusal))
-        return nullptr;
-    if (refused(m_share->isActive() ? Refusal(Refusal::Code::BusShared) : Refusal(), refusal))
-        return nullptr;
-    return startOperation(Operation::FactoryReset, index, refusal, Work::Foreground,
-                          &operations::factoryReset);
-}
-
-OperationReply *BusClient::reboot(int index, Refusal *refusal)
-{
-    if (refused(commandBlocker(index), refusal))
-        return nullptr;
-    return startOperation(Operation::Reboot, index, refusal, Work::Foreground, &operations::reboot);
-}
-
-OperationReply *BusClient::clearStatus(int index, Refusal *refusal)
-{
-    if (refused(commandBlocker(index), refusal))
-        return nullptr;
-    return startOperation(Operation::ClearStatus, index, refusal, Work::Foreground,
-                          &operations::clearStatus);
-}
-
-OperationReply *BusClient::lockEeprom(int index, Refusal *refusal)
-{
-    if (refused(isBusy() ? Refusal(Refusal::Code::Busy) : Refusal(), refusal))
-        return nullptr;
-    return startOperation(Operation::LockEeprom, index, refusal, Work::Foreground,
-                          &operations::lockEeprom);
-}
-
 // ---- live monitoring and control
 
 OperationReply *BusClient::writeValues(int index, const QVector<model::WriteItem> &values,
                                        Refusal *refusal)
 {
-    if (!isConnected() || index < 0 || index >= m_servos->count()
+    if (!m_link.isConnected() || index < 0 || index >= m_servos->count()
         || !m_servos->at(index).info.hasTable() || m_servos->at(index).info.sharedId) {
         // The same reasons as for any write, except a busy bus: control writes queue up.
         const Refusal blocker = writeBlocker(index);
@@ -451,8 +397,8 @@ OperationReply *BusClient::allTorqueOff()
             bauds.append(m_servos->at(i).info.baud);
         servos.append(m_servos->at(i).info);
     }
-    if (bauds.isEmpty() && status().baud > 0)
-        bauds.append(status().baud); // nothing scanned yet: the rate the port is at
+    if (bauds.isEmpty() && m_link.status().baud > 0)
+        bauds.append(m_link.status().baud); // nothing scanned yet: the rate the port is at
     // A shared bus stays at the rate the other program set: torque off goes at that one only.
     if (m_share->state() == ShareService::State::Sharing && m_share->portBaud() > 0)
         bauds = {m_share->portBaud()};
@@ -465,7 +411,7 @@ QVector<OperationReply *> BusClient::moveAll(const QVector<Goal> &goals, Refusal
         refused(why, refusal);
         return QVector<OperationReply *>();
     };
-    if (!isConnected())
+    if (!m_link.isConnected())
         return refuse(Refusal(Refusal::Code::NotConnected));
     if (goals.isEmpty())
         return refuse(Refusal(Refusal::Code::NothingToMove));
@@ -509,23 +455,6 @@ std::optional<PositionRange> goalRange(const BusClient &client, int index)
     return goalRange(client.servos()->at(index).info.table(),
                      parameters->deviceValue(registerkeys::kMinAngleLimit),
                      parameters->deviceValue(registerkeys::kMaxAngleLimit));
-}
-
-OperationReply *BusClient::sendPacket(const QByteArray &frame, qint32 baud,
-                                      std::optional<quint8> replyId, int replyDataSize,
-                                      Refusal *refusal)
-{
-    Refusal why;
-    if (!isConnected())
-        why = Refusal(Refusal::Code::NotConnected);
-    else if (!decodePacket(frame))
-        why = Refusal(Refusal::Code::NotAFrame);
-    else if (!baudCode(baud))
-        why = Refusal::notAFeetechRate(baud);
-    if (refused(why, refusal))
-        return nullptr;
-    return submit(operations::sendPacket(frame, baud, replyId, replyDataSize),
-                  replyId.value_or(kBroadcastId), baud, Work::Foreground);
 }
 
 } // namespace feetech

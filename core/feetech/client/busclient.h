@@ -14,6 +14,7 @@
 #include "operationreply.h"
 #include "parametermodel.h"
 #include "refusal.h"
+#include "servocommands.h"
 #include "servohealth.h"
 #include "servolist.h"
 #include "sessionthread.h"
@@ -47,9 +48,6 @@ public:
 
     // The link's state, counters and packet log, on this thread.
     seriallink::LinkMirror *link() { return &m_link; }
-    const seriallink::ConnectionStatus &status() const { return m_link.status(); }
-    const seriallink::LinkCounters &counters() const { return m_link.counters(); }
-    bool isConnected() const { return m_link.isConnected(); }
     bool isScanning() const;
     bool isBusy() const;
 
@@ -67,9 +65,6 @@ public:
 
     // Why changes cannot be made to servo `index` now (none when they can).
     Refusal writeBlocker(int index) const;
-    // Why a command that is no register write (reboot, clear status) cannot be sent now, or
-    // none.
-    Refusal commandBlocker(int index) const;
 
     OperationReply *readServo(int index);
     // Present values and other RAM registers, in the background; skipped while busy or while
@@ -83,16 +78,6 @@ public:
     OperationReply *applyAll(int index, Refusal *refusal = nullptr);
     OperationReply *changeId(int index, int newId, Refusal *refusal = nullptr);
     OperationReply *changeBaud(int index, qint32 newBaud, Refusal *refusal = nullptr);
-    OperationReply *calibrateMiddle(int index, Refusal *refusal = nullptr);
-    OperationReply *factoryReset(int index, Refusal *refusal = nullptr);
-    OperationReply *reboot(int index, Refusal *refusal = nullptr);
-    OperationReply *clearStatus(int index, Refusal *refusal = nullptr);
-    // Closes it and reads it back (Session::lockEeprom).
-    OperationReply *lockEeprom(int index, Refusal *refusal = nullptr);
-    // A frame built by hand (the packet window), queued like any command and sent once at
-    // `baud` (Session::sendPacket). The caller has asked before anything that writes EEPROM.
-    OperationReply *sendPacket(const QByteArray &frame, qint32 baud, std::optional<quint8> replyId,
-                               int replyDataSize, Refusal *refusal = nullptr);
 
     // ---- live monitoring and control
 
@@ -141,6 +126,8 @@ public:
     // The overload and thermal guard, on from the start.
     BusGuard *guard() const { return m_guard; }
 
+    // Middle calibration, factory reset, reboot, clear status, lock EEPROM, frames by hand.
+    ServoCommands *commands() const { return m_commands; }
     // Motor set-up: find the one servo on the bus, set it up, check a robot's joints.
     MotorSetupService *motorSetup() const { return m_motorSetup; }
     // The health check and its confirmed move test.
@@ -176,6 +163,7 @@ private:
     std::unique_ptr<BusClientPrivate> d; // the operations on their way, the scan, the clock
     BusGuard *m_guard = nullptr;
     TelemetryHub *m_telemetry = nullptr;
+    ServoCommands *m_commands = nullptr;
     MotorSetupService *m_motorSetup = nullptr;
     HealthService *m_health = nullptr;
     SettingsCheckService *m_settingsCheck = nullptr;

@@ -43,7 +43,7 @@ void DoctorCheck::readNext()
 {
     if (!m_running)
         return;
-    if (m_next >= m_seen.found.size() || !m_client->isConnected()) {
+    if (m_next >= m_seen.found.size() || !m_client->link()->isConnected()) {
         m_running = false;
         m_guard.stop();
         emit finished(diagnoseBus(m_seen, m_expected));

@@ -31,7 +31,7 @@ void HealthService::onWorkFinished(const OperationResult &result)
 OperationReply *HealthService::check(const QVector<int> &indexes, int reads, Refusal *refusal)
 {
     Refusal why;
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         why = Refusal(Refusal::Code::NotConnected);
     else if (m_client->isBusy())
         why = Refusal(Refusal::Code::Busy);

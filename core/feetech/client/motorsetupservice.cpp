@@ -14,7 +14,7 @@ MotorSetupService::MotorSetupService(BusClient *client)
 OperationReply *MotorSetupService::start(const BusOperation &operation, Refusal *refusal)
 {
     Refusal why;
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         why = Refusal(Refusal::Code::NotConnected);
     else if (m_client->isBusy())
         why = Refusal(Refusal::Code::Busy);

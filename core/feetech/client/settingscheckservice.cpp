@@ -13,7 +13,7 @@ SettingsCheckService::SettingsCheckService(BusClient *client)
 
 Refusal SettingsCheckService::blocker() const
 {
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         return Refusal(Refusal::Code::NotConnected);
     if (m_client->isBusy())
         return Refusal(Refusal::Code::Busy);

@@ -38,7 +38,7 @@ QString ShareService::defaultLinkPath()
 bool ShareService::start(const share::ShareOptions &options, Refusal *refusal)
 {
     Refusal why;
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         why = Refusal(Refusal::Code::NotConnected);
     else if (isActive())
         why = Refusal(Refusal::Code::AlreadyShared);

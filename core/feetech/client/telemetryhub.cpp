@@ -42,7 +42,7 @@ bool TelemetryHub::subscribe(const QObject *subscriber, const QVector<int> &inde
         refused(why, refusal);
         return false;
     };
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         return refuse(Refusal(Refusal::Code::NotConnected));
     if (indexes.isEmpty())
         return refuse(Refusal(Refusal::Code::NoServoToMonitor));

@@ -22,7 +22,7 @@ MotionCapture::MotionCapture(BusClient *client, QObject *parent)
 
 bool MotionCapture::start(const QVector<int> &indexes, double rateHz, Refusal *refusal)
 {
-    if (!m_client || !m_client->isConnected())
+    if (!m_client || !m_client->link()->isConnected())
         return !refused(Refusal(Refusal::Code::NotConnected), refusal);
     if (indexes.isEmpty())
         return !refused(Refusal(Refusal::Code::NoServoToMonitor), refusal);

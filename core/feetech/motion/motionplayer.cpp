@@ -17,7 +17,7 @@ MotionPlayer::MotionPlayer(BusClient *client, QObject *parent)
 OperationReply *MotionPlayer::play(const MotionRecording &recording, const ReplayPlan &settings,
                                    Refusal *refusal)
 {
-    if (!m_client || !m_client->isConnected()) {
+    if (!m_client || !m_client->link()->isConnected()) {
         refused(Refusal(Refusal::Code::NotConnected), refusal);
         return nullptr;
     }

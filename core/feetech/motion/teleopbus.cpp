@@ -10,7 +10,7 @@ namespace feetech {
 TeleopBus::TeleopBus(BusClient *client, QObject *parent)
     : QObject(parent)
     , m_client(client)
-    , m_portName(client->status().portName)
+    , m_portName(client->link()->status().portName)
 {
     connect(client->session(), &Session::memoryRead, this,
             [this](quint8 id, qint32, int address, const QByteArray &bytes) {
@@ -58,7 +58,7 @@ void TeleopBus::run(const BusOperation &operation, quint8 id, qint32 baud, Done 
         m_own->run([operation](Session &session) { session.submit(operation); });
         return;
     }
-    if (!m_client || !m_client->isConnected()) {
+    if (!m_client || !m_client->link()->isConnected()) {
         OperationResult closed;
         closed.operation = operation.kind;
         closed.message = tr("The follower's bus is not open.");

@@ -55,13 +55,13 @@ bool Teleoperation::start(const TeleopSettings &settings)
     m_problem = Problem::None;
     m_message.clear();
     m_settings = settings;
-    if (!m_client || !m_client->isConnected())
+    if (!m_client || !m_client->link()->isConnected())
         return refuse(Problem::NoFollower,
                       tr("Connect to the follower arm's bus first: it is the bus the window has "
                          "open."));
     if (settings.leaderPort.isEmpty())
         return refuse(Problem::LeaderUnreachable, tr("Choose the leader arm's port."));
-    if (samePort(settings.leaderPort, m_client->status().portName))
+    if (samePort(settings.leaderPort, m_client->link()->status().portName))
         return refuse(Problem::SamePort,
                       tr("The leader's port is the follower's: the leader and the follower are "
                          "two arms on two adapters."));

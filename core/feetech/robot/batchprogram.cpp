@@ -24,7 +24,7 @@ bool BatchProgram::start(const QVector<int> &indexes, const SettingsFile &file, 
     };
     if (isRunning())
         return refuse(tr("Servos are being programmed already."));
-    if (!m_client || !m_client->isConnected())
+    if (!m_client || !m_client->link()->isConnected())
         return refuse(tr("The bus is not connected."));
     if (m_client->isBusy())
         return refuse(tr("Another operation is still running."));

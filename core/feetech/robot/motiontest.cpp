@@ -95,7 +95,7 @@ bool MotionTest::validate(const MotionPlan &plan, Kind kind, MotionTestRefusal *
     using Code = MotionTestRefusal::Code;
     if (isRunning())
         return refuse(MotionTestRefusal(Code::AlreadyRunning));
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         return refuse(MotionTestRefusal(Code::NotConnected));
     if (plan.index < 0 || plan.index >= m_client->servos()->count())
         return refuse(MotionTestRefusal(Code::NoServo));

@@ -25,7 +25,7 @@ void MotorSetupFlow::setRobot(const RobotTemplate &robot)
 
 bool MotorSetupFlow::isBusFree() const
 {
-    return m_client->isConnected() && !isWorking() && !m_client->isBusy();
+    return m_client->link()->isConnected() && !isWorking() && !m_client->isBusy();
 }
 
 void MotorSetupFlow::start(Work work)

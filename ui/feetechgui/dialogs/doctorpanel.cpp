@@ -145,7 +145,7 @@ void DoctorPanel::updateMove()
 {
     const int row = m_list->currentItem() ? m_list->indexOfTopLevelItem(m_list->currentItem()) : -1;
     const bool offered = row >= 0 && row < m_findings.size() && !m_findings.at(row).moves.isEmpty();
-    m_move->setEnabled(offered && !m_moving && m_client->isConnected());
+    m_move->setEnabled(offered && !m_moving && m_client->link()->isConnected());
     m_move->setText(offered ? moveText(m_findings.at(row).moves.first()) : tr("Move the servo"));
 }
 

@@ -341,7 +341,7 @@ bool RecordReplayDialog::saveFile(const QString &path)
 
 void RecordReplayDialog::updateButtons()
 {
-    const bool connected = m_client->isConnected();
+    const bool connected = m_client->link()->isConnected();
     const bool recording = m_capture->isRecording();
     const bool playing = m_player->isPlaying();
     m_joints->setEnabled(!recording && !playing);

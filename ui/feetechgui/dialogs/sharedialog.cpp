@@ -162,7 +162,7 @@ void ShareDialog::chooseRecording()
 void ShareDialog::showState()
 {
     const ShareService *service = m_client->share();
-    const bool connected = m_client->isConnected();
+    const bool connected = m_client->link()->isConnected();
     const ShareService::State state = service->state();
     // What a running share was started with stays as it is until it stops.
     m_path->setEnabled(state == ShareService::State::Off);

@@ -76,10 +76,11 @@ TeleopDialog::TeleopDialog(feetech::BusClient *follower, QWidget *parent)
     auto *followerPort = new QLabel(arms);
     followerPort->setObjectName(QStringLiteral("teleopFollowerPort"));
     const auto showFollowerPort = [this, followerPort] {
-        followerPort->setText(m_client->isConnected()
-                                  ? tr("The arm on %1 (the window's bus)")
-                                        .arg(QDir::toNativeSeparators(m_client->status().portName))
-                                  : tr("None: connect to the follower arm's bus first"));
+        followerPort->setText(
+            m_client->link()->isConnected()
+                ? tr("The arm on %1 (the window's bus)")
+                      .arg(QDir::toNativeSeparators(m_client->link()->status().portName))
+                : tr("None: connect to the follower arm's bus first"));
     };
     connect(m_client, &feetech::BusClient::statusChanged, followerPort, showFollowerPort);
     showFollowerPort();
@@ -223,7 +224,7 @@ void TeleopDialog::refreshPorts()
     if (m_simulatedLeader)
         m_leaderPort->addItem(tr("Simulated SO-101 leader arm"),
                               QString::fromLatin1(kSimulatedLeader));
-    const QString followerPort = m_client->status().portName;
+    const QString followerPort = m_client->link()->status().portName;
     for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts()) {
         if (info.systemLocation() == followerPort)
             continue; // the follower's: never the leader's

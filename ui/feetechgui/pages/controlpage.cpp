@@ -143,7 +143,7 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
     connect(m_client, &feetech::BusClient::allTorqueOffRequested, this,
             &ControlPage::onAllTorqueOff);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
-        if (!m_client->isConnected()) {
+        if (!m_client->link()->isConnected()) {
             // Nothing comes back from writes the link dropped.
             m_goals->forgetWrites();
             m_torqueWritesInFlight = 0;
@@ -216,7 +216,7 @@ QString ControlPage::statusText() const
 
 bool ControlPage::ready() const
 {
-    return m_client->isConnected() && m_index >= 0 && m_index < m_client->servos()->count()
+    return m_client->link()->isConnected() && m_index >= 0 && m_index < m_client->servos()->count()
         && m_client->servos()->at(m_index).info.hasTable();
 }
 
@@ -471,7 +471,7 @@ void ControlPage::updateEnabled()
     } else {
         if (m_index < 0)
             m_hint->setText(tr("Select a servo in the tree to control it."));
-        else if (!m_client->isConnected())
+        else if (!m_client->link()->isConnected())
             m_hint->setText(tr("The bus is not connected: connect and scan to control servos."));
         else
             m_hint->setText(tr("This servo's model is unknown: ServoBench does not move it."));

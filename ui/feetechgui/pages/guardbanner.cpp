@@ -126,7 +126,7 @@ void GuardBanner::openGuardSettings()
 void GuardBanner::openRecovery()
 {
     // Connected, a servo with a known table: as the page asks before it moves one.
-    if (!m_client->isConnected() || m_index < 0 || m_index >= m_client->servos()->count()
+    if (!m_client->link()->isConnected() || m_index < 0 || m_index >= m_client->servos()->count()
         || !m_client->servos()->at(m_index).info.hasTable())
         return;
     auto *dialog = new OverloadRecoveryDialog(m_client, m_index, this);

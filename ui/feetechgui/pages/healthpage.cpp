@@ -236,7 +236,7 @@ bool HealthPage::saveReport(const QString &path, QString *error)
     QString why;
     const auto format = feetech::reportFormatFor(path);
     feetech::HealthReport report;
-    report.port = m_client->status().portName;
+    report.port = m_client->link()->status().portName;
     report.checkedAt = m_checkedAt.isValid() ? m_checkedAt : QDateTime::currentDateTime();
     report.servos = results();
     if (!format)
@@ -367,7 +367,7 @@ void HealthPage::fillRow(int row, const ServoHealth &health)
 
 void HealthPage::updateActions()
 {
-    const bool idle = m_client->isConnected() && !m_client->isBusy();
+    const bool idle = m_client->link()->isConnected() && !m_client->isBusy();
     m_check->setEnabled(idle && m_client->servos()->count() > 0 && !m_checking);
     m_cancel->setEnabled(m_checking);
     const int index = selectedServo();

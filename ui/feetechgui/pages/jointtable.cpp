@@ -111,7 +111,7 @@ JointTable::JointTable(feetech::BusClient *client, QWidget *parent)
     });
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         // Reconnected, the servos found again are read again (asked once per connection).
-        if (!m_client->isConnected())
+        if (!m_client->link()->isConnected())
             m_readAsked.clear();
         refreshHint();
         refreshButtons();
@@ -321,7 +321,7 @@ void JointTable::showEvent(QShowEvent *event)
 
 void JointTable::readWhileShown(bool all)
 {
-    if (!isVisible() || !m_client->isConnected())
+    if (!isVisible() || !m_client->link()->isConnected())
         return;
     int asked = 0;
     for (int row = 0; row < rowCount(); ++row) {
@@ -370,7 +370,7 @@ void JointTable::refreshHint()
 
 void JointTable::refreshButtons()
 {
-    const bool connected = m_client->isConnected();
+    const bool connected = m_client->link()->isConnected();
     const bool rows = rowCount() > 0;
     bool anyTarget = false;
     for (const Row &row : std::as_const(m_rows))
@@ -507,7 +507,7 @@ bool JointTable::moveAll(QString *error)
             *error = why;
         return false;
     };
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         return refuse(tr("The bus is not connected: nothing was sent."));
     if (rowCount() == 0)
         return refuse(tr("No servos: scan the bus first."));
@@ -595,7 +595,7 @@ bool JointTable::moveAll(QString *error)
 
 bool JointTable::readPositions(QString *error)
 {
-    if (!m_client->isConnected()) {
+    if (!m_client->link()->isConnected()) {
         if (error)
             *error = tr("The bus is not connected.");
         return false;

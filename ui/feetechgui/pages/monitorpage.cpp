@@ -440,7 +440,7 @@ void MonitorPage::onStatsChanged(const feetech::TelemetryStats &stats)
 
 void MonitorPage::onStatusChanged()
 {
-    if (m_client && !m_client->isConnected() && m_recording->isRecording()) {
+    if (m_client && !m_client->link()->isConnected() && m_recording->isRecording()) {
         m_recording->stopRecording();
         showMessage(tr("Recording stopped: the bus was disconnected."), true);
     }
@@ -495,7 +495,7 @@ void MonitorPage::updatePlotServos()
 void MonitorPage::updateControls()
 {
     const bool running = isRunning();
-    const bool connected = m_client && m_client->isConnected();
+    const bool connected = m_client && m_client->link()->isConnected();
     m_startButton->setText(running ? tr("Stop") : tr("Start"));
     m_startButton->setIcon(
         style()->standardIcon(running ? QStyle::SP_MediaStop : QStyle::SP_MediaPlay));

@@ -246,8 +246,8 @@ void SettingsCheckPanel::showOutcomes(const QVector<SettingsFixOutcome> &outcome
 void SettingsCheckPanel::updateActions()
 {
     const feetech::SettingsCheckService *service = m_client->settingsCheck();
-    const bool idle = m_client->isConnected() && !m_client->isBusy() && !service->isChecking()
-        && !service->isFixing();
+    const bool idle = m_client->link()->isConnected() && !m_client->isBusy()
+        && !service->isChecking() && !service->isFixing();
     m_check->setEnabled(idle && m_client->servos()->count() > 0);
     m_template->setEnabled(!service->isChecking());
     bool anyToFix = false;

@@ -332,8 +332,8 @@ CalibrationActions::CalibrationActions(QMenu *menu, feetech::BusClient *client, 
 
 void CalibrationActions::updateEnabled()
 {
-    const bool ready =
-        m_client->isConnected() && !m_client->isScanning() && m_client->servos()->count() > 0;
+    const bool ready = m_client->link()->isConnected() && !m_client->isScanning()
+        && m_client->servos()->count() > 0;
     for (QAction *action : {m_calibrate, m_save, m_load})
         action->setEnabled(ready);
 }

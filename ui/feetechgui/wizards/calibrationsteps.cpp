@@ -10,7 +10,7 @@ CalibrationSteps::CalibrationSteps(feetech::BusClient *client, QObject *parent)
 {
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         // The link went down: nothing running will report any more.
-        while (isRunning() && !m_client->isConnected()) {
+        while (isRunning() && !m_client->link()->isConnected()) {
             m_allOk = false;
             emit stepFinished(m_next - 1, false, tr("The bus was disconnected."));
             startNext();
@@ -38,7 +38,7 @@ void CalibrationSteps::startNext()
         feetech::OperationReply *reply = step.writes.isEmpty()
             ? m_client->readServo(step.index)
             : m_client->writeValues(step.index, step.writes, &refusal);
-        if (reply && m_client->isConnected()) {
+        if (reply && m_client->link()->isConnected()) {
             // A step the lost link already ended is not ended again.
             connect(reply, &feetech::OperationReply::finished, this,
                     [this, running = m_next](const feetech::OperationResult &result) {

@@ -66,7 +66,7 @@ ReplaceMotorWizard::ReplaceMotorWizard(feetech::BusClient *client, QWidget *pare
     connect(m_client, &feetech::BusClient::scanFinished, this, &ReplaceMotorWizard::onScanFinished);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         updateActions();
-        if (!m_client->isConnected() && page() != Page::Choice)
+        if (!m_client->link()->isConnected() && page() != Page::Choice)
             showStatus(tr("The Feetech port is closed: open it again to go on."),
                        palette::Tone::Error);
     });
@@ -252,7 +252,7 @@ void ReplaceMotorWizard::showStatus(const QString &html, palette::Tone tone)
 
 void ReplaceMotorWizard::updateActions()
 {
-    const bool connected = m_client->isConnected();
+    const bool connected = m_client->link()->isConnected();
     const bool working = m_flow->isWorking() || m_scanning;
     m_next->setEnabled(connected && !working);
     m_back->setEnabled(!working);
@@ -269,7 +269,7 @@ void ReplaceMotorWizard::next()
     if (page() != Page::Choice || m_flow->isWorking())
         return;
     const feetech::RobotJoint *joint = chosenJoint();
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         return showStatus(tr("Open the Feetech port the new servo is connected to first."),
                           palette::Tone::Error);
     if (!joint)
@@ -396,7 +396,8 @@ void ReplaceMotorWizard::onSetUpFinished(feetech::MotorSetupFlow::Work work,
 
 void ReplaceMotorWizard::scanArm()
 {
-    if (page() != Page::Reassemble || m_scanning || !m_client->isConnected() || m_client->isBusy())
+    if (page() != Page::Reassemble || m_scanning || !m_client->link()->isConnected()
+        || m_client->isBusy())
         return;
     const feetech::RobotTemplate &robot = m_flow->robot();
     feetech::ScanOptions options;

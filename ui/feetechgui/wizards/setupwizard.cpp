@@ -258,7 +258,7 @@ void SetupWizard::showJoints()
 
 void SetupWizard::showCurrent()
 {
-    if (!m_client->isConnected()) {
+    if (!m_client->link()->isConnected()) {
         m_currentBox->setTitle(tr("Not connected"));
         m_instruction->setText(tr("Open the Feetech port the servos are connected to first."));
         return;

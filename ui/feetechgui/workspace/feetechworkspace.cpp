@@ -191,9 +191,9 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_calibrate, &QPushButton::clicked, this, &FeetechWorkspace::calibrateMiddle);
     connect(m_factoryReset, &QPushButton::clicked, this, &FeetechWorkspace::factoryReset);
     connect(m_reboot, &QPushButton::clicked, this,
-            [this] { run(&feetech::BusClient::reboot, tr("Restarting the servo…")); });
+            [this] { run(&feetech::ServoCommands::reboot, tr("Restarting the servo…")); });
     connect(m_clearStatus, &QPushButton::clicked, this,
-            [this] { run(&feetech::BusClient::clearStatus, tr("Clearing the status…")); });
+            [this] { run(&feetech::ServoCommands::clearStatus, tr("Clearing the status…")); });
     connect(m_memory, &MemoryTablePage::problem, this, &FeetechWorkspace::problem);
 
     const auto readCurrent = [this] {
@@ -224,7 +224,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
         updateActions();
         updateHeader();
         if (m_client->servos()->count() == 0 && !m_client->isScanning())
-            m_scanState->setText(m_client->isConnected()
+            m_scanState->setText(m_client->link()->isConnected()
                                      ? tr("Press Scan… to find the servos on the bus.")
                                      : tr("Connect, then scan to find the servos."));
     });
@@ -359,7 +359,7 @@ void FeetechWorkspace::updateHeader()
     m_memory->setEmptyStateShown(index < 0);
     if (index < 0) {
         m_header->setText(m_client->servos()->count() > 0 ? tr("Choose a servo in the tree.")
-                              : m_client->isConnected()
+                              : m_client->link()->isConnected()
                               ? tr("No servo yet: scan the bus.")
                               : tr("No servo yet: connect to the bus and scan."));
         return;
@@ -395,7 +395,7 @@ void FeetechWorkspace::updateHeader()
 void FeetechWorkspace::updateActions()
 {
     const int index = currentIndex();
-    const bool connected = m_client->isConnected();
+    const bool connected = m_client->link()->isConnected();
     const bool idle = !m_client->isBusy();
     // Two servos at one ID would both take a write: nothing is sent to a shared ID.
     const bool shared = index >= 0 && m_client->servos()->at(index).info.sharedId;
@@ -425,8 +425,8 @@ void FeetechWorkspace::refreshLive()
 {
     const int index = currentIndex();
     if (index < 0 || !m_memory->refreshesLive() || !isVisible()
-        || m_tabs->currentWidget() != m_memory || !m_client->isConnected() || m_client->isBusy()
-        || !m_client->servos()->at(index).read)
+        || m_tabs->currentWidget() != m_memory || !m_client->link()->isConnected()
+        || m_client->isBusy() || !m_client->servos()->at(index).read)
         return;
     m_client->refreshRam(index);
 }
@@ -442,7 +442,7 @@ void FeetechWorkspace::openScanDialog()
 
 void FeetechWorkspace::startScan(const feetech::ScanOptions &options)
 {
-    if (!m_client->isConnected()) {
+    if (!m_client->link()->isConnected()) {
         emit problem(tr("Connect to the bus before scanning."));
         return;
     }
@@ -493,11 +493,11 @@ void FeetechWorkspace::apply()
 }
 
 void FeetechWorkspace::run(
-    feetech::OperationReply *(feetech::BusClient::*operation)(int, feetech::Refusal *),
+    feetech::OperationReply *(feetech::ServoCommands::*operation)(int, feetech::Refusal *),
     const QString &what)
 {
     feetech::Refusal refusal;
-    if (!(m_client->*operation)(currentIndex(), &refusal))
+    if (!(m_client->commands()->*operation)(currentIndex(), &refusal))
         emit problem(refusal.describe());
     else
         emit message(what);
@@ -561,7 +561,7 @@ void FeetechWorkspace::calibrateMiddle()
             .arg(servoTitle()),
         QMessageBox::Ok | QMessageBox::Cancel, QMessageBox::Cancel);
     if (answer == QMessageBox::Ok)
-        run(&feetech::BusClient::calibrateMiddle, tr("Calibrating the middle…"));
+        run(&feetech::ServoCommands::calibrateMiddle, tr("Calibrating the middle…"));
 }
 
 void FeetechWorkspace::factoryReset()
@@ -592,7 +592,7 @@ void FeetechWorkspace::factoryReset()
             .arg(QDir::toNativeSeparators(path).toHtmlEscaped(), servoTitle()),
         QMessageBox::Reset | QMessageBox::Cancel, QMessageBox::Cancel);
     if (answer == QMessageBox::Reset)
-        run(&feetech::BusClient::factoryReset, tr("Restoring factory values…"));
+        run(&feetech::ServoCommands::factoryReset, tr("Restoring factory values…"));
 }
 
 void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &result)

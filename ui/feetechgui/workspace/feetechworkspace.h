@@ -24,6 +24,7 @@ class UnlockedNotice;
 
 namespace feetech {
 class BusClient;
+class ServoCommands;
 class Refusal;
 class OperationReply;
 } // namespace feetech
@@ -78,7 +79,7 @@ private:
     void changeBaud();
     void calibrateMiddle();
     void factoryReset();
-    void run(feetech::OperationReply *(feetech::BusClient::*operation)(int, feetech::Refusal *),
+    void run(feetech::OperationReply *(feetech::ServoCommands::*operation)(int, feetech::Refusal *),
              const QString &what);
     QString servoTitle() const;
 

@@ -101,7 +101,7 @@ void RobotActions::updateActions()
 {
     // Connected and scanned: every robot action needs the servos the scan found.
     QString why;
-    if (!m_client->isConnected())
+    if (!m_client->link()->isConnected())
         why = tr("Connect to a Feetech bus first.");
     else if (m_client->isScanning())
         why = tr("The scan is still running.");

@@ -39,12 +39,12 @@ UnlockedNotice::UnlockedNotice(feetech::BusClient *client, QWidget *parent)
         refresh();
     });
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
-        if (!m_client->isConnected())
+        if (!m_client->link()->isConnected())
             m_dismissed.clear();
     });
     connect(m_lock, &QPushButton::clicked, this, [this] {
         feetech::Refusal refusal;
-        if (m_index >= 0 && !m_client->lockEeprom(m_index, &refusal))
+        if (m_index >= 0 && !m_client->commands()->lockEeprom(m_index, &refusal))
             emit problem(refusal.describe());
     });
     connect(m_client->servos(), &feetech::ServoList::servoUpdated, this, [this](int index) {
