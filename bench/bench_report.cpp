@@ -202,10 +202,12 @@ struct Series
                                   : (present.at(middle - 1) + present.at(middle)) / 2;
     }
 
+    // Whether the runs that have a value all have the same one.
     bool allEqual() const
     {
+        const std::optional<double> first = median();
         return std::all_of(values.begin(), values.end(),
-                           [this](const std::optional<double> &v) { return v == values.first(); });
+                           [&first](const std::optional<double> &v) { return !v || v == first; });
     }
 
     // Every run's value in run order, "—" for a run without one: " (1.15, —, 1.18)"; nothing
@@ -299,7 +301,8 @@ Row evaluate(const QJsonObject &entry, Results &results)
                              wire.value(QStringLiteral("value")).toString());
         const QString wireUnit = wire.value(QStringLiteral("unit")).toString(unit);
         const std::optional<double> median = wireSeries.median();
-        // A wire limit is mostly arithmetic, the same in every run: its runs only when they differ.
+        // A wire limit is mostly arithmetic, the same in every run: its runs only when they differ
+        // (a run without one is said in the measured column).
         row.wire = !median          ? QStringLiteral("missing (%1)").arg(wireSeries.problems())
             : wireSeries.allEqual() ? withUnit(number(*median), wireUnit)
                                     : withUnit(number(*median), wireUnit) + wireSeries.runs();
