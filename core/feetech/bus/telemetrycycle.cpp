@@ -76,9 +76,9 @@ void TelemetryCycle::start(const TelemetryOptions &options)
     }
     if (!m_flushTimer) {
         m_flushTimer = new QTimer(this);
-        connect(m_flushTimer, &QTimer::timeout, this, &TelemetryCycle::flush);
+        connect(m_flushTimer, &QTimer::timeout, this, &TelemetryCycle::onBatchDue);
         m_statsTimer = new QTimer(this);
-        connect(m_statsTimer, &QTimer::timeout, this, &TelemetryCycle::publishStats);
+        connect(m_statsTimer, &QTimer::timeout, this, &TelemetryCycle::onStatsDue);
     }
     m_flushTimer->start(m_bus.timing().telemetryBatchInterval);
     m_statsTimer->start(m_bus.timing().telemetryStatsInterval);
@@ -91,6 +91,8 @@ void TelemetryCycle::stop()
     if (!m_state)
         return;
     ++m_generation; // answers still on their way belong to no stream now
+    m_flushPostponed = false;
+    m_statsPostponed = false;
     flush();
     updateStats();
     m_state->stats.running = false;
@@ -354,6 +356,7 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
                 noteAnswers();
                 if (cycleEnded && m_state->options.publishEachCycle)
                     flush();
+                doPostponed();
                 return;
             }
             noteAnswers();
@@ -373,6 +376,8 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
                 next();
             else
                 settleThen(waited, next);
+            if (alive)
+                doPostponed();
         };
         m_bus.link().engine().submit(std::move(transaction));
     };
@@ -444,6 +449,8 @@ TelemetryCycle::CycleStep TelemetryCycle::read(int servoIndex, bool probe)
                 next();
             else
                 settleThen(waited, next);
+            if (alive)
+                doPostponed();
         };
         m_bus.link().engine().submit(std::move(transaction));
     };
@@ -531,6 +538,34 @@ void TelemetryCycle::flush()
     QVector<FeedbackSample> batch;
     batch.swap(m_batch);
     emit telemetry(batch, m_state ? m_state->options.stream : 0);
+}
+
+void TelemetryCycle::onBatchDue()
+{
+    if (m_state && m_state->inCycle)
+        m_flushPostponed = true;
+    else
+        flush();
+}
+
+void TelemetryCycle::onStatsDue()
+{
+    if (m_state && m_state->inCycle)
+        m_statsPostponed = true;
+    else
+        publishStats();
+}
+
+void TelemetryCycle::doPostponed()
+{
+    if (m_flushPostponed) {
+        m_flushPostponed = false;
+        flush();
+    }
+    if (m_statsPostponed) {
+        m_statsPostponed = false;
+        publishStats();
+    }
 }
 
 void TelemetryCycle::publishStats()

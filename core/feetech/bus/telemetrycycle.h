@@ -92,6 +92,12 @@ private:
     void flush();
     void publishStats();
     void updateStats();
+    // The batch and statistics timers: what they send waits while a read is on the wire and
+    // goes once its answers are in and the next read has left (doPostponed), so that neither
+    // delays a request.
+    void onBatchDue();
+    void onStatsDue();
+    void doPostponed();
 
     BusExchange &m_bus;
     std::function<bool()> m_busBusy;
@@ -101,6 +107,8 @@ private:
     QVector<FeedbackSample> m_batch;
     QTimer *m_flushTimer = nullptr;
     QTimer *m_statsTimer = nullptr;
+    bool m_flushPostponed = false;
+    bool m_statsPostponed = false;
 };
 
 } // namespace feetech
