@@ -3,7 +3,7 @@
 #include "mainwindow.h"
 
 #include "busclient.h"
-#include "calibrationfiles.h"
+#include "calibrationactions.h"
 #include "connectionbar.h"
 #include "connectioncontroller.h"
 #include "demoservos.h"
