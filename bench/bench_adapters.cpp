@@ -12,7 +12,7 @@
 #include "demoservos.h"
 #include "feetechsession.h"
 #include "ptksession.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "usbadapter.h"
 
 #include <QCoreApplication>

@@ -5,7 +5,7 @@
 #include "feetechpacket.h"
 #include "feetechsession.h"
 #include "registertable.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

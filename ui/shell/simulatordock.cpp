@@ -3,7 +3,7 @@
 #include "simulatordock.h"
 
 #include "registertable.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "widgethelpers.h"
 
 #include <QComboBox>

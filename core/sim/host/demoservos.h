@@ -1,7 +1,7 @@
 // Simulated servos inside the application, so ServoBench can be tried before hardware arrives.
 #pragma once
 
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QTemporaryDir>
 
