@@ -4,6 +4,7 @@
 #include "busoperations.h"
 #include "feetechpacket.h"
 #include "feetechsession.h"
+#include "modeltable.h"
 #include "registertable.h"
 #include "simulatorthread.h"
 

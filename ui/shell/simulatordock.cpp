@@ -2,6 +2,7 @@
 // slider and sweep, and the bus buttons, all through SimulatorThread::call.
 #include "simulatordock.h"
 
+#include "modeltable.h"
 #include "registertable.h"
 #include "simulatorthread.h"
 #include "widgethelpers.h"

@@ -4,6 +4,7 @@
 #include "feetechpacket.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"
+#include "modeltable.h"
 #include "registertable.h"
 #include "streamframer.h"
 #include "transport.h"
