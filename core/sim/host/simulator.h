@@ -2,7 +2,7 @@
 // pacing, optional echo, fault injection and a frame log.
 #pragma once
 
-#include "faults.h"
+#include "faultinjector.h"
 #include "pseudoterminal.h"
 #include "simlog.h"
 #include "simoptions.h"
