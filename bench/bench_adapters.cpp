@@ -12,7 +12,7 @@
 #include "demoservos.h"
 #include "feetechsession.h"
 #include "ptksession.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "usbadapter.h"
 
 #include <QCoreApplication>
@@ -224,10 +224,10 @@ QJsonObject demoRun(int seconds)
 {
     QJsonObject figures;
     sim::DemoServos demo;
-    QString error;
-    const QString port = demo.feetechPort(&error);
+    sim::SimRefusal why;
+    const QString port = demo.feetechPort(&why);
     if (port.isEmpty()) {
-        figures.insert(QStringLiteral("error"), error);
+        figures.insert(QStringLiteral("error"), why.describe());
         return figures;
     }
     feetech::Session session;

@@ -4,8 +4,9 @@
 #include "busoperations.h"
 #include "feetechpacket.h"
 #include "feetechsession.h"
+#include "modeltable.h"
 #include "registertable.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

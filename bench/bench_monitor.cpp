@@ -3,7 +3,7 @@
 #include "benchsupport.h"
 #include "busoperations.h"
 #include "feetechsession.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "telemetry.h"
 
 #include <QCoreApplication>

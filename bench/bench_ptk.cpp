@@ -4,7 +4,7 @@
 #include "ptkframe.h"
 #include "ptkparameters.h"
 #include "ptksession.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

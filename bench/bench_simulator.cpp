@@ -1,7 +1,7 @@
 // Measures request/reply round trips through servosim's pty against the wire-time lower bound.
 #include "feetechpacket.h"
 #include "ptkframe.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "feetechsession.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QElapsedTimer>
 

@@ -6,7 +6,7 @@
 
 #include "busclient.h"
 #include "ptkclient.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualfeetechbus.h"
 #include "virtualptkservo.h"
 

@@ -3,7 +3,7 @@
 // shown and every write's outcome checked against what the simulator holds.
 #pragma once
 
-#include "faults.h"
+#include "faultsettings.h"
 
 #include <QJsonObject>
 #include <QStringList>

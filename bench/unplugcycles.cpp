@@ -8,7 +8,7 @@
 #include "processmemory.h"
 #include "ptkclient.h"
 #include "servoctl.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualptkservo.h"
 
 #include <QDeadlineTimer>

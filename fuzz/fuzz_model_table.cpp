@@ -1,6 +1,7 @@
 // Fuzz target: the model table (resources/feetech/models.json) as the loader reads it; a table
 // accepted names each model once and identifies every model number.
 #include "fuzztarget.h"
+#include "modeltable.h"
 #include "registertable.h"
 
 #include <QSet>

@@ -1,6 +1,7 @@
 // Fuzz target: a robot template as a user's file is read; a template accepted names known models
 // with settings inside their registers' ranges, and is written and read back unchanged.
 #include "fuzztarget.h"
+#include "modeltable.h"
 #include "registertable.h"
 #include "robottemplate.h"
 

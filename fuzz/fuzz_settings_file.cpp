@@ -2,6 +2,7 @@
 // or a robot template); whatever it gives a servo is a writable register of that servo, in
 // range, and a batch never copies a profile's offset.
 #include "fuzztarget.h"
+#include "modeltable.h"
 #include "registertable.h"
 #include "settingsfile.h"
 

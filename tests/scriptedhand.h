@@ -3,7 +3,7 @@
 #pragma once
 
 #include "feetechbus.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualfeetechservo.h"
 
 #include <QMap>

@@ -8,7 +8,7 @@
 #include "profile.h"
 #include "robottemplate.h"
 #include "servoparameters.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "telemetry.h"
 #include "virtualfeetechservo.h"
 

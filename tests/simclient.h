@@ -6,7 +6,7 @@
 #include "ptkframe.h"
 #include "ptkparameters.h"
 #include "ptksession.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualptkservo.h"
 
 #include <QFile>

@@ -5,7 +5,7 @@
 #include "feetechsession.h"
 #include "ptksession.h"
 #include "simclient.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

@@ -3,9 +3,10 @@
 #include "feetechbus.h"
 #include "scriptedhand.h"
 
-#include "calibrationfiles.h"
+#include "calibrationsaver.h"
 #include "calibrationwizard.h"
 #include "lerobotcalibration.h"
+#include "loadcalibrationdialog.h"
 #include "mainwindow.h"
 
 #include <QAction>

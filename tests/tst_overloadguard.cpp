@@ -2,6 +2,7 @@
 // act, the thermal margin, the latched-overload bit, and limits per servo from the table.
 #include "feedbacksample.h"
 
+#include "modeltable.h"
 #include "overloadguard.h"
 #include "registertable.h"
 

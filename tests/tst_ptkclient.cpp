@@ -5,7 +5,7 @@
 #include "ptkclient.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualptkservo.h"
 
 #include <QtTest>

@@ -10,7 +10,7 @@
 #include "ptkclient.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualptkservo.h"
 
 #include <QLabel>

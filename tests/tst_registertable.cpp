@@ -1,4 +1,5 @@
 // Tests the Feetech register tables and model table: built-in data and the JSON validator.
+#include "modeltable.h"
 #include "registertable.h"
 
 #include <QJsonArray>

@@ -3,7 +3,7 @@
 #include "simclient.h"
 
 #include "ptkparameters.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualptkservo.h"
 
 #include <QJsonArray>

@@ -1,6 +1,7 @@
 // Tests feetech::SettingsFile's reading: a profile or a robot template from a file or from its
 // text gives the same values, and text that is neither is refused naming its source; a
 // template's bits to clear become writes only where they are set; what torque refuses.
+#include "modeltable.h"
 #include "registertable.h"
 #include "settingsfile.h"
 #include "testfiles.h"

@@ -5,7 +5,7 @@
 #include "feetechvalue.h"
 #include "hex.h"
 #include "registertable.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualfeetechbus.h"
 #include "virtualfeetechservo.h"
 

@@ -4,7 +4,7 @@
 
 #include "ptkframe.h"
 #include "ptkparameters.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "virtualptkservo.h"
 
 #include <QtTest>

@@ -3,6 +3,7 @@
 // the leader's pose without passing it, Stop dropping what waits.
 #include "teleoploop.h"
 
+#include "modeltable.h"
 #include "registertable.h"
 
 #include <QtTest>

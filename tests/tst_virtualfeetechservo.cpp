@@ -1,5 +1,6 @@
 // Tests one simulated Feetech servo: registers, lock semantics, instructions and physics.
 #include "feetechpacket.h"
+#include "modeltable.h"
 #include "registertable.h"
 #include "virtualfeetechservo.h"
 

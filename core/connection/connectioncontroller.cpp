@@ -98,12 +98,12 @@ void ConnectionController::connectTo(const Request &request)
         protocol = *spoken;
         if (!m_demo)
             m_demo = std::make_unique<sim::DemoServos>();
-        QString error;
-        port = arm       ? m_demo->armPort(&error)
-            : feetechBus ? m_demo->feetechPort(&error)
-                         : m_demo->ptkPort(&error);
+        sim::SimRefusal why;
+        port = arm       ? m_demo->armPort(&why)
+            : feetechBus ? m_demo->feetechPort(&why)
+                         : m_demo->ptkPort(&why);
         if (port.isEmpty()) {
-            emit problem(tr("The simulated servos could not start: %1").arg(error));
+            emit problem(tr("The simulated servos could not start: %1").arg(why.describe()));
             return;
         }
         m_portShown = arm ? tr("simulated SO-101 arm")

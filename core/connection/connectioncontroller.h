@@ -8,7 +8,7 @@
 #include "linktypes.h"
 #include "portprobe.h"
 #include "sessionthread.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 
 #include <QObject>
 

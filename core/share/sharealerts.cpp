@@ -24,14 +24,6 @@ QString key(const QString &code, quint8 id)
 
 } // namespace
 
-QJsonObject ShareAlert::toJson() const
-{
-    return {{QStringLiteral("alert"), code},
-            {QStringLiteral("id"), int(id)},
-            {QStringLiteral("message"), message},
-            {QStringLiteral("time"), double(timeUs) / 1e6}};
-}
-
 void ShareAlerts::raise(QVector<ShareAlert> &alerts, const QString &code, quint8 id,
                         const QString &message, qint64 timeUs)
 {

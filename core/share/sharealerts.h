@@ -2,6 +2,7 @@
 #pragma once
 
 #include "observedservos.h"
+#include "sharealert.h"
 #include "sharedtransaction.h"
 
 #include <QHash>
@@ -12,17 +13,6 @@
 #include <QVector>
 
 namespace share {
-
-struct ShareAlert
-{
-    QString code; // temperature-high, voltage-out-of-range, overload, reply-error, multi-turn,
-                  // torque-jump, eeprom-unlocked, shared-id
-    quint8 id = 0;
-    QString message; // translated, says what it means for the arm
-    qint64 timeUs = 0; // since the share began
-
-    QJsonObject toJson() const; // {"alert": code, "id": N, "message": ...}
-};
 
 // An alert is raised once and stays quiet until its condition has cleared (a servo that cooled
 // down, a reply without the bit); writes that are risky in themselves (phase bit 4, torque on
@@ -64,5 +54,3 @@ private:
 };
 
 } // namespace share
-
-Q_DECLARE_METATYPE(share::ShareAlert)

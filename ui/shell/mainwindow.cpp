@@ -3,7 +3,7 @@
 #include "mainwindow.h"
 
 #include "busclient.h"
-#include "calibrationfiles.h"
+#include "calibrationactions.h"
 #include "connectionbar.h"
 #include "connectioncontroller.h"
 #include "demoservos.h"
@@ -389,7 +389,11 @@ void MainWindow::createMenus()
         std::function<QString(QString *)> simulatedLeader;
         if (m_connection->simulator() && m_connection->demo()) {
             simulatedLeader = [demo = m_connection->demo()](QString *error) {
-                return demo->leaderArmPort(error);
+                sim::SimRefusal why;
+                const QString port = demo->leaderArmPort(&why);
+                if (why && error)
+                    *error = why.describe();
+                return port;
             };
         }
         if (dialog->teleoperation()->state() == feetech::Teleoperation::State::Idle)

@@ -2,8 +2,9 @@
 // slider and sweep, and the bus buttons, all through SimulatorThread::call.
 #include "simulatordock.h"
 
+#include "modeltable.h"
 #include "registertable.h"
-#include "simulator.h"
+#include "simulatorthread.h"
 #include "widgethelpers.h"
 
 #include <QComboBox>

@@ -2,6 +2,7 @@
 #include "portprobe.h"
 
 #include "feetechpacket.h"
+#include "modeltable.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"
 #include "registertable.h"
@@ -41,21 +42,6 @@ QByteArray answerBytes(const QByteArray &heard, const QByteArray &request, bool 
 }
 
 } // namespace
-
-QVector<qint32> PortProbeReport::answeringBauds() const
-{
-    QVector<qint32> bauds;
-    for (const RateProbe &rate : rates) {
-        if (rate.heard != RateHeard::Silence)
-            bauds.append(rate.baud);
-    }
-    return bauds;
-}
-
-bool PortProbeReport::silent() const
-{
-    return !ptk && ptkBytes == 0 && answeringBauds().isEmpty();
-}
 
 PortProbe::PortProbe(const ProbeTiming &timing, QObject *parent)
     : QObject(parent)

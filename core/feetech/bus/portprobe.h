@@ -1,7 +1,7 @@
 // The port probe: who answers on a port, without writing anything to a servo.
 #pragma once
 
-#include "portaccess.h"
+#include "portprobereport.h"
 
 #include <QMetaType>
 #include <QObject>
@@ -27,38 +27,6 @@ struct ProbeTiming
     std::chrono::milliseconds feetechWait {100};
     // Once answers begin, how long the rest of them (collided or not) may take to come in.
     std::chrono::milliseconds settle {20};
-};
-
-// What came back at one rate, besides the adapter's echo of the question.
-enum class RateHeard {
-    Silence, // not a byte
-    Unframed, // bytes, but not one valid frame among them
-    Frames // valid answers, naming the IDs in `ids`
-};
-
-struct RateProbe
-{
-    qint32 baud = 0;
-    RateHeard heard = RateHeard::Silence;
-    int bytes = 0; // bytes heard besides the echo
-    QVector<quint8> ids; // the IDs of the valid answers (several servos' answers collide)
-};
-
-struct PortProbeReport
-{
-    QString port;
-    seriallink::PortAccess access; // problem None: the port opened
-    bool cancelled = false;
-    bool ptk = false; // a PTK servo answered the query at 115200
-    int ptkBytes = 0; // bytes the PTK query heard besides its echo
-    bool echo = false; // the adapter sent the questions back (a single-wire adapter)
-    QVector<RateProbe> rates; // every Feetech rate asked, fastest first
-
-    bool opened() const { return access.problem == seriallink::PortAccess::Problem::None; }
-    // The Feetech rates where anything but the echo came back: the ones worth a scan.
-    QVector<qint32> answeringBauds() const;
-    // Not a byte besides the echo, at any rate, to any question.
-    bool silent() const;
 };
 
 // Asks a port who is there, one question at a time: a PTK query at 115200, then (unless a PTK
@@ -103,5 +71,3 @@ private:
 };
 
 } // namespace feetech
-
-Q_DECLARE_METATYPE(feetech::PortProbeReport)

@@ -6,6 +6,7 @@
 
 #include "busoperations.h"
 #include "linksession.h"
+#include "modeltable.h"
 #include "registerkeys.h"
 #include "registertable.h"
 #include "servoparameters.h"

@@ -55,20 +55,6 @@ QVector<Block> blocksFor(const RegisterTable &table, const QStringList &keys)
 
 } // namespace
 
-bool JointCheck::done() const
-{
-    return found && servoIsModel(*found, model) && differing.isEmpty();
-}
-
-QString JointCheck::problem() const
-{
-    if (!found || done())
-        return {};
-    if (!servoIsModel(*found, model))
-        return Tr::tr("ID %1 answers as model %2, not %3.").arg(id).arg(found->model.name, model);
-    return Tr::tr("ID %1 answers, but %2.").arg(id).arg(differing.join(QStringLiteral(", ")));
-}
-
 struct MotorSetup::Run
 {
     MotorTarget target;

@@ -5,6 +5,7 @@
 #include "busexchange.h"
 #include "bustypes.h"
 #include "guidedflows.h"
+#include "jointcheck.h"
 #include "motorfinder.h"
 
 #include <QMap>
@@ -45,24 +46,6 @@ struct MotorSetupResult
     QMap<QString, qint32> verified; // the settings as read back
     QStringList steps; // what was done, one line each
     QString message;
-};
-
-// One joint as a check of the bus sees it: is its servo already set up, at its ID and rate?
-struct JointCheck
-{
-    int id = 0;
-    QString model; // the model the joint needs
-    // The joint's settings; those kept in EEPROM are compared (RAM ones start afresh at
-    // power-up, so they say nothing about an earlier set-up).
-    QMap<QString, qint32> settings;
-    std::optional<ServoInfo> found; // who answers at that ID at the template's rate
-    QStringList differing; // "p_gain is 32, not 16": EEPROM settings that do not hold
-    QMap<QString, quint32> clearedBits; // bits of EEPROM registers that must be clear
-
-    bool done() const;
-    // Why a servo at the joint's ID is not set up as the joint (empty when done or nothing
-    // answers).
-    QString problem() const;
 };
 
 // Finds the one servo on the bus (MotorFinder) and sets it up, from the steps of the exchange,
@@ -127,4 +110,3 @@ private:
 
 Q_DECLARE_METATYPE(feetech::MotorTarget)
 Q_DECLARE_METATYPE(feetech::MotorSetupResult)
-Q_DECLARE_METATYPE(feetech::JointCheck)

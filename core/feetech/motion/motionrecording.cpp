@@ -51,17 +51,6 @@ std::optional<MotionJoint> jointOfColumn(const QString &column)
 
 } // namespace
 
-QString MotionJoint::column() const
-{
-    return name.isEmpty() ? QStringLiteral("id_%1").arg(id)
-                          : QStringLiteral("%1@%2").arg(name).arg(id);
-}
-
-QString MotionJoint::describe() const
-{
-    return name.isEmpty() ? Tr::tr("servo %1").arg(id) : Tr::tr("%1 (servo %2)").arg(name).arg(id);
-}
-
 int MotionRecording::frameAt(double seconds) const
 {
     if (times.isEmpty())

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "fileerror.h"
+#include "motionjoint.h"
 
 #include <QString>
 #include <QVector>
@@ -10,17 +11,6 @@
 #include <optional>
 
 namespace feetech {
-
-struct MotionJoint
-{
-    QString name; // empty: the joint is known by its servo's ID alone
-    quint8 id = 0;
-
-    // Its CSV column: "id_3" without a name, "shoulder_pan@1" with one.
-    QString column() const;
-    // "shoulder_pan (servo 1)", or "servo 3".
-    QString describe() const;
-};
 
 struct MotionRecording
 {

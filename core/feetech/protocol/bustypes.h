@@ -3,6 +3,7 @@
 #pragma once
 
 #include "feetechpacket.h"
+#include "modeltable.h"
 #include "registertable.h"
 #include "requestengine.h"
 

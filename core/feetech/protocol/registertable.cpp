@@ -1,5 +1,9 @@
-// Loading and validating the register tables and the model table (resources/feetech/*.json).
+// Loading and validating the register tables (resources/feetech/<family>.json), and the rates
+// as people read them.
 #include "registertable.h"
+
+#include "modeltable.h"
+#include "tablejson.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -62,56 +66,8 @@ std::optional<Family> familyFromKey(QStringView key)
 
 namespace {
 
-// Collects the first problem found; the loaders stop at it.
-class Problems
-{
-public:
-    explicit Problems(QString source)
-        : m_source(std::move(source))
-    { }
-    bool fail(const QString &what)
-    {
-        if (m_message.isEmpty())
-            m_message = m_source + QStringLiteral(": ") + what;
-        return false;
-    }
-    bool ok() const { return m_message.isEmpty(); }
-    const QString &message() const { return m_message; }
-
-private:
-    QString m_source;
-    QString m_message;
-};
-
-std::optional<QJsonObject> parseObject(const QByteArray &json, Problems &problems)
-{
-    QJsonParseError parseError {};
-    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
-        problems.fail(Tr::tr("not valid JSON at offset %1: %2")
-                          .arg(parseError.offset)
-                          .arg(parseError.errorString()));
-        return std::nullopt;
-    }
-    if (!document.isObject()) {
-        problems.fail(Tr::tr("the document is not a JSON object"));
-        return std::nullopt;
-    }
-    const QJsonObject root = document.object();
-    if (root.value(QLatin1String("format")).toInt(-1) != 1) {
-        problems.fail(Tr::tr("unsupported \"format\" (expected 1)"));
-        return std::nullopt;
-    }
-    return root;
-}
-
-bool isWholeNumber(const QJsonValue &value)
-{
-    return value.isDouble() && std::floor(value.toDouble()) == value.toDouble()
-        && std::abs(value.toDouble()) < 1e9;
-}
-
-bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg, Problems &problems)
+bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
+                   TableProblems &problems)
 {
     static const QSet<QString> kKnownFields {
         QStringLiteral("address"), QStringLiteral("size"),     QStringLiteral("key"),
@@ -229,26 +185,18 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg, Pr
     return true;
 }
 
-QByteArray readResource(const QString &path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        qFatal("ServoBench: the built-in resource %s is missing", qPrintable(path));
-    return file.readAll();
-}
-
 } // namespace
 
 std::optional<RegisterTable> RegisterTable::fromJson(const QByteArray &json, const QString &source,
                                                      QString *error)
 {
-    Problems problems(source);
+    TableProblems problems(source);
     const auto finish = [&]() -> std::optional<RegisterTable> {
         if (error)
             *error = problems.message();
         return std::nullopt;
     };
-    const auto root = parseObject(json, problems);
+    const auto root = parseTableObject(json, problems);
     if (!root)
         return finish();
 
@@ -321,7 +269,7 @@ const RegisterTable &RegisterTable::forFamily(Family family)
         for (const Family each : kAllFamilies) {
             const QString path = QStringLiteral(":/feetech/registers-%1.json").arg(familyKey(each));
             QString error;
-            auto table = fromJson(readResource(path), path, &error);
+            auto table = fromJson(readBuiltInTable(path), path, &error);
             if (!table || table->family() != each)
                 qFatal("ServoBench: built-in register table is invalid: %s", qPrintable(error));
             loaded.emplace(each, std::move(*table));
@@ -359,123 +307,6 @@ QVector<Block> RegisterTable::blocks() const
             result.append({reg.address, reg.size});
     }
     return result;
-}
-
-std::optional<ModelTable> ModelTable::fromJson(const QByteArray &json, const QString &source,
-                                               QString *error)
-{
-    Problems problems(source);
-    const auto finish = [&]() -> std::optional<ModelTable> {
-        if (error)
-            *error = problems.message();
-        return std::nullopt;
-    };
-    const auto root = parseObject(json, problems);
-    if (!root)
-        return finish();
-
-    ModelTable table;
-    QString ratesError;
-    const auto rates = parseBaudRates(*root, &ratesError);
-    if (!rates) {
-        problems.fail(ratesError);
-        return finish();
-    }
-    table.m_baudRates = *rates;
-    const QJsonObject majors = root->value(QLatin1String("families_by_major")).toObject();
-    for (auto it = majors.begin(); it != majors.end(); ++it) {
-        bool ok = false;
-        const int major = it.key().toInt(&ok);
-        const auto family = familyFromKey(it.value().toString());
-        if (!ok || major < 0 || major > 255 || !family) {
-            problems.fail(Tr::tr("families_by_major: \"%1\" is not a major number with a family")
-                              .arg(it.key()));
-            return finish();
-        }
-        table.m_familiesByMajor.append({major, *family});
-    }
-    QSet<int> seen;
-    for (const QJsonValue &entry : root->value(QLatin1String("models")).toArray()) {
-        const QJsonObject object = entry.toObject();
-        ModelInfo model;
-        const QJsonValue major = object.value(QLatin1String("major"));
-        const QJsonValue minor = object.value(QLatin1String("minor"));
-        model.name = object.value(QLatin1String("name")).toString();
-        if (!isWholeNumber(major) || !isWholeNumber(minor) || major.toInt() < 0
-            || major.toInt() > 255 || minor.toInt() < 0 || minor.toInt() > 255
-            || model.name.isEmpty()) {
-            problems.fail(Tr::tr("model \"%1\": needs a name and major and minor numbers 0-255")
-                              .arg(model.name));
-            return finish();
-        }
-        model.major = major.toInt();
-        model.minor = minor.toInt();
-        const QJsonValue family = object.value(QLatin1String("family"));
-        if (!family.isNull()) {
-            model.family = familyFromKey(family.toString());
-            if (!model.family) {
-                problems.fail(Tr::tr("model \"%1\": unknown family").arg(model.name));
-                return finish();
-            }
-        }
-        if (seen.contains(model.major * 256 + model.minor)) {
-            problems.fail(Tr::tr("model %1/%2 is listed twice").arg(model.major).arg(model.minor));
-            return finish();
-        }
-        seen.insert(model.major * 256 + model.minor);
-        table.m_models.append(model);
-    }
-    return table;
-}
-
-const ModelTable &ModelTable::builtIn()
-{
-    static const ModelTable table = [] {
-        const QString path = QStringLiteral(":/feetech/models.json");
-        QString error;
-        auto loaded = fromJson(readResource(path), path, &error);
-        if (!loaded)
-            qFatal("ServoBench: built-in model table is invalid: %s", qPrintable(error));
-        return std::move(*loaded);
-    }();
-    return table;
-}
-
-ModelInfo ModelTable::identify(quint8 major, quint8 minor) const
-{
-    for (const ModelInfo &model : m_models) {
-        if (model.major == major && model.minor == minor)
-            return model;
-    }
-    ModelInfo unknown {major, minor, {}, std::nullopt};
-    for (const auto &[familyMajor, family] : m_familiesByMajor) {
-        if (familyMajor == major)
-            unknown.family = family;
-    }
-    unknown.name = unknown.family
-        ? Tr::tr("%1 (model %2/%3)").arg(familyName(*unknown.family)).arg(major).arg(minor)
-        : Tr::tr("Unknown model %1/%2").arg(major).arg(minor);
-    return unknown;
-}
-
-std::optional<ModelInfo> ModelTable::findByName(QStringView name) const
-{
-    // "SCS009/SCS0009" answers to either name.
-    for (const ModelInfo &model : m_models) {
-        for (const QString &alias : model.name.split(u'/')) {
-            if (alias.compare(name, Qt::CaseInsensitive) == 0)
-                return model;
-        }
-    }
-    return std::nullopt;
-}
-
-quint16 modelNumber(quint8 major, quint8 minor, ByteOrder order)
-{
-    QByteArray bytes;
-    bytes.append(char(major));
-    bytes.append(char(minor));
-    return decodeRaw(bytes, order);
 }
 
 std::optional<TorqueMode> RegisterTable::torqueMode(qint64 value) const
@@ -520,23 +351,6 @@ const RegisterTable &RegisterTable::rawView()
         return raw;
     }();
     return table;
-}
-
-QVector<qint32> baudRates()
-{
-    return ModelTable::builtIn().baudRates();
-}
-
-std::optional<int> baudCode(qint32 baud)
-{
-    const int code = int(baudRates().indexOf(baud));
-    return code >= 0 ? std::optional<int>(code) : std::nullopt;
-}
-
-qint32 baudForCode(int code)
-{
-    const QVector<qint32> &rates = ModelTable::builtIn().baudRates();
-    return code >= 0 && code < rates.size() ? rates.at(code) : 0;
 }
 
 qint32 defaultBaud(Family family)

@@ -6,6 +6,7 @@
 #include "motiontestrefusal.h"
 #include "parametermodel.h"
 #include "stepresponse.h"
+#include "sweepsummary.h"
 #include "telemetry.h"
 
 #include <QMetaType>
@@ -62,21 +63,6 @@ struct MotionPlan
     qint32 acceleration = 0; // written where the family has acceleration (0: the maximum)
     double recordSeconds = 2.0; // step test: how long the response is recorded after the step
     int legs = 4; // sweep: moves, alternating from → to, to → from, ...
-};
-
-struct SweepLeg
-{
-    qint32 target = 0;
-    bool reached = false; // within the tolerance and still before the reach timeout
-    double seconds = 0.0; // from the goal write to reaching it (the timeout when not reached)
-    std::optional<double> finalPosition; // the last position seen during the leg
-};
-
-struct SweepSummary
-{
-    QVector<SweepLeg> legs;
-    int reachedCount() const;
-    std::optional<double> meanReachedSeconds() const;
 };
 
 class MotionTest : public QObject
@@ -164,5 +150,3 @@ private:
 };
 
 } // namespace feetech
-
-Q_DECLARE_METATYPE(feetech::SweepSummary)

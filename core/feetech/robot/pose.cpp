@@ -3,6 +3,7 @@
 
 #include "feetechpacket.h"
 #include "jsonfile.h"
+#include "modeltable.h"
 #include "registertable.h"
 
 #include <QCoreApplication>

@@ -22,6 +22,12 @@ struct HandTr
     Q_DECLARE_TR_FUNCTIONS(Hand)
 };
 
+// The context the demo's sentences have always been translated in.
+struct DemoTr
+{
+    Q_DECLARE_TR_FUNCTIONS(DemoServos)
+};
+
 QString baudList()
 {
     QStringList rates;
@@ -115,6 +121,11 @@ QString SimRefusal::describe() const
             .arg(m_other);
     case Code::BadPtkValues:
         return QStringLiteral("--values: ") + m_name;
+    case Code::NoDemoFolder:
+        return DemoTr::tr("Cannot create a folder for the simulated servos: %1").arg(m_name);
+    case Code::NoDemoRobot:
+    case Code::DemoNotStarted:
+        return m_name;
     }
     return {};
 }

@@ -1,5 +1,6 @@
 // Why a simulated device refuses: the Feetech bus a bus description, a change or a state file,
-// its hand a turn of a horn, the PTK servo its starting values. A code, and a sentence.
+// its hand a turn of a horn, the PTK servo its starting values, the demo's servos to start. A
+// code, and a sentence.
 #pragma once
 
 #include <QString>
@@ -39,6 +40,9 @@ public:
         TooManyCycles, // the sweep's cycles are not 0 to Hand::kMaxSweepCycles
         NoSeam, // servo: the place; id; other: the highest position of an SCS servo
         BadPtkValues, // name: why the PTK servo's starting values (--values) do not parse
+        NoDemoFolder, // name: why the demo's private folder could not be made (the system's words)
+        NoDemoRobot, // name: why the demo arm's built-in robot template did not load (its sentence)
+        DemoNotStarted, // name: why the demo's simulator did not start (its sentence)
     };
 
     SimRefusal() = default;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "feetechpacket.h"
+#include "modeltable.h"
 #include "registertable.h"
 #include "virtualfeetechmotor.h"
 

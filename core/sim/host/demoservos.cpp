@@ -1,7 +1,6 @@
 // Demo servos: lazily started in-process simulators behind pseudo-terminals.
 #include "demoservos.h"
 
-#include <QCoreApplication>
 #include <QDir>
 
 namespace sim {
@@ -18,7 +17,7 @@ DemoServos::~DemoServos()
         m_leaderArm->stop();
 }
 
-bool DemoServos::ensureFolder(QString *error)
+bool DemoServos::ensureFolder(SimRefusal *why)
 {
     if (m_folder)
         return true;
@@ -26,51 +25,53 @@ bool DemoServos::ensureFolder(QString *error)
                                                + QStringLiteral("/servobench-demo-XXXXXX"));
     if (m_folder->isValid())
         return true;
-    if (error)
-        *error = QCoreApplication::translate("DemoServos",
-                                             "Cannot create a folder for the simulated servos: %1")
-                     .arg(m_folder->errorString());
+    const QString reason = m_folder->errorString();
     m_folder.reset();
-    return false;
+    return !refused(SimRefusal(SimRefusal::Code::NoDemoFolder, 0, 0, reason), why);
 }
 
-QString DemoServos::ptkPort(QString *error)
+QString DemoServos::start(std::unique_ptr<SimulatorThread> &slot, const SimulatorOptions &options,
+                          SimRefusal *why)
+{
+    auto simulator = std::make_unique<SimulatorThread>();
+    QString reason;
+    if (!simulator->start(options, &reason)) {
+        refused(SimRefusal(SimRefusal::Code::DemoNotStarted, 0, 0, reason), why);
+        return QString();
+    }
+    slot = std::move(simulator);
+    return slot->linkPath();
+}
+
+QString DemoServos::ptkPort(SimRefusal *why)
 {
     if (m_ptk)
         return m_ptk->linkPath();
-    if (!ensureFolder(error))
+    if (!ensureFolder(why))
         return QString();
     SimulatorOptions options;
     options.kind = SimulatorOptions::Kind::Ptk;
     options.linkPath = m_folder->filePath(QStringLiteral("ptk-servo"));
     // A single-wire adapter, like PTK's own programmer.
     options.echo = true;
-    auto simulator = std::make_unique<SimulatorThread>();
-    if (!simulator->start(options, error))
-        return QString();
-    m_ptk = std::move(simulator);
-    return m_ptk->linkPath();
+    return start(m_ptk, options, why);
 }
 
 QString DemoServos::startFeetech(std::unique_ptr<SimulatorThread> &slot, SimulatorOptions options,
-                                 const QString &name, QString *error)
+                                 const QString &name, SimRefusal *why)
 {
     if (slot)
         return slot->linkPath();
-    if (!ensureFolder(error))
+    if (!ensureFolder(why))
         return QString();
     options.kind = SimulatorOptions::Kind::Feetech;
     options.linkPath = m_folder->filePath(name);
     // The EEPROM lives in the demo folder for as long as the program runs.
     options.statePath = m_folder->filePath(name + QStringLiteral(".json"));
-    auto simulator = std::make_unique<SimulatorThread>();
-    if (!simulator->start(options, error))
-        return QString();
-    slot = std::move(simulator);
-    return slot->linkPath();
+    return start(slot, options, why);
 }
 
-QString DemoServos::feetechPort(QString *error)
+QString DemoServos::feetechPort(SimRefusal *why)
 {
     // A robot arm's bus: three STS3215 joints, an SCS15 gripper and an HLS wrist, all at the
     // STS default rate.
@@ -80,37 +81,38 @@ QString DemoServos::feetechPort(QString *error)
                       {3, QStringLiteral("STS3215"), 1000000},
                       {4, QStringLiteral("SCS15"), 1000000},
                       {5, QStringLiteral("HLS"), 1000000}};
-    return startFeetech(m_feetech, options, QStringLiteral("feetech-bus"), error);
+    return startFeetech(m_feetech, options, QStringLiteral("feetech-bus"), why);
 }
 
-QString DemoServos::armPort(QString *error)
+QString DemoServos::armPort(SimRefusal *why)
 {
-    return startArm(m_arm, QStringLiteral("so101"), QStringLiteral("so101-arm"), {}, error);
+    return startArm(m_arm, QStringLiteral("so101"), QStringLiteral("so101-arm"), {}, why);
 }
 
-QString DemoServos::leaderArmPort(QString *error)
+QString DemoServos::leaderArmPort(SimRefusal *why)
 {
     // A hand that never tires, so the follower has something to follow.
     const QVector<HandSweep> sweeps = {{3, 1500, 2600, 4.0, 0, Hand::Way::Direct},
                                        {4, 1700, 2400, 3.0, 0, Hand::Way::Direct}};
     return startArm(m_leaderArm, QStringLiteral("so101-leader"), QStringLiteral("so101-leader"),
-                    sweeps, error);
+                    sweeps, why);
 }
 
 QString DemoServos::startArm(std::unique_ptr<SimulatorThread> &slot, const QString &robot,
-                             const QString &name, const QVector<HandSweep> &sweeps, QString *error)
+                             const QString &name, const QVector<HandSweep> &sweeps, SimRefusal *why)
 {
+    if (slot)
+        return slot->linkPath();
     SimulatorOptions options;
-    OptionError why;
-    options.robot = simulatedRobot(robot, &why);
+    OptionError notLoaded;
+    options.robot = simulatedRobot(robot, &notLoaded);
     if (!options.robot) {
-        if (error)
-            *error = why.describe();
+        refused(SimRefusal(SimRefusal::Code::NoDemoRobot, 0, 0, notLoaded.describe()), why);
         return QString();
     }
     options.servos = robotServos(*options.robot);
     options.sweeps = sweeps;
-    return startFeetech(slot, options, name, error);
+    return startFeetech(slot, options, name, why);
 }
 
 } // namespace sim

@@ -1,7 +1,8 @@
 // Simulated servos inside the application, so ServoBench can be tried before hardware arrives.
 #pragma once
 
-#include "simulator.h"
+#include "simrefusal.h"
+#include "simulatorthread.h"
 
 #include <QTemporaryDir>
 
@@ -19,15 +20,19 @@ public:
     DemoServos(const DemoServos &) = delete;
     DemoServos &operator=(const DemoServos &) = delete;
 
-    // The port of the simulated PTK servo (empty and *error when it cannot start).
-    QString ptkPort(QString *error);
+    // Each port is empty when its simulator cannot start, and *why says why: NoDemoFolder (the
+    // private folder could not be made), NoDemoRobot (an arm's built-in template did not load)
+    // or DemoNotStarted (the simulator refused to start).
+
+    // The port of the simulated PTK servo.
+    QString ptkPort(SimRefusal *why);
     // The port of the simulated Feetech bus: three STS3215, an SCS15 and an HLS at 1 Mbps.
-    QString feetechPort(QString *error);
+    QString feetechPort(SimRefusal *why);
     // The port of a simulated SO-101 follower arm: six STS3215 at IDs 1-6, 1 Mbps, set up.
-    QString armPort(QString *error);
+    QString armPort(SimRefusal *why);
     // The port of a simulated SO-101 leader arm (six STS3215 at IDs 1-6, 1 Mbps), its elbow and
     // wrist swept to and fro by the simulator's hand: a leader for the simulated arm to follow.
-    QString leaderArmPort(QString *error);
+    QString leaderArmPort(SimRefusal *why);
 
     // The running simulators, null until their port was asked for: for the Simulator dock.
     SimulatorThread *feetechSimulator() const { return m_feetech.get(); }
@@ -35,11 +40,14 @@ public:
     SimulatorThread *leaderArmSimulator() const { return m_leaderArm.get(); }
 
 private:
-    bool ensureFolder(QString *error);
+    bool ensureFolder(SimRefusal *why);
+    // Starts `options` into `slot`; its port, or empty and *why (DemoNotStarted).
+    QString start(std::unique_ptr<SimulatorThread> &slot, const SimulatorOptions &options,
+                  SimRefusal *why);
     QString startFeetech(std::unique_ptr<SimulatorThread> &slot, SimulatorOptions options,
-                         const QString &name, QString *error);
+                         const QString &name, SimRefusal *why);
     QString startArm(std::unique_ptr<SimulatorThread> &slot, const QString &robot,
-                     const QString &name, const QVector<HandSweep> &sweeps, QString *error);
+                     const QString &name, const QVector<HandSweep> &sweeps, SimRefusal *why);
 
     std::unique_ptr<QTemporaryDir> m_folder;
     std::unique_ptr<SimulatorThread> m_ptk;

@@ -1,7 +1,7 @@
 // servosim's options: the command line, the --servo and --hand specs, the robots it plays.
 #pragma once
 
-#include "faults.h"
+#include "faultsettings.h"
 #include "hand.h"
 #include "optionerror.h"
 #include "robottemplate.h"

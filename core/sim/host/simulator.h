@@ -2,7 +2,7 @@
 // pacing, optional echo, fault injection and a frame log.
 #pragma once
 
-#include "faults.h"
+#include "faultinjector.h"
 #include "pseudoterminal.h"
 #include "simlog.h"
 #include "simoptions.h"
@@ -85,30 +85,6 @@ private:
     std::deque<Outgoing> m_outgoing;
     qint64 m_inputEndUs = 0; // when the host's last byte has crossed the wire
     qint64 m_busFreeUs = 0; // when the last scheduled reply has crossed the wire
-};
-
-// Runs a simulator on its own thread (tests and the GUI's demo mode).
-class SimulatorThread
-{
-public:
-    SimulatorThread() = default;
-    ~SimulatorThread();
-    SimulatorThread(const SimulatorThread &) = delete;
-    SimulatorThread &operator=(const SimulatorThread &) = delete;
-
-    bool start(const SimulatorOptions &options, QString *error);
-    void stop();
-    bool isRunning() const { return m_simulator != nullptr; }
-    QString linkPath() const { return m_linkPath; }
-
-    // Runs `work` in the simulator's thread and waits for it: the only safe way to look at or
-    // change the simulated devices while they run.
-    void call(const std::function<void(Simulator &)> &work);
-
-private:
-    QThread m_thread;
-    std::unique_ptr<Simulator> m_simulator;
-    QString m_linkPath;
 };
 
 } // namespace sim

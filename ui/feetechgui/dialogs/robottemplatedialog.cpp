@@ -3,6 +3,7 @@
 #include "robottemplatedialog.h"
 
 #include "busclient.h"
+#include "modeltable.h"
 #include "palette.h"
 #include "registertable.h"
 

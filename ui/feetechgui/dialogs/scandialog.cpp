@@ -1,6 +1,7 @@
 // Scan options dialog: ID range, baud rates, and the quick broadcast probe.
 #include "scandialog.h"
 
+#include "modeltable.h"
 #include "registertable.h"
 
 #include <QCheckBox>

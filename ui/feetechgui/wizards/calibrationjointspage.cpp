@@ -83,6 +83,13 @@ int defaultRobotTemplate(const QVector<feetech::RobotTemplate> &templates)
     return templates.isEmpty() ? -1 : 0;
 }
 
+const feetech::RobotTemplate *
+defaultRobotTemplateIn(const QVector<feetech::RobotTemplate> &templates)
+{
+    const int chosen = defaultRobotTemplate(templates);
+    return chosen >= 0 ? &templates.at(chosen) : nullptr;
+}
+
 QString defaultCalibrationFolder(const feetech::RobotTemplate *robot)
 {
     const QString root = feetech::leRobotCalibrationFolder();

@@ -18,6 +18,11 @@ CalibrationSteps::CalibrationSteps(feetech::BusClient *client, QObject *parent)
     });
 }
 
+qint32 CalibrationSteps::lastRead(const feetech::BusClient &client, int index, const QString &key)
+{
+    return qint32(client.servos()->parameters(index)->deviceValue(key).value_or(0));
+}
+
 bool CalibrationSteps::start(const QVector<Step> &steps)
 {
     if (isRunning())

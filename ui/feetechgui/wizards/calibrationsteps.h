@@ -31,6 +31,9 @@ public:
     // stands alone). False when steps are already running.
     bool start(const QVector<Step> &steps);
     bool isRunning() const { return m_next > 0 && m_next <= m_steps.size(); }
+    // Register `key` of servo `index` (as the client lists it) as last read; 0 when it was never
+    // read.
+    static qint32 lastRead(const feetech::BusClient &client, int index, const QString &key);
 
 signals:
     void stepFinished(int step, bool ok, const QString &message);

@@ -1,6 +1,7 @@
 // The scan options last chosen in the scan dialog, kept across runs (QSettings).
 #include "scanmemory.h"
 
+#include "modeltable.h"
 #include "registertable.h"
 
 #include <QSettings>

@@ -8,6 +8,7 @@
 #include "feetechpacket.h"
 #include "hex.h"
 #include "linkmirror.h"
+#include "modeltable.h"
 #include "ptkclient.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"

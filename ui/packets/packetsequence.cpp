@@ -6,6 +6,7 @@
 #include "feetechpacket.h"
 #include "hex.h"
 #include "jsonfile.h"
+#include "modeltable.h"
 #include "ptkdescription.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"

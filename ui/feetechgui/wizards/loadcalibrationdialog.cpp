@@ -1,20 +1,15 @@
-// LeRobot calibration files from and to the bus: saving, the load dialog, the Robot menu entries.
-#include "calibrationfiles.h"
+// The load calibration dialog: a LeRobot file's differences per joint, then verified writes.
+#include "loadcalibrationdialog.h"
 
 #include "armcalibration.h"
 #include "busclient.h"
 #include "calibrationsteps.h"
-#include "calibrationwizard.h"
 #include "palette.h"
-#include "recentfiles.h"
 
-#include <QAction>
 #include <QDir>
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QMenu>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
@@ -24,102 +19,7 @@ namespace {
 
 enum Column { JointColumn, OffsetColumn, MinimumColumn, MaximumColumn, StatusColumn };
 
-// Register `key` of servo `index` as last read; 0 when it was never read.
-qint32 deviceValue(const feetech::BusClient &client, int index, const QString &key)
-{
-    return qint32(client.servos()->parameters(index)->deviceValue(key).value_or(0));
-}
-
-// Application-modal, not window-modal: the set-up wizard is a window of its own (modeless), and
-// no set-up may run while joints are recorded or calibrations written.
-void showApplicationModal(QDialog *dialog)
-{
-    dialog->setWindowModality(Qt::ApplicationModal);
-    dialog->show();
-}
-
-const feetech::RobotTemplate *defaultTemplate(const QVector<feetech::RobotTemplate> &templates)
-{
-    const int chosen = defaultRobotTemplate(templates);
-    return chosen >= 0 ? &templates.at(chosen) : nullptr;
-}
-
 } // namespace
-
-CalibrationSaver::CalibrationSaver(feetech::BusClient *client, QObject *parent)
-    : QObject(parent)
-    , m_client(client)
-    , m_steps(new CalibrationSteps(client, this))
-{
-    connect(m_steps, &CalibrationSteps::stepFinished, this,
-            [this](int step, bool ok, const QString &message) {
-                if (!ok && m_failure.isEmpty())
-                    m_failure = tr("Servo %1 could not be read: %2; nothing was saved.")
-                                    .arg(m_client->servos()->at(m_indexes.at(step)).info.id)
-                                    .arg(message);
-            });
-    connect(m_steps, &CalibrationSteps::finished, this, [this](bool allOk) {
-        if (!allOk) {
-            emit finished(false, m_failure);
-            return;
-        }
-        QVector<feetech::LeRobotMotor> motors;
-        for (int i = 0; i < m_indexes.size(); ++i) {
-            const int index = m_indexes.at(i);
-            const feetech::LeRobotMotor motor {
-                m_names.at(i),
-                m_client->servos()->at(index).info.id,
-                0,
-                deviceValue(*m_client, index, QString::fromUtf16(feetech::kOffsetKey)),
-                deviceValue(*m_client, index, QString::fromUtf16(feetech::kMinimumLimitKey)),
-                deviceValue(*m_client, index, QString::fromUtf16(feetech::kMaximumLimitKey))};
-            if (motor.rangeMin >= motor.rangeMax) {
-                emit finished(false,
-                              tr("Servo %1 holds the limits %2 to %3, which are no "
-                                 "calibrated range; nothing was saved.")
-                                  .arg(motor.id)
-                                  .arg(motor.rangeMin)
-                                  .arg(motor.rangeMax));
-                return;
-            }
-            motors.append(motor);
-        }
-        feetech::keepDriveModes(motors, m_path);
-        util::FileError error;
-        if (!feetech::saveLeRobotCalibration(motors, m_path, &error)) {
-            emit finished(false, error.describe());
-            return;
-        }
-        emit finished(true,
-                      tr("Saved the calibration of %n joint(s) to %1.", nullptr, int(motors.size()))
-                          .arg(QDir::toNativeSeparators(m_path)));
-    });
-}
-
-bool CalibrationSaver::save(const QString &path, util::FileError *error)
-{
-    const QVector<feetech::RobotTemplate> templates = feetech::availableRobotTemplates();
-    m_path = path;
-    m_failure.clear();
-    m_indexes.clear();
-    m_names.clear();
-    QVector<CalibrationSteps::Step> steps;
-    for (const ArmJoint &joint : armJoints(*m_client, defaultTemplate(templates))) {
-        const feetech::ServoInfo &info = m_client->servos()->at(joint.index).info;
-        if (!info.hasTable() || !feetech::calibrationLimits(info.table()))
-            continue;
-        m_indexes.append(joint.index);
-        m_names.append(joint.joint.name);
-        steps.append(CalibrationSteps::Step {joint.index, {}});
-    }
-    if (steps.isEmpty()) {
-        util::report(error,
-                     util::FileError(util::FileError::Code::NothingToSave,
-                                     tr("No servo on the bus has a position offset to save.")));
-        return false;
-    }
-    return m_steps->start(steps);
-}
 
 LoadCalibrationDialog::LoadCalibrationDialog(feetech::BusClient *client,
                                              const QVector<feetech::LeRobotMotor> &motors,
@@ -246,7 +146,7 @@ void LoadCalibrationDialog::onRead(bool allOk)
             feetech::calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax);
         bool changed = false;
         for (int i = 0; i < wanted.size(); ++i) {
-            const qint32 now = deviceValue(*m_client, index, wanted.at(i).key);
+            const qint32 now = CalibrationSteps::lastRead(*m_client, index, wanted.at(i).key);
             changed = changed || now != wanted.at(i).value;
             m_table->setItem(
                 row, OffsetColumn + i,
@@ -291,7 +191,7 @@ void LoadCalibrationDialog::writeChanges()
         QVector<model::WriteItem> changes;
         for (const model::WriteItem &item :
              feetech::calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax)) {
-            if (deviceValue(*m_client, m_indexes.at(row), item.key) != item.value)
+            if (CalibrationSteps::lastRead(*m_client, m_indexes.at(row), item.key) != item.value)
                 changes.append(item);
         }
         steps.append({m_indexes.at(row), changes});
@@ -302,82 +202,4 @@ void LoadCalibrationDialog::writeChanges()
     m_progress->show();
     m_summary->setText(tr("Writing to EEPROM and verifying…"));
     m_steps->start(steps);
-}
-
-CalibrationActions::CalibrationActions(QMenu *menu, feetech::BusClient *client, QWidget *window)
-    : QObject(menu)
-    , m_client(client)
-    , m_window(window)
-{
-    m_calibrate = menu->addAction(tr("&Calibrate arm…"), this, [this] {
-        auto *wizard = new CalibrationWizard(m_client, m_window);
-        wizard->setAttribute(Qt::WA_DeleteOnClose);
-        showApplicationModal(wizard);
-    });
-    m_calibrate->setObjectName(QStringLiteral("calibrateArmAction"));
-    m_calibrate->setToolTip(tr("Record each joint's range by hand and centre it on the encoder"));
-    m_save = menu->addAction(tr("&Save calibration…"), this, &CalibrationActions::saveCalibration);
-    m_save->setObjectName(QStringLiteral("saveCalibrationAction"));
-    m_save->setToolTip(tr("Save the servos' offsets and limits as a LeRobot calibration file"));
-    m_load = menu->addAction(tr("&Load calibration…"), this, &CalibrationActions::loadCalibration);
-    m_load->setObjectName(QStringLiteral("loadCalibrationAction"));
-    m_load->setToolTip(tr("Write a LeRobot calibration file to the servos, after showing what "
-                          "changes"));
-    connect(client, &feetech::BusClient::statusChanged, this, &CalibrationActions::updateEnabled);
-    connect(client->servos(), &feetech::ServoList::servosChanged, this,
-            &CalibrationActions::updateEnabled);
-    connect(client, &feetech::BusClient::scanFinished, this, &CalibrationActions::updateEnabled);
-    updateEnabled();
-}
-
-void CalibrationActions::updateEnabled()
-{
-    const bool ready = m_client->link()->isConnected() && !m_client->isScanning()
-        && m_client->servos()->count() > 0;
-    for (QAction *action : {m_calibrate, m_save, m_load})
-        action->setEnabled(ready);
-}
-
-void CalibrationActions::saveCalibration()
-{
-    const QVector<feetech::RobotTemplate> templates = feetech::availableRobotTemplates();
-    const QString path =
-        QFileDialog::getSaveFileName(m_window, tr("Save calibration"),
-                                     QDir(defaultCalibrationFolder(defaultTemplate(templates)))
-                                         .filePath(QStringLiteral("arm.json")),
-                                     tr("LeRobot calibration (*.json)"));
-    if (path.isEmpty())
-        return;
-    auto *saver = new CalibrationSaver(m_client, this);
-    connect(saver, &CalibrationSaver::finished, this, [this, saver](bool ok, const QString &text) {
-        saver->deleteLater();
-        emit ok ? message(text) : problem(text);
-    });
-    util::FileError error;
-    if (saver->save(path, &error)) {
-        recentfiles::add(recentfiles::Kind::Calibration, path);
-    } else {
-        saver->deleteLater();
-        emit problem(error.describe());
-    }
-}
-
-void CalibrationActions::loadCalibration()
-{
-    const QVector<feetech::RobotTemplate> templates = feetech::availableRobotTemplates();
-    const QString path = QFileDialog::getOpenFileName(
-        m_window, tr("Load calibration"), defaultCalibrationFolder(defaultTemplate(templates)),
-        tr("LeRobot calibration (*.json)"));
-    if (path.isEmpty())
-        return;
-    util::FileError error;
-    const auto motors = feetech::loadLeRobotCalibration(path, &error);
-    if (!motors) {
-        emit problem(error.describe());
-        return;
-    }
-    recentfiles::add(recentfiles::Kind::Calibration, path);
-    auto *dialog = new LoadCalibrationDialog(m_client, *motors, path, m_window);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    showApplicationModal(dialog);
 }

@@ -1,0 +1,34 @@
+// A joint check's verdict: set up, or why not.
+#include "jointcheck.h"
+
+#include "motorfinder.h"
+
+#include <QCoreApplication>
+
+namespace {
+
+// The context its sentences have always been translated in.
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(MotorSetup)
+};
+
+} // namespace
+
+namespace feetech {
+
+bool JointCheck::done() const
+{
+    return found && servoIsModel(*found, model) && differing.isEmpty();
+}
+
+QString JointCheck::problem() const
+{
+    if (!found || done())
+        return {};
+    if (!servoIsModel(*found, model))
+        return Tr::tr("ID %1 answers as model %2, not %3.").arg(id).arg(found->model.name, model);
+    return Tr::tr("ID %1 answers, but %2.").arg(id).arg(differing.join(QStringLiteral(", ")));
+}
+
+} // namespace feetech
