@@ -50,7 +50,7 @@ private slots:
         QVERIFY(samples.wait(10000));
         QSignalSpy stats(hub, &feetech::TelemetryHub::statsChanged);
         QVERIFY(stats.wait(5000));
-        const seriallink::LinkCounters before = client->counters();
+        const seriallink::LinkCounters before = client->link()->counters();
         const feetech::TelemetryStats statsBefore = hub->stats();
 
         // The window's thread does nothing else for a while, as in a long repaint: the link's
@@ -61,7 +61,7 @@ private slots:
         stats.clear();
         QVERIFY(stats.wait(5000));
 
-        const seriallink::LinkCounters after = client->counters();
+        const seriallink::LinkCounters after = client->link()->counters();
         const feetech::TelemetryStats statsAfter = hub->stats();
         // At 50 Hz the hold saw about 75 cycles; a third of them is plenty to know the stream
         // did not stop for it.
