@@ -126,7 +126,6 @@ void TelemetryPlotPainter::fitToView(double from, double to)
     // Twice at most: ticks that come out wider than before move the plot areas, and the
     // columns follow the areas' width.
     for (int pass = 0; pass < 2; ++pass) {
-        const int marginBefore = leftMargin();
         bool ticksChanged = false;
         for (Pane &pane : m_panes) {
             const int buckets = std::max(16, pane.area.width());
@@ -159,7 +158,8 @@ void TelemetryPlotPainter::fitToView(double from, double to)
         if (!ticksChanged)
             return;
         invalidateChrome(); // the value grid and labels moved
-        if (leftMargin() == marginBefore)
+        // Measured only now: the labels' widths cost more than fitting when nothing moved.
+        if (leftMargin() == m_laidOutMargin)
             return;
         layoutPanes();
     }
@@ -191,6 +191,7 @@ void TelemetryPlotPainter::layoutPanes()
         m_surface.height() - 2 * kOuterMargin - timeAxisHeight - kPaneSpacing * (count - 1);
     const int paneHeight = std::max(titleHeight + 16, available / count);
     const int left = leftMargin();
+    m_laidOutMargin = left;
     int top = kOuterMargin;
     for (int i = 0; i < count; ++i) {
         Pane &pane = m_panes[std::size_t(i)];
