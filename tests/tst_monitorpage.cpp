@@ -5,6 +5,7 @@
 #include "monitorpage.h"
 #include "monitorrecording.h"
 #include "monitorservolist.h"
+#include "monitorstatusline.h"
 #include "telemetrycsv.h"
 #include "telemetryplot.h"
 
@@ -448,6 +449,24 @@ private slots:
         QVERIFY2(
             testsupport::readTelemetryCsv(m_dir.filePath(QStringLiteral("cut.csv")), &parseError),
             qPrintable(parseError));
+    }
+
+    void statusLineAsksForTheSizeASelectableLabelWould()
+    {
+        MonitorStatusLine line;
+        QLabel label;
+        label.setTextInteractionFlags(Qt::TextSelectableByMouse);
+        for (const QString &text :
+             {QStringLiteral("Stopped"),
+              QStringLiteral("Streaming · 100 cycles/s · 600 samples/s · 0 missed · 0 late"),
+              QStringLiteral("Streaming · 9 cycles/s · 54 samples/s · 1234 missed · 7 late"
+                             " · plot paused (samples are still received)")}) {
+            line.setText(text);
+            label.setText(text);
+            QCOMPARE(line.sizeHint(), label.sizeHint());
+            QCOMPARE(line.minimumSizeHint(), label.minimumSizeHint());
+        }
+        QVERIFY(line.textInteractionFlags() & Qt::TextSelectableByMouse);
     }
 };
 

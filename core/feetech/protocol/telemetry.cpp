@@ -6,6 +6,7 @@
 
 #include <QCoreApplication>
 
+#include <array>
 #include <chrono>
 
 namespace {
@@ -43,6 +44,27 @@ constexpr QuantityInfo kQuantities[kQuantityCount] = {
 const QuantityInfo &info(Quantity quantity)
 {
     return kQuantities[int(quantity)];
+}
+
+// The register keys and units of kQuantities as strings, made once: a sample's decoding
+// compares every register of the block with them.
+struct QuantityTexts
+{
+    QString registerKey;
+    QString unit;
+};
+
+const std::array<QuantityTexts, kQuantityCount> &quantityTexts()
+{
+    static const std::array<QuantityTexts, kQuantityCount> texts = [] {
+        std::array<QuantityTexts, kQuantityCount> made;
+        for (int q = 0; q < kQuantityCount; ++q) {
+            made[std::size_t(q)] = {QString::fromLatin1(kQuantities[q].registerKey),
+                                    QString::fromUtf8(kQuantities[q].unit)};
+        }
+        return made;
+    }();
+    return texts;
 }
 
 QString formatNumber(double value)
@@ -123,22 +145,24 @@ std::optional<FeedbackSample> decodeFeedbackPart(const RegisterTable &table, qui
     sample.baud = baud;
     sample.steadyUs = steadyUs;
     sample.replyStatus = replyStatus;
+    static const QString statusKey = QStringLiteral("status");
+    static const QString movingKey = QStringLiteral("moving");
+    const auto &texts = quantityTexts();
     bool measured = false;
     for (const DecodedRegister &item : decodeRegisters(table, address, bytes)) {
         const QString &key = item.reg->key;
-        if (key == u"status") {
+        if (key == statusKey) {
             sample.servoStatus = quint8(item.value);
             continue;
         }
-        if (key == u"moving") {
+        if (key == movingKey) {
             sample.moving = item.value != 0;
             continue;
         }
-        for (const Quantity quantity : kAllQuantities) {
-            const QuantityInfo &what = info(quantity);
-            if (key == QLatin1String(what.registerKey)
-                && item.reg->unit == QString::fromUtf8(what.unit)) {
-                sample.values.at(int(quantity)) = item.value * item.reg->scale;
+        for (int q = 0; q < kQuantityCount; ++q) {
+            const QuantityTexts &what = texts[std::size_t(q)];
+            if (key == what.registerKey && item.reg->unit == what.unit) {
+                sample.values.at(std::size_t(q)) = item.value * item.reg->scale;
                 measured = true;
             }
         }

@@ -6,6 +6,7 @@
 #include "monitorreadouts.h"
 #include "monitorrecording.h"
 #include "monitorservolist.h"
+#include "monitorstatusline.h"
 #include "telemetryplot.h"
 #include "widgethelpers.h"
 #include "widgetmemory.h"
@@ -68,9 +69,8 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     splitter->setStretchFactor(1, 1);
     rightLayout->addWidget(splitter, 1);
 
-    m_statusLine = new QLabel(right);
+    m_statusLine = new MonitorStatusLine(right);
     m_statusLine->setObjectName(QStringLiteral("monitorStatus"));
-    m_statusLine->setTextInteractionFlags(Qt::TextSelectableByMouse);
     rightLayout->addWidget(m_statusLine);
     layout->addWidget(right, 1);
 

@@ -4,6 +4,7 @@
 #include "busclient.h"
 #include "widgethelpers.h"
 
+#include <QEvent>
 #include <QFontMetrics>
 #include <QHeaderView>
 #include <QLocale>
@@ -79,8 +80,10 @@ void MonitorReadouts::clearSamples()
 void MonitorReadouts::refresh(const QVector<Row> &rows, const feetech::TelemetryStats &stats,
                               bool running)
 {
-    if (rowCount() != rows.size())
+    if (rowCount() != rows.size()) {
         setRowCount(int(rows.size()));
+        m_neededWidths.fill(-1);
+    }
     const qint64 now = feetech::steadyMicroseconds();
     const QLocale locale;
     const QString none = tr("—");
@@ -134,8 +137,10 @@ void MonitorReadouts::refresh(const QVector<Row> &rows, const feetech::Telemetry
                                        | Qt::AlignVCenter);
                 setItem(row, column, cell);
             }
-            if (cell->text() != cells.at(column))
+            if (cell->text() != cells.at(column)) {
                 cell->setText(cells.at(column));
+                m_neededWidths[column] = -1;
+            }
         }
         // A tripped protection bit or a servo that stopped answering must catch the eye.
         const bool tripped = sample && sample->servoStatus != 0;
@@ -143,9 +148,12 @@ void MonitorReadouts::refresh(const QVector<Row> &rows, const feetech::Telemetry
         status->setForeground(tripped ? QBrush(kProblemColour) : QBrush());
         QTableWidgetItem *state = item(row, StateColumn);
         state->setForeground(missing ? QBrush(kProblemColour) : QBrush());
-        QFont font = state->font();
-        font.setBold(missing);
-        state->setFont(font);
+        if (state->font().bold() != missing) {
+            QFont font = state->font();
+            font.setBold(missing);
+            state->setFont(font);
+            m_neededWidths[StateColumn] = -1;
+        }
         QTableWidgetItem *servo = item(row, ServoColumn);
         const QColor colour = rows.at(row).colour;
         servo->setForeground(colour.isValid() ? QBrush(colour) : QBrush());
@@ -163,17 +171,28 @@ void MonitorReadouts::fitColumns()
     for (int column = 0; column < ColumnCount; ++column) {
         if (column == StatusColumn)
             continue; // stretches over what is left
-        int needed = horizontalHeader()->sectionSizeHint(column);
-        for (int row = 0; row < rowCount(); ++row) {
-            const QTableWidgetItem *cell = item(row, column);
-            if (!cell)
-                continue;
-            const QFontMetrics metrics(cell->font());
-            needed = std::max(needed, metrics.horizontalAdvance(cell->text()) + padding);
+        int &needed = m_neededWidths[column];
+        if (needed < 0) {
+            needed = horizontalHeader()->sectionSizeHint(column);
+            for (int row = 0; row < rowCount(); ++row) {
+                const QTableWidgetItem *cell = item(row, column);
+                if (!cell)
+                    continue;
+                const QFontMetrics metrics(cell->font());
+                needed = std::max(needed, metrics.horizontalAdvance(cell->text()) + padding);
+            }
         }
         if (needed > columnWidth(column))
             setColumnWidth(column, needed);
     }
+}
+
+void MonitorReadouts::changeEvent(QEvent *event)
+{
+    QTableWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::StyleChange
+        || event->type() == QEvent::LanguageChange)
+        m_neededWidths.fill(-1); // the texts measure otherwise now
 }
 
 QString MonitorReadouts::statusText(const feetech::ServoAddress &key, quint8 bits) const

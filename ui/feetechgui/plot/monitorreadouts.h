@@ -70,6 +70,12 @@ private:
     // Widens the columns whose text no longer fits; never narrows them, so they do not jitter.
     void fitColumns();
 
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
     QPointer<feetech::BusClient> m_client;
     QHash<feetech::ServoAddress, Latest> m_latest;
+    // The width each column's texts need, measured again only when one of them changed.
+    QVector<int> m_neededWidths = QVector<int>(ColumnCount, -1);
 };

@@ -138,8 +138,16 @@ QList<QPointF> TelemetryBuffer::pointsInView(const Points &points, double from, 
                                              int buckets, double *low, double *high)
 {
     QList<QPointF> out;
+    pointsInView(points, from, to, buckets, low, high, &out);
+    return out;
+}
+
+void TelemetryBuffer::pointsInView(const Points &points, double from, double to, int buckets,
+                                   double *low, double *high, QList<QPointF> *out)
+{
+    out->clear(); // keeps the capacity unless the list is shared
     if (points.empty())
-        return out;
+        return;
     const auto byTime = [](const QPointF &point, double x) {
         return point.x() < x;
     };
@@ -148,17 +156,20 @@ QList<QPointF> TelemetryBuffer::pointsInView(const Points &points, double from, 
         std::upper_bound(points.begin(), points.end(), to,
                          [](double x, const QPointF &point) { return x < point.x(); });
     const auto count = std::distance(first, last);
-    out.reserve(int(std::min<qint64>(count, qint64(buckets) * kPointsPerPixel)) + 2);
+    // Written through a pointer into storage sized for the most there can be: appending point
+    // by point costs more than finding the points.
+    out->resize(qsizetype(std::min<qint64>(count, qint64(buckets) * kPointsPerPixel)) + 2);
+    QPointF *const begin = out->data();
+    QPointF *next = begin;
     if (first != points.begin())
-        out.append(*std::prev(first));
-    const auto widen = [low, high](const QPointF &point) {
-        *low = std::min(*low, point.y());
-        *high = std::max(*high, point.y());
-    };
+        *next++ = *std::prev(first);
+    double lowest = *low;
+    double highest = *high;
     if (count <= qint64(buckets) * kPointsPerPixel) {
         for (auto it = first; it != last; ++it) {
-            out.append(*it);
-            widen(*it);
+            *next++ = *it;
+            lowest = std::min(lowest, it->y());
+            highest = std::max(highest, it->y());
         }
     } else {
         // Columns sit on a grid fixed in time rather than to the view's edge, so that as the view
@@ -166,22 +177,22 @@ QList<QPointF> TelemetryBuffer::pointsInView(const Points &points, double from, 
         const double width = (to - from) / buckets;
         const double firstColumn = std::floor(from / width);
         int bucket = -1;
-        QPointF lowest;
-        QPointF highest;
+        QPointF columnLow;
+        QPointF columnHigh;
         const auto flush = [&] {
             if (bucket < 0)
                 return;
-            if (lowest == highest) {
-                out.append(lowest);
-            } else if (lowest.x() <= highest.x()) {
-                out.append(lowest);
-                out.append(highest);
+            if (columnLow == columnHigh) {
+                *next++ = columnLow;
+            } else if (columnLow.x() <= columnHigh.x()) {
+                *next++ = columnLow;
+                *next++ = columnHigh;
             } else {
-                out.append(highest);
-                out.append(lowest);
+                *next++ = columnHigh;
+                *next++ = columnLow;
             }
-            widen(lowest);
-            widen(highest);
+            lowest = std::min(lowest, columnLow.y());
+            highest = std::max(highest, columnHigh.y());
         };
         for (auto it = first; it != last; ++it) {
             const int index = int(
@@ -189,16 +200,18 @@ QList<QPointF> TelemetryBuffer::pointsInView(const Points &points, double from, 
             if (index != bucket) {
                 flush();
                 bucket = index;
-                lowest = highest = *it;
-            } else if (it->y() < lowest.y()) {
-                lowest = *it;
-            } else if (it->y() > highest.y()) {
-                highest = *it;
+                columnLow = columnHigh = *it;
+            } else if (it->y() < columnLow.y()) {
+                columnLow = *it;
+            } else if (it->y() > columnHigh.y()) {
+                columnHigh = *it;
             }
         }
         flush();
     }
     if (last != points.end())
-        out.append(*last);
-    return out;
+        *next++ = *last;
+    *low = lowest;
+    *high = highest;
+    out->resize(next - begin);
 }

@@ -68,6 +68,9 @@ public:
     // the values in view.
     static QList<QPointF> pointsInView(const Points &points, double from, double to, int buckets,
                                        double *low, double *high);
+    // The same into `out`, whose storage is reused frame after frame.
+    static void pointsInView(const Points &points, double from, double to, int buckets, double *low,
+                             double *high, QList<QPointF> *out);
 
 private:
     struct Trace

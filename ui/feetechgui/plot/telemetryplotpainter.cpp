@@ -126,7 +126,6 @@ void TelemetryPlotPainter::fitToView(double from, double to)
     // Twice at most: ticks that come out wider than before move the plot areas, and the
     // columns follow the areas' width.
     for (int pass = 0; pass < 2; ++pass) {
-        const int marginBefore = leftMargin();
         bool ticksChanged = false;
         for (Pane &pane : m_panes) {
             const int buckets = std::max(16, pane.area.width());
@@ -134,8 +133,8 @@ void TelemetryPlotPainter::fitToView(double from, double to)
             double high = -std::numeric_limits<double>::infinity();
             pane.shown.resize(m_buffer.traceCount());
             for (int i = 0; i < m_buffer.traceCount(); ++i) {
-                pane.shown[i] = TelemetryBuffer::pointsInView(m_buffer.points(i, pane.quantity),
-                                                              from, to, buckets, &low, &high);
+                TelemetryBuffer::pointsInView(m_buffer.points(i, pane.quantity), from, to, buckets,
+                                              &low, &high, &pane.shown[i]);
             }
             if (low > high)
                 continue; // nothing in view: the axis stays as it was
@@ -159,7 +158,8 @@ void TelemetryPlotPainter::fitToView(double from, double to)
         if (!ticksChanged)
             return;
         invalidateChrome(); // the value grid and labels moved
-        if (leftMargin() == marginBefore)
+        // Measured only now: the labels' widths cost more than fitting when nothing moved.
+        if (leftMargin() == m_laidOutMargin)
             return;
         layoutPanes();
     }
@@ -191,6 +191,7 @@ void TelemetryPlotPainter::layoutPanes()
         m_surface.height() - 2 * kOuterMargin - timeAxisHeight - kPaneSpacing * (count - 1);
     const int paneHeight = std::max(titleHeight + 16, available / count);
     const int left = leftMargin();
+    m_laidOutMargin = left;
     int top = kOuterMargin;
     for (int i = 0; i < count; ++i) {
         Pane &pane = m_panes[std::size_t(i)];
@@ -387,26 +388,29 @@ void TelemetryPlotPainter::paintTraces(QPainter &painter, const Pane &pane, cons
         const QList<QPointF> &points = pane.shown.at(i);
         if (points.isEmpty())
             continue;
-        m_polyline.clear();
+        // Written through a pointer: appending point by point cost more than the mapping.
+        if (m_polyline.size() < points.size())
+            m_polyline.resize(points.size());
+        QPointF *const polyline = m_polyline.data();
+        qsizetype count = 0;
         for (const QPointF &point : points) {
             const QPointF mapped(area.left() + (point.x() - view.from) * xScale,
                                  bottom - (point.y() - pane.values.from) * yScale);
             // A servo at rest sends the same value again and again: a level run is drawn as
             // one segment from its first point to its last, which looks the same.
-            const qsizetype count = m_polyline.size();
-            if (count >= 2 && m_polyline[count - 1].y() == mapped.y()
-                && m_polyline[count - 2].y() == mapped.y()) {
-                m_polyline[count - 1] = mapped;
+            if (count >= 2 && polyline[count - 1].y() == mapped.y()
+                && polyline[count - 2].y() == mapped.y()) {
+                polyline[count - 1] = mapped;
             } else {
-                m_polyline.append(mapped);
+                polyline[count++] = mapped;
             }
         }
         // One pixel wide: the raster engine's fast path for thin lines, antialiased alike.
         painter.setPen(QPen(traceColour(i), 1.0));
-        if (m_polyline.size() == 1)
-            painter.drawPoint(m_polyline.first());
+        if (count == 1)
+            painter.drawPoint(polyline[0]);
         else
-            painter.drawPolyline(m_polyline);
+            painter.drawPolyline(polyline, int(count));
     }
     painter.restore();
 }

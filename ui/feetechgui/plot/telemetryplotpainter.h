@@ -100,6 +100,7 @@ private:
     std::vector<Pane> m_panes;
     QRegion m_frameRegion;
     bool m_chromeValid = false;
+    int m_laidOutMargin = -1; // the left margin the panes were placed with
     int m_timeLabelTop = 0; // where the time tick labels start, under the lowest pane
     QHash<QString, QStaticText> m_labels; // laid-out tick texts, reused frame after frame
     QPolygonF m_polyline; // reused from trace to trace and frame to frame: no allocation
