@@ -30,7 +30,9 @@ protected:
         return options;
     }
 
-    void startArms()
+    // The follower on "bus" (the test's simulator, logging to bus.log) and the leader on
+    // "leader", with a calibration file of each, and no client on either: servoctl opens them.
+    void startArmsForServoctl()
     {
         QString error;
         QVERIFY2(startSimulator(armOptions(QStringLiteral("bus"), QStringLiteral("so101")), &error),
@@ -41,6 +43,14 @@ protected:
                  qPrintable(error));
         QVERIFY(!writeCalibration(*m_simulator, followerFile()).isEmpty());
         QVERIFY(!writeCalibration(*m_leader, leaderFile()).isEmpty());
+    }
+
+    // The same, and a client on the follower that has found its six servos.
+    void startArms()
+    {
+        startArmsForServoctl();
+        if (QTest::currentTestFailed())
+            return;
         m_client = std::make_unique<feetech::BusClient>(patientTiming());
         QVERIFY(connectAndScan(*m_client, m_simulator->linkPath(), 6));
         QCOMPARE(m_client->servos()->count(), 6);

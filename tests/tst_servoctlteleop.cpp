@@ -17,21 +17,6 @@ class TestServoctlTeleop : public testsupport::TeleopArmsTest
     Q_OBJECT
 
 private:
-    // The follower on "bus" (the test's simulator, logging to bus.log) and the leader on
-    // "leader", with a calibration file of each, and no client on either: servoctl opens them.
-    void startArmsForServoctl()
-    {
-        QString error;
-        QVERIFY2(startSimulator(armOptions(QStringLiteral("bus"), QStringLiteral("so101")), &error),
-                 qPrintable(error));
-        m_leader = std::make_unique<sim::SimulatorThread>();
-        QVERIFY2(m_leader->start(
-                     armOptions(QStringLiteral("leader"), QStringLiteral("so101-leader")), &error),
-                 qPrintable(error));
-        QVERIFY(!writeCalibration(*m_simulator, followerFile()).isEmpty());
-        QVERIFY(!writeCalibration(*m_leader, leaderFile()).isEmpty());
-    }
-
     testsupport::ServoctlResult teleop(const QStringList &more = {}) const
     {
         return runServoctl(QStringList {QStringLiteral("--port"), m_simulator->linkPath(),
