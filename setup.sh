@@ -64,7 +64,7 @@ check_package() {
 build() {
     local dir=$1; shift
     cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-        -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" "$@"
+        -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DSERVOBENCH_UNITY_BUILD=ON "$@"
     cmake --build "$dir" --parallel "$(nproc)"
 }
 

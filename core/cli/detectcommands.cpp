@@ -5,6 +5,7 @@
 #include "feetechdevice.h"
 #include "portprobe.h"
 #include "servoctl.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -13,16 +14,6 @@
 #include <QTimer>
 
 #include <algorithm>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -33,7 +24,7 @@ void allowOnly(const Arguments &args, const QStringList &allowed, const QString 
     static const QStringList kGlobal {QStringLiteral("port"), QStringLiteral("echo")};
     for (const QString &name : args.valueNames()) {
         if (!allowed.contains(name) && !kGlobal.contains(name))
-            throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
+            throw UsageError {ServoctlTr::tr("%1 takes no --%2").arg(what, name)};
     }
 }
 
@@ -64,7 +55,7 @@ feetech::PortProbeReport probePort(const QString &port)
 BusLook lookAtBus(const Arguments &args, const Output &output, const QString &what)
 {
     if (!args.has(QStringLiteral("port")))
-        throw UsageError {Tr::tr("%1 needs --port PATH (see servoctl ports)").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 needs --port PATH (see servoctl ports)").arg(what)};
     BusLook look;
     look.seen.probe = probePort(args.value(QStringLiteral("port")));
     const QVector<qint32> bauds = look.seen.probe.answeringBauds();
@@ -137,7 +128,7 @@ int runDetectCommand(const Arguments &args, const QStringList &rest, const Outpu
 {
     allowOnly(args, {}, QStringLiteral("detect"));
     if (!rest.isEmpty())
-        throw UsageError {Tr::tr("detect takes no arguments")};
+        throw UsageError {ServoctlTr::tr("detect takes no arguments")};
     const BusLook look = lookAtBus(args, output, QStringLiteral("detect"));
     const feetech::BusObservation &seen = look.seen;
     const bool ptk = seen.probe.ptk;
@@ -161,25 +152,26 @@ int runDetectCommand(const Arguments &args, const QStringList &rest, const Outpu
                                {QStringLiteral("bauds"), baudArray},
                                {QStringLiteral("servos"), servos}});
     } else if (ptk) {
-        output.out << Tr::tr("PTK servo at 115200 bps%1")
-                          .arg(seen.probe.echo ? Tr::tr(", adapter echo") : QString())
+        output.out << ServoctlTr::tr("PTK servo at 115200 bps%1")
+                          .arg(seen.probe.echo ? ServoctlTr::tr(", adapter echo") : QString())
                    << '\n';
     } else if (feetech) {
-        output.out << Tr::tr("Feetech bus%1: %n servo(s)", nullptr, int(seen.found.size()))
-                          .arg(seen.probe.echo ? Tr::tr(", adapter echo") : QString())
+        output.out << ServoctlTr::tr("Feetech bus%1: %n servo(s)", nullptr, int(seen.found.size()))
+                          .arg(seen.probe.echo ? ServoctlTr::tr(", adapter echo") : QString())
                    << '\n';
         for (const ServoInfo &servo : seen.found)
             output.out << "  " << servoSummary(servo) << '\n';
     }
     output.out.flush();
     if (seen.probe.cancelled) {
-        output.err << "servoctl: " << Tr::tr("interrupted before the probe ended") << '\n';
+        output.err << "servoctl: " << ServoctlTr::tr("interrupted before the probe ended") << '\n';
         output.err.flush();
         return ExitDeviceFailure;
     }
     if (ptk || feetech)
         return ExitOk;
-    output.err << "servoctl: " << Tr::tr("nothing answers on %1").arg(seen.probe.port) << '\n';
+    output.err << "servoctl: " << ServoctlTr::tr("nothing answers on %1").arg(seen.probe.port)
+               << '\n';
     if (!look.scanError.isEmpty())
         output.err << "servoctl: " << look.scanError << '\n';
     printFindings(output.err, feetech::diagnoseBus(seen, {}));
@@ -190,17 +182,19 @@ int runDoctorCommand(const Arguments &args, const QStringList &rest, const Outpu
 {
     allowOnly(args, {QStringLiteral("expect"), QStringLiteral("baud")}, QStringLiteral("doctor"));
     if (!rest.isEmpty())
-        throw UsageError {Tr::tr("doctor takes no arguments (the expected IDs go in --expect)")};
+        throw UsageError {
+            ServoctlTr::tr("doctor takes no arguments (the expected IDs go in --expect)")};
     if (args.has(QStringLiteral("baud")) && !args.has(QStringLiteral("expect")))
-        throw UsageError {Tr::tr("doctor --baud names the rate of the --expect servos")};
+        throw UsageError {ServoctlTr::tr("doctor --baud names the rate of the --expect servos")};
     QVector<feetech::ExpectedServo> expected;
     if (args.has(QStringLiteral("expect"))) {
         qint32 baud = kDefaultBaud;
         if (args.has(QStringLiteral("baud"))) {
             baud = qint32(integerOption(args, QStringLiteral("baud"), 1, 4000000));
             if (!feetech::baudCode(baud))
-                throw UsageError {
-                    Tr::tr("--baud %1 is not a Feetech rate (%2)").arg(baud).arg(baudList())};
+                throw UsageError {ServoctlTr::tr("--baud %1 is not a Feetech rate (%2)")
+                                      .arg(baud)
+                                      .arg(baudList())};
         }
         // In the order given: the chain's order, nearest the adapter first.
         for (const quint8 id : idList(args.value(QStringLiteral("expect")), feetech::kMaxServoId))
@@ -220,10 +214,10 @@ int runDoctorCommand(const Arguments &args, const QStringList &rest, const Outpu
         printJson(output.out, findingsJson(findings));
     } else if (findings.isEmpty()) {
         if (seen.probe.ptk)
-            output.out << Tr::tr("A PTK servo answers on %1.").arg(seen.probe.port) << '\n';
+            output.out << ServoctlTr::tr("A PTK servo answers on %1.").arg(seen.probe.port) << '\n';
         else
-            output.out << Tr::tr("The bus holds what was expected: %n servo(s).", nullptr,
-                                 int(seen.found.size()))
+            output.out << ServoctlTr::tr("The bus holds what was expected: %n servo(s).", nullptr,
+                                         int(seen.found.size()))
                        << '\n';
         output.out.flush();
     } else {

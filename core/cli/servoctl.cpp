@@ -10,6 +10,7 @@
 #include "hex.h"
 #include "ptkcommands.h"
 #include "ptkparameters.h"
+#include "servoctltr.h"
 #include "sharecommand.h"
 #include "sharerecording.h"
 
@@ -22,16 +23,6 @@
 #include <QSet>
 
 #include <functional>
-
-namespace {
-
-// Translation context for the messages of this file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -205,7 +196,7 @@ public:
                  QStringLiteral("fix"), QStringLiteral("watch"), QStringLiteral("release")});
             m_json = args.flag(QStringLiteral("json"));
             if (args.flag(QStringLiteral("help"))) {
-                m_out << Tr::tr(kUsage);
+                m_out << ServoctlTr::tr(kUsage);
                 return ExitOk;
             }
             if (args.flag(QStringLiteral("version"))) {
@@ -213,7 +204,7 @@ public:
                 return ExitOk;
             }
             if (args.positional().isEmpty())
-                throw UsageError {Tr::tr("no command given (try servoctl --help)")};
+                throw UsageError {ServoctlTr::tr("no command given (try servoctl --help)")};
             const QString command = args.positional().first();
             const QStringList rest = args.positional().mid(1);
             if (command == QLatin1String("ports"))
@@ -232,7 +223,8 @@ public:
                 return runFeetechCommand(args, rest, {m_out, m_err, m_json});
             if (command == QLatin1String("share"))
                 return runShareCommand(args, rest, {m_out, m_err, m_json});
-            throw UsageError {Tr::tr("unknown command \"%1\" (try servoctl --help)").arg(command)};
+            throw UsageError {
+                ServoctlTr::tr("unknown command \"%1\" (try servoctl --help)").arg(command)};
         } catch (const UsageError &error) {
             m_err << "servoctl: " << error.message << '\n';
             m_err.flush();
@@ -248,7 +240,7 @@ private:
                                           QStringLiteral("echo")};
         for (const QString &name : args.valueNames()) {
             if (!allowed.contains(name) && !kGlobal.contains(name))
-                throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
+                throw UsageError {ServoctlTr::tr("%1 takes no --%2").arg(what, name)};
         }
     }
 
@@ -264,7 +256,7 @@ private:
     {
         allowOnly(args, {}, QStringLiteral("ports"));
         if (!rest.isEmpty())
-            throw UsageError {Tr::tr("ports takes no arguments")};
+            throw UsageError {ServoctlTr::tr("ports takes no arguments")};
         const auto available = QSerialPortInfo::availablePorts();
         if (m_json) {
             QJsonArray array;
@@ -284,7 +276,7 @@ private:
             return ExitOk;
         }
         if (available.isEmpty())
-            m_out << Tr::tr("no serial ports found") << '\n';
+            m_out << ServoctlTr::tr("no serial ports found") << '\n';
         for (const QSerialPortInfo &port : available) {
             m_out << port.systemLocation();
             if (!port.description().isEmpty())
@@ -302,7 +294,7 @@ private:
         if (args.has(QStringLiteral("log")))
             return decodeLog(args, rest);
         if (rest.isEmpty())
-            throw UsageError {Tr::tr("decode needs the bytes to decode, as hex")};
+            throw UsageError {ServoctlTr::tr("decode needs the bytes to decode, as hex")};
         QString error;
         const auto bytes = util::parseHex(rest, &error);
         if (!bytes)
@@ -315,12 +307,12 @@ private:
             else if (family == QLatin1String("feetech"))
                 protocol = Protocol::Feetech;
             else
-                throw UsageError {Tr::tr("--family must be ptk or feetech")};
+                throw UsageError {ServoctlTr::tr("--family must be ptk or feetech")};
         } else {
             protocol = guessProtocol(*bytes);
             if (!protocol)
-                throw UsageError {Tr::tr("no PTK (AF FA) or Feetech (FF FF) header found; "
-                                         "name the protocol with --family")};
+                throw UsageError {ServoctlTr::tr("no PTK (AF FA) or Feetech (FF FF) header found; "
+                                                 "name the protocol with --family")};
         }
         const QVector<DecodedFrame> frames = decodeStream(
             *protocol, *bytes,
@@ -335,8 +327,8 @@ private:
                 m_out << util::toHex(frame.bytes) << '\n' << "    " << frame.summary;
                 if (frame.kind != QLatin1String("garbage")
                     && frame.kind != QLatin1String("incomplete"))
-                    m_out << (frame.checksumValid ? Tr::tr(" [checksum ok]")
-                                                  : Tr::tr(" [BAD CHECKSUM]"));
+                    m_out << (frame.checksumValid ? ServoctlTr::tr(" [checksum ok]")
+                                                  : ServoctlTr::tr(" [BAD CHECKSUM]"));
                 m_out << '\n';
             }
             m_out.flush();
@@ -349,10 +341,11 @@ private:
     int decodeLog(const Arguments &args, const QStringList &rest)
     {
         if (!rest.isEmpty())
-            throw UsageError {Tr::tr("decode --log takes the recording only, no bytes")};
+            throw UsageError {ServoctlTr::tr("decode --log takes the recording only, no bytes")};
         if (args.has(QStringLiteral("family"))
             && args.value(QStringLiteral("family")) != QLatin1String("feetech"))
-            throw UsageError {Tr::tr("share recordings are of Feetech buses: --family feetech")};
+            throw UsageError {
+                ServoctlTr::tr("share recordings are of Feetech buses: --family feetech")};
         util::FileError error;
         const auto frames = share::ShareRecording::load(args.value(QStringLiteral("log")), &error);
         if (!frames) {
@@ -424,22 +417,23 @@ private:
     int packet(const Arguments &args, const QStringList &rest)
     {
         if (rest.isEmpty())
-            throw UsageError {Tr::tr("packet needs a protocol: ptk or feetech")};
+            throw UsageError {ServoctlTr::tr("packet needs a protocol: ptk or feetech")};
         if (rest.first() == QLatin1String("ptk"))
             return ptkPacket(args, rest.mid(1));
         if (rest.first() == QLatin1String("feetech"))
             return feetechPacket(args, rest.mid(1));
-        throw UsageError {Tr::tr("unknown protocol \"%1\": use ptk or feetech").arg(rest.first())};
+        throw UsageError {
+            ServoctlTr::tr("unknown protocol \"%1\": use ptk or feetech").arg(rest.first())};
     }
 
     int ptkPacket(const Arguments &args, const QStringList &rest)
     {
         allowOnly(args, {}, QStringLiteral("packet ptk"));
         if (rest.isEmpty())
-            throw UsageError {Tr::tr("packet ptk needs query CMD or write NAME=VALUE...")};
+            throw UsageError {ServoctlTr::tr("packet ptk needs query CMD or write NAME=VALUE...")};
         if (rest.first() == QLatin1String("query")) {
             if (rest.size() != 2)
-                throw UsageError {Tr::tr("packet ptk query needs exactly one command")};
+                throw UsageError {ServoctlTr::tr("packet ptk query needs exactly one command")};
             const QString text = rest.at(1);
             for (const ptk::FrameLayout &query : ptk::queryLayouts()) {
                 if (text.compare(QLatin1String(query.name), Qt::CaseInsensitive) == 0)
@@ -449,7 +443,7 @@ private:
             const auto command = util::parseInteger(text);
             if (!command || *command < 0 || *command > 255)
                 throw UsageError {
-                    Tr::tr("\"%1\" is not a command byte (0-255) or N1..N8").arg(text)};
+                    ServoctlTr::tr("\"%1\" is not a command byte (0-255) or N1..N8").arg(text)};
             const ptk::FrameLayout *known = ptk::findQuery(quint8(*command));
             return printFrames({{known ? QLatin1String(known->name) : QString(),
                                  ptk::encodeQuery(quint8(*command))}});
@@ -457,13 +451,13 @@ private:
         if (rest.first() == QLatin1String("write"))
             return ptkWrite(rest.mid(1));
         throw UsageError {
-            Tr::tr("unknown PTK packet \"%1\": use query or write").arg(rest.first())};
+            ServoctlTr::tr("unknown PTK packet \"%1\": use query or write").arg(rest.first())};
     }
 
     int ptkWrite(const QStringList &assignments)
     {
         if (assignments.isEmpty())
-            throw UsageError {Tr::tr("packet ptk write needs NAME=VALUE arguments")};
+            throw UsageError {ServoctlTr::tr("packet ptk write needs NAME=VALUE arguments")};
         const ptk::ParameterSet values = parsePtkAssignments(assignments);
         // Every frame that carries a named value; the whole sequence (N10 included) when every
         // parameter is named, as PTK's software sends it.
@@ -479,7 +473,7 @@ private:
                 const auto missing =
                     layout.word0 && !values.has(*layout.word0) ? *layout.word0 : *layout.word1;
                 throw UsageError {
-                    Tr::tr("write %1 also carries %2; give it too")
+                    ServoctlTr::tr("write %1 also carries %2; give it too")
                         .arg(QLatin1String(layout.name), QLatin1String(ptk::info(missing).key))};
             }
             frames.append({QLatin1String(layout.name), ptk::encodeRequest(*request)});
@@ -490,45 +484,47 @@ private:
     int feetechPacket(const Arguments &args, const QStringList &rest)
     {
         if (rest.size() != 1)
-            throw UsageError {Tr::tr("packet feetech needs one instruction (try servoctl --help)")};
+            throw UsageError {
+                ServoctlTr::tr("packet feetech needs one instruction (try servoctl --help)")};
         const QString name = rest.first();
         const QString what = QStringLiteral("packet feetech ") + name;
         const auto id = [&](bool unicastOnly, std::optional<int> fallback = std::nullopt) {
             if (!args.has(QStringLiteral("id"))) {
                 if (fallback)
                     return quint8(*fallback);
-                throw UsageError {Tr::tr("%1 needs --id").arg(what)};
+                throw UsageError {ServoctlTr::tr("%1 needs --id").arg(what)};
             }
             if (unicastOnly) {
                 const auto value = util::parseInteger(args.value(QStringLiteral("id")));
                 if (value && *value > feetech::kMaxServoId && *value <= 255)
-                    throw UsageError {
-                        Tr::tr("%1 needs a unicast ID (0-253), not %2").arg(what).arg(*value)};
+                    throw UsageError {ServoctlTr::tr("%1 needs a unicast ID (0-253), not %2")
+                                          .arg(what)
+                                          .arg(*value)};
             }
             return quint8(integerOption(args, QStringLiteral("id"), 0, feetech::kBroadcastId));
         };
         const auto address = [&]() {
             if (!args.has(QStringLiteral("addr")))
-                throw UsageError {Tr::tr("%1 needs --addr").arg(what)};
+                throw UsageError {ServoctlTr::tr("%1 needs --addr").arg(what)};
             return quint8(integerOption(args, QStringLiteral("addr"), 0, 255));
         };
         const auto data = [&]() {
             if (!args.has(QStringLiteral("data")))
-                throw UsageError {Tr::tr("%1 needs --data").arg(what)};
+                throw UsageError {ServoctlTr::tr("%1 needs --data").arg(what)};
             const QByteArray bytes = hexOption(args, QStringLiteral("data"));
             if (bytes.isEmpty())
-                throw UsageError {Tr::tr("--data is empty")};
+                throw UsageError {ServoctlTr::tr("--data is empty")};
             return bytes;
         };
         const auto length = [&](int maximum) {
             if (!args.has(QStringLiteral("len")))
-                throw UsageError {Tr::tr("%1 needs --len").arg(what)};
+                throw UsageError {ServoctlTr::tr("%1 needs --len").arg(what)};
             return int(integerOption(args, QStringLiteral("len"), 1, maximum));
         };
         const int maxData = feetech::kMaxPacketSize - feetech::kMinimumPacketSize - 1;
         const auto checkSize = [&](const QByteArray &packet) {
             if (packet.size() > feetech::kMaxPacketSize)
-                throw UsageError {Tr::tr("the packet would be %1 bytes; the limit is %2")
+                throw UsageError {ServoctlTr::tr("the packet would be %1 bytes; the limit is %2")
                                       .arg(packet.size())
                                       .arg(feetech::kMaxPacketSize)};
             return printFrames({{name, packet}});
@@ -575,8 +571,8 @@ private:
             if (args.has(QStringLiteral("data"))) {
                 position = data();
                 if (position.size() != 2)
-                    throw UsageError {
-                        Tr::tr("calibrate --data is a 2-byte position in the family's byte order")};
+                    throw UsageError {ServoctlTr::tr(
+                        "calibrate --data is a 2-byte position in the family's byte order")};
             }
             return checkSize(feetech::calibrate(target, position));
         }
@@ -584,7 +580,7 @@ private:
             allowOnly(args, {QStringLiteral("addr"), QStringLiteral("len"), QStringLiteral("ids")},
                       what);
             if (!args.has(QStringLiteral("ids")))
-                throw UsageError {Tr::tr("%1 needs --ids").arg(what)};
+                throw UsageError {ServoctlTr::tr("%1 needs --ids").arg(what)};
             const quint8 start = address();
             const int count = length(maxData);
             return checkSize(
@@ -597,7 +593,7 @@ private:
                        QStringLiteral("data")},
                       what);
             if (!args.has(QStringLiteral("ids")))
-                throw UsageError {Tr::tr("%1 needs --ids").arg(what)};
+                throw UsageError {ServoctlTr::tr("%1 needs --ids").arg(what)};
             const quint8 start = address();
             const QVector<quint8> ids =
                 idList(args.value(QStringLiteral("ids")), feetech::kMaxServoId);
@@ -607,21 +603,22 @@ private:
                 args.has(QStringLiteral("len")) ? length(maxData) : int(bytes.size());
             const bool shared = bytes.size() == blockSize;
             if (!shared && bytes.size() != blockSize * ids.size())
-                throw UsageError {Tr::tr("--data must hold %1 or %2 bytes (--len %1 for %3 servos)")
-                                      .arg(blockSize)
-                                      .arg(blockSize * ids.size())
-                                      .arg(ids.size())};
+                throw UsageError {
+                    ServoctlTr::tr("--data must hold %1 or %2 bytes (--len %1 for %3 servos)")
+                        .arg(blockSize)
+                        .arg(blockSize * ids.size())
+                        .arg(ids.size())};
             QVector<feetech::SyncWriteEntry> entries;
             for (int i = 0; i < ids.size(); ++i)
                 entries.append({ids.at(i), shared ? bytes : bytes.mid(i * blockSize, blockSize)});
             const auto packet = feetech::syncWrite(start, quint8(blockSize), entries);
             if (!packet)
-                throw UsageError {
-                    Tr::tr("the SYNC WRITE would exceed %1 bytes").arg(feetech::kMaxPacketSize)};
+                throw UsageError {ServoctlTr::tr("the SYNC WRITE would exceed %1 bytes")
+                                      .arg(feetech::kMaxPacketSize)};
             return checkSize(*packet);
         }
         throw UsageError {
-            Tr::tr("unknown Feetech instruction \"%1\" (try servoctl --help)").arg(name)};
+            ServoctlTr::tr("unknown Feetech instruction \"%1\" (try servoctl --help)").arg(name)};
     }
 
     QTextStream &m_out;

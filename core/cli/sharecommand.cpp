@@ -3,6 +3,7 @@
 
 #include "busshare.h"
 #include "exitcode.h"
+#include "feetechdevice.h"
 #include "feetechdescription.h"
 #include "feetechpacket.h"
 #include "linksession.h"
@@ -13,12 +14,10 @@ namespace cli {
 
 namespace {
 
-struct Tr
+struct ShareCommandTr
 {
     Q_DECLARE_TR_FUNCTIONS(ShareCommand)
 };
-
-constexpr qint32 kDefaultBaud = 1000000;
 
 void printLine(const Output &output, const QJsonObject &object)
 {
@@ -35,14 +34,15 @@ int runShareCommand(const Arguments &args, const QStringList &rest, const Output
                                        QStringLiteral("record"), QStringLiteral("duration")};
     for (const QString &name : args.valueNames()) {
         if (!kAllowed.contains(name))
-            throw UsageError {Tr::tr("share takes no --%1").arg(name)};
+            throw UsageError {ShareCommandTr::tr("share takes no --%1").arg(name)};
     }
     if (!rest.isEmpty())
-        throw UsageError {Tr::tr("share takes no arguments besides its options")};
+        throw UsageError {ShareCommandTr::tr("share takes no arguments besides its options")};
     if (!args.has(QStringLiteral("port")))
-        throw UsageError {Tr::tr("share needs --port: the adapter the servos are on")};
+        throw UsageError {ShareCommandTr::tr("share needs --port: the adapter the servos are on")};
     if (!args.has(QStringLiteral("link")) || args.value(QStringLiteral("link")).isEmpty())
-        throw UsageError {Tr::tr("share needs --link PATH: the path the other program opens")};
+        throw UsageError {
+            ShareCommandTr::tr("share needs --link PATH: the path the other program opens")};
     const qint32 baud = args.has(QStringLiteral("baud"))
         ? qint32(integerOption(args, QStringLiteral("baud"), 1200, 4000000))
         : kDefaultBaud;
@@ -68,7 +68,8 @@ int runShareCommand(const Arguments &args, const QStringList &rest, const Output
         output.err.flush();
         return ExitDeviceFailure;
     }
-    output.err << Tr::tr("Sharing %1 at %2 baud: give the other program %3 (%4). Ctrl-C ends.")
+    output.err << ShareCommandTr::tr(
+                      "Sharing %1 at %2 baud: give the other program %3 (%4). Ctrl-C ends.")
                       .arg(port)
                       .arg(baud)
                       .arg(share.linkPath(), share.terminalPath())
@@ -80,15 +81,17 @@ int runShareCommand(const Arguments &args, const QStringList &rest, const Output
                          if (output.json)
                              printLine(output, transaction.toJson());
                      });
-    QObject::connect(
-        &share, &share::BusShare::alertRaised, [&output](const share::ShareAlert &alert) {
-            if (output.json)
-                printLine(output, alert.toJson());
-            output.err
-                << Tr::tr("alert %1 at ID %2: %3").arg(alert.code).arg(alert.id).arg(alert.message)
-                << '\n';
-            output.err.flush();
-        });
+    QObject::connect(&share, &share::BusShare::alertRaised,
+                     [&output](const share::ShareAlert &alert) {
+                         if (output.json)
+                             printLine(output, alert.toJson());
+                         output.err << ShareCommandTr::tr("alert %1 at ID %2: %3")
+                                           .arg(alert.code)
+                                           .arg(alert.id)
+                                           .arg(alert.message)
+                                    << '\n';
+                         output.err.flush();
+                     });
     QObject::connect(&share, &share::BusShare::noted, [&output](const QString &text) {
         output.err << text << '\n';
         output.err.flush();

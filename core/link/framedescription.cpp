@@ -6,7 +6,7 @@
 namespace {
 
 // The context the decoder's messages have always been translated in.
-struct Tr
+struct DecoderTr
 {
     Q_DECLARE_TR_FUNCTIONS(Decoder)
 };
@@ -25,8 +25,9 @@ DecodedFrame stray(const StreamItem &item)
     frame.offset = item.offset;
     frame.checksumValid = false;
     frame.summary = item.kind == StreamItem::Kind::Incomplete
-        ? Tr::tr("incomplete frame (%n byte(s))", nullptr, int(item.bytes.size()))
-        : Tr::tr("%n byte(s) that are not part of any frame", nullptr, int(item.bytes.size()));
+        ? DecoderTr::tr("incomplete frame (%n byte(s))", nullptr, int(item.bytes.size()))
+        : DecoderTr::tr("%n byte(s) that are not part of any frame", nullptr,
+                        int(item.bytes.size()));
     if (item.kind == StreamItem::Kind::Incomplete)
         frame.kind = QStringLiteral("incomplete");
     return frame;

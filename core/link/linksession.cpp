@@ -8,7 +8,7 @@
 
 namespace {
 
-struct Tr
+struct LinkSessionTr
 {
     Q_DECLARE_TR_FUNCTIONS(LinkSession)
 };
@@ -72,7 +72,7 @@ bool LinkSession::open(const QString &portName, qint32 baud, EchoMode echo)
 void LinkSession::close()
 {
     m_reopenTimer->stop();
-    endLink(Tr::tr("Disconnected."), Failure::Cancelled);
+    endLink(LinkSessionTr::tr("Disconnected."), Failure::Cancelled);
     if (m_status.state != ConnectionState::Disconnected)
         setState(ConnectionState::Disconnected);
 }
@@ -129,7 +129,8 @@ void LinkSession::onPortFailed(const QString &message, bool lost)
         return;
     endLink(message, Failure::LinkDown);
     if (lost) {
-        setState(ConnectionState::Lost, Tr::tr("%1 Reconnecting when it comes back.").arg(message));
+        setState(ConnectionState::Lost,
+                 LinkSessionTr::tr("%1 Reconnecting when it comes back.").arg(message));
         m_reopenTimer->start(m_reconnectInterval);
     } else {
         setState(ConnectionState::Disconnected, message);

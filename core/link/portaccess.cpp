@@ -12,7 +12,7 @@
 
 namespace {
 
-struct Tr
+struct PortAccessTr
 {
     Q_DECLARE_TR_FUNCTIONS(PortAccess)
 };
@@ -98,8 +98,8 @@ QString programHoldingPort(const QString &portPath)
             QString name;
             if (comm.open(QIODevice::ReadOnly))
                 name = QString::fromLocal8Bit(comm.readAll()).trimmed();
-            return name.isEmpty() ? Tr::tr("process %1").arg(pid)
-                                  : Tr::tr("%1 (process %2)").arg(name, pid);
+            return name.isEmpty() ? PortAccessTr::tr("process %1").arg(pid)
+                                  : PortAccessTr::tr("%1 (process %2)").arg(name, pid);
         }
     }
     return {};

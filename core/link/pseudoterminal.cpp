@@ -20,7 +20,7 @@
 
 namespace {
 
-struct Tr
+struct PseudoTerminalTr
 {
     Q_DECLARE_TR_FUNCTIONS(PseudoTerminal)
 };
@@ -69,15 +69,15 @@ bool PseudoTerminal::open(const QString &linkPath, QString *error)
     };
     const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
     if (master < 0)
-        return fail(Tr::tr("cannot open a pseudo-terminal: %1")
+        return fail(PseudoTerminalTr::tr("cannot open a pseudo-terminal: %1")
                         .arg(QString::fromLocal8Bit(std::strerror(errno))));
     m_master = master;
     if (::grantpt(master) != 0 || ::unlockpt(master) != 0)
-        return fail(Tr::tr("cannot unlock the pseudo-terminal: %1")
+        return fail(PseudoTerminalTr::tr("cannot unlock the pseudo-terminal: %1")
                         .arg(QString::fromLocal8Bit(std::strerror(errno))));
     char name[128] = {};
     if (::ptsname_r(master, name, sizeof name) != 0)
-        return fail(Tr::tr("cannot name the pseudo-terminal's slave"));
+        return fail(PseudoTerminalTr::tr("cannot name the pseudo-terminal's slave"));
     m_slavePath = QString::fromLocal8Bit(name);
 
     // Raw on the slave from the start, so nothing is echoed or translated before a client
@@ -97,14 +97,15 @@ bool PseudoTerminal::open(const QString &linkPath, QString *error)
     const QFileInfo existing(linkPath);
     if (existing.isSymLink()) {
         if (::unlink(QFile::encodeName(linkPath).constData()) != 0)
-            return fail(Tr::tr("cannot replace the old link %1: %2")
+            return fail(PseudoTerminalTr::tr("cannot replace the old link %1: %2")
                             .arg(linkPath, QString::fromLocal8Bit(std::strerror(errno))));
     } else if (existing.exists()) {
         return fail(
-            Tr::tr("%1 exists and is not a symlink; choose another --link path").arg(linkPath));
+            PseudoTerminalTr::tr("%1 exists and is not a symlink; choose another --link path")
+                .arg(linkPath));
     }
     if (::symlink(name, QFile::encodeName(linkPath).constData()) != 0)
-        return fail(Tr::tr("cannot create the link %1: %2")
+        return fail(PseudoTerminalTr::tr("cannot create the link %1: %2")
                         .arg(linkPath, QString::fromLocal8Bit(std::strerror(errno))));
     m_linkPath = linkPath;
 
@@ -204,8 +205,9 @@ void PseudoTerminal::flushPending()
 bool PseudoTerminal::open(const QString &, QString *error)
 {
     if (error)
-        *error = Tr::tr("Simulated servos need a pseudo-terminal, which this system does not "
-                        "have: they run on Linux and macOS.");
+        *error = PseudoTerminalTr::tr(
+            "Simulated servos need a pseudo-terminal, which this system does not "
+            "have: they run on Linux and macOS.");
     return false;
 }
 

@@ -13,7 +13,7 @@
 
 namespace {
 
-struct Tr
+struct RequestEngineTr
 {
     Q_DECLARE_TR_FUNCTIONS(RequestEngine)
 };
@@ -218,7 +218,7 @@ void RequestEngine::send()
     // Input the port has not announced yet is taken in first (and dropped as stray while
     // nothing waits), or it would arrive after the request and pass for its answer.
     m_transport->deliverPendingInput();
-    const QString beforeRequest = Tr::tr("stray input discarded before a request");
+    const QString beforeRequest = RequestEngineTr::tr("stray input discarded before a request");
     // Also frames still in the framer: an answer that ended its exchange may have had company.
     onInputBetweenRequests(m_transport->discardInput(), beforeRequest);
     if (m_framer.pendingBytes() > 0 && !m_waitedForUnfinished && m_current
@@ -349,7 +349,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
     const HandlingEvent handling(*this);
     if (m_state == State::Idle || m_state == State::Settling || !m_current) {
         // Nothing is waiting for these: a late reply, noise, or an echo after the fact.
-        onInputBetweenRequests(bytes, Tr::tr("received while no request was waiting"));
+        onInputBetweenRequests(bytes, RequestEngineTr::tr("received while no request was waiting"));
         return;
     }
     // The first byte an echo does not account for (one past the request's length, or one that
@@ -396,7 +396,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 // The echo of the request before, come late (behind a USB adapter's packet).
                 m_previousEchoConsumed = true;
                 m_counters.echoBytes += item->bytes.size();
-                log(Direction::Echo, item->bytes, {}, Tr::tr("late"));
+                log(Direction::Echo, item->bytes, {}, RequestEngineTr::tr("late"));
                 break;
             }
             const bool tooSoon = cameTooSoon(int(item->bytes.size()));
@@ -415,8 +415,9 @@ void RequestEngine::onReceived(const QByteArray &bytes)
                 m_counters.discardedBytes += item->bytes.size();
                 ++m_counters.lateReplies;
                 log(Direction::Stray, item->bytes,
-                    Tr::tr("came sooner than any answer to this request could: a late answer "
-                           "to an earlier one, discarded"));
+                    RequestEngineTr::tr(
+                        "came sooner than any answer to this request could: a late answer "
+                        "to an earlier one, discarded"));
                 break;
             }
             if (m_echoMode == EchoMode::Auto && m_echoSeen == Decision::Unknown && !m_sawFrame)
@@ -454,7 +455,7 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             if (takeLateAnswer(item->bytes))
                 break;
             m_counters.discardedBytes += item->bytes.size();
-            log(Direction::In, item->bytes, Tr::tr("unexpected frame, ignored"));
+            log(Direction::In, item->bytes, RequestEngineTr::tr("unexpected frame, ignored"));
             break;
         }
         case StreamItem::Kind::BadChecksum:
@@ -462,20 +463,22 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             // A scan asks where several servos may answer at once: garbled answers are what
             // it looks for there (and asks again), not a fault of the link.
             if (m_current->collisionsExpected) {
-                log(Direction::In, item->bytes, {}, Tr::tr("garbled: answers at once"));
+                log(Direction::In, item->bytes, {},
+                    RequestEngineTr::tr("garbled: answers at once"));
                 break;
             }
             ++m_counters.checksumErrors;
-            log(Direction::In, item->bytes, Tr::tr("bad checksum"));
+            log(Direction::In, item->bytes, RequestEngineTr::tr("bad checksum"));
             break;
         case StreamItem::Kind::Garbage:
         case StreamItem::Kind::Incomplete:
             heard(int(item->bytes.size()));
             m_counters.discardedBytes += item->bytes.size();
             if (m_current->collisionsExpected)
-                log(Direction::Stray, item->bytes, {}, Tr::tr("garbled: answers at once"));
+                log(Direction::Stray, item->bytes, {},
+                    RequestEngineTr::tr("garbled: answers at once"));
             else
-                log(Direction::Stray, item->bytes, Tr::tr("bytes that form no frame"));
+                log(Direction::Stray, item->bytes, RequestEngineTr::tr("bytes that form no frame"));
             break;
         }
     }
@@ -504,8 +507,8 @@ void RequestEngine::onTimeout(quint64 generation)
     if (m_state == State::AwaitingReply && !m_collected.isEmpty()) {
         // Several servos were asked and some answered: the caller sees who did not.
         log(Direction::In, {}, {},
-            Tr::tr("%n answer(s) in time; the others are missing", nullptr,
-                   int(m_collected.size())));
+            RequestEngineTr::tr("%n answer(s) in time; the others are missing", nullptr,
+                                int(m_collected.size())));
         finish(Failure::Timeout);
         return;
     }
@@ -527,7 +530,7 @@ void RequestEngine::onTimeout(quint64 generation)
         m_quietUntilMs = m_clock.elapsed()
             + std::chrono::duration_cast<std::chrono::milliseconds>(replyTimeout()).count();
     const QString noReply =
-        Tr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(retryCount() + 1);
+        RequestEngineTr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(retryCount() + 1);
     // A scan's empty ID is an answer, not an error: logged as a note, not in red.
     if (counted && !m_current->timeoutIsNote)
         log(Direction::In, {}, noReply);
@@ -606,7 +609,7 @@ bool RequestEngine::takeLateAnswer(const QByteArray &frame)
     noteAnswerTime(*after);
     ++m_counters.lateReplies;
     log(Direction::In, frame, {},
-        Tr::tr("late answer, %1 ms after its request")
+        RequestEngineTr::tr("late answer, %1 ms after its request")
             .arg(double(after->count()) / 1000.0, 0, 'f', 1));
     return true;
 }
@@ -624,7 +627,7 @@ void RequestEngine::onInputBetweenRequests(const QByteArray &bytes, const QStrin
                 // The echo of the last request, after its exchange had ended.
                 m_echoConsumed = true;
                 m_counters.echoBytes += item->bytes.size();
-                log(Direction::Echo, item->bytes, {}, Tr::tr("late"));
+                log(Direction::Echo, item->bytes, {}, RequestEngineTr::tr("late"));
                 continue;
             }
             if (takeLateAnswer(item->bytes)) {
@@ -642,7 +645,7 @@ void RequestEngine::onInputBetweenRequests(const QByteArray &bytes, const QStrin
                         - m_replyWireTime - wireTime(int(item->bytes.size()))));
                 ++m_counters.lateReplies;
                 m_counters.discardedBytes += item->bytes.size();
-                log(Direction::In, item->bytes, {}, Tr::tr("late answer, discarded"));
+                log(Direction::In, item->bytes, {}, RequestEngineTr::tr("late answer, discarded"));
                 continue;
             }
         }
@@ -696,7 +699,7 @@ void RequestEngine::log(Direction direction, const QByteArray &bytes, const QStr
             bytes, m_current && direction == Direction::In ? m_current->request : QByteArray());
         entry.summary = note.isEmpty()
             ? described
-            : Tr::tr("%1 (%2)", "frame summary (note)").arg(described, note);
+            : RequestEngineTr::tr("%1 (%2)", "frame summary (note)").arg(described, note);
     }
     emit packetLogged(entry);
 }

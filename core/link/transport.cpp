@@ -10,7 +10,7 @@
 
 namespace {
 
-struct Tr
+struct SerialLinkTr
 {
     Q_DECLARE_TR_FUNCTIONS(SerialLink)
 };
@@ -153,35 +153,38 @@ QString portErrorMessage(QSerialPort::SerialPortError error, const QString &port
     case QSerialPort::NoError:
         return QString();
     case QSerialPort::DeviceNotFoundError:
-        return Tr::tr("%1 does not exist. Is the adapter plugged in?").arg(portName);
+        return SerialLinkTr::tr("%1 does not exist. Is the adapter plugged in?").arg(portName);
     case QSerialPort::PermissionError:
 #ifdef Q_OS_LINUX
-        return Tr::tr("Permission denied on %1. Either another program has it open, or you are "
-                      "not in the group that may use serial ports: run \"sudo usermod -aG "
-                      "dialout $USER\", then log out and back in.")
+        return SerialLinkTr::tr(
+                   "Permission denied on %1. Either another program has it open, or you are "
+                   "not in the group that may use serial ports: run \"sudo usermod -aG "
+                   "dialout $USER\", then log out and back in.")
             .arg(portName);
 #else
-        return Tr::tr("Permission denied on %1: another program may have it open.").arg(portName);
+        return SerialLinkTr::tr("Permission denied on %1: another program may have it open.")
+            .arg(portName);
 #endif
     case QSerialPort::OpenError:
-        return Tr::tr("%1 is already open.").arg(portName);
+        return SerialLinkTr::tr("%1 is already open.").arg(portName);
     case QSerialPort::NotOpenError:
-        return Tr::tr("%1 is not open.").arg(portName);
+        return SerialLinkTr::tr("%1 is not open.").arg(portName);
     case QSerialPort::WriteError:
-        return Tr::tr("Could not write to %1 (%2).").arg(portName, systemMessage);
+        return SerialLinkTr::tr("Could not write to %1 (%2).").arg(portName, systemMessage);
     case QSerialPort::ReadError:
-        return Tr::tr("Could not read from %1 (%2).").arg(portName, systemMessage);
+        return SerialLinkTr::tr("Could not read from %1 (%2).").arg(portName, systemMessage);
     case QSerialPort::ResourceError:
-        return Tr::tr("%1 went away: the adapter was unplugged or the device closed.")
+        return SerialLinkTr::tr("%1 went away: the adapter was unplugged or the device closed.")
             .arg(portName);
     case QSerialPort::UnsupportedOperationError:
-        return Tr::tr("%1 does not support this setting (%2).").arg(portName, systemMessage);
+        return SerialLinkTr::tr("%1 does not support this setting (%2).")
+            .arg(portName, systemMessage);
     case QSerialPort::TimeoutError:
-        return Tr::tr("%1 timed out.").arg(portName);
+        return SerialLinkTr::tr("%1 timed out.").arg(portName);
     case QSerialPort::UnknownError:
         break;
     }
-    return Tr::tr("%1: %2").arg(portName, systemMessage);
+    return SerialLinkTr::tr("%1: %2").arg(portName, systemMessage);
 }
 
 } // namespace seriallink

@@ -14,7 +14,7 @@
 namespace {
 
 // Translation context for the messages of this file.
-struct Tr
+struct ProfileTr
 {
     Q_DECLARE_TR_FUNCTIONS(Profile)
 };
@@ -96,12 +96,12 @@ std::optional<qint64> rawValue(const model::Definition &definition, const QJsonV
     double user = 0;
     if (isSwitch(definition)) {
         if (!value.isBool())
-            return fail(Code::WrongType, Tr::tr("expected true or false"));
+            return fail(Code::WrongType, ProfileTr::tr("expected true or false"));
         raw = value.toBool() ? 1 : 0;
         user = raw;
     } else {
         if (!value.isDouble())
-            return fail(Code::WrongType, Tr::tr("expected a number"));
+            return fail(Code::WrongType, ProfileTr::tr("expected a number"));
         user = value.toDouble();
         raw = user / definition.scale;
     }
@@ -109,7 +109,7 @@ std::optional<qint64> rawValue(const model::Definition &definition, const QJsonV
     if (!std::isfinite(raw) || raw < double(definition.minimum) - kRawTolerance
         || raw > double(definition.maximum) + kRawTolerance) {
         return fail(Code::BadValue,
-                    Tr::tr("%1 is out of range (%2 to %3)")
+                    ProfileTr::tr("%1 is out of range (%2 to %3)")
                         .arg(userText(definition, user),
                              rawText(definition, definition.minimum, false),
                              rawText(definition, definition.maximum)));
@@ -119,8 +119,8 @@ std::optional<qint64> rawValue(const model::Definition &definition, const QJsonV
         return fail(
             Code::BadValue,
             definition.scale == 1.0
-                ? Tr::tr("%1 is not a whole number").arg(userText(definition, user))
-                : Tr::tr("%1 is not a multiple of %2")
+                ? ProfileTr::tr("%1 is not a whole number").arg(userText(definition, user))
+                : ProfileTr::tr("%1 is not a multiple of %2")
                       .arg(userText(definition, user), userText(definition, definition.scale)));
     }
     return rounded;
@@ -140,13 +140,14 @@ bool optionalText(const QJsonObject &root, const char *key, QString *text)
 // How a profile file names itself, and what it may hold at the top.
 util::JsonFormat profileFormat()
 {
-    return {kFormatMarker,
-            kFormatVersion,
-            {kFamilyKey, kModelKey, kSavedKey, kNoteKey, kParametersKey},
-            Tr::tr("not a ServoBench profile (the document is not a JSON object)"),
-            Tr::tr("not a ServoBench profile (\"%1\" is not \"%2\")"),
-            Tr::tr("the profile has format version %1 and was written by a newer ServoBench; "
-                   "this version reads format version %2 and older")};
+    return {
+        kFormatMarker,
+        kFormatVersion,
+        {kFamilyKey, kModelKey, kSavedKey, kNoteKey, kParametersKey},
+        ProfileTr::tr("not a ServoBench profile (the document is not a JSON object)"),
+        ProfileTr::tr("not a ServoBench profile (\"%1\" is not \"%2\")"),
+        ProfileTr::tr("the profile has format version %1 and was written by a newer ServoBench; "
+                      "this version reads format version %2 and older")};
 }
 
 } // namespace
@@ -193,9 +194,9 @@ bool save(const QString &path, const Profile &profile,
     // toJson would drop such a value without a word; the user must hear that it cannot be saved.
     for (const ProfileValue &entry : profile.values) {
         if (!findDefinition(definitions, entry.key))
-            return fail(
-                util::FileError(Code::UnknownKey, Tr::tr("unknown parameter \"%1\"").arg(entry.key))
-                    .withField(entry.key));
+            return fail(util::FileError(Code::UnknownKey,
+                                        ProfileTr::tr("unknown parameter \"%1\"").arg(entry.key))
+                            .withField(entry.key));
     }
     const QByteArray json = toJson(profile, definitions);
     // Write nothing that load() would refuse, so every saved profile can be loaded again.
@@ -207,12 +208,13 @@ bool save(const QString &path, const Profile &profile,
     for (const ProfileValue &entry : profile.values) {
         const model::Definition *definition = findDefinition(definitions, entry.key);
         if (definition->access != model::Access::ReadOnly && check->value(entry.key) != entry.raw)
-            return fail(util::FileError(Code::BadValue,
-                                        Tr::tr("%1: the raw value %2 cannot be kept in a profile")
-                                            .arg(entry.key)
-                                            .arg(entry.raw))
-                            .withField(entry.key)
-                            .withValue(QString::number(entry.raw)));
+            return fail(
+                util::FileError(Code::BadValue,
+                                ProfileTr::tr("%1: the raw value %2 cannot be kept in a profile")
+                                    .arg(entry.key)
+                                    .arg(entry.raw))
+                    .withField(entry.key)
+                    .withValue(QString::number(entry.raw)));
     }
     return util::writeFileAtomically(path, json, error);
 }
@@ -235,37 +237,39 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
     Profile profile;
     const QJsonValue family = root.value(QLatin1String(kFamilyKey));
     if (!family.isString() || family.toString().isEmpty())
-        return fail(Code::MissingField, Tr::tr("the profile names no servo family"), kFamilyKey);
+        return fail(Code::MissingField, ProfileTr::tr("the profile names no servo family"),
+                    kFamilyKey);
     profile.family = family.toString();
     if (profile.family != expectedFamily)
         return fail(Code::WrongServos,
-                    Tr::tr("the profile is for \"%1\" servos, not \"%2\"")
+                    ProfileTr::tr("the profile is for \"%1\" servos, not \"%2\"")
                         .arg(profile.family, expectedFamily),
                     kFamilyKey);
     if (!optionalText(root, kModelKey, &profile.model))
-        return fail(Code::WrongType, Tr::tr("\"%1\" must be text").arg(QLatin1String(kModelKey)),
-                    kModelKey);
+        return fail(Code::WrongType,
+                    ProfileTr::tr("\"%1\" must be text").arg(QLatin1String(kModelKey)), kModelKey);
     if (!optionalText(root, kNoteKey, &profile.note))
-        return fail(Code::WrongType, Tr::tr("\"%1\" must be text").arg(QLatin1String(kNoteKey)),
-                    kNoteKey);
+        return fail(Code::WrongType,
+                    ProfileTr::tr("\"%1\" must be text").arg(QLatin1String(kNoteKey)), kNoteKey);
     QString saved;
     if (!optionalText(root, kSavedKey, &saved))
-        return fail(Code::WrongType, Tr::tr("\"%1\" must be text").arg(QLatin1String(kSavedKey)),
-                    kSavedKey);
+        return fail(Code::WrongType,
+                    ProfileTr::tr("\"%1\" must be text").arg(QLatin1String(kSavedKey)), kSavedKey);
     if (!saved.isEmpty()) {
         profile.saved = QDateTime::fromString(saved, Qt::ISODate);
         if (!profile.saved.isValid())
             return fail(Code::BadValue,
-                        Tr::tr("\"%1\": \"%2\" is not an ISO 8601 date and time")
+                        ProfileTr::tr("\"%1\": \"%2\" is not an ISO 8601 date and time")
                             .arg(QLatin1String(kSavedKey), saved),
                         kSavedKey);
     }
 
     const QJsonValue parametersValue = root.value(QLatin1String(kParametersKey));
     if (!parametersValue.isObject())
-        return fail(Code::MissingField,
-                    Tr::tr("the profile has no \"%1\" object").arg(QLatin1String(kParametersKey)),
-                    kParametersKey);
+        return fail(
+            Code::MissingField,
+            ProfileTr::tr("the profile has no \"%1\" object").arg(QLatin1String(kParametersKey)),
+            kParametersKey);
     const QJsonObject parameters = parametersValue.toObject();
 
     QHash<QString, int> rows;
@@ -275,10 +279,10 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
     for (auto it = parameters.constBegin(); it != parameters.constEnd(); ++it) {
         const int row = rows.value(it.key(), -1);
         if (row < 0) {
-            util::report(
-                error,
-                util::FileError(Code::UnknownKey, Tr::tr("unknown parameter \"%1\"").arg(it.key()))
-                    .withField(it.key()));
+            util::report(error,
+                         util::FileError(Code::UnknownKey,
+                                         ProfileTr::tr("unknown parameter \"%1\"").arg(it.key()))
+                             .withField(it.key()));
             return std::nullopt;
         }
         const model::Definition &definition = definitions.at(row);
@@ -289,9 +293,10 @@ std::optional<Profile> parse(const QByteArray &json, const QString &expectedFami
         util::FileError why;
         raws[row] = rawValue(definition, it.value(), &why);
         if (!raws.at(row)) {
-            util::report(error,
-                         util::FileError(why.code(), Tr::tr("%1: %2").arg(it.key(), why.reason()))
-                             .withField(it.key()));
+            util::report(
+                error,
+                util::FileError(why.code(), ProfileTr::tr("%1: %2").arg(it.key(), why.reason()))
+                    .withField(it.key()));
             return std::nullopt;
         }
     }
@@ -309,7 +314,7 @@ std::optional<Profile> load(const QString &path, const QString &expectedFamily,
     util::FileError why;
     std::optional<Profile> profile;
     if (const auto json = util::readFile(path, util::kMaxJsonFileBytes,
-                                         Tr::tr("too large to be a profile"), &why))
+                                         ProfileTr::tr("too large to be a profile"), &why))
         profile = parse(*json, expectedFamily, definitions, &why);
     if (!profile)
         util::report(error, why.inFile(path));

@@ -8,7 +8,7 @@
 
 namespace {
 
-struct Tr
+struct PtkClientTr
 {
     Q_DECLARE_TR_FUNCTIONS(PtkClient)
 };
@@ -91,14 +91,14 @@ void Client::readAll()
 QString Client::applyBlocker() const
 {
     if (!isConnected())
-        return Tr::tr("The servo is not connected.");
+        return PtkClientTr::tr("The servo is not connected.");
     if (isBusy())
-        return Tr::tr("A read or write is already running.");
+        return PtkClientTr::tr("A read or write is already running.");
     if (!m_model.hasEdits())
-        return Tr::tr("There are no changes to apply.");
+        return PtkClientTr::tr("There are no changes to apply.");
     for (const model::Definition &definition : m_model.definitions()) {
         if (!m_model.deviceValue(definition.key))
-            return Tr::tr("%1 has not been read yet.").arg(definition.label);
+            return PtkClientTr::tr("%1 has not been read yet.").arg(definition.label);
     }
     return QString();
 }
@@ -174,8 +174,9 @@ bool Client::sendFrame(const QByteArray &frame, bool expectsReply, QString *erro
 {
     if (!isConnected() || isBusy()) {
         if (error)
-            *error = isConnected() ? Tr::tr("Wait until the servo's read or Apply has finished.")
-                                   : Tr::tr("The servo is not connected.");
+            *error = isConnected()
+                ? PtkClientTr::tr("Wait until the servo's read or Apply has finished.")
+                : PtkClientTr::tr("The servo is not connected.");
         return false;
     }
     m_worker.run(

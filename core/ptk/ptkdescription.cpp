@@ -9,7 +9,7 @@
 namespace {
 
 // The context the decoder's messages have always been translated in.
-struct Tr
+struct DecoderTr
 {
     Q_DECLARE_TR_FUNCTIONS(Decoder)
 };
@@ -62,7 +62,7 @@ void describeRequest(DecodedFrame &frame, QJsonObject *values, const FrameLayout
                 asks.append(QLatin1String(info(*slot).key));
         }
         frame.summary =
-            Tr::tr("query %1 (command %2) asks for %3")
+            DecoderTr::tr("query %1 (command %2) asks for %3")
                 .arg(QLatin1String(query->name), hexByte(command), asks.join(QStringLiteral(", ")));
         if (frame.checksumValid)
             lastQuery = query;
@@ -71,12 +71,12 @@ void describeRequest(DecodedFrame &frame, QJsonObject *values, const FrameLayout
         if (values)
             frame.fields.insert(QStringLiteral("name"), QLatin1String(write->name));
         const QString what = describeWords(*write, wordAt(b, 5), wordAt(b, 7), values);
-        frame.summary = Tr::tr("write %1 (command %2) %3")
+        frame.summary = DecoderTr::tr("write %1 (command %2) %3")
                             .arg(QLatin1String(write->name), hexByte(command),
-                                 what.isEmpty() ? Tr::tr("with zero payload") : what);
+                                 what.isEmpty() ? DecoderTr::tr("with zero payload") : what);
     } else {
         frame.kind = QStringLiteral("request");
-        frame.summary = Tr::tr("request with unknown command %1, payload %2 %3")
+        frame.summary = DecoderTr::tr("request with unknown command %1, payload %2 %3")
                             .arg(hexByte(command))
                             .arg(wordAt(b, 5))
                             .arg(wordAt(b, 7));
@@ -92,12 +92,13 @@ void describeReply(DecodedFrame &frame, QJsonObject *values, const FrameLayout *
     if (query) {
         if (values)
             frame.fields.insert(QStringLiteral("answers"), QLatin1String(query->name));
-        frame.summary = Tr::tr("reply to %1: %2")
+        frame.summary = DecoderTr::tr("reply to %1: %2")
                             .arg(QLatin1String(query->name),
                                  describeWords(*query, wordAt(b, 4), wordAt(b, 6), values));
     } else {
-        frame.summary =
-            Tr::tr("reply (query unknown): words %1, %2").arg(wordAt(b, 4)).arg(wordAt(b, 6));
+        frame.summary = DecoderTr::tr("reply (query unknown): words %1, %2")
+                            .arg(wordAt(b, 4))
+                            .arg(wordAt(b, 6));
     }
 }
 

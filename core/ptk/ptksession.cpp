@@ -8,7 +8,7 @@
 
 namespace {
 
-struct Tr
+struct PtkSessionTr
 {
     Q_DECLARE_TR_FUNCTIONS(PtkSession)
 };
@@ -110,12 +110,14 @@ void Session::onLinkDown(const QString &message, seriallink::Failure failure)
     // Whoever waits for a read or an Apply hears that it ended, so nothing stays busy.
     const bool closed = failure == seriallink::Failure::Cancelled;
     if (wasApplying)
-        emit applyFinished(false,
-                           closed ? Tr::tr("Disconnected during Apply; the servo may hold only "
-                                           "part of the new values.")
-                                  : Tr::tr("The link went down during Apply: %1").arg(message));
+        emit applyFinished(
+            false,
+            closed ? PtkSessionTr::tr("Disconnected during Apply; the servo may hold only "
+                                      "part of the new values.")
+                   : PtkSessionTr::tr("The link went down during Apply: %1").arg(message));
     if (wasReading)
-        emit readFinished(false, closed ? Tr::tr("Disconnected during the read.") : message);
+        emit readFinished(false,
+                          closed ? PtkSessionTr::tr("Disconnected during the read.") : message);
 }
 
 void Session::setPolling(bool enabled)
@@ -212,11 +214,11 @@ void Session::submitQuery(int index, seriallink::Transaction::Priority priority,
 void Session::readAll()
 {
     if (!m_link->isOpen()) {
-        emit readFinished(false, Tr::tr("Not connected."));
+        emit readFinished(false, PtkSessionTr::tr("Not connected."));
         return;
     }
     if (isApplying() || m_phase == Phase::Reading) {
-        emit readFinished(false, Tr::tr("Busy: a read or write is already running."));
+        emit readFinished(false, PtkSessionTr::tr("Busy: a read or write is already running."));
         return;
     }
     startSweep(Phase::Reading);
@@ -236,12 +238,13 @@ void Session::sweepStep(int index, Phase phase, QVector<QString> failed)
         const bool ok = failed.isEmpty();
         const QString message = ok
             ? QString()
-            : Tr::tr("No answer to the query for %1.")
+            : PtkSessionTr::tr("No answer to the query for %1.")
                   .arg(QStringList(failed.toList()).join(QStringLiteral("; ")));
         resumePolling();
         if (phase == Phase::ReadingBack) {
-            emit applyFinished(
-                ok, ok ? QString() : Tr::tr("Written, but not verified. %1").arg(message));
+            emit applyFinished(ok,
+                               ok ? QString()
+                                  : PtkSessionTr::tr("Written, but not verified. %1").arg(message));
         } else {
             emit readFinished(ok, message);
         }
@@ -257,10 +260,10 @@ void Session::sweepStep(int index, Phase phase, QVector<QString> failed)
                         // The port went away mid-sweep; onPortFailed has said so.
                         if (phase == Phase::ReadingBack)
                             emit applyFinished(false,
-                                               Tr::tr("The link went down before the "
-                                                      "values could be read back."));
+                                               PtkSessionTr::tr("The link went down before the "
+                                                                "values could be read back."));
                         else
-                            emit readFinished(false, Tr::tr("The link went down."));
+                            emit readFinished(false, PtkSessionTr::tr("The link went down."));
                         return;
                     }
                     if (!ok)
@@ -274,11 +277,11 @@ void Session::sweepStep(int index, Phase phase, QVector<QString> failed)
 void Session::apply(const ParameterSet &values)
 {
     if (!m_link->isOpen()) {
-        emit applyFinished(false, Tr::tr("Not connected."));
+        emit applyFinished(false, PtkSessionTr::tr("Not connected."));
         return;
     }
     if (isApplying() || m_phase == Phase::Reading) {
-        emit applyFinished(false, Tr::tr("Busy: a read or write is already running."));
+        emit applyFinished(false, PtkSessionTr::tr("Busy: a read or write is already running."));
         return;
     }
     // Nothing leaves unless every value is complete and inside its range.
@@ -286,7 +289,7 @@ void Session::apply(const ParameterSet &values)
         const auto wire = values.value(meta.parameter);
         if (!wire) {
             emit applyFinished(false,
-                               Tr::tr("%1 has not been read yet; nothing was written.")
+                               PtkSessionTr::tr("%1 has not been read yet; nothing was written.")
                                    .arg(translatedLabel(meta.parameter)));
             return;
         }
@@ -294,7 +297,7 @@ void Session::apply(const ParameterSet &values)
         if (!fromUserValue(meta.parameter, toUserValue(meta.parameter, *wire), &error)
             || *wire % meta.wirePerUnit != 0) {
             emit applyFinished(false,
-                               Tr::tr("%1; nothing was written.")
+                               PtkSessionTr::tr("%1; nothing was written.")
                                    .arg(error.isEmpty() ? translatedLabel(meta.parameter) : error));
             return;
         }
@@ -324,8 +327,8 @@ void Session::writeStep(int index)
             const char *name = writeLayouts().at(std::size_t(index)).name;
             resumePolling();
             emit applyFinished(false,
-                               Tr::tr("The link went down while writing %1; the servo "
-                                      "may hold only part of the new values.")
+                               PtkSessionTr::tr("The link went down while writing %1; the servo "
+                                                "may hold only part of the new values.")
                                    .arg(QLatin1String(name)));
             return;
         }
@@ -345,9 +348,10 @@ void Session::noteAnswer(bool ok)
     if (ok && status().state != ConnectionState::Connected)
         m_link->setState(ConnectionState::Connected);
     else if (!ok && status().state != ConnectionState::NoReply)
-        m_link->setState(ConnectionState::NoReply,
-                         Tr::tr("The port is open but the servo does not answer. Check that it is "
-                                "powered and plugged into the programmer."));
+        m_link->setState(
+            ConnectionState::NoReply,
+            PtkSessionTr::tr("The port is open but the servo does not answer. Check that it is "
+                             "powered and plugged into the programmer."));
 }
 
 void Session::sendFrame(const QByteArray &frame, bool expectsReply)
@@ -369,17 +373,17 @@ void Session::sendFrame(const QByteArray &frame, bool expectsReply)
             return;
         if (result.failure == seriallink::Failure::LinkDown
             || result.failure == seriallink::Failure::Cancelled) {
-            emit frameSent(false, Tr::tr("The frame was not sent: the link is down."));
+            emit frameSent(false, PtkSessionTr::tr("The frame was not sent: the link is down."));
             return;
         }
         if (!expectsReply) {
-            emit frameSent(true, Tr::tr("Sent."));
+            emit frameSent(true, PtkSessionTr::tr("Sent."));
             return;
         }
         const bool answered = decodeReply(result.reply).has_value();
         emit frameSent(answered,
-                       answered ? Tr::tr("The servo answered.")
-                                : Tr::tr("Sent; the servo did not answer."));
+                       answered ? PtkSessionTr::tr("The servo answered.")
+                                : PtkSessionTr::tr("Sent; the servo did not answer."));
     };
     m_engine->submit(std::move(transaction));
 }

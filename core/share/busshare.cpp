@@ -13,7 +13,7 @@ namespace share {
 
 namespace {
 
-struct Tr
+struct BusShareTr
 {
     Q_DECLARE_TR_FUNCTIONS(BusShare)
 };
@@ -21,7 +21,7 @@ struct Tr
 // How often alerts that time raises are checked.
 constexpr std::chrono::milliseconds kTickInterval {100};
 
-constexpr int kDataFrom = 5;
+constexpr int kFrameDataFrom = 5;
 
 } // namespace
 
@@ -47,14 +47,14 @@ BusShare::~BusShare()
 QString BusShare::start(const ShareOptions &options)
 {
     if (m_sharing)
-        return Tr::tr("The bus is shared already, at %1.").arg(linkPath());
+        return BusShareTr::tr("The bus is shared already, at %1.").arg(linkPath());
     if (!m_link.isOpen())
-        return Tr::tr("The port is not open: connect to the bus first.");
+        return BusShareTr::tr("The port is not open: connect to the bus first.");
     if (options.linkPath.isEmpty())
-        return Tr::tr("Name the path the other program opens.");
+        return BusShareTr::tr("Name the path the other program opens.");
     const QString absolute = QFileInfo(options.linkPath).absoluteFilePath();
     if (absolute == QFileInfo(m_link.status().portName).absoluteFilePath())
-        return Tr::tr("%1 is the bus's own port: give the other program another path.")
+        return BusShareTr::tr("%1 is the bus's own port: give the other program another path.")
             .arg(options.linkPath);
     auto *terminal = new seriallink::PseudoTerminal(this);
     QString error;
@@ -169,13 +169,13 @@ void BusShare::followProgramRate()
     if (baud == m_link.transport().baudRate())
         return;
     if (!m_link.setBaudRate(baud)) {
-        note(Tr::tr("The program set %1 baud, which the port refuses; it stays at %2 baud.")
+        note(BusShareTr::tr("The program set %1 baud, which the port refuses; it stays at %2 baud.")
                  .arg(baud)
                  .arg(m_link.transport().baudRate()));
         return;
     }
     m_gate->setBaudRate(baud);
-    note(Tr::tr("The program set %1 baud; the port follows.").arg(baud));
+    note(BusShareTr::tr("The program set %1 baud; the port follows.").arg(baud));
 }
 
 void BusShare::onLinkStatus()
@@ -188,12 +188,13 @@ void BusShare::onLinkStatus()
     m_portAway = away;
     if (away) {
         m_gate->portLost();
-        note(Tr::tr("The adapter went away (%1): what the program sends is lost until it is "
-                    "back; the share waits for it.")
-                 .arg(m_link.status().message));
+        note(
+            BusShareTr::tr("The adapter went away (%1): what the program sends is lost until it is "
+                           "back; the share waits for it.")
+                .arg(m_link.status().message));
     } else {
         // The link reopened the port at the rate it had, the last the program set.
-        note(Tr::tr("The adapter is back: the share goes on."));
+        note(BusShareTr::tr("The adapter is back: the share goes on."));
     }
 }
 
@@ -212,17 +213,17 @@ void BusShare::onTransaction(const SharedTransaction &ended)
     const quint8 code = transaction.instruction();
     if ((code == quint8(feetech::Instruction::Read)
          || code == quint8(feetech::Instruction::SyncRead))
-        && transaction.request.size() > kDataFrom + 1) {
-        const int address = quint8(transaction.request.at(kDataFrom));
+        && transaction.request.size() > kFrameDataFrom + 1) {
+        const int address = quint8(transaction.request.at(kFrameDataFrom));
         const qint64 steady = feetech::steadyMicroseconds();
         QVector<feetech::FeedbackSample> samples;
         for (const QByteArray &reply : std::as_const(transaction.replies)) {
             const quint8 id = quint8(reply.at(2));
             const feetech::RegisterTable *table = m_servos.table(id);
-            if (!table || reply.size() <= kDataFrom + 1)
+            if (!table || reply.size() <= kFrameDataFrom + 1)
                 continue;
             const QByteArrayView data =
-                QByteArrayView(reply).sliced(kDataFrom, reply.size() - kDataFrom - 1);
+                QByteArrayView(reply).sliced(kFrameDataFrom, reply.size() - kFrameDataFrom - 1);
             if (const auto sample = feetech::decodeFeedbackPart(*table, id, baud, steady, address,
                                                                 data, quint8(reply.at(4))))
                 samples.append(*sample);
@@ -262,8 +263,9 @@ void BusShare::announceServos()
 QString BusShare::summary() const
 {
     const ShareCounters &count = counters();
-    return Tr::tr("%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; "
-                  "%5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s).")
+    return BusShareTr::tr(
+               "%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; "
+               "%5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s).")
         .arg(count.framesFromProgram)
         .arg(count.bytesFromProgram)
         .arg(count.framesToProgram)

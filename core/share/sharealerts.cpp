@@ -9,7 +9,7 @@ namespace share {
 
 namespace {
 
-struct Tr
+struct ShareAlertsTr
 {
     Q_DECLARE_TR_FUNCTIONS(ShareAlerts)
 };
@@ -54,13 +54,14 @@ QVector<ShareAlert> ShareAlerts::inspect(const SharedTransaction &transaction,
         const quint8 id = quint8(reply.at(2));
         const quint8 error = quint8(reply.at(4));
         set(alerts, error & kOverloadBit, QStringLiteral("overload"), id,
-            Tr::tr("Servo %1 reports overload: it stopped holding (torque off) until it is "
-                   "switched on again. Look for a blocked joint or a load too heavy for it.")
+            ShareAlertsTr::tr(
+                "Servo %1 reports overload: it stopped holding (torque off) until it is "
+                "switched on again. Look for a blocked joint or a load too heavy for it.")
                 .arg(id),
             time);
         const quint8 others = error & quint8(~kOverloadBit);
         set(alerts, others != 0, QStringLiteral("reply-error"), id,
-            Tr::tr("Servo %1 answers with error bits set: %2.")
+            ShareAlertsTr::tr("Servo %1 answers with error bits set: %2.")
                 .arg(id)
                 .arg(feetech::statusBitNames(others).join(QStringLiteral(", "))),
             time);
@@ -77,8 +78,9 @@ QVector<ShareAlert> ShareAlerts::inspect(const SharedTransaction &transaction,
         if (m_garbled.value(id) >= kGarbledAnswers
             && !m_active.contains(key(QStringLiteral("shared-id"), id)))
             set(alerts, true, QStringLiteral("shared-id"), id,
-                Tr::tr("Answers at ID %1 come garbled again and again: two servos may share "
-                       "this ID. Connect them one at a time and give each its own ID.")
+                ShareAlertsTr::tr(
+                    "Answers at ID %1 come garbled again and again: two servos may share "
+                    "this ID. Connect them one at a time and give each its own ID.")
                     .arg(id),
                 time);
     }
@@ -94,8 +96,9 @@ void ShareAlerts::inspectServo(QVector<ShareAlert> &alerts, quint8 id, const Obs
     if (temperature && maxTemperature)
         set(alerts, *temperature >= *maxTemperature - kTemperatureMargin,
             QStringLiteral("temperature-high"), id,
-            Tr::tr("Servo %1 is at %2 °C, within %3 °C of its maximum (%4 °C): it will soon "
-                   "cut its torque. Let it cool, or lighten its load.")
+            ShareAlertsTr::tr(
+                "Servo %1 is at %2 °C, within %3 °C of its maximum (%4 °C): it will soon "
+                "cut its torque. Let it cool, or lighten its load.")
                 .arg(id)
                 .arg(*temperature)
                 .arg(kTemperatureMargin)
@@ -107,7 +110,8 @@ void ShareAlerts::inspectServo(QVector<ShareAlert> &alerts, quint8 id, const Obs
     if (voltage && minVoltage && maxVoltage && *maxVoltage > 0)
         set(alerts, *voltage < *minVoltage || *voltage > *maxVoltage,
             QStringLiteral("voltage-out-of-range"), id,
-            Tr::tr("Servo %1 measures %2 V, outside its limits %3-%4 V: check the supply.")
+            ShareAlertsTr::tr(
+                "Servo %1 measures %2 V, outside its limits %3-%4 V: check the supply.")
                 .arg(id)
                 .arg(*voltage, 0, 'f', 1)
                 .arg(*minVoltage, 0, 'f', 1)
@@ -116,8 +120,9 @@ void ShareAlerts::inspectServo(QVector<ShareAlert> &alerts, quint8 id, const Obs
     const auto status = servos.value(id, u"status");
     if (status && (*status & kOverloadBit))
         set(alerts, true, QStringLiteral("overload"), id,
-            Tr::tr("Servo %1 reports overload: it stopped holding (torque off) until it is "
-                   "switched on again. Look for a blocked joint or a load too heavy for it.")
+            ShareAlertsTr::tr(
+                "Servo %1 reports overload: it stopped holding (torque off) until it is "
+                "switched on again. Look for a blocked joint or a load too heavy for it.")
                 .arg(id),
             timeUs);
     const auto lock = servos.value(id, u"lock");
@@ -135,22 +140,24 @@ void ShareAlerts::inspectWrites(QVector<ShareAlert> &alerts, const SharedTransac
             continue;
         if (access.key == QLatin1String("phase") && (access.value & kMultiTurnPhaseBit))
             raise(alerts, QStringLiteral("multi-turn"), access.id,
-                  Tr::tr("The program set phase bit 4 of servo %1 (multi-turn): its positions "
-                         "will leave 0-4095 and a calibration made without it no longer fits.")
+                  ShareAlertsTr::tr(
+                      "The program set phase bit 4 of servo %1 (multi-turn): its positions "
+                      "will leave 0-4095 and a calibration made without it no longer fits.")
                       .arg(access.id),
                   transaction.timeUs);
         if (access.key == QLatin1String("torque_enable") && access.value == 1) {
             const auto goal = servos.value(access.id, u"goal_position");
             const auto present = servos.value(access.id, u"present_position");
             if (goal && present && qAbs(*goal - *present) > kJumpSteps)
-                raise(alerts, QStringLiteral("torque-jump"), access.id,
-                      Tr::tr("The program switched torque on at servo %1 with its goal %2 "
-                             "steps from where it stands (%3 → %4): the horn jumps.")
-                          .arg(access.id)
-                          .arg(qAbs(*goal - *present))
-                          .arg(*present)
-                          .arg(*goal),
-                      transaction.timeUs);
+                raise(
+                    alerts, QStringLiteral("torque-jump"), access.id,
+                    ShareAlertsTr::tr("The program switched torque on at servo %1 with its goal %2 "
+                                      "steps from where it stands (%3 → %4): the horn jumps.")
+                        .arg(access.id)
+                        .arg(qAbs(*goal - *present))
+                        .arg(*present)
+                        .arg(*goal),
+                    transaction.timeUs);
         }
         if (access.key == QLatin1String("lock")) {
             if (access.value == 0)
@@ -170,8 +177,9 @@ QVector<ShareAlert> ShareAlerts::tick(qint64 nowUs)
     for (auto it = m_unlockedSinceUs.cbegin(); it != m_unlockedSinceUs.cend(); ++it) {
         if (nowUs - it.value() >= kUnlockedUs)
             set(alerts, true, QStringLiteral("eeprom-unlocked"), it.key(),
-                Tr::tr("The program unlocked the EEPROM of servo %1 and has not locked it "
-                       "again: a stray write now changes its settings for good.")
+                ShareAlertsTr::tr(
+                    "The program unlocked the EEPROM of servo %1 and has not locked it "
+                    "again: a stray write now changes its settings for good.")
                     .arg(it.key()),
                 nowUs);
     }

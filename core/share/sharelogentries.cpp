@@ -10,7 +10,7 @@ namespace share {
 
 namespace {
 
-struct Tr
+struct ShareLogEntriesTr
 {
     Q_DECLARE_TR_FUNCTIONS(ShareLogEntries)
 };
@@ -24,7 +24,7 @@ seriallink::PacketLogEntry ShareLogEntries::entry(const RecordedFrame &frame, qi
     entry.bytes = frame.bytes;
     if (frame.direction == FrameDirection::Note) {
         entry.direction = seriallink::Direction::In;
-        entry.summary = Tr::tr("Shared bus: %1").arg(frame.note);
+        entry.summary = ShareLogEntriesTr::tr("Shared bus: %1").arg(frame.note);
         return entry;
     }
     const bool request =
@@ -35,8 +35,9 @@ seriallink::PacketLogEntry ShareLogEntries::entry(const RecordedFrame &frame, qi
     if (!feetech::decodePacket(frame.bytes)) {
         // Passed on all the same: the program hears exactly what the wire carried.
         entry.direction = seriallink::Direction::Stray;
-        entry.error = program ? Tr::tr("Not a whole frame (passed on to the other program)")
-                              : Tr::tr("Not a whole frame");
+        entry.error = program
+            ? ShareLogEntriesTr::tr("Not a whole frame (passed on to the other program)")
+            : ShareLogEntriesTr::tr("Not a whole frame");
         return entry;
     }
     QByteArray &lastRequest = program ? m_programRequest : m_ownRequest;
@@ -44,8 +45,8 @@ seriallink::PacketLogEntry ShareLogEntries::entry(const RecordedFrame &frame, qi
         feetech::describeFrame(frame.bytes, request ? QByteArray() : lastRequest);
     if (request)
         lastRequest = frame.bytes;
-    entry.summary = program ? Tr::tr("Other program: %1").arg(meaning)
-                            : Tr::tr("ServoBench (shared bus): %1").arg(meaning);
+    entry.summary = program ? ShareLogEntriesTr::tr("Other program: %1").arg(meaning)
+                            : ShareLogEntriesTr::tr("ServoBench (shared bus): %1").arg(meaning);
     return entry;
 }
 

@@ -11,7 +11,7 @@ namespace share {
 
 namespace {
 
-struct Tr
+struct ShareRecordingTr
 {
     Q_DECLARE_TR_FUNCTIONS(ShareRecording)
 };
@@ -98,8 +98,9 @@ std::optional<QVector<RecordedFrame>> ShareRecording::load(const QString &path,
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
         return fail(util::FileError(util::FileError::Code::CannotRead, file.errorString()));
     if (file.size() > kLargestRecording)
-        return fail(util::FileError(util::FileError::Code::TooLarge,
-                                    Tr::tr("it is larger than any recording (1 GiB)")));
+        return fail(
+            util::FileError(util::FileError::Code::TooLarge,
+                            ShareRecordingTr::tr("it is larger than any recording (1 GiB)")));
     QVector<RecordedFrame> frames;
     int lineNumber = 0;
     bool sawMagic = false;
@@ -113,16 +114,17 @@ std::optional<QVector<RecordedFrame>> ShareRecording::load(const QString &path,
             continue;
         }
         const auto badLine = [&] {
-            return fail(
-                util::FileError(
-                    util::FileError::Code::BadValue,
-                    Tr::tr("line %1 is not \"<seconds> <direction> <hex>\"").arg(lineNumber))
-                    .withField(QString::number(lineNumber))
-                    .withValue(line.left(60)));
+            return fail(util::FileError(
+                            util::FileError::Code::BadValue,
+                            ShareRecordingTr::tr("line %1 is not \"<seconds> <direction> <hex>\"")
+                                .arg(lineNumber))
+                            .withField(QString::number(lineNumber))
+                            .withValue(line.left(60)));
         };
         if (!sawMagic)
-            return fail(util::FileError(util::FileError::Code::WrongFormat,
-                                        Tr::tr("this is no ServoBench share recording")));
+            return fail(
+                util::FileError(util::FileError::Code::WrongFormat,
+                                ShareRecordingTr::tr("this is no ServoBench share recording")));
         const QStringList parts = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
         if (parts.size() < 2)
             return badLine();
@@ -146,7 +148,7 @@ std::optional<QVector<RecordedFrame>> ShareRecording::load(const QString &path,
     }
     if (!sawMagic)
         return fail(util::FileError(util::FileError::Code::WrongFormat,
-                                    Tr::tr("this is no ServoBench share recording")));
+                                    ShareRecordingTr::tr("this is no ServoBench share recording")));
     return frames;
 }
 

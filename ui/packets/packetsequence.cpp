@@ -19,7 +19,7 @@
 
 namespace {
 
-struct Tr
+struct PacketSequenceTr
 {
     Q_DECLARE_TR_FUNCTIONS(PacketSequence)
 };
@@ -36,13 +36,15 @@ using feetech::Instruction;
 
 util::JsonFormat sequenceFormat()
 {
-    return {kFormatMarker,
-            kFormatVersion,
-            {kFramesKey},
-            Tr::tr("not a ServoBench packet sequence (the document is not a JSON object)"),
-            Tr::tr("not a ServoBench packet sequence (\"%1\" is not \"%2\")"),
-            Tr::tr("the packet sequence has format version %1 and was written by a newer "
-                   "ServoBench; this version reads format version %2 and older")};
+    return {
+        kFormatMarker,
+        kFormatVersion,
+        {kFramesKey},
+        PacketSequenceTr::tr(
+            "not a ServoBench packet sequence (the document is not a JSON object)"),
+        PacketSequenceTr::tr("not a ServoBench packet sequence (\"%1\" is not \"%2\")"),
+        PacketSequenceTr::tr("the packet sequence has format version %1 and was written by a newer "
+                             "ServoBench; this version reads format version %2 and older")};
 }
 
 // The EEPROM registers of any family that bytes [address, address + size) touch, by label.
@@ -119,13 +121,15 @@ QString riskOf(const PacketFrame &frame)
     if (frame.protocol == PacketFrame::Protocol::Ptk)
         return frame.expectsReply
             ? QString()
-            : Tr::tr("It writes to the PTK servo, outside the verified write sequence of its "
-                     "settings page.");
+            : PacketSequenceTr::tr(
+                "It writes to the PTK servo, outside the verified write sequence of its "
+                "settings page.");
     const auto packet = feetech::decodePacket(frame.bytes);
     if (!packet)
         return {};
-    const QString who = packet->id == feetech::kBroadcastId ? Tr::tr("every servo on the bus")
-                                                            : Tr::tr("servo %1").arg(packet->id);
+    const QString who = packet->id == feetech::kBroadcastId
+        ? PacketSequenceTr::tr("every servo on the bus")
+        : PacketSequenceTr::tr("servo %1").arg(packet->id);
     QStringList written;
     switch (Instruction(packet->code)) {
     case Instruction::Write:
@@ -140,19 +144,22 @@ QString riskOf(const PacketFrame &frame)
                                         quint8(packet->parameters.at(1)));
         break;
     case Instruction::Recovery:
-        return Tr::tr("It restores the factory values of %1 (its settings are lost).").arg(who);
+        return PacketSequenceTr::tr("It restores the factory values of %1 (its settings are lost).")
+            .arg(who);
     case Instruction::Calibrate:
-        return Tr::tr("It makes the present position the middle of %1 (written to EEPROM).")
+        return PacketSequenceTr::tr(
+                   "It makes the present position the middle of %1 (written to EEPROM).")
             .arg(who);
     case Instruction::Backup:
-        return Tr::tr("It asks %1 to store its settings (an EEPROM write).").arg(who);
+        return PacketSequenceTr::tr("It asks %1 to store its settings (an EEPROM write).").arg(who);
     default:
         break;
     }
     if (written.isEmpty())
         return {};
-    return Tr::tr("It writes %1 of %2, in EEPROM: the servo keeps it when powered off, and a "
-                  "wrong ID or baud rate makes it answer elsewhere.")
+    return PacketSequenceTr::tr(
+               "It writes %1 of %2, in EEPROM: the servo keeps it when powered off, and a "
+               "wrong ID or baud rate makes it answer elsewhere.")
         .arg(written.join(QStringLiteral(", ")), who);
 }
 
@@ -194,8 +201,9 @@ std::optional<QVector<PacketFrame>> load(const QString &path, util::FileError *e
     const auto failOn = [&](Code code, const QString &reason, const char *field = nullptr) {
         return fail(util::FileError(code, reason).withField(QLatin1String(field)));
     };
-    const auto json = util::readFile(path, util::kMaxJsonFileBytes,
-                                     Tr::tr("too large to be a packet sequence"), &why);
+    const auto json =
+        util::readFile(path, util::kMaxJsonFileBytes,
+                       PacketSequenceTr::tr("too large to be a packet sequence"), &why);
     if (!json)
         return fail(why);
     const auto root = util::parseVersionedObject(*json, sequenceFormat(), &why);
@@ -203,29 +211,35 @@ std::optional<QVector<PacketFrame>> load(const QString &path, util::FileError *e
         return fail(why);
     const QJsonValue list = root->value(QLatin1String(kFramesKey));
     if (!list.isArray())
-        return failOn(Code::WrongType,
-                      Tr::tr("\"%1\" must be a list of frames").arg(QLatin1String(kFramesKey)),
-                      kFramesKey);
+        return failOn(
+            Code::WrongType,
+            PacketSequenceTr::tr("\"%1\" must be a list of frames").arg(QLatin1String(kFramesKey)),
+            kFramesKey);
     const QJsonArray entries = list.toArray();
     if (entries.size() > kMaxFrames)
-        return failOn(Code::TooLarge, Tr::tr("more than %1 frames").arg(kMaxFrames), kFramesKey);
+        return failOn(Code::TooLarge, PacketSequenceTr::tr("more than %1 frames").arg(kMaxFrames),
+                      kFramesKey);
     QVector<PacketFrame> frames;
     for (int i = 0; i < entries.size(); ++i) {
         const QJsonObject entry = entries.at(i).toObject();
         if (!entries.at(i).isObject())
-            return failOn(Code::WrongType,
-                          Tr::tr("frame %1 is not an object of protocol, hex and baud").arg(i + 1));
+            return failOn(
+                Code::WrongType,
+                PacketSequenceTr::tr("frame %1 is not an object of protocol, hex and baud")
+                    .arg(i + 1));
         if (const auto unknown = util::firstUnknownKey(entry, {kProtocolKey, kHexKey, kBaudKey}))
-            return fail(
-                util::FileError(
-                    Code::UnknownKey,
-                    Tr::tr("frame %1 is not an object of protocol, hex and baud").arg(i + 1))
-                    .withField(*unknown));
+            return fail(util::FileError(Code::UnknownKey,
+                                        PacketSequenceTr::tr(
+                                            "frame %1 is not an object of protocol, hex and baud")
+                                            .arg(i + 1))
+                            .withField(*unknown));
         const QString protocol = entry.value(QLatin1String(kProtocolKey)).toString();
         const auto bytes = util::parseHex(entry.value(QLatin1String(kHexKey)).toString());
         if (!bytes)
-            return failOn(Code::BadValue,
-                          Tr::tr("frame %1: its hex is not hexadecimal bytes").arg(i + 1), kHexKey);
+            return failOn(
+                Code::BadValue,
+                PacketSequenceTr::tr("frame %1: its hex is not hexadecimal bytes").arg(i + 1),
+                kHexKey);
         std::optional<PacketFrame> frame;
         if (protocol == QLatin1String("feetech")) {
             const QJsonValue baud = entry.value(QLatin1String(kBaudKey));
@@ -233,15 +247,17 @@ std::optional<QVector<PacketFrame>> load(const QString &path, util::FileError *e
         } else if (protocol == QLatin1String("ptk")) {
             frame = ptkFrame(*bytes);
         } else {
-            return failOn(Code::BadValue,
-                          Tr::tr("frame %1: the protocol must be feetech or ptk").arg(i + 1),
-                          kProtocolKey);
-        }
-        if (!frame)
             return failOn(
                 Code::BadValue,
-                Tr::tr("frame %1 is not a whole %2 frame at a known rate").arg(i + 1).arg(protocol),
-                kHexKey);
+                PacketSequenceTr::tr("frame %1: the protocol must be feetech or ptk").arg(i + 1),
+                kProtocolKey);
+        }
+        if (!frame)
+            return failOn(Code::BadValue,
+                          PacketSequenceTr::tr("frame %1 is not a whole %2 frame at a known rate")
+                              .arg(i + 1)
+                              .arg(protocol),
+                          kHexKey);
         frames.append(*frame);
     }
     return frames;

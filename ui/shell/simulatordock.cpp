@@ -26,7 +26,7 @@
 
 namespace {
 
-enum Column {
+enum ServoColumn {
     PlaceColumn,
     IdColumn,
     RateColumn,

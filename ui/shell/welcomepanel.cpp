@@ -18,7 +18,13 @@ namespace {
 
 constexpr int kRefreshMs = 2000;
 
-enum Column { PortColumn, DescriptionColumn, ManufacturerColumn, SerialColumn, UsbIdColumn };
+enum PortColumnIndex {
+    PortColumn,
+    DescriptionColumn,
+    ManufacturerColumn,
+    SerialColumn,
+    UsbIdColumn
+};
 
 QString usbId(const QSerialPortInfo &info)
 {

@@ -16,7 +16,7 @@
 namespace {
 
 // The parameter page's context: its translations were made there.
-struct Tr
+struct ParameterPageTr
 {
     Q_DECLARE_TR_FUNCTIONS(ParameterPage)
 };
@@ -68,7 +68,8 @@ QWidget *create(const model::Definition &definition, QObject *context,
         }
         combo->setCurrentIndex(-1);
         QObject::connect(combo, &QComboBox::currentIndexChanged, context, changed);
-        range = Tr::tr("%1: %2").arg(definition.label, labels.join(Tr::tr(" or ")));
+        range = ParameterPageTr::tr("%1: %2").arg(definition.label,
+                                                  labels.join(ParameterPageTr::tr(" or ")));
         editor = combo;
     } else {
         QAbstractSpinBox *spin = nullptr;
@@ -93,7 +94,7 @@ QWidget *create(const model::Definition &definition, QObject *context,
         spin->setCorrectionMode(QAbstractSpinBox::CorrectToNearestValue);
         QObject::connect(spin, &QAbstractSpinBox::editingFinished, context, finished);
         const QString unit = definition.unit.isEmpty() ? QString() : u' ' + definition.unit;
-        range = Tr::tr("%1: %2 to %3%4")
+        range = ParameterPageTr::tr("%1: %2 to %3%4")
                     .arg(definition.label, userText(definition, definition.minimum),
                          userText(definition, definition.maximum), unit);
         editor = spin;
@@ -144,10 +145,10 @@ void showUnread(QWidget *editor)
     if (auto *combo = qobject_cast<QComboBox *>(editor)) {
         combo->setCurrentIndex(-1);
     } else if (auto *spin = qobject_cast<QSpinBox *>(editor)) {
-        spin->setSpecialValueText(Tr::tr("—"));
+        spin->setSpecialValueText(ParameterPageTr::tr("—"));
         spin->setValue(spin->minimum());
     } else if (auto *spin = qobject_cast<QDoubleSpinBox *>(editor)) {
-        spin->setSpecialValueText(Tr::tr("—"));
+        spin->setSpecialValueText(ParameterPageTr::tr("—"));
         spin->setValue(spin->minimum());
     }
 }

@@ -11,7 +11,7 @@
 
 namespace {
 
-struct Tr
+struct ProfileActionsTr
 {
     Q_DECLARE_TR_FUNCTIONS(ProfileActions)
 };
@@ -25,18 +25,19 @@ namespace { } // namespace
 QString chooseSavePath(QWidget *parent, const QString &suggestedName)
 {
     const QString path = QFileDialog::getSaveFileName(
-        parent, Tr::tr("Save profile"),
+        parent, ProfileActionsTr::tr("Save profile"),
         recentfiles::directory(recentfiles::Kind::Profile) + u'/' + suggestedName,
-        Tr::tr("ServoBench profiles (*.json)"));
+        ProfileActionsTr::tr("ServoBench profiles (*.json)"));
     recentfiles::add(recentfiles::Kind::Profile, path);
     return path;
 }
 
 QString chooseLoadPath(QWidget *parent)
 {
-    const QString path = QFileDialog::getOpenFileName(
-        parent, Tr::tr("Load profile"), recentfiles::directory(recentfiles::Kind::Profile),
-        Tr::tr("ServoBench profiles (*.json)"));
+    const QString path =
+        QFileDialog::getOpenFileName(parent, ProfileActionsTr::tr("Load profile"),
+                                     recentfiles::directory(recentfiles::Kind::Profile),
+                                     ProfileActionsTr::tr("ServoBench profiles (*.json)"));
     recentfiles::add(recentfiles::Kind::Profile, path);
     return path;
 }
@@ -48,11 +49,12 @@ bool save(const QString &path, const model::ParameterModel &parameters, const QS
     const profile::Profile saved = profile::fromModel(parameters, family, modelName, withEdits);
     for (const model::Definition &definition : definitions) {
         if (!saved.value(definition.key)) {
-            util::report(error,
-                         util::FileError(util::FileError::Code::NothingToSave,
-                                         Tr::tr("Read the servo before saving a profile: "
-                                                "not every value is known."))
-                             .withField(definition.key));
+            util::report(
+                error,
+                util::FileError(util::FileError::Code::NothingToSave,
+                                ProfileActionsTr::tr("Read the servo before saving a profile: "
+                                                     "not every value is known."))
+                    .withField(definition.key));
             return false;
         }
     }
@@ -67,7 +69,7 @@ LoadOutcome loadAsEdits(QWidget *parent, const QString &path, const QString &fam
     const auto loaded = profile::load(path, family, definitions, &why);
     if (!loaded) {
         if (error)
-            *error = Tr::tr("The profile was not loaded: %1").arg(why.describe());
+            *error = ProfileActionsTr::tr("The profile was not loaded: %1").arg(why.describe());
         return LoadOutcome::Failed;
     }
     const QVector<profile::DiffRow> rows = profile::diff(*loaded, parameters);
@@ -85,9 +87,9 @@ QString outcomeMessage(LoadOutcome outcome)
 {
     switch (outcome) {
     case LoadOutcome::AlreadyEqual:
-        return Tr::tr("The servo already holds every value of this profile");
+        return ProfileActionsTr::tr("The servo already holds every value of this profile");
     case LoadOutcome::Loaded:
-        return Tr::tr("Profile loaded as edits: review them, then Apply");
+        return ProfileActionsTr::tr("Profile loaded as edits: review them, then Apply");
     case LoadOutcome::Failed:
     case LoadOutcome::Cancelled:
         break;

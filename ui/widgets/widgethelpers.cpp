@@ -2,6 +2,7 @@
 #include "widgethelpers.h"
 
 #include <QHeaderView>
+#include <QLabel>
 #include <QPushButton>
 #include <QTableView>
 
@@ -15,6 +16,13 @@ QPushButton *actionButton(const QString &text, const char *name, const QString &
     button->setToolTip(tip);
     button->setAutoDefault(false);
     return button;
+}
+
+QLabel *wrappedLabel(const QString &text, QWidget *parent)
+{
+    auto *label = new QLabel(text, parent);
+    label->setWordWrap(true);
+    return label;
 }
 
 void shrinkToOneRow(QTableView *view)

@@ -4,6 +4,7 @@
 #include <QString>
 #include <QStringList>
 
+class QLabel;
 class QPushButton;
 class QTableView;
 class QWidget;
@@ -19,6 +20,9 @@ QPushButton *actionButton(const QString &text, const char *name, const QString &
 // some 30 pixels more): on a 1366x768 screen the pages need the height. Call it once the rows'
 // default height is set.
 void shrinkToOneRow(QTableView *view);
+
+// A label that wraps its text, so a long sentence (or its translation) takes lines, not width.
+QLabel *wrappedLabel(const QString &text, QWidget *parent);
 
 // Steps for the user as a rich-text bullet list, each step's text escaped (the wizards' "do this,
 // then this").

@@ -2,16 +2,7 @@
 #include "arguments.h"
 
 #include "hex.h"
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file (lupdate needs it spelled out).
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
+#include "servoctltr.h"
 
 namespace cli {
 
@@ -34,20 +25,20 @@ Arguments::Arguments(const QStringList &raw, const QSet<QString> &valueOptions,
         }
         if (flagOptions.contains(name)) {
             if (hasValue)
-                throw UsageError {Tr::tr("--%1 takes no value").arg(name)};
+                throw UsageError {ServoctlTr::tr("--%1 takes no value").arg(name)};
             m_flags.insert(name);
         } else if (valueOptions.contains(name)) {
             if (!hasValue) {
                 if (i + 1 >= raw.size())
-                    throw UsageError {Tr::tr("--%1 needs a value").arg(name)};
+                    throw UsageError {ServoctlTr::tr("--%1 needs a value").arg(name)};
                 value = raw.at(++i);
             }
             // "--id 1 --id 2": which one was meant is not for servoctl to guess.
             if (m_values.contains(name))
-                throw UsageError {Tr::tr("--%1 is given twice").arg(name)};
+                throw UsageError {ServoctlTr::tr("--%1 is given twice").arg(name)};
             m_values.insert(name, value);
         } else {
-            throw UsageError {Tr::tr("unknown option --%1").arg(name)};
+            throw UsageError {ServoctlTr::tr("unknown option --%1").arg(name)};
         }
     }
 }
@@ -56,9 +47,10 @@ qint64 integerOption(const Arguments &args, const QString &name, qint64 minimum,
 {
     const auto value = util::parseInteger(args.value(name));
     if (!value)
-        throw UsageError {Tr::tr("--%1: \"%2\" is not a number").arg(name, args.value(name))};
+        throw UsageError {
+            ServoctlTr::tr("--%1: \"%2\" is not a number").arg(name, args.value(name))};
     if (*value < minimum || *value > maximum)
-        throw UsageError {Tr::tr("--%1: %2 is out of range (%3 to %4)")
+        throw UsageError {ServoctlTr::tr("--%1: %2 is out of range (%3 to %4)")
                               .arg(name)
                               .arg(*value)
                               .arg(minimum)
@@ -82,7 +74,7 @@ std::optional<double> durationOption(const Arguments &args)
     bool ok = false;
     const double duration = args.value(QStringLiteral("duration")).toDouble(&ok);
     if (!ok || !(duration > 0))
-        throw UsageError {Tr::tr("--duration must be a number of seconds above 0")};
+        throw UsageError {ServoctlTr::tr("--duration must be a number of seconds above 0")};
     return duration;
 }
 
@@ -92,16 +84,17 @@ QVector<quint8> idList(const QString &text, int maximumId)
     const auto parseId = [&](const QString &part) {
         const auto value = util::parseInteger(part);
         if (!value)
-            throw UsageError {Tr::tr("--ids: \"%1\" is not an ID").arg(part)};
+            throw UsageError {ServoctlTr::tr("--ids: \"%1\" is not an ID").arg(part)};
         if (*value < 0 || *value > maximumId)
-            throw UsageError {Tr::tr("--ids: ID %1 is over %2").arg(*value).arg(maximumId)};
+            throw UsageError {ServoctlTr::tr("--ids: ID %1 is over %2").arg(*value).arg(maximumId)};
         return int(*value);
     };
     const QStringList parts = text.split(u',');
     for (const QString &part : parts) {
         // "1,,2" or a trailing comma is a slip the user should see, not one to guess past.
         if (part.trimmed().isEmpty() && parts.size() > 1)
-            throw UsageError {Tr::tr("--ids: \"%1\" has an empty place between commas").arg(text)};
+            throw UsageError {
+                ServoctlTr::tr("--ids: \"%1\" has an empty place between commas").arg(text)};
         if (part.trimmed().isEmpty())
             continue;
         const int dash = part.indexOf(u'-', 1);
@@ -109,7 +102,7 @@ QVector<quint8> idList(const QString &text, int maximumId)
             const int first = parseId(part.left(dash));
             const int last = parseId(part.mid(dash + 1));
             if (last < first)
-                throw UsageError {Tr::tr("--ids: the range %1 runs backwards").arg(part)};
+                throw UsageError {ServoctlTr::tr("--ids: the range %1 runs backwards").arg(part)};
             for (int id = first; id <= last; ++id)
                 ids.append(quint8(id));
         } else {
@@ -117,7 +110,7 @@ QVector<quint8> idList(const QString &text, int maximumId)
         }
     }
     if (ids.isEmpty())
-        throw UsageError {Tr::tr("--ids needs at least one ID")};
+        throw UsageError {ServoctlTr::tr("--ids needs at least one ID")};
     return ids;
 }
 

@@ -3,21 +3,13 @@
 
 #include "arguments.h"
 #include "hex.h"
+#include "servoctltr.h"
 #include "unixsignals.h"
 
 #include <QCoreApplication>
 #include <QTimer>
 
 #include <csignal>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -30,7 +22,7 @@ seriallink::EchoMode echoModeOption(const Arguments &args)
         return seriallink::EchoMode::On;
     if (echo == QLatin1String("off"))
         return seriallink::EchoMode::Off;
-    throw UsageError {Tr::tr("--echo must be auto, on or off")};
+    throw UsageError {ServoctlTr::tr("--echo must be auto, on or off")};
 }
 
 void runUntilInterrupted(QEventLoop &loop, std::optional<double> seconds,

@@ -4,6 +4,7 @@
 
 #include "armcalibration.h"
 #include "lerobotcalibration.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -22,16 +23,6 @@
 #ifdef Q_OS_UNIX
 #include <unistd.h>
 #endif
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -104,17 +95,18 @@ QStringList FeetechCalibrationCommands::jointNames(const QVector<quint8> &ids) c
     }
     names = m_args.value(QStringLiteral("names")).split(u',');
     if (names.size() != ids.size())
-        throw UsageError {Tr::tr("--names gives %1 name(s) for %2 servo(s) in --ids")
+        throw UsageError {ServoctlTr::tr("--names gives %1 name(s) for %2 servo(s) in --ids")
                               .arg(names.size())
                               .arg(ids.size())};
     for (int i = 0; i < names.size(); ++i) {
         names[i] = names.at(i).trimmed();
         if (!feetech::isLeRobotMotorName(names.at(i)))
-            throw UsageError {Tr::tr("--names: \"%1\" is not a joint name (letters, digits and "
-                                     "_, a letter first)")
-                                  .arg(names.at(i))};
+            throw UsageError {
+                ServoctlTr::tr("--names: \"%1\" is not a joint name (letters, digits and "
+                               "_, a letter first)")
+                    .arg(names.at(i))};
         if (names.indexOf(names.at(i)) != i)
-            throw UsageError {Tr::tr("--names: \"%1\" is given twice").arg(names.at(i))};
+            throw UsageError {ServoctlTr::tr("--names: \"%1\" is given twice").arg(names.at(i))};
     }
     return names;
 }
@@ -136,8 +128,8 @@ FeetechCalibrationCommands::identifyJoints(FeetechDevice &device, const QVector<
             return std::nullopt;
         }
         if (!servo->hasTable() || !feetech::calibrationLimits(servo->table())) {
-            fail(Tr::tr("servo %1 (%2) has no position offset on a 4096-step encoder: it "
-                        "cannot be calibrated; nothing was written")
+            fail(ServoctlTr::tr("servo %1 (%2) has no position offset on a 4096-step encoder: it "
+                                "cannot be calibrated; nothing was written")
                      .arg(id)
                      .arg(servo->model.name));
             return std::nullopt;
@@ -160,9 +152,10 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
     QStringList names;
     if (m_args.has(QStringLiteral("update"))) {
         if (m_args.has(QStringLiteral("out")) || m_args.has(QStringLiteral("names")))
-            throw UsageError {Tr::tr("%1 --update FILE takes the joints' names from the file and "
-                                     "saves to it: no --out or --names")
-                                  .arg(what)};
+            throw UsageError {
+                ServoctlTr::tr("%1 --update FILE takes the joints' names from the file and "
+                               "saves to it: no --out or --names")
+                    .arg(what)};
         util::FileError error;
         updated = feetech::loadLeRobotCalibration(m_args.value(QStringLiteral("update")), &error);
         if (!updated)
@@ -171,7 +164,7 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
             const feetech::LeRobotMotor *motor = feetech::leRobotMotorWithId(*updated, id);
             if (!motor)
                 throw UsageError {
-                    Tr::tr("servo %1 is no joint of %2")
+                    ServoctlTr::tr("servo %1 is no joint of %2")
                         .arg(id)
                         .arg(QDir::toNativeSeparators(m_args.value(QStringLiteral("update"))))};
             names.append(motor->name);
@@ -189,19 +182,20 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
         }
         for (const quint8 id : std::as_const(fullTurn)) {
             if (!ids.contains(id))
-                throw UsageError {Tr::tr("--full-turn: servo %1 is not in --ids").arg(id)};
+                throw UsageError {ServoctlTr::tr("--full-turn: servo %1 is not in --ids").arg(id)};
         }
     }
     const std::optional<double> duration = durationOption(m_args);
     if (!m_args.has(QStringLiteral("out")) && !updated)
         throw UsageError {
-            Tr::tr("%1 needs --out FILE: the LeRobot calibration file to save").arg(what)};
+            ServoctlTr::tr("%1 needs --out FILE: the LeRobot calibration file to save").arg(what)};
     const QString out = m_args.value(updated ? QStringLiteral("update") : QStringLiteral("out"));
     checkFolder(out);
     if (!duration && !isTerminal(stdin))
-        throw UsageError {Tr::tr("%1 needs --duration S when standard input is not a terminal "
-                                 "(Enter on a terminal ends the recording otherwise)")
-                              .arg(what)};
+        throw UsageError {
+            ServoctlTr::tr("%1 needs --duration S when standard input is not a terminal "
+                           "(Enter on a terminal ends the recording otherwise)")
+                .arg(what)};
     const bool dryRun = m_args.flag(QStringLiteral("dry-run"));
 
     FeetechDevice device(m_args, m_output);
@@ -226,7 +220,7 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
     for (const ServoInfo &servo : std::as_const(*servos)) {
         const Programmed off = writeVerified(device, servo, {{QStringLiteral("torque_enable"), 0}});
         if (!isVerified(off))
-            return fail(Tr::tr("servo %1: torque could not be switched off: %2")
+            return fail(ServoctlTr::tr("servo %1: torque could not be switched off: %2")
                             .arg(servo.id)
                             .arg(problemText(off)));
     }
@@ -253,7 +247,7 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
             report.insert(QStringLiteral("refusal"), result.refusal);
             reports.append(report);
             if (!m_output.json)
-                m_output.out << Tr::tr("%1 (servo %2): refused, nothing written: %3")
+                m_output.out << ServoctlTr::tr("%1 (servo %2): refused, nothing written: %3")
                                     .arg(joint.name)
                                     .arg(joint.id)
                                     .arg(result.refusal)
@@ -273,18 +267,18 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
             report.insert(it.key(), it.value());
         reports.append(report);
         if (!m_output.json) {
-            m_output.out << Tr::tr("%1 (servo %2): offset %3, limits %4 to %5")
+            m_output.out << ServoctlTr::tr("%1 (servo %2): offset %3, limits %4 to %5")
                                 .arg(joint.name)
                                 .arg(joint.id)
                                 .arg(result.offset)
                                 .arg(result.minimumLimit)
                                 .arg(result.maximumLimit);
             if (dryRun)
-                m_output.out << Tr::tr(" (not written: --dry-run)");
+                m_output.out << ServoctlTr::tr(" (not written: --dry-run)");
             else if (isVerified(outcome))
-                m_output.out << Tr::tr(", written and verified");
+                m_output.out << ServoctlTr::tr(", written and verified");
             else
-                m_output.out << Tr::tr(", NOT verified: %1").arg(problemText(outcome));
+                m_output.out << ServoctlTr::tr(", NOT verified: %1").arg(problemText(outcome));
             m_output.out << '\n';
         }
         if (!dryRun && !isVerified(outcome)) {
@@ -305,7 +299,7 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
                                {QStringLiteral("file"), fileSaved ? QJsonValue(out) : QJsonValue()},
                                {QStringLiteral("joints"), reports}});
     } else if (fileSaved) {
-        m_output.out << Tr::tr("saved %n joint(s) to %1", nullptr, int(saved.size()))
+        m_output.out << ServoctlTr::tr("saved %n joint(s) to %1", nullptr, int(saved.size()))
                             .arg(QDir::toNativeSeparators(out))
                      << '\n';
         m_output.out.flush();
@@ -313,10 +307,10 @@ int FeetechCalibrationCommands::calibrate(const QString &what, const QStringList
     if (error)
         return fail(error.describe());
     if (saved.isEmpty())
-        return fail(Tr::tr("no joint could be calibrated; %1 was not written")
+        return fail(ServoctlTr::tr("no joint could be calibrated; %1 was not written")
                         .arg(QDir::toNativeSeparators(out)));
     if (!allDone)
-        return fail(Tr::tr("not every joint was calibrated: see the refusals above"));
+        return fail(ServoctlTr::tr("not every joint was calibrated: see the refusals above"));
     return ExitOk;
 }
 
@@ -366,11 +360,12 @@ bool FeetechCalibrationCommands::recordJoints(FeetechDevice &device,
                      });
     const bool live = !m_output.json && isTerminal(stdout);
     if (!m_output.json) {
-        m_output.err << (duration ? Tr::tr("servoctl: torque is off; move every joint through "
-                                           "its whole range for %1 s")
-                                        .arg(*duration)
-                                  : Tr::tr("servoctl: torque is off; move every joint through "
-                                           "its whole range, then press Enter"))
+        m_output.err << (duration
+                             ? ServoctlTr::tr("servoctl: torque is off; move every joint through "
+                                              "its whole range for %1 s")
+                                   .arg(*duration)
+                             : ServoctlTr::tr("servoctl: torque is off; move every joint through "
+                                              "its whole range, then press Enter"))
                      << '\n';
         m_output.err.flush();
     }
@@ -411,7 +406,7 @@ bool FeetechCalibrationCommands::recordJoints(FeetechDevice &device,
         return false;
     }
     if (interrupted) {
-        fail(Tr::tr("interrupted: nothing was written (torque stays off)"));
+        fail(ServoctlTr::tr("interrupted: nothing was written (torque stays off)"));
         return false;
     }
     return true;
@@ -423,11 +418,11 @@ void FeetechCalibrationCommands::printRecording(const QVector<feetech::JointReco
 {
     const QString endOfLine = live ? QStringLiteral("\x1b[K\n") : QStringLiteral("\n");
     m_output.out << QStringLiteral("%1  %2  %3  %4  %5")
-                        .arg(Tr::tr("joint"), -16)
-                        .arg(Tr::tr("id"), 3)
-                        .arg(Tr::tr("min"), 6)
-                        .arg(Tr::tr("present"), 7)
-                        .arg(Tr::tr("max"), 6)
+                        .arg(ServoctlTr::tr("joint"), -16)
+                        .arg(ServoctlTr::tr("id"), 3)
+                        .arg(ServoctlTr::tr("min"), 6)
+                        .arg(ServoctlTr::tr("present"), 7)
+                        .arg(ServoctlTr::tr("max"), 6)
                  << endOfLine;
     for (const feetech::JointRecording &joint : joints) {
         const feetech::JointRangeRecorder &range = joint.range;
@@ -440,7 +435,8 @@ void FeetechCalibrationCommands::printRecording(const QVector<feetech::JointReco
                             .arg(joint.id, 3)
                             .arg(cell(range.minimum(), 6), cell(range.present(), 7),
                                  cell(range.maximum(), 6),
-                                 range.isLost() ? Tr::tr("  (stopped answering)") : QString())
+                                 range.isLost() ? ServoctlTr::tr("  (stopped answering)")
+                                                : QString())
                      << endOfLine;
     }
     m_output.out.flush();
@@ -449,20 +445,20 @@ void FeetechCalibrationCommands::printRecording(const QVector<feetech::JointReco
 int FeetechCalibrationCommands::calibration(const QString &what, const QStringList &operands)
 {
     if (operands.isEmpty())
-        throw UsageError {Tr::tr("%1 needs save or load").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 needs save or load").arg(what)};
     const QString sub = operands.first();
     const QString named = what + u' ' + sub;
     if (sub == u"save")
         return saveCalibration(named, operands.mid(1));
     if (sub == u"load")
         return loadCalibration(named, operands.mid(1));
-    throw UsageError {Tr::tr("unknown %1 command \"%2\": use save or load").arg(what, sub)};
+    throw UsageError {ServoctlTr::tr("unknown %1 command \"%2\": use save or load").arg(what, sub)};
 }
 
 int FeetechCalibrationCommands::saveCalibration(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("ids"), QStringLiteral("names")});
-    expectOperands(what, operands, 1, Tr::tr("one FILE"));
+    expectOperands(what, operands, 1, ServoctlTr::tr("one FILE"));
     const QVector<quint8> ids = jointIds(what);
     const QStringList names = jointNames(ids);
     const QString path = operands.first();
@@ -487,12 +483,13 @@ int FeetechCalibrationCommands::saveCalibration(const QString &what, const QStri
             values->value(QString::fromUtf16(feetech::kMaximumLimitKey))};
         // A file LeRobot (and load) could not use is not written.
         if (motor.rangeMin >= motor.rangeMax)
-            return fail(Tr::tr("servo %1 holds the limits %2 to %3, which are no calibrated range "
+            return fail(
+                ServoctlTr::tr("servo %1 holds the limits %2 to %3, which are no calibrated range "
                                "(min = max = 0 is multi-turn mode); %4 was not written")
-                            .arg(servo.id)
-                            .arg(motor.rangeMin)
-                            .arg(motor.rangeMax)
-                            .arg(QDir::toNativeSeparators(path)));
+                    .arg(servo.id)
+                    .arg(motor.rangeMin)
+                    .arg(motor.rangeMax)
+                    .arg(QDir::toNativeSeparators(path)));
         motors.append(motor);
     }
     feetech::keepDriveModes(motors, path);
@@ -511,8 +508,8 @@ int FeetechCalibrationCommands::saveCalibration(const QString &what, const QStri
         printJson(m_output.out,
                   QJsonObject {{QStringLiteral("file"), path}, {QStringLiteral("joints"), joints}});
     else
-        m_output.out << Tr::tr("saved the calibration of %n servo(s) to %1", nullptr,
-                               int(motors.size()))
+        m_output.out << ServoctlTr::tr("saved the calibration of %n servo(s) to %1", nullptr,
+                                       int(motors.size()))
                             .arg(QDir::toNativeSeparators(path))
                      << '\n';
     m_output.out.flush();
@@ -522,7 +519,7 @@ int FeetechCalibrationCommands::saveCalibration(const QString &what, const QStri
 int FeetechCalibrationCommands::loadCalibration(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {});
-    expectOperands(what, operands, 1, Tr::tr("one FILE"));
+    expectOperands(what, operands, 1, ServoctlTr::tr("one FILE"));
     const QString path = operands.first();
     util::FileError error;
     const auto motors = feetech::loadLeRobotCalibration(path, &error);
@@ -566,30 +563,32 @@ int FeetechCalibrationCommands::loadCalibration(const QString &what, const QStri
                             {QStringLiteral("id"), motor.id},
                             {QStringLiteral("drive_mode"), motor.driveMode},
                             {QStringLiteral("changes"), changesJson}};
-        const QString joint = Tr::tr("%1 (servo %2)").arg(motor.name).arg(motor.id);
+        const QString joint = ServoctlTr::tr("%1 (servo %2)").arg(motor.name).arg(motor.id);
         if (motor.driveMode != 0) {
-            const QString kept = Tr::tr("drive_mode %1 is LeRobot's software setting (the "
-                                        "direction inverted), held by no register: it is kept "
-                                        "in the file only")
-                                     .arg(motor.driveMode);
+            const QString kept =
+                ServoctlTr::tr("drive_mode %1 is LeRobot's software setting (the "
+                               "direction inverted), held by no register: it is kept "
+                               "in the file only")
+                    .arg(motor.driveMode);
             report.insert(QStringLiteral("drive_mode_note"), kept);
             if (!m_output.json)
-                m_output.out << Tr::tr("%1: note: %2").arg(joint, kept) << '\n';
+                m_output.out << ServoctlTr::tr("%1: note: %2").arg(joint, kept) << '\n';
         }
         // A new offset under torque would move the horn to the old goal in new coordinates.
         const bool torqueOn = current->value(QStringLiteral("torque_enable")) != 0;
         QString line;
         if (changes.isEmpty()) {
             report.insert(QStringLiteral("verified"), true);
-            line = Tr::tr("%1: already holds the file's values").arg(joint);
+            line = ServoctlTr::tr("%1: already holds the file's values").arg(joint);
         } else if (sharesItsId(device, servo)) {
             return ExitDeviceFailure;
         } else if (torqueOn) {
             allDone = false;
-            const QString refusal = Tr::tr("torque is on: the new offset would move the horn; "
-                                           "switch torque off (support the arm) and load again");
+            const QString refusal =
+                ServoctlTr::tr("torque is on: the new offset would move the horn; "
+                               "switch torque off (support the arm) and load again");
             report.insert(QStringLiteral("refusal"), refusal);
-            line = Tr::tr("%1: %2; refused, nothing written: %3")
+            line = ServoctlTr::tr("%1: %2; refused, nothing written: %3")
                        .arg(joint, described.join(QStringLiteral(", ")), refusal);
         } else {
             const Programmed outcome = writeVerified(device, servo, changes);
@@ -598,9 +597,9 @@ int FeetechCalibrationCommands::loadCalibration(const QString &what, const QStri
                 report.insert(it.key(), it.value());
             allDone = allDone && isVerified(outcome);
             line = isVerified(outcome)
-                ? Tr::tr("%1: %2; written and verified")
+                ? ServoctlTr::tr("%1: %2; written and verified")
                       .arg(joint, described.join(QStringLiteral(", ")))
-                : Tr::tr("%1: %2; NOT verified: %3")
+                : ServoctlTr::tr("%1: %2; NOT verified: %3")
                       .arg(joint, described.join(QStringLiteral(", ")), problemText(outcome));
         }
         reports.append(report);
@@ -613,7 +612,7 @@ int FeetechCalibrationCommands::loadCalibration(const QString &what, const QStri
             QJsonObject {{QStringLiteral("file"), path}, {QStringLiteral("joints"), reports}});
     m_output.out.flush();
     if (!allDone)
-        return fail(Tr::tr("the calibration of %1 was not loaded whole: see above")
+        return fail(ServoctlTr::tr("the calibration of %1 was not loaded whole: see above")
                         .arg(QDir::toNativeSeparators(path)));
     return ExitOk;
 }

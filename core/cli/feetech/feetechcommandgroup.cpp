@@ -3,6 +3,7 @@
 #include "feetechcommandgroup.h"
 
 #include "hex.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -12,16 +13,6 @@
 #include <QJsonObject>
 
 #include <limits>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -39,13 +30,13 @@ void FeetechCommandGroup::allowOptions(const QString &what, const QStringList &a
                                       QStringLiteral("echo")};
     for (const QString &name : m_args.valueNames()) {
         if (!allowed.contains(name) && !kGlobal.contains(name))
-            throw UsageError {Tr::tr("%1 takes no --%2").arg(what, name)};
+            throw UsageError {ServoctlTr::tr("%1 takes no --%2").arg(what, name)};
     }
     for (const QString &flag :
          {QStringLiteral("thorough"), QStringLiteral("csv"), QStringLiteral("dry-run"),
           QStringLiteral("move-test"), QStringLiteral("check"), QStringLiteral("release")}) {
         if (m_args.flag(flag) && !allowed.contains(flag))
-            throw UsageError {Tr::tr("%1 takes no --%2").arg(what, flag)};
+            throw UsageError {ServoctlTr::tr("%1 takes no --%2").arg(what, flag)};
     }
 }
 
@@ -55,8 +46,8 @@ void FeetechCommandGroup::expectOperands(const QString &what, const QStringList 
     if (operands.size() == count)
         return;
     if (count == 0)
-        throw UsageError {Tr::tr("%1 takes no arguments").arg(what)};
-    throw UsageError {Tr::tr("%1 needs %2").arg(what, names)};
+        throw UsageError {ServoctlTr::tr("%1 takes no arguments").arg(what)};
+    throw UsageError {ServoctlTr::tr("%1 needs %2").arg(what, names)};
 }
 
 // The servo's rate on the bus (--baud, 1000000 when not given).
@@ -72,15 +63,15 @@ qint32 FeetechCommandGroup::parseBaud(const QString &what, const QString &text)
     const auto value = util::parseInteger(text);
     if (!value || *value <= 0 || *value > std::numeric_limits<qint32>::max()
         || !feetech::baudCode(qint32(*value)))
-        throw UsageError {
-            Tr::tr("%1: \"%2\" is not a Feetech baud rate (%3)").arg(what, text, baudList())};
+        throw UsageError {ServoctlTr::tr("%1: \"%2\" is not a Feetech baud rate (%3)")
+                              .arg(what, text, baudList())};
     return qint32(*value);
 }
 
 quint8 FeetechCommandGroup::servoId(const QString &what) const
 {
     if (!m_args.has(QStringLiteral("id")))
-        throw UsageError {Tr::tr("%1 needs --id N").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 needs --id N").arg(what)};
     return quint8(integerOption(m_args, QStringLiteral("id"), 0, feetech::kMaxServoId));
 }
 
@@ -88,7 +79,7 @@ void FeetechCommandGroup::checkFolder(const QString &path)
 {
     if (!QFileInfo(path).absoluteDir().exists())
         throw UsageError {
-            Tr::tr("the folder of %1 does not exist").arg(QDir::toNativeSeparators(path))};
+            ServoctlTr::tr("the folder of %1 does not exist").arg(QDir::toNativeSeparators(path))};
 }
 
 // The servo --id at --baud (usage errors are thrown before the port is opened); nothing, once
@@ -133,10 +124,11 @@ void FeetechCommandGroup::noteIfUnlocked(Target &target)
         return;
     m_unlockedNoted.insert(servo.id);
     m_output.err << "servoctl: "
-                 << Tr::tr("note: servo %1's EEPROM is unlocked (lock = 0), as some programs "
-                           "(LeRobot among them) leave it: a setting written to it now survives "
-                           "a power cut. servoctl locks it again after each of its own EEPROM "
-                           "writes; to lock it now: servoctl feetech lock --id %1")
+                 << ServoctlTr::tr(
+                        "note: servo %1's EEPROM is unlocked (lock = 0), as some programs "
+                        "(LeRobot among them) leave it: a setting written to it now survives "
+                        "a power cut. servoctl locks it again after each of its own EEPROM "
+                        "writes; to lock it now: servoctl feetech lock --id %1")
                         .arg(servo.id)
                  << '\n';
     m_output.err.flush();
@@ -157,7 +149,7 @@ std::optional<FeetechCommandGroup::Target>
 FeetechCommandGroup::identifyServoToWrite(const QString &what)
 {
     auto target = identifyKnownServo(
-        what, Tr::tr("servo %1 is of an unknown model (%2); nothing is written to it"));
+        what, ServoctlTr::tr("servo %1 is of an unknown model (%2); nothing is written to it"));
     if (target && sharesItsId(*target->device, target->servo))
         return std::nullopt;
     return target;
@@ -191,15 +183,15 @@ int FeetechCommandGroup::program(Target &target, const QVector<model::WriteItem>
         report.insert(QStringLiteral("mismatches"), written.mismatches);
         printJson(m_output.out, report);
     } else if (verified) {
-        m_output.out << Tr::tr("written to servo %1 and verified: %n register(s)", nullptr,
-                               int(items.size()))
+        m_output.out << ServoctlTr::tr("written to servo %1 and verified: %n register(s)", nullptr,
+                                       int(items.size()))
                             .arg(servo.id)
                      << '\n';
         m_output.out.flush();
     }
     if (!verified)
-        return fail(
-            Tr::tr("verification failed: %1").arg(written.described.join(QStringLiteral("; "))));
+        return fail(ServoctlTr::tr("verification failed: %1")
+                        .arg(written.described.join(QStringLiteral("; "))));
     return ExitOk;
 }
 
@@ -230,11 +222,11 @@ FeetechCommandGroup::writeVerified(FeetechDevice &device, const ServoInfo &servo
                          {QStringLiteral("written"), qint64(item.value)},
                          {QStringLiteral("read"),
                           found != read.constEnd() ? QJsonValue(*found) : QJsonValue()}});
-        written.described.append(
-            Tr::tr("%1: wrote %2, the servo holds %3")
-                .arg(item.key)
-                .arg(item.value)
-                .arg(found != read.constEnd() ? QString::number(*found) : Tr::tr("nothing")));
+        written.described.append(ServoctlTr::tr("%1: wrote %2, the servo holds %3")
+                                     .arg(item.key)
+                                     .arg(item.value)
+                                     .arg(found != read.constEnd() ? QString::number(*found)
+                                                                   : ServoctlTr::tr("nothing")));
     }
     return written;
 }
@@ -243,13 +235,13 @@ FeetechCommandGroup::writeVerified(FeetechDevice &device, const ServoInfo &servo
 QVector<quint8> FeetechCommandGroup::jointIds(const QString &what) const
 {
     if (!m_args.has(QStringLiteral("ids")))
-        throw UsageError {Tr::tr("%1 needs --ids LIST (such as 1-6)").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 needs --ids LIST (such as 1-6)").arg(what)};
     const QVector<quint8> ids = idList(m_args.value(QStringLiteral("ids")), feetech::kMaxServoId);
     if (ids.isEmpty())
-        throw UsageError {Tr::tr("--ids names no servo")};
+        throw UsageError {ServoctlTr::tr("--ids names no servo")};
     for (int i = 0; i < ids.size(); ++i) {
         if (ids.indexOf(ids.at(i)) != i)
-            throw UsageError {Tr::tr("--ids names servo %1 twice").arg(ids.at(i))};
+            throw UsageError {ServoctlTr::tr("--ids names servo %1 twice").arg(ids.at(i))};
     }
     return ids;
 }
@@ -279,8 +271,9 @@ std::optional<profile::Profile> FeetechCommandGroup::takeProfile(Target &target,
             continue;
         if (*value < definition.minimum || *value > definition.maximum) {
             m_output.err << "servoctl: "
-                         << Tr::tr("%1 = %2 is outside its range (%3 to %4) and is left out "
-                                   "of the profile")
+                         << ServoctlTr::tr(
+                                "%1 = %2 is outside its range (%3 to %4) and is left out "
+                                "of the profile")
                                 .arg(definition.key)
                                 .arg(*value)
                                 .arg(definition.minimum)

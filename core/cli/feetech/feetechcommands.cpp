@@ -10,21 +10,12 @@
 #include "feetechregistercommands.h"
 #include "feetechsetupcommand.h"
 #include "feetechteleopcommand.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QVector>
 
 #include <utility>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -47,7 +38,7 @@ int runIn(const Arguments &args, const Output &output, const QString &what,
 int runFeetechCommand(const Arguments &args, const QStringList &rest, const Output &output)
 {
     if (rest.isEmpty())
-        throw UsageError {Tr::tr("feetech needs a command (try servoctl --help)")};
+        throw UsageError {ServoctlTr::tr("feetech needs a command (try servoctl --help)")};
     const QString command = rest.first();
     const QStringList operands = rest.mid(1);
     static const QVector<std::pair<const char *, Runner>> kCommands {
@@ -84,7 +75,7 @@ int runFeetechCommand(const Arguments &args, const QStringList &rest, const Outp
     QStringList names;
     for (const auto &entry : kCommands)
         names.append(QLatin1String(entry.first));
-    throw UsageError {Tr::tr("unknown feetech command \"%1\": use %2")
+    throw UsageError {ServoctlTr::tr("unknown feetech command \"%1\": use %2")
                           .arg(command, names.join(QStringLiteral(", ")))};
 }
 

@@ -1,5 +1,6 @@
 // servoctl feetech's bus session driver and the servo output every command prints.
 #include "feetechdevice.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -9,16 +10,6 @@
 #include <QTimer>
 
 #include <algorithm>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -41,7 +32,7 @@ QJsonValue familyJson(const ServoInfo &servo)
 
 QString baudNumberText(qint32 baud)
 {
-    return Tr::tr("%1 bps").arg(baud);
+    return ServoctlTr::tr("%1 bps").arg(baud);
 }
 
 QString baudList()
@@ -65,8 +56,8 @@ QJsonObject servoJson(const ServoInfo &servo)
 QString servoSummary(const ServoInfo &servo)
 {
     const QString family = servo.model.family ? feetech::familyName(*servo.model.family)
-                                              : Tr::tr("unknown model, raw bytes only");
-    return Tr::tr("servo %1 at %2: %3 (%4), firmware %5")
+                                              : ServoctlTr::tr("unknown model, raw bytes only");
+    return ServoctlTr::tr("servo %1 at %2: %3 (%4), firmware %5")
         .arg(servo.id)
         .arg(baudNumberText(servo.baud), servo.model.name, family, servo.firmware());
 }
@@ -126,7 +117,7 @@ FeetechDevice::FeetechDevice(const Arguments &args, const Output &output)
     : m_output(output)
 {
     if (!args.has(QStringLiteral("port")))
-        throw UsageError {Tr::tr("feetech commands need --port PATH (see servoctl ports)")};
+        throw UsageError {ServoctlTr::tr("feetech commands need --port PATH (see servoctl ports)")};
     m_port = args.value(QStringLiteral("port"));
     m_echo = echoModeOption(args);
     m_trace = args.flag(QStringLiteral("trace"));
@@ -154,7 +145,8 @@ bool FeetechDevice::open(qint32 baud)
     if (m_session->status().state != seriallink::ConnectionState::Connected) {
         m_error = m_session->status().message;
         if (m_error.isEmpty())
-            m_error = Tr::tr("%1 could not be opened").arg(QDir::toNativeSeparators(m_port));
+            m_error =
+                ServoctlTr::tr("%1 could not be opened").arg(QDir::toNativeSeparators(m_port));
         return false;
     }
     return true;
@@ -165,7 +157,7 @@ std::optional<ServoInfo> FeetechDevice::identify(quint8 id, qint32 baud,
 {
     const auto pinged = operate(feetech::operations::ping(id, baud));
     if (!pinged || !pinged->ok) {
-        m_error = Tr::tr("%1 (at %2; servoctl feetech scan --baud all looks at every rate)")
+        m_error = ServoctlTr::tr("%1 (at %2; servoctl feetech scan --baud all looks at every rate)")
                       .arg(pinged ? pinged->message : m_error, baudNumberText(baud));
         return std::nullopt;
     }
@@ -178,8 +170,8 @@ std::optional<ServoInfo> FeetechDevice::identify(quint8 id, qint32 baud,
     const auto info =
         memory ? feetech::servoInfoFromIdentity(id, baud, memory->value(0)) : std::nullopt;
     if (!info) {
-        m_error = Tr::tr("servo %1 answers PING but its identity (addresses 0-8) could not "
-                         "be read: %2")
+        m_error = ServoctlTr::tr("servo %1 answers PING but its identity (addresses 0-8) could not "
+                                 "be read: %2")
                       .arg(id)
                       .arg(m_error);
         return std::nullopt;
@@ -205,7 +197,7 @@ std::optional<OperationResult> FeetechDevice::operate(const feetech::BusOperatio
                                                       Memory *memory)
 {
     if (m_interrupted) {
-        m_error = Tr::tr("interrupted: nothing more was sent");
+        m_error = ServoctlTr::tr("interrupted: nothing more was sent");
         return std::nullopt;
     }
     QEventLoop loop;
@@ -237,13 +229,13 @@ std::optional<OperationResult> FeetechDevice::operate(const feetech::BusOperatio
     QObject::disconnect(finished);
     QObject::disconnect(reading);
     if (m_interrupted) {
-        m_error = result ? Tr::tr("interrupted: %1").arg(result->message)
-                         : Tr::tr("interrupted again before the operation ended: check the "
-                                  "servo's torque and EEPROM lock");
+        m_error = result ? ServoctlTr::tr("interrupted: %1").arg(result->message)
+                         : ServoctlTr::tr("interrupted again before the operation ended: check the "
+                                          "servo's torque and EEPROM lock");
         return std::nullopt;
     }
     if (!result)
-        m_error = Tr::tr("the servo did not finish in time");
+        m_error = ServoctlTr::tr("the servo did not finish in time");
     return result;
 }
 

@@ -4,21 +4,12 @@
 
 #include "hex.h"
 #include "profile.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
 #include <QJsonObject>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -69,10 +60,10 @@ int FeetechFlowCommands::alreadyDone(const ServoInfo &servo, const QString &mess
 int FeetechFlowCommands::setId(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
-    expectOperands(what, operands, 1, Tr::tr("the NEW ID"));
+    expectOperands(what, operands, 1, ServoctlTr::tr("the NEW ID"));
     const auto newId = util::parseInteger(operands.first());
     if (!newId || *newId < 0 || *newId > feetech::kMaxServoId)
-        throw UsageError {Tr::tr("%1: \"%2\" is not an ID (0 to %3)")
+        throw UsageError {ServoctlTr::tr("%1: \"%2\" is not an ID (0 to %3)")
                               .arg(what, operands.first())
                               .arg(feetech::kMaxServoId)};
     auto target = identifyServo(what);
@@ -83,7 +74,7 @@ int FeetechFlowCommands::setId(const QString &what, const QStringList &operands)
     if (*newId == target->servo.id)
         return alreadyDone(
             target->servo,
-            Tr::tr("servo %1 already has ID %1; nothing written").arg(target->servo.id));
+            ServoctlTr::tr("servo %1 already has ID %1; nothing written").arg(target->servo.id));
     // No list of IDs in use: the session's PING of the new ID refuses an occupied one.
     return report(*target, feetech::operations::changeId(target->servo, int(*newId), {}));
 }
@@ -91,7 +82,7 @@ int FeetechFlowCommands::setId(const QString &what, const QStringList &operands)
 int FeetechFlowCommands::setBaud(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
-    expectOperands(what, operands, 1, Tr::tr("the new BAUD rate in bits per second"));
+    expectOperands(what, operands, 1, ServoctlTr::tr("the new BAUD rate in bits per second"));
     const qint32 newBaud = parseBaud(what, operands.first());
     auto target = identifyServo(what);
     if (!target)
@@ -101,12 +92,12 @@ int FeetechFlowCommands::setBaud(const QString &what, const QStringList &operand
     const ServoInfo &servo = target->servo;
     if (newBaud == servo.baud)
         return alreadyDone(servo,
-                           Tr::tr("servo %1 already runs at %2; nothing written")
+                           ServoctlTr::tr("servo %1 already runs at %2; nothing written")
                                .arg(servo.id)
                                .arg(baudNumberText(servo.baud)));
     if (const feetech::Register *reg = servo.table().find(u"baud_rate")) {
         if (servo.hasTable() && *feetech::baudCode(newBaud) > reg->maximum)
-            throw UsageError {Tr::tr("%1 servos do not support %2")
+            throw UsageError {ServoctlTr::tr("%1 servos do not support %2")
                                   .arg(familyText(servo), baudNumberText(newBaud))};
     }
     return report(*target, feetech::operations::changeBaud(target->servo, newBaud));
@@ -140,7 +131,7 @@ int FeetechFlowCommands::factoryReset(const QString &what, const QStringList &op
     QString backup = m_args.value(QStringLiteral("backup"));
     if (m_args.has(QStringLiteral("backup"))) {
         if (backup.isEmpty())
-            throw UsageError {Tr::tr("--backup needs a FILE")};
+            throw UsageError {ServoctlTr::tr("--backup needs a FILE")};
         checkFolder(backup);
     } else {
         backup = QDir::current().filePath(
@@ -150,8 +141,8 @@ int FeetechFlowCommands::factoryReset(const QString &what, const QStringList &op
     }
     auto target = identifyKnownServo(
         what,
-        Tr::tr("servo %1 is of an unknown model (%2): no backup can be saved, so "
-               "it is not reset"));
+        ServoctlTr::tr("servo %1 is of an unknown model (%2): no backup can be saved, so "
+                       "it is not reset"));
     if (!target)
         return ExitDeviceFailure;
     if (sharesItsId(*target->device, target->servo))
@@ -165,10 +156,10 @@ int FeetechFlowCommands::factoryReset(const QString &what, const QStringList &op
         && !profile::save(backup, *saved, feetech::profileDefinitions(servo.table()), &notSaved))
         error = notSaved.describe();
     if (!saved || notSaved)
-        return fail(
-            Tr::tr("the backup could not be saved, so the servo was not reset: %1").arg(error));
+        return fail(ServoctlTr::tr("the backup could not be saved, so the servo was not reset: %1")
+                        .arg(error));
     if (!m_output.json) {
-        m_output.out << Tr::tr("backup of servo %1 saved to %2")
+        m_output.out << ServoctlTr::tr("backup of servo %1 saved to %2")
                             .arg(servo.id)
                             .arg(QDir::toNativeSeparators(backup))
                      << '\n';
@@ -198,7 +189,7 @@ int FeetechFlowCommands::lock(const QString &what, const QStringList &operands)
     allowOptions(what, {QStringLiteral("id")});
     expectOperands(what, operands, 0, {});
     auto target = identifyKnownServo(
-        what, Tr::tr("servo %1 is of an unknown model (%2): its EEPROM lock is not known"));
+        what, ServoctlTr::tr("servo %1 is of an unknown model (%2): its EEPROM lock is not known"));
     if (!target)
         return ExitDeviceFailure;
     if (sharesItsId(*target->device, target->servo))
@@ -212,7 +203,8 @@ int FeetechFlowCommands::recover(const QString &what, const QStringList &operand
     expectOperands(what, operands, 0, {});
     const bool checkOnly = m_args.flag(QStringLiteral("check"));
     auto target = identifyKnownServo(
-        what, Tr::tr("servo %1 is of an unknown model (%2): its status bits are not known"));
+        what,
+        ServoctlTr::tr("servo %1 is of an unknown model (%2): its status bits are not known"));
     if (!target)
         return ExitDeviceFailure;
     if (!checkOnly && sharesItsId(*target->device, target->servo))
@@ -222,10 +214,11 @@ int FeetechFlowCommands::recover(const QString &what, const QStringList &operand
     const int code =
         report(*target, feetech::operations::recoverOverload(target->servo, checkOnly));
     if (code != ExitOk && !checkOnly) {
-        m_output.err
-            << "servoctl: "
-            << Tr::tr("after the power cycle: servoctl feetech recover --id %1 --check").arg(id)
-            << '\n';
+        m_output.err << "servoctl: "
+                     << ServoctlTr::tr(
+                            "after the power cycle: servoctl feetech recover --id %1 --check")
+                            .arg(id)
+                     << '\n';
         m_output.err.flush();
     }
     return code;
@@ -239,8 +232,9 @@ int FeetechFlowCommands::identify(const QString &what, const QStringList &operan
     if (!target)
         return ExitDeviceFailure;
     if (!m_output.json) {
-        m_output.out << Tr::tr("moving servo %1 a little each way, slowly…").arg(target->servo.id)
-                     << '\n';
+        m_output.out
+            << ServoctlTr::tr("moving servo %1 a little each way, slowly…").arg(target->servo.id)
+            << '\n';
         m_output.out.flush();
     }
     return report(*target, feetech::operations::identifyJoint(target->servo));

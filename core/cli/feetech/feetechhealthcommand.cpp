@@ -4,21 +4,12 @@
 
 #include "healthmovetest.h"
 #include "robottemplate.h"
+#include "servoctltr.h"
 
 #include <QDir>
 #include <QFileInfo>
 
 #include <QCoreApplication>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -27,7 +18,7 @@ namespace {
 QString measuredText(const std::optional<double> &value, int decimals, const QString &unit)
 {
     return value ? QString::number(*value, 'f', decimals) + QLatin1Char(' ') + unit
-                 : Tr::tr("not read");
+                 : ServoctlTr::tr("not read");
 }
 
 } // namespace
@@ -96,7 +87,7 @@ int FeetechHealthCommand::health(const QString &what, const QStringList &operand
                 int(std::find_if(reachable.begin(), reachable.end(),
                                  [&servo](const ServoInfo &s) { return s.id == servo.id; })
                     - reachable.begin()));
-            m_output.err << Tr::tr("moving servo %1 by %2 steps from %3 and back…")
+            m_output.err << ServoctlTr::tr("moving servo %1 by %2 steps from %3 and back…")
                                 .arg(servo.id)
                                 .arg(feetech::HealthMoveTest::kAmplitude)
                                 .arg(*servo.position, 0, 'f', 0)
@@ -142,8 +133,9 @@ auto FeetechHealthCommand::identifyEach(FeetechDevice &device, const QVector<qui
         if (servo)
             identified[i].servo = *servo;
         else
-            identified[i].failure =
-                memory ? Tr::tr("its identity (addresses 0-8) could not be read") : device.error();
+            identified[i].failure = memory
+                ? ServoctlTr::tr("its identity (addresses 0-8) could not be read")
+                : device.error();
     }
     return identified;
 }
@@ -158,7 +150,7 @@ feetech::SettingsExpectations FeetechHealthCommand::expectations(const QString &
     util::FileError error;
     const auto robot = feetech::loadRobotTemplate(path, &error);
     if (!robot)
-        throw UsageError {Tr::tr("%1 --robot: %2").arg(what, error.describe())};
+        throw UsageError {ServoctlTr::tr("%1 --robot: %2").arg(what, error.describe())};
     return feetech::settingsExpectations(*robot);
 }
 
@@ -201,7 +193,8 @@ int FeetechHealthCommand::check(const QString &what, const QStringList &operands
     }
     QVector<feetech::SettingsFixOutcome> outcomes;
     if (!fixable.isEmpty()) {
-        m_output.err << Tr::tr("fixing %n setting(s)…", nullptr, int(fixable.size())) << '\n';
+        m_output.err << ServoctlTr::tr("fixing %n setting(s)…", nullptr, int(fixable.size()))
+                     << '\n';
         m_output.err.flush();
         const auto result = device.operate(feetech::operations::fixSettings(fixable));
         if (!result || !result->detail.canConvert<QVector<feetech::SettingsFixOutcome>>())
@@ -219,7 +212,7 @@ int FeetechHealthCommand::check(const QString &what, const QStringList &operands
         feetech::SettingsFixOutcome notFixable;
         notFixable.finding = finding;
         notFixable.code = feetech::SettingsFixOutcome::Code::NotFixable;
-        notFixable.why = Tr::tr("nothing to write fixes this");
+        notFixable.why = ServoctlTr::tr("nothing to write fixes this");
         rows.append(notFixable);
     }
     if (m_output.json) {
@@ -256,16 +249,17 @@ void FeetechHealthCommand::printFindings(const QVector<feetech::SettingsFinding>
 {
     QTextStream &out = m_output.out;
     if (findings.isEmpty()) {
-        out << Tr::tr("No problem found in the settings of %n servo(s).", nullptr, servos) << '\n';
+        out << ServoctlTr::tr("No problem found in the settings of %n servo(s).", nullptr, servos)
+            << '\n';
         out.flush();
         return;
     }
     out << QStringLiteral("%1  %2  %3  %4  %5")
-               .arg(Tr::tr("ID"), -4)
-               .arg(Tr::tr("SETTING"), -18)
-               .arg(Tr::tr("VALUE"), -8)
-               .arg(Tr::tr("EXPECTED"), -8)
-               .arg(Tr::tr("WHY"))
+               .arg(ServoctlTr::tr("ID"), -4)
+               .arg(ServoctlTr::tr("SETTING"), -18)
+               .arg(ServoctlTr::tr("VALUE"), -8)
+               .arg(ServoctlTr::tr("EXPECTED"), -8)
+               .arg(ServoctlTr::tr("WHY"))
         << '\n';
     for (const feetech::SettingsFinding &finding : findings)
         out << QStringLiteral("%1  %2  %3  %4  %5")
@@ -275,8 +269,8 @@ void FeetechHealthCommand::printFindings(const QVector<feetech::SettingsFinding>
                    .arg(expectedText(finding), -8)
                    .arg(finding.why)
             << '\n';
-    out << Tr::tr("%n finding(s); --fix writes the expected values and reads them back.", nullptr,
-                  int(findings.size()))
+    out << ServoctlTr::tr("%n finding(s); --fix writes the expected values and reads them back.",
+                          nullptr, int(findings.size()))
         << '\n';
     out.flush();
 }
@@ -286,7 +280,7 @@ void FeetechHealthCommand::printFixes(const QVector<feetech::SettingsFixOutcome>
     QTextStream &out = m_output.out;
     for (const feetech::SettingsFixOutcome &outcome : outcomes) {
         const feetech::SettingsFinding &finding = outcome.finding;
-        out << Tr::tr("servo %1 %2: %3 → %4: %5")
+        out << ServoctlTr::tr("servo %1 %2: %3 → %4: %5")
                    .arg(finding.servo.id)
                    .arg(finding.key.isEmpty() ? finding.code : finding.key, valueText(finding),
                         expectedText(finding), feetech::fixOutcomeText(outcome))
@@ -301,29 +295,29 @@ void FeetechHealthCommand::printHealth(const feetech::ServoHealth &health, bool 
 {
     QTextStream &out = m_output.out;
     if (health.model.isEmpty())
-        out << Tr::tr("servo %1 (no answer): %2")
+        out << ServoctlTr::tr("servo %1 (no answer): %2")
                    .arg(health.id)
                    .arg(feetech::verdictName(health.verdict))
             << '\n';
     else
-        out << Tr::tr("servo %1 (%2, firmware %3): %4")
+        out << ServoctlTr::tr("servo %1 (%2, firmware %3): %4")
                    .arg(health.id)
                    .arg(health.model, health.firmware, feetech::verdictName(health.verdict))
             << '\n';
     out << "  "
-        << Tr::tr("voltage %1, temperature %2, load %3, position %4, status %5")
+        << ServoctlTr::tr("voltage %1, temperature %2, load %3, position %4, status %5")
                .arg(measuredText(health.voltage, 1, QStringLiteral("V")),
                     measuredText(health.temperature, 0, QStringLiteral("°C")),
                     measuredText(health.load, 1, QStringLiteral("%")),
-                    measuredText(health.position, 0, Tr::tr("steps")),
-                    health.statusText.isEmpty() ? Tr::tr("not read") : health.statusText)
+                    measuredText(health.position, 0, ServoctlTr::tr("steps")),
+                    health.statusText.isEmpty() ? ServoctlTr::tr("not read") : health.statusText)
         << '\n';
-    out << "  " << Tr::tr("communication: %1").arg(feetech::commText(health.comm)) << '\n';
+    out << "  " << ServoctlTr::tr("communication: %1").arg(feetech::commText(health.comm)) << '\n';
     if (moveAsked)
         out << "  "
-            << Tr::tr("move test: %1")
+            << ServoctlTr::tr("move test: %1")
                    .arg(health.move ? feetech::moveText(*health.move)
-                                    : Tr::tr("not run (the servo has a fault)"))
+                                    : ServoctlTr::tr("not run (the servo has a fault)"))
             << '\n';
     for (const feetech::HealthFinding &finding : health.findings)
         out << "  - " << feetech::verdictName(finding.severity) << " [" << finding.code << "] "

@@ -1,5 +1,6 @@
 // servoctl feetech monitor: streams servos' feedback as text, JSON lines or CSV.
 #include "feetechmonitorcommand.h"
+#include "servoctltr.h"
 #include "telemetryrecorder.h"
 
 #include <QCoreApplication>
@@ -10,16 +11,6 @@
 #include <QTimer>
 
 #include <algorithm>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -37,17 +28,17 @@ int FeetechMonitorCommand::monitor(const QString &what, const QStringList &opera
                   QStringLiteral("csv")});
     expectOperands(what, operands, 0, {});
     if (!m_args.has(QStringLiteral("ids")))
-        throw UsageError {Tr::tr("%1 needs --ids LIST (such as 1,2,5-7)").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 needs --ids LIST (such as 1,2,5-7)").arg(what)};
     QVector<quint8> ids = idList(m_args.value(QStringLiteral("ids")), feetech::kMaxServoId);
     for (int i = 0; i < ids.size(); ++i) {
         if (ids.indexOf(ids.at(i)) != i)
-            throw UsageError {Tr::tr("--ids names servo %1 twice").arg(ids.at(i))};
+            throw UsageError {ServoctlTr::tr("--ids names servo %1 twice").arg(ids.at(i))};
     }
     const std::optional<double> duration = durationOption(m_args);
     const double rate = monitorRate();
     const bool csv = m_args.flag(QStringLiteral("csv"));
     if (csv && m_output.json)
-        throw UsageError {Tr::tr("choose --csv or --json, not both")};
+        throw UsageError {ServoctlTr::tr("choose --csv or --json, not both")};
     const qint32 baud = busBaud();
 
     FeetechDevice device(m_args, m_output);
@@ -61,8 +52,8 @@ int FeetechMonitorCommand::monitor(const QString &what, const QStringList &opera
         if (!servo)
             return fail(device.error());
         if (!servo->hasTable())
-            return fail(Tr::tr("servo %1 is of an unknown model (%2): its feedback cannot "
-                               "be decoded")
+            return fail(ServoctlTr::tr("servo %1 is of an unknown model (%2): its feedback cannot "
+                                       "be decoded")
                             .arg(id)
                             .arg(servo->modelNumber()));
         options.servos.append(*servo);
@@ -101,8 +92,9 @@ int FeetechMonitorCommand::monitor(const QString &what, const QStringList &opera
                                  continue;
                              missing.insert(servo.id, servo.missing);
                              m_output.err
-                                 << (servo.missing ? Tr::tr("servoctl: servo %1 stopped answering")
-                                                   : Tr::tr("servoctl: servo %1 answers again"))
+                                 << (servo.missing
+                                         ? ServoctlTr::tr("servoctl: servo %1 stopped answering")
+                                         : ServoctlTr::tr("servoctl: servo %1 answers again"))
                                         .arg(servo.id)
                                  << '\n';
                              m_output.err.flush();
@@ -117,7 +109,8 @@ int FeetechMonitorCommand::monitor(const QString &what, const QStringList &opera
     runUntilInterrupted(loop, duration);
     const bool linkLost = session.status().state != seriallink::ConnectionState::Connected;
     session.stopTelemetry(); // flushes the last samples through the connection above
-    m_output.err << Tr::tr("servoctl: %1 samples in %2 s (%3 per second); %4 missed, %5 late")
+    m_output.err << ServoctlTr::tr(
+                        "servoctl: %1 samples in %2 s (%3 per second); %4 missed, %5 late")
                         .arg(printed)
                         .arg(last.elapsedSeconds, 0, 'f', 2)
                         .arg(last.elapsedSeconds > 0 ? double(printed) / last.elapsedSeconds : 0.0,
@@ -129,7 +122,7 @@ int FeetechMonitorCommand::monitor(const QString &what, const QStringList &opera
     if (linkLost)
         return fail(session.status().message);
     if (printed == 0)
-        return fail(Tr::tr("no servo answered the telemetry requests"));
+        return fail(ServoctlTr::tr("no servo answered the telemetry requests"));
     return ExitOk;
 }
 
@@ -145,7 +138,7 @@ double FeetechMonitorCommand::monitorRate() const
     const double rate = text.toDouble(&ok);
     if (!ok || rate < 1.0 || rate > 1000.0)
         throw UsageError {
-            Tr::tr("--rate must be a number of samples per second from 1 to 1000, or max")};
+            ServoctlTr::tr("--rate must be a number of samples per second from 1 to 1000, or max")};
     return rate;
 }
 

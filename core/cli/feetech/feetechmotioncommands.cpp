@@ -4,6 +4,7 @@
 #include "lerobotcalibration.h"
 #include "motionrecorder.h"
 #include "motionreplay.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -11,16 +12,6 @@
 #include <QTimer>
 
 #include <cmath>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -43,17 +34,18 @@ FeetechMotionCommands::recordedJoints(const QVector<quint8> &ids) const
         return joints;
     const QStringList names = m_args.value(QStringLiteral("names")).split(u',');
     if (names.size() != ids.size())
-        throw UsageError {Tr::tr("--names gives %1 name(s) for %2 servo(s) in --ids")
+        throw UsageError {ServoctlTr::tr("--names gives %1 name(s) for %2 servo(s) in --ids")
                               .arg(names.size())
                               .arg(ids.size())};
     for (int i = 0; i < names.size(); ++i) {
         const QString name = names.at(i).trimmed();
         if (!feetech::isLeRobotMotorName(name))
-            throw UsageError {Tr::tr("--names: \"%1\" is not a joint name (letters, digits and "
-                                     "_, a letter first)")
-                                  .arg(name)};
+            throw UsageError {
+                ServoctlTr::tr("--names: \"%1\" is not a joint name (letters, digits and "
+                               "_, a letter first)")
+                    .arg(name)};
         if (names.indexOf(names.at(i)) != i)
-            throw UsageError {Tr::tr("--names: \"%1\" is given twice").arg(name)};
+            throw UsageError {ServoctlTr::tr("--names: \"%1\" is given twice").arg(name)};
         joints[i].name = name;
     }
     return joints;
@@ -70,7 +62,7 @@ double FeetechMotionCommands::numberOption(const QString &name, double fallback,
     bool ok = false;
     const double value = m_args.value(name).toDouble(&ok);
     if (!ok || !std::isfinite(value) || !accepts(value))
-        throw UsageError {Tr::tr("--%1 must be %2").arg(name, range)};
+        throw UsageError {ServoctlTr::tr("--%1 must be %2").arg(name, range)};
     return value;
 }
 
@@ -85,14 +77,15 @@ int FeetechMotionCommands::record(const QString &what, const QStringList &operan
     const QVector<quint8> ids = jointIds(what);
     const QVector<feetech::MotionJoint> joints = recordedJoints(ids);
     if (!m_args.has(QStringLiteral("out")))
-        throw UsageError {Tr::tr("%1 needs --out FILE: the CSV file to record into").arg(what)};
+        throw UsageError {
+            ServoctlTr::tr("%1 needs --out FILE: the CSV file to record into").arg(what)};
     const QString out = m_args.value(QStringLiteral("out"));
     checkFolder(out);
     const std::optional<double> duration = durationOption(m_args);
     const double rate = numberOption(
         QStringLiteral("rate"), kDefaultRecordRate,
         [](double value) { return value >= 1.0 && value <= kMaximumRecordRate; },
-        Tr::tr("a number of frames per second from 1 to %1").arg(kMaximumRecordRate));
+        ServoctlTr::tr("a number of frames per second from 1 to %1").arg(kMaximumRecordRate));
     const qint32 baud = busBaud();
 
     FeetechDevice device(m_args, m_output);
@@ -106,10 +99,11 @@ int FeetechMotionCommands::record(const QString &what, const QStringList &operan
         if (!servo)
             return fail(device.error());
         if (!servo->hasTable())
-            return fail(Tr::tr("servo %1 is of an unknown model (%2): its position cannot be "
+            return fail(
+                ServoctlTr::tr("servo %1 is of an unknown model (%2): its position cannot be "
                                "read")
-                            .arg(id)
-                            .arg(servo->modelNumber()));
+                    .arg(id)
+                    .arg(servo->modelNumber()));
         options.servos.append(*servo);
     }
 
@@ -127,8 +121,8 @@ int FeetechMotionCommands::record(const QString &what, const QStringList &operan
                              loop.quit(); // unplugged: nothing more will come
                      });
     m_output.err << "servoctl: "
-                 << Tr::tr("recording %n joint(s); move them by hand, Ctrl-C ends", nullptr,
-                           int(ids.size()))
+                 << ServoctlTr::tr("recording %n joint(s); move them by hand, Ctrl-C ends", nullptr,
+                                   int(ids.size()))
                  << '\n';
     m_output.err.flush();
     QTimer::singleShot(0, &loop, [&session, options] { session.startTelemetry(options); });
@@ -139,8 +133,8 @@ int FeetechMotionCommands::record(const QString &what, const QStringList &operan
     const feetech::MotionRecording &recording = recorder.recording();
     if (recording.isEmpty())
         return fail(linkLost ? session.status().message
-                             : Tr::tr("no frame was recorded: not every servo answered; "
-                                      "nothing was written"));
+                             : ServoctlTr::tr("no frame was recorded: not every servo answered; "
+                                              "nothing was written"));
     util::FileError error;
     if (!feetech::saveMotionRecording(out, recording, &error))
         return fail(error.describe());
@@ -155,8 +149,8 @@ int FeetechMotionCommands::record(const QString &what, const QStringList &operan
                                {QStringLiteral("duration_s"), recording.duration()},
                                {QStringLiteral("complete"), !linkLost}});
     } else {
-        m_output.out << Tr::tr("recorded %n frame(s) of %1 joint(s) over %2 s into %3", nullptr,
-                               int(recording.frames.size()))
+        m_output.out << ServoctlTr::tr("recorded %n frame(s) of %1 joint(s) over %2 s into %3",
+                                       nullptr, int(recording.frames.size()))
                             .arg(recording.joints.size())
                             .arg(recording.duration(), 0, 'f', 2)
                             .arg(QDir::toNativeSeparators(out))
@@ -164,7 +158,7 @@ int FeetechMotionCommands::record(const QString &what, const QStringList &operan
         m_output.out.flush();
     }
     if (linkLost)
-        return fail(Tr::tr("%1; what was recorded until then is in %2")
+        return fail(ServoctlTr::tr("%1; what was recorded until then is in %2")
                         .arg(session.status().message, QDir::toNativeSeparators(out)));
     return ExitOk;
 }
@@ -181,15 +175,16 @@ FeetechMotionCommands::replayedServos(FeetechDevice &device,
                 fail(device.error());
                 return std::nullopt;
             }
-            throw UsageError {Tr::tr("column %1 matches no servo: %2; nothing was moved")
+            throw UsageError {ServoctlTr::tr("column %1 matches no servo: %2; nothing was moved")
                                   .arg(joint.column(), device.error())};
         }
         if (!servo->hasTable())
-            throw UsageError {Tr::tr("column %1: servo %2 is of an unknown model (%3); nothing "
-                                     "was moved")
-                                  .arg(joint.column())
-                                  .arg(joint.id)
-                                  .arg(servo->modelNumber())};
+            throw UsageError {
+                ServoctlTr::tr("column %1: servo %2 is of an unknown model (%3); nothing "
+                               "was moved")
+                    .arg(joint.column())
+                    .arg(joint.id)
+                    .arg(servo->modelNumber())};
         if (sharesItsId(device, *servo))
             return std::nullopt;
         servos.append(*servo);
@@ -208,11 +203,11 @@ int FeetechMotionCommands::replay(const QString &what, const QStringList &operan
     feetech::ReplayPlan plan;
     plan.speed = numberOption(
         QStringLiteral("speed"), 1.0, [](double value) { return value > 0.0; },
-        Tr::tr("a number above 0 (2 plays twice as fast)"));
+        ServoctlTr::tr("a number above 0 (2 plays twice as fast)"));
     if (m_args.has(QStringLiteral("ease")))
         plan.easeSeconds = numberOption(
             QStringLiteral("ease"), 0.0, [](double value) { return value >= 0.0; },
-            Tr::tr("a number of seconds from 0"));
+            ServoctlTr::tr("a number of seconds from 0"));
     if (m_args.has(QStringLiteral("loop")))
         plan.loops = int(integerOption(m_args, QStringLiteral("loop"), 1, kMaximumLoops));
     plan.release = m_args.flag(QStringLiteral("release"));
@@ -266,10 +261,10 @@ int FeetechMotionCommands::replay(const QString &what, const QStringList &operan
         session.cancel(feetech::Operation::Replay);
     });
     if (!result)
-        return fail(Tr::tr("interrupted again before the arm was held: check the servos' "
-                           "torque"));
+        return fail(ServoctlTr::tr("interrupted again before the arm was held: check the servos' "
+                                   "torque"));
     if (interrupted && result->failure == feetech::OperationFailure::Stopped)
-        return fail(Tr::tr("interrupted: %1").arg(result->message));
+        return fail(ServoctlTr::tr("interrupted: %1").arg(result->message));
     if (result->failure == feetech::OperationFailure::InvalidRequest) {
         m_output.err << "servoctl: " << result->message << '\n';
         m_output.err.flush();

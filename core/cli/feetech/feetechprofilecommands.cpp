@@ -3,6 +3,7 @@
 #include "feetechprofilecommands.h"
 
 #include "profile.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -13,16 +14,6 @@
 #include <QJsonObject>
 
 #include <algorithm>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -89,11 +80,11 @@ std::optional<QVector<model::WriteItem>> changedOn(FeetechDevice &device, const 
 int FeetechProfileCommands::save(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id")});
-    expectOperands(what, operands, 1, Tr::tr("one FILE"));
+    expectOperands(what, operands, 1, ServoctlTr::tr("one FILE"));
     const QString path = operands.first();
     checkFolder(path);
     auto target = identifyKnownServo(
-        what, Tr::tr("servo %1 is of an unknown model (%2): no profile can be saved"));
+        what, ServoctlTr::tr("servo %1 is of an unknown model (%2): no profile can be saved"));
     if (!target)
         return ExitDeviceFailure;
     const ServoInfo &servo = target->servo;
@@ -110,7 +101,7 @@ int FeetechProfileCommands::save(const QString &what, const QStringList &operand
                                {QStringLiteral("file"), path},
                                {QStringLiteral("values"), profileJson(*saved)}});
     else
-        m_output.out << Tr::tr("saved servo %1 (%2) to %3")
+        m_output.out << ServoctlTr::tr("saved servo %1 (%2) to %3")
                             .arg(servo.id)
                             .arg(servo.model.name, QDir::toNativeSeparators(path))
                      << '\n';
@@ -121,9 +112,9 @@ int FeetechProfileCommands::save(const QString &what, const QStringList &operand
 int FeetechProfileCommands::load(const QString &what, const QStringList &operands)
 {
     allowOptions(what, {QStringLiteral("id"), QStringLiteral("ids")});
-    expectOperands(what, operands, 1, Tr::tr("one FILE"));
+    expectOperands(what, operands, 1, ServoctlTr::tr("one FILE"));
     if (m_args.has(QStringLiteral("id")) && m_args.has(QStringLiteral("ids")))
-        throw UsageError {Tr::tr("%1 takes --id N or --ids LIST, not both").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 takes --id N or --ids LIST, not both").arg(what)};
     const QString path = operands.first();
     const feetech::SettingsFile file = checkSettingsFile(path);
     if (m_args.has(QStringLiteral("ids")))
@@ -141,7 +132,8 @@ int FeetechProfileCommands::load(const QString &what, const QStringList &operand
                                           feetech::profileDefinitions(servo.table()));
         if (loaded && !loaded->model.isEmpty() && loaded->model != servo.model.name) {
             m_output.err << "servoctl: "
-                         << Tr::tr("note: the profile was saved from a %1, this servo is a %2")
+                         << ServoctlTr::tr(
+                                "note: the profile was saved from a %1, this servo is a %2")
                                 .arg(loaded->model, servo.model.name)
                          << '\n';
             m_output.err.flush();
@@ -156,7 +148,7 @@ int FeetechProfileCommands::load(const QString &what, const QStringList &operand
     // A new offset, limit or goal under torque would move the horn: refused, as in a batch.
     const QString refused = feetech::torqueRefusal(servo, items, torque);
     if (!refused.isEmpty())
-        return fail(Tr::tr("servo %1: %2").arg(servo.id).arg(refused));
+        return fail(ServoctlTr::tr("servo %1: %2").arg(servo.id).arg(refused));
     const QJsonObject extra {{QStringLiteral("file"), path},
                              {QStringLiteral("changed"), int(items.size())}};
     if (items.isEmpty()) {
@@ -168,7 +160,8 @@ int FeetechProfileCommands::load(const QString &what, const QStringList &operand
             report.insert(QStringLiteral("mismatches"), QJsonArray());
             printJson(m_output.out, report);
         } else {
-            m_output.out << Tr::tr("servo %1 already holds every value of %2; nothing written")
+            m_output.out << ServoctlTr::tr(
+                                "servo %1 already holds every value of %2; nothing written")
                                 .arg(servo.id)
                                 .arg(QDir::toNativeSeparators(path))
                          << '\n';
@@ -215,8 +208,8 @@ feetech::ProgramOutcome FeetechProfileCommands::programOne(FeetechDevice &device
         if (!written.failure.isEmpty())
             outcome.error = written.failure;
         else if (!written.mismatches.isEmpty())
-            outcome.error =
-                Tr::tr("verification failed: %1").arg(written.described.join(QStringLiteral("; ")));
+            outcome.error = ServoctlTr::tr("verification failed: %1")
+                                .arg(written.described.join(QStringLiteral("; ")));
         else
             outcome.status = feetech::ProgramOutcome::Status::Ok;
     } catch (const UsageError &refused) {
@@ -230,7 +223,7 @@ int FeetechProfileCommands::loadMany(const feetech::SettingsFile &file, const QS
     QVector<quint8> ids = idList(m_args.value(QStringLiteral("ids")), feetech::kMaxServoId);
     for (int i = 0; i < ids.size(); ++i) {
         if (ids.indexOf(ids.at(i)) != i)
-            throw UsageError {Tr::tr("--ids names servo %1 twice").arg(ids.at(i))};
+            throw UsageError {ServoctlTr::tr("--ids names servo %1 twice").arg(ids.at(i))};
     }
     FeetechDevice device(m_args, m_output);
     if (!device.open(busBaud()))
@@ -249,13 +242,13 @@ int FeetechProfileCommands::loadMany(const feetech::SettingsFile &file, const QS
         printJson(m_output.out, entries);
         return anyFailed ? ExitDeviceFailure : ExitOk;
     }
-    m_output.out << Tr::tr("%1 to %n servo(s):", nullptr, int(outcomes.size()))
+    m_output.out << ServoctlTr::tr("%1 to %n servo(s):", nullptr, int(outcomes.size()))
                         .arg(QDir::toNativeSeparators(path))
                  << '\n';
-    const QString idHeader = Tr::tr("ID");
-    const QString statusHeader = Tr::tr("status");
+    const QString idHeader = ServoctlTr::tr("ID");
+    const QString statusHeader = ServoctlTr::tr("status");
     m_output.out << idHeader.leftJustified(5) << statusHeader.leftJustified(22)
-                 << Tr::tr("changed / error") << '\n';
+                 << ServoctlTr::tr("changed / error") << '\n';
     for (const feetech::ProgramOutcome &outcome : std::as_const(outcomes)) {
         const QString detail = outcome.status == feetech::ProgramOutcome::Status::Failed
             ? outcome.error

@@ -1,6 +1,7 @@
 // servoctl feetech scan, ping, read, get and set: finding servos and their registers.
 #include "feetechregistercommands.h"
 
+#include "servoctltr.h"
 #include "sharedidcheck.h"
 
 #include <QCoreApplication>
@@ -8,16 +9,6 @@
 #include <QJsonObject>
 
 #include <algorithm>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -37,11 +28,12 @@ QStringList scanWarnings(const ServoInfo &servo)
         warnings.append(feetech::sharedIdRefusal(servo.id));
     const QStringList errors = feetech::statusBitNames(servo.statusBits);
     if (!errors.isEmpty())
-        warnings.append(Tr::tr("servo %1 answers with error bits 0x%2 (%3): servoctl doctor says "
-                               "why")
-                            .arg(servo.id)
-                            .arg(servo.statusBits, 2, 16, QLatin1Char('0'))
-                            .arg(errors.join(QStringLiteral(", "))));
+        warnings.append(
+            ServoctlTr::tr("servo %1 answers with error bits 0x%2 (%3): servoctl doctor says "
+                           "why")
+                .arg(servo.id)
+                .arg(servo.statusBits, 2, 16, QLatin1Char('0'))
+                .arg(errors.join(QStringLiteral(", "))));
     return warnings;
 }
 
@@ -61,8 +53,8 @@ int FeetechRegisterCommands::scan(const QString &what, const QStringList &operan
         std::sort(ids.begin(), ids.end());
         for (int i = 1; i < ids.size(); ++i) {
             if (ids.at(i) != ids.at(i - 1) + 1)
-                throw UsageError {Tr::tr("--ids: a scan covers one range of IDs, such as "
-                                         "0-20")};
+                throw UsageError {ServoctlTr::tr("--ids: a scan covers one range of IDs, such as "
+                                                 "0-20")};
         }
         options.firstId = ids.first();
         options.lastId = ids.last();
@@ -75,12 +67,12 @@ int FeetechRegisterCommands::scan(const QString &what, const QStringList &operan
     QVector<ServoInfo> found;
     if (!m_output.json) {
         m_output.out << QStringLiteral("%1  %2  %3  %4  %5  %6")
-                            .arg(Tr::tr("id"), 3)
-                            .arg(Tr::tr("baud"), -7)
-                            .arg(Tr::tr("model"), -20)
-                            .arg(Tr::tr("number"), 6)
-                            .arg(Tr::tr("family"), -6)
-                            .arg(Tr::tr("firmware"))
+                            .arg(ServoctlTr::tr("id"), 3)
+                            .arg(ServoctlTr::tr("baud"), -7)
+                            .arg(ServoctlTr::tr("model"), -20)
+                            .arg(ServoctlTr::tr("number"), 6)
+                            .arg(ServoctlTr::tr("family"), -6)
+                            .arg(ServoctlTr::tr("firmware"))
                      << '\n';
         m_output.out.flush();
     }
@@ -123,7 +115,8 @@ int FeetechRegisterCommands::scan(const QString &what, const QStringList &operan
     if (!completed)
         return fail(device.error());
     if (found.isEmpty())
-        return fail(Tr::tr("no servo answered (try --baud all, or check power and wiring)"));
+        return fail(
+            ServoctlTr::tr("no servo answered (try --baud all, or check power and wiring)"));
     const auto shared = std::find_if(found.cbegin(), found.cend(),
                                      [](const ServoInfo &servo) { return servo.sharedId; });
     if (shared != found.cend())
@@ -144,7 +137,7 @@ int FeetechRegisterCommands::ping(const QString &what, const QStringList &operan
                   QJsonObject {{QStringLiteral("servo"), servoJson(target->servo)},
                                {QStringLiteral("latency_us"), qint64(target->latency.count())}});
     } else {
-        m_output.out << Tr::tr("%1; answered in %2 ms")
+        m_output.out << ServoctlTr::tr("%1; answered in %2 ms")
                             .arg(servoSummary(target->servo))
                             .arg(latencyMs, 0, 'f', 2)
                      << '\n';
@@ -177,14 +170,14 @@ int FeetechRegisterCommands::read(const QString &what, const QStringList &operan
     }
     m_output.out << servoSummary(servo) << '\n';
     if (!servo.hasTable())
-        m_output.out << Tr::tr("no register table is known for this model: the bytes are "
-                               "shown as they are, and nothing can be written")
+        m_output.out << ServoctlTr::tr("no register table is known for this model: the bytes are "
+                                       "shown as they are, and nothing can be written")
                      << '\n';
     m_output.out << QStringLiteral("%1  %2  %3  %4")
-                        .arg(Tr::tr("addr"), 4)
-                        .arg(Tr::tr("key"), -28)
-                        .arg(Tr::tr("value"), 6)
-                        .arg(Tr::tr("meaning"))
+                        .arg(ServoctlTr::tr("addr"), 4)
+                        .arg(ServoctlTr::tr("key"), -28)
+                        .arg(ServoctlTr::tr("value"), 6)
+                        .arg(ServoctlTr::tr("meaning"))
                  << '\n';
     for (const feetech::DecodedRegister &item : decoded) {
         m_output.out << QStringLiteral("%1  %2  %3")
@@ -201,10 +194,10 @@ int FeetechRegisterCommands::get(const QString &what, const QStringList &operand
 {
     allowOptions(what, {QStringLiteral("id")});
     if (operands.isEmpty())
-        throw UsageError {Tr::tr("%1 needs the register KEYs to read").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 needs the register KEYs to read").arg(what)};
     for (const QString &key : operands) {
         if (key.isEmpty() || key.contains(u'='))
-            throw UsageError {Tr::tr("%1: \"%2\" is not a register key").arg(what, key)};
+            throw UsageError {ServoctlTr::tr("%1: \"%2\" is not a register key").arg(what, key)};
     }
     QString error;
     auto target = identifyServo(what);
@@ -216,8 +209,8 @@ int FeetechRegisterCommands::get(const QString &what, const QStringList &operand
     for (const QString &key : operands) {
         const feetech::Register *reg = servo.table().find(key);
         if (!reg)
-            throw UsageError {Tr::tr("%1 servos have no register \"%2\" (servoctl feetech "
-                                     "read lists them)")
+            throw UsageError {ServoctlTr::tr("%1 servos have no register \"%2\" (servoctl feetech "
+                                             "read lists them)")
                                   .arg(familyText(servo), key)};
         registers.append(reg);
         blocks.append({reg->address, reg->size});
@@ -247,22 +240,22 @@ int FeetechRegisterCommands::set(const QString &what, const QStringList &operand
 {
     allowOptions(what, {QStringLiteral("id")});
     if (operands.isEmpty())
-        throw UsageError {Tr::tr("%1 needs KEY=VALUE arguments").arg(what)};
+        throw UsageError {ServoctlTr::tr("%1 needs KEY=VALUE arguments").arg(what)};
     QVector<Assignment> assignments;
     for (const QString &operand : operands) {
         const int eq = operand.indexOf(u'=');
         if (eq <= 0)
-            throw UsageError {Tr::tr("\"%1\" is not KEY=VALUE").arg(operand)};
+            throw UsageError {ServoctlTr::tr("\"%1\" is not KEY=VALUE").arg(operand)};
         const Assignment assignment {operand.left(eq).trimmed(), operand.mid(eq + 1)};
         if (assignment.key == u"id")
-            throw UsageError {Tr::tr("the ID changes how the servo is reached: use "
-                                     "servoctl feetech set-id --id N NEW")};
+            throw UsageError {ServoctlTr::tr("the ID changes how the servo is reached: use "
+                                             "servoctl feetech set-id --id N NEW")};
         if (assignment.key == u"baud_rate")
-            throw UsageError {Tr::tr("the baud rate changes how the servo is reached: use "
-                                     "servoctl feetech set-baud --id N BAUD")};
+            throw UsageError {ServoctlTr::tr("the baud rate changes how the servo is reached: use "
+                                             "servoctl feetech set-baud --id N BAUD")};
         for (const Assignment &earlier : std::as_const(assignments)) {
             if (earlier.key == assignment.key)
-                throw UsageError {Tr::tr("%1 is given twice").arg(assignment.key)};
+                throw UsageError {ServoctlTr::tr("%1 is given twice").arg(assignment.key)};
         }
         assignments.append(assignment);
     }
@@ -276,11 +269,11 @@ int FeetechRegisterCommands::set(const QString &what, const QStringList &operand
     for (const Assignment &assignment : std::as_const(assignments)) {
         const feetech::Register *reg = servo.table().find(assignment.key);
         if (!reg)
-            throw UsageError {Tr::tr("%1 servos have no register \"%2\" (servoctl feetech "
-                                     "read lists them)")
+            throw UsageError {ServoctlTr::tr("%1 servos have no register \"%2\" (servoctl feetech "
+                                             "read lists them)")
                                   .arg(familyText(servo), assignment.key)};
         if (!reg->writable())
-            throw UsageError {Tr::tr("%1 is read-only").arg(reg->key)};
+            throw UsageError {ServoctlTr::tr("%1 is read-only").arg(reg->key)};
         const auto value = feetech::parseValue(*reg, assignment.value, &error);
         if (!value)
             throw UsageError {error};

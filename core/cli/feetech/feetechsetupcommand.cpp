@@ -3,21 +3,12 @@
 
 #include "motorsetup.h"
 #include "robottemplate.h"
+#include "servoctltr.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonObject>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -45,7 +36,7 @@ feetech::MotorTarget FeetechSetupCommand::motorTarget(const QString &what) const
             std::find_if(robot->joints.begin(), robot->joints.end(),
                          [&target](const feetech::RobotJoint &j) { return j.id == target.id; });
         if (joint == robot->joints.end())
-            throw UsageError {Tr::tr("%1: \"%2\" has no joint with ID %3")
+            throw UsageError {ServoctlTr::tr("%1: \"%2\" has no joint with ID %3")
                                   .arg(what, QDir::toNativeSeparators(path))
                                   .arg(target.id)};
         target = feetech::motorTarget(*robot, *joint);
@@ -57,10 +48,11 @@ feetech::MotorTarget FeetechSetupCommand::motorTarget(const QString &what) const
         const auto known = feetech::ModelTable::builtIn().findByName(model);
         if (!known || !known->family)
             throw UsageError {
-                Tr::tr("--model: \"%1\" is no model with a known register table").arg(model)};
+                ServoctlTr::tr("--model: \"%1\" is no model with a known register table")
+                    .arg(model)};
         if (!target.model.isEmpty()
             && feetech::ModelTable::builtIn().findByName(target.model)->name != known->name)
-            throw UsageError {Tr::tr("--model %1 does not match the template's %2 (a %3)")
+            throw UsageError {ServoctlTr::tr("--model %1 does not match the template's %2 (a %3)")
                                   .arg(model, target.joint, target.model)};
         target.model = known->name;
     }
@@ -85,8 +77,8 @@ int FeetechSetupCommand::setupMotor(const QString &what, const QStringList &oper
         : std::nullopt;
     if (!result)
         return fail(finished->message.isEmpty()
-                        ? Tr::tr("the set-up ended before it reported; check the port and "
-                                 "the cable, then run it again")
+                        ? ServoctlTr::tr("the set-up ended before it reported; check the port and "
+                                         "the cable, then run it again")
                         : finished->message);
     if (!result->ok)
         return fail(result->message);

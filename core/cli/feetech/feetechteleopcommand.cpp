@@ -5,6 +5,7 @@
 #include "armcalibration.h"
 #include "motionrecording.h"
 #include "registerkeys.h"
+#include "servoctltr.h"
 #include "telemetry.h"
 #include "teleoploop.h"
 
@@ -17,16 +18,6 @@
 #include <QTimer>
 
 #include <algorithm>
-
-namespace {
-
-// The servoctl translation context, as in every servoctl file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -41,7 +32,7 @@ FeetechTeleopCommand::identifyArm(FeetechDevice &device, const QVector<LeRobotMo
         const auto servo = device.identify(quint8(motor.id), busBaud());
         if (!servo) {
             m_output.err << "servoctl: "
-                         << Tr::tr("joint %1 (servo %2) does not answer: %3")
+                         << ServoctlTr::tr("joint %1 (servo %2) does not answer: %3")
                                 .arg(motor.name)
                                 .arg(motor.id)
                                 .arg(device.error())
@@ -66,9 +57,10 @@ FeetechTeleopCommand::identifyArm(FeetechDevice &device, const QVector<LeRobotMo
             feetech::calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax), values);
         if (!mismatches.isEmpty()) {
             m_output.err << "servoctl: "
-                         << Tr::tr("joint %1 (servo %2) does not hold what %3 says (%4): write "
-                                   "the file to the arm first: servoctl --port %5 feetech "
-                                   "calibration load %3")
+                         << ServoctlTr::tr(
+                                "joint %1 (servo %2) does not hold what %3 says (%4): write "
+                                "the file to the arm first: servoctl --port %5 feetech "
+                                "calibration load %3")
                                 .arg(motor.name)
                                 .arg(motor.id)
                                 .arg(QDir::toNativeSeparators(calibrationPath),
@@ -124,9 +116,10 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     expectOperands(what, operands, 0, {});
     for (const char *option : {"port", "leader", "calibration", "leader-calibration"}) {
         if (!m_args.has(QLatin1String(option)))
-            throw UsageError {Tr::tr("%1 needs --port FOLLOWER, --leader PORT, --calibration "
-                                     "FILE and --leader-calibration FILE")
-                                  .arg(what)};
+            throw UsageError {
+                ServoctlTr::tr("%1 needs --port FOLLOWER, --leader PORT, --calibration "
+                               "FILE and --leader-calibration FILE")
+                    .arg(what)};
     }
     const QString followerPort = m_args.value(QStringLiteral("port"));
     const QString leaderPort = m_args.value(QStringLiteral("leader"));
@@ -135,8 +128,9 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
         return a == b || (!canonicalA.isEmpty() && canonicalA == QFileInfo(b).canonicalFilePath());
     };
     if (samePort(followerPort, leaderPort))
-        throw UsageError {Tr::tr("--leader and --port name the same port: the leader and the "
-                                 "follower are two arms on two adapters")};
+        throw UsageError {
+            ServoctlTr::tr("--leader and --port name the same port: the leader and the "
+                           "follower are two arms on two adapters")};
     const double rate = m_args.has(QStringLiteral("rate"))
         ? double(integerOption(m_args, QStringLiteral("rate"), 1, 200))
         : feetech::TeleopLoop::kDefaultRateHz;
@@ -162,7 +156,7 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     QStringList missing;
     const auto mapping = feetech::TeleopMapping::match(*followerMotors, *leaderMotors, &missing);
     if (!mapping)
-        throw UsageError {Tr::tr("the two files name different joints: %1")
+        throw UsageError {ServoctlTr::tr("the two files name different joints: %1")
                               .arg(missing.join(QStringLiteral(", ")))};
     QVector<LeRobotMotor> followerJoints;
     QVector<LeRobotMotor> leaderJoints;
@@ -194,11 +188,12 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     if (!writeAll(follower, *followerServos, feetech::registerkeys::kGoalPosition, *standing)
         || !writeAll(follower, *followerServos, feetech::registerkeys::kTorqueEnable,
                      QVector<qint32>(followerServos->size(), torqueOn)))
-        return fail(follower.error().isEmpty() ? Tr::tr("the follower's torque could not be "
-                                                        "switched on")
-                                               : follower.error());
-    m_output.err << Tr::tr("servoctl: the follower holds; it moves to the leader's pose at "
-                           "%1°/s at most, then follows. Ctrl-C stops (it holds).")
+        return fail(follower.error().isEmpty()
+                        ? ServoctlTr::tr("the follower's torque could not be "
+                                         "switched on")
+                        : follower.error());
+    m_output.err << ServoctlTr::tr("servoctl: the follower holds; it moves to the leader's pose at "
+                                   "%1°/s at most, then follows. Ctrl-C stops (it holds).")
                         .arg(maxSpeed)
                  << '\n';
     m_output.err.flush();
@@ -227,10 +222,11 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
                              if (status.state == seriallink::ConnectionState::Connected)
                                  return;
                              linkLost = true;
-                             lostMessage = Tr::tr("%1 was lost: %2")
-                                               .arg(device == &follower ? Tr::tr("the follower")
-                                                                        : Tr::tr("the leader"),
-                                                    status.message);
+                             lostMessage =
+                                 ServoctlTr::tr("%1 was lost: %2")
+                                     .arg(device == &follower ? ServoctlTr::tr("the follower")
+                                                              : ServoctlTr::tr("the leader"),
+                                          status.message);
                              loop.quit();
                          });
     }
@@ -268,8 +264,9 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     if (recordError)
         m_output.err << "servoctl: " << recordError.describe() << '\n';
     else if (recorded)
-        m_output.err << Tr::tr("servoctl: %n frame(s) of the follower's goals recorded in %1",
-                               nullptr, int(teleop.recording().frames.size()))
+        m_output.err << ServoctlTr::tr(
+                            "servoctl: %n frame(s) of the follower's goals recorded in %1", nullptr,
+                            int(teleop.recording().frames.size()))
                             .arg(QDir::toNativeSeparators(recordPath))
                      << '\n';
     const qint64 writes = teleop.cycles();
@@ -282,16 +279,18 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
                                {QStringLiteral("released"), release && stopped},
                                {QStringLiteral("held"), !release && stopped},
                                {QStringLiteral("lost"), linkLost}});
-    m_output.err << Tr::tr("servoctl: %1 cycle(s) in %2 s (%3 per second), leader to follower "
-                           "%4 ms (median)")
+    m_output.err << ServoctlTr::tr(
+                        "servoctl: %1 cycle(s) in %2 s (%3 per second), leader to follower "
+                        "%4 ms (median)")
                         .arg(writes)
                         .arg(seconds, 0, 'f', 1)
                         .arg(writes / std::max(seconds, 1e-3), 0, 'f', 1)
                         .arg(medianMs, 0, 'f', 1)
                  << '\n';
-    m_output.err << (stopped ? (release ? Tr::tr("servoctl: the follower's torque is off")
-                                        : Tr::tr("servoctl: the follower holds where it is"))
-                             : Tr::tr("servoctl: the follower could not be reached to stop it"))
+    m_output.err << (stopped
+                         ? (release ? ServoctlTr::tr("servoctl: the follower's torque is off")
+                                    : ServoctlTr::tr("servoctl: the follower holds where it is"))
+                         : ServoctlTr::tr("servoctl: the follower could not be reached to stop it"))
                  << '\n';
     m_output.err.flush();
     if (linkLost)

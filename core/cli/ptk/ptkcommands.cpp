@@ -5,6 +5,7 @@
 #include "hex.h"
 #include "profile.h"
 #include "ptksession.h"
+#include "servoctltr.h"
 #include "unixsignals.h"
 
 #include <QDir>
@@ -17,15 +18,6 @@
 #include <QTimer>
 
 #include <csignal>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servoctl)
-};
-
-} // namespace
 
 namespace cli {
 
@@ -83,7 +75,7 @@ public:
         : m_output(output)
     {
         if (!args.has(QStringLiteral("port")))
-            throw UsageError {Tr::tr("ptk commands need --port PATH (see servoctl ports)")};
+            throw UsageError {ServoctlTr::tr("ptk commands need --port PATH (see servoctl ports)")};
         m_port = args.value(QStringLiteral("port"));
         m_baud = args.has(QStringLiteral("baud"))
             ? qint32(integerOption(args, QStringLiteral("baud"), 1200, 4000000))
@@ -174,7 +166,7 @@ private:
         loop.exec();
         QObject::disconnect(connection);
         if (!answered)
-            done(false, Tr::tr("the servo did not finish in time"));
+            done(false, ServoctlTr::tr("the servo did not finish in time"));
     }
 
     void trace(const seriallink::PacketLogEntry &entry)
@@ -203,22 +195,24 @@ public:
     int run(const QStringList &rest)
     {
         if (rest.isEmpty())
-            throw UsageError {Tr::tr("ptk needs a command: read, write, save, load or monitor")};
+            throw UsageError {
+                ServoctlTr::tr("ptk needs a command: read, write, save, load or monitor")};
         const QString command = rest.first();
         const QStringList operands = rest.mid(1);
         if (m_args.has(QStringLiteral("rate")))
-            throw UsageError {Tr::tr("ptk takes no --rate: the servo is polled every 50 ms")};
+            throw UsageError {
+                ServoctlTr::tr("ptk takes no --rate: the servo is polled every 50 ms")};
         // A Feetech option (--id, --ids, --settings...) means the wrong servo family was named:
         // nothing is sent on a guess.
         static const QStringList kPtkOptions {QStringLiteral("port"), QStringLiteral("baud"),
                                               QStringLiteral("echo"), QStringLiteral("duration")};
         for (const QString &name : m_args.valueNames()) {
             if (!kPtkOptions.contains(name))
-                throw UsageError {Tr::tr("ptk takes no --%1").arg(name)};
+                throw UsageError {ServoctlTr::tr("ptk takes no --%1").arg(name)};
         }
         if (command != QLatin1String("monitor")) {
             if (m_args.has(QStringLiteral("duration")))
-                throw UsageError {Tr::tr("only ptk monitor takes --duration")};
+                throw UsageError {ServoctlTr::tr("only ptk monitor takes --duration")};
         }
         if (command == QLatin1String("read"))
             return read(operands);
@@ -230,9 +224,10 @@ public:
             return load(operands);
         if (command == QLatin1String("monitor"))
             return monitor(operands);
-        throw UsageError {Tr::tr("unknown ptk command \"%1\": use read, write, save, load or "
-                                 "monitor")
-                              .arg(command)};
+        throw UsageError {
+            ServoctlTr::tr("unknown ptk command \"%1\": use read, write, save, load or "
+                           "monitor")
+                .arg(command)};
     }
 
 private:
@@ -265,7 +260,7 @@ private:
     int read(const QStringList &operands)
     {
         if (!operands.isEmpty())
-            throw UsageError {Tr::tr("ptk read takes no arguments")};
+            throw UsageError {ServoctlTr::tr("ptk read takes no arguments")};
         PtkDevice device(m_args, m_output);
         const auto values = device.openAndRead();
         if (!values)
@@ -296,9 +291,9 @@ private:
                 {QStringLiteral("key"), QLatin1String(meta.key)},
                 {QStringLiteral("written"), userValue(meta, wrote)},
                 {QStringLiteral("read"), read ? userValue(meta, *read) : QJsonValue()}});
-            described.append(Tr::tr("%1: wrote %2, the servo holds %3")
+            described.append(ServoctlTr::tr("%1: wrote %2, the servo holds %3")
                                  .arg(QLatin1String(meta.key), userText(meta, wrote),
-                                      read ? userText(meta, *read) : Tr::tr("nothing")));
+                                      read ? userText(meta, *read) : ServoctlTr::tr("nothing")));
         }
         const bool verified = mismatches.isEmpty();
         if (m_output.json) {
@@ -307,20 +302,20 @@ private:
                                       {QStringLiteral("mismatches"), mismatches}};
             m_output.out << QJsonDocument(result).toJson(QJsonDocument::Indented);
         } else if (verified) {
-            m_output.out << Tr::tr("written and verified") << '\n';
+            m_output.out << ServoctlTr::tr("written and verified") << '\n';
         }
         m_output.out.flush();
         if (!verified)
-            return fail(
-                Tr::tr("verification failed: %1").arg(described.join(QStringLiteral("; "))));
+            return fail(ServoctlTr::tr("verification failed: %1")
+                            .arg(described.join(QStringLiteral("; "))));
         return ExitOk;
     }
 
     int write(const QStringList &operands)
     {
         if (operands.isEmpty())
-            throw UsageError {
-                Tr::tr("ptk write needs NAME=VALUE arguments (names: %1)").arg(knownKeys())};
+            throw UsageError {ServoctlTr::tr("ptk write needs NAME=VALUE arguments (names: %1)")
+                                  .arg(knownKeys())};
         const ptk::ParameterSet changes = parsePtkAssignments(operands);
         return program(changes);
     }
@@ -328,12 +323,12 @@ private:
     int save(const QStringList &operands)
     {
         if (operands.size() != 1)
-            throw UsageError {Tr::tr("ptk save needs one FILE")};
+            throw UsageError {ServoctlTr::tr("ptk save needs one FILE")};
         const QString path = operands.first();
         const QFileInfo target(path);
         if (!target.absoluteDir().exists())
-            throw UsageError {
-                Tr::tr("the folder of %1 does not exist").arg(QDir::toNativeSeparators(path))};
+            throw UsageError {ServoctlTr::tr("the folder of %1 does not exist")
+                                  .arg(QDir::toNativeSeparators(path))};
         PtkDevice device(m_args, m_output);
         const auto values = device.openAndRead();
         if (!values)
@@ -349,7 +344,7 @@ private:
         if (m_output.json)
             printValues(*values);
         else
-            m_output.out << Tr::tr("saved %1").arg(QDir::toNativeSeparators(path)) << '\n';
+            m_output.out << ServoctlTr::tr("saved %1").arg(QDir::toNativeSeparators(path)) << '\n';
         m_output.out.flush();
         return ExitOk;
     }
@@ -357,7 +352,7 @@ private:
     int load(const QStringList &operands)
     {
         if (operands.size() != 1)
-            throw UsageError {Tr::tr("ptk load needs one FILE")};
+            throw UsageError {ServoctlTr::tr("ptk load needs one FILE")};
         util::FileError error;
         const auto loaded =
             profile::load(operands.first(), kFamily, ptk::modelDefinitions(), &error);
@@ -372,11 +367,11 @@ private:
     int monitor(const QStringList &operands)
     {
         if (!operands.isEmpty())
-            throw UsageError {Tr::tr("ptk monitor takes no arguments")};
+            throw UsageError {ServoctlTr::tr("ptk monitor takes no arguments")};
         const std::optional<double> duration = durationOption(m_args);
         const bool csv = m_args.flag(QStringLiteral("csv"));
         if (csv && m_output.json)
-            throw UsageError {Tr::tr("choose --csv or --json, not both")};
+            throw UsageError {ServoctlTr::tr("choose --csv or --json, not both")};
 
         PtkDevice device(m_args, m_output);
         if (!device.open(true))
@@ -407,7 +402,7 @@ private:
         runUntilInterrupted(loop, duration);
         if (rows == 0) {
             const QString message = device.session().status().message;
-            return fail(message.isEmpty() ? Tr::tr("the servo did not answer") : message);
+            return fail(message.isEmpty() ? ServoctlTr::tr("the servo did not answer") : message);
         }
         return ExitOk;
     }

@@ -1,6 +1,7 @@
 // Feetech bus steps: exchanges with a decoded answer, locked writes, reads, pings, relocking.
 #include "busexchange.h"
 
+#include "feetechsessiontr.h"
 #include "feetechvalue.h"
 #include "servoparameters.h"
 
@@ -12,15 +13,6 @@
 #include <QPointer>
 
 #include <algorithm>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -119,11 +111,11 @@ QString failureText(const seriallink::TransactionResult &result)
     case seriallink::Failure::None:
         return {};
     case seriallink::Failure::Timeout:
-        return Tr::tr("no reply after %n attempt(s)", nullptr, result.attempts);
+        return FeetechSessionTr::tr("no reply after %n attempt(s)", nullptr, result.attempts);
     case seriallink::Failure::LinkDown:
-        return Tr::tr("the port is closed");
+        return FeetechSessionTr::tr("the port is closed");
     case seriallink::Failure::Cancelled:
-        return Tr::tr("cancelled");
+        return FeetechSessionTr::tr("cancelled");
     }
     return {};
 }
@@ -145,7 +137,7 @@ OperationFailure failureKind(const seriallink::TransactionResult &result)
 
 static QString readFailure(int address, int size, const seriallink::TransactionResult &result)
 {
-    return Tr::tr("Reading %1 bytes at address %2: %3")
+    return FeetechSessionTr::tr("Reading %1 bytes at address %2: %3")
         .arg(size)
         .arg(address)
         .arg(failureText(result));
@@ -158,7 +150,7 @@ const Register *registerAt(const ServoInfo &servo, QStringView key)
 
 QString servoName(const ServoInfo &servo)
 {
-    return Tr::tr("servo %1 at %2").arg(servo.id).arg(baudText(servo.baud));
+    return FeetechSessionTr::tr("servo %1 at %2").arg(servo.id).arg(baudText(servo.baud));
 }
 
 BusExchange::BusExchange(seriallink::LinkSession &link, const SessionTiming &timing,
@@ -341,7 +333,7 @@ Step BusExchange::setBaud(qint32 baud)
     return [this, baud](StepDone next) {
         if (!m_link.setBaudRate(baud)) {
             fail(next, OperationFailure::PortSetting,
-                 Tr::tr("The port cannot be set to %1.").arg(baudText(baud)));
+                 FeetechSessionTr::tr("The port cannot be set to %1.").arg(baudText(baud)));
             return;
         }
         next(true, {});
@@ -367,7 +359,7 @@ Step BusExchange::instruction(quint8 id, const QByteArray &request, bool expectR
                                     const std::optional<Packet> &) {
                      if (!result.ok())
                          fail(next, failureKind(result),
-                              Tr::tr("%1: %2").arg(what, failureText(result)));
+                              FeetechSessionTr::tr("%1: %2").arg(what, failureText(result)));
                      else
                          next(true, {});
                  });
@@ -406,7 +398,7 @@ Step BusExchange::writeValue(std::shared_ptr<ServoInfo> servo, const QString &ke
     return [this, servo, registerWrite, key, sending](StepDone next) {
         sending();
         write(servo->id, registerWrite.address, registerWrite.bytes, servo->repliesToWrites(),
-              Tr::tr("Writing %1").arg(key))(next);
+              FeetechSessionTr::tr("Writing %1").arg(key))(next);
     };
 }
 
@@ -416,10 +408,11 @@ Step BusExchange::lock(std::shared_ptr<ServoInfo> servo, bool locked)
         const Register *lock = registerAt(*servo, u"lock");
         if (!lock) {
             fail(next, OperationFailure::Unsupported,
-                 Tr::tr("The servo's model has no known EEPROM lock register."));
+                 FeetechSessionTr::tr("The servo's model has no known EEPROM lock register."));
             return;
         }
-        const QString what = locked ? Tr::tr("Locking the EEPROM") : Tr::tr("Unlocking the EEPROM");
+        const QString what = locked ? FeetechSessionTr::tr("Locking the EEPROM")
+                                    : FeetechSessionTr::tr("Unlocking the EEPROM");
         write(servo->id, lock->address, QByteArray(1, char(locked ? 1 : 0)),
               servo->repliesToWrites(), what)(next);
     };
@@ -516,7 +509,7 @@ Step BusExchange::identify(std::shared_ptr<ServoInfo> servo)
                          : std::nullopt;
                      if (!info) {
                          fail(next, reply ? OperationFailure::BadReply : failureKind(result),
-                              Tr::tr("Reading the identity of servo %1: %2")
+                              FeetechSessionTr::tr("Reading the identity of servo %1: %2")
                                   .arg(servo->id)
                                   .arg(failureText(result)));
                          return;
@@ -542,10 +535,10 @@ Step BusExchange::ping(quint8 id, bool mustAnswer, int retries)
                          fail(next, failureKind(result), failureText(result));
                      else if (mustAnswer && !reply)
                          fail(next, OperationFailure::NoAnswer,
-                              Tr::tr("Servo %1 does not answer.").arg(id));
+                              FeetechSessionTr::tr("Servo %1 does not answer.").arg(id));
                      else if (!mustAnswer && reply)
                          fail(next, OperationFailure::IdInUse,
-                              Tr::tr("ID %1 is already in use on this bus.").arg(id));
+                              FeetechSessionTr::tr("ID %1 is already in use on this bus.").arg(id));
                      else
                          next(true, {});
                  });
@@ -608,7 +601,8 @@ void BusExchange::searchBauds(std::shared_ptr<ServoInfo> servo, QVector<qint32> 
 {
     if (rates.isEmpty()) {
         fail(done, OperationFailure::NoAnswer,
-             Tr::tr("Servo %1 answers at no baud rate; scan the bus to find it.").arg(servo->id));
+             FeetechSessionTr::tr("Servo %1 answers at no baud rate; scan the bus to find it.")
+                 .arg(servo->id));
         return;
     }
     const qint32 rate = rates.takeFirst();

@@ -1,6 +1,7 @@
 // Feetech bus scan: probe each rate, PING each ID with an adaptive wait, re-ask late answers.
 #include "busscan.h"
 
+#include "feetechsessiontr.h"
 #include "linksession.h"
 #include "sharedidcheck.h"
 #include "transport.h"
@@ -9,15 +10,6 @@
 
 #include <algorithm>
 #include <memory>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -151,7 +143,9 @@ void BusScan::scanBaud(int baudIndex)
     if (!m_scan)
         return;
     if (m_scan->cancelled) {
-        end(false, Tr::tr("Scan cancelled; %n servo(s) found before.", nullptr, m_scan->found));
+        end(false,
+            FeetechSessionTr::tr("Scan cancelled; %n servo(s) found before.", nullptr,
+                                 m_scan->found));
         return;
     }
     if (baudIndex >= m_scan->options.bauds.size()) {
@@ -159,7 +153,8 @@ void BusScan::scanBaud(int baudIndex)
             lookAgainAtSilentRates();
             return;
         }
-        end(true, Tr::tr("Scan complete: %n servo(s) found.", nullptr, m_scan->found));
+        end(true,
+            FeetechSessionTr::tr("Scan complete: %n servo(s) found.", nullptr, m_scan->found));
         return;
     }
     const qint32 baud = m_scan->options.bauds.at(baudIndex);
@@ -172,7 +167,7 @@ void BusScan::scanBaud(int baudIndex)
     m_scan->answeredAtRate = false;
     m_strays.discardPending();
     if (!feetech::baudCode(baud) && baud != m_bus.link().transport().baudRate()) {
-        end(false, Tr::tr("%1 is not a Feetech baud rate.").arg(baudText(baud)));
+        end(false, FeetechSessionTr::tr("%1 is not a Feetech baud rate.").arg(baudText(baud)));
         return;
     }
     m_bus.setBaud(baud)([this, baudIndex, baud](bool ok, const QString &message) {
@@ -386,7 +381,7 @@ void BusScan::identifyFound(quint8 id, qint32 baud, quint8 statusBits, std::func
         servo->statusBits = statusBits;
         if (!ok) {
             // It answers PING but not READ: show it, with nothing guessed about it.
-            servo->model.name = Tr::tr("unknown (identity unreadable)");
+            servo->model.name = FeetechSessionTr::tr("unknown (identity unreadable)");
             servo->model.family.reset();
             reportFound(*servo);
             then();

@@ -14,7 +14,7 @@
 
 namespace {
 
-struct Tr
+struct PortProbeTr
 {
     Q_DECLARE_TR_FUNCTIONS(PortProbe)
 };
@@ -101,11 +101,12 @@ void PortProbe::ask(int step)
     m_step = step;
     const qint32 baud = step == 0 ? kPtkBaud : baudRates().at(step - 1);
     emit progress(step, stepCount(),
-                  step == 0 ? Tr::tr("Asking for a PTK servo at %1…").arg(baudText(baud))
-                            : Tr::tr("Asking for Feetech servos at %1…").arg(baudText(baud)));
+                  step == 0
+                      ? PortProbeTr::tr("Asking for a PTK servo at %1…").arg(baudText(baud))
+                      : PortProbeTr::tr("Asking for Feetech servos at %1…").arg(baudText(baud)));
     if (!m_transport->setBaudRate(baud)) {
         m_report.access.problem = seriallink::PortAccess::Problem::Other;
-        m_report.access.detail = Tr::tr("the port refused %1").arg(baudText(baud));
+        m_report.access.detail = PortProbeTr::tr("the port refused %1").arg(baudText(baud));
         finish();
         return;
     }

@@ -7,7 +7,7 @@
 
 namespace {
 
-struct Tr
+struct SharedIdCheckTr
 {
     Q_DECLARE_TR_FUNCTIONS(SharedIdCheck)
 };
@@ -66,9 +66,10 @@ void readOnce(BusExchange &bus, const ServoInfo &servo, bool quiet, std::shared_
 
 QString sharedIdRefusal(quint8 id)
 {
-    return Tr::tr("Two or more servos answer at ID %1 (their replies come back garbled): nothing "
-                  "is written to it while it is shared. Connect them one at a time and give each "
-                  "its own ID.")
+    return SharedIdCheckTr::tr(
+               "Two or more servos answer at ID %1 (their replies come back garbled): nothing "
+               "is written to it while it is shared. Connect them one at a time and give each "
+               "its own ID.")
         .arg(id);
 }
 

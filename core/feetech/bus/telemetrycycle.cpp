@@ -1,6 +1,7 @@
 // Feetech telemetry cycle: plans each cycle by rate and block, reads, counts misses, batches.
 #include "telemetrycycle.h"
 
+#include "feetechsessiontr.h"
 #include "linksession.h"
 #include "transport.h"
 
@@ -10,15 +11,6 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -263,7 +255,8 @@ TelemetryCycle::CycleStep TelemetryCycle::setBaud(qint32 baud)
 {
     return [this, baud](std::function<void()> next) {
         if (!m_bus.link().setBaudRate(baud))
-            m_bus.logNote(Tr::tr("The port cannot be set to %1.").arg(baudText(baud)), true);
+            m_bus.logNote(FeetechSessionTr::tr("The port cannot be set to %1.").arg(baudText(baud)),
+                          true);
         next();
     };
 }
@@ -370,7 +363,7 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
             // A note, not an error: the answer may still come late, and a servo that stays
             // silent is reported as stopped once it has missed several cycles.
             if (!silent.isEmpty() && result.failure != seriallink::Failure::LinkDown)
-                m_bus.logNote(Tr::tr("SYNC READ at %1: no answer in time from ID %2")
+                m_bus.logNote(FeetechSessionTr::tr("SYNC READ at %1: no answer in time from ID %2")
                                   .arg(baudText(baud), silent.join(QStringLiteral(", "))));
             if (silent.isEmpty() || result.failure != seriallink::Failure::Timeout)
                 next();
@@ -469,7 +462,7 @@ void TelemetryCycle::noteAnswer(int servoIndex, const Packet &reply, qint64 stea
     m_batch.append(*sample);
     if (servo.stats.missing) {
         servo.stats.missing = false;
-        m_bus.logNote(Tr::tr("%1 answers again; it is back in the cycle.")
+        m_bus.logNote(FeetechSessionTr::tr("%1 answers again; it is back in the cycle.")
                           .arg(feetech::servoName(servo.info)));
         publishStats();
     }
@@ -487,8 +480,9 @@ void TelemetryCycle::noteMiss(int servoIndex)
             + std::chrono::duration_cast<std::chrono::microseconds>(
                   m_state->options.missingProbeInterval)
                   .count();
-        m_bus.logNote(Tr::tr("%1 stopped answering; it is left out of the cycle and asked alone "
-                             "every %2 ms until it answers.")
+        m_bus.logNote(FeetechSessionTr::tr(
+                          "%1 stopped answering; it is left out of the cycle and asked alone "
+                          "every %2 ms until it answers.")
                           .arg(feetech::servoName(servo.info))
                           .arg(m_state->options.missingProbeInterval.count()),
                       true);

@@ -2,20 +2,12 @@
 // and the checks before and after a test that moves a servo and puts it back.
 #include "torqueonhold.h"
 
+#include "feetechsessiontr.h"
 #include "registerkeys.h"
 #include "registertable.h"
 #include "servoparameters.h"
 
 #include <QCoreApplication>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -87,7 +79,8 @@ Step holdBeforeTorqueOn(BusExchange &bus, std::shared_ptr<ServoInfo> servo)
                     next(true, {});
                     return;
                 }
-                next(held, held ? QString() : Tr::tr("%1 Torque stays off.").arg(why));
+                next(held,
+                     held ? QString() : FeetechSessionTr::tr("%1 Torque stays off.").arg(why));
             });
         });
     };
@@ -119,15 +112,16 @@ Step holdAtPresentPosition(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
             }
             if (!*modeNow) {
                 bus.fail(next, OperationFailure::BadReply,
-                         Tr::tr("The operating mode could not be read."));
+                         FeetechSessionTr::tr("The operating mode could not be read."));
                 return;
             }
             if (**modeNow != 0) {
                 if (notInPositionMode)
                     *notInPositionMode = true;
                 bus.fail(next, OperationFailure::Unsupported,
-                         Tr::tr("Servo %1 is not in position mode (mode %2): its goal is not a "
-                                "position, so it cannot be held there.")
+                         FeetechSessionTr::tr(
+                             "Servo %1 is not in position mode (mode %2): its goal is not a "
+                             "position, so it cannot be held there.")
                              .arg(servo->id)
                              .arg(**modeNow));
                 return;
@@ -147,35 +141,38 @@ Step writeGoalAtPresent(BusExchange &bus, std::shared_ptr<ServoInfo> servo,
         const Register &present = *table.find(kPresentPosition);
         const Register &goal = *table.find(kGoalPosition);
         auto where = std::make_shared<std::optional<qint32>>();
-        bus.read(
-            servo, present.address, present.size, ReadSource::ReadBack,
-            [&table, &present, where](const QByteArray &bytes) {
-                *where = valueOf(table, present, bytes);
-            })([&bus, servo, &table, &goal, where, heldAt, next](bool ok, const QString &message) {
-            if (!ok) {
-                next(false, message);
-                return;
-            }
-            if (!*where) {
-                bus.fail(next, OperationFailure::BadReply,
-                         Tr::tr("The present position could not be read."));
-                return;
-            }
-            QString error;
-            const auto writes = encodeWrites(table, {{goal.key, **where}}, &error);
-            if (!writes || writes->size() != 1) {
-                bus.fail(next, OperationFailure::InvalidRequest,
-                         Tr::tr("The goal cannot be set to the present position (%1).").arg(error));
-                return;
-            }
-            if (heldAt)
-                *heldAt = *where;
-            const RegisterWrite hold = writes->first();
-            bus.runSteps({bus.write(servo->id, hold.address, hold.bytes, servo->repliesToWrites(),
-                                    Tr::tr("Setting the goal to the present position")),
-                          bus.read(servo, goal.address, goal.size, ReadSource::ReadBack)},
-                         next);
-        });
+        bus.read(servo, present.address, present.size, ReadSource::ReadBack,
+                 [&table, &present, where](const QByteArray &bytes) {
+                     *where = valueOf(table, present, bytes);
+                 })(
+            [&bus, servo, &table, &goal, where, heldAt, next](bool ok, const QString &message) {
+                if (!ok) {
+                    next(false, message);
+                    return;
+                }
+                if (!*where) {
+                    bus.fail(next, OperationFailure::BadReply,
+                             FeetechSessionTr::tr("The present position could not be read."));
+                    return;
+                }
+                QString error;
+                const auto writes = encodeWrites(table, {{goal.key, **where}}, &error);
+                if (!writes || writes->size() != 1) {
+                    bus.fail(
+                        next, OperationFailure::InvalidRequest,
+                        FeetechSessionTr::tr("The goal cannot be set to the present position (%1).")
+                            .arg(error));
+                    return;
+                }
+                if (heldAt)
+                    *heldAt = *where;
+                const RegisterWrite hold = writes->first();
+                bus.runSteps(
+                    {bus.write(servo->id, hold.address, hold.bytes, servo->repliesToWrites(),
+                               FeetechSessionTr::tr("Setting the goal to the present position")),
+                     bus.read(servo, goal.address, goal.size, ReadSource::ReadBack)},
+                    next);
+            });
     };
 }
 
@@ -186,13 +183,14 @@ QString whyNotToMove(const ServoInfo &servo, const QHash<QString, qint32> &befor
 {
     // Register 33: every family's mode 0 holds a position.
     if (before.contains(kMode) && before.value(kMode) != 0) {
-        return Tr::tr("%1 is not in position mode (mode %2): it is not moved.")
+        return FeetechSessionTr::tr("%1 is not in position mode (mode %2): it is not moved.")
             .arg(servoName(servo))
             .arg(before.value(kMode));
     }
     const auto torque = servo.table().torqueMode(before.value(kTorqueEnable));
     if (torque != TorqueMode::On && torque != TorqueMode::Off) {
-        return Tr::tr("%1 holds torque enable %2, neither on nor off: it is not moved.")
+        return FeetechSessionTr::tr(
+                   "%1 holds torque enable %2, neither on nor off: it is not moved.")
             .arg(servoName(servo))
             .arg(before.value(kTorqueEnable));
     }
@@ -206,12 +204,15 @@ QString notRestoredAsItWas(const QStringList &keys, const QHash<QString, qint32>
     QStringList differ;
     for (const QString &key : keys) {
         if (now.value(key) != before.value(key))
-            differ.append(
-                Tr::tr("%1 reads %2, not %3").arg(key).arg(now.value(key)).arg(before.value(key)));
+            differ.append(FeetechSessionTr::tr("%1 reads %2, not %3")
+                              .arg(key)
+                              .arg(now.value(key))
+                              .arg(before.value(key)));
     }
     if (differ.isEmpty())
         return {};
-    return Tr::tr("it was not restored as it was: %1.").arg(differ.join(QStringLiteral(", ")));
+    return FeetechSessionTr::tr("it was not restored as it was: %1.")
+        .arg(differ.join(QStringLiteral(", ")));
 }
 
 } // namespace feetech

@@ -8,7 +8,7 @@
 namespace {
 
 // The context the client's sentences have always been translated in.
-struct Tr
+struct FeetechBusClientTr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechBusClient)
 };
@@ -74,64 +74,78 @@ QString Refusal::describe() const
     case Code::None:
         return {};
     case Code::NotConnected:
-        return Tr::tr("The bus is not connected.");
+        return FeetechBusClientTr::tr("The bus is not connected.");
     case Code::NoServo:
-        return Tr::tr("No servo is selected.");
+        return FeetechBusClientTr::tr("No servo is selected.");
     case Code::SharedId:
         return sharedIdRefusal(quint8(id));
     case Code::UnknownModel:
         if (m_servoId)
-            return Tr::tr("Servo %1 is of an unknown model; nothing is written to it.").arg(id);
-        return Tr::tr("This servo's model is unknown; its memory is shown read-only.");
+            return FeetechBusClientTr::tr(
+                       "Servo %1 is of an unknown model; nothing is written to it.")
+                .arg(id);
+        return FeetechBusClientTr::tr(
+            "This servo's model is unknown; its memory is shown read-only.");
     case Code::Busy:
-        return Tr::tr("Another operation is still running.");
+        return FeetechBusClientTr::tr("Another operation is still running.");
     case Code::ServoHeld:
         return m_detail;
     case Code::NotMovable:
-        return Tr::tr("This servo has no goal position register: it cannot be moved.");
+        return FeetechBusClientTr::tr(
+            "This servo has no goal position register: it cannot be moved.");
     case Code::NoMiddleCalibration:
-        return Tr::tr("This servo has no middle calibration (SCS servos have no offset "
-                      "register).");
+        return FeetechBusClientTr::tr(
+            "This servo has no middle calibration (SCS servos have no offset "
+            "register).");
     case Code::NoStatusRegister:
-        return Tr::tr("This servo has no status register: there is nothing to recover.");
+        return FeetechBusClientTr::tr(
+            "This servo has no status register: there is nothing to recover.");
     case Code::IdInUse:
-        return Tr::tr("ID %1 is already in use on this bus.").arg(m_value);
+        return FeetechBusClientTr::tr("ID %1 is already in use on this bus.").arg(m_value);
     case Code::NothingToWrite:
-        return Tr::tr("Nothing to write.");
+        return FeetechBusClientTr::tr("Nothing to write.");
     case Code::NothingToMove:
-        return Tr::tr("Nothing to move.");
+        return FeetechBusClientTr::tr("Nothing to move.");
     case Code::BadValue:
         if (m_servoId)
-            return Tr::tr("Servo %1: %2").arg(id).arg(m_detail);
+            return FeetechBusClientTr::tr("Servo %1: %2").arg(id).arg(m_detail);
         return m_detail;
     case Code::NotAFrame:
-        return Tr::tr("That is not a whole Feetech frame (header, length and checksum).");
+        return FeetechBusClientTr::tr(
+            "That is not a whole Feetech frame (header, length and checksum).");
     case Code::NotAFeetechRate:
-        return Tr::tr("%1 bps is not a Feetech baud rate.").arg(m_value);
+        return FeetechBusClientTr::tr("%1 bps is not a Feetech baud rate.").arg(m_value);
     case Code::NoServoToCheck:
-        return Tr::tr("No servo to check: scan the bus first.");
+        return FeetechBusClientTr::tr("No servo to check: scan the bus first.");
     case Code::NotConfirmed:
-        return Tr::tr("The move test moves servo %1: it runs only once that is confirmed.").arg(id);
+        return FeetechBusClientTr::tr(
+                   "The move test moves servo %1: it runs only once that is confirmed.")
+            .arg(id);
     case Code::NoServoToMonitor:
-        return Tr::tr("Choose at least one servo to monitor.");
+        return FeetechBusClientTr::tr("Choose at least one servo to monitor.");
     case Code::NegativeRate:
-        return Tr::tr("The rate cannot be negative.");
+        return FeetechBusClientTr::tr("The rate cannot be negative.");
     case Code::UndecodableFeedback:
-        return Tr::tr("Servo %1 is of an unknown model: its feedback cannot be decoded.").arg(id);
+        return FeetechBusClientTr::tr(
+                   "Servo %1 is of an unknown model: its feedback cannot be decoded.")
+            .arg(id);
     case Code::JointNotFound:
-        return Tr::tr("The recording moves servo %1, which the scan did not find: nothing was "
-                      "moved.")
+        return FeetechBusClientTr::tr(
+                   "The recording moves servo %1, which the scan did not find: nothing was "
+                   "moved.")
             .arg(id);
     case Code::SeveralRates:
-        return Tr::tr("The servos to record answer at different baud rates: choose servos at "
-                      "one rate.");
+        return FeetechBusClientTr::tr(
+            "The servos to record answer at different baud rates: choose servos at "
+            "one rate.");
     case Code::BusShared:
-        return Tr::tr("The bus is shared with another program: this would change the port's rate "
-                      "under it. Stop sharing first.");
+        return FeetechBusClientTr::tr(
+            "The bus is shared with another program: this would change the port's rate "
+            "under it. Stop sharing first.");
     case Code::AlreadyShared:
-        return Tr::tr("The bus is shared already.");
+        return FeetechBusClientTr::tr("The bus is shared already.");
     case Code::NoSharePath:
-        return Tr::tr("Name the path the other program opens.");
+        return FeetechBusClientTr::tr("Name the path the other program opens.");
     }
     return {};
 }

@@ -9,7 +9,7 @@
 
 namespace {
 
-struct Tr
+struct FeetechServoListTr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechServoList)
 };
@@ -138,15 +138,15 @@ QVariant ServoList::headerData(int section, Qt::Orientation orientation, int rol
         return {};
     switch (section) {
     case IdColumn:
-        return Tr::tr("ID");
+        return FeetechServoListTr::tr("ID");
     case BaudColumn:
-        return Tr::tr("Rate");
+        return FeetechServoListTr::tr("Rate");
     case ModelColumn:
-        return Tr::tr("Model");
+        return FeetechServoListTr::tr("Model");
     case FamilyColumn:
-        return Tr::tr("Family");
+        return FeetechServoListTr::tr("Family");
     case FirmwareColumn:
-        return Tr::tr("Firmware");
+        return FeetechServoListTr::tr("Firmware");
     default:
         return {};
     }

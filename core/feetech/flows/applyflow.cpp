@@ -1,6 +1,7 @@
 // Apply flow: the plan from a servo's pending edits, locked register writes, and the chain.
 #include "applyflow.h"
 
+#include "feetechsessiontr.h"
 #include "parametermodel.h"
 #include "servoparameters.h"
 #include "torqueonhold.h"
@@ -9,15 +10,6 @@
 
 #include <algorithm>
 #include <memory>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -28,8 +20,9 @@ const QString kBaudKey = QStringLiteral("baud_rate");
 
 QString lockLeftOpenWarning()
 {
-    return Tr::tr("The EEPROM lock could not be closed again: the servo's EEPROM may be left "
-                  "open. Read the servo again and lock it when it answers.");
+    return FeetechSessionTr::tr(
+        "The EEPROM lock could not be closed again: the servo's EEPROM may be left "
+        "open. Read the servo again and lock it when it answers.");
 }
 
 } // namespace
@@ -84,25 +77,29 @@ ApplyFlow::ApplyFlow(BusExchange &bus, GuidedFlows &flows, QObject *parent)
 QString ApplyFlow::refusal(const ServoInfo &servo, const QVector<RegisterWrite> &writes) const
 {
     if (!servo.hasTable())
-        return Tr::tr("Servo %1 is of an unknown model; its memory is shown read-only and nothing "
-                      "is written to it.")
+        return FeetechSessionTr::tr(
+                   "Servo %1 is of an unknown model; its memory is shown read-only and nothing "
+                   "is written to it.")
             .arg(servo.id);
     const Register *lockRegister = registerAt(servo, u"lock");
     const Register *torque = registerAt(servo, u"torque_enable");
     for (const RegisterWrite &item : writes) {
         for (const Register *guarded : {registerAt(servo, kIdKey), registerAt(servo, kBaudKey)}) {
             if (guarded && guarded->overlaps(item.address, int(item.bytes.size())))
-                return Tr::tr("The ID and the baud rate change how the servo is reached; use "
-                              "Change ID or Change baud rate.");
+                return FeetechSessionTr::tr(
+                    "The ID and the baud rate change how the servo is reached; use "
+                    "Change ID or Change baud rate.");
         }
         if (lockRegister && item.address == lockRegister->address)
-            return Tr::tr("The EEPROM lock is opened and closed by ServoBench around each EEPROM "
-                          "write; it is not written by hand.");
+            return FeetechSessionTr::tr(
+                "The EEPROM lock is opened and closed by ServoBench around each EEPROM "
+                "write; it is not written by hand.");
         const bool calibrates = torque && item.address == torque->address && !item.bytes.isEmpty()
             && servo.table().torqueValue(TorqueMode::CalibrateMiddle)
                 == qint32(quint8(item.bytes.at(0)));
         if (calibrates)
-            return Tr::tr("Torque enable 128 recalibrates the middle; use Calibrate middle.");
+            return FeetechSessionTr::tr(
+                "Torque enable 128 recalibrates the middle; use Calibrate middle.");
     }
     return {};
 }
@@ -143,7 +140,7 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
     for (const RegisterWrite &item : writes)
         steps.push_back(
             counted(m_bus.write(servo.id, item.address, item.bytes, servo.repliesToWrites(),
-                                Tr::tr("Writing address %1").arg(item.address))));
+                                FeetechSessionTr::tr("Writing address %1").arg(item.address))));
     if (eeprom)
         steps.push_back(counted(m_bus.lock(target, true)));
     for (const RegisterWrite &item : writes)
@@ -154,7 +151,11 @@ void ApplyFlow::write(const ServoInfo &servo, const QVector<RegisterWrite> &writ
         std::move(steps),
         [this, finish, servo, target, eeprom, writes, sent](bool ok, const QString &message) {
             if (ok) {
-                finish({Operation::Write, true, Tr::tr("Written and read back."), servo, {}});
+                finish({Operation::Write,
+                        true,
+                        FeetechSessionTr::tr("Written and read back."),
+                        servo,
+                        {}});
                 return;
             }
             const OperationFailure failure = m_bus.stepFailure();
@@ -233,7 +234,8 @@ void ApplyFlow::apply(const ServoInfo &servo, const ApplyPlan &plan, GuidedFlows
                  m_flows.changeBaud(at, baud, std::move(f));
              }});
     if (chain->steps.empty()) {
-        OperationResult result {Operation::Write, false, Tr::tr("Nothing to write."), servo, {}};
+        OperationResult result {
+            Operation::Write, false, FeetechSessionTr::tr("Nothing to write."), servo, {}};
         result.failure = OperationFailure::NothingToDo;
         chain->finish(result);
         return;

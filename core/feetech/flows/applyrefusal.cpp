@@ -1,17 +1,8 @@
 // The refusals of the apply plan, and their sentences.
 #include "applyrefusal.h"
+#include "feetechsessiontr.h"
 
 #include <QCoreApplication>
-
-namespace {
-
-// The context the apply flow's sentences have always been translated in.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -35,9 +26,9 @@ QString ApplyRefusal::describe() const
     case Code::None:
         return {};
     case Code::NothingToWrite:
-        return Tr::tr("Nothing to write.");
+        return FeetechSessionTr::tr("Nothing to write.");
     case Code::IdInUse:
-        return Tr::tr("ID %1 is already in use on this bus.").arg(m_newId);
+        return FeetechSessionTr::tr("ID %1 is already in use on this bus.").arg(m_newId);
     case Code::BadValue:
         return m_detail;
     }

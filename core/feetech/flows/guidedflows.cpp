@@ -1,21 +1,13 @@
 // Feetech guided flows: each one planned as a list of steps and run on the bus exchange.
 #include "guidedflows.h"
 
+#include "feetechsessiontr.h"
 #include "linksession.h"
 
 #include <QCoreApplication>
 #include <QTimer>
 
 #include <memory>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -32,17 +24,20 @@ void GuidedFlows::changeId(const ServoInfo &servo, int newId, const QVector<int>
     if (!idRegister) {
         result.failure = OperationFailure::Unsupported;
         result.message =
-            Tr::tr("Servo %1 is of an unknown model; its ID is not changed.").arg(servo.id);
+            FeetechSessionTr::tr("Servo %1 is of an unknown model; its ID is not changed.")
+                .arg(servo.id);
     } else if (newId < 0 || newId > kMaxServoId) {
         result.failure = OperationFailure::InvalidRequest;
-        result.message = Tr::tr("ID %1 is out of range (0 to %2).").arg(newId).arg(kMaxServoId);
+        result.message =
+            FeetechSessionTr::tr("ID %1 is out of range (0 to %2).").arg(newId).arg(kMaxServoId);
     } else if (newId == servo.id) {
         result.failure = OperationFailure::NothingToDo;
-        result.message = Tr::tr("The servo already has ID %1.").arg(newId);
+        result.message = FeetechSessionTr::tr("The servo already has ID %1.").arg(newId);
     } else if (idsInUse.contains(newId)) {
         result.failure = OperationFailure::IdInUse;
         result.message =
-            Tr::tr("ID %1 is already in use on this bus; nothing was written.").arg(newId);
+            FeetechSessionTr::tr("ID %1 is already in use on this bus; nothing was written.")
+                .arg(newId);
     }
     if (!result.message.isEmpty()) {
         finish(result);
@@ -60,36 +55,38 @@ void GuidedFlows::changeId(const ServoInfo &servo, int newId, const QVector<int>
     steps.push_back(m_bus.addressWrite(oldId, idRegister->address, quint8(newId), quint8(newId)));
     steps.push_back(m_bus.lock(moved, true));
     steps.push_back(m_bus.identify(moved));
-    m_bus.runSteps(std::move(steps),
-                   [this, finish, result, moved, target, newId,
-                    unlocked](bool ok, const QString &message) mutable {
-                       if (ok) {
-                           result.ok = true;
-                           result.servo = *moved;
-                           result.message =
-                               Tr::tr("Servo %1 now answers as ID %2.").arg(target->id).arg(newId);
-                           finish(result);
-                           return;
-                       }
-                       result.message = message;
-                       result.failure = m_bus.stepFailure();
-                       if (!*unlocked) { // refused before anything was written
-                           finish(result);
-                           return;
-                       }
-                       // Wherever it is now, its EEPROM is locked again: at the new ID (ignored
-                       // when nothing answers there), then at the old one.
-                       m_bus.relock({moved}, [this, finish, result, target]() mutable {
-                           m_bus.runSteps(
-                               {m_bus.ping(target->id, true, 1), m_bus.lock(target, true)},
-                               [this, finish, result](bool stillThere, const QString &) mutable {
-                                   if (stillThere)
-                                       result.message +=
-                                           u' ' + Tr::tr("The servo still has its old ID.");
-                                   finish(result);
-                               });
-                       });
-                   });
+    m_bus.runSteps(
+        std::move(steps),
+        [this, finish, result, moved, target, newId, unlocked](bool ok,
+                                                               const QString &message) mutable {
+            if (ok) {
+                result.ok = true;
+                result.servo = *moved;
+                result.message = FeetechSessionTr::tr("Servo %1 now answers as ID %2.")
+                                     .arg(target->id)
+                                     .arg(newId);
+                finish(result);
+                return;
+            }
+            result.message = message;
+            result.failure = m_bus.stepFailure();
+            if (!*unlocked) { // refused before anything was written
+                finish(result);
+                return;
+            }
+            // Wherever it is now, its EEPROM is locked again: at the new ID (ignored
+            // when nothing answers there), then at the old one.
+            m_bus.relock({moved}, [this, finish, result, target]() mutable {
+                m_bus.runSteps(
+                    {m_bus.ping(target->id, true, 1), m_bus.lock(target, true)},
+                    [this, finish, result](bool stillThere, const QString &) mutable {
+                        if (stillThere)
+                            result.message +=
+                                u' ' + FeetechSessionTr::tr("The servo still has its old ID.");
+                        finish(result);
+                    });
+            });
+        });
 }
 
 void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish finish)
@@ -99,16 +96,18 @@ void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish fini
     const std::optional<int> code = feetech::baudCode(newBaud);
     if (!baudRegister) {
         result.failure = OperationFailure::Unsupported;
-        result.message = Tr::tr("Servo %1 is of an unknown model; its baud rate is not "
-                                "changed.")
-                             .arg(servo.id);
+        result.message =
+            FeetechSessionTr::tr("Servo %1 is of an unknown model; its baud rate is not "
+                                 "changed.")
+                .arg(servo.id);
     } else if (!code || *code > baudRegister->maximum) {
         result.failure = OperationFailure::InvalidRequest;
-        result.message =
-            Tr::tr("%1 is not a baud rate this servo supports.").arg(baudText(newBaud));
+        result.message = FeetechSessionTr::tr("%1 is not a baud rate this servo supports.")
+                             .arg(baudText(newBaud));
     } else if (newBaud == servo.baud) {
         result.failure = OperationFailure::NothingToDo;
-        result.message = Tr::tr("The servo already runs at %1.").arg(baudText(newBaud));
+        result.message =
+            FeetechSessionTr::tr("The servo already runs at %1.").arg(baudText(newBaud));
     }
     if (!result.message.isEmpty()) {
         finish(result);
@@ -131,7 +130,7 @@ void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish fini
     steps.push_back([this, moved, code](StepDone next) {
         if (moved->baudCode != *code)
             m_bus.fail(next, OperationFailure::NotVerified,
-                       Tr::tr("The servo reports baud code %1 instead of %2.")
+                       FeetechSessionTr::tr("The servo reports baud code %1 instead of %2.")
                            .arg(moved->baudCode)
                            .arg(*code));
         else
@@ -144,7 +143,7 @@ void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish fini
             if (ok) {
                 result.ok = true;
                 result.servo = *moved;
-                result.message = Tr::tr("Servo %1 now runs at %2 and answers there.")
+                result.message = FeetechSessionTr::tr("Servo %1 now runs at %2 and answers there.")
                                      .arg(moved->id)
                                      .arg(baudText(newBaud));
                 finish(result);
@@ -165,9 +164,10 @@ void GuidedFlows::changeBaud(const ServoInfo &servo, qint32 newBaud, Finish fini
                     [this, finish, result, target](bool stillThere, const QString &) mutable {
                         result.message += u' '
                             + (stillThere
-                                   ? Tr::tr("It still answers at %1.").arg(baudText(target->baud))
-                                   : Tr::tr("It answers at neither rate; scan all "
-                                            "baud rates to find it."));
+                                   ? FeetechSessionTr::tr("It still answers at %1.")
+                                         .arg(baudText(target->baud))
+                                   : FeetechSessionTr::tr("It answers at neither rate; scan all "
+                                                          "baud rates to find it."));
                         finish(result);
                     });
             });
@@ -183,12 +183,13 @@ void GuidedFlows::calibrateMiddle(const ServoInfo &servo, Finish finish)
         servo.hasTable() ? servo.table().torqueValue(TorqueMode::CalibrateMiddle) : std::nullopt;
     if (method == MiddleCalibration::Unsupported || !offset || !torque
         || (method == MiddleCalibration::TorqueEnable128 && !calibrateValue)) {
-        OperationResult result {Operation::CalibrateMiddle,
-                                false,
-                                Tr::tr("Middle calibration is not available on this servo "
-                                       "(SCS servos have no offset register)."),
-                                servo,
-                                {}};
+        OperationResult result {
+            Operation::CalibrateMiddle,
+            false,
+            FeetechSessionTr::tr("Middle calibration is not available on this servo "
+                                 "(SCS servos have no offset register)."),
+            servo,
+            {}};
         result.failure = OperationFailure::Unsupported;
         finish(result);
         return;
@@ -197,27 +198,29 @@ void GuidedFlows::calibrateMiddle(const ServoInfo &servo, Finish finish)
     std::vector<Step> steps {m_bus.setBaud(servo.baud), m_bus.lock(target, false)};
     if (method == MiddleCalibration::Instruction)
         steps.push_back(m_bus.instruction(servo.id, feetech::calibrate(servo.id),
-                                          servo.repliesToWrites(), Tr::tr("Middle calibration")));
+                                          servo.repliesToWrites(),
+                                          FeetechSessionTr::tr("Middle calibration")));
     else
         steps.push_back(m_bus.write(servo.id, torque->address, QByteArray(1, char(*calibrateValue)),
-                                    servo.repliesToWrites(), Tr::tr("Middle calibration")));
+                                    servo.repliesToWrites(),
+                                    FeetechSessionTr::tr("Middle calibration")));
     steps.push_back(m_bus.lock(target, true));
     steps.push_back(m_bus.read(target, offset->address, offset->size, ReadSource::ReadBack));
-    m_bus.runSteps(std::move(steps),
-                   [this, finish, servo, target](bool ok, const QString &message) {
-                       OperationResult result {
-                           Operation::CalibrateMiddle,
-                           ok,
-                           ok ? Tr::tr("The present position is now the middle.") : message,
-                           servo,
-                           {}};
-                       if (!ok)
-                           result.failure = m_bus.stepFailure();
-                       if (ok)
-                           finish(result);
-                       else
-                           m_bus.relock({target}, [this, finish, result] { finish(result); });
-                   });
+    m_bus.runSteps(
+        std::move(steps), [this, finish, servo, target](bool ok, const QString &message) {
+            OperationResult result {
+                Operation::CalibrateMiddle,
+                ok,
+                ok ? FeetechSessionTr::tr("The present position is now the middle.") : message,
+                servo,
+                {}};
+            if (!ok)
+                result.failure = m_bus.stepFailure();
+            if (ok)
+                finish(result);
+            else
+                m_bus.relock({target}, [this, finish, result] { finish(result); });
+        });
 }
 
 void GuidedFlows::factoryReset(const ServoInfo &servo, Finish finish)
@@ -226,7 +229,7 @@ void GuidedFlows::factoryReset(const ServoInfo &servo, Finish finish)
         OperationResult result {
             Operation::FactoryReset,
             false,
-            Tr::tr("Servo %1 is of an unknown model; it is not reset.").arg(servo.id),
+            FeetechSessionTr::tr("Servo %1 is of an unknown model; it is not reset.").arg(servo.id),
             servo,
             {}};
         result.failure = OperationFailure::Unsupported;
@@ -236,7 +239,8 @@ void GuidedFlows::factoryReset(const ServoInfo &servo, Finish finish)
     auto target = std::make_shared<ServoInfo>(servo);
     std::vector<Step> steps {m_bus.setBaud(servo.baud), m_bus.lock(target, false),
                              m_bus.instruction(servo.id, feetech::recovery(servo.id),
-                                               servo.repliesToWrites(), Tr::tr("Factory reset"))};
+                                               servo.repliesToWrites(),
+                                               FeetechSessionTr::tr("Factory reset"))};
     // Factory values include the baud rate: look for the servo at every rate, its old one
     // first.
     steps.push_back([this, finish, target](StepDone next) {
@@ -250,14 +254,15 @@ void GuidedFlows::factoryReset(const ServoInfo &servo, Finish finish)
     steps.push_back(m_bus.identify(target));
     steps.push_back(m_bus.lock(target, true));
     m_bus.runSteps(std::move(steps), [this, finish, target](bool ok, const QString &message) {
-        OperationResult result {Operation::FactoryReset,
-                                ok,
-                                ok ? Tr::tr("Factory values restored; servo %1 answers at %2.")
-                                         .arg(target->id)
-                                         .arg(baudText(target->baud))
-                                   : message,
-                                *target,
-                                {}};
+        OperationResult result {
+            Operation::FactoryReset,
+            ok,
+            ok ? FeetechSessionTr::tr("Factory values restored; servo %1 answers at %2.")
+                     .arg(target->id)
+                     .arg(baudText(target->baud))
+               : message,
+            *target,
+            {}};
         if (!ok)
             result.failure = m_bus.stepFailure();
         if (ok)
@@ -275,9 +280,9 @@ void GuidedFlows::reboot(const ServoInfo &servo, Finish finish)
         steps.push_back(
             m_bus.write(servo.id, torque->address,
                         QByteArray(1, char(servo.table().torqueValue(TorqueMode::Off).value_or(0))),
-                        servo.repliesToWrites(), Tr::tr("Torque off")));
-    steps.push_back(
-        m_bus.instruction(servo.id, feetech::reboot(servo.id), false, Tr::tr("Reboot")));
+                        servo.repliesToWrites(), FeetechSessionTr::tr("Torque off")));
+    steps.push_back(m_bus.instruction(servo.id, feetech::reboot(servo.id), false,
+                                      FeetechSessionTr::tr("Reboot")));
     auto clock = std::make_shared<QElapsedTimer>();
     steps.push_back([clock](StepDone next) {
         clock->start();
@@ -302,32 +307,33 @@ void GuidedFlows::waitForReboot(const ServoInfo &servo, std::shared_ptr<QElapsed
         m_bus.timing().rebootPollInterval, this, [this, finish, servo, clock, generation] {
             if (generation != m_bus.link().generation())
                 return;
-            m_bus.runSteps(
-                {m_bus.ping(servo.id, true, 0)},
-                [this, finish, servo, clock](bool back, const QString &) {
-                    if (back) {
-                        finish({Operation::Reboot,
-                                true,
-                                Tr::tr("Servo %1 restarted and answers again after %2 ms.")
-                                    .arg(servo.id)
-                                    .arg(clock->elapsed()),
-                                servo,
-                                {}});
-                    } else if (clock->elapsed() >= m_bus.timing().rebootGiveUp.count()) {
-                        OperationResult result {
-                            Operation::Reboot,
-                            false,
-                            Tr::tr("Servo %1 has not answered within %2 ms of the restart.")
-                                .arg(servo.id)
-                                .arg(clock->elapsed()),
-                            servo,
-                            {}};
-                        result.failure = OperationFailure::NoAnswer;
-                        finish(result);
-                    } else {
-                        waitForReboot(servo, clock, finish);
-                    }
-                });
+            m_bus.runSteps({m_bus.ping(servo.id, true, 0)},
+                           [this, finish, servo, clock](bool back, const QString &) {
+                               if (back) {
+                                   finish({Operation::Reboot,
+                                           true,
+                                           FeetechSessionTr::tr(
+                                               "Servo %1 restarted and answers again after %2 ms.")
+                                               .arg(servo.id)
+                                               .arg(clock->elapsed()),
+                                           servo,
+                                           {}});
+                               } else if (clock->elapsed() >= m_bus.timing().rebootGiveUp.count()) {
+                                   OperationResult result {
+                                       Operation::Reboot,
+                                       false,
+                                       FeetechSessionTr::tr(
+                                           "Servo %1 has not answered within %2 ms of the restart.")
+                                           .arg(servo.id)
+                                           .arg(clock->elapsed()),
+                                       servo,
+                                       {}};
+                                   result.failure = OperationFailure::NoAnswer;
+                                   finish(result);
+                               } else {
+                                   waitForReboot(servo, clock, finish);
+                               }
+                           });
         });
 }
 

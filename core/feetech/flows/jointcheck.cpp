@@ -2,18 +2,9 @@
 #include "jointcheck.h"
 
 #include "motorfinder.h"
+#include "motorsetuptr.h"
 
 #include <QCoreApplication>
-
-namespace {
-
-// The context its sentences have always been translated in.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(MotorSetup)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -27,8 +18,12 @@ QString JointCheck::problem() const
     if (!found || done())
         return {};
     if (!servoIsModel(*found, model))
-        return Tr::tr("ID %1 answers as model %2, not %3.").arg(id).arg(found->model.name, model);
-    return Tr::tr("ID %1 answers, but %2.").arg(id).arg(differing.join(QStringLiteral(", ")));
+        return MotorSetupTr::tr("ID %1 answers as model %2, not %3.")
+            .arg(id)
+            .arg(found->model.name, model);
+    return MotorSetupTr::tr("ID %1 answers, but %2.")
+        .arg(id)
+        .arg(differing.join(QStringLiteral(", ")));
 }
 
 } // namespace feetech

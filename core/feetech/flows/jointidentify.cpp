@@ -1,6 +1,7 @@
 // Identify a joint: read, hold where it is, wiggle slowly with little torque, put everything back.
 #include "jointidentify.h"
 
+#include "feetechsessiontr.h"
 #include "feetechvalue.h"
 #include "goalrange.h"
 #include "registerkeys.h"
@@ -13,15 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -77,7 +69,8 @@ void JointIdentify::run(const ServoInfo &servo, GuidedFlows::Finish finish, Paus
         || !table.find(kTorqueEnable) || !table.torqueValue(TorqueMode::On)
         || !table.torqueValue(TorqueMode::Off)) {
         end(run, OperationFailure::Unsupported,
-            Tr::tr("%1 is of a model ServoBench does not move (%2); it cannot be identified.")
+            FeetechSessionTr::tr(
+                "%1 is of a model ServoBench does not move (%2); it cannot be identified.")
                 .arg(servoName(servo), servo.model.name));
         return;
     }
@@ -89,7 +82,7 @@ void JointIdentify::run(const ServoInfo &servo, GuidedFlows::Finish finish, Paus
     m_bus.runSteps(std::move(steps), [this, run](bool ok, const QString &message) {
         if (!ok) {
             end(run, m_bus.stepFailure(),
-                Tr::tr("%1 does not answer: %2").arg(servoName(run->servo), message));
+                FeetechSessionTr::tr("%1 does not answer: %2").arg(servoName(run->servo), message));
             return;
         }
         run->before = run->now;
@@ -109,7 +102,8 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
     }
     if (m_cancelled) {
         end(run, OperationFailure::Stopped,
-            Tr::tr("Identifying %1 was stopped; nothing was written.").arg(servoName(servo)));
+            FeetechSessionTr::tr("Identifying %1 was stopped; nothing was written.")
+                .arg(servoName(servo)));
         return;
     }
     const auto read = [&before](const QString &key) -> std::optional<qint64> {
@@ -121,7 +115,8 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
     const qint32 start = before.value(kPresentPosition);
     if (!range || !range->contains(start)) {
         end(run, OperationFailure::NoRoomToMove,
-            Tr::tr("%1 stands at %2, outside the goal positions it accepts: it is not moved.")
+            FeetechSessionTr::tr(
+                "%1 stands at %2, outside the goal positions it accepts: it is not moved.")
                 .arg(servoName(servo))
                 .arg(start));
         return;
@@ -130,7 +125,7 @@ void JointIdentify::begin(std::shared_ptr<Run> run)
     const qint32 down = std::max(start - kAmplitude, range->minimum);
     if (up - down < kAmplitude) {
         end(run, OperationFailure::NoRoomToMove,
-            Tr::tr("%1's angle limits leave no room to move it around %2.")
+            FeetechSessionTr::tr("%1's angle limits leave no room to move it around %2.")
                 .arg(servoName(servo))
                 .arg(start));
         return;
@@ -166,7 +161,8 @@ void JointIdentify::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> ste
     m_bus.runSteps(std::move(steps), [this, run, then](bool ok, const QString &message) {
         if (!ok) {
             restore(run, false, m_bus.stepFailure(),
-                    Tr::tr("%1 stopped answering: %2").arg(servoName(run->servo), message));
+                    FeetechSessionTr::tr("%1 stopped answering: %2")
+                        .arg(servoName(run->servo), message));
             return;
         }
         then();
@@ -182,7 +178,7 @@ void JointIdentify::nextLeg(std::shared_ptr<Run> run)
     }
     if (m_cancelled) {
         restore(run, false, OperationFailure::Stopped,
-                Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
+                FeetechSessionTr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
         return;
     }
     run->legClock.start();
@@ -194,14 +190,14 @@ void JointIdentify::poll(std::shared_ptr<Run> run)
 {
     run->pause(m_bus.timing().identifyPollInterval, [this, run](bool torqueOff) {
         if (torqueOff) {
-            restore(
-                run, true, OperationFailure::AfterTorqueOff,
-                Tr::tr("All torque off: identifying %1 was stopped.").arg(servoName(run->servo)));
+            restore(run, true, OperationFailure::AfterTorqueOff,
+                    FeetechSessionTr::tr("All torque off: identifying %1 was stopped.")
+                        .arg(servoName(run->servo)));
             return;
         }
         if (m_cancelled) {
             restore(run, false, OperationFailure::Stopped,
-                    Tr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
+                    FeetechSessionTr::tr("Identifying %1 was stopped.").arg(servoName(run->servo)));
             return;
         }
         run->now.remove(kMoving);
@@ -250,7 +246,8 @@ void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, OperationF
                 ok ? OperationFailure::NotVerified : m_bus.stepFailure();
             const QString problem = ok
                 ? notRestoredAsItWas(restored, run->before, run->now)
-                : Tr::tr("its registers could not be restored (%1); check its torque.")
+                : FeetechSessionTr::tr(
+                      "its registers could not be restored (%1); check its torque.")
                       .arg(message);
             if (!failure.isEmpty()) {
                 end(run, kind, problem.isEmpty() ? failure : failure + QLatin1Char(' ') + problem);
@@ -258,14 +255,16 @@ void JointIdentify::restore(std::shared_ptr<Run> run, bool torqueOff, OperationF
             }
             if (!problem.isEmpty()) {
                 end(run, restoreFailure,
-                    Tr::tr("%1 was moved, but %2").arg(servoName(run->servo), problem));
+                    FeetechSessionTr::tr("%1 was moved, but %2")
+                        .arg(servoName(run->servo), problem));
                 return;
             }
             end(run, OperationFailure::None,
-                (run->torqueWasOn ? Tr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
-                                           "on, as it was.")
-                                  : Tr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
-                                           "off, as it was."))
+                (run->torqueWasOn
+                     ? FeetechSessionTr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
+                                            "on, as it was.")
+                     : FeetechSessionTr::tr("%1 (%2) wiggled around %3 and is back; its torque is "
+                                            "off, as it was."))
                     .arg(servoName(run->servo), run->servo.model.name)
                     .arg(run->legs.last()));
         });

@@ -1,6 +1,7 @@
 // Replay of a recorded motion: read, check, hold, ease in, play at the recorded times, hold.
 #include "motionreplay.h"
 
+#include "feetechsessiontr.h"
 #include "feetechvalue.h"
 #include "goalrange.h"
 #include "registerkeys.h"
@@ -12,15 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -69,7 +61,8 @@ void MotionReplay::run(const ReplayPlan &plan, Hooks hooks)
     run->hooks = std::move(hooks);
     if (plan.servos.isEmpty() || plan.frames.isEmpty() || plan.times.size() != plan.frames.size()
         || plan.speed <= 0.0 || plan.loops < 1) {
-        end(run, OperationFailure::InvalidRequest, Tr::tr("There is nothing to replay."));
+        end(run, OperationFailure::InvalidRequest,
+            FeetechSessionTr::tr("There is nothing to replay."));
         return;
     }
     std::vector<Step> steps;
@@ -79,7 +72,8 @@ void MotionReplay::run(const ReplayPlan &plan, Hooks hooks)
             || !table.find(kTorqueEnable) || !table.torqueValue(TorqueMode::On)
             || !table.torqueValue(TorqueMode::Off)) {
             end(run, OperationFailure::Unsupported,
-                Tr::tr("%1 is of a model ServoBench does not move (%2): nothing was replayed.")
+                FeetechSessionTr::tr(
+                    "%1 is of a model ServoBench does not move (%2): nothing was replayed.")
                     .arg(servoName(servo), servo.model.name));
             return;
         }
@@ -100,7 +94,8 @@ void MotionReplay::run(const ReplayPlan &plan, Hooks hooks)
     m_bus.runSteps(std::move(steps), [this, run](bool ok, const QString &message) {
         if (!ok) {
             end(run, m_bus.stepFailure(),
-                Tr::tr("A servo does not answer: %1 Nothing was replayed.").arg(message));
+                FeetechSessionTr::tr("A servo does not answer: %1 Nothing was replayed.")
+                    .arg(message));
             return;
         }
         begin(run);
@@ -132,8 +127,9 @@ void MotionReplay::begin(std::shared_ptr<Run> run)
             if (range->contains(goal))
                 continue;
             end(run, OperationFailure::InvalidRequest,
-                Tr::tr("Frame %1 (at %2 s) asks %3 for %4, outside the positions it accepts "
-                       "(%5 to %6): nothing was moved.")
+                FeetechSessionTr::tr(
+                    "Frame %1 (at %2 s) asks %3 for %4, outside the positions it accepts "
+                    "(%5 to %6): nothing was moved.")
                     .arg(i + 1)
                     .arg(plan.times.at(i) - plan.times.first(), 0, 'f', 3)
                     .arg(servoName(servo))
@@ -145,7 +141,8 @@ void MotionReplay::begin(std::shared_ptr<Run> run)
         present.append(before.value(kPresentPosition));
     }
     if (m_cancelled) {
-        end(run, OperationFailure::Stopped, Tr::tr("The replay was stopped; nothing was moved."));
+        end(run, OperationFailure::Stopped,
+            FeetechSessionTr::tr("The replay was stopped; nothing was moved."));
         return;
     }
     // The goal first: torque switched on over a stale goal would jump there.
@@ -161,7 +158,8 @@ void MotionReplay::begin(std::shared_ptr<Run> run)
     m_bus.runSteps(std::move(steps), [this, run, present](bool ok, const QString &message) {
         if (!ok) {
             end(run, m_bus.stepFailure(),
-                Tr::tr("The servos could not be held where they stand: %1").arg(message));
+                FeetechSessionTr::tr("The servos could not be held where they stand: %1")
+                    .arg(message));
             return;
         }
         run->reported.start();
@@ -260,11 +258,12 @@ void MotionReplay::endLoop(std::shared_ptr<Run> run)
         startEase(run, plan.frames.last());
         return;
     }
-    const QString played = Tr::tr("Played %n frame(s)", nullptr, int(plan.frames.size()));
-    const QString loops = Tr::tr("%n time(s)", nullptr, plan.loops);
+    const QString played =
+        FeetechSessionTr::tr("Played %n frame(s)", nullptr, int(plan.frames.size()));
+    const QString loops = FeetechSessionTr::tr("%n time(s)", nullptr, plan.loops);
     if (!plan.release) {
         end(run, OperationFailure::None,
-            Tr::tr("%1 %2; the arm holds the last frame.").arg(played, loops));
+            FeetechSessionTr::tr("%1 %2; the arm holds the last frame.").arg(played, loops));
         return;
     }
     std::vector<Step> steps;
@@ -276,11 +275,12 @@ void MotionReplay::endLoop(std::shared_ptr<Run> run)
     m_bus.runSteps(std::move(steps), [this, run, played, loops](bool ok, const QString &message) {
         if (!ok) {
             end(run, m_bus.stepFailure(),
-                Tr::tr("%1 %2, but torque could not be switched off: %3")
+                FeetechSessionTr::tr("%1 %2, but torque could not be switched off: %3")
                     .arg(played, loops, message));
             return;
         }
-        end(run, OperationFailure::None, Tr::tr("%1 %2; torque is off.").arg(played, loops));
+        end(run, OperationFailure::None,
+            FeetechSessionTr::tr("%1 %2; torque is off.").arg(played, loops));
     });
 }
 
@@ -300,7 +300,8 @@ void MotionReplay::send(std::shared_ptr<Run> run, const QVector<qint32> &goals,
             // Same address and size across a rate's servos: one SYNC WRITE carries them all.
             if (!bytes || (goal && (goal->address != reg->address || goal->size != reg->size))) {
                 end(run, OperationFailure::Unsupported,
-                    Tr::tr("%1 cannot take goal %2 with the others in one SYNC WRITE.")
+                    FeetechSessionTr::tr(
+                        "%1 cannot take goal %2 with the others in one SYNC WRITE.")
                         .arg(servoName(servo))
                         .arg(goals.at(j)));
                 return;
@@ -311,23 +312,25 @@ void MotionReplay::send(std::shared_ptr<Run> run, const QVector<qint32> &goals,
         const auto frame = syncWrite(quint8(goal->address), quint8(goal->size), entries);
         if (!frame) {
             end(run, OperationFailure::InvalidRequest,
-                Tr::tr("The SYNC WRITE does not fit in one packet."));
+                FeetechSessionTr::tr("The SYNC WRITE does not fit in one packet."));
             return;
         }
         if (run->hooks.sent)
             run->hooks.sent(baud, goal->address, entries);
         steps.push_back(m_bus.setBaud(baud));
-        steps.push_back(m_bus.instruction(kBroadcastId, *frame, false,
-                                          Tr::tr("SYNC WRITE at %1").arg(baudText(baud))));
+        steps.push_back(
+            m_bus.instruction(kBroadcastId, *frame, false,
+                              FeetechSessionTr::tr("SYNC WRITE at %1").arg(baudText(baud))));
     }
-    m_bus.runSteps(
-        std::move(steps), [this, run, then = std::move(then)](bool ok, const QString &message) {
-            if (!ok) {
-                end(run, m_bus.stepFailure(), Tr::tr("The replay stopped: %1").arg(message));
-                return;
-            }
-            then();
-        });
+    m_bus.runSteps(std::move(steps),
+                   [this, run, then = std::move(then)](bool ok, const QString &message) {
+                       if (!ok) {
+                           end(run, m_bus.stepFailure(),
+                               FeetechSessionTr::tr("The replay stopped: %1").arg(message));
+                           return;
+                       }
+                       then();
+                   });
 }
 
 void MotionReplay::waitUntil(std::shared_ptr<Run> run, qint64 dueNs, std::function<void()> then)
@@ -337,7 +340,7 @@ void MotionReplay::waitUntil(std::shared_ptr<Run> run, qint64 dueNs, std::functi
     run->hooks.pause(delay, [this, run, then = std::move(then)](bool torqueOff) {
         if (torqueOff) {
             end(run, OperationFailure::AfterTorqueOff,
-                Tr::tr("All torque off: the replay was stopped."));
+                FeetechSessionTr::tr("All torque off: the replay was stopped."));
             return;
         }
         then();
@@ -361,16 +364,17 @@ void MotionReplay::report(std::shared_ptr<Run> run, bool force)
     progress.done = run->loop * frames + std::max(0, position.frame + 1);
     progress.total = plan.loops * frames;
     if (run->easing)
-        progress.text =
-            Tr::tr("Loop %1 of %2: easing to the first frame").arg(run->loop + 1).arg(plan.loops);
+        progress.text = FeetechSessionTr::tr("Loop %1 of %2: easing to the first frame")
+                            .arg(run->loop + 1)
+                            .arg(plan.loops);
     else if (position.frame < 0)
-        progress.text = Tr::tr("Loop %1 of %2: playing %3 frames over %4 s")
+        progress.text = FeetechSessionTr::tr("Loop %1 of %2: playing %3 frames over %4 s")
                             .arg(run->loop + 1)
                             .arg(plan.loops)
                             .arg(frames)
                             .arg(plan.duration() / plan.speed, 0, 'f', 2);
     else
-        progress.text = Tr::tr("Loop %1 of %2: frame %3 of %4")
+        progress.text = FeetechSessionTr::tr("Loop %1 of %2: frame %3 of %4")
                             .arg(run->loop + 1)
                             .arg(plan.loops)
                             .arg(position.frame + 1)
@@ -389,18 +393,20 @@ void MotionReplay::stop(std::shared_ptr<Run> run)
     }
     const ReplayPlan &plan = run->plan;
     const QString where = run->easing
-        ? Tr::tr("while easing to the first frame (loop %1 of %2)")
+        ? FeetechSessionTr::tr("while easing to the first frame (loop %1 of %2)")
               .arg(run->loop + 1)
               .arg(plan.loops)
-        : Tr::tr("at %1 s of %2 s (loop %3 of %4)")
+        : FeetechSessionTr::tr("at %1 s of %2 s (loop %3 of %4)")
               .arg(run->sent >= 0 ? plan.times.at(run->sent) - plan.times.first() : 0.0, 0, 'f', 2)
               .arg(plan.times.last() - plan.times.first(), 0, 'f', 2)
               .arg(run->loop + 1)
               .arg(plan.loops);
     m_bus.runSteps(std::move(steps), [this, run, where](bool ok, const QString &message) {
         end(run, ok ? OperationFailure::Stopped : m_bus.stepFailure(),
-            ok ? Tr::tr("The replay was stopped %1; the arm holds where it stood.").arg(where)
-               : Tr::tr("The replay was stopped %1, but the arm could not be held: %2")
+            ok ? FeetechSessionTr::tr("The replay was stopped %1; the arm holds where it stood.")
+                     .arg(where)
+               : FeetechSessionTr::tr(
+                     "The replay was stopped %1, but the arm could not be held: %2")
                      .arg(where, message));
     });
 }

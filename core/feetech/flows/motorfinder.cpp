@@ -10,7 +10,7 @@
 
 namespace {
 
-struct Tr
+struct MotorFinderTr
 {
     Q_DECLARE_TR_FUNCTIONS(MotorFinder)
 };
@@ -23,7 +23,7 @@ namespace {
 
 QString jointText(const QString &joint)
 {
-    return joint.isEmpty() ? Tr::tr("this motor") : joint;
+    return joint.isEmpty() ? MotorFinderTr::tr("this motor") : joint;
 }
 
 } // namespace
@@ -84,7 +84,8 @@ void MotorFinder::probeRate(std::shared_ptr<Search> search, int index)
 {
     if (m_stopRequested()) {
         search->result.stopped = true;
-        endSearch(search, MotorSearch::Verdict::Failed, Tr::tr("Stopped; nothing was written."));
+        endSearch(search, MotorSearch::Verdict::Failed,
+                  MotorFinderTr::tr("Stopped; nothing was written."));
         return;
     }
     if (index == search->rates.size()) {
@@ -133,18 +134,20 @@ void MotorFinder::decide(std::shared_ptr<Search> search)
     MotorSearch &result = search->result;
     for (const Search::Rate &rate : std::as_const(search->heard)) {
         for (const quint8 id : rate.ids)
-            result.answering.append(Tr::tr("ID %1 at %2").arg(id).arg(baudText(rate.baud)));
+            result.answering.append(
+                MotorFinderTr::tr("ID %1 at %2").arg(id).arg(baudText(rate.baud)));
         if (rate.collided)
             result.answering.append(
-                Tr::tr("several at %1 whose replies collide").arg(baudText(rate.baud)));
+                MotorFinderTr::tr("several at %1 whose replies collide").arg(baudText(rate.baud)));
         // A collision takes at least two servos.
         result.count += int(rate.ids.size()) + (rate.collided ? 2 : 0);
         result.collided = result.collided || rate.collided;
     }
     if (search->heard.isEmpty()) {
-        endSearch(search, MotorSearch::Verdict::NoServo,
-                  Tr::tr("No servo answers at any rate: check the power and the cable, and "
-                         "connect the next servo."));
+        endSearch(
+            search, MotorSearch::Verdict::NoServo,
+            MotorFinderTr::tr("No servo answers at any rate: check the power and the cable, and "
+                              "connect the next servo."));
         return;
     }
     const Search::Rate &first = search->heard.first();
@@ -159,19 +162,20 @@ void MotorFinder::decide(std::shared_ptr<Search> search)
         result.servo.id = first.ids.first();
         result.servo.baud = first.baud;
         endSearch(search, MotorSearch::Verdict::SharedId,
-                  Tr::tr("Two servos answer at ID %1; connect them one at a time.")
+                  MotorFinderTr::tr("Two servos answer at ID %1; connect them one at a time.")
                       .arg(first.ids.first()));
         return;
     }
     const QString list = result.answering.join(QStringLiteral(", "));
-    endSearch(search, MotorSearch::Verdict::SeveralServos,
-              result.collided
-                  ? Tr::tr("At least %1 servos answer (%2): connect one servo at a time.")
-                        .arg(result.count)
-                        .arg(list)
-                  : Tr::tr("%1 servos answer (%2): connect one servo at a time.")
-                        .arg(result.count)
-                        .arg(list));
+    endSearch(
+        search, MotorSearch::Verdict::SeveralServos,
+        result.collided
+            ? MotorFinderTr::tr("At least %1 servos answer (%2): connect one servo at a time.")
+                  .arg(result.count)
+                  .arg(list)
+            : MotorFinderTr::tr("%1 servos answer (%2): connect one servo at a time.")
+                  .arg(result.count)
+                  .arg(list));
 }
 
 void MotorFinder::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud)
@@ -184,37 +188,37 @@ void MotorFinder::confirm(std::shared_ptr<Search> search, quint8 id, qint32 baud
             endSearch(search, MotorSearch::Verdict::Failed, message);
             return;
         }
-        m_bus.exchange(identityRequest(id, false),
-                       [this, search, id, baud](const seriallink::TransactionResult &result,
-                                                const std::optional<Packet> &reply) {
-                           if (result.failure == seriallink::Failure::LinkDown
-                               || result.failure == seriallink::Failure::Cancelled) {
-                               endSearch(search, MotorSearch::Verdict::Failed, failureText(result));
-                               return;
-                           }
-                           const auto info = reply
-                               ? servoInfoFromIdentity(id, baud, reply->parameters)
-                               : std::nullopt;
-                           if (info) {
-                               search->result.servo = *info;
-                               checkShared(search);
-                           } else if (result.bytesHeard > 0) { // their identities differ
-                               search->result.count = 2;
-                               endSearch(search, MotorSearch::Verdict::SharedId,
-                                         Tr::tr("Two servos answer at ID %1; connect them one "
+        m_bus.exchange(
+            identityRequest(id, false),
+            [this, search, id, baud](const seriallink::TransactionResult &result,
+                                     const std::optional<Packet> &reply) {
+                if (result.failure == seriallink::Failure::LinkDown
+                    || result.failure == seriallink::Failure::Cancelled) {
+                    endSearch(search, MotorSearch::Verdict::Failed, failureText(result));
+                    return;
+                }
+                const auto info =
+                    reply ? servoInfoFromIdentity(id, baud, reply->parameters) : std::nullopt;
+                if (info) {
+                    search->result.servo = *info;
+                    checkShared(search);
+                } else if (result.bytesHeard > 0) { // their identities differ
+                    search->result.count = 2;
+                    endSearch(search, MotorSearch::Verdict::SharedId,
+                              MotorFinderTr::tr("Two servos answer at ID %1; connect them one "
                                                 "at a time.")
-                                             .arg(id));
-                           } else {
-                               // Replies of several IDs can collide into one that looks clean.
-                               search->result.count = 2;
-                               endSearch(search, MotorSearch::Verdict::SeveralServos,
-                                         Tr::tr("A reply at %1 looked like servo %2, which then "
+                                  .arg(id));
+                } else {
+                    // Replies of several IDs can collide into one that looks clean.
+                    search->result.count = 2;
+                    endSearch(search, MotorSearch::Verdict::SeveralServos,
+                              MotorFinderTr::tr("A reply at %1 looked like servo %2, which then "
                                                 "did not answer: probably several servos whose "
                                                 "replies collide. Connect one servo at a time.")
-                                             .arg(baudText(baud))
-                                             .arg(id));
-                           }
-                       });
+                                  .arg(baudText(baud))
+                                  .arg(id));
+                }
+            });
     });
 }
 
@@ -232,14 +236,14 @@ void MotorFinder::checkShared(std::shared_ptr<Search> search)
             case SharedIdVerdict::Shared:
                 search->result.count = 2;
                 endSearch(search, MotorSearch::Verdict::SharedId,
-                          Tr::tr("Two servos answer at ID %1; connect them one at a "
-                                 "time.")
+                          MotorFinderTr::tr("Two servos answer at ID %1; connect them one at a "
+                                            "time.")
                               .arg(servo.id));
                 return;
             case SharedIdVerdict::Silent:
                 endSearch(search, MotorSearch::Verdict::NoServo,
-                          Tr::tr("%1 stopped answering: check the power and the "
-                                 "cable, then look again.")
+                          MotorFinderTr::tr("%1 stopped answering: check the power and the "
+                                            "cable, then look again.")
                               .arg(servoName(servo)));
                 return;
             case SharedIdVerdict::One:
@@ -255,8 +259,8 @@ void MotorFinder::judgeModel(std::shared_ptr<Search> search)
     const ServoInfo &servo = search->result.servo;
     if (!servo.hasTable()) {
         endSearch(search, MotorSearch::Verdict::WrongModel,
-                  Tr::tr("Found %1, model %2 (model number %3), which ServoBench has no "
-                         "register table for; nothing was written.")
+                  MotorFinderTr::tr("Found %1, model %2 (model number %3), which ServoBench has no "
+                                    "register table for; nothing was written.")
                       .arg(servoName(servo), servo.model.name)
                       .arg(servo.modelNumber()));
         return;
@@ -264,13 +268,14 @@ void MotorFinder::judgeModel(std::shared_ptr<Search> search)
     if (!search->model.isEmpty() && !servoIsModel(servo, search->model)) {
         endSearch(
             search, MotorSearch::Verdict::WrongModel,
-            Tr::tr("Found %1, model %2, but %3 needs model %4. Nothing was written: "
-                   "connect a servo of model %4.")
+            MotorFinderTr::tr("Found %1, model %2, but %3 needs model %4. Nothing was written: "
+                              "connect a servo of model %4.")
                 .arg(servoName(servo), servo.model.name, jointText(search->joint), search->model));
         return;
     }
     endSearch(search, MotorSearch::Verdict::OneServo,
-              Tr::tr("Found one servo: %1, model %2.").arg(servoName(servo), servo.model.name));
+              MotorFinderTr::tr("Found one servo: %1, model %2.")
+                  .arg(servoName(servo), servo.model.name));
 }
 
 void MotorFinder::endSearch(std::shared_ptr<Search> search, MotorSearch::Verdict verdict,

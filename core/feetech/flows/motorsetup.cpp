@@ -2,20 +2,12 @@
 #include "motorsetup.h"
 
 #include "linksession.h"
+#include "motorsetuptr.h"
 #include "servoparameters.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(MotorSetup)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -84,16 +76,17 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
     run->result.setUp = true;
     // Refused before anything is sent.
     if (target.id < 0 || target.id > kMaxServoId) {
-        finish(run, OperationFailure::InvalidRequest,
-               Tr::tr("ID %1 is out of range (0 to %2).").arg(target.id).arg(kMaxServoId));
+        finish(
+            run, OperationFailure::InvalidRequest,
+            MotorSetupTr::tr("ID %1 is out of range (0 to %2).").arg(target.id).arg(kMaxServoId));
         return;
     }
     if (!baudCode(target.baud)) {
         finish(run, OperationFailure::InvalidRequest,
-               Tr::tr("%1 is not a Feetech baud rate.").arg(baudText(target.baud)));
+               MotorSetupTr::tr("%1 is not a Feetech baud rate.").arg(baudText(target.baud)));
         return;
     }
-    emit progress(1, kSetupSteps, Tr::tr("Looking for the servo at every baud rate…"));
+    emit progress(1, kSetupSteps, MotorSetupTr::tr("Looking for the servo at every baud rate…"));
     m_finder.find(target.model, target.joint, [this, run](const MotorSearch &search) {
         run->result.search = search;
         run->result.stopped = search.stopped;
@@ -107,7 +100,7 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
         const Register *baudRegister = registerAt(run->servo, u"baud_rate");
         if (!baudRegister || *baudCode(run->target.baud) > baudRegister->maximum) {
             finish(run, OperationFailure::Unsupported,
-                   Tr::tr("Model %1 cannot run at %2; nothing was written.")
+                   MotorSetupTr::tr("Model %1 cannot run at %2; nothing was written.")
                        .arg(run->servo.model.name, baudText(run->target.baud)));
             return;
         }
@@ -116,9 +109,10 @@ void MotorSetup::setUp(const MotorTarget &target, SetupDone done)
             items.append({it.key(), it.value()});
         QString error;
         if (!items.isEmpty() && !encodeWrites(run->servo.table(), items, &error)) {
-            finish(run, OperationFailure::InvalidRequest,
-                   Tr::tr("The settings do not suit this servo (%1); nothing was written.")
-                       .arg(error));
+            finish(
+                run, OperationFailure::InvalidRequest,
+                MotorSetupTr::tr("The settings do not suit this servo (%1); nothing was written.")
+                    .arg(error));
             return;
         }
         changeId(run);
@@ -131,7 +125,7 @@ bool MotorSetup::stoppedBefore(std::shared_ptr<Run> run, const QString &step)
         return false;
     run->result.stopped = true;
     finish(run, OperationFailure::Stopped,
-           Tr::tr("Stopped before %1. The servo answers as %2; nothing more was written.")
+           MotorSetupTr::tr("Stopped before %1. The servo answers as %2; nothing more was written.")
                .arg(step, servoName(run->servo)));
     return true;
 }
@@ -139,11 +133,11 @@ bool MotorSetup::stoppedBefore(std::shared_ptr<Run> run, const QString &step)
 void MotorSetup::changeId(std::shared_ptr<Run> run)
 {
     const int id = run->target.id;
-    if (stoppedBefore(run, Tr::tr("giving it ID %1").arg(id)))
+    if (stoppedBefore(run, MotorSetupTr::tr("giving it ID %1").arg(id)))
         return;
-    emit progress(2, kSetupSteps, Tr::tr("Giving it ID %1…").arg(id));
+    emit progress(2, kSetupSteps, MotorSetupTr::tr("Giving it ID %1…").arg(id));
     if (run->servo.id == id) {
-        run->result.steps.append(Tr::tr("It already has ID %1.").arg(id));
+        run->result.steps.append(MotorSetupTr::tr("It already has ID %1.").arg(id));
         changeBaud(run);
         return;
     }
@@ -162,11 +156,11 @@ void MotorSetup::changeId(std::shared_ptr<Run> run)
 void MotorSetup::changeBaud(std::shared_ptr<Run> run)
 {
     const qint32 baud = run->target.baud;
-    if (stoppedBefore(run, Tr::tr("moving it to %1").arg(baudText(baud))))
+    if (stoppedBefore(run, MotorSetupTr::tr("moving it to %1").arg(baudText(baud))))
         return;
-    emit progress(3, kSetupSteps, Tr::tr("Moving it to %1…").arg(baudText(baud)));
+    emit progress(3, kSetupSteps, MotorSetupTr::tr("Moving it to %1…").arg(baudText(baud)));
     if (run->servo.baud == baud) {
-        run->result.steps.append(Tr::tr("It already runs at %1.").arg(baudText(baud)));
+        run->result.steps.append(MotorSetupTr::tr("It already runs at %1.").arg(baudText(baud)));
         writeSettings(run);
         return;
     }
@@ -185,73 +179,74 @@ void MotorSetup::writeSettings(std::shared_ptr<Run> run)
 {
     const QMap<QString, qint32> &settings = run->target.settings;
     const QMap<QString, quint32> &cleared = run->target.clearedBits;
-    if (stoppedBefore(run, Tr::tr("writing its settings")))
+    if (stoppedBefore(run, MotorSetupTr::tr("writing its settings")))
         return;
-    emit progress(4, kSetupSteps,
-                  Tr::tr("Writing %n setting(s)…", nullptr, int(settings.size() + cleared.size())));
+    emit progress(
+        4, kSetupSteps,
+        MotorSetupTr::tr("Writing %n setting(s)…", nullptr, int(settings.size() + cleared.size())));
     if (settings.isEmpty() && cleared.isEmpty()) {
         finish(run, OperationFailure::None, {});
         return;
     }
     // Only what differs is written: the EEPROM keeps its writes for what changes.
     auto current = std::make_shared<QMap<QString, qint32>>();
-    readSettings(run->servo, settings.keys() + cleared.keys(), current,
-                 [this, run, current](bool ok, const QString &message) {
-                     if (!ok) {
-                         finish(run, m_bus.stepFailure(), message);
-                         return;
-                     }
-                     QVector<model::WriteItem> items;
-                     const QMap<QString, qint32> &settings = run->target.settings;
-                     for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
-                         if (!current->contains(it.key()) || current->value(it.key()) != it.value())
-                             items.append({it.key(), it.value()});
-                     }
-                     // A register's other bits stay as the servo holds them.
-                     const QMap<QString, quint32> &cleared = run->target.clearedBits;
-                     for (auto it = cleared.cbegin(); it != cleared.cend(); ++it) {
-                         const qint32 held = current->value(it.key());
-                         if (current->contains(it.key()) && (quint32(held) & it.value()))
-                             items.append({it.key(), qint32(quint32(held) & ~it.value())});
-                     }
-                     if (items.isEmpty()) {
-                         run->result.steps.append(Tr::tr("It already holds every setting."));
-                         verifySettings(run);
-                         return;
-                     }
-                     QString error;
-                     const auto writes = encodeWrites(run->servo.table(), items, &error);
-                     if (!writes) {
-                         finish(run, OperationFailure::InvalidRequest, error);
-                         return;
-                     }
-                     const bool eeprom =
-                         std::any_of(writes->begin(), writes->end(),
-                                     [](const RegisterWrite &write) { return write.eeprom; });
-                     m_apply.write(
-                         run->servo, *writes,
-                         [this, run, items, eeprom](const OperationResult &result) {
-                             if (!result.ok) {
-                                 finish(run, result.failure, result.message);
-                                 return;
-                             }
-                             QStringList keys;
-                             for (const model::WriteItem &item : items)
-                                 keys.append(item.key);
-                             // The EEPROM is unlocked only when an EEPROM register is written.
-                             run->result.steps.append(
-                                 (eeprom ? Tr::tr("Wrote %1 with the EEPROM unlocked, then locked "
-                                                  "it again.")
-                                         : Tr::tr("Wrote %1."))
-                                     .arg(keys.join(QStringLiteral(", "))));
-                             verifySettings(run);
-                         });
-                 });
+    readSettings(
+        run->servo, settings.keys() + cleared.keys(), current,
+        [this, run, current](bool ok, const QString &message) {
+            if (!ok) {
+                finish(run, m_bus.stepFailure(), message);
+                return;
+            }
+            QVector<model::WriteItem> items;
+            const QMap<QString, qint32> &settings = run->target.settings;
+            for (auto it = settings.cbegin(); it != settings.cend(); ++it) {
+                if (!current->contains(it.key()) || current->value(it.key()) != it.value())
+                    items.append({it.key(), it.value()});
+            }
+            // A register's other bits stay as the servo holds them.
+            const QMap<QString, quint32> &cleared = run->target.clearedBits;
+            for (auto it = cleared.cbegin(); it != cleared.cend(); ++it) {
+                const qint32 held = current->value(it.key());
+                if (current->contains(it.key()) && (quint32(held) & it.value()))
+                    items.append({it.key(), qint32(quint32(held) & ~it.value())});
+            }
+            if (items.isEmpty()) {
+                run->result.steps.append(MotorSetupTr::tr("It already holds every setting."));
+                verifySettings(run);
+                return;
+            }
+            QString error;
+            const auto writes = encodeWrites(run->servo.table(), items, &error);
+            if (!writes) {
+                finish(run, OperationFailure::InvalidRequest, error);
+                return;
+            }
+            const bool eeprom =
+                std::any_of(writes->begin(), writes->end(),
+                            [](const RegisterWrite &write) { return write.eeprom; });
+            m_apply.write(
+                run->servo, *writes, [this, run, items, eeprom](const OperationResult &result) {
+                    if (!result.ok) {
+                        finish(run, result.failure, result.message);
+                        return;
+                    }
+                    QStringList keys;
+                    for (const model::WriteItem &item : items)
+                        keys.append(item.key);
+                    // The EEPROM is unlocked only when an EEPROM register is written.
+                    run->result.steps.append(
+                        (eeprom ? MotorSetupTr::tr("Wrote %1 with the EEPROM unlocked, then locked "
+                                                   "it again.")
+                                : MotorSetupTr::tr("Wrote %1."))
+                            .arg(keys.join(QStringLiteral(", "))));
+                    verifySettings(run);
+                });
+        });
 }
 
 void MotorSetup::verifySettings(std::shared_ptr<Run> run)
 {
-    emit progress(5, kSetupSteps, Tr::tr("Reading the settings back…"));
+    emit progress(5, kSetupSteps, MotorSetupTr::tr("Reading the settings back…"));
     auto values = std::make_shared<QMap<QString, qint32>>();
     readSettings(
         run->servo, run->target.settings.keys() + run->target.clearedBits.keys(), values,
@@ -267,34 +262,36 @@ void MotorSetup::verifySettings(std::shared_ptr<Run> run)
                     run->result.verified.insert(it.key(), values->value(it.key()));
                 if (values->contains(it.key()) && values->value(it.key()) == it.value())
                     continue;
-                wrong.append(Tr::tr("%1 should be %2 but reads %3")
+                wrong.append(MotorSetupTr::tr("%1 should be %2 but reads %3")
                                  .arg(it.key())
                                  .arg(it.value())
                                  .arg(values->contains(it.key())
                                           ? QString::number(values->value(it.key()))
-                                          : Tr::tr("nothing")));
+                                          : MotorSetupTr::tr("nothing")));
             }
             const QMap<QString, quint32> &cleared = run->target.clearedBits;
             for (auto it = cleared.cbegin(); it != cleared.cend(); ++it) {
                 if (!values->contains(it.key())) {
-                    wrong.append(Tr::tr("%1 could not be read back").arg(it.key()));
+                    wrong.append(MotorSetupTr::tr("%1 could not be read back").arg(it.key()));
                     continue;
                 }
                 const qint32 held = values->value(it.key());
                 run->result.verified.insert(it.key(), held);
                 if (quint32(held) & it.value())
-                    wrong.append(Tr::tr("%1 reads %2, with bits 0x%3 still set")
+                    wrong.append(MotorSetupTr::tr("%1 reads %2, with bits 0x%3 still set")
                                      .arg(it.key())
                                      .arg(held)
                                      .arg(quint32(held) & it.value(), 2, 16, QLatin1Char('0')));
             }
             if (!wrong.isEmpty()) {
                 finish(run, OperationFailure::NotVerified,
-                       Tr::tr("Verification failed: %1.").arg(wrong.join(QStringLiteral("; "))));
+                       MotorSetupTr::tr("Verification failed: %1.")
+                           .arg(wrong.join(QStringLiteral("; "))));
                 return;
             }
-            run->result.steps.append(Tr::tr("Read back: %n setting(s) hold their values.", nullptr,
-                                            int(settings.size() + cleared.size())));
+            run->result.steps.append(MotorSetupTr::tr("Read back: %n setting(s) hold their values.",
+                                                      nullptr,
+                                                      int(settings.size() + cleared.size())));
             finish(run, OperationFailure::None, {});
         });
 }
@@ -329,9 +326,10 @@ void MotorSetup::finish(std::shared_ptr<Run> run, OperationFailure failure, cons
     result.ok = ok;
     result.failure = failure;
     result.to = run->servo;
-    const QString who = run->target.joint.isEmpty() ? Tr::tr("The servo") : run->target.joint;
-    result.message = ok ? Tr::tr("%1 is set up: %2, %n setting(s) verified.", nullptr,
-                                 int(run->target.settings.size()))
+    const QString who =
+        run->target.joint.isEmpty() ? MotorSetupTr::tr("The servo") : run->target.joint;
+    result.message = ok ? MotorSetupTr::tr("%1 is set up: %2, %n setting(s) verified.", nullptr,
+                                           int(run->target.settings.size()))
                               .arg(who, servoName(run->servo))
                         : message;
     const SetupDone done = std::move(run->done);
@@ -359,7 +357,7 @@ void MotorSetup::checkNext(qint32 baud, std::shared_ptr<QVector<JointCheck>> joi
     }
     const int id = joints->at(index).id;
     emit progress(index + 1, int(joints->size()),
-                  Tr::tr("Asking ID %1 at %2…").arg(id).arg(baudText(baud)));
+                  MotorSetupTr::tr("Asking ID %1 at %2…").arg(id).arg(baudText(baud)));
     // Most joints are not connected yet: a silent ID is an answer here, not a link problem.
     m_bus.setBaud(baud)([this, baud, joints, index, id, done](bool ok, const QString &) {
         const auto next = [this, baud, joints, index, done] {
@@ -405,12 +403,14 @@ void MotorSetup::compareSettings(JointCheck &joint, std::function<void()> then)
         for (const QString &key : kept) {
             const qint32 held = values->value(key);
             if (!ok || !values->contains(key))
-                target->differing.append(Tr::tr("%1 could not be read").arg(key));
+                target->differing.append(MotorSetupTr::tr("%1 could not be read").arg(key));
             else if (target->settings.contains(key) && held != target->settings.value(key))
-                target->differing.append(
-                    Tr::tr("%1 is %2, not %3").arg(key).arg(held).arg(target->settings.value(key)));
+                target->differing.append(MotorSetupTr::tr("%1 is %2, not %3")
+                                             .arg(key)
+                                             .arg(held)
+                                             .arg(target->settings.value(key)));
             else if (quint32(held) & target->clearedBits.value(key))
-                target->differing.append(Tr::tr("%1 is %2, with bits 0x%3 set")
+                target->differing.append(MotorSetupTr::tr("%1 is %2, with bits 0x%3 set")
                                              .arg(key)
                                              .arg(held)
                                              .arg(quint32(held) & target->clearedBits.value(key), 2,

@@ -11,7 +11,7 @@
 
 namespace {
 
-struct Tr
+struct BusDoctorTr
 {
     Q_DECLARE_TR_FUNCTIONS(BusDoctor)
 };
@@ -46,47 +46,52 @@ std::optional<DoctorFinding> portFinding(const PortProbeReport &probe)
         return std::nullopt;
     case Problem::Permission:
 #ifdef Q_OS_LINUX
-        return finding(doctorcodes::kPortPermission,
-                       Tr::tr("You may not open %1. Add yourself to the dialout group (sudo "
-                              "usermod -aG dialout $USER, then log out and back in), or give "
-                              "the adapter a udev rule that lets your account use it.")
-                           .arg(port));
+        return finding(
+            doctorcodes::kPortPermission,
+            BusDoctorTr::tr("You may not open %1. Add yourself to the dialout group (sudo "
+                            "usermod -aG dialout $USER, then log out and back in), or give "
+                            "the adapter a udev rule that lets your account use it.")
+                .arg(port));
 #else
-        return finding(doctorcodes::kPortPermission,
-                       Tr::tr("You may not open %1: ask for access to serial ports.").arg(port));
+        return finding(
+            doctorcodes::kPortPermission,
+            BusDoctorTr::tr("You may not open %1: ask for access to serial ports.").arg(port));
 #endif
     case Problem::Busy:
         if (!probe.access.holder.isEmpty())
-            return finding(doctorcodes::kPortBusy,
-                           Tr::tr("%1 is in use by %2. Close that program (or its connection "
-                                  "to the port) and try again.")
-                               .arg(port, probe.access.holder));
+            return finding(
+                doctorcodes::kPortBusy,
+                BusDoctorTr::tr("%1 is in use by %2. Close that program (or its connection "
+                                "to the port) and try again.")
+                    .arg(port, probe.access.holder));
         return finding(doctorcodes::kPortBusy,
-                       Tr::tr("%1 is in use by another program (a terminal, another "
-                              "ServoBench, a modem manager). Close it and try again.")
+                       BusDoctorTr::tr("%1 is in use by another program (a terminal, another "
+                                       "ServoBench, a modem manager). Close it and try again.")
                            .arg(port));
     case Problem::Missing:
         return finding(
             doctorcodes::kPortMissing,
-            Tr::tr("%1 does not exist. Plug the adapter in, or choose another port.").arg(port));
+            BusDoctorTr::tr("%1 does not exist. Plug the adapter in, or choose another port.")
+                .arg(port));
     case Problem::Other:
         break;
     }
     return finding(doctorcodes::kPortFailed,
-                   Tr::tr("%1 could not be used: %2.").arg(port, probe.access.detail));
+                   BusDoctorTr::tr("%1 could not be used: %2.").arg(port, probe.access.detail));
 }
 
 DoctorFinding silenceFinding(const PortProbeReport &probe)
 {
-    QString message = Tr::tr(
+    QString message = BusDoctorTr::tr(
         "Not a single byte came back at any rate. Check the servos' power supply (the USB "
         "adapter does not power them), the wiring (signal and ground), the adapter's direction "
         "switch or jumper, and that a TTL servo (SCS, STS) is not on an RS485 adapter, or an "
         "RS485 servo on a TTL one.");
     if (probe.echo)
         message += QLatin1Char(' ')
-            + Tr::tr("The adapter sends back what it sends, so it works: the servos do not "
-                     "answer.");
+            + BusDoctorTr::tr(
+                       "The adapter sends back what it sends, so it works: the servos do not "
+                       "answer.");
     return finding(doctorcodes::kNoBytes, message);
 }
 
@@ -105,11 +110,12 @@ std::optional<DoctorFinding> unframedFinding(const BusObservation &seen)
     }
     if (rates.isEmpty())
         return std::nullopt;
-    return finding(doctorcodes::kUnframedBytes,
-                   Tr::tr("At %1, bytes came back but never a valid answer. A servo may be at "
-                          "another rate, the adapter may send back what it sends (try Echo "
-                          "On), or two servos may share one ID (connect them one at a time).")
-                       .arg(rates.join(QStringLiteral(", "))));
+    return finding(
+        doctorcodes::kUnframedBytes,
+        BusDoctorTr::tr("At %1, bytes came back but never a valid answer. A servo may be at "
+                        "another rate, the adapter may send back what it sends (try Echo "
+                        "On), or two servos may share one ID (connect them one at a time).")
+            .arg(rates.join(QStringLiteral(", "))));
 }
 
 const ServoInfo *foundAt(const QVector<ServoInfo> &found, quint8 id, qint32 baud)
@@ -137,7 +143,7 @@ void expectationFindings(const BusObservation &seen, const QVector<ExpectedServo
         } else if (!atRate) {
             DoctorFinding wrongRate =
                 finding(doctorcodes::kUnexpectedBaud,
-                        Tr::tr("Servo %1 answers at %2, not at %3. Move it to %3.")
+                        BusDoctorTr::tr("Servo %1 answers at %2, not at %3. Move it to %3.")
                             .arg(want.id)
                             .arg(baudText(anywhere->baud), baudText(want.baud)),
                         {want.id});
@@ -153,13 +159,14 @@ void expectationFindings(const BusObservation &seen, const QVector<ExpectedServo
     for (const ServoInfo &servo : seen.found) {
         if (isExpected(servo))
             continue;
-        DoctorFinding stray = finding(doctorcodes::kUnexpectedId,
-                                      Tr::tr("A servo (%1) answers at ID %2, %3: no servo is "
-                                             "expected at that ID.")
-                                          .arg(servo.model.name)
-                                          .arg(servo.id)
-                                          .arg(baudText(servo.baud)),
-                                      {servo.id});
+        DoctorFinding stray =
+            finding(doctorcodes::kUnexpectedId,
+                    BusDoctorTr::tr("A servo (%1) answers at ID %2, %3: no servo is "
+                                    "expected at that ID.")
+                        .arg(servo.model.name)
+                        .arg(servo.id)
+                        .arg(baudText(servo.baud)),
+                    {servo.id});
         const auto target = std::find_if(missing.cbegin(), missing.cend(),
                                          [&](int id) { return !offered.contains(id); });
         if (target != missing.cend()) {
@@ -171,10 +178,11 @@ void expectationFindings(const BusObservation &seen, const QVector<ExpectedServo
             const bool otherRate = wantedBaud != 0 && wantedBaud != servo.baud;
             stray.message += QLatin1Char(' ')
                 + (otherRate
-                       ? Tr::tr("If it is the missing servo %1, move it to ID %1 at %2.")
+                       ? BusDoctorTr::tr("If it is the missing servo %1, move it to ID %1 at %2.")
                              .arg(*target)
                              .arg(baudText(wantedBaud))
-                       : Tr::tr("If it is the missing servo %1, move it to ID %1.").arg(*target));
+                       : BusDoctorTr::tr("If it is the missing servo %1, move it to ID %1.")
+                             .arg(*target));
             stray.moves.append({servo, *target, otherRate ? wantedBaud : 0});
         }
         findings.append(stray);
@@ -189,25 +197,27 @@ void expectationFindings(const BusObservation &seen, const QVector<ExpectedServo
     if (answering > 0 && restSilent && expected.size() > 1) {
         const int last = expected.at(answering - 1).id;
         const QString notAnswering = missing.size() == 1
-            ? Tr::tr("Servo %1 does not answer").arg(missing.first())
-            : Tr::tr("Servos %1 do not answer").arg(idList(missing));
-        findings.append(finding(doctorcodes::kChainBreak,
-                                Tr::tr("%1, while every servo up to ID %2 in the chain "
-                                       "does: check the cable after ID %2 (and its connectors "
-                                       "at both ends).")
-                                    .arg(notAnswering)
-                                    .arg(last),
-                                missing));
+            ? BusDoctorTr::tr("Servo %1 does not answer").arg(missing.first())
+            : BusDoctorTr::tr("Servos %1 do not answer").arg(idList(missing));
+        findings.append(
+            finding(doctorcodes::kChainBreak,
+                    BusDoctorTr::tr("%1, while every servo up to ID %2 in the chain "
+                                    "does: check the cable after ID %2 (and its connectors "
+                                    "at both ends).")
+                        .arg(notAnswering)
+                        .arg(last),
+                    missing));
         return;
     }
     const QString notAnswering = missing.size() == 1
-        ? Tr::tr("Expected servo %1 does not answer").arg(missing.first())
-        : Tr::tr("Expected servos %1 do not answer").arg(idList(missing));
-    findings.append(finding(doctorcodes::kMissingServos,
-                            Tr::tr("%1. Check power and cables; a new servo is at ID 1 until it "
-                                   "is set up (Set up motors, or servoctl feetech setup-motor).")
-                                .arg(notAnswering),
-                            missing));
+        ? BusDoctorTr::tr("Expected servo %1 does not answer").arg(missing.first())
+        : BusDoctorTr::tr("Expected servos %1 do not answer").arg(idList(missing));
+    findings.append(
+        finding(doctorcodes::kMissingServos,
+                BusDoctorTr::tr("%1. Check power and cables; a new servo is at ID 1 until it "
+                                "is set up (Set up motors, or servoctl feetech setup-motor).")
+                    .arg(notAnswering),
+                missing));
 }
 
 void conditionFindings(const BusObservation &seen, QVector<DoctorFinding> &findings)
@@ -215,12 +225,13 @@ void conditionFindings(const BusObservation &seen, QVector<DoctorFinding> &findi
     for (const ServoCondition &condition : seen.conditions) {
         const int id = condition.servo.id;
         if (!condition.readable) {
-            findings.append(finding(doctorcodes::kSharedId,
-                                    Tr::tr("Servo %1 answers a PING but its registers come back "
-                                           "garbled: two servos may share ID %1. Connect them "
-                                           "one at a time and give each its own ID.")
-                                        .arg(id),
-                                    {id}));
+            findings.append(
+                finding(doctorcodes::kSharedId,
+                        BusDoctorTr::tr("Servo %1 answers a PING but its registers come back "
+                                        "garbled: two servos may share ID %1. Connect them "
+                                        "one at a time and give each its own ID.")
+                            .arg(id),
+                        {id}));
             continue;
         }
         const bool flagged = condition.status & kVoltageErrorBit;
@@ -230,20 +241,21 @@ void conditionFindings(const BusObservation &seen, QVector<DoctorFinding> &findi
         if (!flagged && !outside)
             continue;
         const QString limits = condition.minVoltage && condition.maxVoltage
-            ? Tr::tr("%1–%2 V")
+            ? BusDoctorTr::tr("%1–%2 V")
                   .arg(*condition.minVoltage, 0, 'f', 1)
                   .arg(*condition.maxVoltage, 0, 'f', 1)
-            : Tr::tr("its limits");
+            : BusDoctorTr::tr("its limits");
         const QString measured = condition.voltage
-            ? Tr::tr("%1 V").arg(*condition.voltage, 0, 'f', 1)
-            : Tr::tr("an unknown voltage");
-        findings.append(finding(doctorcodes::kVoltage,
-                                Tr::tr("Servo %1 reports %2 and a voltage error; it accepts %3. "
-                                       "Check the supply: a 12 V supply on a 7.4 V servo, or a "
-                                       "supply too weak for the load.")
-                                    .arg(id)
-                                    .arg(measured, limits),
-                                {id}));
+            ? BusDoctorTr::tr("%1 V").arg(*condition.voltage, 0, 'f', 1)
+            : BusDoctorTr::tr("an unknown voltage");
+        findings.append(
+            finding(doctorcodes::kVoltage,
+                    BusDoctorTr::tr("Servo %1 reports %2 and a voltage error; it accepts %3. "
+                                    "Check the supply: a 12 V supply on a 7.4 V servo, or a "
+                                    "supply too weak for the load.")
+                        .arg(id)
+                        .arg(measured, limits),
+                    {id}));
     }
 }
 
@@ -303,9 +315,9 @@ QVector<DoctorFinding> diagnoseBus(const BusObservation &seen,
         // A PTK servo is one servo on its programmer: nothing of a bus to expect there.
         if (!expected.isEmpty())
             findings.append(finding(doctorcodes::kPtkServo,
-                                    Tr::tr("A PTK servo answers on %1, not a Feetech bus: "
-                                           "connect the Feetech adapter, or use the PTK "
-                                           "workspace.")
+                                    BusDoctorTr::tr("A PTK servo answers on %1, not a Feetech bus: "
+                                                    "connect the Feetech adapter, or use the PTK "
+                                                    "workspace.")
                                         .arg(seen.probe.port)));
         return findings;
     }
@@ -317,11 +329,12 @@ QVector<DoctorFinding> diagnoseBus(const BusObservation &seen,
         QStringList rates;
         for (const qint32 baud : seen.scannedBauds)
             rates.append(baudText(baud));
-        findings.append(finding(doctorcodes::kNoServoFound,
-                                Tr::tr("No servo answered at %1. Re-scan with the port probed: "
-                                       "it listens at every rate and tells silence from "
-                                       "bytes that never make an answer.")
-                                    .arg(rates.join(QStringLiteral(", ")))));
+        findings.append(
+            finding(doctorcodes::kNoServoFound,
+                    BusDoctorTr::tr("No servo answered at %1. Re-scan with the port probed: "
+                                    "it listens at every rate and tells silence from "
+                                    "bytes that never make an answer.")
+                        .arg(rates.join(QStringLiteral(", ")))));
     }
     if (const auto unframed = seen.probed ? unframedFinding(seen) : std::nullopt)
         findings.append(*unframed);

@@ -1,6 +1,7 @@
 // The guard on a session's bus: driven servos, their feedback, and the guard's actions.
 #include "guardkeeper.h"
 
+#include "feetechguardtr.h"
 #include "linksession.h"
 #include "registertable.h"
 #include "torqueonhold.h"
@@ -9,15 +10,6 @@
 
 #include <algorithm>
 #include <memory>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechGuard)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -259,16 +251,17 @@ Step GuardKeeper::torqueOff(std::shared_ptr<ServoInfo> target)
         const Register *torque = table.find(u"torque_enable");
         const auto off = table.torqueValue(TorqueMode::Off);
         if (!torque || !off) {
-            m_bus.fail(
-                next, OperationFailure::Unsupported,
-                Tr::tr("Servo %1 has no torque switch the guard could use.").arg(target->id));
+            m_bus.fail(next, OperationFailure::Unsupported,
+                       FeetechGuardTr::tr("Servo %1 has no torque switch the guard could use.")
+                           .arg(target->id));
             return;
         }
-        m_bus.runSteps({m_bus.write(target->id, torque->address, QByteArray(1, char(*off)),
-                                    target->repliesToWrites(),
-                                    Tr::tr("Guard: torque off of servo %1").arg(target->id)),
-                        m_bus.read(target, torque->address, torque->size, ReadSource::ReadBack)},
-                       next);
+        m_bus.runSteps(
+            {m_bus.write(target->id, torque->address, QByteArray(1, char(*off)),
+                         target->repliesToWrites(),
+                         FeetechGuardTr::tr("Guard: torque off of servo %1").arg(target->id)),
+             m_bus.read(target, torque->address, torque->size, ReadSource::ReadBack)},
+            next);
     };
 }
 

@@ -3,6 +3,7 @@
 // its own.
 #include "healthcheck.h"
 
+#include "feetechsessiontr.h"
 #include "feetechvalue.h"
 #include "linksession.h"
 #include "registerkeys.h"
@@ -10,15 +11,6 @@
 #include <QCoreApplication>
 
 #include <algorithm>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -171,7 +163,7 @@ void HealthCheck::readFeedback(std::shared_ptr<Run> run)
                 }
             }
             if (!m_bus.link().isOpen()) {
-                run->reading.failure = Tr::tr("The link closed.");
+                run->reading.failure = FeetechSessionTr::tr("The link closed.");
                 run->done(run->reading);
                 return;
             }

@@ -1,6 +1,7 @@
 // The move test: hold, step, record, measure with analyseStep, return, restore.
 #include "healthmovetest.h"
 
+#include "feetechsessiontr.h"
 #include "feetechvalue.h"
 #include "goalrange.h"
 #include "registerkeys.h"
@@ -12,15 +13,6 @@
 #include <QHash>
 
 #include <cmath>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -73,7 +65,7 @@ void HealthMoveTest::run(const ServoInfo &servo, Pause pause,
         || !table.find(kTorqueEnable) || !table.torqueValue(TorqueMode::On)
         || !table.torqueValue(TorqueMode::Off)) {
         end(run, OperationFailure::Unsupported,
-            Tr::tr("%1 is of a model ServoBench does not move (%2): no move test.")
+            FeetechSessionTr::tr("%1 is of a model ServoBench does not move (%2): no move test.")
                 .arg(servoName(servo), servo.model.name));
         return;
     }
@@ -85,7 +77,8 @@ void HealthMoveTest::run(const ServoInfo &servo, Pause pause,
     m_bus.runSteps(std::move(steps), [this, run](bool ok, const QString &message) {
         if (!ok) {
             end(run, m_bus.stepFailure(),
-                Tr::tr("%1 does not answer: %2").arg(servoName(*run->servo), message));
+                FeetechSessionTr::tr("%1 does not answer: %2")
+                    .arg(servoName(*run->servo), message));
             return;
         }
         run->before = run->now;
@@ -115,7 +108,8 @@ void HealthMoveTest::begin(std::shared_ptr<Run> run)
         target = start - kAmplitude;
     if (!range || !range->contains(start) || !range->contains(target)) {
         end(run, OperationFailure::NoRoomToMove,
-            Tr::tr("%1 stands at %2: its angle limits leave no room for a move of %3 steps.")
+            FeetechSessionTr::tr(
+                "%1 stands at %2: its angle limits leave no room for a move of %3 steps.")
                 .arg(servoName(servo))
                 .arg(start)
                 .arg(kAmplitude));
@@ -149,7 +143,8 @@ void HealthMoveTest::runOrRestore(std::shared_ptr<Run> run, std::vector<Step> st
     m_bus.runSteps(std::move(steps), [this, run, then](bool ok, const QString &message) {
         if (!ok) {
             restore(run, false, m_bus.stepFailure(),
-                    Tr::tr("%1 stopped answering: %2").arg(servoName(*run->servo), message));
+                    FeetechSessionTr::tr("%1 stopped answering: %2")
+                        .arg(servoName(*run->servo), message));
             return;
         }
         then();
@@ -167,14 +162,15 @@ void HealthMoveTest::poll(std::shared_ptr<Run> run)
     run->pause(kPollInterval, [this, run](bool torqueOff) {
         if (run->stoppedByGuard) {
             restore(run, false, OperationFailure::GuardStopped,
-                    Tr::tr("The overload guard stopped the move test of %1; its goal stays where "
-                           "the guard held it.")
+                    FeetechSessionTr::tr(
+                        "The overload guard stopped the move test of %1; its goal stays where "
+                        "the guard held it.")
                         .arg(servoName(*run->servo)));
             return;
         }
         if (torqueOff) {
             restore(run, true, OperationFailure::AfterTorqueOff,
-                    Tr::tr("All torque off: the move test of %1 was stopped.")
+                    FeetechSessionTr::tr("All torque off: the move test of %1 was stopped.")
                         .arg(servoName(*run->servo)));
             return;
         }
@@ -206,7 +202,7 @@ void HealthMoveTest::afterPoll(std::shared_ptr<Run> run)
     if (there || elapsedMs >= kReturnTimeout.count()) {
         restore(run, false, there ? OperationFailure::None : OperationFailure::NotVerified,
                 there ? QString()
-                      : Tr::tr("%1 did not get back to %2 (it stands at %3).")
+                      : FeetechSessionTr::tr("%1 did not get back to %2 (it stands at %3).")
                             .arg(servoName(*run->servo))
                             .arg(run->result.start)
                             .arg(position));
@@ -243,7 +239,8 @@ void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, Operation
                 ok ? OperationFailure::NotVerified : m_bus.stepFailure();
             const QString problem = ok
                 ? notRestoredAsItWas(restored, run->before, run->now)
-                : Tr::tr("it could not be restored (%1); check its torque.").arg(message);
+                : FeetechSessionTr::tr("it could not be restored (%1); check its torque.")
+                      .arg(message);
             if (!failure.isEmpty() || !problem.isEmpty()) {
                 end(run, failure.isEmpty() ? restoreFailure : kind,
                     QStringList {failure, problem}.join(QLatin1Char(' ')).trimmed());
@@ -251,8 +248,10 @@ void HealthMoveTest::restore(std::shared_ptr<Run> run, bool torqueOff, Operation
             }
             end(run, OperationFailure::None,
                 (run->torqueWasOn
-                     ? Tr::tr("%1 moved from %2 to %3 and back; its torque is on, as it was.")
-                     : Tr::tr("%1 moved from %2 to %3 and back; its torque is off, as it was."))
+                     ? FeetechSessionTr::tr(
+                         "%1 moved from %2 to %3 and back; its torque is on, as it was.")
+                     : FeetechSessionTr::tr(
+                         "%1 moved from %2 to %3 and back; its torque is off, as it was."))
                     .arg(servoName(*run->servo))
                     .arg(run->result.start)
                     .arg(run->result.target));

@@ -11,7 +11,7 @@
 
 namespace {
 
-struct Tr
+struct HealthReportTr
 {
     Q_DECLARE_TR_FUNCTIONS(HealthReport)
 };
@@ -30,7 +30,7 @@ QString escaped(const QString &text)
 QString measured(const std::optional<double> &value, int decimals, const QString &unit)
 {
     return value ? QLocale().toString(*value, 'f', decimals) + QLatin1Char(' ') + unit
-                 : Tr::tr("not read");
+                 : HealthReportTr::tr("not read");
 }
 
 QString verdictColour(Verdict verdict)
@@ -71,24 +71,27 @@ QString healthReportHtml(const HealthReport &report)
 {
     QString html;
     html += QStringLiteral("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>%1</title>")
-                .arg(escaped(Tr::tr("Servo health report")));
+                .arg(escaped(HealthReportTr::tr("Servo health report")));
     html += QStringLiteral(
         "<style>body{font-family:sans-serif}table{border-collapse:collapse}"
         "td,th{border:1px solid #999;padding:4px 8px;vertical-align:top;text-align:left}"
         "</style></head><body>\n");
     html += QStringLiteral("<h1>%1</h1>\n<p>%2</p>\n")
-                .arg(escaped(Tr::tr("Servo health report")),
-                     escaped(Tr::tr("Port %1, checked %2")
+                .arg(escaped(HealthReportTr::tr("Servo health report")),
+                     escaped(HealthReportTr::tr("Port %1, checked %2")
                                  .arg(report.port,
                                       QLocale().toString(report.checkedAt, QLocale::LongFormat))));
     if (report.servos.isEmpty()) {
-        html += QStringLiteral("<p>%1</p>\n").arg(escaped(Tr::tr("No servo was checked.")));
+        html +=
+            QStringLiteral("<p>%1</p>\n").arg(escaped(HealthReportTr::tr("No servo was checked.")));
     } else {
         html += QStringLiteral("<table>\n<tr>");
         for (const QString &heading :
-             {Tr::tr("ID"), Tr::tr("Model"), Tr::tr("Firmware"), Tr::tr("Verdict"),
-              Tr::tr("Voltage"), Tr::tr("Temperature"), Tr::tr("Load"), Tr::tr("Status"),
-              Tr::tr("Communication"), Tr::tr("Move test"), Tr::tr("Reasons")})
+             {HealthReportTr::tr("ID"), HealthReportTr::tr("Model"), HealthReportTr::tr("Firmware"),
+              HealthReportTr::tr("Verdict"), HealthReportTr::tr("Voltage"),
+              HealthReportTr::tr("Temperature"), HealthReportTr::tr("Load"),
+              HealthReportTr::tr("Status"), HealthReportTr::tr("Communication"),
+              HealthReportTr::tr("Move test"), HealthReportTr::tr("Reasons")})
             html += QStringLiteral("<th>%1</th>").arg(escaped(heading));
         html += QStringLiteral("</tr>\n");
         for (const ServoHealth &servo : report.servos) {
@@ -107,8 +110,8 @@ QString healthReportHtml(const HealthReport &report)
                 escaped(measured(servo.load, 1, QStringLiteral("%"))),
                 escaped(servo.statusText),
                 escaped(commText(servo.comm)),
-                escaped(servo.move ? moveText(*servo.move) : Tr::tr("not run")),
-                reasons.isEmpty() ? escaped(Tr::tr("none"))
+                escaped(servo.move ? moveText(*servo.move) : HealthReportTr::tr("not run")),
+                reasons.isEmpty() ? escaped(HealthReportTr::tr("none"))
                                   : QStringLiteral("<ul>%1</ul>").arg(reasons.join(QString()))};
             html += QStringLiteral("<tr>");
             for (const QString &cell : cells)
@@ -126,7 +129,7 @@ bool saveHealthReport(const QString &path, ReportFormat format, const HealthRepo
 {
     const auto fail = [&](const QString &reason) {
         if (error)
-            *error = Tr::tr("The report could not be saved to %1: %2")
+            *error = HealthReportTr::tr("The report could not be saved to %1: %2")
                          .arg(QDir::toNativeSeparators(path), reason);
         return false;
     };

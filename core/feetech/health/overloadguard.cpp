@@ -1,19 +1,11 @@
 // The overload and thermal guard's rules: limits from the register table, decisions, messages.
 #include "overloadguard.h"
+#include "feetechguardtr.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
 #include <cmath>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechGuard)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -53,7 +45,8 @@ QString guardActionKey(GuardAction action)
 
 QString guardActionName(GuardAction action)
 {
-    return action == GuardAction::Hold ? Tr::tr("Hold where it stands") : Tr::tr("Torque off");
+    return action == GuardAction::Hold ? FeetechGuardTr::tr("Hold where it stands")
+                                       : FeetechGuardTr::tr("Torque off");
 }
 
 std::optional<GuardAction> guardActionFromKey(QStringView key)
@@ -111,44 +104,49 @@ quint8 overloadStatusBit(const RegisterTable &table)
 
 QString guardEventText(const GuardEvent &event, const GuardLimits &limits)
 {
-    const QString servo = Tr::tr("Servo ID %1").arg(event.id);
+    const QString servo = FeetechGuardTr::tr("Servo ID %1").arg(event.id);
     const QString seconds = QString::number(double(limits.holdTime.count()) / 1000.0, 'f', 1);
     const QString action = event.action == GuardAction::Hold
-        ? (event.heldAt ? Tr::tr("its goal was set to where it stands (%1)").arg(*event.heldAt)
-                        : Tr::tr("its goal was set to where it stands"))
-        : Tr::tr("its torque was switched off");
+        ? (event.heldAt
+               ? FeetechGuardTr::tr("its goal was set to where it stands (%1)").arg(*event.heldAt)
+               : FeetechGuardTr::tr("its goal was set to where it stands"))
+        : FeetechGuardTr::tr("its torque was switched off");
     const QString seen = event.cause == GuardCause::Heat
-        ? Tr::tr("temperature %1 °C, its maximum is %2 °C")
+        ? FeetechGuardTr::tr("temperature %1 °C, its maximum is %2 °C")
               .arg(figure(event.value), figure(limits.maxTemperature))
-        : event.current ? Tr::tr("current %1 mA above the guard's %2 mA")
+        : event.current ? FeetechGuardTr::tr("current %1 mA above the guard's %2 mA")
                               .arg(figure(std::abs(event.value)), figure(event.limit))
-                        : Tr::tr("load %1 % above the guard's %2 %")
+                        : FeetechGuardTr::tr("load %1 % above the guard's %2 %")
                               .arg(figure(std::abs(event.value)), figure(event.limit));
     switch (event.stage) {
     case GuardStage::Warning:
         if (event.cause == GuardCause::LatchedOverload)
-            return Tr::tr("%1: its own overload protection tripped (status bit Load is set); its "
-                          "torque is off. Use Recover to switch it off and on again.")
+            return FeetechGuardTr::tr(
+                       "%1: its own overload protection tripped (status bit Load is set); its "
+                       "torque is off. Use Recover to switch it off and on again.")
                 .arg(servo);
         if (event.cause == GuardCause::Heat)
-            return Tr::tr("Guard warning: %1 is hot (%2); the guard acts at %3 °C.")
+            return FeetechGuardTr::tr("Guard warning: %1 is hot (%2); the guard acts at %3 °C.")
                 .arg(servo, seen, figure(limits.maxTemperature - limits.temperatureMargin));
-        return Tr::tr("Guard warning: %1 is straining (%2); the guard acts if it lasts %3 s.")
+        return FeetechGuardTr::tr(
+                   "Guard warning: %1 is straining (%2); the guard acts if it lasts %3 s.")
             .arg(servo, seen, seconds);
     case GuardStage::Acted:
         if (!event.ok)
-            return Tr::tr("Guard: %1 (%2) could not be stopped: %3. Switch its torque off.")
+            return FeetechGuardTr::tr(
+                       "Guard: %1 (%2) could not be stopped: %3. Switch its torque off.")
                 .arg(servo, seen, event.message);
         return event.cause == GuardCause::Heat
-            ? Tr::tr("Guard: %1 was too hot (%2): %3.").arg(servo, seen, action)
-            : Tr::tr("Guard: %1 was overloaded for %2 s (%3): %4.")
+            ? FeetechGuardTr::tr("Guard: %1 was too hot (%2): %3.").arg(servo, seen, action)
+            : FeetechGuardTr::tr("Guard: %1 was overloaded for %2 s (%3): %4.")
                   .arg(servo, seconds, seen, action);
     case GuardStage::StillLoaded:
-        return Tr::tr("Guard: %1 is held but still loaded (%2): free the horn or switch its torque "
-                      "off before its own protection trips.")
+        return FeetechGuardTr::tr(
+                   "Guard: %1 is held but still loaded (%2): free the horn or switch its torque "
+                   "off before its own protection trips.")
             .arg(servo, seen);
     case GuardStage::Cleared:
-        return Tr::tr("%1: the overload protection is no longer tripped.").arg(servo);
+        return FeetechGuardTr::tr("%1: the overload protection is no longer tripped.").arg(servo);
     }
     return {};
 }

@@ -12,7 +12,7 @@
 
 namespace {
 
-struct Tr
+struct ServoHealthTr
 {
     Q_DECLARE_TR_FUNCTIONS(ServoHealth)
 };
@@ -50,9 +50,10 @@ void addStatusFindings(ServoHealth &health, const RegisterTable &table)
         const QString code = label.isEmpty() ? QStringLiteral("status-bit-%1").arg(bit)
                                              : QStringLiteral("status-")
                 + label.toLower().replace(QLatin1Char(' '), QLatin1Char('-'));
-        const QString name = label.isEmpty() ? Tr::tr("bit %1").arg(bit) : label;
+        const QString name = label.isEmpty() ? ServoHealthTr::tr("bit %1").arg(bit) : label;
         health.add(code, Verdict::Fault,
-                   Tr::tr("The servo reports a %1 error (status bit %2): its protection tripped.")
+                   ServoHealthTr::tr(
+                       "The servo reports a %1 error (status bit %2): its protection tripped.")
                        .arg(name)
                        .arg(bit));
     }
@@ -67,22 +68,24 @@ void addVoltageFindings(ServoHealth &health, const HealthReading &reading,
     const auto low = reading.minVoltage;
     const auto high = reading.maxVoltage;
     if (high && *high > 0 && volts > *high) {
-        health.add(QStringLiteral("voltage-high"), Verdict::Fault,
-                   Tr::tr("The supply reads %1 V, above the servo's maximum of %2 V: use a "
-                          "supply the servo is made for.")
-                       .arg(number(volts, 1), number(*high, 1)));
+        health.add(
+            QStringLiteral("voltage-high"), Verdict::Fault,
+            ServoHealthTr::tr("The supply reads %1 V, above the servo's maximum of %2 V: use a "
+                              "supply the servo is made for.")
+                .arg(number(volts, 1), number(*high, 1)));
     } else if (low && volts < *low) {
         health.add(QStringLiteral("voltage-low"), Verdict::Fault,
-                   Tr::tr("The supply reads %1 V, below the servo's minimum of %2 V: charge the "
-                          "battery or check the supply and its wires.")
+                   ServoHealthTr::tr(
+                       "The supply reads %1 V, below the servo's minimum of %2 V: charge the "
+                       "battery or check the supply and its wires.")
                        .arg(number(volts, 1), number(*low, 1)));
     } else if (high && *high > 0 && volts > *high * (1.0 - limits.voltageMargin)) {
         health.add(QStringLiteral("voltage-near-max"), Verdict::Warning,
-                   Tr::tr("The supply reads %1 V, close to the servo's maximum of %2 V.")
+                   ServoHealthTr::tr("The supply reads %1 V, close to the servo's maximum of %2 V.")
                        .arg(number(volts, 1), number(*high, 1)));
     } else if (low && *low > 0 && volts < *low * (1.0 + limits.voltageMargin)) {
         health.add(QStringLiteral("voltage-near-min"), Verdict::Warning,
-                   Tr::tr("The supply reads %1 V, close to the servo's minimum of %2 V.")
+                   ServoHealthTr::tr("The supply reads %1 V, close to the servo's minimum of %2 V.")
                        .arg(number(volts, 1), number(*low, 1)));
     }
 }
@@ -95,13 +98,14 @@ void addTemperatureFindings(ServoHealth &health, const HealthReading &reading,
     const double celsius = *health.temperature;
     const double maximum = *reading.maxTemperature;
     if (celsius >= maximum) {
-        health.add(QStringLiteral("temperature-over"), Verdict::Fault,
-                   Tr::tr("The servo is at %1 °C, at or over its maximum of %2 °C: let it cool "
-                          "and look for what makes it work so hard.")
-                       .arg(number(celsius, 0), number(maximum, 0)));
+        health.add(
+            QStringLiteral("temperature-over"), Verdict::Fault,
+            ServoHealthTr::tr("The servo is at %1 °C, at or over its maximum of %2 °C: let it cool "
+                              "and look for what makes it work so hard.")
+                .arg(number(celsius, 0), number(maximum, 0)));
     } else if (celsius >= maximum - limits.temperatureMargin) {
         health.add(QStringLiteral("temperature-high"), Verdict::Warning,
-                   Tr::tr("The servo is at %1 °C, within %2 °C of its maximum of %3 °C.")
+                   ServoHealthTr::tr("The servo is at %1 °C, within %2 °C of its maximum of %3 °C.")
                        .arg(number(celsius, 0), number(maximum - celsius, 0), number(maximum, 0)));
     }
 }
@@ -111,21 +115,24 @@ void addCommFindings(ServoHealth &health)
     const CommQuality &comm = health.comm;
     if (comm.reads > 0 && comm.answered == 0) {
         health.add(QStringLiteral("comm-silent"), Verdict::Fault,
-                   Tr::tr("None of %n feedback read(s) was answered: check the servo's cable and "
-                          "power.",
-                          nullptr, comm.reads));
+                   ServoHealthTr::tr(
+                       "None of %n feedback read(s) was answered: check the servo's cable and "
+                       "power.",
+                       nullptr, comm.reads));
     } else if (comm.answered < comm.reads) {
-        health.add(QStringLiteral("comm-lost"), Verdict::Warning,
-                   Tr::tr("%1 of %n feedback read(s) went unanswered even after retries (%2): "
-                          "check the cable, its connectors and the bus's length.",
-                          nullptr, comm.reads)
-                       .arg(comm.reads - comm.answered)
-                       .arg(commText(comm)));
+        health.add(
+            QStringLiteral("comm-lost"), Verdict::Warning,
+            ServoHealthTr::tr("%1 of %n feedback read(s) went unanswered even after retries (%2): "
+                              "check the cable, its connectors and the bus's length.",
+                              nullptr, comm.reads)
+                .arg(comm.reads - comm.answered)
+                .arg(commText(comm)));
     } else if (!comm.clean()) {
-        health.add(QStringLiteral("comm-retries"), Verdict::Warning,
-                   Tr::tr("Every read was answered, but not at the first try (%1): the line is "
-                          "noisy or marginal.")
-                       .arg(commText(comm)));
+        health.add(
+            QStringLiteral("comm-retries"), Verdict::Warning,
+            ServoHealthTr::tr("Every read was answered, but not at the first try (%1): the line is "
+                              "noisy or marginal.")
+                .arg(commText(comm)));
     }
 }
 
@@ -148,11 +155,11 @@ QString verdictName(Verdict verdict)
 {
     switch (verdict) {
     case Verdict::Ok:
-        return Tr::tr("OK");
+        return ServoHealthTr::tr("OK");
     case Verdict::Warning:
-        return Tr::tr("Warning");
+        return ServoHealthTr::tr("Warning");
     case Verdict::Fault:
-        return Tr::tr("Fault");
+        return ServoHealthTr::tr("Fault");
     }
     return {};
 }
@@ -176,14 +183,15 @@ ServoHealth assessHealth(const HealthReading &reading, const HealthLimits &limit
     health.comm = reading.comm;
     if (!reading.failure.isEmpty()) {
         health.add(QStringLiteral("unreadable"), Verdict::Fault,
-                   Tr::tr("Its settings could not be read: %1").arg(reading.failure));
+                   ServoHealthTr::tr("Its settings could not be read: %1").arg(reading.failure));
         return health;
     }
     if (!servo.hasTable())
-        health.add(QStringLiteral("unknown-model"), Verdict::Warning,
-                   Tr::tr("ServoBench has no register table for model %1: only its answers are "
-                          "checked.")
-                       .arg(servo.model.name));
+        health.add(
+            QStringLiteral("unknown-model"), Verdict::Warning,
+            ServoHealthTr::tr("ServoBench has no register table for model %1: only its answers are "
+                              "checked.")
+                .arg(servo.model.name));
     double voltageSum = 0;
     double loadSum = 0;
     int voltages = 0;
@@ -214,18 +222,20 @@ ServoHealth assessHealth(const HealthReading &reading, const HealthLimits &limit
     addStatusFindings(health, servo.table());
     const double loadLimit = reading.overloadPercent.value_or(limits.loadWarningPercent);
     if (health.load && loadLimit > 0 && *health.load >= loadLimit)
-        health.add(QStringLiteral("load-high"), Verdict::Warning,
-                   Tr::tr("The servo works at %1 % load while the check reads it, at or over "
-                          "its overload level of %2 %: something pushes against the horn.")
-                       .arg(number(*health.load, 1), number(loadLimit, 0)));
+        health.add(
+            QStringLiteral("load-high"), Verdict::Warning,
+            ServoHealthTr::tr("The servo works at %1 % load while the check reads it, at or over "
+                              "its overload level of %2 %: something pushes against the horn.")
+                .arg(number(*health.load, 1), number(loadLimit, 0)));
     // Both limits 0 is multi-turn or wheel mode: no limits to stand within.
     const bool limited =
         reading.minAngle && reading.maxAngle && !(*reading.minAngle == 0 && *reading.maxAngle == 0);
     if (health.position && limited
         && (*health.position < *reading.minAngle || *health.position > *reading.maxAngle))
         health.add(QStringLiteral("position-outside-limits"), Verdict::Warning,
-                   Tr::tr("The horn stands at %1, outside its angle limits %2 to %3: it cannot be "
-                          "sent back there, and the limits may be wrong.")
+                   ServoHealthTr::tr(
+                       "The horn stands at %1, outside its angle limits %2 to %3: it cannot be "
+                       "sent back there, and the limits may be wrong.")
                        .arg(number(*health.position, 0), number(*reading.minAngle, 0),
                             number(*reading.maxAngle, 0)));
     addCommFindings(health);
@@ -237,28 +247,30 @@ void addMoveTest(ServoHealth &health, const MoveTestResult &move, const HealthLi
     health.move = move;
     if (!move.ok) {
         health.add(QStringLiteral("move-failed"), Verdict::Fault,
-                   Tr::tr("The move test did not complete: %1").arg(move.message));
+                   ServoHealthTr::tr("The move test did not complete: %1").arg(move.message));
         return;
     }
     const auto &metrics = move.metrics;
     if (!metrics || !metrics->riseTime || !metrics->settled) {
-        health.add(QStringLiteral("move-not-reached"), Verdict::Fault,
-                   Tr::tr("The horn did not follow a move of %1 steps from %2 to %3: it may be "
-                          "blocked, or its torque is limited.")
-                       .arg(std::abs(move.target - move.start))
-                       .arg(move.start)
-                       .arg(move.target));
+        health.add(
+            QStringLiteral("move-not-reached"), Verdict::Fault,
+            ServoHealthTr::tr("The horn did not follow a move of %1 steps from %2 to %3: it may be "
+                              "blocked, or its torque is limited.")
+                .arg(std::abs(move.target - move.start))
+                .arg(move.start)
+                .arg(move.target));
         return;
     }
     if (metrics->overshootPercent && *metrics->overshootPercent > limits.overshootWarningPercent)
         health.add(QStringLiteral("move-overshoot"), Verdict::Warning,
-                   Tr::tr("The move overshot by %1 %: its gains may be too high.")
+                   ServoHealthTr::tr("The move overshot by %1 %: its gains may be too high.")
                        .arg(number(*metrics->overshootPercent, 1)));
     if (metrics->steadyStateError
         && std::abs(*metrics->steadyStateError) > limits.steadyErrorWarning)
         health.add(QStringLiteral("move-steady-error"), Verdict::Warning,
-                   Tr::tr("The horn stopped %1 steps from its goal: a load holds it off, or its "
-                          "dead zone is wide.")
+                   ServoHealthTr::tr(
+                       "The horn stopped %1 steps from its goal: a load holds it off, or its "
+                       "dead zone is wide.")
                        .arg(number(std::abs(*metrics->steadyStateError), 0)));
 }
 
@@ -276,11 +288,13 @@ void flagFirmwareMismatches(QVector<ServoHealth> &servos)
         QStringList others;
         for (const ServoHealth &other : servos) {
             if (other.model == servo.model && other.firmware != servo.firmware)
-                others.append(Tr::tr("servo %1 has %2").arg(other.id).arg(other.firmware));
+                others.append(
+                    ServoHealthTr::tr("servo %1 has %2").arg(other.id).arg(other.firmware));
         }
         servo.add(QStringLiteral("firmware-mismatch"), Verdict::Warning,
-                  Tr::tr("Its firmware %1 differs from other %2 servos on the bus (%3): they may "
-                         "behave differently with the same settings.")
+                  ServoHealthTr::tr(
+                      "Its firmware %1 differs from other %2 servos on the bus (%3): they may "
+                      "behave differently with the same settings.")
                       .arg(servo.firmware, servo.model, others.join(QStringLiteral(", "))));
     }
 }
@@ -293,7 +307,7 @@ bool anyFault(const QVector<ServoHealth> &servos)
 
 QString commText(const CommQuality &comm)
 {
-    return Tr::tr("%1/%2 answered, %3 retries, %4 timeouts, %5 checksum errors")
+    return ServoHealthTr::tr("%1/%2 answered, %3 retries, %4 timeouts, %5 checksum errors")
         .arg(comm.answered)
         .arg(comm.reads)
         .arg(comm.retries)
@@ -304,15 +318,17 @@ QString commText(const CommQuality &comm)
 QString moveText(const MoveTestResult &move)
 {
     if (!move.ok || !move.metrics)
-        return move.message.isEmpty() ? Tr::tr("not measured") : move.message;
+        return move.message.isEmpty() ? ServoHealthTr::tr("not measured") : move.message;
     const StepMetrics &m = *move.metrics;
-    const QString none = Tr::tr("none");
-    return Tr::tr("%1 → %2: rise %3, overshoot %4, steady-state error %5")
+    const QString none = ServoHealthTr::tr("none");
+    return ServoHealthTr::tr("%1 → %2: rise %3, overshoot %4, steady-state error %5")
         .arg(move.start)
         .arg(move.target)
-        .arg(m.riseTime ? Tr::tr("%1 s").arg(number(*m.riseTime, 3)) : none,
-             m.overshootPercent ? Tr::tr("%1 %").arg(number(*m.overshootPercent, 1)) : none,
-             m.steadyStateError ? Tr::tr("%1 steps").arg(number(*m.steadyStateError, 1)) : none);
+        .arg(m.riseTime ? ServoHealthTr::tr("%1 s").arg(number(*m.riseTime, 3)) : none,
+             m.overshootPercent ? ServoHealthTr::tr("%1 %").arg(number(*m.overshootPercent, 1))
+                                : none,
+             m.steadyStateError ? ServoHealthTr::tr("%1 steps").arg(number(*m.steadyStateError, 1))
+                                : none);
 }
 
 QJsonObject healthJson(const ServoHealth &health)

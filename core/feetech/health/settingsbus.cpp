@@ -3,26 +3,18 @@
 
 #include "feetechvalue.h"
 #include "registerkeys.h"
+#include "settingschecktr.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
 #include <memory>
 
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(SettingsCheck)
-};
-
-} // namespace
-
 namespace feetech {
 
 namespace {
 
-const QString kLock = QStringLiteral("lock");
+const QString kLockKey = QStringLiteral("lock");
 
 struct FixRun
 {
@@ -51,8 +43,9 @@ void writeFixes(BusExchange &bus, std::shared_ptr<FixRun> run)
             continue;
         if (outcome.finding.needsTorqueOff && torqueOn) {
             outcome.code = SettingsFixOutcome::Code::TorqueOn;
-            outcome.why = Tr::tr("not written: torque is on, and writing %1 could move the horn; "
-                                 "switch the torque off first")
+            outcome.why = SettingsCheckTr::tr(
+                              "not written: torque is on, and writing %1 could move the horn; "
+                              "switch the torque off first")
                               .arg(outcome.finding.key);
             continue;
         }
@@ -73,7 +66,7 @@ void writeFixes(BusExchange &bus, std::shared_ptr<FixRun> run)
     for (const int i : std::as_const(toWrite)) {
         const SettingsFinding &finding = run->outcomes.at(i).finding;
         keys.append(finding.key);
-        if (finding.key == kLock)
+        if (finding.key == kLockKey)
             closeLock = true; // the lock step below is its write
         else
             steps.push_back(bus.writeValue(run->servo, finding.key, *finding.expected, [] {}));
@@ -96,7 +89,7 @@ void writeFixes(BusExchange &bus, std::shared_ptr<FixRun> run)
                 outcome.code = SettingsFixOutcome::Code::Verified;
             } else {
                 outcome.code = SettingsFixOutcome::Code::NotVerified;
-                outcome.why = Tr::tr("written, but it reads back %1, not %2")
+                outcome.why = SettingsCheckTr::tr("written, but it reads back %1, not %2")
                                   .arg(*outcome.readBack)
                                   .arg(*outcome.finding.expected);
             }
@@ -105,7 +98,7 @@ void writeFixes(BusExchange &bus, std::shared_ptr<FixRun> run)
             run->done(run->outcomes);
             return;
         }
-        failUnsettled(*run, Tr::tr("not verified: %1").arg(message));
+        failUnsettled(*run, SettingsCheckTr::tr("not verified: %1").arg(message));
         if (!eeprom) {
             run->done(run->outcomes);
             return;
@@ -124,8 +117,8 @@ void readSettings(BusExchange &bus, const ServoInfo &servo, const QStringList &k
     auto reading = std::make_shared<SettingsReading>();
     reading->servo = servo;
     if (!servo.hasTable()) {
-        reading->failure =
-            Tr::tr("ServoBench has no register table for model %1.").arg(servo.model.name);
+        reading->failure = SettingsCheckTr::tr("ServoBench has no register table for model %1.")
+                               .arg(servo.model.name);
         done(*reading);
         return;
     }
@@ -174,7 +167,7 @@ void fixSettings(BusExchange &bus, const QVector<SettingsFinding> &findings,
         outcome.finding = finding;
         if (!finding.fixable()) {
             outcome.code = SettingsFixOutcome::Code::NotFixable;
-            outcome.why = Tr::tr("nothing to write fixes this");
+            outcome.why = SettingsCheckTr::tr("nothing to write fixes this");
         }
         anyFixable = anyFixable || finding.fixable();
         run->outcomes.append(outcome);
@@ -190,11 +183,12 @@ void fixSettings(BusExchange &bus, const QVector<SettingsFinding> &findings,
         steps.push_back(std::move(step));
     bus.runSteps(std::move(steps), [&bus, run](bool ok, const QString &message) {
         if (!ok) {
-            failUnsettled(*run,
-                          Tr::tr("not written: servo %1 does not answer (%2); check its "
-                                 "cable and power")
-                              .arg(run->servo->id)
-                              .arg(message));
+            failUnsettled(
+                *run,
+                SettingsCheckTr::tr("not written: servo %1 does not answer (%2); check its "
+                                    "cable and power")
+                    .arg(run->servo->id)
+                    .arg(message));
             run->done(run->outcomes);
             return;
         }

@@ -4,19 +4,11 @@
 
 #include "registerkeys.h"
 #include "servohealth.h"
+#include "settingschecktr.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(SettingsCheck)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -93,17 +85,18 @@ public:
             const Register *r = reg(it.key());
             const bool lostAtPowerOff = r && r->storage == Storage::Ram;
             add(QStringLiteral("template"), it.key(), it.value(),
-                lostAtPowerOff ? Tr::tr("%1 is %2; %3 sets %4 (a RAM register: it is lost at "
-                                        "power-off and set again at every connect).")
-                                     .arg(it.key())
-                                     .arg(*held)
-                                     .arg(m_source)
-                                     .arg(it.value())
-                               : Tr::tr("%1 is %2; %3 sets %4.")
-                                     .arg(it.key())
-                                     .arg(*held)
-                                     .arg(m_source)
-                                     .arg(it.value()));
+                lostAtPowerOff
+                    ? SettingsCheckTr::tr("%1 is %2; %3 sets %4 (a RAM register: it is lost at "
+                                          "power-off and set again at every connect).")
+                          .arg(it.key())
+                          .arg(*held)
+                          .arg(m_source)
+                          .arg(it.value())
+                    : SettingsCheckTr::tr("%1 is %2; %3 sets %4.")
+                          .arg(it.key())
+                          .arg(*held)
+                          .arg(m_source)
+                          .arg(it.value()));
         }
     }
 
@@ -115,7 +108,7 @@ public:
             if (!held || !(quint32(*held) & it.value()))
                 continue;
             add(QStringLiteral("template"), it.key(), qint32(quint32(*held) & ~it.value()),
-                Tr::tr("%1 is %2 with bits 0x%3 set; %4 clears them.")
+                SettingsCheckTr::tr("%1 is %2 with bits 0x%3 set; %4 clears them.")
                     .arg(it.key())
                     .arg(*held)
                     .arg(quint32(*held) & it.value(), 2, 16, QLatin1Char('0'))
@@ -155,29 +148,33 @@ void checkMotion(ServoFindings &servo)
 {
     if (const auto phase = servo.value(kPhase);
         phase && (*phase & (1 << kMultiTurnBit)) && hasMultiTurnBit(servo.reg(kPhase))) {
-        servo.add(QStringLiteral("multi-turn"), kPhase,
-                  servo.expected(kPhase, *phase & ~(1 << kMultiTurnBit)),
-                  Tr::tr("Phase bit 4 is set: the servo counts whole turns, so its position "
-                         "leaves 0-4095 and goals and calibration no longer match it."));
+        servo.add(
+            QStringLiteral("multi-turn"), kPhase,
+            servo.expected(kPhase, *phase & ~(1 << kMultiTurnBit)),
+            SettingsCheckTr::tr("Phase bit 4 is set: the servo counts whole turns, so its position "
+                                "leaves 0-4095 and goals and calibration no longer match it."));
     }
     if (const auto limit = servo.value(kTorqueLimit); limit && *limit == 0) {
         const Register *r = servo.reg(kTorqueLimit);
         const qint32 maxTorque = servo.value(kMaxTorque).value_or(0);
-        servo.add(QStringLiteral("torque-limit-zero"), kTorqueLimit,
-                  maxTorque > 0 ? maxTorque : (r ? r->maximum : 1000),
-                  Tr::tr("The torque limit is 0: the servo has no force to move with."));
+        servo.add(
+            QStringLiteral("torque-limit-zero"), kTorqueLimit,
+            maxTorque > 0 ? maxTorque : (r ? r->maximum : 1000),
+            SettingsCheckTr::tr("The torque limit is 0: the servo has no force to move with."));
     }
     if (const auto maxTorque = servo.value(kMaxTorque); maxTorque && *maxTorque == 0) {
         const Register *r = servo.reg(kMaxTorque);
         servo.add(QStringLiteral("max-torque-zero"), kMaxTorque,
                   servo.expected(kMaxTorque, r ? r->maximum : 1000),
-                  Tr::tr("The maximum torque is 0: at every power-on the torque limit starts at "
-                         "0, and the servo does not move."));
+                  SettingsCheckTr::tr(
+                      "The maximum torque is 0: at every power-on the torque limit starts at "
+                      "0, and the servo does not move."));
     }
     if (const auto mode = servo.value(kMode); mode && *mode != kPositionMode) {
         servo.add(QStringLiteral("mode"), kMode, servo.expected(kMode, kPositionMode),
-                  Tr::tr("The operating mode is %1, not position (0): a joint does not follow "
-                         "its goal position.")
+                  SettingsCheckTr::tr(
+                      "The operating mode is %1, not position (0): a joint does not follow "
+                      "its goal position.")
                       .arg(*mode));
     }
     const auto low = servo.value(kMinAngleLimit);
@@ -186,16 +183,17 @@ void checkMotion(ServoFindings &servo)
         const Register *r = servo.reg(kMaxAngleLimit);
         const qint32 top = r ? r->maximum : 4095;
         const QString why =
-            Tr::tr("Both angle limits are 0: the servo turns without end (multi-turn "
-                   "or wheel), not as a joint.");
+            SettingsCheckTr::tr("Both angle limits are 0: the servo turns without end (multi-turn "
+                                "or wheel), not as a joint.");
         servo.add(QStringLiteral("angle-limits-zero"), kMaxAngleLimit,
                   servo.expected(kMaxAngleLimit, top), why);
     } else if (low && high && *low >= *high) {
         const Register *r = servo.reg(kMaxAngleLimit);
-        const QString why = Tr::tr("The minimum angle limit %1 is not below the maximum %2: the "
-                                   "servo refuses every goal.")
-                                .arg(*low)
-                                .arg(*high);
+        const QString why =
+            SettingsCheckTr::tr("The minimum angle limit %1 is not below the maximum %2: the "
+                                "servo refuses every goal.")
+                .arg(*low)
+                .arg(*high);
         servo.add(QStringLiteral("angle-limits-order"), kMinAngleLimit,
                   servo.expected(kMinAngleLimit, 0), why);
         servo.add(QStringLiteral("angle-limits-order"), kMaxAngleLimit,
@@ -208,13 +206,15 @@ void checkBus(ServoFindings &servo)
     if (const auto delay = servo.value(kReturnDelay); delay && *delay > 0) {
         const Register *r = servo.reg(kReturnDelay);
         servo.add(QStringLiteral("return-delay"), kReturnDelay, servo.expected(kReturnDelay, 0),
-                  Tr::tr("The servo waits %1 µs before each answer: every read of the bus is "
-                         "that much slower.")
+                  SettingsCheckTr::tr(
+                      "The servo waits %1 µs before each answer: every read of the bus is "
+                      "that much slower.")
                       .arg(number(*delay * (r ? r->scale : 2.0), 0)));
     }
     if (const auto lock = servo.value(kLock); lock && *lock == 0) {
         servo.add(QStringLiteral("unlocked"), kLock, 1,
-                  Tr::tr("The EEPROM is unlocked: a stray write would change settings for good."));
+                  SettingsCheckTr::tr(
+                      "The EEPROM is unlocked: a stray write would change settings for good."));
     }
 }
 
@@ -232,16 +232,18 @@ void checkVoltage(ServoFindings &servo)
     };
     if (const auto high = limitVolts(kMaxVoltage); high && *high > 0 && volts > *high) {
         servo.add(QStringLiteral("voltage-limit"), kMaxVoltage, std::nullopt,
-                  Tr::tr("The supply reads %1 V, above the maximum voltage setting of %2 V: the "
-                         "servo reports a voltage error and may not move. Use a supply it is "
-                         "made for, or raise the limit if it is a higher-voltage model.")
+                  SettingsCheckTr::tr(
+                      "The supply reads %1 V, above the maximum voltage setting of %2 V: the "
+                      "servo reports a voltage error and may not move. Use a supply it is "
+                      "made for, or raise the limit if it is a higher-voltage model.")
                       .arg(number(volts, 1), number(*high, 1)));
     }
     if (const auto low = limitVolts(kMinVoltage); low && volts < *low) {
         servo.add(QStringLiteral("voltage-limit"), kMinVoltage, std::nullopt,
-                  Tr::tr("The supply reads %1 V, below the minimum voltage setting of %2 V: the "
-                         "servo reports a voltage error and may not move. Charge the battery or "
-                         "check the supply.")
+                  SettingsCheckTr::tr(
+                      "The supply reads %1 V, below the minimum voltage setting of %2 V: the "
+                      "servo reports a voltage error and may not move. Charge the battery or "
+                      "check the supply.")
                       .arg(number(volts, 1), number(*low, 1)));
     }
 }
@@ -314,7 +316,8 @@ QVector<SettingsFinding> checkSettings(const QVector<SettingsReading> &readings,
             SettingsFinding finding;
             finding.servo = reading.servo;
             finding.code = QStringLiteral("unreadable");
-            finding.why = Tr::tr("Its settings could not be read: %1").arg(reading.failure);
+            finding.why =
+                SettingsCheckTr::tr("Its settings could not be read: %1").arg(reading.failure);
             findings.append(finding);
             continue;
         }
@@ -358,7 +361,7 @@ QJsonObject settingsFixJson(const SettingsFixOutcome &outcome)
 QString fixOutcomeText(const SettingsFixOutcome &outcome)
 {
     if (outcome.verified())
-        return Tr::tr("fixed, verified");
+        return SettingsCheckTr::tr("fixed, verified");
     return outcome.why;
 }
 

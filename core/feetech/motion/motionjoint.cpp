@@ -1,17 +1,8 @@
 // A recorded joint's CSV column and its words.
 #include "motionjoint.h"
+#include "motionrecordingtr.h"
 
 #include <QCoreApplication>
-
-namespace {
-
-// The context its sentences have always been translated in.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(MotionRecording)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -23,7 +14,8 @@ QString MotionJoint::column() const
 
 QString MotionJoint::describe() const
 {
-    return name.isEmpty() ? Tr::tr("servo %1").arg(id) : Tr::tr("%1 (servo %2)").arg(name).arg(id);
+    return name.isEmpty() ? MotionRecordingTr::tr("servo %1").arg(id)
+                          : MotionRecordingTr::tr("%1 (servo %2)").arg(name).arg(id);
 }
 
 } // namespace feetech

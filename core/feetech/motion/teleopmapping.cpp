@@ -8,7 +8,7 @@
 
 namespace {
 
-struct Tr
+struct TeleopMappingTr
 {
     Q_DECLARE_TR_FUNCTIONS(TeleopMapping)
 };
@@ -55,7 +55,7 @@ std::optional<TeleopMapping> TeleopMapping::match(const QVector<LeRobotMotor> &f
             return other.name == motor.name;
         });
         if (found == leader.end())
-            lacking.append(Tr::tr("%1 (not in the leader's file)").arg(motor.name));
+            lacking.append(TeleopMappingTr::tr("%1 (not in the leader's file)").arg(motor.name));
         else
             mapping.m_joints.append({motor.name, *found, motor, isGripper(motor.name)});
     }
@@ -63,7 +63,7 @@ std::optional<TeleopMapping> TeleopMapping::match(const QVector<LeRobotMotor> &f
         const bool known = std::any_of(follower.begin(), follower.end(),
                                        [&](const auto &other) { return other.name == motor.name; });
         if (!known)
-            lacking.append(Tr::tr("%1 (not in the follower's file)").arg(motor.name));
+            lacking.append(TeleopMappingTr::tr("%1 (not in the follower's file)").arg(motor.name));
     }
     if (missing)
         *missing = lacking;

@@ -11,7 +11,7 @@
 namespace {
 
 // The context the decoder's messages have always been translated in.
-struct Tr
+struct DecoderTr
 {
     Q_DECLARE_TR_FUNCTIONS(Decoder)
 };
@@ -28,7 +28,8 @@ namespace {
 
 QString idText(quint8 id)
 {
-    return id == kBroadcastId ? Tr::tr("ID %1 (broadcast)").arg(id) : Tr::tr("ID %1").arg(id);
+    return id == kBroadcastId ? DecoderTr::tr("ID %1 (broadcast)").arg(id)
+                              : DecoderTr::tr("ID %1").arg(id);
 }
 
 void describeStatus(DecodedFrame &frame, quint8 id, quint8 code, const QByteArray &params,
@@ -41,14 +42,13 @@ void describeStatus(DecodedFrame &frame, quint8 id, quint8 code, const QByteArra
         frame.fields.insert(QStringLiteral("error_bits"), QJsonArray::fromStringList(bits));
         frame.fields.insert(QStringLiteral("data"), util::toHex(params));
     }
-    frame.summary =
-        Tr::tr("status from %1: %2")
-            .arg(idText(id),
-                 code == 0
-                     ? Tr::tr("no error")
-                     : Tr::tr("error %1 (%2)").arg(hexByte(code), bits.join(QStringLiteral(", "))));
+    frame.summary = DecoderTr::tr("status from %1: %2")
+                        .arg(idText(id),
+                             code == 0 ? DecoderTr::tr("no error")
+                                       : DecoderTr::tr("error %1 (%2)")
+                                             .arg(hexByte(code), bits.join(QStringLiteral(", "))));
     if (!params.isEmpty())
-        frame.summary += Tr::tr(", data %1").arg(util::toHex(params));
+        frame.summary += DecoderTr::tr(", data %1").arg(util::toHex(params));
 }
 
 // The parameters of an instruction in words; SYNC READ also adds the servos it asks to answer.
@@ -59,7 +59,7 @@ QString instructionDetail(Instruction instruction, const QByteArray &params, boo
     switch (instruction) {
     case Instruction::Read:
         if (params.size() == 2)
-            return Tr::tr("address %1 (%2), length %3")
+            return DecoderTr::tr("address %1 (%2), length %3")
                 .arg(address)
                 .arg(hexByte(address))
                 .arg(quint8(params[1]));
@@ -67,7 +67,7 @@ QString instructionDetail(Instruction instruction, const QByteArray &params, boo
     case Instruction::Write:
     case Instruction::RegWrite:
         if (!params.isEmpty())
-            return Tr::tr("address %1 (%2), data %3")
+            return DecoderTr::tr("address %1 (%2), data %3")
                 .arg(address)
                 .arg(hexByte(address))
                 .arg(util::toHex(params.mid(1)));
@@ -80,7 +80,7 @@ QString instructionDetail(Instruction instruction, const QByteArray &params, boo
                 if (checksumValid)
                     expectedReplies.insert(quint8(params[i]));
             }
-            return Tr::tr("address %1 (%2), length %3, IDs %4")
+            return DecoderTr::tr("address %1 (%2), length %3, IDs %4")
                 .arg(address)
                 .arg(hexByte(address))
                 .arg(quint8(params[1]))
@@ -92,10 +92,10 @@ QString instructionDetail(Instruction instruction, const QByteArray &params, boo
             const int length = quint8(params[1]);
             QStringList entries;
             for (int i = 2; length > 0 && i + length < params.size(); i += length + 1)
-                entries.append(Tr::tr("ID %1: %2")
+                entries.append(DecoderTr::tr("ID %1: %2")
                                    .arg(quint8(params[i]))
                                    .arg(util::toHex(params.mid(i + 1, length))));
-            return Tr::tr("address %1 (%2), length %3; %4")
+            return DecoderTr::tr("address %1 (%2), length %3; %4")
                 .arg(address)
                 .arg(hexByte(address))
                 .arg(length)
@@ -103,11 +103,12 @@ QString instructionDetail(Instruction instruction, const QByteArray &params, boo
         }
         break;
     case Instruction::Calibrate:
-        return params.isEmpty() ? Tr::tr("current position becomes the middle")
-                                : Tr::tr("current position becomes %1").arg(util::toHex(params));
+        return params.isEmpty()
+            ? DecoderTr::tr("current position becomes the middle")
+            : DecoderTr::tr("current position becomes %1").arg(util::toHex(params));
     default:
         if (!params.isEmpty())
-            return Tr::tr("parameters %1").arg(util::toHex(params));
+            return DecoderTr::tr("parameters %1").arg(util::toHex(params));
         break;
     }
     return {};

@@ -10,7 +10,7 @@
 
 namespace {
 
-struct Tr
+struct FeetechParametersTr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechParameters)
 };
@@ -27,7 +27,8 @@ QString groupFor(const Register &reg, const QVector<SettingsGroup> &groups)
         if (group.keys.contains(reg.key))
             return group.title;
     }
-    return reg.storage == Storage::Eeprom ? Tr::tr("Other EEPROM") : Tr::tr("Other RAM");
+    return reg.storage == Storage::Eeprom ? FeetechParametersTr::tr("Other EEPROM")
+                                          : FeetechParametersTr::tr("Other RAM");
 }
 
 model::Definition definitionFor(const Register &reg, const QVector<SettingsGroup> &groups)
@@ -54,20 +55,20 @@ model::Definition definitionFor(const Register &reg, const QVector<SettingsGroup
 QVector<SettingsGroup> settingsGroups()
 {
     return {
-        {Tr::tr("Identity and link"),
+        {FeetechParametersTr::tr("Identity and link"),
          {QStringLiteral("id"), QStringLiteral("baud_rate"), QStringLiteral("return_delay"),
           QStringLiteral("response_level"), QStringLiteral("secondary_id")}},
-        {Tr::tr("Travel and mode"),
+        {FeetechParametersTr::tr("Travel and mode"),
          {QStringLiteral("min_angle_limit"), QStringLiteral("max_angle_limit"),
           QStringLiteral("position_offset"), QStringLiteral("mode"),
           QStringLiteral("angular_resolution")}},
-        {Tr::tr("Control loop"),
+        {FeetechParametersTr::tr("Control loop"),
          {QStringLiteral("p_gain"), QStringLiteral("d_gain"), QStringLiteral("i_gain"),
           QStringLiteral("speed_p_gain"), QStringLiteral("speed_i_gain"),
           QStringLiteral("current_p_gain"), QStringLiteral("current_i_gain"),
           QStringLiteral("cw_dead_zone"), QStringLiteral("ccw_dead_zone"),
           QStringLiteral("min_startup_force")}},
-        {Tr::tr("Limits and protection"),
+        {FeetechParametersTr::tr("Limits and protection"),
          {QStringLiteral("max_temperature"), QStringLiteral("max_voltage"),
           QStringLiteral("min_voltage"), QStringLiteral("max_torque"),
           QStringLiteral("protection_current"), QStringLiteral("holding_torque"),
@@ -125,13 +126,13 @@ encodeWrites(const RegisterTable &table, const QVector<model::WriteItem> &items,
         const Register *reg = table.find(item.key);
         if (!reg || !reg->writable()) {
             if (error)
-                *error = Tr::tr("%1 is not a writable register of %2.")
+                *error = FeetechParametersTr::tr("%1 is not a writable register of %2.")
                              .arg(item.key, familyName(table.family()));
             return std::nullopt;
         }
         if (item.value < reg->minimum || item.value > reg->maximum) {
             if (error)
-                *error = Tr::tr("%1 = %2 is out of range (%3 to %4).")
+                *error = FeetechParametersTr::tr("%1 = %2 is out of range (%3 to %4).")
                              .arg(reg->key)
                              .arg(item.value)
                              .arg(reg->minimum)
@@ -141,7 +142,9 @@ encodeWrites(const RegisterTable &table, const QVector<model::WriteItem> &items,
         const auto bytes = encodeValue(qint32(item.value), table.format(*reg));
         if (!bytes) {
             if (error)
-                *error = Tr::tr("%1 = %2 does not fit the register.").arg(reg->key).arg(item.value);
+                *error = FeetechParametersTr::tr("%1 = %2 does not fit the register.")
+                             .arg(reg->key)
+                             .arg(item.value);
             return std::nullopt;
         }
         writes.append({reg->address, *bytes, reg->storage == Storage::Eeprom});
@@ -170,7 +173,8 @@ std::optional<qint32> parseValue(const Register &reg, const QString &text, QStri
             : std::nullopt;
         if (!code) {
             if (error)
-                *error = Tr::tr("baud_rate: %1 bps is not a Feetech baud rate.").arg(trimmed);
+                *error = FeetechParametersTr::tr("baud_rate: %1 bps is not a Feetech baud rate.")
+                             .arg(trimmed);
             return std::nullopt;
         }
         parsed = *code;
@@ -187,14 +191,15 @@ std::optional<qint32> parseValue(const Register &reg, const QString &text, QStri
     if (!parsed) {
         if (error)
             *error = units == ValueUnits::Real
-                ? Tr::tr("%1: \"%2\" is not a number.").arg(reg.key, trimmed)
-                : Tr::tr("%1: \"%2\" is not a whole number.").arg(reg.key, trimmed);
+                ? FeetechParametersTr::tr("%1: \"%2\" is not a number.").arg(reg.key, trimmed)
+                : FeetechParametersTr::tr("%1: \"%2\" is not a whole number.")
+                      .arg(reg.key, trimmed);
         return std::nullopt;
     }
     const qint64 value = *parsed;
     if (value < reg.minimum || value > reg.maximum) {
         if (error)
-            *error = Tr::tr("%1 = %2 is out of range (%3 to %4).")
+            *error = FeetechParametersTr::tr("%1 = %2 is out of range (%3 to %4).")
                          .arg(reg.key)
                          .arg(value)
                          .arg(reg.minimum)
@@ -214,9 +219,10 @@ QString bitNames(const Register &reg, qint32 value)
             continue;
         const auto named = std::find_if(reg.bits.begin(), reg.bits.end(),
                                         [bit](const BitName &b) { return b.bit == bit; });
-        names.append(named != reg.bits.end() ? tableText(named->label) : Tr::tr("bit %1").arg(bit));
+        names.append(named != reg.bits.end() ? tableText(named->label)
+                                             : FeetechParametersTr::tr("bit %1").arg(bit));
     }
-    return names.isEmpty() ? Tr::tr("none") : names.join(QStringLiteral(", "));
+    return names.isEmpty() ? FeetechParametersTr::tr("none") : names.join(QStringLiteral(", "));
 }
 
 QString displayValue(const Register &reg, qint32 value)

@@ -11,7 +11,7 @@
 
 namespace {
 
-struct Tr
+struct FeetechTelemetryTr
 {
     Q_DECLARE_TR_FUNCTIONS(FeetechTelemetry)
 };
@@ -89,17 +89,17 @@ QString quantityName(Quantity quantity)
 {
     switch (quantity) {
     case Quantity::Position:
-        return Tr::tr("Position");
+        return FeetechTelemetryTr::tr("Position");
     case Quantity::Speed:
-        return Tr::tr("Speed");
+        return FeetechTelemetryTr::tr("Speed");
     case Quantity::Load:
-        return Tr::tr("Load");
+        return FeetechTelemetryTr::tr("Load");
     case Quantity::Voltage:
-        return Tr::tr("Voltage");
+        return FeetechTelemetryTr::tr("Voltage");
     case Quantity::Temperature:
-        return Tr::tr("Temperature");
+        return FeetechTelemetryTr::tr("Temperature");
     case Quantity::Current:
-        return Tr::tr("Current");
+        return FeetechTelemetryTr::tr("Current");
     }
     return {};
 }
@@ -176,7 +176,8 @@ QString servoStatusText(const RegisterTable &table, quint8 servoStatus)
 {
     const Register *status = table.find(u"status");
     if (!status)
-        return servoStatus == 0 ? Tr::tr("none") : QStringLiteral("0x%1").arg(servoStatus, 2, 16);
+        return servoStatus == 0 ? FeetechTelemetryTr::tr("none")
+                                : QStringLiteral("0x%1").arg(servoStatus, 2, 16);
     return bitNames(*status, servoStatus);
 }
 
@@ -208,12 +209,13 @@ std::optional<QVector<CsvSample>> parseTelemetryCsv(const QString &text, QString
 {
     const auto fail = [error](int line, const QString &why) {
         if (error)
-            *error = Tr::tr("Line %1: %2").arg(line).arg(why);
+            *error = FeetechTelemetryTr::tr("Line %1: %2").arg(line).arg(why);
         return std::nullopt;
     };
     const QStringList lines = text.split(QLatin1Char('\n'));
     if (lines.isEmpty() || lines.first().trimmed() != telemetryCsvHeader())
-        return fail(1, Tr::tr("not a ServoBench telemetry recording (unexpected header)"));
+        return fail(
+            1, FeetechTelemetryTr::tr("not a ServoBench telemetry recording (unexpected header)"));
     const int columns = kQuantityCount + 4;
     QVector<CsvSample> samples;
     for (int i = 1; i < lines.size(); ++i) {
@@ -222,15 +224,17 @@ std::optional<QVector<CsvSample>> parseTelemetryCsv(const QString &text, QString
             continue;
         const QStringList cells = line.split(QLatin1Char(','));
         if (cells.size() != columns)
-            return fail(i + 1, Tr::tr("%1 cells instead of %2").arg(cells.size()).arg(columns));
+            return fail(
+                i + 1,
+                FeetechTelemetryTr::tr("%1 cells instead of %2").arg(cells.size()).arg(columns));
         CsvSample sample;
         bool ok = false;
         sample.timeSeconds = cells.at(0).toDouble(&ok);
         if (!ok)
-            return fail(i + 1, Tr::tr("the time is not a number"));
+            return fail(i + 1, FeetechTelemetryTr::tr("the time is not a number"));
         sample.id = cells.at(1).toInt(&ok);
         if (!ok || sample.id < 0 || sample.id > kMaxServoId)
-            return fail(i + 1, Tr::tr("the ID is not a servo ID"));
+            return fail(i + 1, FeetechTelemetryTr::tr("the ID is not a servo ID"));
         for (int q = 0; q < kQuantityCount; ++q) {
             const QString &cell = cells.at(2 + q);
             if (cell.isEmpty())
@@ -238,15 +242,16 @@ std::optional<QVector<CsvSample>> parseTelemetryCsv(const QString &text, QString
             const double value = cell.toDouble(&ok);
             if (!ok)
                 return fail(i + 1,
-                            Tr::tr("%1 is not a number").arg(quantityName(kAllQuantities[q])));
+                            FeetechTelemetryTr::tr("%1 is not a number")
+                                .arg(quantityName(kAllQuantities[q])));
             sample.values.at(q) = value;
         }
         sample.servoStatus = cells.at(2 + kQuantityCount).toInt(&ok);
         if (!ok || sample.servoStatus < 0 || sample.servoStatus > 255)
-            return fail(i + 1, Tr::tr("the status is not a byte"));
+            return fail(i + 1, FeetechTelemetryTr::tr("the status is not a byte"));
         const QString &moving = cells.at(3 + kQuantityCount);
         if (moving != u"0" && moving != u"1")
-            return fail(i + 1, Tr::tr("moving is neither 0 nor 1"));
+            return fail(i + 1, FeetechTelemetryTr::tr("moving is neither 0 nor 1"));
         sample.moving = moving == u"1";
         samples.append(sample);
     }

@@ -10,7 +10,7 @@
 
 namespace {
 
-struct Tr
+struct ArmCalibrationTr
 {
     Q_DECLARE_TR_FUNCTIONS(ArmCalibration)
 };
@@ -26,21 +26,24 @@ QString recordingRefusal(const JointRecording &joint)
 {
     const JointRangeRecorder &range = joint.range;
     if (!range.hasSamples())
-        return Tr::tr("no position was read from servo %1").arg(joint.id);
+        return ArmCalibrationTr::tr("no position was read from servo %1").arg(joint.id);
     if (range.isLost())
-        return Tr::tr("servo %1 stopped answering during the recording: record again")
+        return ArmCalibrationTr::tr("servo %1 stopped answering during the recording: record again")
             .arg(joint.id);
     if (range.span() < kMinimumMotionSteps)
-        return Tr::tr("the joint never moved (%1 steps; move it through its whole range)")
+        return ArmCalibrationTr::tr(
+                   "the joint never moved (%1 steps; move it through its whole range)")
             .arg(range.span());
     if (!joint.fullTurn && range.span() > kEncoderSteps - kRangeSafetyMargin)
-        return Tr::tr("the range of %1 steps is wider than the encoder allows (%2 steps: a turn "
-                      "less a safety margin of %3); is this a full-turn joint?")
+        return ArmCalibrationTr::tr(
+                   "the range of %1 steps is wider than the encoder allows (%2 steps: a turn "
+                   "less a safety margin of %3); is this a full-turn joint?")
             .arg(range.span())
             .arg(kEncoderSteps - kRangeSafetyMargin)
             .arg(kRangeSafetyMargin);
     if (joint.middlePose && (*joint.middlePose < 0 || *joint.middlePose >= kEncoderSteps))
-        return Tr::tr("the middle pose %1 is not a position of the encoder").arg(*joint.middlePose);
+        return ArmCalibrationTr::tr("the middle pose %1 is not a position of the encoder")
+            .arg(*joint.middlePose);
     return {};
 }
 
@@ -48,20 +51,22 @@ QString recordingRefusal(const JointRecording &joint)
 void setLimits(JointCalibration &result, int minimum, int maximum, const CalibrationLimits &limits)
 {
     if (minimum < 0 || maximum >= kEncoderSteps) {
-        result.refusal = Tr::tr("from the middle pose, the range (%1 to %2) would cross the "
-                                "encoder's 0/4095 seam: take a middle pose nearer the middle of "
-                                "the joint's travel, or use ServoBench's order")
-                             .arg(minimum)
-                             .arg(maximum);
+        result.refusal =
+            ArmCalibrationTr::tr("from the middle pose, the range (%1 to %2) would cross the "
+                                 "encoder's 0/4095 seam: take a middle pose nearer the middle of "
+                                 "the joint's travel, or use ServoBench's order")
+                .arg(minimum)
+                .arg(maximum);
         return;
     }
     if (minimum > limits.highestMinimumLimit || maximum > limits.highestMaximumLimit) {
-        result.refusal = Tr::tr("the limits %1 to %2 are outside what the servo holds (at most "
-                                "%3 and %4)")
-                             .arg(minimum)
-                             .arg(maximum)
-                             .arg(limits.highestMinimumLimit)
-                             .arg(limits.highestMaximumLimit);
+        result.refusal =
+            ArmCalibrationTr::tr("the limits %1 to %2 are outside what the servo holds (at most "
+                                 "%3 and %4)")
+                .arg(minimum)
+                .arg(maximum)
+                .arg(limits.highestMinimumLimit)
+                .arg(limits.highestMaximumLimit);
         return;
     }
     result.minimumLimit = minimum;
@@ -133,7 +138,7 @@ JointCalibration calibrateJoint(const JointRecording &joint, CalibrationOrder or
 
     if (order == CalibrationOrder::MiddlePoseFirst) {
         if (!joint.middlePose) {
-            result.refusal = Tr::tr("no middle pose was taken for this joint");
+            result.refusal = ArmCalibrationTr::tr("no middle pose was taken for this joint");
             return result;
         }
         const int middlePose = *joint.middlePose + joint.currentOffset;
@@ -191,11 +196,11 @@ QStringList calibrationMismatches(const QVector<model::WriteItem> &items,
         const auto found = readBack.constFind(item.key);
         if (found != readBack.constEnd() && *found == item.value)
             continue;
-        mismatches.append(
-            Tr::tr("%1: wrote %2, the servo holds %3")
-                .arg(item.key)
-                .arg(item.value)
-                .arg(found != readBack.constEnd() ? QString::number(*found) : Tr::tr("nothing")));
+        mismatches.append(ArmCalibrationTr::tr("%1: wrote %2, the servo holds %3")
+                              .arg(item.key)
+                              .arg(item.value)
+                              .arg(found != readBack.constEnd() ? QString::number(*found)
+                                                                : ArmCalibrationTr::tr("nothing")));
     }
     return mismatches;
 }

@@ -17,7 +17,7 @@
 
 namespace {
 
-struct Tr
+struct LeRobotCalibrationTr
 {
     Q_DECLARE_TR_FUNCTIONS(LeRobotCalibration)
 };
@@ -87,51 +87,62 @@ leRobotCalibrationFromJson(const QByteArray &json, const QString &source, util::
                         .withValue(QString::number(parseError.offset)));
     if (!document.isObject())
         return failOn(Code::NotAnObject,
-                      Tr::tr("not a LeRobot calibration (the document is not a JSON object of "
-                             "motors by joint name)"));
+                      LeRobotCalibrationTr::tr(
+                          "not a LeRobot calibration (the document is not a JSON object of "
+                          "motors by joint name)"));
     const QJsonObject root = document.object();
     if (root.isEmpty())
-        return failOn(Code::MissingField, Tr::tr("the calibration names no motor"));
+        return failOn(Code::MissingField,
+                      LeRobotCalibrationTr::tr("the calibration names no motor"));
     QVector<LeRobotMotor> motors;
     QSet<int> ids;
     for (auto it = root.constBegin(); it != root.constEnd(); ++it) {
         const QString name = it.key();
         if (name.trimmed().isEmpty())
-            return failOn(Code::BadValue, Tr::tr("a motor has an empty name"), name);
+            return failOn(Code::BadValue, LeRobotCalibrationTr::tr("a motor has an empty name"),
+                          name);
         if (!isLeRobotMotorName(name))
             return failOn(Code::BadValue,
-                          Tr::tr("motor \"%1\": not a motor name (ASCII letters, digits and _, a "
-                                 "letter first)")
+                          LeRobotCalibrationTr::tr(
+                              "motor \"%1\": not a motor name (ASCII letters, digits and _, a "
+                              "letter first)")
                               .arg(name),
                           name);
         if (!it.value().isObject())
             return failOn(Code::WrongType,
-                          Tr::tr("motor \"%1\": not an object of id, drive_mode, homing_offset, "
-                                 "range_min and range_max")
+                          LeRobotCalibrationTr::tr(
+                              "motor \"%1\": not an object of id, drive_mode, homing_offset, "
+                              "range_min and range_max")
                               .arg(name),
                           name);
         const QJsonObject object = it.value().toObject();
         if (const auto unknown = util::firstUnknownKey(
                 object, {kIdKey, kDriveModeKey, kHomingOffsetKey, kRangeMinKey, kRangeMaxKey}))
-            return failOn(Code::UnknownKey,
-                          Tr::tr("motor \"%1\": unknown field \"%2\"").arg(name, *unknown),
-                          *unknown);
+            return failOn(
+                Code::UnknownKey,
+                LeRobotCalibrationTr::tr("motor \"%1\": unknown field \"%2\"").arg(name, *unknown),
+                *unknown);
         qint32 values[std::size(kFields)] = {};
         for (std::size_t i = 0; i < std::size(kFields); ++i) {
             const Field &field = kFields[i];
             const QJsonValue value = object.value(QLatin1String(field.key));
             const QString key = QLatin1String(field.key);
             if (value.isUndefined())
-                return failOn(Code::MissingField,
-                              Tr::tr("motor \"%1\": \"%2\" is missing").arg(name, key), key);
+                return failOn(
+                    Code::MissingField,
+                    LeRobotCalibrationTr::tr("motor \"%1\": \"%2\" is missing").arg(name, key),
+                    key);
             if (!isWhole(value))
-                return failOn(Code::WrongType,
-                              Tr::tr("motor \"%1\": \"%2\" must be a whole number").arg(name, key),
-                              key);
+                return failOn(
+                    Code::WrongType,
+                    LeRobotCalibrationTr::tr("motor \"%1\": \"%2\" must be a whole number")
+                        .arg(name, key),
+                    key);
             const double number = value.toDouble();
             if (number < field.minimum || number > field.maximum)
                 return fail(util::FileError(Code::BadValue,
-                                            Tr::tr("motor \"%1\": \"%2\" is %3, outside %4 to %5")
+                                            LeRobotCalibrationTr::tr(
+                                                "motor \"%1\": \"%2\" is %3, outside %4 to %5")
                                                 .arg(name, key)
                                                 .arg(qint64(number))
                                                 .arg(field.minimum)
@@ -142,18 +153,19 @@ leRobotCalibrationFromJson(const QByteArray &json, const QString &source, util::
         }
         LeRobotMotor motor {name, values[0], values[1], values[2], values[3], values[4]};
         if (motor.rangeMin >= motor.rangeMax)
-            return fail(
-                util::FileError(Code::BadValue,
-                                Tr::tr("motor \"%1\": \"%2\" (%3) must be below \"%4\" (%5)")
-                                    .arg(name, QLatin1String(kRangeMinKey))
-                                    .arg(motor.rangeMin)
-                                    .arg(QLatin1String(kRangeMaxKey))
-                                    .arg(motor.rangeMax))
-                    .withField(QLatin1String(kRangeMinKey))
-                    .withValue(QString::number(motor.rangeMin)));
+            return fail(util::FileError(Code::BadValue,
+                                        LeRobotCalibrationTr::tr(
+                                            "motor \"%1\": \"%2\" (%3) must be below \"%4\" (%5)")
+                                            .arg(name, QLatin1String(kRangeMinKey))
+                                            .arg(motor.rangeMin)
+                                            .arg(QLatin1String(kRangeMaxKey))
+                                            .arg(motor.rangeMax))
+                            .withField(QLatin1String(kRangeMinKey))
+                            .withValue(QString::number(motor.rangeMin)));
         if (ids.contains(motor.id))
             return fail(util::FileError(Code::Duplicate,
-                                        Tr::tr("motor \"%1\": ID %2 is used by another motor too")
+                                        LeRobotCalibrationTr::tr(
+                                            "motor \"%1\": ID %2 is used by another motor too")
                                             .arg(name)
                                             .arg(motor.id))
                             .withField(QLatin1String(kIdKey))
@@ -194,8 +206,9 @@ QByteArray leRobotCalibrationToJson(const QVector<LeRobotMotor> &motors)
 std::optional<QVector<LeRobotMotor>> loadLeRobotCalibration(const QString &path,
                                                             util::FileError *error)
 {
-    const auto data = util::readFile(path, util::kMaxJsonFileBytes,
-                                     Tr::tr("the file is too large for a calibration"), error);
+    const auto data =
+        util::readFile(path, util::kMaxJsonFileBytes,
+                       LeRobotCalibrationTr::tr("the file is too large for a calibration"), error);
     if (!data)
         return std::nullopt;
     return leRobotCalibrationFromJson(*data, path, error);
@@ -262,8 +275,9 @@ bool updateLeRobotCalibrationFile(const QVector<LeRobotMotor> &calibrated, const
         if (!leRobotMotorWithId(*file, motor.id)) {
             util::report(error,
                          util::FileError(util::FileError::Code::MissingField,
-                                         Tr::tr("no joint has ID %1 (%2): it is not this arm's "
-                                                "file")
+                                         LeRobotCalibrationTr::tr(
+                                             "no joint has ID %1 (%2): it is not this arm's "
+                                             "file")
                                              .arg(motor.id)
                                              .arg(motor.name))
                              .withField(QString::number(motor.id))

@@ -5,7 +5,7 @@
 
 namespace {
 
-struct Tr
+struct MotionTestRefusalTr
 {
     Q_DECLARE_TR_FUNCTIONS(MotionTestRefusal)
 };
@@ -89,25 +89,29 @@ QString MotionTestRefusal::describe() const
     case Code::None:
         return {};
     case Code::AlreadyRunning:
-        return Tr::tr("A test is already running.");
+        return MotionTestRefusalTr::tr("A test is already running.");
     case Code::NotConnected:
-        return Tr::tr("The bus is not connected.");
+        return MotionTestRefusalTr::tr("The bus is not connected.");
     case Code::NoServo:
-        return Tr::tr("No servo is selected.");
+        return MotionTestRefusalTr::tr("No servo is selected.");
     case Code::BeingIdentified:
-        return Tr::tr("Servo ID %1 is being identified; wait until it is back.").arg(m_servoId);
+        return MotionTestRefusalTr::tr("Servo ID %1 is being identified; wait until it is back.")
+            .arg(m_servoId);
     case Code::UnknownModel:
-        return Tr::tr("This servo's model is unknown: ServoBench does not move it.");
+        return MotionTestRefusalTr::tr(
+            "This servo's model is unknown: ServoBench does not move it.");
     case Code::NotMovable:
-        return Tr::tr("This servo has no goal position register.");
+        return MotionTestRefusalTr::tr("This servo has no goal position register.");
     case Code::NotInPositionMode:
-        return Tr::tr("Servo ID %1 is not in position mode: set its operating mode to "
-                      "position first.")
+        return MotionTestRefusalTr::tr(
+                   "Servo ID %1 is not in position mode: set its operating mode to "
+                   "position first.")
             .arg(m_servoId);
     case Code::OutsideRange: {
-        const QString limits = m_range.fromAngleLimits ? Tr::tr("the servo's angle limits")
-                                                       : Tr::tr("the goal position range");
-        return Tr::tr("From (%1) and to (%2) must lie within %3, %4 to %5 steps.")
+        const QString limits = m_range.fromAngleLimits
+            ? MotionTestRefusalTr::tr("the servo's angle limits")
+            : MotionTestRefusalTr::tr("the goal position range");
+        return MotionTestRefusalTr::tr("From (%1) and to (%2) must lie within %3, %4 to %5 steps.")
             .arg(m_from)
             .arg(m_to)
             .arg(limits)
@@ -115,15 +119,22 @@ QString MotionTestRefusal::describe() const
             .arg(m_range.maximum);
     }
     case Code::TooClose:
-        return Tr::tr("From and to must be more than %1 steps apart.").arg(m_limit);
+        return MotionTestRefusalTr::tr("From and to must be more than %1 steps apart.")
+            .arg(m_limit);
     case Code::SettingOutOfRange:
-        return Tr::tr("%1 must lie between %2 and %3.").arg(m_label).arg(m_minimum).arg(m_maximum);
+        return MotionTestRefusalTr::tr("%1 must lie between %2 and %3.")
+            .arg(m_label)
+            .arg(m_minimum)
+            .arg(m_maximum);
     case Code::BadRecordLength:
-        return Tr::tr("The recording must last more than 0 and at most %1 seconds.").arg(m_limit);
+        return MotionTestRefusalTr::tr(
+                   "The recording must last more than 0 and at most %1 seconds.")
+            .arg(m_limit);
     case Code::BadLegCount:
-        return Tr::tr("A sweep has 1 to %1 legs.").arg(m_maximum);
+        return MotionTestRefusalTr::tr("A sweep has 1 to %1 legs.").arg(m_maximum);
     case Code::ServoGone:
-        return Tr::tr("%1 is no longer on the bus.").arg(Tr::tr("Servo ID %1").arg(m_servoId));
+        return MotionTestRefusalTr::tr("%1 is no longer on the bus.")
+            .arg(MotionTestRefusalTr::tr("Servo ID %1").arg(m_servoId));
     case Code::ClientRefused:
         return m_clientRefusal.describe();
     }

@@ -20,7 +20,7 @@
 namespace {
 
 // Translation context for the messages of this file.
-struct Tr
+struct PoseTr
 {
     Q_DECLARE_TR_FUNCTIONS(Pose)
 };
@@ -56,7 +56,7 @@ QString jsonText(const QJsonValue &value)
 }
 
 // The entries of one element of "servos".
-constexpr char kIdKey[] = "id";
+constexpr char kPoseIdKey[] = "id";
 constexpr char kBaudKey[] = "baud";
 constexpr char kPositionKey[] = "position";
 
@@ -74,35 +74,35 @@ std::optional<PoseEntry> parseEntry(const QJsonValue &value, util::FileError *wh
         return std::nullopt;
     };
     if (!value.isObject())
-        return fail(Code::WrongType, Tr::tr("not a JSON object"));
+        return fail(Code::WrongType, PoseTr::tr("not a JSON object"));
     const QJsonObject object = value.toObject();
-    if (const auto unknown = util::firstUnknownKey(object, {kIdKey, kBaudKey, kPositionKey})) {
-        *why = util::FileError(Code::UnknownKey, Tr::tr("unknown entry \"%1\"").arg(*unknown))
+    if (const auto unknown = util::firstUnknownKey(object, {kPoseIdKey, kBaudKey, kPositionKey})) {
+        *why = util::FileError(Code::UnknownKey, PoseTr::tr("unknown entry \"%1\"").arg(*unknown))
                    .withField(*unknown);
         return std::nullopt;
     }
-    for (const char *key : {kIdKey, kBaudKey, kPositionKey}) {
+    for (const char *key : {kPoseIdKey, kBaudKey, kPositionKey}) {
         if (!object.contains(QLatin1String(key)))
-            return fail(Code::MissingField, Tr::tr("\"%1\" is missing").arg(QLatin1String(key)),
+            return fail(Code::MissingField, PoseTr::tr("\"%1\" is missing").arg(QLatin1String(key)),
                         key);
     }
 
     PoseEntry entry;
-    const QJsonValue idValue = object.value(QLatin1String(kIdKey));
+    const QJsonValue idValue = object.value(QLatin1String(kPoseIdKey));
     const std::optional<qint64> id = wholeNumber(idValue);
     if (!id || *id < 0 || *id > kMaxServoId)
         return fail(Code::BadValue,
-                    Tr::tr("\"%1\": %2 is not a servo ID (0 to %3)")
-                        .arg(QLatin1String(kIdKey), jsonText(idValue))
+                    PoseTr::tr("\"%1\": %2 is not a servo ID (0 to %3)")
+                        .arg(QLatin1String(kPoseIdKey), jsonText(idValue))
                         .arg(kMaxServoId),
-                    kIdKey, idValue);
+                    kPoseIdKey, idValue);
     entry.id = quint8(*id);
 
     const QJsonValue baudValue = object.value(QLatin1String(kBaudKey));
     const std::optional<qint64> baud = wholeNumber(baudValue);
     if (!baud || *baud != qint32(*baud) || !baudRates().contains(qint32(*baud)))
         return fail(Code::BadValue,
-                    Tr::tr("\"%1\": %2 is not a Feetech baud rate in bps")
+                    PoseTr::tr("\"%1\": %2 is not a Feetech baud rate in bps")
                         .arg(QLatin1String(kBaudKey), jsonText(baudValue)),
                     kBaudKey, baudValue);
     entry.baud = qint32(*baud);
@@ -111,12 +111,12 @@ std::optional<PoseEntry> parseEntry(const QJsonValue &value, util::FileError *wh
     const std::optional<qint64> position = wholeNumber(positionValue);
     if (!position)
         return fail(Code::BadValue,
-                    Tr::tr("\"%1\": %2 is not an integer number of steps")
+                    PoseTr::tr("\"%1\": %2 is not an integer number of steps")
                         .arg(QLatin1String(kPositionKey), jsonText(positionValue)),
                     kPositionKey, positionValue);
     if (std::abs(*position) > kPoseMaxMagnitude)
         return fail(Code::BadValue,
-                    Tr::tr("\"%1\": %2 is out of range (%3 to %4)")
+                    PoseTr::tr("\"%1\": %2 is out of range (%3 to %4)")
                         .arg(QLatin1String(kPositionKey), jsonText(positionValue))
                         .arg(-kPoseMaxMagnitude)
                         .arg(kPoseMaxMagnitude),
@@ -136,10 +136,10 @@ util::JsonFormat poseFormat()
     format.marker = kPoseFormatMarker;
     format.version = kPoseFormatVersion;
     format.keys = {kNameKey, kServosKey};
-    format.notAnObject = Tr::tr("not a ServoBench pose (the document is not a JSON object)");
-    format.wrongMarker = Tr::tr("not a ServoBench pose (\"%1\" is not \"%2\")");
-    format.newerVersion = Tr::tr("the pose has format version %1 and was written by a newer "
-                                 "ServoBench; this version reads format version %2 and older");
+    format.notAnObject = PoseTr::tr("not a ServoBench pose (the document is not a JSON object)");
+    format.wrongMarker = PoseTr::tr("not a ServoBench pose (\"%1\" is not \"%2\")");
+    format.newerVersion = PoseTr::tr("the pose has format version %1 and was written by a newer "
+                                     "ServoBench; this version reads format version %2 and older");
     return format;
 }
 
@@ -157,7 +157,7 @@ QByteArray poseToJson(const Pose &pose)
     QJsonArray servos;
     for (const PoseEntry &entry : pose.servos) {
         QJsonObject object;
-        object.insert(QLatin1String(kIdKey), int(entry.id));
+        object.insert(QLatin1String(kPoseIdKey), int(entry.id));
         object.insert(QLatin1String(kBaudKey), entry.baud);
         object.insert(QLatin1String(kPositionKey), entry.position);
         servos.append(object);
@@ -186,16 +186,16 @@ std::optional<Pose> poseFromJson(const QByteArray &json, util::FileError *error)
     const QJsonValue name = root->value(QLatin1String(kNameKey));
     if (!name.isUndefined() && !name.isString())
         return fail(util::FileError(Code::WrongType,
-                                    Tr::tr("\"%1\" must be text").arg(QLatin1String(kNameKey)))
+                                    PoseTr::tr("\"%1\" must be text").arg(QLatin1String(kNameKey)))
                         .withField(QLatin1String(kNameKey)));
     pose.name = name.toString();
 
     const QJsonValue servosValue = root->value(QLatin1String(kServosKey));
     if (!servosValue.isArray())
-        return fail(
-            util::FileError(Code::MissingField,
-                            Tr::tr("the pose has no \"%1\" list").arg(QLatin1String(kServosKey)))
-                .withField(QLatin1String(kServosKey)));
+        return fail(util::FileError(
+                        Code::MissingField,
+                        PoseTr::tr("the pose has no \"%1\" list").arg(QLatin1String(kServosKey)))
+                        .withField(QLatin1String(kServosKey)));
     const QJsonArray servos = servosValue.toArray();
     QSet<QPair<int, qint32>> seen;
     for (int i = 0; i < servos.size(); ++i) {
@@ -203,19 +203,20 @@ std::optional<Pose> poseFromJson(const QByteArray &json, util::FileError *error)
         const std::optional<PoseEntry> entry = parseEntry(servos.at(i), &why);
         // Entries are numbered from 1, as a person counts them in the file.
         if (!entry)
-            return fail(util::FileError(why.code(),
-                                        Tr::tr("servo entry %1: %2").arg(i + 1).arg(why.reason()))
-                            .withField(why.field())
-                            .withValue(why.value()));
+            return fail(
+                util::FileError(why.code(),
+                                PoseTr::tr("servo entry %1: %2").arg(i + 1).arg(why.reason()))
+                    .withField(why.field())
+                    .withValue(why.value()));
         const QPair<int, qint32> address(entry->id, entry->baud);
         if (seen.contains(address))
             return fail(
                 util::FileError(Code::Duplicate,
-                                Tr::tr("servo entry %1: ID %2 at %3 bps is already in the pose")
+                                PoseTr::tr("servo entry %1: ID %2 at %3 bps is already in the pose")
                                     .arg(i + 1)
                                     .arg(entry->id)
                                     .arg(entry->baud))
-                    .withField(QLatin1String(kIdKey))
+                    .withField(QLatin1String(kPoseIdKey))
                     .withValue(QString::number(entry->id)));
         seen.insert(address);
         pose.servos.append(*entry);
@@ -238,8 +239,8 @@ std::optional<Pose> loadPose(const QString &path, util::FileError *error)
 {
     util::FileError why;
     std::optional<Pose> pose;
-    if (const auto json =
-            util::readFile(path, util::kMaxJsonFileBytes, Tr::tr("too large to be a pose"), &why))
+    if (const auto json = util::readFile(path, util::kMaxJsonFileBytes,
+                                         PoseTr::tr("too large to be a pose"), &why))
         pose = poseFromJson(*json, &why);
     if (!pose)
         util::report(error, why.inFile(path));

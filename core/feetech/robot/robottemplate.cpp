@@ -14,7 +14,7 @@
 
 namespace {
 
-struct Tr
+struct RobotTemplateTr
 {
     Q_DECLARE_TR_FUNCTIONS(RobotTemplate)
 };
@@ -27,11 +27,11 @@ namespace {
 
 constexpr char kMarker[] = "servobench-robot";
 constexpr int kVersion = 1;
-constexpr char kNameKey[] = "name";
-constexpr char kBaudKey[] = "baud";
+constexpr char kTemplateNameKey[] = "name";
+constexpr char kTemplateBaudKey[] = "baud";
 constexpr char kSettingsKey[] = "settings";
 constexpr char kJointsKey[] = "joints";
-constexpr char kIdKey[] = "id";
+constexpr char kTemplateIdKey[] = "id";
 constexpr char kModelKey[] = "model";
 constexpr char kFullTurnKey[] = "full_turn";
 constexpr char kClearBitsKey[] = "clear_bits";
@@ -44,12 +44,15 @@ util::JsonFormat robotFormat()
     util::JsonFormat format;
     format.marker = kMarker;
     format.version = kVersion;
-    format.keys = {kNameKey, kBaudKey, kSettingsKey, kClearBitsKey, kJointsKey};
-    format.notAnObject = Tr::tr("not a ServoBench robot template (the document is not a JSON "
-                                "object)");
-    format.wrongMarker = Tr::tr("not a ServoBench robot template (\"%1\" is not \"%2\")");
-    format.newerVersion = Tr::tr("the template has format version %1 and was written by a newer "
-                                 "ServoBench; this version reads format version %2 and older");
+    format.keys = {kTemplateNameKey, kTemplateBaudKey, kSettingsKey, kClearBitsKey, kJointsKey};
+    format.notAnObject =
+        RobotTemplateTr::tr("not a ServoBench robot template (the document is not a JSON "
+                            "object)");
+    format.wrongMarker =
+        RobotTemplateTr::tr("not a ServoBench robot template (\"%1\" is not \"%2\")");
+    format.newerVersion =
+        RobotTemplateTr::tr("the template has format version %1 and was written by a newer "
+                            "ServoBench; this version reads format version %2 and older");
     return format;
 }
 
@@ -84,32 +87,35 @@ bool readSettings(const QJsonValue &value, const RegisterTable &table,
     if (value.isUndefined())
         return true;
     if (!value.isObject())
-        return failWith(
-            why, Code::WrongType,
-            Tr::tr("\"%1\" must be an object of register values").arg(QLatin1String(kSettingsKey)),
-            QLatin1String(kSettingsKey));
+        return failWith(why, Code::WrongType,
+                        RobotTemplateTr::tr("\"%1\" must be an object of register values")
+                            .arg(QLatin1String(kSettingsKey)),
+                        QLatin1String(kSettingsKey));
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it) {
         const Register *reg = table.find(it.key());
         if (!reg || !reg->writable())
-            return failWith(why, Code::UnknownKey,
-                            Tr::tr("settings: \"%1\" is no writable register of %2 servos")
-                                .arg(it.key(), familyName(table.family())),
-                            it.key());
+            return failWith(
+                why, Code::UnknownKey,
+                RobotTemplateTr::tr("settings: \"%1\" is no writable register of %2 servos")
+                    .arg(it.key(), familyName(table.family())),
+                it.key());
         if (std::any_of(std::begin(kFlowOnlyKeys), std::end(kFlowOnlyKeys),
                         [&](const char16_t *key) { return it.key() == QStringView(key); }))
             return failWith(
                 why, Code::BadValue,
-                Tr::tr("settings: \"%1\" is set by its own flow, not by a template").arg(it.key()),
+                RobotTemplateTr::tr("settings: \"%1\" is set by its own flow, not by a template")
+                    .arg(it.key()),
                 it.key());
         if (!isWhole(it.value()))
-            return failWith(why, Code::WrongType,
-                            Tr::tr("settings: \"%1\" must be a whole number").arg(it.key()),
-                            it.key());
+            return failWith(
+                why, Code::WrongType,
+                RobotTemplateTr::tr("settings: \"%1\" must be a whole number").arg(it.key()),
+                it.key());
         const qint64 number = qint64(it.value().toDouble());
         if (number < reg->minimum || number > reg->maximum) {
             failWith(why, Code::BadValue,
-                     Tr::tr("settings: \"%1\" = %2 is out of range (%3 to %4)")
+                     RobotTemplateTr::tr("settings: \"%1\" = %2 is out of range (%3 to %4)")
                          .arg(it.key())
                          .arg(number)
                          .arg(reg->minimum)
@@ -132,32 +138,35 @@ bool readClearedBits(const QJsonValue &value, const RegisterTable &table,
         return true;
     const QString field = QLatin1String(kClearBitsKey);
     if (!value.isObject())
-        return failWith(why, Code::WrongType,
-                        Tr::tr("\"%1\" must be an object of bit numbers by register").arg(field),
-                        field);
+        return failWith(
+            why, Code::WrongType,
+            RobotTemplateTr::tr("\"%1\" must be an object of bit numbers by register").arg(field),
+            field);
     const QJsonObject object = value.toObject();
     for (auto it = object.begin(); it != object.end(); ++it) {
         const Register *reg = table.find(it.key());
         if (!reg || !reg->writable())
             return failWith(why, Code::UnknownKey,
-                            Tr::tr("%1: \"%2\" is no writable register of %3 servos")
+                            RobotTemplateTr::tr("%1: \"%2\" is no writable register of %3 servos")
                                 .arg(field, it.key(), familyName(table.family())),
                             it.key());
         if (std::any_of(std::begin(kFlowOnlyKeys), std::end(kFlowOnlyKeys),
                         [&](const char16_t *key) { return it.key() == QStringView(key); }))
             return failWith(
                 why, Code::BadValue,
-                Tr::tr("%1: \"%2\" is set by its own flow, not by a template").arg(field, it.key()),
+                RobotTemplateTr::tr("%1: \"%2\" is set by its own flow, not by a template")
+                    .arg(field, it.key()),
                 it.key());
         if (!it.value().isArray() || it.value().toArray().isEmpty())
             return failWith(why, Code::WrongType,
-                            Tr::tr("%1: \"%2\" must be a list of bit numbers").arg(field, it.key()),
+                            RobotTemplateTr::tr("%1: \"%2\" must be a list of bit numbers")
+                                .arg(field, it.key()),
                             it.key());
         quint32 mask = 0;
         for (const QJsonValue &bit : it.value().toArray()) {
             if (!isWhole(bit) || bit.toInt() < 0 || bit.toInt() >= reg->size * 8) {
                 failWith(why, Code::BadValue,
-                         Tr::tr("%1: \"%2\" has bits 0 to %3")
+                         RobotTemplateTr::tr("%1: \"%2\" has bits 0 to %3")
                              .arg(field, it.key())
                              .arg(reg->size * 8 - 1),
                          it.key());
@@ -189,39 +198,44 @@ bool readJoint(const QJsonValue &value, const QJsonObject &root, RobotJoint &joi
                util::FileError *why)
 {
     if (!value.isObject())
-        return failWith(why, Code::WrongType, Tr::tr("every joint must be a JSON object"), {});
+        return failWith(why, Code::WrongType,
+                        RobotTemplateTr::tr("every joint must be a JSON object"), {});
     const QJsonObject object = value.toObject();
-    if (const auto unknown = util::firstUnknownKey(
-            object, {kNameKey, kIdKey, kModelKey, kFullTurnKey, kSettingsKey, kClearBitsKey}))
-        return failWith(why, Code::UnknownKey, Tr::tr("unknown entry \"%1\"").arg(*unknown),
-                        *unknown);
-    joint.name = object.value(QLatin1String(kNameKey)).toString();
+    if (const auto unknown = util::firstUnknownKey(object,
+                                                   {kTemplateNameKey, kTemplateIdKey, kModelKey,
+                                                    kFullTurnKey, kSettingsKey, kClearBitsKey}))
+        return failWith(why, Code::UnknownKey,
+                        RobotTemplateTr::tr("unknown entry \"%1\"").arg(*unknown), *unknown);
+    joint.name = object.value(QLatin1String(kTemplateNameKey)).toString();
     if (!isJointName(joint.name))
         return failWith(
             why, Code::BadValue,
-            Tr::tr("\"%1\" must be a name of letters, digits and _ that starts with a letter")
-                .arg(QLatin1String(kNameKey)),
-            QLatin1String(kNameKey));
-    const QJsonValue id = object.value(QLatin1String(kIdKey));
+            RobotTemplateTr::tr(
+                "\"%1\" must be a name of letters, digits and _ that starts with a letter")
+                .arg(QLatin1String(kTemplateNameKey)),
+            QLatin1String(kTemplateNameKey));
+    const QJsonValue id = object.value(QLatin1String(kTemplateIdKey));
     if (!isWhole(id) || id.toInt() < 0 || id.toInt() > kMaxServoId)
         return failWith(why, Code::BadValue,
-                        Tr::tr("\"%1\" must be a servo ID from 0 to %2")
-                            .arg(QLatin1String(kIdKey))
+                        RobotTemplateTr::tr("\"%1\" must be a servo ID from 0 to %2")
+                            .arg(QLatin1String(kTemplateIdKey))
                             .arg(kMaxServoId),
-                        QLatin1String(kIdKey));
+                        QLatin1String(kTemplateIdKey));
     joint.id = id.toInt();
     joint.model = object.value(QLatin1String(kModelKey)).toString();
     const auto model = ModelTable::builtIn().findByName(joint.model);
     if (!model || !model->family)
-        return failWith(why, Code::BadValue,
-                        Tr::tr("\"%1\": \"%2\" is no model with a known register table")
-                            .arg(QLatin1String(kModelKey), joint.model),
-                        QLatin1String(kModelKey));
+        return failWith(
+            why, Code::BadValue,
+            RobotTemplateTr::tr("\"%1\": \"%2\" is no model with a known register table")
+                .arg(QLatin1String(kModelKey), joint.model),
+            QLatin1String(kModelKey));
     const QJsonValue fullTurn = object.value(QLatin1String(kFullTurnKey));
     if (!fullTurn.isUndefined() && !fullTurn.isBool())
-        return failWith(why, Code::WrongType,
-                        Tr::tr("\"%1\" must be true or false").arg(QLatin1String(kFullTurnKey)),
-                        QLatin1String(kFullTurnKey));
+        return failWith(
+            why, Code::WrongType,
+            RobotTemplateTr::tr("\"%1\" must be true or false").arg(QLatin1String(kFullTurnKey)),
+            QLatin1String(kFullTurnKey));
     joint.fullTurn = fullTurn.toBool(false);
     const RegisterTable &table = RegisterTable::forFamily(*model->family);
     return readSettings(root.value(QLatin1String(kSettingsKey)), table, joint.settings, why)
@@ -255,28 +269,30 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
     if (!root)
         return fail(why);
     RobotTemplate robot;
-    robot.name = root->value(QLatin1String(kNameKey)).toString().trimmed();
+    robot.name = root->value(QLatin1String(kTemplateNameKey)).toString().trimmed();
     if (robot.name.isEmpty())
         return failOn(Code::MissingField,
-                      Tr::tr("\"%1\" must be a name for the robot").arg(QLatin1String(kNameKey)),
-                      kNameKey);
-    const QJsonValue baud = root->value(QLatin1String(kBaudKey));
+                      RobotTemplateTr::tr("\"%1\" must be a name for the robot")
+                          .arg(QLatin1String(kTemplateNameKey)),
+                      kTemplateNameKey);
+    const QJsonValue baud = root->value(QLatin1String(kTemplateBaudKey));
     if (!baud.isUndefined()) {
         if (!isWhole(baud) || !baudCode(qint32(baud.toDouble())))
-            return failOn(
-                Code::BadValue,
-                Tr::tr("\"%1\" must be a Feetech baud rate in bps").arg(QLatin1String(kBaudKey)),
-                kBaudKey);
+            return failOn(Code::BadValue,
+                          RobotTemplateTr::tr("\"%1\" must be a Feetech baud rate in bps")
+                              .arg(QLatin1String(kTemplateBaudKey)),
+                          kTemplateBaudKey);
         robot.baud = qint32(baud.toDouble());
     }
     const QJsonArray joints = root->value(QLatin1String(kJointsKey)).toArray();
     if (joints.isEmpty() || joints.size() > kMaxServoId)
         return failOn(Code::MissingField,
-                      Tr::tr("\"%1\" must list the robot's joints").arg(QLatin1String(kJointsKey)),
+                      RobotTemplateTr::tr("\"%1\" must list the robot's joints")
+                          .arg(QLatin1String(kJointsKey)),
                       kJointsKey);
     for (int i = 0; i < joints.size(); ++i) {
         RobotJoint joint;
-        const QString where = Tr::tr("joint %1").arg(i + 1);
+        const QString where = RobotTemplateTr::tr("joint %1").arg(i + 1);
         if (!readJoint(joints.at(i), *root, joint, &why))
             return fail(util::FileError(why.code(),
                                         where
@@ -288,19 +304,21 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
                             .withValue(why.value()));
         for (const RobotJoint &other : std::as_const(robot.joints)) {
             if (other.name == joint.name)
-                return failOn(
-                    Code::Duplicate,
-                    Tr::tr("joint %1: the name \"%2\" is used twice").arg(i + 1).arg(joint.name),
-                    kNameKey);
+                return failOn(Code::Duplicate,
+                              RobotTemplateTr::tr("joint %1: the name \"%2\" is used twice")
+                                  .arg(i + 1)
+                                  .arg(joint.name),
+                              kTemplateNameKey);
             if (other.id == joint.id)
-                return fail(util::FileError(Code::Duplicate,
-                                            Tr::tr("joint %1 (%2): ID %3 is already %4's")
-                                                .arg(i + 1)
-                                                .arg(joint.name)
-                                                .arg(joint.id)
-                                                .arg(other.name))
-                                .withField(QLatin1String(kIdKey))
-                                .withValue(QString::number(joint.id)));
+                return fail(
+                    util::FileError(Code::Duplicate,
+                                    RobotTemplateTr::tr("joint %1 (%2): ID %3 is already %4's")
+                                        .arg(i + 1)
+                                        .arg(joint.name)
+                                        .arg(joint.id)
+                                        .arg(other.name))
+                        .withField(QLatin1String(kTemplateIdKey))
+                        .withValue(QString::number(joint.id)));
         }
         robot.joints.append(joint);
     }
@@ -338,8 +356,8 @@ QByteArray robotTemplateToJson(const RobotTemplate &robot)
         QJsonObject settings;
         for (auto it = joint.settings.begin(); it != joint.settings.end(); ++it)
             settings.insert(it.key(), it.value());
-        QJsonObject written {{QLatin1String(kNameKey), joint.name},
-                             {QLatin1String(kIdKey), joint.id},
+        QJsonObject written {{QLatin1String(kTemplateNameKey), joint.name},
+                             {QLatin1String(kTemplateIdKey), joint.id},
                              {QLatin1String(kModelKey), joint.model},
                              {QLatin1String(kFullTurnKey), joint.fullTurn},
                              {QLatin1String(kSettingsKey), settings}};
@@ -349,8 +367,8 @@ QByteArray robotTemplateToJson(const RobotTemplate &robot)
     }
     const QJsonObject root {{QLatin1String(util::kFormatKey), QLatin1String(kMarker)},
                             {QLatin1String(util::kVersionKey), kVersion},
-                            {QLatin1String(kNameKey), robot.name},
-                            {QLatin1String(kBaudKey), robot.baud},
+                            {QLatin1String(kTemplateNameKey), robot.name},
+                            {QLatin1String(kTemplateBaudKey), robot.baud},
                             {QLatin1String(kJointsKey), joints}};
     return QJsonDocument(root).toJson();
 }
@@ -377,8 +395,9 @@ const QVector<RobotTemplate> &builtInRobotTemplates()
 
 std::optional<RobotTemplate> loadRobotTemplate(const QString &path, util::FileError *error)
 {
-    const auto bytes = util::readFile(path, util::kMaxJsonFileBytes,
-                                      Tr::tr("the file is too large for a robot template"), error);
+    const auto bytes =
+        util::readFile(path, util::kMaxJsonFileBytes,
+                       RobotTemplateTr::tr("the file is too large for a robot template"), error);
     if (!bytes)
         return std::nullopt;
     return robotTemplateFromJson(*bytes, path, error);

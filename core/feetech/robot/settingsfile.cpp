@@ -15,7 +15,7 @@
 
 namespace {
 
-struct Tr
+struct SettingsFileTr
 {
     Q_DECLARE_TR_FUNCTIONS(SettingsFile)
 };
@@ -34,10 +34,11 @@ const QString kOffsetKey = QStringLiteral("position_offset");
 std::optional<SettingsFile> SettingsFile::load(const QString &path, util::FileError *error)
 {
     const QString shown = QDir::toNativeSeparators(path);
-    const auto read = util::readFile(path, util::kMaxJsonFileBytes,
-                                     Tr::tr("the file is too large for a profile or a robot "
-                                            "template"),
-                                     error);
+    const auto read =
+        util::readFile(path, util::kMaxJsonFileBytes,
+                       SettingsFileTr::tr("the file is too large for a profile or a robot "
+                                          "template"),
+                       error);
     if (!read)
         return std::nullopt;
     return fromJson(*read, shown, error);
@@ -85,9 +86,10 @@ std::optional<QVector<model::WriteItem>> SettingsFile::valuesFor(const ServoInfo
                                                                  QString *error) const
 {
     if (!servo.hasTable()) {
-        *error = Tr::tr("servo %1 is of an unknown model (%2); nothing is written to it")
-                     .arg(servo.id)
-                     .arg(servo.model.name);
+        *error =
+            SettingsFileTr::tr("servo %1 is of an unknown model (%2); nothing is written to it")
+                .arg(servo.id)
+                .arg(servo.model.name);
         return std::nullopt;
     }
     QVector<model::WriteItem> values;
@@ -98,12 +100,13 @@ std::optional<QVector<model::WriteItem>> SettingsFile::valuesFor(const ServoInfo
                 joint = &candidate;
         }
         if (!joint) {
-            *error = Tr::tr("%1 has no joint with ID %2").arg(m_robot->name).arg(servo.id);
+            *error =
+                SettingsFileTr::tr("%1 has no joint with ID %2").arg(m_robot->name).arg(servo.id);
             return std::nullopt;
         }
         const auto model = ModelTable::builtIn().findByName(joint->model);
         if (!model || model->major != servo.model.major || model->minor != servo.model.minor) {
-            *error = Tr::tr("joint %1 of %2 is a %3, but servo %4 is a %5")
+            *error = SettingsFileTr::tr("joint %1 of %2 is a %3, but servo %4 is a %5")
                          .arg(joint->name, m_robot->name, joint->model)
                          .arg(servo.id)
                          .arg(servo.model.name);
@@ -117,8 +120,10 @@ std::optional<QVector<model::WriteItem>> SettingsFile::valuesFor(const ServoInfo
     util::FileError why;
     const auto loaded = profile::parse(m_profile, family, profileDefinitions(servo.table()), &why);
     if (!loaded) {
-        *error =
-            Tr::tr("%1 does not fit servo %2: %3").arg(m_source).arg(servo.id).arg(why.describe());
+        *error = SettingsFileTr::tr("%1 does not fit servo %2: %3")
+                     .arg(m_source)
+                     .arg(servo.id)
+                     .arg(why.describe());
         return std::nullopt;
     }
     for (const profile::ProfileValue &value : loaded->values)
@@ -152,8 +157,9 @@ QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &c
     const auto off = servo.hasTable() ? servo.table().torqueValue(TorqueMode::Off) : std::nullopt;
     if (!moves || (torque && off && *torque == *off))
         return {};
-    return Tr::tr("torque is on: switch it off before changing the position offset, limits or "
-                  "phase");
+    return SettingsFileTr::tr(
+        "torque is on: switch it off before changing the position offset, limits or "
+        "phase");
 }
 
 QVector<model::WriteItem>
@@ -196,8 +202,9 @@ QString leftOutNote(const QVector<ProgramOutcome> &outcomes)
     }
     if (keys.isEmpty())
         return {};
-    return Tr::tr("Not copied from the profile: %1 (each servo's own calibration, not a setting "
-                  "to copy; use a robot template or Load calibration for it).")
+    return SettingsFileTr::tr(
+               "Not copied from the profile: %1 (each servo's own calibration, not a setting "
+               "to copy; use a robot template or Load calibration for it).")
         .arg(keys.join(QStringLiteral(", ")));
 }
 
@@ -218,13 +225,13 @@ QString statusText(ProgramOutcome::Status status)
 {
     switch (status) {
     case ProgramOutcome::Status::Ok:
-        return Tr::tr("written and verified");
+        return SettingsFileTr::tr("written and verified");
     case ProgramOutcome::Status::Unchanged:
-        return Tr::tr("unchanged");
+        return SettingsFileTr::tr("unchanged");
     case ProgramOutcome::Status::Failed:
         break;
     }
-    return Tr::tr("failed");
+    return SettingsFileTr::tr("failed");
 }
 
 } // namespace feetech

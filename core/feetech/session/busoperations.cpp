@@ -5,6 +5,7 @@
 #include "busexchange.h"
 #include "busscan.h"
 #include "feetechdescription.h"
+#include "feetechsessiontr.h"
 #include "guardkeeper.h"
 #include "guidedflows.h"
 #include "healthcheck.h"
@@ -22,11 +23,6 @@
 #include <memory>
 
 namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
 
 // A hand-built frame whose answers cannot be named in advance (broadcast, SYNC READ) is listened
 // to this long; what comes back shows in the packet log.
@@ -77,9 +73,10 @@ Step confirmTorqueOff(OperationContext &context, const ServoInfo &servo,
         const auto off =
             servo.hasTable() ? servo.table().torqueValue(TorqueMode::Off) : std::nullopt;
         if (!torque || !off) {
-            context.bus().fail(next, OperationFailure::Unsupported,
-                               Tr::tr("%1 is of an unknown model; its torque was not read back.")
-                                   .arg(feetech::servoName(servo)));
+            context.bus().fail(
+                next, OperationFailure::Unsupported,
+                FeetechSessionTr::tr("%1 is of an unknown model; its torque was not read back.")
+                    .arg(feetech::servoName(servo)));
             return;
         }
         Exchange ask;
@@ -93,16 +90,16 @@ Step confirmTorqueOff(OperationContext &context, const ServoInfo &servo,
             [&context, servo, confirmed, next, address, offValue](
                 const seriallink::TransactionResult &answer, const std::optional<Packet> &reply) {
                 if (!reply) {
-                    context.bus().fail(
-                        next, failureKind(answer),
-                        Tr::tr("%1 did not confirm (no reply).").arg(feetech::servoName(servo)));
+                    context.bus().fail(next, failureKind(answer),
+                                       FeetechSessionTr::tr("%1 did not confirm (no reply).")
+                                           .arg(feetech::servoName(servo)));
                     return;
                 }
                 context.noteMemory(servo.id, servo.baud, address, reply->parameters, reply->code);
                 if (quint8(reply->parameters.at(0)) != offValue) {
-                    context.bus().fail(
-                        next, OperationFailure::NotVerified,
-                        Tr::tr("%1 still has torque on.").arg(feetech::servoName(servo)));
+                    context.bus().fail(next, OperationFailure::NotVerified,
+                                       FeetechSessionTr::tr("%1 still has torque on.")
+                                           .arg(feetech::servoName(servo)));
                     return;
                 }
                 ++*confirmed;
@@ -136,15 +133,16 @@ void checkNextServo(OperationContext &context, QVector<ServoInfo> servos, int do
     const int total = int(servos.size());
     if (done >= total || context.health().isCancelled()) {
         const bool stopped = done < total;
-        OperationResult result {Operation::HealthCheck,
-                                !stopped,
-                                stopped ? Tr::tr("The health check was stopped after %1 of %n "
-                                                 "servo(s).",
-                                                 nullptr, total)
-                                              .arg(done)
-                                        : Tr::tr("%n servo(s) checked.", nullptr, total),
-                                {},
-                                {}};
+        OperationResult result {
+            Operation::HealthCheck,
+            !stopped,
+            stopped ? FeetechSessionTr::tr("The health check was stopped after %1 of %n "
+                                           "servo(s).",
+                                           nullptr, total)
+                          .arg(done)
+                    : FeetechSessionTr::tr("%n servo(s) checked.", nullptr, total),
+            {},
+            {}};
         if (stopped)
             result.failure = OperationFailure::Stopped;
         context.finish(result);
@@ -171,7 +169,7 @@ void readNextSettings(OperationContext &context, QVector<ServoInfo> servos, QStr
     if (done >= total) {
         context.finish({Operation::CheckSettings,
                         true,
-                        Tr::tr("The settings of %n servo(s) read.", nullptr, total),
+                        FeetechSessionTr::tr("The settings of %n servo(s) read.", nullptr, total),
                         {},
                         {}});
         return;
@@ -198,13 +196,13 @@ void fixNextServo(OperationContext &context, QVector<QVector<SettingsFinding>> s
             std::count_if(outcomes.begin(), outcomes.end(),
                           [](const SettingsFixOutcome &outcome) { return outcome.verified(); }));
         const bool ok = verified == outcomes.size();
-        OperationResult result {
-            Operation::FixSettings,
-            ok,
-            Tr::tr("%1 of %n setting(s) fixed and verified.", nullptr, int(outcomes.size()))
-                .arg(verified),
-            servos.isEmpty() ? ServoInfo {} : servos.first().first().servo,
-            {}};
+        OperationResult result {Operation::FixSettings,
+                                ok,
+                                FeetechSessionTr::tr("%1 of %n setting(s) fixed and verified.",
+                                                     nullptr, int(outcomes.size()))
+                                    .arg(verified),
+                                servos.isEmpty() ? ServoInfo {} : servos.first().first().servo,
+                                {}};
         if (!ok)
             result.failure = OperationFailure::NotVerified;
         result.writesSent = true;
@@ -249,10 +247,11 @@ BusOperation ping(quint8 id, qint32 baud)
                     result.ok = reply.has_value();
                     result.failure = reply ? OperationFailure::None : failureKind(answer);
                     result.latency = answer.latency;
-                    result.message = reply ? Tr::tr("Servo %1 answers.").arg(result.servo.id)
-                                           : Tr::tr("Servo %1 does not answer: %2")
-                                                 .arg(result.servo.id)
-                                                 .arg(failureText(answer));
+                    result.message = reply
+                        ? FeetechSessionTr::tr("Servo %1 answers.").arg(result.servo.id)
+                        : FeetechSessionTr::tr("Servo %1 does not answer: %2")
+                              .arg(result.servo.id)
+                              .arg(failureText(answer));
                     if (reply)
                         context.noteStatus(result.servo.id, result.servo.baud, reply->code);
                     context.finish(result);
@@ -282,8 +281,9 @@ BusOperation checkSharedId(const ServoInfo &servo)
                                    : OperationFailure::NoAnswer;
                                result.message = verdict == SharedIdVerdict::Failed
                                    ? failureText(last)
-                                   : Tr::tr("%1 stopped answering: check the power and the cable, "
-                                            "then look again.")
+                                   : FeetechSessionTr::tr(
+                                         "%1 stopped answering: check the power and the cable, "
+                                         "then look again.")
                                          .arg(servoName(servo));
                            }
                            context.finish(result);
@@ -305,12 +305,13 @@ BusOperation read(const ServoInfo &servo, const QVector<Block> &blocks, ReadSour
             steps.push_back(context.bus().readBlocks(target, toRead, source));
             context.bus().runSteps(
                 std::move(steps), [&context, servo](bool ok, const QString &message) {
-                    OperationResult result {Operation::Read,
-                                            ok,
-                                            ok ? Tr::tr("Read %1.").arg(feetech::servoName(servo))
-                                               : message,
-                                            servo,
-                                            {}};
+                    OperationResult result {
+                        Operation::Read,
+                        ok,
+                        ok ? FeetechSessionTr::tr("Read %1.").arg(feetech::servoName(servo))
+                           : message,
+                        servo,
+                        {}};
                     if (!ok)
                         result.failure = context.bus().stepFailure();
                     context.finish(result);
@@ -390,21 +391,22 @@ BusOperation clearStatus(const ServoInfo &servo)
 {
     return operation(Operation::ClearStatus, [servo](OperationContext &context) {
         auto target = std::make_shared<ServoInfo>(servo);
-        std::vector<Step> steps {context.bus().setBaud(servo.baud),
-                                 context.bus().instruction(servo.id, feetech::reset(servo.id),
-                                                           servo.repliesToWrites(),
-                                                           Tr::tr("Clearing the status"))};
+        std::vector<Step> steps {
+            context.bus().setBaud(servo.baud),
+            context.bus().instruction(servo.id, feetech::reset(servo.id), servo.repliesToWrites(),
+                                      FeetechSessionTr::tr("Clearing the status"))};
         if (const Register *status = registerAt(servo, u"status"))
             steps.push_back(
                 context.bus().read(target, status->address, status->size, ReadSource::ReadBack));
         context.bus().runSteps(
             std::move(steps), [&context, servo](bool ok, const QString &message) {
-                OperationResult result {Operation::ClearStatus,
-                                        ok,
-                                        ok ? Tr::tr("Status of servo %1 cleared.").arg(servo.id)
-                                           : message,
-                                        servo,
-                                        {}};
+                OperationResult result {
+                    Operation::ClearStatus,
+                    ok,
+                    ok ? FeetechSessionTr::tr("Status of servo %1 cleared.").arg(servo.id)
+                       : message,
+                    servo,
+                    {}};
                 if (!ok)
                     result.failure = context.bus().stepFailure();
                 context.finish(result);
@@ -417,11 +419,12 @@ BusOperation lockEeprom(const ServoInfo &servo)
     return operation(Operation::LockEeprom, [servo](OperationContext &context) {
         const Register *lock = registerAt(servo, u"lock");
         if (!lock) {
-            OperationResult result {Operation::LockEeprom,
-                                    false,
-                                    Tr::tr("The servo's model has no known EEPROM lock register."),
-                                    servo,
-                                    {}};
+            OperationResult result {
+                Operation::LockEeprom,
+                false,
+                FeetechSessionTr::tr("The servo's model has no known EEPROM lock register."),
+                servo,
+                {}};
             result.failure = OperationFailure::Unsupported;
             context.finish(result);
             return;
@@ -441,9 +444,11 @@ BusOperation lockEeprom(const ServoInfo &servo)
                 const bool locked = ok && readBack->has_value() && **readBack != 0;
                 QString text = message;
                 if (locked)
-                    text = Tr::tr("Servo %1's EEPROM is locked (read back).").arg(servo.id);
+                    text = FeetechSessionTr::tr("Servo %1's EEPROM is locked (read back).")
+                               .arg(servo.id);
                 else if (ok)
-                    text = Tr::tr("Servo %1 still reads back unlocked after the lock was written.")
+                    text = FeetechSessionTr::tr(
+                               "Servo %1 still reads back unlocked after the lock was written.")
                                .arg(servo.id);
                 OperationResult result {Operation::LockEeprom, locked, text, servo, {}};
                 if (!ok)
@@ -488,15 +493,15 @@ BusOperation sendPacket(const QByteArray &frame, qint32 baud, std::optional<quin
                                    result.message = failureText(answer);
                                } else if (!replyId) {
                                    result.ok = true;
-                                   result.message =
-                                       Tr::tr("Sent; its answers, if any, are in the packet log.");
+                                   result.message = FeetechSessionTr::tr(
+                                       "Sent; its answers, if any, are in the packet log.");
                                } else {
                                    result.ok = reply.has_value();
                                    if (!reply)
                                        result.failure = failureKind(answer);
                                    result.message = reply
-                                       ? Tr::tr("Servo %1 answered.").arg(*replyId)
-                                       : Tr::tr("Sent; servo %1 did not answer: %2")
+                                       ? FeetechSessionTr::tr("Servo %1 answered.").arg(*replyId)
+                                       : FeetechSessionTr::tr("Sent; servo %1 did not answer: %2")
                                              .arg(*replyId)
                                              .arg(failureText(answer));
                                }
@@ -546,9 +551,9 @@ BusOperation torqueOffAll(const QVector<qint32> &bauds, const QVector<ServoInfo>
         for (const qint32 baud : bauds) {
             steps.push_back(tolerant(context.bus().setBaud(baud)));
             for (const auto &[address, value] : torqueOffWrites(servos, baud))
-                steps.push_back(tolerant(
-                    context.bus().write(kBroadcastId, address, QByteArray(1, char(value)), false,
-                                        Tr::tr("Torque off at %1").arg(baudText(baud)))));
+                steps.push_back(tolerant(context.bus().write(
+                    kBroadcastId, address, QByteArray(1, char(value)), false,
+                    FeetechSessionTr::tr("Torque off at %1").arg(baudText(baud)))));
             for (const ServoInfo &servo : servos) {
                 if (servo.baud == baud)
                     steps.push_back(tolerant(confirmTorqueOff(context, servo, confirmed)));
@@ -557,9 +562,10 @@ BusOperation torqueOffAll(const QVector<qint32> &bauds, const QVector<ServoInfo>
         context.bus().runSteps(
             std::move(steps), [&context, problems, confirmed](bool, const QString &) {
                 const QString message = problems->isEmpty()
-                    ? Tr::tr("Torque off: sent to the whole bus; %n servo(s) confirmed it.",
-                             nullptr, *confirmed)
-                    : Tr::tr("Torque off was sent to the whole bus, but: %1")
+                    ? FeetechSessionTr::tr(
+                        "Torque off: sent to the whole bus; %n servo(s) confirmed it.", nullptr,
+                        *confirmed)
+                    : FeetechSessionTr::tr("Torque off was sent to the whole bus, but: %1")
                           .arg(problems->join(QLatin1Char(' ')));
                 OperationResult result {Operation::TorqueOff, problems->isEmpty(), message, {}, {}};
                 // Sent to the whole bus either way: what failed is the confirmation.
@@ -580,28 +586,31 @@ BusOperation syncWrite(qint32 baud, int address, int length, const QVector<SyncW
             context.guard().noteSyncWrite(baud, address, entries);
             const auto frame = feetech::syncWrite(quint8(address), quint8(length), entries);
             if (!frame) {
-                OperationResult result {Operation::SyncWrite,
-                                        false,
-                                        Tr::tr("The SYNC WRITE does not fit in one packet."),
-                                        {},
-                                        {}};
+                OperationResult result {
+                    Operation::SyncWrite,
+                    false,
+                    FeetechSessionTr::tr("The SYNC WRITE does not fit in one packet."),
+                    {},
+                    {}};
                 result.failure = OperationFailure::InvalidRequest;
                 context.finish(result);
                 return;
             }
             std::vector<Step> steps {
                 context.bus().setBaud(baud),
-                context.bus().instruction(kBroadcastId, *frame, false,
-                                          Tr::tr("SYNC WRITE at %1").arg(baudText(baud)))};
+                context.bus().instruction(
+                    kBroadcastId, *frame, false,
+                    FeetechSessionTr::tr("SYNC WRITE at %1").arg(baudText(baud)))};
             context.bus().runSteps(
                 std::move(steps), [&context, entries](bool ok, const QString &message) {
-                    OperationResult result {Operation::SyncWrite,
-                                            ok,
-                                            ok ? Tr::tr("Sent to %n servo(s) in one SYNC WRITE.",
-                                                        nullptr, int(entries.size()))
-                                               : message,
-                                            {},
-                                            {}};
+                    OperationResult result {
+                        Operation::SyncWrite,
+                        ok,
+                        ok ? FeetechSessionTr::tr("Sent to %n servo(s) in one SYNC WRITE.", nullptr,
+                                                  int(entries.size()))
+                           : message,
+                        {},
+                        {}};
                     if (!ok)
                         result.failure = context.bus().stepFailure();
                     context.finish(result);
@@ -631,11 +640,13 @@ BusOperation recoverOverload(const ServoInfo &servo, bool checkOnly)
                         result.message = powerCycleSteps(servo).join(QLatin1Char('\n'));
                     } else {
                         result.message = checkOnly
-                            ? Tr::tr("Servo ID %1: the overload bit is clear; switch its torque "
-                                     "on when you are ready.")
+                            ? FeetechSessionTr::tr(
+                                  "Servo ID %1: the overload bit is clear; switch its torque "
+                                  "on when you are ready.")
                                   .arg(servo.id)
-                            : Tr::tr("Servo ID %1 recovered: the overload bit is clear and it "
-                                     "holds where it stands with torque on.")
+                            : FeetechSessionTr::tr(
+                                  "Servo ID %1 recovered: the overload bit is clear and it "
+                                  "holds where it stands with torque on.")
                                   .arg(servo.id);
                         if (!checkOnly) {
                             const Register *torque = registerAt(servo, u"torque_enable");
@@ -708,7 +719,8 @@ BusOperation checkJoints(qint32 baud, const QVector<JointCheck> &joints)
                     OperationResult finished {
                         Operation::CheckJoints,
                         true,
-                        Tr::tr("%1 of %n joint(s) already set up.", nullptr, int(checked.size()))
+                        FeetechSessionTr::tr("%1 of %n joint(s) already set up.", nullptr,
+                                             int(checked.size()))
                             .arg(done),
                         {},
                         {}};

@@ -5,6 +5,7 @@
 #include "feetechsession_p.h"
 
 #include "feetechdescription.h"
+#include "feetechsessiontr.h"
 #include "linksession.h"
 
 #include <QCoreApplication>
@@ -13,15 +14,6 @@
 
 #include <algorithm>
 #include <memory>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(FeetechSession)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -95,9 +87,10 @@ Session::Session(const SessionTiming &timing, QObject *parent)
     d->link->setLinkDownHook(
         [this](const QString &message, seriallink::Failure) { onLinkDown(message); });
     d->link->setReconnectedHook([this] {
-        d->link->setState(seriallink::ConnectionState::Connected,
-                          Tr::tr("%1 is back. Scan again if servos were changed while it was away.")
-                              .arg(d->link->status().portName));
+        d->link->setState(
+            seriallink::ConnectionState::Connected,
+            FeetechSessionTr::tr("%1 is back. Scan again if servos were changed while it was away.")
+                .arg(d->link->status().portName));
     });
     connect(d->link, &seriallink::LinkSession::statusChanged, this, &Session::statusChanged);
     connect(d->link, &seriallink::LinkSession::packetLogged, this, &Session::packetLogged);
@@ -175,11 +168,13 @@ void Session::connectShare()
                 }
             });
     connect(d->share, &share::BusShare::alertRaised, this, [this](const share::ShareAlert &alert) {
-        d->link->logNote(Tr::tr("Shared bus alert at ID %1: %2").arg(alert.id).arg(alert.message),
-                         true);
+        d->link->logNote(
+            FeetechSessionTr::tr("Shared bus alert at ID %1: %2").arg(alert.id).arg(alert.message),
+            true);
     });
-    connect(d->share, &share::BusShare::noted, this,
-            [this](const QString &text) { d->link->logNote(Tr::tr("Shared bus: %1").arg(text)); });
+    connect(d->share, &share::BusShare::noted, this, [this](const QString &text) {
+        d->link->logNote(FeetechSessionTr::tr("Shared bus: %1").arg(text));
+    });
     connect(d->share, &share::BusShare::sharingChanged, this, [this](bool sharing) {
         if (sharing) {
             d->shareLog = {};
@@ -424,18 +419,19 @@ void Session::startQueuedOperation()
         if (kind == Operation::Scan || kind == Operation::Guard) {
             d->running = false;
             if (kind == Operation::Scan)
-                emit scanFinished(false, Tr::tr("Not connected."));
+                emit scanFinished(false, FeetechSessionTr::tr("Not connected."));
             QMetaObject::invokeMethod(this, &Session::startNextOperation, Qt::QueuedConnection);
         } else {
-            OperationResult result {kind, false, Tr::tr("Not connected."), {}, {}};
+            OperationResult result {kind, false, FeetechSessionTr::tr("Not connected."), {}, {}};
             result.failure = OperationFailure::NotConnected;
             finishOperation(result);
         }
         return;
     }
     if (d->share->isSharing() && changesPortRate(kind)) {
-        const QString why = Tr::tr("Not while the bus is shared with another program: this would "
-                                   "change the port's rate under it. Stop sharing first.");
+        const QString why =
+            FeetechSessionTr::tr("Not while the bus is shared with another program: this would "
+                                 "change the port's rate under it. Stop sharing first.");
         if (kind == Operation::Scan) {
             onScanFinished(false, why);
             return;
@@ -446,11 +442,12 @@ void Session::startQueuedOperation()
         return;
     }
     if (d->current.operation.powersServos && d->current.epoch != d->torqueOffEpoch) {
-        OperationResult result {kind,
-                                false,
-                                Tr::tr("Not sent: all torque off was asked for after this write."),
-                                {},
-                                {}};
+        OperationResult result {
+            kind,
+            false,
+            FeetechSessionTr::tr("Not sent: all torque off was asked for after this write."),
+            {},
+            {}};
         result.failure = OperationFailure::AfterTorqueOff;
         finishOperation(result);
         return;

@@ -1,22 +1,13 @@
 // Loading and validating the model table (resources/feetech/models.json), and what it says.
 #include "modeltable.h"
 
+#include "registertabletr.h"
 #include "tablejson.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QSet>
-
-namespace {
-
-// The context the model table's sentences have always been translated in.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(RegisterTable)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -47,8 +38,9 @@ std::optional<ModelTable> ModelTable::fromJson(const QByteArray &json, const QSt
         const int major = it.key().toInt(&ok);
         const auto family = familyFromKey(it.value().toString());
         if (!ok || major < 0 || major > 255 || !family) {
-            problems.fail(Tr::tr("families_by_major: \"%1\" is not a major number with a family")
-                              .arg(it.key()));
+            problems.fail(
+                RegisterTableTr::tr("families_by_major: \"%1\" is not a major number with a family")
+                    .arg(it.key()));
             return finish();
         }
         table.m_familiesByMajor.append({major, *family});
@@ -63,8 +55,9 @@ std::optional<ModelTable> ModelTable::fromJson(const QByteArray &json, const QSt
         if (!isWholeNumber(major) || !isWholeNumber(minor) || major.toInt() < 0
             || major.toInt() > 255 || minor.toInt() < 0 || minor.toInt() > 255
             || model.name.isEmpty()) {
-            problems.fail(Tr::tr("model \"%1\": needs a name and major and minor numbers 0-255")
-                              .arg(model.name));
+            problems.fail(
+                RegisterTableTr::tr("model \"%1\": needs a name and major and minor numbers 0-255")
+                    .arg(model.name));
             return finish();
         }
         model.major = major.toInt();
@@ -73,12 +66,14 @@ std::optional<ModelTable> ModelTable::fromJson(const QByteArray &json, const QSt
         if (!family.isNull()) {
             model.family = familyFromKey(family.toString());
             if (!model.family) {
-                problems.fail(Tr::tr("model \"%1\": unknown family").arg(model.name));
+                problems.fail(RegisterTableTr::tr("model \"%1\": unknown family").arg(model.name));
                 return finish();
             }
         }
         if (seen.contains(model.major * 256 + model.minor)) {
-            problems.fail(Tr::tr("model %1/%2 is listed twice").arg(model.major).arg(model.minor));
+            problems.fail(RegisterTableTr::tr("model %1/%2 is listed twice")
+                              .arg(model.major)
+                              .arg(model.minor));
             return finish();
         }
         seen.insert(model.major * 256 + model.minor);
@@ -112,8 +107,11 @@ ModelInfo ModelTable::identify(quint8 major, quint8 minor) const
             unknown.family = family;
     }
     unknown.name = unknown.family
-        ? Tr::tr("%1 (model %2/%3)").arg(familyName(*unknown.family)).arg(major).arg(minor)
-        : Tr::tr("Unknown model %1/%2").arg(major).arg(minor);
+        ? RegisterTableTr::tr("%1 (model %2/%3)")
+              .arg(familyName(*unknown.family))
+              .arg(major)
+              .arg(minor)
+        : RegisterTableTr::tr("Unknown model %1/%2").arg(major).arg(minor);
     return unknown;
 }
 

@@ -3,6 +3,7 @@
 #include "registertable.h"
 
 #include "modeltable.h"
+#include "registertabletr.h"
 #include "tablejson.h"
 
 #include <QCoreApplication>
@@ -15,16 +16,6 @@
 
 #include <cmath>
 #include <map>
-
-namespace {
-
-// Translation context for the messages of this file.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(RegisterTable)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -81,7 +72,7 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
     const QJsonValue address = object.value(QLatin1String("address"));
     reg.key = object.value(QLatin1String("key")).toString();
     const QString where =
-        Tr::tr("register \"%1\" (address %2)")
+        RegisterTableTr::tr("register \"%1\" (address %2)")
             .arg(reg.key,
                  address.isDouble() ? QString::number(address.toInt()) : QStringLiteral("?"));
     const auto fail = [&](const QString &what) {
@@ -90,22 +81,22 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
 
     for (auto it = object.begin(); it != object.end(); ++it) {
         if (!kKnownFields.contains(it.key()))
-            return fail(Tr::tr("unknown field \"%1\"").arg(it.key()));
+            return fail(RegisterTableTr::tr("unknown field \"%1\"").arg(it.key()));
     }
     if (!kKeyPattern.match(reg.key).hasMatch())
-        return fail(Tr::tr("the key must be snake_case"));
+        return fail(RegisterTableTr::tr("the key must be snake_case"));
     if (!isWholeNumber(address) || address.toInt() < 0 || address.toInt() > 255)
-        return fail(Tr::tr("the address must be a whole number from 0 to 255"));
+        return fail(RegisterTableTr::tr("the address must be a whole number from 0 to 255"));
     reg.address = address.toInt();
     const QJsonValue size = object.value(QLatin1String("size"));
     if (!isWholeNumber(size) || (size.toInt() != 1 && size.toInt() != 2))
-        return fail(Tr::tr("the size must be 1 or 2 bytes"));
+        return fail(RegisterTableTr::tr("the size must be 1 or 2 bytes"));
     reg.size = size.toInt();
     if (reg.end() > 256)
-        return fail(Tr::tr("the register runs past address 255"));
+        return fail(RegisterTableTr::tr("the register runs past address 255"));
     reg.label = object.value(QLatin1String("label")).toString();
     if (reg.label.isEmpty())
-        return fail(Tr::tr("the label is missing"));
+        return fail(RegisterTableTr::tr("the label is missing"));
 
     const QString storage = object.value(QLatin1String("storage")).toString();
     if (storage == QLatin1String("eeprom"))
@@ -113,28 +104,28 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
     else if (storage == QLatin1String("ram"))
         reg.storage = Storage::Ram;
     else
-        return fail(Tr::tr("storage must be \"eeprom\" or \"ram\""));
+        return fail(RegisterTableTr::tr("storage must be \"eeprom\" or \"ram\""));
     const QString access = object.value(QLatin1String("access")).toString();
     if (access == QLatin1String("ro"))
         reg.access = Access::ReadOnly;
     else if (access == QLatin1String("rw"))
         reg.access = Access::ReadWrite;
     else
-        return fail(Tr::tr("access must be \"ro\" or \"rw\""));
+        return fail(RegisterTableTr::tr("access must be \"ro\" or \"rw\""));
 
     const QJsonValue unit = object.value(QLatin1String("unit"));
     if (!unit.isUndefined() && !unit.isString())
-        return fail(Tr::tr("the unit must be a string"));
+        return fail(RegisterTableTr::tr("the unit must be a string"));
     reg.unit = unit.toString();
     const QJsonValue scale = object.value(QLatin1String("scale"));
     if (!scale.isUndefined() && (!scale.isDouble() || scale.toDouble() <= 0))
-        return fail(Tr::tr("the scale must be a positive number"));
+        return fail(RegisterTableTr::tr("the scale must be a positive number"));
     reg.scale = scale.isUndefined() ? 1.0 : scale.toDouble();
 
     const QJsonValue signBit = object.value(QLatin1String("sign_bit"));
     if (!signBit.isUndefined() && !signBit.isNull()) {
         if (!isWholeNumber(signBit) || signBit.toInt() < 1 || signBit.toInt() >= reg.size * 8)
-            return fail(Tr::tr("the sign bit must lie inside the register"));
+            return fail(RegisterTableTr::tr("the sign bit must lie inside the register"));
         reg.signBit = signBit.toInt();
     }
     const ValueFormat format {reg.size, order, reg.signBit};
@@ -145,13 +136,13 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
     const QJsonValue minimum = object.value(QLatin1String("min"));
     const QJsonValue maximum = object.value(QLatin1String("max"));
     if (!isWholeNumber(minimum) || !isWholeNumber(maximum))
-        return fail(Tr::tr("min and max must be whole numbers"));
+        return fail(RegisterTableTr::tr("min and max must be whole numbers"));
     reg.minimum = minimum.toInt();
     reg.maximum = maximum.toInt();
     if (reg.minimum > reg.maximum)
-        return fail(Tr::tr("min is greater than max"));
+        return fail(RegisterTableTr::tr("min is greater than max"));
     if (!fits(reg.minimum) || !fits(reg.maximum))
-        return fail(Tr::tr("the range %1..%2 does not fit a %3-byte register")
+        return fail(RegisterTableTr::tr("the range %1..%2 does not fit a %3-byte register")
                         .arg(reg.minimum)
                         .arg(reg.maximum)
                         .arg(reg.size));
@@ -160,7 +151,7 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
         // min and max already fit the register, so this also checks the default fits it.
         if (!isWholeNumber(defaultValue) || defaultValue.toInt() < reg.minimum
             || defaultValue.toInt() > reg.maximum)
-            return fail(Tr::tr("the default does not fit the register"));
+            return fail(RegisterTableTr::tr("the default does not fit the register"));
         reg.defaultValue = defaultValue.toInt();
     }
 
@@ -169,7 +160,8 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
         const QJsonValue value = choice.value(QLatin1String("value"));
         const QString label = choice.value(QLatin1String("label")).toString();
         if (!isWholeNumber(value) || !fits(value.toInt()) || label.isEmpty())
-            return fail(Tr::tr("a choice needs a value that fits the register and a label"));
+            return fail(
+                RegisterTableTr::tr("a choice needs a value that fits the register and a label"));
         reg.choices.append({value.toInt(), label});
     }
     for (const QJsonValue &entry : object.value(QLatin1String("bits")).toArray()) {
@@ -178,7 +170,8 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
         const QString label = bit.value(QLatin1String("label")).toString();
         if (!isWholeNumber(index) || index.toInt() < 0 || index.toInt() >= reg.size * 8
             || label.isEmpty())
-            return fail(Tr::tr("a bit needs an index inside the register and a label"));
+            return fail(
+                RegisterTableTr::tr("a bit needs an index inside the register and a label"));
         reg.bits.append({index.toInt(), label});
     }
     reg.note = object.value(QLatin1String("note")).toString();
@@ -203,8 +196,8 @@ std::optional<RegisterTable> RegisterTable::fromJson(const QByteArray &json, con
     RegisterTable table;
     const auto family = familyFromKey(root->value(QLatin1String("family")).toString());
     if (!family) {
-        problems.fail(
-            Tr::tr("unknown family \"%1\"").arg(root->value(QLatin1String("family")).toString()));
+        problems.fail(RegisterTableTr::tr("unknown family \"%1\"")
+                          .arg(root->value(QLatin1String("family")).toString()));
         return finish();
     }
     table.m_family = *family;
@@ -215,26 +208,26 @@ std::optional<RegisterTable> RegisterTable::fromJson(const QByteArray &json, con
     } else if (order == QLatin1String("big")) {
         table.m_byteOrder = ByteOrder::Big;
     } else {
-        problems.fail(Tr::tr("byte_order must be \"little\" or \"big\""));
+        problems.fail(RegisterTableTr::tr("byte_order must be \"little\" or \"big\""));
         return finish();
     }
 
     const QJsonValue registers = root->value(QLatin1String("registers"));
     if (!registers.isArray() || registers.toArray().isEmpty()) {
-        problems.fail(Tr::tr("there are no registers"));
+        problems.fail(RegisterTableTr::tr("there are no registers"));
         return finish();
     }
     QSet<QString> keys;
     for (const QJsonValue &entry : registers.toArray()) {
         Register reg;
         if (!entry.isObject()) {
-            problems.fail(Tr::tr("every register must be a JSON object"));
+            problems.fail(RegisterTableTr::tr("every register must be a JSON object"));
             return finish();
         }
         if (!parseRegister(entry.toObject(), table.m_byteOrder, reg, problems))
             return finish();
         if (keys.contains(reg.key)) {
-            problems.fail(Tr::tr("the key \"%1\" is used twice").arg(reg.key));
+            problems.fail(RegisterTableTr::tr("the key \"%1\" is used twice").arg(reg.key));
             return finish();
         }
         keys.insert(reg.key);
@@ -246,7 +239,7 @@ std::optional<RegisterTable> RegisterTable::fromJson(const QByteArray &json, con
         const Register &previous = table.m_registers.at(i - 1);
         const Register &current = table.m_registers.at(i);
         if (current.address < previous.end()) {
-            problems.fail(Tr::tr("registers \"%1\" and \"%2\" overlap at address %3")
+            problems.fail(RegisterTableTr::tr("registers \"%1\" and \"%2\" overlap at address %3")
                               .arg(previous.key, current.key)
                               .arg(current.address));
             return finish();
@@ -338,12 +331,12 @@ const RegisterTable &RegisterTable::rawView()
     static const RegisterTable table = [] {
         RegisterTable raw;
         raw.m_raw = true;
-        raw.m_title = Tr::tr("Raw bytes (unknown model)");
+        raw.m_title = RegisterTableTr::tr("Raw bytes (unknown model)");
         for (int address = 0; address < kRawViewSize; ++address) {
             Register reg;
             reg.address = address;
             reg.key = QStringLiteral("byte_%1").arg(address, 3, 10, QLatin1Char('0'));
-            reg.label = Tr::tr("Byte %1").arg(address);
+            reg.label = RegisterTableTr::tr("Byte %1").arg(address);
             reg.storage = address < 40 ? Storage::Eeprom : Storage::Ram;
             reg.maximum = 255;
             raw.m_registers.append(reg);
@@ -361,8 +354,9 @@ qint32 defaultBaud(Family family)
 
 QString baudText(qint32 baud)
 {
-    return baud >= 1000000 && baud % 1000000 == 0 ? Tr::tr("%1 Mbps").arg(baud / 1000000)
-                                                  : Tr::tr("%L1 bps").arg(baud);
+    return baud >= 1000000 && baud % 1000000 == 0
+        ? RegisterTableTr::tr("%1 Mbps").arg(baud / 1000000)
+        : RegisterTableTr::tr("%L1 bps").arg(baud);
 }
 
 } // namespace feetech

@@ -2,20 +2,12 @@
 #include "tablefacts.h"
 
 #include "registertable.h"
+#include "registertabletr.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
 
 #include <algorithm>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(RegisterTable)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -50,9 +42,10 @@ bool parseTorqueValues(const QJsonObject &root, const QVector<Register> &registe
     if (!torque && field.isUndefined())
         return true; // a partial table: nothing to say about torque
     if (!torque)
-        return fail(error, Tr::tr("torque_enable_values: the table has no torque_enable"));
+        return fail(error,
+                    RegisterTableTr::tr("torque_enable_values: the table has no torque_enable"));
     if (!field.isObject())
-        return fail(error, Tr::tr("torque_enable_values must be an object"));
+        return fail(error, RegisterTableTr::tr("torque_enable_values must be an object"));
     const QJsonObject values = field.toObject();
     for (auto it = values.begin(); it != values.end(); ++it) {
         const auto mode =
@@ -60,21 +53,24 @@ bool parseTorqueValues(const QJsonObject &root, const QVector<Register> &registe
                 return it.key() == QLatin1String(entry.second);
             });
         if (mode == kTorqueModeKeys.end())
-            return fail(error, Tr::tr("torque_enable_values: unknown mode \"%1\"").arg(it.key()));
+            return fail(
+                error,
+                RegisterTableTr::tr("torque_enable_values: unknown mode \"%1\"").arg(it.key()));
         const qint32 value = it.value().toInt(-1);
         const bool listed = std::any_of(torque->choices.begin(), torque->choices.end(),
                                         [value](const Choice &c) { return c.value == value; });
         if (!it.value().isDouble() || !listed)
-            return fail(error,
-                        Tr::tr("torque_enable_values: \"%1\" is not one of torque_enable's "
-                               "choices")
-                            .arg(it.key()));
+            return fail(
+                error,
+                RegisterTableTr::tr("torque_enable_values: \"%1\" is not one of torque_enable's "
+                                    "choices")
+                    .arg(it.key()));
         facts.torqueValues[std::size_t(mode->first)] = value;
     }
     for (const TorqueMode required : {TorqueMode::Off, TorqueMode::On}) {
         if (!facts.torqueValues[std::size_t(required)])
             return fail(error,
-                        Tr::tr("torque_enable_values: \"%1\" is missing")
+                        RegisterTableTr::tr("torque_enable_values: \"%1\" is missing")
                             .arg(QLatin1String(kTorqueModeKeys[std::size_t(required)].second)));
     }
     return true;
@@ -96,9 +92,10 @@ bool parseFeedbackBlock(const QJsonObject &root, const QVector<Register> &regist
         && std::any_of(registers.begin(), registers.end(),
                        [end](const Register &reg) { return reg.end() == end; });
     if (!covered)
-        return fail(error,
-                    Tr::tr("feedback_block must give the address of present_position and "
-                           "a size that ends at the end of a register"));
+        return fail(
+            error,
+            RegisterTableTr::tr("feedback_block must give the address of present_position and "
+                                "a size that ends at the end of a register"));
     return true;
 }
 
@@ -121,14 +118,16 @@ std::optional<QVector<qint32>> parseBaudRates(const QJsonObject &root, QString *
     for (const QJsonValue &rate : rates) {
         const qint32 baud = rate.toInt(0);
         if (!rate.isDouble() || baud <= 0 || result.contains(baud)) {
-            fail(error, Tr::tr("baud_rates: every rate must be a positive number, listed once"));
+            fail(error,
+                 RegisterTableTr::tr(
+                     "baud_rates: every rate must be a positive number, listed once"));
             return std::nullopt;
         }
         result.append(baud);
     }
     // Address 6 holds a code from 0 to 7 (spec §6).
     if (result.isEmpty() || result.size() > 8) {
-        fail(error, Tr::tr("baud_rates must list the rates of codes 0 to 7"));
+        fail(error, RegisterTableTr::tr("baud_rates must list the rates of codes 0 to 7"));
         return std::nullopt;
     }
     return result;

@@ -1,21 +1,12 @@
 // Reading the tables' JSON files: the root object checked, numbers, the built-in resources.
 #include "tablejson.h"
+#include "registertabletr.h"
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonDocument>
 
 #include <cmath>
-
-namespace {
-
-// The context these sentences have always been translated in.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(RegisterTable)
-};
-
-} // namespace
 
 namespace feetech {
 
@@ -24,18 +15,18 @@ std::optional<QJsonObject> parseTableObject(const QByteArray &json, TableProblem
     QJsonParseError parseError {};
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        problems.fail(Tr::tr("not valid JSON at offset %1: %2")
+        problems.fail(RegisterTableTr::tr("not valid JSON at offset %1: %2")
                           .arg(parseError.offset)
                           .arg(parseError.errorString()));
         return std::nullopt;
     }
     if (!document.isObject()) {
-        problems.fail(Tr::tr("the document is not a JSON object"));
+        problems.fail(RegisterTableTr::tr("the document is not a JSON object"));
         return std::nullopt;
     }
     const QJsonObject root = document.object();
     if (root.value(QLatin1String("format")).toInt(-1) != 1) {
-        problems.fail(Tr::tr("unsupported \"format\" (expected 1)"));
+        problems.fail(RegisterTableTr::tr("unsupported \"format\" (expected 1)"));
         return std::nullopt;
     }
     return root;

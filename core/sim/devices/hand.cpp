@@ -11,7 +11,7 @@
 
 namespace {
 
-struct Tr
+struct HandTr
 {
     Q_DECLARE_TR_FUNCTIONS(Hand)
 };
@@ -46,7 +46,7 @@ Hand::Hand(VirtualFeetechBus &bus)
 
 QString Hand::describe(int index, int id)
 {
-    return Tr::tr("servo #%1 (ID %2)").arg(index + 1).arg(id);
+    return HandTr::tr("servo #%1 (ID %2)").arg(index + 1).arg(id);
 }
 
 QString Hand::describe(int index) const
@@ -166,7 +166,7 @@ void Hand::advanceTo(qint64 nowUs)
         const Sweep &sweep = *it;
         SimRefusal resisted;
         if (holdsTorque(sweep.index, &resisted)) {
-            m_notes.append(Tr::tr("the hand lets go: %1").arg(resisted.describe()));
+            m_notes.append(HandTr::tr("the hand lets go: %1").arg(resisted.describe()));
             it = m_sweeps.erase(it);
             continue;
         }
@@ -174,7 +174,7 @@ void Hand::advanceTo(qint64 nowUs)
         if (sweep.cycles > 0 && elapsed >= sweep.cycles * sweep.periodUs) {
             place(sweep.index, sweep.from);
             m_notes.append(
-                Tr::tr("the hand finished sweeping %1 (%n time(s))", nullptr, sweep.cycles)
+                HandTr::tr("the hand finished sweeping %1 (%n time(s))", nullptr, sweep.cycles)
                     .arg(describe(sweep.index)));
             it = m_sweeps.erase(it);
             continue;

@@ -3,6 +3,7 @@
 
 #include "feetechpacket.h"
 #include "hand.h"
+#include "virtualfeetechbustr.h"
 #include "virtualfeetechservo.h"
 
 #include <QCoreApplication>
@@ -10,14 +11,8 @@
 
 namespace {
 
-// The context the bus's sentences have always been translated in.
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(VirtualFeetechBus)
-};
-
 // The context the hand's sentences have always been translated in.
-struct HandTr
+struct HandRefusalTr
 {
     Q_DECLARE_TR_FUNCTIONS(Hand)
 };
@@ -64,34 +59,36 @@ QString SimRefusal::describe() const
     case Code::None:
         return {};
     case Code::NoServos:
-        return Tr::tr("a Feetech bus needs at least one servo");
+        return VirtualFeetechBusTr::tr("a Feetech bus needs at least one servo");
     case Code::UnknownModel:
-        return Tr::tr("servo %1: unknown model \"%2\"").arg(m_servo).arg(m_name);
+        return VirtualFeetechBusTr::tr("servo %1: unknown model \"%2\"").arg(m_servo).arg(m_name);
     case Code::NoRegisterTable:
-        return Tr::tr("servo %1: model %2 has no register table to simulate")
+        return VirtualFeetechBusTr::tr("servo %1: model %2 has no register table to simulate")
             .arg(m_servo)
             .arg(m_name);
     case Code::IdOutOfRange:
-        return Tr::tr("servo ID %1 is out of range: IDs are 0 to %2")
+        return VirtualFeetechBusTr::tr("servo ID %1 is out of range: IDs are 0 to %2")
             .arg(m_servo)
             .arg(feetech::kMaxServoId);
     case Code::NotAFeetechRate:
-        return Tr::tr("servo %1: %2 bps is not a Feetech baud rate (%3)")
+        return VirtualFeetechBusTr::tr("servo %1: %2 bps is not a Feetech baud rate (%3)")
             .arg(m_servo)
             .arg(m_value)
             .arg(baudList());
     case Code::IdTaken:
-        return Tr::tr("two servos have ID %1 at %2 bps").arg(m_servo).arg(m_value);
+        return VirtualFeetechBusTr::tr("two servos have ID %1 at %2 bps").arg(m_servo).arg(m_value);
     case Code::NoSuchPlace:
-        return Tr::tr("there is no servo #%1 on the bus (it has %2)").arg(m_servo).arg(m_value);
+        return VirtualFeetechBusTr::tr("there is no servo #%1 on the bus (it has %2)")
+            .arg(m_servo)
+            .arg(m_value);
     case Code::NoSuchId:
-        return Tr::tr("no servo has ID %1").arg(m_servo);
+        return VirtualFeetechBusTr::tr("no servo has ID %1").arg(m_servo);
     case Code::SharedId:
-        return Tr::tr("servos %1 share ID %2: name one by its place, as #N")
+        return VirtualFeetechBusTr::tr("servos %1 share ID %2: name one by its place, as #N")
             .arg(m_name)
             .arg(m_servo);
     case Code::CannotWriteState:
-        return Tr::tr("cannot write the state file %1: %2").arg(m_file, m_name);
+        return VirtualFeetechBusTr::tr("cannot write the state file %1: %2").arg(m_file, m_name);
     case Code::CannotReadState:
     case Code::StateNotJson:
     case Code::StateNotThisFormat:
@@ -100,23 +97,25 @@ QString SimRefusal::describe() const
     case Code::StateImageSize:
     case Code::StateImageModel:
     case Code::StateImageIdOrBaud:
-        return Tr::tr("state file %1: %2").arg(m_file, stateReason());
+        return VirtualFeetechBusTr::tr("state file %1: %2").arg(m_file, stateReason());
     case Code::PositionOutOfRange:
-        return HandTr::tr("position %1 is out of range: %2 turns from 0 to %3")
+        return HandRefusalTr::tr("position %1 is out of range: %2 turns from 0 to %3")
             .arg(m_value)
             .arg(Hand::describe(m_servo - 1, m_id))
             .arg(m_other);
     case Code::TorqueOn:
-        return HandTr::tr("%1 has its torque on: it holds its position and the hand cannot turn it")
+        return HandRefusalTr::tr(
+                   "%1 has its torque on: it holds its position and the hand cannot turn it")
             .arg(Hand::describe(m_servo - 1, m_id));
     case Code::SweepTooLong:
-        return HandTr::tr("a sweep takes more than 0 and at most %1 seconds")
+        return HandRefusalTr::tr("a sweep takes more than 0 and at most %1 seconds")
             .arg(Hand::kMaxSweepSeconds);
     case Code::TooManyCycles:
-        return HandTr::tr("a sweep runs 0 (until released) to %1 times").arg(Hand::kMaxSweepCycles);
+        return HandRefusalTr::tr("a sweep runs 0 (until released) to %1 times")
+            .arg(Hand::kMaxSweepCycles);
     case Code::NoSeam:
-        return HandTr::tr("%1 is an SCS servo: it stops at 0 and %2, there is no "
-                          "seam to sweep across")
+        return HandRefusalTr::tr("%1 is an SCS servo: it stops at 0 and %2, there is no "
+                                 "seam to sweep across")
             .arg(Hand::describe(m_servo - 1, m_id))
             .arg(m_other);
     case Code::BadPtkValues:
@@ -136,25 +135,31 @@ QString SimRefusal::stateReason() const
     case Code::CannotReadState:
         return m_name;
     case Code::StateNotJson:
-        return Tr::tr("not valid JSON (%1)").arg(m_name);
+        return VirtualFeetechBusTr::tr("not valid JSON (%1)").arg(m_name);
     case Code::StateNotThisFormat:
-        return Tr::tr("not a format %1 simulator state").arg(m_value);
+        return VirtualFeetechBusTr::tr("not a format %1 simulator state").arg(m_value);
     case Code::StateServoCount:
-        return Tr::tr("it holds %1 servos, the bus has %2").arg(m_value).arg(m_other);
+        return VirtualFeetechBusTr::tr("it holds %1 servos, the bus has %2")
+            .arg(m_value)
+            .arg(m_other);
     case Code::StateModelDiffers:
-        return Tr::tr("servo %1 is a %2 in the file but a %3 on the bus")
+        return VirtualFeetechBusTr::tr("servo %1 is a %2 in the file but a %3 on the bus")
             .arg(m_servo)
             .arg(m_name, m_busModel);
     case Code::StateImageSize:
-        return Tr::tr("servo %1: the EEPROM image is not %2 hex bytes").arg(m_servo).arg(m_value);
+        return VirtualFeetechBusTr::tr("servo %1: the EEPROM image is not %2 hex bytes")
+            .arg(m_servo)
+            .arg(m_value);
     case Code::StateImageModel:
-        return Tr::tr("servo %1: the EEPROM image is of model %2/%3, not %4")
+        return VirtualFeetechBusTr::tr("servo %1: the EEPROM image is of model %2/%3, not %4")
             .arg(m_servo)
             .arg(m_value)
             .arg(m_other)
             .arg(m_busModel);
     case Code::StateImageIdOrBaud:
-        return Tr::tr("servo %1: the EEPROM image holds an invalid ID or baud code").arg(m_servo);
+        return VirtualFeetechBusTr::tr(
+                   "servo %1: the EEPROM image holds an invalid ID or baud code")
+            .arg(m_servo);
     default:
         return {};
     }

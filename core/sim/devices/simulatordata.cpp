@@ -12,7 +12,7 @@
 
 namespace {
 
-struct Tr
+struct SimulatorDataTr
 {
     Q_DECLARE_TR_FUNCTIONS(SimulatorData)
 };
@@ -49,7 +49,7 @@ QJsonObject objectAt(const QJsonObject &parent, const QString &key, const QStrin
     if (value.isUndefined() && !required)
         return {};
     if (!value.isObject())
-        throw FieldError {field, Tr::tr("must be an object")};
+        throw FieldError {field, SimulatorDataTr::tr("must be an object")};
     return value.toObject();
 }
 
@@ -58,8 +58,9 @@ qint64 wholeNumber(const QJsonValue &value, const QString &field, qint64 minimum
     const double number = value.toDouble(std::numeric_limits<double>::quiet_NaN());
     if (!value.isDouble() || number != std::floor(number) || number < double(minimum)
         || number > double(maximum))
-        throw FieldError {field,
-                          Tr::tr("must be a whole number from %1 to %2").arg(minimum).arg(maximum)};
+        throw FieldError {
+            field,
+            SimulatorDataTr::tr("must be a whole number from %1 to %2").arg(minimum).arg(maximum)};
     return qint64(number);
 }
 
@@ -98,16 +99,17 @@ std::optional<SimulatorData> SimulatorData::parse(const QByteArray &json, const 
         if (parseError.error != QJsonParseError::NoError)
             throw FieldError {{}, parseError.errorString()};
         if (!document.isObject())
-            throw FieldError {{}, Tr::tr("the document is not a JSON object")};
+            throw FieldError {{}, SimulatorDataTr::tr("the document is not a JSON object")};
         const QJsonObject root = document.object();
         const QString unknown = unknownKey(
             root,
             {QStringLiteral("format"), QStringLiteral("defaults"), QStringLiteral("families")});
         if (!unknown.isEmpty())
-            throw FieldError {unknown, Tr::tr("is not a field of this file")};
+            throw FieldError {unknown, SimulatorDataTr::tr("is not a field of this file")};
         const QJsonValue format = root.value(QLatin1String("format"));
         if (!format.isDouble() || format.toDouble() != kFormat)
-            throw FieldError {QStringLiteral("format"), Tr::tr("must be %1").arg(kFormat)};
+            throw FieldError {QStringLiteral("format"),
+                              SimulatorDataTr::tr("must be %1").arg(kFormat)};
 
         QHash<QString, qint32> common;
         readDefaults(objectAt(root, QStringLiteral("defaults"), QStringLiteral("defaults"), false),
@@ -123,7 +125,7 @@ std::optional<SimulatorData> SimulatorData::parse(const QByteArray &json, const 
         }();
         if (!stray.isEmpty())
             throw FieldError {QStringLiteral("families.") + stray,
-                              Tr::tr("is not a Feetech family (scs, sts, sms, hls)")};
+                              SimulatorDataTr::tr("is not a Feetech family (scs, sts, sms, hls)")};
 
         SimulatorData data;
         for (const feetech::Family family : feetech::kAllFamilies) {
@@ -134,7 +136,8 @@ std::optional<SimulatorData> SimulatorData::parse(const QByteArray &json, const 
                 object,
                 {QStringLiteral("firmware"), QStringLiteral("defaults"), QStringLiteral("note")});
             if (!extra.isEmpty())
-                throw FieldError {field + u'.' + extra, Tr::tr("is not a field of a family")};
+                throw FieldError {field + u'.' + extra,
+                                  SimulatorDataTr::tr("is not a field of a family")};
             const QJsonObject firmware = objectAt(object, QStringLiteral("firmware"),
                                                   field + QStringLiteral(".firmware"), true);
             FamilyData &entry = data.m_families[index(family)];
@@ -153,8 +156,8 @@ std::optional<SimulatorData> SimulatorData::parse(const QByteArray &json, const 
     } catch (const FieldError &failure) {
         if (error)
             *error = failure.field.isEmpty()
-                ? Tr::tr("%1: %2").arg(fileName, failure.why)
-                : Tr::tr("%1: %2 %3").arg(fileName, failure.field, failure.why);
+                ? SimulatorDataTr::tr("%1: %2").arg(fileName, failure.why)
+                : SimulatorDataTr::tr("%1: %2 %3").arg(fileName, failure.field, failure.why);
         return std::nullopt;
     }
 }

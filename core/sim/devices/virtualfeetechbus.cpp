@@ -4,6 +4,7 @@
 
 #include "jsonfile.h"
 #include "savefile.h"
+#include "virtualfeetechbustr.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -13,15 +14,6 @@
 #include <QSet>
 
 #include <algorithm>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(VirtualFeetechBus)
-};
-
-} // namespace
 
 namespace sim {
 
@@ -460,8 +452,9 @@ bool VirtualFeetechBus::loadState(const QString &path, SimRefusal *why)
     // A whole bus of 253 servos saves to well under this: anything larger is another file.
     constexpr qint64 kMaxStateBytes = 16 * 1024 * 1024;
     util::FileError cause;
-    const auto json = util::readFile(path, kMaxStateBytes,
-                                     Tr::tr("larger than any state file (over 16 MB)"), &cause);
+    const auto json =
+        util::readFile(path, kMaxStateBytes,
+                       VirtualFeetechBusTr::tr("larger than any state file (over 16 MB)"), &cause);
     if (!json)
         return !refused(
             SimRefusal::stateFile(SimRefusal::Code::CannotReadState, path, 0, 0, 0, cause.reason()),

@@ -3,6 +3,7 @@
 
 #include "feetechpacket.h"
 #include "hand.h"
+#include "servosimtr.h"
 
 #include <QCoreApplication>
 
@@ -12,11 +13,6 @@ namespace {
 struct FaultsTr
 {
     Q_DECLARE_TR_FUNCTIONS(Faults)
-};
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servosim)
 };
 
 } // namespace
@@ -41,16 +37,16 @@ QString OptionError::describe() const
                             "delay, lost)")
             .arg(m_text);
     case Code::NotAServoSpec:
-        return Tr::tr("%1 \"%2\" is not ID:MODEL[@BAUD]").arg(m_source, m_text);
+        return ServosimTr::tr("%1 \"%2\" is not ID:MODEL[@BAUD]").arg(m_source, m_text);
     case Code::ServoIdOverMax:
-        return Tr::tr("%1 \"%2\": ID %3 is over %4")
+        return ServosimTr::tr("%1 \"%2\": ID %3 is over %4")
             .arg(m_source, m_text)
             .arg(m_value)
             .arg(feetech::kMaxServoId);
     case Code::ServoWithoutModel:
-        return Tr::tr("%1 \"%2\" names no model").arg(m_source, m_text);
+        return ServosimTr::tr("%1 \"%2\" names no model").arg(m_source, m_text);
     case Code::ServoBadBaud:
-        return Tr::tr("%1 \"%2\": bad baud rate").arg(m_source, m_text);
+        return ServosimTr::tr("%1 \"%2\": bad baud rate").arg(m_source, m_text);
     case Code::SweepFields:
     case Code::SweepBadId:
     case Code::SweepBadPositions:
@@ -58,7 +54,7 @@ QString OptionError::describe() const
     case Code::SweepBadCycles:
         return QStringLiteral("%1: %2").arg(m_source, sweepReason());
     case Code::UnknownRobot:
-        return Tr::tr("unknown robot \"%1\": use %2")
+        return ServosimTr::tr("unknown robot \"%1\": use %2")
             .arg(m_text, simulatedRobotNames().join(u", "));
     case Code::BadRobotTemplate:
         return m_text;
@@ -76,17 +72,20 @@ QString OptionError::sweepReason() const
 {
     switch (m_code) {
     case Code::SweepFields:
-        return Tr::tr("expected ID FROM TO SECONDS [CYCLES] [up|down]");
+        return ServosimTr::tr("expected ID FROM TO SECONDS [CYCLES] [up|down]");
     case Code::SweepBadId:
-        return Tr::tr("the ID must be 0 to %1, not \"%2\"").arg(feetech::kMaxServoId).arg(m_text);
+        return ServosimTr::tr("the ID must be 0 to %1, not \"%2\"")
+            .arg(feetech::kMaxServoId)
+            .arg(m_text);
     case Code::SweepBadPositions:
-        return Tr::tr("FROM and TO must be positions from 0 to 4095");
+        return ServosimTr::tr("FROM and TO must be positions from 0 to 4095");
     case Code::SweepBadSeconds:
-        return Tr::tr("SECONDS must be a number above 0 and at most %1, not \"%2\"")
+        return ServosimTr::tr("SECONDS must be a number above 0 and at most %1, not \"%2\"")
             .arg(Hand::kMaxSweepSeconds)
             .arg(m_text);
     case Code::SweepBadCycles:
-        return Tr::tr("CYCLES must be a whole number from 0 (until released) to %1, not \"%2\"")
+        return ServosimTr::tr(
+                   "CYCLES must be a whole number from 0 (until released) to %1, not \"%2\"")
             .arg(Hand::kMaxSweepCycles)
             .arg(m_text);
     default:

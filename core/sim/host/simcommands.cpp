@@ -4,6 +4,7 @@
 #include "simcommands.h"
 
 #include "hex.h"
+#include "servosimtr.h"
 #include "simulator.h"
 
 #include <QCoreApplication>
@@ -11,15 +12,6 @@
 #include <QRegularExpression>
 
 #include <cmath>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servosim)
-};
-
-} // namespace
 
 namespace sim {
 
@@ -37,13 +29,13 @@ QString error(const QString &text)
 
 QString place(const VirtualFeetechBus &bus, int index)
 {
-    return Tr::tr("#%1 (ID %2)").arg(index + 1).arg(bus.servo(index).id());
+    return ServosimTr::tr("#%1 (ID %2)").arg(index + 1).arg(bus.servo(index).id());
 }
 
 QString listLine(const QVector<SimulatedServo> &servos)
 {
     if (servos.isEmpty())
-        return Tr::tr("no servos");
+        return ServosimTr::tr("no servos");
     QStringList entries;
     for (const SimulatedServo &servo : servos) {
         entries.append(QStringLiteral("#%1 id=%2 baud=%3 model=%4 position=%5 torque=%6%7")
@@ -86,7 +78,7 @@ std::optional<double> numberIn(const QString &text, double low, double high)
 QString runBenchCase(const QString &command, const QStringList &words, VirtualFeetechBus &bus)
 {
     const auto usage = [&](const QString &form) {
-        return error(Tr::tr("%1 takes: %2").arg(command, form));
+        return error(ServosimTr::tr("%1 takes: %2").arg(command, form));
     };
     QString why;
     if (command == QLatin1String("supply")) {
@@ -94,14 +86,15 @@ QString runBenchCase(const QString &command, const QStringList &words, VirtualFe
             return usage(QStringLiteral("supply VOLTS"));
         const auto volts = numberIn(words.first(), 0.0, 30.0);
         if (!volts)
-            return error(Tr::tr("\"%1\" is not a supply from 0 to 30 V").arg(words.first()));
+            return error(
+                ServosimTr::tr("\"%1\" is not a supply from 0 to 30 V").arg(words.first()));
         bus.setSupplyVoltage(*volts);
-        return ok(Tr::tr("the supply is %1 V").arg(*volts, 0, 'f', 1));
+        return ok(ServosimTr::tr("the supply is %1 V").arg(*volts, 0, 'f', 1));
     }
     if (command == QLatin1String("break-chain") && words.size() == 1
         && words.first() == QLatin1String("none")) {
         bus.setChainBreakAfter(-1);
-        return ok(Tr::tr("the daisy chain is whole"));
+        return ok(ServosimTr::tr("the daisy chain is whole"));
     }
     static const QHash<QString, QString> kForms {
         {QStringLiteral("power"), QStringLiteral("power SERVO on|off")},
@@ -129,8 +122,8 @@ QString runBenchCase(const QString &command, const QStringList &words, VirtualFe
         if (second != QLatin1String("on") && second != QLatin1String("off"))
             return usage(kForms.value(command));
         bus.setPowered(*index, second == QLatin1String("on"));
-        return ok(second == QLatin1String("on") ? Tr::tr("%1 has power").arg(who)
-                                                : Tr::tr("%1 has no power").arg(who));
+        return ok(second == QLatin1String("on") ? ServosimTr::tr("%1 has power").arg(who)
+                                                : ServosimTr::tr("%1 has no power").arg(who));
     }
     if (command == QLatin1String("power-cut")) {
         const auto cut = powerCutFromName(second);
@@ -138,42 +131,43 @@ QString runBenchCase(const QString &command, const QStringList &words, VirtualFe
             return usage(kForms.value(command));
         bus.armPowerCut(*index, *cut);
         return ok(*cut == PowerCut::AfterUnlock
-                      ? Tr::tr("%1 loses power once its EEPROM lock is opened").arg(who)
-                      : Tr::tr("%1 loses power after its next EEPROM write").arg(who));
+                      ? ServosimTr::tr("%1 loses power once its EEPROM lock is opened").arg(who)
+                      : ServosimTr::tr("%1 loses power after its next EEPROM write").arg(who));
     }
     if (command == QLatin1String("break-chain")) {
         bus.setChainBreakAfter(*index);
-        return ok(Tr::tr("the daisy chain is broken after %1").arg(who));
+        return ok(ServosimTr::tr("the daisy chain is broken after %1").arg(who));
     }
     if (command == QLatin1String("heat")) {
         const auto rate = numberIn(second, -10.0, 10.0);
         if (!rate)
-            return error(Tr::tr("\"%1\" is not a rate from -10 to 10 °C/s").arg(second));
+            return error(ServosimTr::tr("\"%1\" is not a rate from -10 to 10 °C/s").arg(second));
         servo.setTemperatureRise(*rate);
-        return ok(Tr::tr("%1 warms by %2 °C/s").arg(who).arg(*rate));
+        return ok(ServosimTr::tr("%1 warms by %2 °C/s").arg(who).arg(*rate));
     }
     if (command == QLatin1String("temperature")) {
         const auto celsius = numberIn(second, -20.0, 120.0);
         if (!celsius)
-            return error(Tr::tr("\"%1\" is not a temperature from -20 to 120 °C").arg(second));
+            return error(
+                ServosimTr::tr("\"%1\" is not a temperature from -20 to 120 °C").arg(second));
         servo.setTemperature(*celsius);
-        return ok(Tr::tr("%1 is at %2 °C").arg(who).arg(*celsius));
+        return ok(ServosimTr::tr("%1 is at %2 °C").arg(who).arg(*celsius));
     }
     if (command == QLatin1String("block")) {
         const auto permille =
             second.isEmpty() ? std::optional<double>(1000.0) : numberIn(second, -1000.0, 1000.0);
         if (!permille || *permille != std::round(*permille))
-            return error(Tr::tr("\"%1\" is not a load from -1000 to 1000 ‰").arg(second));
+            return error(ServosimTr::tr("\"%1\" is not a load from -1000 to 1000 ‰").arg(second));
         servo.setExternalLoad(int(*permille));
-        return ok(Tr::tr("%1's horn is held with a load of %2 ‰").arg(who).arg(*permille));
+        return ok(ServosimTr::tr("%1's horn is held with a load of %2 ‰").arg(who).arg(*permille));
     }
     if (command == QLatin1String("unblock")) {
         servo.setExternalLoad(0);
-        return ok(Tr::tr("%1's horn is free").arg(who));
+        return ok(ServosimTr::tr("%1's horn is free").arg(who));
     }
     // latch
     servo.setOverloadLatched(true);
-    return ok(Tr::tr("%1's overload is latched until a power cycle").arg(who));
+    return ok(ServosimTr::tr("%1's overload is latched until a power cycle").arg(who));
 }
 
 } // namespace
@@ -208,15 +202,15 @@ QString benchCondition(const SimulatedServo &servo)
 {
     QStringList words;
     if (!servo.powered)
-        words.append(Tr::tr("no power"));
+        words.append(ServosimTr::tr("no power"));
     if (servo.blocked)
-        words.append(Tr::tr("horn blocked"));
+        words.append(ServosimTr::tr("horn blocked"));
     if (servo.overloadLatched)
-        words.append(Tr::tr("overload latched"));
+        words.append(ServosimTr::tr("overload latched"));
     if (servo.heatPerSecond > 0)
-        words.append(Tr::tr("heating %1 °C/s").arg(servo.heatPerSecond));
+        words.append(ServosimTr::tr("heating %1 °C/s").arg(servo.heatPerSecond));
     else if (servo.heatPerSecond < 0)
-        words.append(Tr::tr("cooling %1 °C/s").arg(-servo.heatPerSecond));
+        words.append(ServosimTr::tr("cooling %1 °C/s").arg(-servo.heatPerSecond));
     return words.join(QLatin1String(", "));
 }
 
@@ -227,7 +221,7 @@ std::optional<int> servoIndex(const VirtualFeetechBus &bus, const QString &refer
         const auto number = util::parseInteger(reference.mid(1));
         if (!number || *number < 1 || *number > bus.servoCount()) {
             if (error)
-                *error = Tr::tr("there is no servo %1: the bus has #1 to #%2")
+                *error = ServosimTr::tr("there is no servo %1: the bus has #1 to #%2")
                              .arg(reference)
                              .arg(bus.servoCount());
             return std::nullopt;
@@ -237,7 +231,7 @@ std::optional<int> servoIndex(const VirtualFeetechBus &bus, const QString &refer
     const auto id = util::parseInteger(reference);
     if (!id || *id < 0 || *id > feetech::kMaxServoId) {
         if (error)
-            *error = Tr::tr("\"%1\" names no servo: give an ID (0 to %2) or a place as #N")
+            *error = ServosimTr::tr("\"%1\" names no servo: give an ID (0 to %2) or a place as #N")
                          .arg(reference)
                          .arg(feetech::kMaxServoId);
         return std::nullopt;
@@ -251,12 +245,13 @@ std::optional<int> servoIndex(const VirtualFeetechBus &bus, const QString &refer
 
 QString simulatorCommandHelp()
 {
-    return Tr::tr("commands: turn SERVO POS | sweep SERVO FROM TO SECONDS [CYCLES] [up|down] | "
-                  "release | plug ID:MODEL[@BAUD] | unplug SERVO | set-id SERVO ID | list | "
-                  "power-cycle | power SERVO on|off | break-chain SERVO|none | supply VOLTS | "
-                  "heat SERVO C_PER_S | temperature SERVO C | block SERVO [PERMILLE] | "
-                  "unblock SERVO | latch SERVO | power-cut SERVO after-unlock|after-write | "
-                  "help; SERVO is an ID or a place #N from list");
+    return ServosimTr::tr(
+        "commands: turn SERVO POS | sweep SERVO FROM TO SECONDS [CYCLES] [up|down] | "
+        "release | plug ID:MODEL[@BAUD] | unplug SERVO | set-id SERVO ID | list | "
+        "power-cycle | power SERVO on|off | break-chain SERVO|none | supply VOLTS | "
+        "heat SERVO C_PER_S | temperature SERVO C | block SERVO [PERMILLE] | "
+        "unblock SERVO | latch SERVO | power-cut SERVO after-unlock|after-write | "
+        "help; SERVO is an ID or a place #N from list");
 }
 
 QString runSimulatorCommand(const QString &line, Simulator &simulator)
@@ -273,9 +268,9 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
                                         QStringLiteral("unplug"),  QStringLiteral("set-id"),
                                         QStringLiteral("list"),    QStringLiteral("power-cycle")};
     if (!kCommands.contains(command) && !kBenchCaseCommands.contains(command))
-        return error(Tr::tr("unknown command \"%1\": try help").arg(command));
+        return error(ServosimTr::tr("unknown command \"%1\": try help").arg(command));
     const auto usage = [&](const QString &form) {
-        return error(Tr::tr("%1 takes: %2").arg(command, form));
+        return error(ServosimTr::tr("%1 takes: %2").arg(command, form));
     };
 
     simulator.advanceNow();
@@ -283,11 +278,11 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         if (!words.isEmpty())
             return usage(QStringLiteral("power-cycle"));
         simulator.powerCycle();
-        return ok(Tr::tr("power-cycled"));
+        return ok(ServosimTr::tr("power-cycled"));
     }
     VirtualFeetechBus *bus = simulator.feetechBus();
     if (!bus)
-        return error(Tr::tr("%1 is for a Feetech bus; this is a PTK servo").arg(command));
+        return error(ServosimTr::tr("%1 is for a Feetech bus; this is a PTK servo").arg(command));
     QString why;
 
     if (kBenchCaseCommands.contains(command))
@@ -300,7 +295,7 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
     if (command == QLatin1String("release")) {
         if (!words.isEmpty())
             return usage(QStringLiteral("release"));
-        return ok(Tr::tr("the hand let go of %n sweep(s)", nullptr, bus->hand().stop()));
+        return ok(ServosimTr::tr("the hand let go of %n sweep(s)", nullptr, bus->hand().stop()));
     }
     if (command == QLatin1String("plug")) {
         if (words.size() != 1)
@@ -314,7 +309,7 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
             return error(refusal.describe());
         const int index = bus->servoCount() - 1;
         const VirtualFeetechServo &servo = bus->servo(index);
-        return ok(Tr::tr("plugged %1: %2 at %3 bps")
+        return ok(ServosimTr::tr("plugged %1: %2 at %3 bps")
                       .arg(place(*bus, index), servo.modelName())
                       .arg(servo.baudRate()));
     }
@@ -326,11 +321,12 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
             return error(why);
         const auto position = util::parseInteger(words.at(1));
         if (!position || *position < 0 || *position > 4095)
-            return error(Tr::tr("\"%1\" is not a position from 0 to 4095").arg(words.at(1)));
+            return error(
+                ServosimTr::tr("\"%1\" is not a position from 0 to 4095").arg(words.at(1)));
         SimRefusal refusal;
         if (!bus->hand().turnServo(*index, int(*position), &refusal))
             return error(refusal.describe());
-        return ok(Tr::tr("turned %1 to %2").arg(place(*bus, *index)).arg(*position));
+        return ok(ServosimTr::tr("turned %1 to %2").arg(place(*bus, *index)).arg(*position));
     }
     if (command == QLatin1String("sweep")) {
         if (words.size() < 4)
@@ -349,9 +345,10 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         if (!bus->hand().sweepServo(*index, sweep->from, sweep->to, sweep->seconds, sweep->cycles,
                                     sweep->way, &refusal))
             return error(refusal.describe());
-        const QString times = sweep->cycles == 0 ? Tr::tr("until released")
-                                                 : Tr::tr("%n time(s)", nullptr, sweep->cycles);
-        return ok(Tr::tr("sweeping %1 from %2 to %3 and back every %4 s, %5")
+        const QString times = sweep->cycles == 0
+            ? ServosimTr::tr("until released")
+            : ServosimTr::tr("%n time(s)", nullptr, sweep->cycles);
+        return ok(ServosimTr::tr("sweeping %1 from %2 to %3 and back every %4 s, %5")
                       .arg(place(*bus, *index))
                       .arg(sweep->from)
                       .arg(sweep->to)
@@ -366,7 +363,7 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
             return error(why);
         const QString gone = place(*bus, *index);
         bus->unplug(*index);
-        return ok(Tr::tr("unplugged %1").arg(gone));
+        return ok(ServosimTr::tr("unplugged %1").arg(gone));
     }
     // set-id
     if (words.size() != 2)
@@ -376,12 +373,13 @@ QString runSimulatorCommand(const QString &line, Simulator &simulator)
         return error(why);
     const auto id = util::parseInteger(words.at(1));
     if (!id || *id < 0 || *id > feetech::kMaxServoId)
-        return error(
-            Tr::tr("\"%1\" is not an ID from 0 to %2").arg(words.at(1)).arg(feetech::kMaxServoId));
+        return error(ServosimTr::tr("\"%1\" is not an ID from 0 to %2")
+                         .arg(words.at(1))
+                         .arg(feetech::kMaxServoId));
     SimRefusal refusal;
     if (!bus->setServoId(*index, int(*id), &refusal))
         return error(refusal.describe());
-    return ok(Tr::tr("servo #%1 is now at ID %2").arg(*index + 1).arg(*id));
+    return ok(ServosimTr::tr("servo #%1 is now at ID %2").arg(*index + 1).arg(*id));
 }
 
 } // namespace sim

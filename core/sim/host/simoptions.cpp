@@ -2,23 +2,15 @@
 #include "simoptions.h"
 
 #include "hex.h"
+#include "servosimtr.h"
 
 #include <QCoreApplication>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servosim)
-};
-
-} // namespace
 
 namespace sim {
 
 QString simulatorUsage()
 {
-    return Tr::tr(
+    return ServosimTr::tr(
         "usage: servosim ptk --link PATH [--values KEY=V,...] [options]\n"
         "       servosim feetech --link PATH --servo ID:MODEL[@BAUD] [--servo ...] "
         "[--state FILE] [options]\n"
@@ -64,14 +56,15 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         return std::nullopt;
     };
     if (arguments.isEmpty())
-        return fail(Tr::tr("name a protocol: ptk or feetech"));
+        return fail(ServosimTr::tr("name a protocol: ptk or feetech"));
     SimulatorOptions options;
     if (arguments.first() == QLatin1String("ptk"))
         options.kind = SimulatorOptions::Kind::Ptk;
     else if (arguments.first() == QLatin1String("feetech"))
         options.kind = SimulatorOptions::Kind::Feetech;
     else
-        return fail(Tr::tr("unknown protocol \"%1\": use ptk or feetech").arg(arguments.first()));
+        return fail(
+            ServosimTr::tr("unknown protocol \"%1\": use ptk or feetech").arg(arguments.first()));
     const bool feetech = options.kind == SimulatorOptions::Kind::Feetech;
 
     for (int i = 1; i < arguments.size(); ++i) {
@@ -87,7 +80,7 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         }
         if (option == QLatin1String("--allow-shared-ids")) {
             if (!feetech)
-                return fail(Tr::tr("--allow-shared-ids is for a Feetech bus"));
+                return fail(ServosimTr::tr("--allow-shared-ids is for a Feetech bus"));
             options.allowSharedIds = true;
             continue;
         }
@@ -99,10 +92,10 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
             QStringLiteral("--robot"),          QStringLiteral("--hand"),
             QStringLiteral("--command"),        QStringLiteral("--adapter")};
         if (!kWithValue.contains(option))
-            return fail(Tr::tr("unknown option \"%1\"").arg(option));
+            return fail(ServosimTr::tr("unknown option \"%1\"").arg(option));
         const auto text = value();
         if (!text)
-            return fail(Tr::tr("%1 needs a value").arg(option));
+            return fail(ServosimTr::tr("%1 needs a value").arg(option));
         if (option == QLatin1String("--link")) {
             options.linkPath = *text;
         } else if (option == QLatin1String("--faults")) {
@@ -114,14 +107,14 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         } else if (option == QLatin1String("--seed")) {
             const auto seed = util::parseInteger(*text);
             if (!seed || *seed < 0 || *seed > 0xFFFFFFFFLL)
-                return fail(Tr::tr("--seed must be a whole number from 0 to 4294967295"));
+                return fail(ServosimTr::tr("--seed must be a whole number from 0 to 4294967295"));
             options.seed = quint32(*seed);
         } else if (option == QLatin1String("--log")) {
             options.logPath = *text;
         } else if (option == QLatin1String("--reply-delay-us")) {
             const auto delay = util::parseInteger(*text);
             if (!delay || *delay < 0 || *delay > 10'000'000)
-                return fail(Tr::tr("--reply-delay-us must be 0 to 10000000"));
+                return fail(ServosimTr::tr("--reply-delay-us must be 0 to 10000000"));
             options.replyDelayUs = *delay;
         } else if (option == QLatin1String("--adapter")) {
             options.adapter.reset();
@@ -130,29 +123,29 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
                 options.adapter = profile;
             } else if (*text != QLatin1String("ideal") && !options.instant) {
                 const QStringList names = adapterProfileNames() << QStringLiteral("instant");
-                return fail(Tr::tr("unknown adapter \"%1\": use %2")
+                return fail(ServosimTr::tr("unknown adapter \"%1\": use %2")
                                 .arg(*text, names.join(QStringLiteral(", "))));
             }
         } else if (option == QLatin1String("--values")) {
             if (feetech)
-                return fail(Tr::tr("--values is for the PTK servo"));
+                return fail(ServosimTr::tr("--values is for the PTK servo"));
             options.ptkValues = *text;
         } else if (option == QLatin1String("--state")) {
             if (!feetech)
-                return fail(Tr::tr("--state is for a Feetech bus"));
+                return fail(ServosimTr::tr("--state is for a Feetech bus"));
             options.statePath = *text;
         } else if (option == QLatin1String("--robot")) {
             if (!feetech)
-                return fail(Tr::tr("--robot is for a Feetech bus"));
+                return fail(ServosimTr::tr("--robot is for a Feetech bus"));
             if (options.robot)
-                return fail(Tr::tr("--robot may be given once"));
+                return fail(ServosimTr::tr("--robot may be given once"));
             OptionError why;
             options.robot = simulatedRobot(*text, &why);
             if (!options.robot)
                 return fail(why.describe());
         } else if (option == QLatin1String("--hand")) {
             if (!feetech)
-                return fail(Tr::tr("--hand is for a Feetech bus"));
+                return fail(ServosimTr::tr("--hand is for a Feetech bus"));
             OptionError why;
             const auto sweep =
                 parseHandSweep(text->split(u':'), QStringLiteral("--hand \"%1\"").arg(*text), &why);
@@ -163,7 +156,7 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
             options.commands.append(*text);
         } else if (option == QLatin1String("--servo")) {
             if (!feetech)
-                return fail(Tr::tr("--servo is for a Feetech bus"));
+                return fail(ServosimTr::tr("--servo is for a Feetech bus"));
             OptionError why;
             const auto spec = parseServoSpec(*text, QStringLiteral("--servo"), &why);
             if (!spec)
@@ -172,14 +165,14 @@ std::optional<SimulatorOptions> parseSimulatorArguments(const QStringList &argum
         }
     }
     if (options.linkPath.isEmpty())
-        return fail(Tr::tr("--link PATH is required"));
+        return fail(ServosimTr::tr("--link PATH is required"));
     if (options.robot) {
         // The arm's joints come first, at the template's rate, whatever order the options had.
         options.servos = robotServos(*options.robot) + options.servos;
     }
     if (feetech && options.servos.isEmpty())
-        return fail(
-            Tr::tr("a Feetech bus needs at least one --servo ID:MODEL[@BAUD] or a --robot"));
+        return fail(ServosimTr::tr(
+            "a Feetech bus needs at least one --servo ID:MODEL[@BAUD] or a --robot"));
     return options;
 }
 

@@ -15,7 +15,7 @@
 
 namespace {
 
-struct Tr
+struct SimulatorTr
 {
     Q_DECLARE_TR_FUNCTIONS(Simulator)
 };

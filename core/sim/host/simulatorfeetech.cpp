@@ -1,19 +1,11 @@
 // The simulator's Feetech side: building the bus from --servo specs and its --state file, a
 // --robot arm set up from its template, and the hand's --hand sweeps.
 #include "simulatorfeetech.h"
+#include "servosimtr.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QHash>
-
-namespace {
-
-struct Tr
-{
-    Q_DECLARE_TR_FUNCTIONS(servosim)
-};
-
-} // namespace
 
 namespace sim {
 
@@ -63,8 +55,8 @@ std::unique_ptr<VirtualFeetechBus> createFeetechBus(const SimulatorOptions &opti
             if (!options.allowSharedIds
                 && VirtualFeetechBus::validate(options.servos, nullptr,
                                                VirtualFeetechBus::SharedIds::Allow))
-                *error +=
-                    Tr::tr(" (--allow-shared-ids lets them share it, their replies colliding)");
+                *error += ServosimTr::tr(
+                    " (--allow-shared-ids lets them share it, their replies colliding)");
         }
         return nullptr;
     }
@@ -90,7 +82,8 @@ std::unique_ptr<VirtualFeetechBus> createFeetechBus(const SimulatorOptions &opti
         if (!bus->hand().sweep(sweep.id, sweep.from, sweep.to, sweep.seconds, sweep.cycles,
                                sweep.way, &refusal)) {
             if (error)
-                *error = Tr::tr("--hand for ID %1: %2").arg(sweep.id).arg(refusal.describe());
+                *error =
+                    ServosimTr::tr("--hand for ID %1: %2").arg(sweep.id).arg(refusal.describe());
             return nullptr;
         }
     }

@@ -27,13 +27,6 @@ namespace {
 
 enum JointColumn { CalibrateColumn, IdColumn, ModelColumn, NameColumn, FullTurnColumn };
 
-QLabel *wrappedLabel(const QString &text, QWidget *parent)
-{
-    auto *label = new QLabel(text, parent);
-    label->setWordWrap(true);
-    return label;
-}
-
 QTableWidgetItem *checkItem(bool checked)
 {
     auto *item = new QTableWidgetItem;
@@ -112,7 +105,7 @@ CalibrationJointsPage::CalibrationJointsPage(feetech::BusClient *client, QWidget
 {
     QWidget *page = this;
     auto *layout = new QVBoxLayout(page);
-    layout->addWidget(wrappedLabel(
+    layout->addWidget(widgethelpers::wrappedLabel(
         tr("Choose the joints to calibrate. ServoBench records how far each joint turns, then "
            "sets its position offset so that the middle of that range reads 2048, and its angle "
            "limits to the range: no joint's range crosses the encoder's 0/4095 seam."),

@@ -18,13 +18,6 @@ namespace {
 
 enum ResultColumn { JointColumn, OffsetColumn, MinimumColumn, MaximumColumn, StatusColumn };
 
-QLabel *wrappedLabel(const QString &text, QWidget *parent)
-{
-    auto *label = new QLabel(text, parent);
-    label->setWordWrap(true);
-    return label;
-}
-
 } // namespace
 
 CalibrationResultsPage::CalibrationResultsPage(QWidget *parent)
@@ -32,10 +25,10 @@ CalibrationResultsPage::CalibrationResultsPage(QWidget *parent)
 {
     QWidget *page = this;
     auto *layout = new QVBoxLayout(page);
-    layout->addWidget(
-        wrappedLabel(tr("Each joint's new position offset and angle limits (in steps, in the new "
-                        "coordinates), or why it is refused. Nothing has been written yet."),
-                     page));
+    layout->addWidget(widgethelpers::wrappedLabel(
+        tr("Each joint's new position offset and angle limits (in steps, in the new "
+           "coordinates), or why it is refused. Nothing has been written yet."),
+        page));
     m_table = new QTableWidget(0, 5, page);
     m_table->setObjectName(QStringLiteral("calibrationResultTable"));
     m_table->setHorizontalHeaderLabels(

@@ -26,17 +26,6 @@
 #include <algorithm>
 #include <cmath>
 
-namespace {
-
-QLabel *wrappedLabel(const QString &text, QWidget *parent)
-{
-    auto *label = new QLabel(text, parent);
-    label->setWordWrap(true);
-    return label;
-}
-
-} // namespace
-
 CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent)
     : QDialog(parent)
     , m_client(client)
@@ -142,7 +131,7 @@ QWidget *CalibrationWizard::buildWarningPage()
 {
     auto *page = new QWidget(this);
     auto *layout = new QVBoxLayout(page);
-    m_warning = wrappedLabel(QString(), page);
+    m_warning = widgethelpers::wrappedLabel(QString(), page);
     m_warning->setObjectName(QStringLiteral("torqueWarning"));
     QFont bold = m_warning->font();
     bold.setBold(true);
@@ -153,7 +142,7 @@ QWidget *CalibrationWizard::buildWarningPage()
                      palette::toneColor(palette::Tone::Warning, m_warning->palette()));
     m_warning->setPalette(colours);
     layout->addWidget(m_warning);
-    layout->addWidget(wrappedLabel(
+    layout->addWidget(widgethelpers::wrappedLabel(
         tr("Nothing is written to the servos until you have seen the results and chosen to "
            "write them. Cancel at any point writes nothing (torque stays off)."),
         page));
@@ -180,12 +169,12 @@ QWidget *CalibrationWizard::buildMiddlePosePage()
 {
     auto *page = new QWidget(this);
     auto *layout = new QVBoxLayout(page);
-    layout->addWidget(wrappedLabel(
+    layout->addWidget(widgethelpers::wrappedLabel(
         tr("Move every joint to the middle of its travel (LeRobot's middle pose: the arm "
            "stretched out level, the gripper half open), then take the pose. Each joint's "
            "present position there will read 2047."),
         page));
-    m_middleList = wrappedLabel(QString(), page);
+    m_middleList = widgethelpers::wrappedLabel(QString(), page);
     m_middleList->setObjectName(QStringLiteral("middlePoseList"));
     m_middleList->setTextFormat(Qt::PlainText);
     layout->addWidget(m_middleList, 1);
@@ -204,7 +193,7 @@ QWidget *CalibrationWizard::buildRecordingPage()
 {
     auto *page = new QWidget(this);
     auto *layout = new QVBoxLayout(page);
-    layout->addWidget(wrappedLabel(
+    layout->addWidget(widgethelpers::wrappedLabel(
         tr("Move every joint slowly through its whole range, to both end stops, and back to "
            "the middle. Turn a full-turn joint as far as you want it to go. The bars show one "
            "turn of the encoder: the filled part is the range recorded so far, the line the "

@@ -17,7 +17,13 @@
 
 namespace {
 
-enum Column { JointColumn, OffsetColumn, MinimumColumn, MaximumColumn, StatusColumn };
+enum FileColumn {
+    FileJointColumn,
+    FileOffsetColumn,
+    FileMinimumColumn,
+    FileMaximumColumn,
+    FileStatusColumn
+};
 
 } // namespace
 
@@ -45,7 +51,7 @@ LoadCalibrationDialog::LoadCalibrationDialog(feetech::BusClient *client,
         {tr("Joint"), tr("Offset"), tr("Min limit"), tr("Max limit"), tr("Status")});
     m_table->verticalHeader()->hide();
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_table->horizontalHeader()->setSectionResizeMode(StatusColumn, QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(FileStatusColumn, QHeaderView::Stretch);
     layout->addWidget(m_table, 1);
     m_summary = new QLabel(tr("Reading the servos…"), this);
     m_summary->setObjectName(QStringLiteral("loadCalibrationSummary"));
@@ -71,7 +77,7 @@ LoadCalibrationDialog::LoadCalibrationDialog(feetech::BusClient *client,
     QVector<CalibrationSteps::Step> steps;
     for (int row = 0; row < motors.size(); ++row) {
         const feetech::LeRobotMotor &motor = motors.at(row);
-        m_table->setItem(row, JointColumn,
+        m_table->setItem(row, FileJointColumn,
                          new QTableWidgetItem(tr("%1 (%2)").arg(motor.name).arg(motor.id)));
         int found = -1;
         for (int index = 0; index < client->servos()->count() && found < 0; ++index) {
@@ -120,7 +126,7 @@ void LoadCalibrationDialog::setStatus(int row, const QString &text, bool problem
     auto *item = new QTableWidgetItem(text);
     if (problem)
         item->setForeground(palette::toneColor(palette::Tone::Error, m_table->palette()));
-    m_table->setItem(row, StatusColumn, item);
+    m_table->setItem(row, FileStatusColumn, item);
 }
 
 void LoadCalibrationDialog::onRead(bool allOk)
@@ -149,7 +155,7 @@ void LoadCalibrationDialog::onRead(bool allOk)
             const qint32 now = CalibrationSteps::lastRead(*m_client, index, wanted.at(i).key);
             changed = changed || now != wanted.at(i).value;
             m_table->setItem(
-                row, OffsetColumn + i,
+                row, FileOffsetColumn + i,
                 new QTableWidgetItem(now == wanted.at(i).value
                                          ? QString::number(now)
                                          : tr("%1 → %2").arg(now).arg(wanted.at(i).value)));
@@ -170,7 +176,7 @@ void LoadCalibrationDialog::onRead(bool allOk)
         }
     }
     m_table->resizeColumnsToContents();
-    m_table->horizontalHeader()->setSectionResizeMode(StatusColumn, QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(FileStatusColumn, QHeaderView::Stretch);
     m_write->setEnabled(!m_writeRows.isEmpty());
     m_summary->setText(!allOk ? tr("Not every servo could be read: those joints are not written.")
                            : m_writeRows.isEmpty()
