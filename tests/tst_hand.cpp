@@ -107,6 +107,35 @@ private slots:
         QCOMPARE(present(*bus, 1), 1000);
     }
 
+    void aSweptJointReportsItsSpeedAndThatItMoves()
+    {
+        // 2000 steps out in 1 s and back in 1 s: 2000 step/s each way, as the encoder sees it.
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 1000, 3000, 2.0, 1));
+        bus->advanceTo(500 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 2000);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 1);
+        bus->advanceTo(1500 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), -2000);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 1);
+        QCOMPARE(bus->findServo(2)->value(u"present_speed"), 0); // nobody turns it
+        QCOMPARE(bus->findServo(2)->value(u"moving"), 0);
+        bus->advanceTo(2500 * kMs); // the sweep is over: the horn rests
+        QVERIFY(!bus->hand().isSweeping(0));
+        bus->advanceTo(2600 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 0);
+    }
+
+    void anScsJointSweptByHandReportsItsSpeedToo()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(3, 100, 900, 4.0));
+        bus->advanceTo(1000 * kMs);
+        QCOMPARE(bus->findServo(3)->value(u"present_speed"), 400);
+        QCOMPARE(bus->findServo(3)->value(u"moving"), 1);
+    }
+
     void anOffsetChangedMidSweepMovesTheReadingsNotTheHorn()
     {
         // As on a real servo: the hand moves the horn; the reading is the horn less the offset.

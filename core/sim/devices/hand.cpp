@@ -85,9 +85,9 @@ double Hand::hornAngle(int index, double position) const
     return position + (fullCircle(servo) ? servo.value(u"position_offset") : 0.0);
 }
 
-void Hand::place(int index, double horn)
+void Hand::place(int index, double horn, double stepsPerSecond)
 {
-    m_bus.servo(index).setPhysicalPosition(horn);
+    m_bus.servo(index).turnByHand(horn, stepsPerSecond);
 }
 
 bool Hand::turn(quint8 id, int position, SimRefusal *why)
@@ -180,9 +180,13 @@ void Hand::advanceTo(qint64 nowUs)
             continue;
         }
         // A triangle wave: FROM to TO in the first half of each period, back in the second.
+        // The encoder sees the horn turn at the wave's slope, as a real servo turned by hand
+        // reports its speed and that it moves.
         const double phase = std::fmod(elapsed, sweep.periodUs) / sweep.periodUs;
         const double share = phase < 0.5 ? 2.0 * phase : 2.0 - 2.0 * phase;
-        place(sweep.index, sweep.from + (sweep.to - sweep.from) * share);
+        const double speed = 2.0 * (sweep.to - sweep.from) / (sweep.periodUs / 1e6);
+        place(sweep.index, sweep.from + (sweep.to - sweep.from) * share,
+              phase < 0.5 ? speed : -speed);
         ++it;
     }
 }

@@ -77,7 +77,8 @@ private:
     bool holdsTorque(int index, SimRefusal *why) const;
     // The horn's angle for a present position, with the servo's offset now.
     double hornAngle(int index, double position) const;
-    void place(int index, double horn);
+    // Puts the horn at `horn`, turning at `stepsPerSecond` (0: held still there).
+    void place(int index, double horn, double stepsPerSecond = 0.0);
     void letGo(int index);
     QString describe(int index) const;
 
