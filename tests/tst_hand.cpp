@@ -127,6 +127,35 @@ private slots:
         QCOMPARE(bus->findServo(1)->value(u"moving"), 0);
     }
 
+    void turnsInQuickSuccessionReportTheGesturesSpeed()
+    {
+        // A slider dragged: each turn soon after the last, the encoder sees the speed between.
+        auto bus = armBus();
+        bus->advanceTo(1000 * kMs);
+        QVERIFY(bus->hand().turn(1, 1000));
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0); // no gesture yet
+        bus->advanceTo(1100 * kMs);
+        QVERIFY(bus->hand().turn(1, 1100)); // 100 steps in 0.1 s
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 1000);
+        bus->advanceTo(1200 * kMs); // read while the gesture goes on
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 1000);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 1);
+        QCOMPARE(present(*bus, 1), 1100);
+        bus->advanceTo(1500 * kMs); // the hand paused
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 0);
+        // Across the seam the short way: 4050 to 50 is 96 steps up.
+        QVERIFY(bus->hand().turn(1, 4050));
+        bus->advanceTo(1600 * kMs);
+        QVERIFY(bus->hand().turn(1, 50));
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 960);
+        // Torque on where it stands: the servo holds, the gesture is over.
+        bus->findServo(1)->setValue(u"goal_position", 50);
+        bus->findServo(1)->setValue(u"torque_enable", 1);
+        bus->advanceTo(1700 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0);
+    }
+
     void anScsJointSweptByHandReportsItsSpeedToo()
     {
         auto bus = armBus();
