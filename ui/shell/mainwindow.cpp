@@ -120,6 +120,10 @@ MainWindow::MainWindow(QWidget *parent)
         }
         connectToPort(port);
     });
+    // One port chosen, shown in both places: Connect is offered in both by the same rule.
+    connect(m_connectionBar, &ConnectionBar::portChanged, m_welcome, &WelcomePanel::showChosenPort);
+    connect(m_welcome, &WelcomePanel::portChosen, m_connectionBar, &ConnectionBar::setPort);
+    m_welcome->showChosenPort(m_connectionBar->port());
     layout->addWidget(m_pages);
     setCentralWidget(central);
     connect(m_connectionBar, &ConnectionBar::protocolChanged, this,
