@@ -9,6 +9,7 @@ packages=(
     g++ cmake ninja-build pkg-config lld
     qt6-base-dev qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev libgl-dev libxkbcommon-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    qt6-translations-l10n
 )
 
 usage() {
@@ -55,6 +56,8 @@ check_package() {
     appstreamcli validate --no-net /usr/share/metainfo/io.github.servobench.ServoBench.metainfo.xml
     test -f /usr/lib/udev/rules.d/70-servobench.rules
     test -f /usr/share/man/man1/servoctl.1 && test -f /usr/share/man/man1/servosim.1
+    # Qt's own buttons and dialogs in the window's language come with the package's dependency.
+    test -f /usr/share/qt6/translations/qtbase_zh_CN.qm
     bash -c 'source /usr/share/bash-completion/completions/servoctl && complete -p servoctl'
     echo "setup: $deb installed and checked"
 }

@@ -142,6 +142,14 @@ private slots:
         QCOMPARE(codesOf(m_window->doctorPanel()->findings()),
                  QStringList {feetech::doctorcodes::kNoBytes});
         QCOMPARE(m_window->doctorPanel()->findingList()->topLevelItemCount(), 1);
+        // The row leads with what the code means; the code stays, last and secondary.
+        const QTreeWidgetItem *row = m_window->doctorPanel()->findingList()->topLevelItem(0);
+        QCOMPARE(row->text(0), feetech::doctorTitle(feetech::doctorcodes::kNoBytes));
+        QVERIFY(row->text(0) != feetech::doctorcodes::kNoBytes);
+        QVERIFY(row->font(0).bold());
+        QCOMPARE(row->text(2), m_window->doctorPanel()->findings().first().message);
+        QCOMPARE(row->text(row->columnCount() - 1), feetech::doctorcodes::kNoBytes);
+        QVERIFY(row->toolTip(0).contains(feetech::doctorcodes::kNoBytes));
         QVERIFY(!m_window->feetechClient()->link()->isConnected());
         QVERIFY(!m_window->ptkClient()->isConnected());
     }
@@ -166,6 +174,8 @@ private slots:
         QCOMPARE(codesOf(findings), QStringList {feetech::doctorcodes::kChainBreak});
         QCOMPARE(findings.first().ids, (QVector<int> {3, 4, 5, 6}));
         QVERIFY(findings.first().message.contains(QStringLiteral("after ID 2")));
+        QCOMPARE(m_window->doctorPanel()->findingList()->topLevelItem(0)->text(0),
+                 QStringLiteral("The chain is broken"));
     }
 
     void aServoAtAnUnexpectedIdIsMovedFromThePanel()

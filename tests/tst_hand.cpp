@@ -107,6 +107,64 @@ private slots:
         QCOMPARE(present(*bus, 1), 1000);
     }
 
+    void aSweptJointReportsItsSpeedAndThatItMoves()
+    {
+        // 2000 steps out in 1 s and back in 1 s: 2000 step/s each way, as the encoder sees it.
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(1, 1000, 3000, 2.0, 1));
+        bus->advanceTo(500 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 2000);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 1);
+        bus->advanceTo(1500 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), -2000);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 1);
+        QCOMPARE(bus->findServo(2)->value(u"present_speed"), 0); // nobody turns it
+        QCOMPARE(bus->findServo(2)->value(u"moving"), 0);
+        bus->advanceTo(2500 * kMs); // the sweep is over: the horn rests
+        QVERIFY(!bus->hand().isSweeping(0));
+        bus->advanceTo(2600 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 0);
+    }
+
+    void turnsInQuickSuccessionReportTheGesturesSpeed()
+    {
+        // A slider dragged: each turn soon after the last, the encoder sees the speed between.
+        auto bus = armBus();
+        bus->advanceTo(1000 * kMs);
+        QVERIFY(bus->hand().turn(1, 1000));
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0); // no gesture yet
+        bus->advanceTo(1100 * kMs);
+        QVERIFY(bus->hand().turn(1, 1100)); // 100 steps in 0.1 s
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 1000);
+        bus->advanceTo(1200 * kMs); // read while the gesture goes on
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 1000);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 1);
+        QCOMPARE(present(*bus, 1), 1100);
+        bus->advanceTo(1500 * kMs); // the hand paused
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0);
+        QCOMPARE(bus->findServo(1)->value(u"moving"), 0);
+        // Across the seam the short way: 4050 to 50 is 96 steps up.
+        QVERIFY(bus->hand().turn(1, 4050));
+        bus->advanceTo(1600 * kMs);
+        QVERIFY(bus->hand().turn(1, 50));
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 960);
+        // Torque on where it stands: the servo holds, the gesture is over.
+        bus->findServo(1)->setValue(u"goal_position", 50);
+        bus->findServo(1)->setValue(u"torque_enable", 1);
+        bus->advanceTo(1700 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 0);
+    }
+
+    void anScsJointSweptByHandReportsItsSpeedToo()
+    {
+        auto bus = armBus();
+        QVERIFY(bus->hand().sweep(3, 100, 900, 4.0));
+        bus->advanceTo(1000 * kMs);
+        QCOMPARE(bus->findServo(3)->value(u"present_speed"), 400);
+        QCOMPARE(bus->findServo(3)->value(u"moving"), 1);
+    }
+
     void anOffsetChangedMidSweepMovesTheReadingsNotTheHorn()
     {
         // As on a real servo: the hand moves the horn; the reading is the horn less the offset.

@@ -7,17 +7,23 @@
 #include "namedchild.h"
 #include "operationlog.h"
 #include "pose.h"
+#include "skippablequestion.h"
 
+#include <QApplication>
+#include <QCheckBox>
 #include <QLabel>
 #include <QMap>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 
 #include <cstdlib>
+#include <functional>
 #include <memory>
 
 namespace {
@@ -84,6 +90,15 @@ private:
         return testsupport::namedChild<T>(m_joints.get(), name);
     }
 
+    // Answers the next question as it shows (its own event loop runs meanwhile).
+    void answerQuestion(std::function<void(QMessageBox *)> answer)
+    {
+        QTimer::singleShot(0, this, [answer] {
+            QTRY_VERIFY(qobject_cast<QMessageBox *>(QApplication::activeModalWidget()));
+            answer(qobject_cast<QMessageBox *>(QApplication::activeModalWidget()));
+        });
+    }
+
     void connectAndScan()
     {
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 10));
@@ -139,6 +154,45 @@ private slots:
         m_joints.reset();
         m_client.reset();
         m_simulator.reset();
+    }
+
+    void identifyAsksBeforeItMovesAndCanBeToldNotToAskAgain()
+    {
+        SkippableQuestion::askAllAgain();
+        connectAndScan();
+        QPushButton *identify = m_joints->identifyButton(0);
+        QTRY_VERIFY_WITH_TIMEOUT(identify->isEnabled(), 10000);
+
+        // Cancel (the default): nothing is sent, nothing moves.
+        QString asked;
+        bool cancelWasDefault = false;
+        answerQuestion([&](QMessageBox *box) {
+            asked = box->text();
+            cancelWasDefault = box->defaultButton() == box->button(QMessageBox::Cancel);
+            box->button(QMessageBox::Cancel)->click();
+        });
+        identify->click(); // returns once the question is answered
+        QVERIFY2(asked.contains(QStringLiteral("ID 1")), qPrintable(asked));
+        QVERIFY(cancelWasDefault);
+        QVERIFY(!m_client->identify()->isRunning(0));
+        QVERIFY(!SkippableQuestion(QStringLiteral("identify"), {}, {}).isSkipped());
+
+        // Go ahead, and do not ask again.
+        answerQuestion([](QMessageBox *box) {
+            box->findChild<QCheckBox *>(QStringLiteral("dontAskAgainBox"))->setChecked(true);
+            box->findChild<QPushButton *>(QStringLiteral("goAheadButton"))->click();
+        });
+        identify->click();
+        QVERIFY(m_client->identify()->isRunning(0));
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->identify()->isRunning(0), 20000);
+
+        // Asked no more: the click starts it at once.
+        QTRY_VERIFY_WITH_TIMEOUT(identify->isEnabled(), 10000);
+        identify->click();
+        QVERIFY(!QApplication::activeModalWidget());
+        QVERIFY(m_client->identify()->isRunning(0));
+        QTRY_VERIFY_WITH_TIMEOUT(!m_client->identify()->isRunning(0), 20000);
+        SkippableQuestion::askAllAgain();
     }
 
     void scanGivesOneRowPerServo()

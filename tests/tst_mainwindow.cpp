@@ -4,10 +4,13 @@
 #include "mainwindow.h"
 #include "packetlogdock.h"
 #include "shortcutsdialog.h"
+#include "skippablequestion.h"
 
+#include <QCheckBox>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTableWidget>
@@ -121,6 +124,45 @@ private slots:
         QCOMPARE(again.connectionBar()->port(), missing);
         QCOMPARE(again.connectionBar()->protocol(), ConnectionBar::Protocol::Feetech);
         QCOMPARE(again.connectionBar()->baud(), 500000);
+    }
+
+    void aSkippedQuestionIsAskedAgainFromTheViewMenu()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto *askAgain = window.findChild<QAction *>(QStringLiteral("askAgainAction"));
+        QVERIFY(askAgain);
+        const SkippableQuestion question(QStringLiteral("test"), QStringLiteral("Move?"),
+                                         QStringLiteral("Move it"));
+        // Going ahead with "Don't ask again" ticked skips it from then on.
+        QTimer::singleShot(0, this, [] {
+            QTRY_VERIFY(qobject_cast<QMessageBox *>(QApplication::activeModalWidget()));
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            box->findChild<QCheckBox *>(QStringLiteral("dontAskAgainBox"))->setChecked(true);
+            box->findChild<QPushButton *>(QStringLiteral("goAheadButton"))->click();
+        });
+        QVERIFY(question.ask(&window, QStringLiteral("It moves.")));
+        QVERIFY(question.isSkipped());
+        QVERIFY(question.ask(&window, QStringLiteral("It moves."))); // no box: skipped
+        QVERIFY(SkippableQuestion::anySkipped());
+        for (QMenu *menu : window.findChildren<QMenu *>()) {
+            if (menu->actions().contains(askAgain))
+                emit menu->aboutToShow(); // the View menu opens
+        }
+        QVERIFY(askAgain->isEnabled());
+        askAgain->trigger();
+        QVERIFY(!question.isSkipped());
+        QVERIFY(!SkippableQuestion::anySkipped());
+        // A tick with Cancel is not remembered: skipping always means going ahead.
+        QTimer::singleShot(0, this, [] {
+            QTRY_VERIFY(qobject_cast<QMessageBox *>(QApplication::activeModalWidget()));
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            box->findChild<QCheckBox *>(QStringLiteral("dontAskAgainBox"))->setChecked(true);
+            box->button(QMessageBox::Cancel)->click();
+        });
+        QVERIFY(!question.ask(&window, QStringLiteral("It moves.")));
+        QVERIFY(!question.isSkipped());
     }
 
     void resetLayoutBringsBackTheFirstLayout()

@@ -405,6 +405,27 @@ private slots:
         QCOMPARE(ids, (QSet<int> {1, 3, 4}));
     }
 
+    void anArmsServosAreNamedByTheirJoints()
+    {
+        // Six STS3215 at IDs 1-6 are an SO-101 arm: its template names each joint.
+        QString error;
+        const auto servos = testsupport::servosAt(
+            k1M, {u"STS3215", u"STS3215", u"STS3215", u"STS3215", u"STS3215", u"STS3215"});
+        QVERIFY2(startSimulator(busOptions(servos), &error), qPrintable(error));
+        QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 8));
+        QCOMPARE(m_client->servos()->count(), 6);
+        QListWidget *list = m_page->servoList();
+        QCOMPARE(list->item(0)->text(), QStringLiteral("shoulder_pan (ID 1) · STS3215 · 1 Mbps"));
+        QCOMPARE(list->item(5)->text(), QStringLiteral("gripper (ID 6) · STS3215 · 1 Mbps"));
+        QVERIFY2(m_page->start(&error), qPrintable(error));
+        QTableWidget *table = m_page->readouts();
+        QTRY_COMPARE_WITH_TIMEOUT(table->rowCount(), 6, 10000);
+        QStringList names;
+        for (int row = 0; row < table->rowCount(); ++row)
+            names.append(table->item(row, MonitorReadouts::ServoColumn)->text());
+        QVERIFY2(names.contains(QStringLiteral("elbow_flex (ID 3)")), qPrintable(names.join(u',')));
+    }
+
     void servoThatStopsAnsweringIsFlagged()
     {
         startSimulatorAndScan();

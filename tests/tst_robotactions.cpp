@@ -15,13 +15,16 @@
 #include "servotree.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTableWidget>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QtTest>
 
@@ -129,7 +132,14 @@ private slots:
         test.cancel();
         QTRY_VERIFY(button->isEnabled());
         QTRY_VERIFY(!client()->isBusy());
-        button->click();
+        // Identify asks first; the answer goes ahead.
+        QTimer::singleShot(0, this, [] {
+            QTRY_VERIFY(qobject_cast<QMessageBox *>(QApplication::activeModalWidget()));
+            QApplication::activeModalWidget()
+                ->findChild<QPushButton *>(QStringLiteral("goAheadButton"))
+                ->click();
+        });
+        button->click(); // returns once the question is answered
         QVERIFY(client()->identify()->isRunning(index));
         QTRY_VERIFY_WITH_TIMEOUT(!client()->identify()->isRunning(index), 20000);
         QTRY_VERIFY(joints->message().contains(QStringLiteral("wiggled")));

@@ -8,6 +8,7 @@
 #include "simulatordock.h"
 
 #include <QPushButton>
+#include <QSet>
 #include <QSettings>
 #include <QSlider>
 #include <QTableWidget>
@@ -111,6 +112,14 @@ private slots:
         QVERIFY(letGo && letGo->isEnabled());
         letGo->click();
         QVERIFY(!onBus([](sim::VirtualFeetechBus &bus) { return bus.hand().isSweeping(0); }));
+    }
+
+    void everyModelIsOfferedOnce()
+    {
+        const QStringList models = SimulatorDock::simulatedModels();
+        QCOMPARE(models.count(QStringLiteral("SM30BL")), 1);
+        QCOMPARE(QSet<QString>(models.cbegin(), models.cend()).size(), models.size());
+        QVERIFY(models.contains(QStringLiteral("SM30BL(FT)")));
     }
 
     void plugAndUnplugChangeTheBus()

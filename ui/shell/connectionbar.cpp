@@ -6,7 +6,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSerialPortInfo>
 #include <QTimer>
 
 namespace {
@@ -37,11 +36,15 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_port->setMinimumContentsLength(24);
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setToolTip(tr("The serial port of the USB programmer, or a simulated servo"));
+    m_port->lineEdit()->setPlaceholderText(tr("Choose a port"));
     addWidget(m_port);
     connect(m_port, &QComboBox::activated, this, [this] {
+        m_portChosen = true;
         if (const auto spoken = ConnectionController::simulatedProtocol(port()))
             setProtocol(*spoken);
     });
+    connect(m_port->lineEdit(), &QLineEdit::textEdited, this, [this] { m_portChosen = true; });
+    connect(m_port, &QComboBox::currentTextChanged, this, &ConnectionBar::onPortEdited);
 
     addSeparator();
     addWidget(new QLabel(tr("Baud "), this));
@@ -105,9 +108,19 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_refresh->start();
     // Asking the system for its ports can take a while: the window shows first, with the
     // simulated buses, and the real ports join the list once the event loop runs.
-    showPorts({}, {});
+    showPorts({});
     QTimer::singleShot(0, this, &ConnectionBar::refreshPorts);
     updateEnabled();
+}
+
+void ConnectionBar::onPortEdited()
+{
+    const QString chosen = port();
+    updateEnabled();
+    if (chosen == m_lastPort)
+        return;
+    m_lastPort = chosen;
+    emit portChanged(chosen);
 }
 
 QString ConnectionBar::port() const
@@ -120,7 +133,7 @@ QString ConnectionBar::port() const
 
 void ConnectionBar::setPort(const QString &port)
 {
-    m_portSet = true;
+    m_portChosen = true;
     selectPort(port);
 }
 
@@ -182,41 +195,47 @@ void ConnectionBar::updateEnabled()
     m_protocol->setEnabled(!m_active);
     m_baud->setEnabled(!m_active && chosenByHand);
     m_echo->setEnabled(!m_active && chosenByHand);
+    m_connect->setEnabled(m_active || canConnect());
+    m_connect->setToolTip(m_active || canConnect() ? QString()
+                                                   : tr("Choose a serial port or a simulated "
+                                                        "servo first"));
 }
 
 void ConnectionBar::refreshPorts()
 {
-    QStringList ports;
-    QStringList descriptions;
-    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts()) {
-        ports.append(info.systemLocation());
-        descriptions.append(info.description());
-    }
-    if (ports == m_knownPorts && m_port->count() > 0) {
-        m_portsListed = true;
-        return;
-    }
-    showPorts(ports, descriptions);
+    const QVector<SerialPort> ports = availableSerialPorts();
+    const bool same = ports == m_knownPorts && m_port->count() > 0;
     m_portsListed = true;
+    if (!same)
+        showPorts(ports);
 }
 
-void ConnectionBar::showPorts(const QStringList &ports, const QStringList &descriptions)
+void ConnectionBar::showPorts(const QVector<SerialPort> &ports)
 {
     m_knownPorts = ports;
-    // Rebuilding the list must not lose what the user chose or is typing; the first list of
-    // the system's ports starts at its first port, unless a port was asked for.
-    const QString chosen = m_portsListed || m_portSet ? port() : QString();
-    const QSignalBlocker quiet(m_port);
-    m_port->clear();
-    for (int i = 0; i < ports.size(); ++i) {
-        const QString text = descriptions.at(i).isEmpty()
-            ? ports.at(i)
-            : QStringLiteral("%1 (%2)").arg(ports.at(i), descriptions.at(i));
-        m_port->addItem(text, ports.at(i));
+    // Rebuilding the list must not lose what the user chose or is typing. Until the user
+    // chooses, the first USB adapter is the choice (none before the system's ports are known).
+    QString chosen = m_portChosen ? port() : QString();
+    if (!m_portChosen && m_portsListed && !ports.isEmpty())
+        chosen = ports.first().path;
+    {
+        const QSignalBlocker quiet(m_port);
+        m_port->clear();
+        for (const SerialPort &system : ports) {
+            const QString text = system.description.isEmpty()
+                ? system.path
+                : QStringLiteral("%1 (%2)").arg(system.path, system.description);
+            m_port->addItem(text, system.path);
+        }
+        m_port->addItem(tr("Simulated PTK servo"), kSimulatedPtkPort);
+        m_port->addItem(tr("Simulated Feetech bus"), kSimulatedFeetechPort);
+        m_port->addItem(tr("Simulated SO-101 arm"), kSimulatedArmPort);
+        if (chosen.isEmpty()) {
+            m_port->setCurrentIndex(-1);
+            m_port->setEditText(QString());
+        } else {
+            selectPort(chosen);
+        }
     }
-    m_port->addItem(tr("Simulated PTK servo"), kSimulatedPtkPort);
-    m_port->addItem(tr("Simulated Feetech bus"), kSimulatedFeetechPort);
-    m_port->addItem(tr("Simulated SO-101 arm"), kSimulatedArmPort);
-    if (!chosen.isEmpty())
-        selectPort(chosen);
+    onPortEdited();
 }

@@ -3,6 +3,7 @@
 
 #include "connectioncontroller.h"
 #include "requestengine.h"
+#include "serialports.h"
 
 #include <QToolBar>
 
@@ -25,8 +26,11 @@ public:
 
     explicit ConnectionBar(QWidget *parent = nullptr);
 
-    QString port() const; // a system path, or kSimulatedPtkPort
+    QString port() const; // a system path, or kSimulatedPtkPort; empty: none chosen
+    // The user's choice (the window's memory, the welcome page): kept while ports come and go.
     void setPort(const QString &port);
+    // Connect is offered while a port is chosen; the welcome page's follows the same rule.
+    bool canConnect() const { return !port().isEmpty(); }
     qint32 baud() const;
     void setBaud(qint32 baud);
     seriallink::EchoMode echoMode() const;
@@ -45,14 +49,18 @@ signals:
     void connectRequested();
     void disconnectRequested();
     void protocolChanged(ConnectionBar::Protocol protocol);
+    // The port chosen changed (empty: none), by the user or as adapters came and went.
+    void portChanged(const QString &port);
 
 private:
-    // The port list: `ports` (with their `descriptions`), then the simulated buses.
-    void showPorts(const QStringList &ports, const QStringList &descriptions);
+    // The port list: the system's `ports` (USB adapters first), then the simulated buses.
+    // Until the user chooses, the first USB adapter (else the first port, else none) is chosen.
+    void showPorts(const QVector<SerialPort> &ports);
     // Selects `port` in the list, or types it when it is not listed.
     void selectPort(const QString &port);
     // Auto finds the rate and the echo itself: their boxes are for the explicit protocols.
     void updateEnabled();
+    void onPortEdited();
 
     QComboBox *m_port = nullptr;
     QComboBox *m_baud = nullptr;
@@ -60,8 +68,9 @@ private:
     QComboBox *m_echo = nullptr;
     QPushButton *m_connect = nullptr;
     QTimer *m_refresh = nullptr;
-    QStringList m_knownPorts;
+    QVector<SerialPort> m_knownPorts;
     bool m_portsListed = false; // the system's ports were asked for at least once
-    bool m_portSet = false; // setPort was called: the first listing keeps that port
+    bool m_portChosen = false; // by the user or setPort: listings keep it
+    QString m_lastPort; // as portChanged last said
     bool m_active = false;
 };

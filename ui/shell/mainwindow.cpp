@@ -25,6 +25,7 @@
 #include "sharedialog.h"
 #include "shortcutsdialog.h"
 #include "simulatordock.h"
+#include "skippablequestion.h"
 #include "teleopdialog.h"
 #include "welcomepanel.h"
 #include "windowmemory.h"
@@ -120,6 +121,10 @@ MainWindow::MainWindow(QWidget *parent)
         }
         connectToPort(port);
     });
+    // One port chosen, shown in both places: Connect is offered in both by the same rule.
+    connect(m_connectionBar, &ConnectionBar::portChanged, m_welcome, &WelcomePanel::showChosenPort);
+    connect(m_welcome, &WelcomePanel::portChosen, m_connectionBar, &ConnectionBar::setPort);
+    m_welcome->showChosenPort(m_connectionBar->port());
     layout->addWidget(m_pages);
     setCentralWidget(central);
     connect(m_connectionBar, &ConnectionBar::protocolChanged, this,
@@ -409,6 +414,16 @@ void MainWindow::createMenus()
     QAction *resetLayoutAction =
         m_viewMenu->addAction(tr("&Reset layout"), this, &MainWindow::resetLayout);
     resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    // Questions such as Identify's can be told not to ask again: this brings them back.
+    QAction *askAgain = m_viewMenu->addAction(tr("Ask skipped &questions again"), this, [this] {
+        SkippableQuestion::askAllAgain();
+        statusBar()->showMessage(tr("ServoBench asks again before anything moves."),
+                                 kStatusMessageMs);
+    });
+    askAgain->setObjectName(QStringLiteral("askAgainAction"));
+    askAgain->setToolTip(tr("The questions you ticked \"Don't ask again\" on are asked again"));
+    connect(m_viewMenu, &QMenu::aboutToShow, askAgain,
+            [askAgain] { askAgain->setEnabled(SkippableQuestion::anySkipped()); });
     m_viewMenu->addSeparator();
     auto *language = new LanguageMenu(this);
     m_viewMenu->addMenu(language);

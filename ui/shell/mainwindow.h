@@ -55,6 +55,7 @@ public:
     feetech::BusClient *feetechClient() const { return m_feetech.get(); }
     FeetechWorkspace *feetechWorkspace() const { return m_feetechWorkspace; }
     ConnectionBar *connectionBar() const { return m_connectionBar; }
+    WelcomePanel *welcomePanel() const { return m_welcome; }
     PtkWorkspace *ptkWorkspace() const { return m_ptkWorkspace; }
     ParameterPage *ptkPage() const;
     PacketLogDock *packetLog() const { return m_packetLog; }

@@ -221,9 +221,11 @@ QWidget *SimulatorDock::buildBenchCases()
 
 QStringList SimulatorDock::simulatedModels()
 {
+    // The model table lists a name once per model number (SM30BL has twenty): the simulator
+    // plugs a servo by name, so each name is offered once.
     QStringList names;
     for (const feetech::ModelInfo &model : feetech::ModelTable::builtIn().models()) {
-        if (sim::VirtualFeetechBus::resolveModel(model.name))
+        if (!names.contains(model.name) && sim::VirtualFeetechBus::resolveModel(model.name))
             names.append(model.name);
     }
     return names;

@@ -9,7 +9,6 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
-#include <QSerialPortInfo>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -25,15 +24,6 @@ enum PortColumnIndex {
     SerialColumn,
     UsbIdColumn
 };
-
-QString usbId(const QSerialPortInfo &info)
-{
-    if (!info.hasVendorIdentifier() || !info.hasProductIdentifier())
-        return {};
-    return QStringLiteral("%1:%2")
-        .arg(info.vendorIdentifier(), 4, 16, QLatin1Char('0'))
-        .arg(info.productIdentifier(), 4, 16, QLatin1Char('0'));
-}
 
 QLabel *wrappedLabel(const QString &text, QWidget *parent)
 {
@@ -85,8 +75,12 @@ QWidget *WelcomePanel::createPortsBox()
     m_ports->setSelectionMode(QAbstractItemView::SingleSelection);
     m_ports->verticalHeader()->hide();
     m_ports->horizontalHeader()->setStretchLastSection(true);
-    connect(m_ports, &QTableWidget::itemSelectionChanged, this,
-            [this] { m_connect->setEnabled(!m_ports->selectedItems().isEmpty()); });
+    connect(m_ports, &QTableWidget::itemSelectionChanged, this, [this] {
+        if (m_ports->selectedItems().isEmpty())
+            return;
+        emit portChosen(
+            m_ports->item(m_ports->currentRow(), PortColumn)->data(Qt::UserRole).toString());
+    });
     connect(m_ports, &QTableWidget::itemDoubleClicked, this, &WelcomePanel::connectSelected);
     m_noPorts = new QLabel(tr("No serial port found. Plug in the USB adapter: it shows up here "
                               "by itself."),
@@ -161,44 +155,56 @@ QWidget *WelcomePanel::createWiringBox()
 
 void WelcomePanel::refreshPorts()
 {
-    const QString selected = m_ports->selectedItems().isEmpty()
-        ? QString()
-        : m_ports->item(m_ports->currentRow(), PortColumn)->data(Qt::UserRole).toString();
-    const QList<QSerialPortInfo> ports = QSerialPortInfo::availablePorts();
+    const QVector<SerialPort> ports = availableSerialPorts();
     // Rebuilt only when the list changed, so the view neither flickers nor scrolls.
-    QStringList listed;
-    for (const QSerialPortInfo &info : ports)
-        listed.append(info.systemLocation() + u'|' + info.description() + u'|'
-                      + info.serialNumber());
-    if (listed == m_listed && m_ports->rowCount() == ports.size())
+    if (ports == m_listed && m_ports->rowCount() == ports.size())
         return;
-    m_listed = listed;
-    m_ports->setRowCount(0);
-    for (const QSerialPortInfo &info : ports) {
-        const int row = m_ports->rowCount();
-        m_ports->insertRow(row);
-        auto *port = new QTableWidgetItem(info.portName());
-        port->setData(Qt::UserRole, info.systemLocation());
-        port->setToolTip(info.systemLocation());
-        m_ports->setItem(row, PortColumn, port);
-        m_ports->setItem(row, DescriptionColumn, new QTableWidgetItem(info.description()));
-        m_ports->setItem(row, ManufacturerColumn, new QTableWidgetItem(info.manufacturer()));
-        m_ports->setItem(row, SerialColumn, new QTableWidgetItem(info.serialNumber()));
-        m_ports->setItem(row, UsbIdColumn, new QTableWidgetItem(usbId(info)));
-        if (info.systemLocation() == selected)
-            m_ports->selectRow(row);
+    m_listed = ports;
+    {
+        const QSignalBlocker quiet(m_ports);
+        m_ports->setRowCount(0);
+        for (const SerialPort &system : ports) {
+            const int row = m_ports->rowCount();
+            m_ports->insertRow(row);
+            auto *port = new QTableWidgetItem(system.name);
+            port->setData(Qt::UserRole, system.path);
+            port->setToolTip(system.path);
+            m_ports->setItem(row, PortColumn, port);
+            m_ports->setItem(row, DescriptionColumn, new QTableWidgetItem(system.description));
+            m_ports->setItem(row, ManufacturerColumn, new QTableWidgetItem(system.manufacturer));
+            m_ports->setItem(row, SerialColumn, new QTableWidgetItem(system.serialNumber));
+            m_ports->setItem(row, UsbIdColumn, new QTableWidgetItem(system.usbId()));
+        }
     }
     m_ports->resizeColumnsToContents();
     m_noPorts->setVisible(ports.isEmpty());
-    m_connect->setEnabled(!m_ports->selectedItems().isEmpty());
+    selectChosenRow();
+}
+
+void WelcomePanel::showChosenPort(const QString &port)
+{
+    m_chosen = port;
+    selectChosenRow();
+    m_connect->setEnabled(!port.isEmpty());
+    m_connect->setToolTip(port.isEmpty() ? tr("Choose a serial port first") : QString());
+}
+
+void WelcomePanel::selectChosenRow()
+{
+    const QSignalBlocker quiet(m_ports);
+    m_ports->clearSelection();
+    for (int row = 0; row < m_ports->rowCount(); ++row) {
+        if (m_ports->item(row, PortColumn)->data(Qt::UserRole).toString() == m_chosen)
+            m_ports->selectRow(row);
+    }
+    // The view paints the selection it was not told of while its signals were blocked.
+    m_ports->viewport()->update();
 }
 
 void WelcomePanel::connectSelected()
 {
-    if (m_ports->selectedItems().isEmpty())
-        return;
-    emit connectRequested(
-        m_ports->item(m_ports->currentRow(), PortColumn)->data(Qt::UserRole).toString());
+    if (!m_chosen.isEmpty())
+        emit connectRequested(m_chosen);
 }
 
 void WelcomePanel::showEvent(QShowEvent *event)

@@ -2,6 +2,8 @@
 // simulated servos, and how to wire each servo family.
 #pragma once
 
+#include "serialports.h"
+
 #include <QWidget>
 
 class QLabel;
@@ -16,14 +18,21 @@ class WelcomePanel : public QWidget
 public:
     explicit WelcomePanel(QWidget *parent = nullptr);
 
-    // Lists the system's serial ports again (also every 2 s while the panel is on screen, so
-    // an adapter plugged in shows up by itself).
+    // Lists the system's serial ports again, USB adapters first (also every 2 s while the
+    // panel is on screen, so an adapter plugged in shows up by itself).
     void refreshPorts();
     QTableWidget *portTable() const { return m_ports; }
+    QPushButton *connectButton() const { return m_connect; }
+
+    // The port the connection bar has chosen: its row is selected (none for a simulated one),
+    // and Connect is offered exactly when the bar offers it, while a port is chosen.
+    void showChosenPort(const QString &port);
 
 signals:
     // A system port's path, or one of ConnectionBar's simulated port names.
     void connectRequested(const QString &port);
+    // The user selected a port's row.
+    void portChosen(const QString &port);
 
 protected:
     void showEvent(QShowEvent *event) override;
@@ -34,10 +43,12 @@ private:
     QWidget *createSimulatedBox();
     QWidget *createWiringBox();
     void connectSelected();
+    void selectChosenRow();
 
     QTableWidget *m_ports = nullptr;
     QLabel *m_noPorts = nullptr;
     QPushButton *m_connect = nullptr;
     QTimer *m_refresh = nullptr;
-    QStringList m_listed; // the ports shown, to rebuild the table only when they change
+    QVector<SerialPort> m_listed; // the ports shown, to rebuild the table only when they change
+    QString m_chosen;
 };

@@ -303,6 +303,29 @@ ServoCondition servoCondition(const ServoInfo &servo, bool readable,
     return condition;
 }
 
+QString doctorTitle(const QString &code)
+{
+    using namespace doctorcodes;
+    static const QHash<QString, const char *> titles {
+        {kPortPermission, QT_TRANSLATE_NOOP("BusDoctor", "You may not open the port")},
+        {kPortBusy, QT_TRANSLATE_NOOP("BusDoctor", "Another program has the port")},
+        {kPortMissing, QT_TRANSLATE_NOOP("BusDoctor", "The port is not there")},
+        {kPortFailed, QT_TRANSLATE_NOOP("BusDoctor", "The port could not be opened")},
+        {kNoBytes, QT_TRANSLATE_NOOP("BusDoctor", "Nothing answers")},
+        {kUnframedBytes, QT_TRANSLATE_NOOP("BusDoctor", "Bytes come back, but no answer")},
+        {kPtkServo, QT_TRANSLATE_NOOP("BusDoctor", "A PTK servo, not a Feetech bus")},
+        {kNoServoFound, QT_TRANSLATE_NOOP("BusDoctor", "No servo found")},
+        {kUnexpectedId, QT_TRANSLATE_NOOP("BusDoctor", "A servo at an unexpected ID")},
+        {kUnexpectedBaud, QT_TRANSLATE_NOOP("BusDoctor", "A servo at another rate")},
+        {kChainBreak, QT_TRANSLATE_NOOP("BusDoctor", "The chain is broken")},
+        {kMissingServos, QT_TRANSLATE_NOOP("BusDoctor", "Servos are missing")},
+        {kSharedId, QT_TRANSLATE_NOOP("BusDoctor", "Two servos may share an ID")},
+        {kVoltage, QT_TRANSLATE_NOOP("BusDoctor", "The supply voltage is wrong")},
+    };
+    const auto title = titles.constFind(code);
+    return title == titles.cend() ? code : Tr::tr(*title);
+}
+
 QVector<DoctorFinding> diagnoseBus(const BusObservation &seen,
                                    const QVector<ExpectedServo> &expected)
 {

@@ -71,6 +71,10 @@ struct DoctorFinding
     QVector<ServoMove> moves; // what the GUI may offer to do about it
 };
 
+// What a finding's code means, as a short translated sentence: the title the Doctor panel shows
+// (the code stays for scripts and servoctl). An unknown code comes back as it is.
+QString doctorTitle(const QString &code);
+
 // Everything looked at on one port.
 struct BusObservation
 {

@@ -85,9 +85,9 @@ double Hand::hornAngle(int index, double position) const
     return position + (fullCircle(servo) ? servo.value(u"position_offset") : 0.0);
 }
 
-void Hand::place(int index, double horn)
+void Hand::place(int index, double horn, double stepsPerSecond)
 {
-    m_bus.servo(index).setPhysicalPosition(horn);
+    m_bus.servo(index).turnByHand(horn, stepsPerSecond);
 }
 
 bool Hand::turn(quint8 id, int position, SimRefusal *why)
@@ -101,8 +101,21 @@ bool Hand::turnServo(int index, int position, SimRefusal *why)
     if (!checkServo(index, {position}, why))
         return false;
     // A turn by hand ends a sweep of the same joint: one hand, one gesture.
+    const auto previous = std::find_if(m_turns.cbegin(), m_turns.cend(),
+                                       [index](const Turn &turn) { return turn.index == index; });
+    const Turn last = previous != m_turns.cend() ? *previous : Turn {index, 0.0, 0.0, -1};
     letGo(index);
-    place(index, hornAngle(index, position));
+    const double horn = hornAngle(index, position);
+    const qint64 nowUs = m_bus.nowUs();
+    double speed = 0.0;
+    if (last.atUs >= 0 && nowUs > last.atUs && nowUs - last.atUs <= kTurnGestureUs) {
+        double steps = horn - last.horn;
+        if (fullCircle(m_bus.servo(index))) // the short way, across the seam if need be
+            steps = std::remainder(steps, double(ServoMotion::kFullCircleSteps));
+        speed = steps / (double(nowUs - last.atUs) / 1e6);
+    }
+    m_turns.push_back(Turn {index, horn, speed, nowUs});
+    place(index, horn, speed);
     return true;
 }
 
@@ -145,12 +158,16 @@ void Hand::letGo(int index)
     m_sweeps.erase(std::remove_if(m_sweeps.begin(), m_sweeps.end(),
                                   [index](const Sweep &sweep) { return sweep.index == index; }),
                    m_sweeps.end());
+    m_turns.erase(std::remove_if(m_turns.begin(), m_turns.end(),
+                                 [index](const Turn &turn) { return turn.index == index; }),
+                  m_turns.end());
 }
 
 int Hand::stop()
 {
     const int stopped = int(m_sweeps.size());
     m_sweeps.clear();
+    m_turns.clear();
     return stopped;
 }
 
@@ -162,6 +179,16 @@ bool Hand::isSweeping(int index) const
 
 void Hand::advanceTo(qint64 nowUs)
 {
+    // A gesture goes on turning the horn until it pauses; the motor, free, stopped it meanwhile.
+    for (auto it = m_turns.begin(); it != m_turns.end();) {
+        if (nowUs - it->atUs > kTurnGestureUs || holdsTorque(it->index, nullptr)) {
+            it = m_turns.erase(it);
+            continue;
+        }
+        if (it->stepsPerSecond != 0.0)
+            place(it->index, it->horn, it->stepsPerSecond);
+        ++it;
+    }
     for (auto it = m_sweeps.begin(); it != m_sweeps.end();) {
         const Sweep &sweep = *it;
         SimRefusal resisted;
@@ -180,9 +207,13 @@ void Hand::advanceTo(qint64 nowUs)
             continue;
         }
         // A triangle wave: FROM to TO in the first half of each period, back in the second.
+        // The encoder sees the horn turn at the wave's slope, as a real servo turned by hand
+        // reports its speed and that it moves.
         const double phase = std::fmod(elapsed, sweep.periodUs) / sweep.periodUs;
         const double share = phase < 0.5 ? 2.0 * phase : 2.0 - 2.0 * phase;
-        place(sweep.index, sweep.from + (sweep.to - sweep.from) * share);
+        const double speed = 2.0 * (sweep.to - sweep.from) / (sweep.periodUs / 1e6);
+        place(sweep.index, sweep.from + (sweep.to - sweep.from) * share,
+              phase < 0.5 ? speed : -speed);
         ++it;
     }
 }
@@ -193,6 +224,10 @@ void Hand::servoUnplugged(int index)
     for (Sweep &sweep : m_sweeps) {
         if (sweep.index > index)
             --sweep.index;
+    }
+    for (Turn &turn : m_turns) {
+        if (turn.index > index)
+            --turn.index;
     }
 }
 

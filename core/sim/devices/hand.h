@@ -23,12 +23,17 @@ public:
     // or always upward / downward, crossing the 4095/0 seam when it has to (3900 up to 200).
     enum class Way { Direct, Up, Down };
     static constexpr double kMaxSweepSeconds = 3600.0;
+    // Turns of one horn this close together are one gesture (a slider dragged): the encoder
+    // sees the speed between them, for as long again after the last one.
+    static constexpr qint64 kTurnGestureUs = 250'000;
     static constexpr int kMaxSweepCycles = 1'000'000;
 
     explicit Hand(VirtualFeetechBus &bus);
     Hand(const Hand &) = delete;
     Hand &operator=(const Hand &) = delete;
 
+    // A turn soon after the last one of the same horn (kTurnGestureUs) carries on a gesture:
+    // the servo reports the speed between them, and that it moves, until the gesture pauses.
     // Positions are present positions, what the host reads (the horn less the position offset)
     // when the hand takes hold: 0-4095 on a full-circle servo, 0-1023 on an SCS. The hand then
     // holds the horn: an offset changed later changes the readings, not where the horn is, as on
@@ -71,18 +76,28 @@ private:
         int cycles = 0;
         qint64 startUs = 0;
     };
+    // The last turn of a horn by hand, while it may be part of a gesture.
+    struct Turn
+    {
+        int index = 0;
+        double horn = 0.0;
+        double stepsPerSecond = 0.0;
+        qint64 atUs = 0;
+    };
 
     // The servo exists, its torque is off and every position is in its range.
     bool checkServo(int index, std::initializer_list<int> positions, SimRefusal *why) const;
     bool holdsTorque(int index, SimRefusal *why) const;
     // The horn's angle for a present position, with the servo's offset now.
     double hornAngle(int index, double position) const;
-    void place(int index, double horn);
+    // Puts the horn at `horn`, turning at `stepsPerSecond` (0: held still there).
+    void place(int index, double horn, double stepsPerSecond = 0.0);
     void letGo(int index);
     QString describe(int index) const;
 
     VirtualFeetechBus &m_bus;
     std::vector<Sweep> m_sweeps;
+    std::vector<Turn> m_turns;
     QStringList m_notes;
 };
 

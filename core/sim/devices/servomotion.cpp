@@ -208,4 +208,10 @@ void ServoMotion::setPosition(double steps)
         m_fullCircle ? wrapFullCircle(steps) : std::clamp(steps, 0.0, double(kScsMaxPosition));
 }
 
+void ServoMotion::turnByHand(double steps, double stepsPerSecond)
+{
+    setPosition(steps);
+    m_velocity = stepsPerSecond;
+}
+
 } // namespace sim

@@ -90,7 +90,10 @@ public:
     void setExternalLoad(int permille); // signed, +-1000; |load| >= torque cap blocks the horn
     int externalLoad() const { return m_externalLoad; }
     void setTemperature(double celsius) { m_temperature = celsius; }
-    void setPosition(double steps); // turns the horn by hand
+    void setPosition(double steps); // puts the horn there at once
+    // A hand turning the free horn: at `steps` now, going `stepsPerSecond` (signed). The speed
+    // is what the encoder sees until the next step() of a motor that drives or holds.
+    void turnByHand(double steps, double stepsPerSecond);
     // Heat from outside the model (a stalled gearbox, a hot enclosure): the temperature rises
     // this much a second on top of the model's own heating, until set back to 0.
     void setTemperatureRise(double celsiusPerSecond) { m_extraHeatPerSecond = celsiusPerSecond; }

@@ -508,4 +508,10 @@ void VirtualFeetechServo::setPhysicalPosition(double steps)
     m_motor.report(m_registers);
 }
 
+void VirtualFeetechServo::turnByHand(double steps, double stepsPerSecond)
+{
+    m_motor.motion().turnByHand(steps, stepsPerSecond);
+    m_motor.report(m_registers);
+}
+
 } // namespace sim

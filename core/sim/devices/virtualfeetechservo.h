@@ -80,7 +80,9 @@ public:
     void setAmbientTemperature(double celsius);
     void setExternalLoad(int permille); // signed, ±1000; |load| ≥ torque limit blocks the horn
     void setTemperature(double celsius);
-    void setPhysicalPosition(double steps); // turns the horn by hand
+    void setPhysicalPosition(double steps); // puts the horn there at once
+    // The hand turns the horn: at `steps`, going `stepsPerSecond` now (present speed, moving).
+    void turnByHand(double steps, double stepsPerSecond);
     // The motor warms by this much a second on top of its own heating, until set to 0; at its
     // maximum temperature it trips as a real one does (torque off, status bit 0x04).
     void setTemperatureRise(double celsiusPerSecond)

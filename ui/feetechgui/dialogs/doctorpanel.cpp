@@ -18,6 +18,10 @@ namespace {
 
 const QString kExpectationKey = QStringLiteral("doctor/expectation");
 
+// The finding's title (what its code means) leads; the code itself, for scripts and servoctl
+// doctor --json, stays at the end in small grey letters.
+enum FindingColumn { TitleColumn, IdsColumn, MessageColumn, CodeColumn, FindingColumns };
+
 QString idsText(const QVector<int> &ids)
 {
     QStringList texts;
@@ -73,13 +77,16 @@ DoctorPanel::DoctorPanel(feetech::BusClient *client, QWidget *parent)
 
     m_list = new QTreeWidget(body);
     m_list->setObjectName(QStringLiteral("doctorFindings"));
-    m_list->setColumnCount(3);
-    m_list->setHeaderLabels({tr("Finding"), tr("IDs"), tr("What is wrong and what to do")});
+    m_list->setColumnCount(FindingColumns);
+    m_list->setHeaderLabels(
+        {tr("Finding"), tr("IDs"), tr("What is wrong and what to do"), tr("Code")});
     m_list->setRootIsDecorated(false);
     m_list->setWordWrap(true);
-    m_list->header()->setStretchLastSection(true);
-    m_list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    m_list->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_list->header()->setStretchLastSection(false);
+    m_list->header()->setSectionResizeMode(TitleColumn, QHeaderView::ResizeToContents);
+    m_list->header()->setSectionResizeMode(IdsColumn, QHeaderView::ResizeToContents);
+    m_list->header()->setSectionResizeMode(MessageColumn, QHeaderView::Stretch);
+    m_list->header()->setSectionResizeMode(CodeColumn, QHeaderView::ResizeToContents);
     connect(m_list, &QTreeWidget::currentItemChanged, this, &DoctorPanel::updateMove);
     layout->addWidget(m_list, 1);
 
@@ -128,9 +135,22 @@ void DoctorPanel::showFindings(const QString &port, const QVector<feetech::Docto
     m_findings = findings;
     m_list->clear();
     for (const feetech::DoctorFinding &finding : findings) {
-        auto *item =
-            new QTreeWidgetItem(m_list, {finding.code, idsText(finding.ids), finding.message});
-        item->setToolTip(2, finding.message);
+        auto *item = new QTreeWidgetItem(m_list,
+                                         {feetech::doctorTitle(finding.code), idsText(finding.ids),
+                                          finding.message, finding.code});
+        QFont title = item->font(TitleColumn);
+        title.setBold(true);
+        item->setFont(TitleColumn, title);
+        item->setToolTip(TitleColumn,
+                         tr("%1 (code %2)").arg(item->text(TitleColumn), finding.code));
+        item->setToolTip(MessageColumn, finding.message);
+        QFont code = item->font(CodeColumn);
+        if (code.pointSizeF() > 0)
+            code.setPointSizeF(code.pointSizeF() * 0.85);
+        item->setFont(CodeColumn, code);
+        item->setForeground(CodeColumn,
+                            m_list->palette().brush(QPalette::Disabled, QPalette::Text));
+        item->setToolTip(CodeColumn, tr("The finding's code, as servoctl doctor prints it"));
     }
     m_summary->setText(
         findings.isEmpty()

@@ -3,6 +3,7 @@
 #include "jointtable.h"
 
 #include "busclient.h"
+#include "identifyquestion.h"
 #include "jointtableposes.h"
 #include "jointtableview.h"
 #include "moveallplan.h"
@@ -298,6 +299,9 @@ void JointTable::rebuild()
         auto *identify = new QPushButton(tr("Identify"), m_table);
         identify->setObjectName(QStringLiteral("identifyButton"));
         connect(identify, &QPushButton::clicked, this, [this, servo = m_rows.at(row).servo] {
+            if (rowOf(servo) < 0 || !confirmIdentify(this, servoName(rowOf(servo))))
+                return;
+            // The question ran its own event loop: the row is looked up again after it.
             QString error;
             if (!this->identify(rowOf(servo), &error))
                 setMessage(error, Tone::Error);

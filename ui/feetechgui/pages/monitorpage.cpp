@@ -370,7 +370,8 @@ void MonitorPage::updateReadouts()
     m_readoutsDirty = false;
     QVector<MonitorReadouts::Row> rows;
     for (const Key &key : readoutKeys())
-        rows.append({key, m_plot->servoColor(key.id, key.baud)});
+        rows.append(
+            {key, m_plot->servoColor(key.id, key.baud), m_servoList->jointNames().label(key)});
     m_readouts->refresh(rows, m_stats, isRunning());
     updateStatusLine();
 }
@@ -391,6 +392,13 @@ void MonitorPage::hideEvent(QHideEvent *event)
 void MonitorPage::rebuildServoList()
 {
     m_servoList->rebuild(m_client);
+    QHash<Key, QString> names;
+    for (int index = 0; m_client && index < m_client->servos()->count(); ++index) {
+        const Key key = m_client->servos()->at(index).info.address();
+        if (!m_servoList->jointNames().joint(key).isEmpty())
+            names.insert(key, m_servoList->jointNames().label(key));
+    }
+    m_plot->setServoNames(names);
     m_unlisted.erase(std::remove_if(m_unlisted.begin(), m_unlisted.end(),
                                     [this](const Key &key) { return m_servoList->isListed(key); }),
                      m_unlisted.end());

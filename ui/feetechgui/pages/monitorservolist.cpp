@@ -32,11 +32,14 @@ void MonitorServoList::rebuild(const feetech::BusClient *client)
     m_updating = true;
     clear();
     const int servos = client ? client->servos()->count() : 0;
+    m_names = client ? feetech::JointNames::of(*client) : feetech::JointNames();
     for (int index = 0; index < servos; ++index) {
         const feetech::ServoInfo &info = client->servos()->at(index).info;
         const QString model = info.model.name.isEmpty() ? tr("unknown model") : info.model.name;
         auto *entry = new QListWidgetItem(
-            tr("ID %1 · %2 · %3").arg(info.id).arg(model, feetech::baudText(info.baud)), this);
+            tr("%1 · %2 · %3")
+                .arg(m_names.label(info.address()), model, feetech::baudText(info.baud)),
+            this);
         entry->setData(kIdRole, info.id);
         entry->setData(kBaudRole, info.baud);
         entry->setData(kIndexRole, index);

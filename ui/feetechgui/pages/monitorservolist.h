@@ -2,6 +2,7 @@
 // kept across a rescan by ID and baud rate.
 #pragma once
 
+#include "jointnames.h"
 #include "monitorreadouts.h"
 
 #include <QHash>
@@ -30,6 +31,8 @@ public:
     bool isListed(const feetech::ServoAddress &key) const;
     // Ticked or not, for each servo the list names.
     QHash<feetech::ServoAddress, bool> ticks() const;
+    // The joints the servos listed are, when they match a robot template (as of rebuild).
+    const feetech::JointNames &jointNames() const { return m_names; }
 
 signals:
     // The user ticked or unticked a servo, or setSelectedServos changed the ticks.
@@ -39,4 +42,5 @@ private:
     feetech::ServoAddress keyOf(const QListWidgetItem *item) const;
 
     bool m_updating = false; // our own check-state changes are not the user's
+    feetech::JointNames m_names;
 };

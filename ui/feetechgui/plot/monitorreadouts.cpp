@@ -99,7 +99,8 @@ void MonitorReadouts::refresh(const QVector<Row> &rows, const feetech::Telemetry
         }
 
         QStringList cells(ColumnCount);
-        cells[ServoColumn] = tr("ID %1").arg(key.id);
+        cells[ServoColumn] =
+            rows.at(row).name.isEmpty() ? tr("ID %1").arg(key.id) : rows.at(row).name;
         for (int q = 0; q < feetech::kQuantityCount; ++q) {
             const auto value = sample ? sample->values.at(std::size_t(q)) : std::nullopt;
             cells[PositionColumn + q] =

@@ -48,6 +48,7 @@ public:
     {
         feetech::ServoAddress key;
         QColor colour; // the servo's colour in the plot; invalid: none
+        QString name; // "shoulder_pan (ID 1)" on an arm; empty: "ID 1"
     };
 
     // `client` names the status bits by each servo's register table.

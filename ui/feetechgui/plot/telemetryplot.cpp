@@ -132,6 +132,14 @@ void TelemetryPlot::addSamples(const QVector<feetech::FeedbackSample> &samples)
         scheduleFrame();
 }
 
+void TelemetryPlot::setServoNames(const QHash<feetech::ServoAddress, QString> &names)
+{
+    if (m_painter.setServoNames(names)) {
+        m_layoutDirty = true; // the legends' width changes with the names
+        refresh();
+    }
+}
+
 void TelemetryPlot::refresh()
 {
     if (!m_paused) {

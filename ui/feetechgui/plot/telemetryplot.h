@@ -9,6 +9,7 @@
 #include "telemetrybuffer.h"
 #include "telemetryplotpainter.h"
 
+#include <QHash>
 #include <QList>
 #include <QPointF>
 #include <QRect>
@@ -68,6 +69,9 @@ public:
     // Forgets every buffered point; the next sample becomes time 0.
     void clear();
     void addSamples(const QVector<feetech::FeedbackSample> &samples);
+    // What the legends call the servos ("shoulder_pan (ID 1)" on an arm); one not named here
+    // is "ID 1".
+    void setServoNames(const QHash<feetech::ServoAddress, QString> &names);
 
     // Brings the view up to date now (the frame timer does this while data comes in).
     void refresh();

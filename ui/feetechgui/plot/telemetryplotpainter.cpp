@@ -108,8 +108,20 @@ QColor TelemetryPlotPainter::traceColour(int index)
     return kServoColours[index % kColourCount];
 }
 
+bool TelemetryPlotPainter::setServoNames(const QHash<feetech::ServoAddress, QString> &names)
+{
+    if (names == m_names)
+        return false;
+    m_names = names;
+    invalidateChrome();
+    return true;
+}
+
 QString TelemetryPlotPainter::seriesName(const TelemetryBuffer::Servo &servo) const
 {
+    const QString named = m_names.value({servo.id, servo.baud});
+    if (!named.isEmpty())
+        return named;
     // Servos on different baud rates may share an ID: only then does the name say the rate.
     bool shared = false;
     for (int i = 0; i < m_buffer.traceCount(); ++i) {

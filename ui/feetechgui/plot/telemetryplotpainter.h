@@ -63,6 +63,8 @@ public:
     const std::vector<Pane> &panes() const { return m_panes; }
     // The buffer's servos changed: the legends name them and each pane has a trace per servo.
     void tracesChanged();
+    // What the legends call the servos; false when they were already called so.
+    bool setServoNames(const QHash<feetech::ServoAddress, QString> &names);
     // A trace's colour, by its index in the buffer.
     static QColor traceColour(int index);
 
@@ -98,6 +100,7 @@ private:
     const QWidget &m_surface;
     const TelemetryBuffer &m_buffer;
     std::vector<Pane> m_panes;
+    QHash<feetech::ServoAddress, QString> m_names;
     QRegion m_frameRegion;
     bool m_chromeValid = false;
     int m_laidOutMargin = -1; // the left margin the panes were placed with

@@ -6,6 +6,8 @@
 #include "batchresultdialog.h"
 #include "busclient.h"
 #include "feetechworkspace.h"
+#include "identifyquestion.h"
+#include "jointnames.h"
 #include "profileactions.h"
 #include "robottemplate.h"
 #include "robottemplatedialog.h"
@@ -32,8 +34,18 @@ RobotActions::RobotActions(feetech::BusClient *client, FeetechWorkspace *workspa
     m_saveTemplate = new QAction(tr("&Save as robot template…"), this);
     m_saveTemplate->setObjectName(QStringLiteral("saveRobotTemplateAction"));
     connect(m_identify, &QAction::triggered, this, [this] {
+        const int index = m_workspace->currentIndex();
+        if (index < 0 || index >= m_client->servos()->count())
+            return;
+        const feetech::ServoAddress servo = m_client->servos()->at(index).info.address();
+        const feetech::JointNames joints = feetech::JointNames::of(*m_client);
+        const QString name =
+            joints.joint(servo).isEmpty() ? tr("servo ID %1").arg(servo.id) : joints.label(servo);
+        if (!confirmIdentify(m_workspace, name))
+            return;
+        // The question runs its own event loop: the servo is looked up again after it.
         feetech::Refusal refusal;
-        if (!identify(m_workspace->currentIndex(), &refusal))
+        if (!identify(m_client->servos()->indexOf(servo), &refusal))
             emit problem(refusal.describe());
     });
     connect(m_applyProfile, &QAction::triggered, this, &RobotActions::chooseProfileToApply);

@@ -2,6 +2,7 @@
 #include "servotree.h"
 
 #include "busclient.h"
+#include "jointnames.h"
 #include "palette.h"
 
 #include <QHeaderView>
@@ -59,7 +60,13 @@ void ServoTree::rebuild(const std::optional<feetech::ServoAddress> &current)
     clear();
     if (m_client->servos()->count() == 0)
         return;
+    // An arm that matches a robot template has its servos named by joint.
+    const feetech::JointNames joints = feetech::JointNames::of(*m_client);
     auto *port = new QTreeWidgetItem(this, {m_portName.isEmpty() ? tr("Bus") : m_portName});
+    if (!joints.isEmpty())
+        port->setToolTip(ServoColumn,
+                         tr("The servos are the joints of the %1")
+                             .arg(feetech::robotDisplayName(joints.robot())));
     QTreeWidgetItem *baudItem = nullptr;
     qint32 baud = 0;
     QTreeWidgetItem *selected = nullptr;
@@ -73,7 +80,7 @@ void ServoTree::rebuild(const std::optional<feetech::ServoAddress> &current)
         const QString family =
             info.model.family ? feetech::familyName(*info.model.family) : tr("unknown");
         const QString idText =
-            info.sharedId ? tr("ID %1 (shared!)").arg(info.id) : tr("ID %1").arg(info.id);
+            info.sharedId ? tr("ID %1 (shared!)").arg(info.id) : joints.label(info.address());
         auto *item =
             new QTreeWidgetItem(baudItem, {idText, info.model.name, family, info.firmware()});
         const std::optional<quint8> status = m_client->servos()->at(i).statusByte;

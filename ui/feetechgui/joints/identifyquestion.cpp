@@ -1,0 +1,29 @@
+// Identify's question: what moves, how, and that it is put back.
+#include "identifyquestion.h"
+
+#include "jointidentify.h"
+#include "skippablequestion.h"
+
+#include <QCoreApplication>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(IdentifyQuestion)
+};
+
+} // namespace
+
+bool confirmIdentify(QWidget *parent, const QString &servo)
+{
+    const SkippableQuestion question(QStringLiteral("identify"), Tr::tr("Identify a servo"),
+                                     Tr::tr("Move it"));
+    return question.ask(
+        parent,
+        Tr::tr("Identify moves %1: its torque comes on and it turns %2 steps each way, slowly "
+               "and with little torque, then goes back where it was, its settings as before."
+               "\n\nKeep hands and objects clear of the arm. Move it now?")
+            .arg(servo)
+            .arg(feetech::JointIdentify::kAmplitude));
+}
