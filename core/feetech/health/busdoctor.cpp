@@ -323,7 +323,7 @@ QString doctorTitle(const QString &code)
         {kVoltage, QT_TRANSLATE_NOOP("BusDoctor", "The supply voltage is wrong")},
     };
     const auto title = titles.constFind(code);
-    return title == titles.cend() ? code : Tr::tr(*title);
+    return title == titles.cend() ? code : BusDoctorTr::tr(*title);
 }
 
 QVector<DoctorFinding> diagnoseBus(const BusObservation &seen,

@@ -8,7 +8,7 @@
 
 namespace {
 
-struct Tr
+struct IdentifyQuestionTr
 {
     Q_DECLARE_TR_FUNCTIONS(IdentifyQuestion)
 };
@@ -17,13 +17,15 @@ struct Tr
 
 bool confirmIdentify(QWidget *parent, const QString &servo)
 {
-    const SkippableQuestion question(QStringLiteral("identify"), Tr::tr("Identify a servo"),
-                                     Tr::tr("Move it"));
+    const SkippableQuestion question(QStringLiteral("identify"),
+                                     IdentifyQuestionTr::tr("Identify a servo"),
+                                     IdentifyQuestionTr::tr("Move it"));
     return question.ask(
         parent,
-        Tr::tr("Identify moves %1: its torque comes on and it turns %2 steps each way, slowly "
-               "and with little torque, then goes back where it was, its settings as before."
-               "\n\nKeep hands and objects clear of the arm. Move it now?")
+        IdentifyQuestionTr::tr(
+            "Identify moves %1: its torque comes on and it turns %2 steps each way, slowly "
+            "and with little torque, then goes back where it was, its settings as before."
+            "\n\nKeep hands and objects clear of the arm. Move it now?")
             .arg(servo)
             .arg(feetech::JointIdentify::kAmplitude));
 }
