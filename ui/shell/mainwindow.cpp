@@ -33,6 +33,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
+#include <QDockWidget>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
@@ -42,6 +43,7 @@
 #include <QScreen>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -68,6 +70,16 @@ QString stateColour(seriallink::ConnectionState state)
         break;
     }
     return QStringLiteral("#555555");
+}
+
+// The height of the tabs under docks tabbed together, as the main window draws them.
+int dockTabBarHeight(const QDockWidget *dock)
+{
+    QTabBar probe;
+    probe.setFont(dock->font());
+    probe.setDrawBase(true);
+    probe.addTab(dock->windowTitle());
+    return probe.sizeHint().height();
 }
 
 } // namespace
@@ -479,7 +491,10 @@ void MainWindow::showSimulator(sim::SimulatorThread *simulator)
         addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
         // A tab beside the packet log: the pages above keep their height.
         tabifyDockWidget(m_packetLog, m_simulatorDock);
-        resizeDocks({m_simulatorDock}, {m_simulatorDock->startingHeight()}, Qt::Vertical);
+        // The group's height holds the dock's tabs under it as well.
+        resizeDocks({m_simulatorDock},
+                    {m_simulatorDock->startingHeight() + dockTabBarHeight(m_simulatorDock)},
+                    Qt::Vertical);
         m_viewMenu->addAction(m_simulatorDock->toggleViewAction());
         connect(m_simulatorDock, &SimulatorDock::message, this,
                 [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
@@ -696,7 +711,10 @@ void MainWindow::createDoctor()
 {
     m_doctor = new DoctorPanel(m_feetech.get(), this);
     addDockWidget(Qt::BottomDockWidgetArea, m_doctor);
-    m_doctor->hide(); // a tab beside the packet log once it first opens
+    // A tab beside the packet log however it opens (View > Doctor too): the pages above keep
+    // their height, and the window its least height.
+    tabifyDockWidget(m_packetLog, m_doctor);
+    m_doctor->hide();
     m_viewMenu->addAction(m_doctor->toggleViewAction());
     connect(m_doctor, &DoctorPanel::problem, this, &MainWindow::showProblem);
     connect(m_doctor, &DoctorPanel::message, this,

@@ -17,10 +17,11 @@ QPushButton *actionButton(const QString &text, const char *name, const QString &
     return button;
 }
 
-void shrinkToOneRow(QTableView *view)
+void shrinkToRows(QTableView *view, int rows)
 {
     view->setMinimumHeight(view->horizontalHeader()->sizeHint().height()
-                           + view->verticalHeader()->defaultSectionSize() + 2 * view->frameWidth());
+                           + rows * view->verticalHeader()->defaultSectionSize()
+                           + 2 * view->frameWidth());
 }
 
 QString stepList(const QStringList &steps)
