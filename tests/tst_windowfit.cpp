@@ -20,6 +20,7 @@
 #include <QMenuBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -202,6 +203,10 @@ private:
                                 .arg(scroll->viewport()->height())
                                 .arg(needed.height())));
         QVERIFY(scroll->viewport()->width() >= needed.width());
+        // A note of one line does not make it scroll either.
+        QVERIFY(dock->powerCycle());
+        settle();
+        QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);
     }
 
 private slots:
