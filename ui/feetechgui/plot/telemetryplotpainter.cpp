@@ -163,14 +163,8 @@ void TelemetryPlotPainter::fitToView(double from, double to)
 TelemetryPlotPainter::Ticks TelemetryPlotPainter::chooseTicks(double low, double high,
                                                               int height) const
 {
-    // About one value label per 35 pixels. A pane a few lines high still gets three labels,
-    // wherever three fit one above the other (the outer two hang half outside the plot area):
-    // one label says nothing of the scale.
-    const int fitting = height / QFontMetrics(m_surface.font()).height() + 1;
-    const int intervals = std::clamp(height / 35, 2, 8);
-    const int leastLabels = std::min(kLeastLabels, fitting);
-    // Bounds snap to a quarter of a label step, so the scale stays put while the data wanders
-    // a little.
+    // About one value label per 35 pixels. Bounds snap to a quarter of a label step, so the
+    // scale stays put while the data wanders a little.
     const auto snapped = [low, high](double step) {
         Ticks ticks;
         ticks.step = step;
@@ -179,17 +173,23 @@ TelemetryPlotPainter::Ticks TelemetryPlotPainter::chooseTicks(double low, double
         ticks.to = std::ceil(high / quantum) * quantum;
         return ticks;
     };
-    Ticks ticks = snapped(niceStep((high - low) / intervals));
-    // The next smaller step of 1, 2 and 5 times a power of ten while too few labels show, the
-    // next larger while they would overlap; a few steps at most either way.
-    for (int i = 0; i < kMaxStepChanges && labelledValues(ticks).size() < leastLabels; ++i)
-        ticks = snapped(niceStep(ticks.step * 0.4));
-    for (int i = 0; i < kMaxStepChanges && labelledValues(ticks).size() > fitting; ++i) {
-        const Ticks wider = snapped(niceStep(ticks.step * 1.5));
-        if (labelledValues(wider).size() < leastLabels)
+    // Labels a line apart at the least, or they overlap.
+    const int lineHeight = QFontMetrics(m_surface.font()).height();
+    const auto apart = [height, lineHeight](const Ticks &ticks) {
+        return ticks.step / (ticks.to - ticks.from) * height >= lineHeight;
+    };
+    Ticks ticks = snapped(niceStep((high - low) / std::clamp(height / 35, 2, 8)));
+    // A pane a few lines high still gets three labels where three fit a line apart: one label
+    // says nothing of the scale. The next smaller step of 1, 2 and 5 times a power of ten
+    // while too few show, the next larger while they would overlap.
+    for (int i = 0; i < kMaxStepChanges && labelledValues(ticks).size() < kLeastLabels; ++i) {
+        const Ticks closer = snapped(niceStep(ticks.step * 0.4));
+        if (!apart(closer))
             break;
-        ticks = wider;
+        ticks = closer;
     }
+    for (int i = 0; i < kMaxStepChanges && !apart(ticks); ++i)
+        ticks = snapped(niceStep(ticks.step * 1.5));
     return ticks;
 }
 
