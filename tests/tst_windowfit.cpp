@@ -104,6 +104,10 @@ private:
         if (!toggle->isChecked())
             toggle->trigger();
         QVERIFY(m_window->doctorPanel()->isVisible());
+        // A tab beside the packet log, in front.
+        QVERIFY(
+            m_window->tabifiedDockWidgets(m_window->packetLog()).contains(m_window->doctorPanel()));
+        QTRY_VERIFY(!m_window->doctorPanel()->visibleRegion().isEmpty());
     }
 
     // Every banner and note the window and the Feetech pages can show at once, with a long

@@ -716,6 +716,11 @@ void MainWindow::createDoctor()
     tabifyDockWidget(m_packetLog, m_doctor);
     m_doctor->hide();
     m_viewMenu->addAction(m_doctor->toggleViewAction());
+    // Opened from the View menu, its tab comes to the front.
+    connect(m_doctor->toggleViewAction(), &QAction::triggered, m_doctor, [this](bool shown) {
+        if (shown)
+            m_doctor->raise();
+    });
     connect(m_doctor, &DoctorPanel::problem, this, &MainWindow::showProblem);
     connect(m_doctor, &DoctorPanel::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, kDoctorMessageMs); });
