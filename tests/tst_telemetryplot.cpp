@@ -106,6 +106,43 @@ private slots:
             QVERIFY(shown.at(i - 1).x() <= shown.at(i).x()); // still in time order
     }
 
+    void aShortPaneStillLabelsThreeValuesThatDoNotOverlap()
+    {
+        // An arm's joints far apart (890 to 3070 steps) in panes a few lines high, as the
+        // Monitor has them in a short window: one label would say nothing of the scale.
+        m_plot->setQuantities({Quantity::Position, Quantity::Speed, Quantity::Load});
+        m_plot->resize(800, 270);
+        for (int i = 0; i < 20; ++i) {
+            m_plot->addSamples({testsupport::feedbackSample(1, 1000000 + i * 10000, 890),
+                                testsupport::feedbackSample(2, 1000000 + i * 10000, 3070)});
+        }
+        settle();
+        const QRect area = m_plot->plotArea(Quantity::Position);
+        const int lineHeight = m_plot->fontMetrics().height();
+        QVERIFY2(area.height() < 3 * lineHeight, qPrintable(QString::number(area.height())));
+        const QVector<double> labels = m_plot->valueLabels(Quantity::Position);
+        QVERIFY2(labels.size() >= 3, qPrintable(QString::number(labels.size())));
+        const auto [from, to] = m_plot->valueRange(Quantity::Position);
+        QVERIFY(from <= 890 && to >= 3070);
+        const double pixelsApart = (labels.at(1) - labels.at(0)) / (to - from) * area.height();
+        QVERIFY2(pixelsApart >= lineHeight, qPrintable(QString::number(pixelsApart)));
+    }
+
+    void aTallPaneKeepsAboutOneLabelPer35Pixels()
+    {
+        m_plot->setQuantities({Quantity::Position});
+        m_plot->resize(800, 500);
+        for (int i = 0; i < 20; ++i) {
+            m_plot->addSamples({testsupport::feedbackSample(1, 1000000 + i * 10000, 890),
+                                testsupport::feedbackSample(2, 1000000 + i * 10000, 3070)});
+        }
+        settle();
+        const int height = m_plot->plotArea(Quantity::Position).height();
+        const int labels = int(m_plot->valueLabels(Quantity::Position).size());
+        QVERIFY2(labels >= 5 && labels <= height / 35 + 2,
+                 qPrintable(QStringLiteral("%1 labels in %2 px").arg(labels).arg(height)));
+    }
+
     void manySamplesWithinOneFrameGiveOnePaint()
     {
         feed(*m_plot, 1000000, 5);

@@ -171,7 +171,9 @@ PacketLogDock::PacketLogDock(QWidget *parent)
     m_view->setColumnWidth(PacketLogModel::ErrorColumn, metrics.averageCharWidth() * 30);
     header->setStretchLastSection(false);
     header->setSectionResizeMode(PacketLogModel::MeaningColumn, QHeaderView::Stretch);
-    widgethelpers::shrinkToOneRow(m_view);
+    // A few frames in sight however short the window (the meaning column stretches: no
+    // horizontal scroll bar takes their place).
+    widgethelpers::shrinkToRows(m_view, kLeastRows);
     layout->addWidget(m_view);
     setWidget(content);
 

@@ -21,6 +21,9 @@ class PacketLogDock : public QDockWidget
     Q_OBJECT
 
 public:
+    // Frames the log shows at the least, however short the window.
+    static constexpr int kLeastRows = 3;
+
     explicit PacketLogDock(QWidget *parent = nullptr);
 
     // The dock owns its model; the main window feeds it from the link's packet log signal.

@@ -34,6 +34,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
+#include <QDockWidget>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
@@ -43,6 +44,7 @@
 #include <QScreen>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -69,6 +71,16 @@ QString stateColour(seriallink::ConnectionState state)
         break;
     }
     return QStringLiteral("#555555");
+}
+
+// The height of the tabs under docks tabbed together, as the main window draws them.
+int dockTabBarHeight(const QDockWidget *dock)
+{
+    QTabBar probe;
+    probe.setFont(dock->font());
+    probe.setDrawBase(true);
+    probe.addTab(dock->windowTitle());
+    return probe.sizeHint().height();
 }
 
 } // namespace
@@ -494,7 +506,10 @@ void MainWindow::showSimulator(sim::SimulatorThread *simulator)
         addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
         // A tab beside the packet log: the pages above keep their height.
         tabifyDockWidget(m_packetLog, m_simulatorDock);
-        resizeDocks({m_simulatorDock}, {m_simulatorDock->startingHeight()}, Qt::Vertical);
+        // The group's height holds the dock's tabs under it as well.
+        resizeDocks({m_simulatorDock},
+                    {m_simulatorDock->startingHeight() + dockTabBarHeight(m_simulatorDock)},
+                    Qt::Vertical);
         m_viewMenu->addAction(m_simulatorDock->toggleViewAction());
         connect(m_simulatorDock, &SimulatorDock::message, this,
                 [this](const QString &text) { statusBar()->showMessage(text, kStatusMessageMs); });
@@ -711,8 +726,16 @@ void MainWindow::createDoctor()
 {
     m_doctor = new DoctorPanel(m_feetech.get(), this);
     addDockWidget(Qt::BottomDockWidgetArea, m_doctor);
-    m_doctor->hide(); // a tab beside the packet log once it first opens
+    // A tab beside the packet log however it opens (View > Doctor too): the pages above keep
+    // their height, and the window its least height.
+    tabifyDockWidget(m_packetLog, m_doctor);
+    m_doctor->hide();
     m_viewMenu->addAction(m_doctor->toggleViewAction());
+    // Opened from the View menu, its tab comes to the front.
+    connect(m_doctor->toggleViewAction(), &QAction::triggered, m_doctor, [this](bool shown) {
+        if (shown)
+            m_doctor->raise();
+    });
     connect(m_doctor, &DoctorPanel::problem, this, &MainWindow::showProblem);
     connect(m_doctor, &DoctorPanel::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, kDoctorMessageMs); });

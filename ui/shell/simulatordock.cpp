@@ -63,6 +63,9 @@ SimulatorDock::SimulatorDock(QWidget *parent)
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setToolTip(tr("The servos on the simulated bus, as they are now"));
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &SimulatorDock::updateSelection);
+    // As tall as the controls beside it, never taller: once a note wraps, the scroll area sizes
+    // the dock's content by its preferred height, and the table's would make it scroll.
+    m_table->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
     layout->addWidget(m_table, 3);
 
     auto *controls = new QVBoxLayout;
@@ -73,6 +76,12 @@ SimulatorDock::SimulatorDock(QWidget *parent)
     m_note->setObjectName(QStringLiteral("simulatorNote"));
     m_note->setWordWrap(true);
     m_note->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // A line kept for it from the start, measured on a note in the language shown (a Chinese
+    // line is taller than a Latin one): the dock's starting height has room for the first note,
+    // which then shows without a scroll bar.
+    m_note->setText(tr("Power-cycled the simulated bus."));
+    m_note->setMinimumHeight(m_note->sizeHint().height());
+    m_note->clear();
     controls->addWidget(m_note);
     controls->addStretch();
     layout->addLayout(controls, 4);

@@ -25,10 +25,11 @@ QLabel *wrappedLabel(const QString &text, QWidget *parent)
     return label;
 }
 
-void shrinkToOneRow(QTableView *view)
+void shrinkToRows(QTableView *view, int rows)
 {
     view->setMinimumHeight(view->horizontalHeader()->sizeHint().height()
-                           + view->verticalHeader()->defaultSectionSize() + 2 * view->frameWidth());
+                           + rows * view->verticalHeader()->defaultSectionSize()
+                           + 2 * view->frameWidth());
 }
 
 QString stepList(const QStringList &steps)

@@ -16,10 +16,10 @@ namespace widgethelpers {
 QPushButton *actionButton(const QString &text, const char *name, const QString &tip,
                           QWidget *parent);
 
-// Lets a table shrink to its header and one row (its own minimum, with room for scroll bars, is
-// some 30 pixels more): on a 1366x768 screen the pages need the height. Call it once the rows'
-// default height is set.
-void shrinkToOneRow(QTableView *view);
+// Lets a table shrink to its header and `rows` rows (its own minimum, with room for scroll bars,
+// is some 30 pixels more than one): on a 1366x768 screen the pages need the height. Call it once
+// the rows' default height is set.
+void shrinkToRows(QTableView *view, int rows = 1);
 
 // A label that wraps its text, so a long sentence (or its translation) takes lines, not width.
 QLabel *wrappedLabel(const QString &text, QWidget *parent);

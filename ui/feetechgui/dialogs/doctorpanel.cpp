@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -73,6 +74,18 @@ DoctorPanel::DoctorPanel(feetech::BusClient *client, QWidget *parent)
     connect(m_expectation, &QComboBox::currentIndexChanged, this,
             [this] { QSettings().setValue(kExpectationKey, m_expectation->currentData()); });
     expectRow->addWidget(m_expectation, 1);
+    // On the expectation's row, not under the findings: in a dock a few rows high they stay in
+    // sight.
+    m_rescan = new QPushButton(tr("Re-scan"), body);
+    m_rescan->setObjectName(QStringLiteral("doctorRescanButton"));
+    m_rescan->setToolTip(tr("Ask the port again and scan the rates that answer"));
+    connect(m_rescan, &QPushButton::clicked, this, &DoctorPanel::rescanRequested);
+    expectRow->addWidget(m_rescan);
+    m_move = new QPushButton(tr("Move the servo"), body);
+    m_move->setObjectName(QStringLiteral("doctorMoveButton"));
+    m_move->setEnabled(false);
+    connect(m_move, &QPushButton::clicked, this, [this] { moveSelected(); });
+    expectRow->addWidget(m_move);
     layout->addLayout(expectRow);
 
     m_list = new QTreeWidget(body);
@@ -90,20 +103,13 @@ DoctorPanel::DoctorPanel(feetech::BusClient *client, QWidget *parent)
     connect(m_list, &QTreeWidget::currentItemChanged, this, &DoctorPanel::updateMove);
     layout->addWidget(m_list, 1);
 
-    auto *buttons = new QHBoxLayout;
-    m_rescan = new QPushButton(tr("Re-scan"), body);
-    m_rescan->setObjectName(QStringLiteral("doctorRescanButton"));
-    m_rescan->setToolTip(tr("Ask the port again and scan the rates that answer"));
-    connect(m_rescan, &QPushButton::clicked, this, &DoctorPanel::rescanRequested);
-    buttons->addWidget(m_rescan);
-    m_move = new QPushButton(tr("Move the servo"), body);
-    m_move->setObjectName(QStringLiteral("doctorMoveButton"));
-    m_move->setEnabled(false);
-    connect(m_move, &QPushButton::clicked, this, [this] { moveSelected(); });
-    buttons->addWidget(m_move);
-    buttons->addStretch(1);
-    layout->addLayout(buttons);
-    setWidget(body);
+    // A dock a few rows high scrolls its controls rather than make the window taller than a
+    // 1366x768 screen.
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(body);
+    setWidget(scroll);
 }
 
 QVector<feetech::ExpectedServo> DoctorPanel::expected(const QString &port) const

@@ -18,6 +18,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QStackedWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -58,7 +59,16 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
                                      QMessageBox::Yes | QMessageBox::No, QMessageBox::No)
             == QMessageBox::Yes;
     };
-    auto *layout = new QVBoxLayout(this);
+    // The page scrolls in a short window rather than make it taller than a 1366x768 screen.
+    auto *outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("healthScrollArea"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    outer->addWidget(scroll);
+    auto *body = new QWidget(scroll);
+    auto *layout = new QVBoxLayout(body);
     auto *intro = new QLabel(
         tr("Checks each servo: firmware, voltage and temperature against its own limits, status "
            "bits, load, %1 reads for communication quality, position against its angle limits. "
@@ -119,6 +129,7 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
     m_settings = new SettingsCheckPanel(m_client, settings);
     settingsLayout->addWidget(m_settings);
     layout->addWidget(settings, 1);
+    scroll->setWidget(body);
     connect(m_settings, &SettingsCheckPanel::message, this, &HealthPage::message);
 
     connect(m_check, &QPushButton::clicked, this, [this] { check(); });

@@ -49,7 +49,9 @@ MonitorReadouts::MonitorReadouts(feetech::BusClient *client, QWidget *parent)
         ->setToolTip(tr("Cycles in which the servo was asked and did not answer"));
     verticalHeader()->hide();
     verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
-    widgethelpers::shrinkToOneRow(this);
+    // A few servos in sight however short the window, above the scroll bar the columns need.
+    widgethelpers::shrinkToRows(this, kLeastRows);
+    setMinimumHeight(minimumHeight() + style()->pixelMetric(QStyle::PM_ScrollBarExtent));
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setAlternatingRowColors(true);

@@ -41,6 +41,9 @@ public:
         ColumnCount
     };
 
+    // Rows the readouts show at the least, however short the window.
+    static constexpr int kLeastRows = 3;
+
     // A tripped protection bit, a servo that stopped answering, a failed stream.
     static inline const QColor kProblemColour {0xc0, 0x1c, 0x1c};
 

@@ -313,6 +313,15 @@ std::pair<double, double> TelemetryPlot::valueRange(feetech::Quantity quantity) 
     return {0.0, 0.0};
 }
 
+QVector<double> TelemetryPlot::valueLabels(feetech::Quantity quantity) const
+{
+    for (const TelemetryPlotPainter::Pane &pane : m_painter.panes()) {
+        if (pane.quantity == quantity)
+            return TelemetryPlotPainter::labelledValues(pane.values);
+    }
+    return {};
+}
+
 void TelemetryPlot::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
@@ -432,7 +441,8 @@ TelemetryBuffer::Retention TelemetryPlot::retention() const
 void TelemetryPlot::rebuildPanes()
 {
     m_painter.setQuantities(m_quantities);
-    setMinimumHeight(int(m_painter.panes().size()) * kMinimumPaneHeight);
+    setMinimumHeight(std::min(int(m_painter.panes().size()), kPanesInLeastHeight)
+                     * kMinimumPaneHeight);
     updateGeometry();
     m_layoutDirty = true;
     onServosChanged();

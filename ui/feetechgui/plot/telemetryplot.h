@@ -35,8 +35,11 @@ public:
     // Frames per second at most: one per screen refresh, and no more than this, which keeps a
     // scrolling trace smooth (data comes in batches every 20 ms) at half the cost of 60.
     static constexpr int kMaxFramesPerSecond = 30;
-    // The least height of one quantity's pane, in pixels.
-    static constexpr int kMinimumPaneHeight = 110;
+    // The least height of one quantity's pane, in pixels: its title and a few value labels.
+    static constexpr int kMinimumPaneHeight = 56;
+    // The plot's least height holds this many panes; more panes share it in a short window
+    // rather than push the window off a 1366x768 screen (the readouts below keep their rows).
+    static constexpr int kPanesInLeastHeight = 2;
 
     explicit TelemetryPlot(QWidget *parent = nullptr);
     ~TelemetryPlot() override;
@@ -93,6 +96,8 @@ public:
     // the quantity is not shown), and the value range its axis spans.
     QRect plotArea(feetech::Quantity quantity) const;
     std::pair<double, double> valueRange(feetech::Quantity quantity) const;
+    // The values its axis labels, lowest first.
+    QVector<double> valueLabels(feetech::Quantity quantity) const;
     QColor servoColor(quint8 id, qint32 baud = 0) const;
     qint64 paintCount() const { return m_paintCount; }
     // A repaint is due at the next frame.

@@ -29,6 +29,8 @@ constexpr int kPaneSpacing = 6;
 constexpr int kRightMargin = 18; // room for half of the last time label
 constexpr int kLabelGap = 6; // between a value label and the plot area
 constexpr int kMaxTicks = 40;
+constexpr int kLeastLabels = 3;
+constexpr int kMaxStepChanges = 4;
 constexpr int kLabelCacheSize = 512;
 
 // Grid lines: a faint shade of the text colour over the plot's background, made opaque.
@@ -153,14 +155,7 @@ void TelemetryPlotPainter::fitToView(double from, double to)
             const double span = high - low;
             const double margin =
                 span > 0.0 ? span * kValueMargin : std::max(1.0, std::abs(low) * kValueMargin);
-            // About one value label per 35 pixels. Bounds snap to a quarter of a label step,
-            // so the scale stays put while the data wanders a little.
-            const int intervals = std::clamp(pane.area.height() / 35, 2, 8);
-            Ticks ticks;
-            ticks.step = niceStep((span + 2.0 * margin) / intervals);
-            const double quantum = ticks.step / 4.0;
-            ticks.from = std::floor((low - margin) / quantum) * quantum;
-            ticks.to = std::ceil((high + margin) / quantum) * quantum;
+            const Ticks ticks = chooseTicks(low - margin, high + margin, pane.area.height());
             if (ticks.from != pane.values.from || ticks.to != pane.values.to
                 || ticks.step != pane.values.step) {
                 pane.values = ticks;
@@ -175,6 +170,47 @@ void TelemetryPlotPainter::fitToView(double from, double to)
             return;
         layoutPanes();
     }
+}
+
+TelemetryPlotPainter::Ticks TelemetryPlotPainter::chooseTicks(double low, double high,
+                                                              int height) const
+{
+    // About one value label per 35 pixels. Bounds snap to a quarter of a label step, so the
+    // scale stays put while the data wanders a little.
+    const auto snapped = [low, high](double step) {
+        Ticks ticks;
+        ticks.step = step;
+        const double quantum = step / 4.0;
+        ticks.from = std::floor(low / quantum) * quantum;
+        ticks.to = std::ceil(high / quantum) * quantum;
+        return ticks;
+    };
+    // Labels a line apart at the least, or they overlap.
+    const int lineHeight = QFontMetrics(m_surface.font()).height();
+    const auto apart = [height, lineHeight](const Ticks &ticks) {
+        return ticks.step / (ticks.to - ticks.from) * height >= lineHeight;
+    };
+    Ticks ticks = snapped(niceStep((high - low) / std::clamp(height / 35, 2, 8)));
+    // A pane a few lines high still gets three labels where three fit a line apart: one label
+    // says nothing of the scale. The next smaller step of 1, 2 and 5 times a power of ten
+    // while too few show, the next larger while they would overlap.
+    for (int i = 0; i < kMaxStepChanges && labelledValues(ticks).size() < kLeastLabels; ++i) {
+        const Ticks closer = snapped(niceStep(ticks.step * 0.4));
+        if (!apart(closer))
+            break;
+        ticks = closer;
+    }
+    for (int i = 0; i < kMaxStepChanges && !apart(ticks); ++i)
+        ticks = snapped(niceStep(ticks.step * 1.5));
+    return ticks;
+}
+
+QVector<double> TelemetryPlotPainter::labelledValues(const Ticks &ticks)
+{
+    QVector<double> values;
+    forEachTick(ticks.from, ticks.to, ticks.step,
+                [&values](double value) { values.append(value); });
+    return values;
 }
 
 int TelemetryPlotPainter::leftMargin() const

@@ -58,6 +58,9 @@ public:
     // Paints on `surface` (its size, font and palette) the traces of `buffer`; both outlive it.
     TelemetryPlotPainter(const QWidget &surface, const TelemetryBuffer &buffer);
 
+    // The values an axis labels, lowest first.
+    static QVector<double> labelledValues(const Ticks &ticks);
+
     // One pane each, in this order.
     void setQuantities(const QVector<feetech::Quantity> &quantities);
     const std::vector<Pane> &panes() const { return m_panes; }
@@ -88,6 +91,8 @@ public:
     void paint(QPainter &painter, const QRegion &exposed, const View &view);
 
 private:
+    // The labels of an axis over [low, high] that is `height` pixels high.
+    Ticks chooseTicks(double low, double high, int height) const;
     int leftMargin() const;
     QString seriesName(const TelemetryBuffer::Servo &servo) const;
     // What stays put as time goes by: frames, titles, legends, value labels.
