@@ -283,7 +283,6 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
         transaction.replyTimeout = allowance(int(ids.size()), baud, int(transaction.request.size()),
                                              transaction.expectedReplySize);
         transaction.logFailuresOnly = !m_state->options.logEveryFrame;
-        transaction.timeoutIsNote = true;
         transaction.leavesAtOnce = true;
         auto answered = std::make_shared<QVector<bool>>(ids.size(), false);
         // Each answer is decoded once, as it is accepted, and kept for the end of the read.
@@ -402,7 +401,6 @@ TelemetryCycle::CycleStep TelemetryCycle::read(int servoIndex, bool probe)
         transaction.replyTimeout = allowance(1, servo.info.baud, int(transaction.request.size()),
                                              transaction.expectedReplySize);
         transaction.logFailuresOnly = !m_state->options.logEveryFrame;
-        transaction.timeoutIsNote = true;
         // A servo known to be missing is asked quietly: its silence is already reported.
         transaction.silenceExpected = probe;
         const QByteArray sent = transaction.request;
