@@ -485,11 +485,11 @@ void TelemetryCycle::noteMiss(int servoIndex)
             + std::chrono::duration_cast<std::chrono::microseconds>(
                   m_state->options.missingProbeInterval)
                   .count();
+        // A note: its missed answers are already the log's errors, each counted a timeout.
         m_bus.logNote(Tr::tr("%1 stopped answering; it is left out of the cycle and asked alone "
                              "every %2 ms until it answers.")
                           .arg(feetech::servoName(servo.info))
-                          .arg(m_state->options.missingProbeInterval.count()),
-                      true);
+                          .arg(m_state->options.missingProbeInterval.count()));
         publishStats();
     }
 }
