@@ -11,6 +11,7 @@
 #include "servotree.h"
 
 #include <QAbstractItemView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
@@ -188,6 +189,59 @@ private slots:
         // Written to EEPROM with the lock closed again: it survives a power cycle.
         m_simulator->call([](sim::Simulator &simulator) { simulator.powerCycle(); });
         QCOMPARE(simulatorValue(1, QStringLiteral("max_temperature")), 66);
+    }
+
+    void memoryTableSnapsAValueBetweenStepsVisibly()
+    {
+        connectAndScan();
+        workspace()->tabs()->setCurrentIndex(1);
+        QTableView *table = workspace()->memoryPage()->table();
+        const QModelIndex cell = valueIndex(QStringLiteral("acceleration"));
+        QVERIFY(cell.isValid());
+        QTRY_VERIFY(cell.flags() & Qt::ItemIsEditable);
+        // The tooltip names the register's step in its unit.
+        QVERIFY2(cell.data(Qt::ToolTipRole).toString().contains(QStringLiteral("100 step/s²")),
+                 qPrintable(cell.data(Qt::ToolTipRole).toString()));
+        table->setCurrentIndex(cell);
+        table->edit(cell);
+        auto *editor = table->findChild<QSpinBox *>(QStringLiteral("registerValueEditor"));
+        QVERIFY(editor);
+        // The editor steps by the register's resolution, in its unit.
+        QCOMPARE(editor->suffix(), QStringLiteral(" step/s²"));
+        const int before = editor->value();
+        editor->stepUp();
+        QCOMPARE(editor->value(), before + 1);
+        QCOMPARE(editor->text(), QStringLiteral("%1 step/s²").arg((before + 1) * 100));
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("50"));
+        QTest::keyClick(editor, Qt::Key_Return);
+        // 50 step/s² is no step of 100 step/s²: it becomes 100, in the row and under the table.
+        QTRY_COMPARE(valueIndex(QStringLiteral("acceleration")).data().toString(),
+                     QStringLiteral("100 step/s²"));
+        const QModelIndex state = valueIndex(QStringLiteral("acceleration"))
+                                      .siblingAtColumn(RegisterTableModel::StateColumn);
+        QVERIFY2(state.data().toString().contains(QLatin1String("snapped")),
+                 qPrintable(state.data().toString()));
+        auto *note =
+            workspace()->memoryPage()->findChild<QLabel *>(QStringLiteral("memoryValueNote"));
+        QVERIFY(note && !note->isHidden());
+        QVERIFY2(note->text().contains(QStringLiteral("50 step/s²"))
+                     && note->text().contains(QStringLiteral("100 step/s²")),
+                 qPrintable(note->text()));
+        // Applied, it is what the servo holds: one step.
+        workspace()->findChild<QPushButton *>(QStringLiteral("tableApplyButton"))->click();
+        model::ParameterModel *parameters =
+            client()->servos()->parameters(workspace()->currentIndex());
+        QTRY_COMPARE(parameters->state(QStringLiteral("acceleration")), model::State::Verified);
+        QCOMPARE(simulatorValue(1, QStringLiteral("acceleration")), 1);
+        // A value on a step is taken without a note; the row's note goes with the edit.
+        QVERIFY(table->model()->setData(valueIndex(QStringLiteral("acceleration")),
+                                        QStringLiteral("300")));
+        QVERIFY(!valueIndex(QStringLiteral("acceleration"))
+                     .siblingAtColumn(RegisterTableModel::StateColumn)
+                     .data()
+                     .toString()
+                     .contains(QLatin1String("snapped")));
     }
 
     void settingsIdChangeAsksThenFollowsTheServo()
