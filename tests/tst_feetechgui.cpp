@@ -2,6 +2,7 @@
 #include "connectionbar.h"
 #include "feetechwindow.h"
 #include "feetechworkspace.h"
+#include "healthpage.h"
 #include "jointtable.h"
 #include "mainwindow.h"
 #include "memorytablepage.h"
@@ -19,6 +20,7 @@
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTableView>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
@@ -244,6 +246,28 @@ private slots:
                      .contains(QLatin1String("snapped")));
     }
 
+    void anUnplugLeavesNoStaleScanNorHealthOutcome()
+    {
+        connectAndScan();
+        auto *scanState = workspace()->findChild<QLabel *>(QStringLiteral("scanState"));
+        QVERIFY(scanState->text().contains(QLatin1String("3 servo(s) found")));
+        auto *healthState =
+            workspace()->healthPage()->findChild<QLabel *>(QStringLiteral("healthState"));
+        QVERIFY(workspace()->healthPage()->check());
+        QTRY_VERIFY_WITH_TIMEOUT(healthState->text().contains(QLatin1String("checked")), 20000);
+        m_simulator->stop();
+        QTRY_VERIFY_WITH_TIMEOUT(!client()->link()->isConnected(), 10000);
+        // The list stays for a reconnect, but no scan outcome speaks for it now.
+        QCOMPARE(client()->servos()->count(), 3);
+        QVERIFY2(scanState->text().startsWith(QLatin1String("Not connected")),
+                 qPrintable(scanState->text()));
+        QCOMPARE(healthState->text(), QString());
+        auto *healthTable =
+            workspace()->healthPage()->findChild<QTableWidget *>(QStringLiteral("healthTable"));
+        QCOMPARE(healthTable->item(0, HealthPage::VerdictColumn)->text(),
+                 QStringLiteral("not checked"));
+    }
+
     void settingsIdChangeAsksThenFollowsTheServo()
     {
         connectAndScan();
@@ -258,6 +282,12 @@ private slots:
         QCOMPARE(client()->servos()->indexOf({1, k1M}), -1);
         QTRY_COMPARE(client()->servos()->at(workspace()->currentIndex()).info.id, quint8(7));
         QCOMPARE(simulatorValue(7, QStringLiteral("id")), 7);
+        // Verified, and the page keeps saying so once the status bar's message has gone.
+        auto *verified = workspace()->findChild<QLabel *>(QStringLiteral("verifiedMark"));
+        QTRY_VERIFY(verified && !verified->isHidden());
+        QVERIFY2(verified->text().contains(QLatin1String("Verified"))
+                     && verified->text().contains(QLatin1String("7")),
+                 qPrintable(verified->text()));
         // The tree shows it under its new ID.
         QTreeWidgetItem *baud = workspace()->servoTree()->topLevelItem(0)->child(0);
         QStringList ids;
