@@ -542,7 +542,9 @@ void RequestEngine::onTimeout(quint64 generation)
     if (counted)
         log(Direction::In, {}, noReply);
     else
-        log(Direction::In, {}, {}, noReply);
+        log(Direction::In, {}, {},
+            Tr::tr("%1: silence was expected, not counted as an error", "no reply (attempt …)")
+                .arg(noReply));
     if (retrying) {
         if (counted)
             ++m_counters.retries;
