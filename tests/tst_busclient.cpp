@@ -202,7 +202,7 @@ private slots:
         setSimulatorValue(2, u"id", 20);
         const auto noted = [&logged] {
             return std::any_of(logged.begin(), logged.end(), [](const QVariantList &arguments) {
-                return arguments.first().value<seriallink::PacketLogEntry>().error.contains(
+                return arguments.first().value<seriallink::PacketLogEntry>().summary.contains(
                     QLatin1String("stopped answering"));
             });
         };

@@ -199,6 +199,34 @@ private slots:
         QVERIFY(m_page->statusText().isEmpty());
     }
 
+    void accelerationShowsTheMemoryTablesUnitAndSnapsVisibly()
+    {
+        const int index = showServo(1);
+        QVERIFY(index >= 0);
+        auto *acceleration = child<QSpinBox>("accelerationSpinBox");
+        QTRY_VERIFY(acceleration->isEnabled());
+        // One unit everywhere: the register's real unit, as the Memory table shows it.
+        acceleration->setValue(50);
+        QCOMPARE(acceleration->text(), QStringLiteral("5000 step/s²"));
+        // The arrows move by one step of the register: 100 step/s².
+        acceleration->stepUp();
+        QCOMPARE(acceleration->value(), 51);
+        QCOMPARE(acceleration->text(), QStringLiteral("5100 step/s²"));
+        auto *note = child<QLabel>("controlValueNote");
+        QVERIFY(note->isHidden());
+        // 50 step/s² lies between two steps: it becomes 100 step/s², and the page says so.
+        acceleration->setFocus();
+        acceleration->selectAll();
+        QTest::keyClicks(acceleration, QStringLiteral("50"));
+        QTest::keyClick(acceleration, Qt::Key_Return);
+        QCOMPARE(acceleration->value(), 1);
+        QCOMPARE(acceleration->text(), QStringLiteral("100 step/s²"));
+        QVERIFY(!note->isHidden());
+        QVERIFY2(note->text().contains(QStringLiteral("50 step/s²"))
+                     && note->text().contains(QStringLiteral("100 step/s²")),
+                 qPrintable(note->text()));
+    }
+
     void sliderSendsOnlyTheNewestGoalBehindTheOneInFlight()
     {
         const int index = showServo(1);

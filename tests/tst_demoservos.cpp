@@ -1,6 +1,8 @@
 // The demo's simulated servos: each bus started once on a pseudo-terminal of its own, and why one
 // does not start, as a refusal's code.
+#include "busclient.h"
 #include "demoservos.h"
+#include "linkmirror.h"
 #include "virtualfeetechbus.h"
 
 #include <QSet>
@@ -84,6 +86,31 @@ private slots:
         const QStringList ports = {feetech, arm, ptk};
         QCOMPARE(QSet<QString>(ports.begin(), ports.end()).size(), 3);
         QVERIFY(!demo.leaderArmSimulator());
+    }
+
+    void theFeetechDemoIsScannedWithoutALinkError()
+    {
+        // Five servos answer the scan's broadcast PING at once: what the scan listens for is no
+        // discarded byte, no timeout, no bad checksum in the status bar.
+        sim::DemoServos demo;
+        sim::SimRefusal why;
+        const QString port = demo.feetechPort(&why);
+        QVERIFY2(!port.isEmpty(), qPrintable(why.describe()));
+        feetech::BusClient client;
+        client.connectTo(port);
+        QTRY_VERIFY_WITH_TIMEOUT(client.link()->isConnected(), 10000);
+        QSignalSpy finished(&client, &feetech::BusClient::scanFinished);
+        feetech::ScanOptions options;
+        options.lastId = 10;
+        client.scan(options);
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(client.servos()->count(), 5);
+        QTRY_VERIFY(client.link()->counters().repliesOk > 0);
+        const seriallink::LinkCounters counters = client.link()->counters();
+        QCOMPARE(counters.discardedBytes, 0);
+        QCOMPARE(counters.timeouts, 0);
+        QCOMPARE(counters.checksumErrors, 0);
+        client.disconnectFrom();
     }
 
     void theLeaderArmsHandSweepsTwoJoints()

@@ -2,6 +2,7 @@
 #include "connectionbar.h"
 #include "feetechwindow.h"
 #include "feetechworkspace.h"
+#include "healthpage.h"
 #include "jointtable.h"
 #include "mainwindow.h"
 #include "memorytablepage.h"
@@ -11,6 +12,7 @@
 #include "servotree.h"
 
 #include <QAbstractItemView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
@@ -18,6 +20,7 @@
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTableView>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
@@ -190,6 +193,81 @@ private slots:
         QCOMPARE(simulatorValue(1, QStringLiteral("max_temperature")), 66);
     }
 
+    void memoryTableSnapsAValueBetweenStepsVisibly()
+    {
+        connectAndScan();
+        workspace()->tabs()->setCurrentIndex(1);
+        QTableView *table = workspace()->memoryPage()->table();
+        const QModelIndex cell = valueIndex(QStringLiteral("acceleration"));
+        QVERIFY(cell.isValid());
+        QTRY_VERIFY(cell.flags() & Qt::ItemIsEditable);
+        // The tooltip names the register's step in its unit.
+        QVERIFY2(cell.data(Qt::ToolTipRole).toString().contains(QStringLiteral("100 step/s²")),
+                 qPrintable(cell.data(Qt::ToolTipRole).toString()));
+        table->setCurrentIndex(cell);
+        table->edit(cell);
+        auto *editor = table->findChild<QSpinBox *>(QStringLiteral("registerValueEditor"));
+        QVERIFY(editor);
+        // The editor steps by the register's resolution, in its unit.
+        QCOMPARE(editor->suffix(), QStringLiteral(" step/s²"));
+        const int before = editor->value();
+        editor->stepUp();
+        QCOMPARE(editor->value(), before + 1);
+        QCOMPARE(editor->text(), QStringLiteral("%1 step/s²").arg((before + 1) * 100));
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("50"));
+        QTest::keyClick(editor, Qt::Key_Return);
+        // 50 step/s² is no step of 100 step/s²: it becomes 100, in the row and under the table.
+        QTRY_COMPARE(valueIndex(QStringLiteral("acceleration")).data().toString(),
+                     QStringLiteral("100 step/s²"));
+        const QModelIndex state = valueIndex(QStringLiteral("acceleration"))
+                                      .siblingAtColumn(RegisterTableModel::StateColumn);
+        QVERIFY2(state.data().toString().contains(QLatin1String("snapped")),
+                 qPrintable(state.data().toString()));
+        auto *note =
+            workspace()->memoryPage()->findChild<QLabel *>(QStringLiteral("memoryValueNote"));
+        QVERIFY(note && !note->isHidden());
+        QVERIFY2(note->text().contains(QStringLiteral("50 step/s²"))
+                     && note->text().contains(QStringLiteral("100 step/s²")),
+                 qPrintable(note->text()));
+        // Applied, it is what the servo holds: one step.
+        workspace()->findChild<QPushButton *>(QStringLiteral("tableApplyButton"))->click();
+        model::ParameterModel *parameters =
+            client()->servos()->parameters(workspace()->currentIndex());
+        QTRY_COMPARE(parameters->state(QStringLiteral("acceleration")), model::State::Verified);
+        QCOMPARE(simulatorValue(1, QStringLiteral("acceleration")), 1);
+        // A value on a step is taken without a note; the row's note goes with the edit.
+        QVERIFY(table->model()->setData(valueIndex(QStringLiteral("acceleration")),
+                                        QStringLiteral("300")));
+        QVERIFY(!valueIndex(QStringLiteral("acceleration"))
+                     .siblingAtColumn(RegisterTableModel::StateColumn)
+                     .data()
+                     .toString()
+                     .contains(QLatin1String("snapped")));
+    }
+
+    void anUnplugLeavesNoStaleScanNorHealthOutcome()
+    {
+        connectAndScan();
+        auto *scanState = workspace()->findChild<QLabel *>(QStringLiteral("scanState"));
+        QVERIFY(scanState->text().contains(QLatin1String("3 servo(s) found")));
+        auto *healthState =
+            workspace()->healthPage()->findChild<QLabel *>(QStringLiteral("healthState"));
+        QVERIFY(workspace()->healthPage()->check());
+        QTRY_VERIFY_WITH_TIMEOUT(healthState->text().contains(QLatin1String("checked")), 20000);
+        m_simulator->stop();
+        QTRY_VERIFY_WITH_TIMEOUT(!client()->link()->isConnected(), 10000);
+        // The list stays for a reconnect, but no scan outcome speaks for it now.
+        QCOMPARE(client()->servos()->count(), 3);
+        QVERIFY2(scanState->text().startsWith(QLatin1String("Not connected")),
+                 qPrintable(scanState->text()));
+        QCOMPARE(healthState->text(), QString());
+        auto *healthTable =
+            workspace()->healthPage()->findChild<QTableWidget *>(QStringLiteral("healthTable"));
+        QCOMPARE(healthTable->item(0, HealthPage::VerdictColumn)->text(),
+                 QStringLiteral("not checked"));
+    }
+
     void settingsIdChangeAsksThenFollowsTheServo()
     {
         connectAndScan();
@@ -204,6 +282,12 @@ private slots:
         QCOMPARE(client()->servos()->indexOf({1, k1M}), -1);
         QTRY_COMPARE(client()->servos()->at(workspace()->currentIndex()).info.id, quint8(7));
         QCOMPARE(simulatorValue(7, QStringLiteral("id")), 7);
+        // Verified, and the page keeps saying so once the status bar's message has gone.
+        auto *verified = workspace()->findChild<QLabel *>(QStringLiteral("verifiedMark"));
+        QTRY_VERIFY(verified && !verified->isHidden());
+        QVERIFY2(verified->text().contains(QLatin1String("Verified"))
+                     && verified->text().contains(QLatin1String("7")),
+                 qPrintable(verified->text()));
         // The tree shows it under its new ID.
         QTreeWidgetItem *baud = workspace()->servoTree()->topLevelItem(0)->child(0);
         QStringList ids;

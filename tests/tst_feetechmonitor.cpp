@@ -188,7 +188,7 @@ private slots:
         // The SCS servo, read alone in every cycle, keeps its pace too.
         QVERIFY(samplesOf(3) - beforeScs >= 50 * (m_stats.servos.at(1).missed - 3));
         const bool reported = std::any_of(notes.begin(), notes.end(), [](const QVariantList &a) {
-            return a.first().value<seriallink::PacketLogEntry>().error.contains(
+            return a.first().value<seriallink::PacketLogEntry>().summary.contains(
                 QLatin1String("stopped answering"));
         });
         QVERIFY(reported);

@@ -107,6 +107,9 @@ private slots:
         QCOMPARE(result.servo.baud, k1M);
         QCOMPARE(valueAt(2, k1M, u"id"), -1);
         QCOMPARE(valueAt(7, k1M, u"lock"), 1);
+        // ID 7 was free, as hoped: its silence is no link error.
+        QCOMPARE(m_link->counters().timeouts, 0);
+        QCOMPARE(m_link->counters().retries, 0);
         // In EEPROM: the new ID survives a power cycle.
         powerCycle();
         QCOMPARE(valueAt(7, k1M, u"id"), 7);

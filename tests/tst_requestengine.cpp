@@ -172,6 +172,72 @@ private slots:
         QCOMPARE(requests->counters().failures, 1);
     }
 
+    void eachCountedTimeoutIsAnErrorInThePacketLog()
+    {
+        ScriptedTransport transport; // silent
+        auto requests = engine(transport);
+        QSignalSpy logged(requests.get(), &RequestEngine::packetLogged);
+        TransactionResult result = unfinished();
+        requests->submit(query(0x38, Transaction::Priority::Poll, nullptr, &result));
+        QTRY_COMPARE(result.failure, Failure::Timeout);
+        int errors = 0;
+        for (const QVariantList &arguments : std::as_const(logged))
+            errors += arguments.first().value<seriallink::PacketLogEntry>().error.isEmpty() ? 0 : 1;
+        // The log's error count and the status bar's timeouts are one account.
+        QCOMPARE(errors, 3);
+        QCOMPARE(requests->counters().timeouts, 3);
+    }
+
+    void aSilenceAskedForCountsNoTimeoutNorRetryAndIsLoggedAsANote()
+    {
+        ScriptedTransport transport; // silent: the ID asked about is free
+        auto requests = engine(transport);
+        QSignalSpy logged(requests.get(), &RequestEngine::packetLogged);
+        TransactionResult result = unfinished();
+        Transaction ask = query(0x38, Transaction::Priority::Command, nullptr, &result);
+        ask.silenceExpected = true;
+        ask.retryCount = 1;
+        requests->submit(std::move(ask));
+        QTRY_COMPARE(result.failure, Failure::Timeout);
+        QCOMPARE(transport.written.size(), 2); // retried all the same
+        QCOMPARE(requests->counters().timeouts, 0);
+        QCOMPARE(requests->counters().retries, 0);
+        QCOMPARE(requests->counters().failures, 0);
+        QCOMPARE(logged.size(), 4); // two requests, two notes
+        int notes = 0;
+        for (const QVariantList &arguments : std::as_const(logged)) {
+            const auto entry = arguments.first().value<seriallink::PacketLogEntry>();
+            QVERIFY2(entry.error.isEmpty(), qPrintable(entry.error));
+            // The note says why a missing reply is no error here.
+            notes += entry.summary.contains(QLatin1String("silence was expected")) ? 1 : 0;
+        }
+        QCOMPARE(notes, 2);
+    }
+
+    void whatABroadcastListensForIsNeitherDiscardedNorAnError()
+    {
+        // Several servos answer a broadcast at once: whole answers and garbled bytes both.
+        ScriptedTransport transport;
+        transport.answers = {reply(1) + QByteArray("\x01\x02\x03", 3)};
+        auto requests = engine(transport);
+        QSignalSpy logged(requests.get(), &RequestEngine::packetLogged);
+        TransactionResult result = unfinished();
+        Transaction listen = query(0x38, Transaction::Priority::Command, nullptr, &result);
+        listen.acceptsReply = [](const QByteArray &) { return false; };
+        listen.silenceExpected = true;
+        listen.collisionsExpected = true;
+        listen.retryCount = 0;
+        requests->submit(std::move(listen));
+        QTRY_COMPARE(result.failure, Failure::Timeout);
+        QCOMPARE(requests->counters().discardedBytes, 0);
+        QCOMPARE(requests->counters().timeouts, 0);
+        QVERIFY(logged.size() >= 3); // the request, the answer, the garbled bytes
+        for (const QVariantList &arguments : std::as_const(logged)) {
+            const auto entry = arguments.first().value<seriallink::PacketLogEntry>();
+            QVERIFY2(entry.error.isEmpty(), qPrintable(entry.error));
+        }
+    }
+
     void aReplyOnTheSecondTryIsAccepted()
     {
         ScriptedTransport transport;

@@ -2,6 +2,7 @@
 // real units, status bit names, and values shown with their choices and units.
 #include "registerlookup.h"
 #include "servoparameters.h"
+#include "telemetry.h"
 
 #include <QtTest>
 
@@ -102,6 +103,44 @@ private slots:
         QVERIFY(!feetech::parseValue(voltage, QStringLiteral("high"), &error, real));
         QVERIFY2(error.contains(QStringLiteral("not a number")), qPrintable(error));
         QVERIFY(!feetech::parseValue(voltage, QStringLiteral("1e30"), &error, real));
+    }
+
+    void aRealValueBetweenTwoStepsBecomesTheNearestAndSaysSo()
+    {
+        const feetech::Register &acceleration = reg(sts(), "acceleration"); // 100 step/s² a step
+        const auto real = feetech::ValueUnits::Real;
+        QString error;
+        QString adjusted = QStringLiteral("stale");
+        QCOMPARE(feetech::parseValue(acceleration, QStringLiteral("50"), &error, real, &adjusted),
+                 std::optional<qint32>(1));
+        QVERIFY2(adjusted.contains(QStringLiteral("50 step/s²")), qPrintable(adjusted));
+        QVERIFY2(adjusted.contains(QStringLiteral("100 step/s²")), qPrintable(adjusted));
+        // A whole number of steps, with its unit as the table shows it, is taken as it is.
+        QCOMPARE(feetech::parseValue(acceleration, QStringLiteral("5000 step/s²"), &error, real,
+                                     &adjusted),
+                 std::optional<qint32>(50));
+        QVERIFY2(adjusted.isEmpty(), qPrintable(adjusted));
+        // A decimal scale leaves no false note: 7.4 V is 74 steps of 0.1 V.
+        QCOMPARE(feetech::parseValue(reg(sts(), "max_voltage"), QStringLiteral("7.4"), &error, real,
+                                     &adjusted),
+                 std::optional<qint32>(74));
+        QVERIFY2(adjusted.isEmpty(), qPrintable(adjusted));
+        QCOMPARE(feetech::parseValue(reg(sts(), "max_voltage"), QStringLiteral("7.44"), &error,
+                                     real, &adjusted),
+                 std::optional<qint32>(74));
+        QVERIFY2(adjusted.contains(QStringLiteral("7.4 V")), qPrintable(adjusted));
+    }
+
+    void aRegistersStepAndValueReadInItsOwnUnit()
+    {
+        const feetech::Register &acceleration = reg(sts(), "acceleration");
+        QCOMPARE(feetech::resolutionText(acceleration), QStringLiteral("100 step/s²"));
+        QCOMPARE(feetech::displayValue(acceleration, 50), QStringLiteral("5000 step/s²"));
+        QCOMPARE(feetech::realNumber(acceleration, 50), QStringLiteral("5000"));
+        QCOMPARE(feetech::resolutionText(reg(sts(), "max_voltage")), QStringLiteral("0.1 V"));
+        // The Monitor's units are the tables' units.
+        QCOMPARE(feetech::quantityUnit(feetech::Quantity::Position),
+                 feetech::registerUnit(reg(sts(), "present_position")));
     }
 
     void parseValueAcceptsChoiceLabelsIgnoringCase()

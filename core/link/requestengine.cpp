@@ -454,6 +454,13 @@ void RequestEngine::onReceived(const QByteArray &bytes)
             }
             if (takeLateAnswer(item->bytes))
                 break;
+            // Where several servos may answer (a broadcast a scan listens to), a frame that is
+            // no answer of this request is one of theirs: heard, not thrown away in error.
+            if (m_current->collisionsExpected) {
+                log(Direction::In, item->bytes, {},
+                    RequestEngineTr::tr("heard while several may answer"));
+                break;
+            }
             m_counters.discardedBytes += item->bytes.size();
             log(Direction::In, item->bytes, RequestEngineTr::tr("unexpected frame, ignored"));
             break;
@@ -473,12 +480,14 @@ void RequestEngine::onReceived(const QByteArray &bytes)
         case StreamItem::Kind::Garbage:
         case StreamItem::Kind::Incomplete:
             heard(int(item->bytes.size()));
-            m_counters.discardedBytes += item->bytes.size();
-            if (m_current->collisionsExpected)
+            // Answers at once are what a scan looks for: counted only where they are a fault.
+            if (m_current->collisionsExpected) {
                 log(Direction::Stray, item->bytes, {},
                     RequestEngineTr::tr("garbled: answers at once"));
-            else
-                log(Direction::Stray, item->bytes, RequestEngineTr::tr("bytes that form no frame"));
+                break;
+            }
+            m_counters.discardedBytes += item->bytes.size();
+            log(Direction::Stray, item->bytes, RequestEngineTr::tr("bytes that form no frame"));
             break;
         }
     }
@@ -531,13 +540,19 @@ void RequestEngine::onTimeout(quint64 generation)
             + std::chrono::duration_cast<std::chrono::milliseconds>(replyTimeout()).count();
     const QString noReply =
         RequestEngineTr::tr("no reply (attempt %1 of %2)").arg(m_attempts).arg(retryCount() + 1);
-    // A scan's empty ID is an answer, not an error: logged as a note, not in red.
-    if (counted && !m_current->timeoutIsNote)
+    // One account of errors: a timeout the counters count is an error in the log too (red,
+    // in the log's error count); a silence that was asked for (a scan's empty ID, a free ID)
+    // is a note.
+    if (counted)
         log(Direction::In, {}, noReply);
     else
-        log(Direction::In, {}, {}, noReply);
+        log(Direction::In, {}, {},
+            RequestEngineTr::tr("%1: silence was expected, not counted as an error",
+                                "no reply (attempt …)")
+                .arg(noReply));
     if (retrying) {
-        ++m_counters.retries;
+        if (counted)
+            ++m_counters.retries;
         send();
         return;
     }

@@ -102,8 +102,9 @@ struct Transaction
     // the request leaving (the caller has counted the wire time in), and once a byte has come
     // the answer gets this long from that byte to complete, however short the first wait was.
     std::optional<std::chrono::microseconds> afterFirstByte;
-    // A scan asks where most IDs are empty and several servos may answer at once: its
-    // timeouts and garbled answers say nothing about the link, so the counters skip them.
+    // A scan asks where most IDs are empty and several servos may answer at once, a flow asks
+    // whether an ID is free: their timeouts (and retries) and garbled answers say nothing about
+    // the link, so the counters skip them and the log shows them as notes.
     bool silenceExpected = false;
     // Several servos may answer at once (a scan's broadcast, a sweep): garbled answers are what
     // it looks for, logged as notes, not errors.
@@ -111,9 +112,6 @@ struct Transaction
     // Frames that went well are counted but not put in the packet log (a telemetry stream of
     // hundreds of frames a second would bury everything else); failures are always logged.
     bool logFailuresOnly = false;
-    // The caller reports a missing answer itself (telemetry: a note each cycle, an error once a
-    // servo stops answering): the engine logs its timeout as a note, and counts it all the same.
-    bool timeoutIsNote = false;
     // After the transaction has ended without all its answers (a timeout, or a SYNC READ some
     // servos did not answer in time), the engine offers it every frame no request accounts for,
     // for a while: true when the frame is a late answer to it (counted late, not an error).

@@ -88,7 +88,6 @@ void ShareWatch::readNext()
     read.acceptsReply = [id](const QByteArray &frame) {
         return frame.size() >= 6 && quint8(frame.at(2)) == id;
     };
-    read.timeoutIsNote = true;
     read.done = [this](const seriallink::TransactionResult &) {
         m_reading = false;
         noteActivity();

@@ -527,6 +527,8 @@ Step BusExchange::ping(quint8 id, bool mustAnswer, int retries)
         ask.request = feetech::ping(id);
         ask.replyId = id;
         ask.retryCount = retries;
+        // Asking whether an ID is free hopes for silence: none is a link error.
+        ask.silenceExpected = !mustAnswer;
         exchange(ask,
                  [this, id, mustAnswer, next](const seriallink::TransactionResult &result,
                                               const std::optional<Packet> &reply) {

@@ -276,7 +276,6 @@ TelemetryCycle::CycleStep TelemetryCycle::syncRead(qint32 baud, Block block,
         transaction.replyTimeout = allowance(int(ids.size()), baud, int(transaction.request.size()),
                                              transaction.expectedReplySize);
         transaction.logFailuresOnly = !m_state->options.logEveryFrame;
-        transaction.timeoutIsNote = true;
         transaction.leavesAtOnce = true;
         auto answered = std::make_shared<QVector<bool>>(ids.size(), false);
         // Each answer is decoded once, as it is accepted, and kept for the end of the read.
@@ -395,7 +394,6 @@ TelemetryCycle::CycleStep TelemetryCycle::read(int servoIndex, bool probe)
         transaction.replyTimeout = allowance(1, servo.info.baud, int(transaction.request.size()),
                                              transaction.expectedReplySize);
         transaction.logFailuresOnly = !m_state->options.logEveryFrame;
-        transaction.timeoutIsNote = true;
         // A servo known to be missing is asked quietly: its silence is already reported.
         transaction.silenceExpected = probe;
         const QByteArray sent = transaction.request;
@@ -480,12 +478,12 @@ void TelemetryCycle::noteMiss(int servoIndex)
             + std::chrono::duration_cast<std::chrono::microseconds>(
                   m_state->options.missingProbeInterval)
                   .count();
+        // A note: its missed answers are already the log's errors, each counted a timeout.
         m_bus.logNote(FeetechSessionTr::tr(
                           "%1 stopped answering; it is left out of the cycle and asked alone "
                           "every %2 ms until it answers.")
                           .arg(feetech::servoName(servo.info))
-                          .arg(m_state->options.missingProbeInterval.count()),
-                      true);
+                          .arg(m_state->options.missingProbeInterval.count()));
         publishStats();
     }
 }

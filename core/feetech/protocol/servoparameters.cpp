@@ -153,10 +153,17 @@ encodeWrites(const RegisterTable &table, const QVector<model::WriteItem> &items,
 }
 
 std::optional<qint32> parseValue(const Register &reg, const QString &text, QString *error,
-                                 ValueUnits units)
+                                 ValueUnits units, QString *adjusted)
 {
-    const QString trimmed = text.trimmed();
+    if (adjusted)
+        adjusted->clear();
+    QString trimmed = text.trimmed();
+    // A value may carry its unit, as it is shown: "5000 step/s²".
+    const QString unit = registerUnit(reg);
+    if (units == ValueUnits::Real && !unit.isEmpty() && trimmed.endsWith(unit))
+        trimmed = trimmed.chopped(unit.size()).trimmed();
     std::optional<qint64> parsed;
+    std::optional<double> offStep; // the real value typed, when it lies between two steps
     for (const Choice &choice : reg.choices) {
         // In English, as the table has it and scripts write it, or as the user's language shows it.
         if (choice.label.compare(trimmed, Qt::CaseInsensitive) == 0
@@ -185,8 +192,14 @@ std::optional<qint32> parseValue(const Register &reg, const QString &text, QStri
         const double local = QLocale().toDouble(trimmed, &ok);
         const double real = ok ? local : trimmed.toDouble(&ok);
         const double raw = real / reg.scale;
-        if (ok && std::isfinite(raw) && std::abs(raw) < double(std::numeric_limits<qint32>::max()))
+        if (ok && std::isfinite(raw)
+            && std::abs(raw) < double(std::numeric_limits<qint32>::max())) {
             parsed = qint64(std::llround(raw));
+            // Not a whole number of steps, beyond what the decimal scale itself leaves (7.4 V is
+            // 73.99999… steps of 0.1 V).
+            if (std::abs(raw - double(*parsed)) > 1e-6 * std::max(1.0, std::abs(raw)))
+                offStep = real;
+        }
     }
     if (!parsed) {
         if (error)
@@ -206,7 +219,31 @@ std::optional<qint32> parseValue(const Register &reg, const QString &text, QStri
                          .arg(reg.maximum);
         return std::nullopt;
     }
+    if (offStep && adjusted) {
+        const QString typed = QString::number(*offStep, 'g', 10);
+        *adjusted =
+            FeetechParametersTr::tr("%1: %2 is not a whole number of steps of %3: set to %4.")
+                .arg(tableText(reg.label), unit.isEmpty() ? typed : typed + u' ' + unit,
+                     resolutionText(reg), displayValue(reg, qint32(value)));
+    }
     return qint32(value);
+}
+
+QString realNumber(const Register &reg, qint32 value)
+{
+    return reg.scale == 1.0 ? QString::number(value)
+                            : QString::number(double(value) * reg.scale, 'g', 10);
+}
+
+QString registerUnit(const Register &reg)
+{
+    return unitText(reg.unit);
+}
+
+QString resolutionText(const Register &reg)
+{
+    const QString step = QString::number(reg.scale, 'g', 10);
+    return reg.unit.isEmpty() ? step : step + u' ' + registerUnit(reg);
 }
 
 QString bitNames(const Register &reg, qint32 value)
@@ -233,9 +270,8 @@ QString displayValue(const Register &reg, qint32 value)
     }
     if (!reg.bits.isEmpty())
         return bitNames(reg, value);
-    const double real = double(value) * reg.scale;
-    QString number = reg.scale == 1.0 ? QString::number(value) : QString::number(real, 'g', 10);
-    return reg.unit.isEmpty() ? number : number + u' ' + tableText(reg.unit);
+    const QString number = realNumber(reg, value);
+    return reg.unit.isEmpty() ? number : number + u' ' + registerUnit(reg);
 }
 
 } // namespace feetech

@@ -50,9 +50,20 @@ enum class ValueUnits { Register, Real };
 
 // A value typed by a person (a number in `units`, "1000000" for the baud rate in bps, a
 // choice's label) in register units; nothing and *error when it is not valid for the register.
-// The GUI and the command line both read values with this one function.
+// The GUI and the command line both read values with this one function. A real value between
+// two of the register's steps (50 step/s² where a step is 100) becomes the nearest step, and
+// *adjusted says so (it is cleared when nothing was changed): never silently.
 std::optional<qint32> parseValue(const Register &reg, const QString &text, QString *error,
-                                 ValueUnits units = ValueUnits::Register);
+                                 ValueUnits units = ValueUnits::Register,
+                                 QString *adjusted = nullptr);
+
+// A register's value in its real unit, without the unit: "5000", "7.4" (a dot in every locale,
+// as displayValue shows it).
+QString realNumber(const Register &reg, qint32 value);
+// The register's unit, translated; empty for a plain number.
+QString registerUnit(const Register &reg);
+// What one step of the register is worth in its unit: "100 step/s²", "0.1 V", "1".
+QString resolutionText(const Register &reg);
 
 // The names of the bits set in a bit-field register ("voltage, temperature"), or "none".
 QString bitNames(const Register &reg, qint32 value);

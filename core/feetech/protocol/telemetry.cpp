@@ -106,7 +106,8 @@ QString quantityName(Quantity quantity)
 
 QString quantityUnit(Quantity quantity)
 {
-    return QString::fromUtf8(info(quantity).unit);
+    // The register tables' unit, translated where the Memory table's is.
+    return unitText(QString::fromUtf8(info(quantity).unit));
 }
 
 std::optional<Quantity> quantityFromKey(QStringView key)

@@ -27,7 +27,7 @@ constexpr Quantity kAllQuantities[kQuantityCount] = {Quantity::Position,    Quan
 
 QString quantityKey(Quantity quantity); // "position", "speed", ... (CSV, JSON, command line)
 QString quantityName(Quantity quantity); // translated: "Position"
-QString quantityUnit(Quantity quantity); // "step", "step/s", "%", "V", "°C", "mA"
+QString quantityUnit(Quantity quantity); // translated: "step", "step/s", "%", "V", "°C", "mA"
 std::optional<Quantity> quantityFromKey(QStringView key);
 
 struct FeedbackSample

@@ -46,6 +46,12 @@ QString tableText(const QString &english)
         : QCoreApplication::translate("FeetechRegister", english.toUtf8().constData());
 }
 
+QString unitText(const QString &english)
+{
+    // The tables' units are their texts: datastrings.cpp lists every one for lupdate.
+    return tableText(english);
+}
+
 std::optional<Family> familyFromKey(QStringView key)
 {
     for (const Family family : kAllFamilies) {

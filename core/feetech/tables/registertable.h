@@ -22,6 +22,9 @@ QString familyName(Family family); // "SCS", "STS", ...
 // language. The tables hold English, which the code also matches on ("Load"); only what is shown
 // goes through this. resources/translations/datastrings.cpp lists the texts for lupdate.
 QString tableText(const QString &english);
+// A unit ("step", "step/s²", "V") in the user's language: the one place a unit is translated, so
+// the Memory table, the Control and Monitor pages and servoctl name a unit alike.
+QString unitText(const QString &english);
 std::optional<Family> familyFromKey(QStringView key);
 
 enum class Storage { Eeprom, Ram };

@@ -16,9 +16,10 @@ JointTableView::JointTableView(QWidget *parent)
     : QTableWidget(0, ColumnCount, parent)
 {
     setObjectName(QStringLiteral("jointTableView"));
-    setHorizontalHeaderLabels({tr("ID"), tr("Model"), tr("Baud rate"), tr("Position (steps)"),
-                               tr("Target (steps)"), tr("Target range"), tr("Torque"), tr("Motion"),
-                               tr("Identify")});
+    const QString step = feetech::unitText(QStringLiteral("step"));
+    setHorizontalHeaderLabels({tr("ID"), tr("Model"), tr("Baud rate"),
+                               tr("Position (%1)").arg(step), tr("Target (%1)").arg(step),
+                               tr("Target range"), tr("Torque"), tr("Motion"), tr("Identify")});
     const auto headerTip = [this](int column, const QString &tip) {
         horizontalHeaderItem(column)->setToolTip(tip);
     };

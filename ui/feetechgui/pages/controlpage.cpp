@@ -9,6 +9,7 @@
 #include "motiontestpanel.h"
 #include "palette.h"
 #include "registerkeys.h"
+#include "registerspinbox.h"
 #include "registerwidgets.h"
 #include "servoparameters.h"
 #include "widgethelpers.h"
@@ -34,8 +35,6 @@
 #include <limits>
 
 using namespace feetech::registerkeys;
-using registerwidgets::setRegisterRange;
-using registerwidgets::unitText;
 
 namespace {
 
@@ -281,10 +280,9 @@ void ControlPage::configureForServo()
 
     const feetech::Register *speed = table.find(kGoalSpeed);
     const feetech::Register *acceleration = table.find(kAcceleration);
-    setRegisterRange(m_controls.speed, speed, true);
-    setRegisterRange(m_controls.acceleration, acceleration, true);
-    m_controls.speedUnit->setText(unitText(speed));
-    m_controls.accelerationUnit->setText(unitText(acceleration));
+    m_controls.speed->setRegister(speed, true);
+    m_controls.acceleration->setRegister(acceleration, true);
+    m_controls.valueNote->hide();
     // What the servo is set to, or a gentle third of its range (0 would mean flat out).
     const auto deviceSpeed = parameters->deviceValue(kGoalSpeed);
     const int speedValue = deviceSpeed && *deviceSpeed > 0
@@ -443,9 +441,9 @@ void ControlPage::updatePresent()
                 m_presentPosition = sample->value(feetech::Quantity::Position);
         }
     }
-    m_controls.present->setText(m_presentPosition
-                                    ? tr("%1 step").arg(std::lround(*m_presentPosition))
-                                    : QStringLiteral("—"));
+    m_controls.present->setText(m_presentPosition ? QString::number(std::lround(*m_presentPosition))
+                                        + registerwidgets::stepSuffix()
+                                                  : QStringLiteral("—"));
 }
 
 void ControlPage::refreshPresent()

@@ -137,13 +137,15 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
     connect(m_move, &QPushButton::clicked, this, [this] { moveTest(); });
     connect(m_save, &QPushButton::clicked, this, &HealthPage::chooseReportFile);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &HealthPage::updateActions);
-    connect(m_client->servos(), &feetech::ServoList::servosChanged, this, [this] {
-        m_readings.clear();
-        m_moves.clear();
-        reassess();
-    });
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this,
+            &HealthPage::forgetResults);
     connect(m_client, &feetech::BusClient::busyChanged, this, &HealthPage::updateActions);
-    connect(m_client, &feetech::BusClient::statusChanged, this, &HealthPage::updateActions);
+    connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
+        // Unplugged, the verdicts say nothing of the servos any more.
+        if (!m_client->link()->isConnected() && (!m_readings.isEmpty() || !m_moves.isEmpty()))
+            forgetResults();
+        updateActions();
+    });
     connect(m_client->health(), &feetech::HealthService::reading, this,
             [this](const feetech::HealthReading &reading, int done, int total) {
                 m_readings.insert({reading.servo.id, reading.servo.baud}, reading);
@@ -289,6 +291,19 @@ QVector<ServoHealth> HealthPage::results() const
             checked.append(*found);
     }
     return checked;
+}
+
+void HealthPage::forgetResults()
+{
+    m_readings.clear();
+    m_moves.clear();
+    // The verdicts go with the servos they were about, and so does what was said of them
+    // ("4 servo(s) checked."); a check under way says its own words when it ends.
+    if (!m_checking && !m_moving) {
+        m_checkedAt = {};
+        showState({}, false);
+    }
+    reassess();
 }
 
 void HealthPage::reassess()

@@ -78,6 +78,8 @@ signals:
 private:
     using Key = QPair<quint8, qint32>; // ID and baud
     void rebuildRows();
+    // Drops the verdicts and what was said of them: the servos they spoke of are gone.
+    void forgetResults();
     void reassess();
     void fillRow(int row, const feetech::ServoHealth &health);
     void updateActions();

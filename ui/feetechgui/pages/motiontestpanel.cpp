@@ -3,6 +3,7 @@
 #include "motiontestpanel.h"
 
 #include "palette.h"
+#include "registerspinbox.h"
 #include "registertable.h"
 #include "registerwidgets.h"
 #include "widgethelpers.h"
@@ -27,9 +28,8 @@
 #include <algorithm>
 #include <iterator>
 
-using registerwidgets::setRegisterRange;
+using registerwidgets::registerSpinBox;
 using registerwidgets::spinBox;
-using registerwidgets::unitText;
 using registerwidgets::valueLabel;
 using widgethelpers::actionButton;
 
@@ -58,12 +58,12 @@ MotionTestPanel::MotionTestPanel(feetech::MotionTest *test, QWidget *parent)
     auto *settings = new QGridLayout;
     settings->setHorizontalSpacing(10);
     m_from = spinBox("testFromSpinBox", this);
-    m_from->setSuffix(tr(" step"));
+    m_from->setSuffix(registerwidgets::stepSuffix());
     m_to = spinBox("testToSpinBox", this);
-    m_to->setSuffix(tr(" step"));
-    m_testSpeed = spinBox("testSpeedSpinBox", this);
+    m_to->setSuffix(registerwidgets::stepSuffix());
+    m_testSpeed = registerSpinBox("testSpeedSpinBox", this);
     m_testSpeed->setToolTip(tr("Goal speed of the test moves (0: the servo's maximum)."));
-    m_testAcceleration = spinBox("testAccelerationSpinBox", this);
+    m_testAcceleration = registerSpinBox("testAccelerationSpinBox", this);
     m_testAcceleration->setToolTip(tr("Acceleration of the test moves (0: the servo's maximum)."));
     m_recordSeconds = new QDoubleSpinBox(this);
     m_recordSeconds->setObjectName(QStringLiteral("recordSecondsSpinBox"));
@@ -110,6 +110,8 @@ MotionTestPanel::MotionTestPanel(feetech::MotionTest *test, QWidget *parent)
     m_testProgress->setObjectName(QStringLiteral("testProgressLabel"));
     m_testProgress->setWordWrap(true);
     layout->addWidget(m_testProgress);
+    for (RegisterSpinBox *box : {m_testSpeed, m_testAcceleration})
+        connect(box, &RegisterSpinBox::snapped, m_testProgress, &QLabel::setText);
 
     // The step response, as numbers and as a plot.
     auto *line = new QFrame(this);
@@ -160,7 +162,7 @@ MotionTestPanel::MotionTestPanel(feetech::MotionTest *test, QWidget *parent)
     small.setPointSizeF(small.pointSizeF() * 0.9);
     chart->legend()->setFont(small);
     m_response = new QLineSeries(chart);
-    m_response->setName(tr("Position (step)"));
+    m_response->setName(tr("Position (%1)").arg(feetech::unitText(QStringLiteral("step"))));
     m_targetLine = new QLineSeries(chart);
     m_targetLine->setName(tr("Target"));
     m_bandHigh = new QLineSeries(chart);
@@ -217,11 +219,8 @@ void MotionTestPanel::configure(const feetech::Register *speed,
                                 const feetech::Register *acceleration, int speedValue,
                                 int accelerationValue)
 {
-    setRegisterRange(m_testSpeed, speed, true);
-    setRegisterRange(m_testAcceleration, acceleration, true);
-    m_testSpeed->setSuffix(speed ? QLatin1Char(' ') + unitText(speed) : QString());
-    m_testAcceleration->setSuffix(acceleration ? QLatin1Char(' ') + unitText(acceleration)
-                                               : QString());
+    m_testSpeed->setRegister(speed, true);
+    m_testAcceleration->setRegister(acceleration, true);
     m_testSpeed->setValue(speedValue);
     m_testAcceleration->setValue(accelerationValue);
 }

@@ -12,6 +12,7 @@ class QLabel;
 class QLineSeries;
 class QPushButton;
 class QSpinBox;
+class RegisterSpinBox;
 class QValueAxis;
 
 namespace feetech {
@@ -73,8 +74,8 @@ private:
 
     QSpinBox *m_from = nullptr;
     QSpinBox *m_to = nullptr;
-    QSpinBox *m_testSpeed = nullptr;
-    QSpinBox *m_testAcceleration = nullptr;
+    RegisterSpinBox *m_testSpeed = nullptr;
+    RegisterSpinBox *m_testAcceleration = nullptr;
     QDoubleSpinBox *m_recordSeconds = nullptr;
     QSpinBox *m_legs = nullptr;
     QPushButton *m_stepButton = nullptr;

@@ -1,29 +1,39 @@
 // Register-bound spin boxes and value labels of the Control page and its motion-test panel.
 #include "registerwidgets.h"
 
+#include "registerspinbox.h"
 #include "registertable.h"
 
-#include <QCoreApplication>
 #include <QLabel>
-#include <QLocale>
-#include <QSignalBlocker>
 #include <QSpinBox>
-
-#include <algorithm>
 
 namespace registerwidgets {
 
 namespace {
-constexpr int kSpinBoxMinimumWidth = 96;
-}
 
-QSpinBox *spinBox(const char *name, QWidget *parent)
+constexpr int kSpinBoxMinimumWidth = 96;
+
+void styleSpinBox(QSpinBox *spin, const char *name)
 {
-    auto *spin = new QSpinBox(parent);
     spin->setObjectName(QLatin1String(name));
     spin->setAlignment(Qt::AlignRight);
     spin->setAccelerated(true);
     spin->setMinimumWidth(kSpinBoxMinimumWidth);
+}
+
+} // namespace
+
+QSpinBox *spinBox(const char *name, QWidget *parent)
+{
+    auto *spin = new QSpinBox(parent);
+    styleSpinBox(spin, name);
+    return spin;
+}
+
+RegisterSpinBox *registerSpinBox(const char *name, QWidget *parent)
+{
+    auto *spin = new RegisterSpinBox(parent);
+    styleSpinBox(spin, name);
     return spin;
 }
 
@@ -35,27 +45,9 @@ QLabel *valueLabel(const char *name, QWidget *parent)
     return label;
 }
 
-void setRegisterRange(QSpinBox *spin, const feetech::Register *reg, bool nonNegative)
+QString stepSuffix()
 {
-    const QSignalBlocker blocker(spin);
-    if (!reg) {
-        spin->setRange(0, 0);
-        return;
-    }
-    spin->setRange(nonNegative ? std::max(0, reg->minimum) : reg->minimum, reg->maximum);
-}
-
-QString unitText(const feetech::Register *reg)
-{
-    if (!reg)
-        return {};
-    if (reg->scale == 1.0)
-        return feetech::tableText(reg->unit);
-    // The Control page's context: the translation was made there.
-    return QCoreApplication::translate("ControlPage", "× %1 %2",
-                                       "scale and unit of a register value")
-        .arg(QLocale().toString(reg->scale, 'g', 6), feetech::tableText(reg->unit))
-        .trimmed();
+    return u' ' + feetech::unitText(QStringLiteral("step"));
 }
 
 } // namespace registerwidgets

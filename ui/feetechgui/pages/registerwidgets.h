@@ -5,23 +5,19 @@
 #include <QString>
 
 class QLabel;
+class RegisterSpinBox;
 class QSpinBox;
 class QWidget;
-
-namespace feetech {
-struct Register;
-}
 
 namespace registerwidgets {
 
 // A right-aligned, accelerated spin box with an object name (for tests).
 QSpinBox *spinBox(const char *name, QWidget *parent);
+// The same for a register's value, in the register's unit (see RegisterSpinBox).
+RegisterSpinBox *registerSpinBox(const char *name, QWidget *parent);
 // A selectable label that shows a dash until it has a value.
 QLabel *valueLabel(const char *name, QWidget *parent);
-// Keeps a spin box's range to a register's (non-negative where a sign means a direction); an
-// absent register leaves it at 0.
-void setRegisterRange(QSpinBox *spin, const feetech::Register *reg, bool nonNegative);
-// A register's unit as its raw values read: "step/s", or "× 100 step/s²" when scaled.
-QString unitText(const feetech::Register *reg);
+// " step": the suffix of a position, in the unit every page shows.
+QString stepSuffix();
 
 } // namespace registerwidgets

@@ -1,6 +1,7 @@
 // The Control page's torque, goal position and operating-mode group boxes: their widgets.
 #include "servocontrolgroups.h"
 
+#include "registerspinbox.h"
 #include "registerwidgets.h"
 #include "tablefacts.h"
 #include "widgethelpers.h"
@@ -17,6 +18,7 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+using registerwidgets::registerSpinBox;
 using registerwidgets::spinBox;
 using registerwidgets::valueLabel;
 using widgethelpers::actionButton;
@@ -118,7 +120,7 @@ void ServoControlGroups::setupGoalGroup(QWidget *page)
     grid->addLayout(sliderRow, 0, 0, 1, 3);
 
     goal = spinBox("goalSpinBox", goalGroup);
-    goal->setSuffix(tr(" step"));
+    goal->setSuffix(registerwidgets::stepSuffix());
     move = actionButton(tr("Move"), "moveButton",
                         tr("Send this goal position with the speed and acceleration below."),
                         goalGroup);
@@ -134,19 +136,29 @@ void ServoControlGroups::setupGoalGroup(QWidget *page)
     grid->addWidget(new QLabel(tr("Present"), goalGroup), 2, 0);
     grid->addWidget(present, 2, 1, 1, 2);
 
-    speed = spinBox("goalSpeedSpinBox", goalGroup);
-    speed->setToolTip(tr("Goal speed, in register units (0: the servo's maximum)."));
-    speedUnit = new QLabel(goalGroup);
-    acceleration = spinBox("accelerationSpinBox", goalGroup);
-    acceleration->setToolTip(tr("Acceleration, in register units (0: the servo's maximum)."));
-    accelerationUnit = new QLabel(goalGroup);
+    speed = registerSpinBox("goalSpeedSpinBox", goalGroup);
+    speed->setToolTip(tr("Goal speed (0: the servo's maximum). The arrows move by one step of "
+                         "the register."));
+    acceleration = registerSpinBox("accelerationSpinBox", goalGroup);
+    acceleration->setToolTip(tr("Acceleration (0: the servo's maximum). The arrows move by one "
+                                "step of the register."));
     grid->addWidget(new QLabel(tr("Speed"), goalGroup), 3, 0);
     grid->addWidget(speed, 3, 1);
-    grid->addWidget(speedUnit, 3, 2);
     grid->addWidget(new QLabel(tr("Acceleration"), goalGroup), 4, 0);
     grid->addWidget(acceleration, 4, 1);
-    grid->addWidget(accelerationUnit, 4, 2);
     grid->setColumnStretch(2, 1);
+    valueNote = new QLabel(goalGroup);
+    valueNote->setObjectName(QStringLiteral("controlValueNote"));
+    valueNote->setWordWrap(true);
+    valueNote->hide();
+    grid->addWidget(valueNote, 6, 0, 1, 3);
+    for (RegisterSpinBox *box : {speed, acceleration}) {
+        QObject::connect(box, &RegisterSpinBox::snapped, valueNote,
+                         [valueNote = valueNote](const QString &note) {
+                             valueNote->setText(note);
+                             valueNote->show();
+                         });
+    }
 
     rangeNote = new QLabel(goalGroup);
     rangeNote->setObjectName(QStringLiteral("goalRangeNote"));

@@ -11,6 +11,7 @@ class QLabel;
 class QPushButton;
 class QSlider;
 class QSpinBox;
+class RegisterSpinBox;
 class QWidget;
 
 // Like a form uic generates: setup() makes the widgets as children of the page.
@@ -42,10 +43,9 @@ public:
     QPushButton *move = nullptr;
     QLabel *present = nullptr;
     QLabel *rangeNote = nullptr;
-    QSpinBox *speed = nullptr;
-    QLabel *speedUnit = nullptr;
-    QSpinBox *acceleration = nullptr;
-    QLabel *accelerationUnit = nullptr;
+    RegisterSpinBox *speed = nullptr; // in the register's unit, one step of it at a time
+    RegisterSpinBox *acceleration = nullptr;
+    QLabel *valueNote = nullptr; // a typed speed or acceleration that was put on a step
 
 private:
     void setupTorqueGroup(QWidget *page);

@@ -9,6 +9,7 @@
 #include "jointtable.h"
 #include "memorytablepage.h"
 #include "monitorpage.h"
+#include "palette.h"
 #include "parameterpage.h"
 #include "profileactions.h"
 #include "robotactions.h"
@@ -143,6 +144,12 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
         actions->addWidget(button);
     actions->addStretch(1);
     rightLayout->addLayout(actions);
+    m_verified = new QLabel(right);
+    m_verified->setObjectName(QStringLiteral("verifiedMark"));
+    m_verified->setWordWrap(true);
+    m_verified->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_verified->hide();
+    rightLayout->addWidget(m_verified);
 
     m_tabs = new QTabWidget(right);
     m_tabs->setObjectName(QStringLiteral("servoTabs"));
@@ -223,11 +230,12 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
         updateActions();
         updateHeader();
-        if (m_client->servos()->count() == 0 && !m_client->isScanning())
-            m_scanState->setText(m_client->link()->isConnected()
-                                     ? tr("Press Scan… to find the servos on the bus.")
-                                     : tr("Connect, then scan to find the servos."));
+        showScanHint();
     });
+    // An unplug empties the list after the link has said so: a scan's outcome ("Scan complete:
+    // 6 servo(s) found.") must not outlive the servos it found.
+    connect(m_client->servos(), &feetech::ServoList::servosChanged, this,
+            &FeetechWorkspace::showScanHint);
     connect(m_client, &feetech::BusClient::busyChanged, this, [this](bool busy) {
         if (!busy || !m_client->isScanning())
             m_settings->setBusy(busy && !m_client->isScanning(), tr("Working…"));
@@ -239,6 +247,9 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
     connect(m_client, &feetech::BusClient::submitted, this, [this](feetech::OperationReply *reply) {
         connect(reply, &feetech::OperationReply::finished, this,
                 &FeetechWorkspace::onOperationFinished);
+        // The mark speaks of the last change; the next one takes it away until it is verified.
+        if (changesServo(reply->operation()))
+            m_verified->hide();
         if (reply->operation() == feetech::Operation::Write
             || reply->operation() == feetech::Operation::HealthCheck
             || reply->operation() == feetech::Operation::CheckSettings
@@ -259,6 +270,7 @@ FeetechWorkspace::FeetechWorkspace(feetech::BusClient *client, QWidget *parent)
                 m_scanProgress->hide();
                 m_cancelScan->hide();
                 m_scan->show();
+                m_scanOutcome = text;
                 m_scanState->setText(text);
                 if (!completed)
                     emit problem(text);
@@ -311,6 +323,21 @@ void FeetechWorkspace::readIfNew()
         m_client->readServo(index);
 }
 
+void FeetechWorkspace::showScanHint()
+{
+    if (m_client->isScanning())
+        return;
+    const bool listed = m_client->servos()->count() > 0;
+    if (!m_client->link()->isConnected())
+        m_scanState->setText(listed ? tr("Not connected: the servos listed are those of the last "
+                                         "scan. Connect, then scan again.")
+                                    : tr("Connect, then scan to find the servos."));
+    else if (!listed)
+        m_scanState->setText(tr("Press Scan… to find the servos on the bus."));
+    else
+        m_scanState->setText(m_scanOutcome);
+}
+
 void FeetechWorkspace::rebuildTree()
 {
     m_tree->rebuild(m_current);
@@ -340,6 +367,8 @@ void FeetechWorkspace::showServo()
                     &FeetechWorkspace::updateActions);
     }
     m_memory->showServo(*m_client, index);
+    if (!m_current || *m_current != m_verifiedServo)
+        m_verified->hide(); // it spoke of another servo
     updateHeader();
     updateActions();
 }
@@ -613,8 +642,27 @@ void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &resul
         emit message(result.message);
     else
         emit problem(result.message);
+    // The status bar's message fades; what was written and read back stays said on the page.
+    if (result.ok && result.final && changesServo(result.operation)) {
+        m_verified->setText(tr("✓ Verified: %1").arg(result.message));
+        QPalette tinted = m_verified->palette();
+        tinted.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Good, tinted));
+        m_verified->setPalette(tinted);
+        m_verified->show();
+        m_verifiedServo = result.servo.address();
+    }
     rebuildTree();
     showServo();
+}
+
+bool FeetechWorkspace::changesServo(feetech::Operation operation)
+{
+    // What writes a servo's memory and reads it back (an apply chain, the guided flows, the
+    // settings check's fixes); a reboot or a reset confirms it answers, not what it holds.
+    using feetech::Operation;
+    return operation == Operation::Write || operation == Operation::ChangeId
+        || operation == Operation::ChangeBaud || operation == Operation::CalibrateMiddle
+        || operation == Operation::FixSettings || operation == Operation::LockEeprom;
 }
 
 void FeetechWorkspace::chooseProfileToSave()

@@ -67,6 +67,8 @@ signals:
     void message(const QString &message);
 
 private:
+    // The scan's line: what the last scan found while it holds, else what to do next.
+    void showScanHint();
     void rebuildTree();
     void showChosenServo(const feetech::ServoAddress &servo);
     void showServo();
@@ -74,6 +76,9 @@ private:
     void updateHeader();
     void updateActions();
     void onOperationFinished(const feetech::OperationResult &result);
+    // Whether an operation writes a servo and reads back what it wrote: its success is a
+    // verified change, which the page keeps saying until the next one.
+    static bool changesServo(feetech::Operation operation);
     void refreshLive();
     void changeId();
     void changeBaud();
@@ -97,8 +102,11 @@ private:
     QPushButton *m_cancelScan = nullptr;
     QProgressBar *m_scanProgress = nullptr;
     QLabel *m_scanState = nullptr;
+    QString m_scanOutcome; // what the last scan found, while its servos are listed and reachable
 
     QLabel *m_header = nullptr;
+    QLabel *m_verified = nullptr; // the last verified change of the servo shown
+    feetech::ServoAddress m_verifiedServo; // the servo it speaks of, as reached after it
     UnlockedNotice *m_unlocked = nullptr;
     QPushButton *m_changeId = nullptr;
     QPushButton *m_changeBaud = nullptr;

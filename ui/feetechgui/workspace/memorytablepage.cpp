@@ -2,7 +2,9 @@
 #include "memorytablepage.h"
 
 #include "busclient.h"
+#include "parametermodel.h"
 #include "registertablemodel.h"
+#include "registervaluedelegate.h"
 #include "widgethelpers.h"
 
 #include <QCheckBox>
@@ -52,6 +54,8 @@ MemoryTablePage::MemoryTablePage(QWidget *parent)
     m_table = new QTableView(this);
     m_table->setObjectName(QStringLiteral("memoryTable"));
     m_table->setModel(m_filter);
+    m_table->setItemDelegateForColumn(RegisterTableModel::ValueColumn,
+                                      new RegisterValueDelegate(m_registers, m_table));
     m_table->setAlternatingRowColors(true);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
@@ -62,6 +66,11 @@ MemoryTablePage::MemoryTablePage(QWidget *parent)
     m_table->horizontalHeader()->setSectionResizeMode(RegisterTableModel::LabelColumn,
                                                       QHeaderView::Stretch);
     layout->addWidget(m_table, 1);
+    m_note = new QLabel(this);
+    m_note->setObjectName(QStringLiteral("memoryValueNote"));
+    m_note->setWordWrap(true);
+    m_note->hide();
+    layout->addWidget(m_note);
     auto *buttons = new QHBoxLayout;
     m_read =
         actionButton(tr("Read"), "tableReadButton", tr("Read every register of the servo"), this);
@@ -80,6 +89,10 @@ MemoryTablePage::MemoryTablePage(QWidget *parent)
     connect(m_filterEdit, &QLineEdit::textChanged, m_filter,
             &QSortFilterProxyModel::setFilterFixedString);
     connect(m_registers, &RegisterTableModel::editRefused, this, &MemoryTablePage::problem);
+    connect(m_registers, &RegisterTableModel::editAdjusted, this, [this](const QString &note) {
+        m_note->setText(note);
+        m_note->show();
+    });
     connect(m_read, &QPushButton::clicked, this, &MemoryTablePage::readRequested);
     connect(m_apply, &QPushButton::clicked, this, &MemoryTablePage::applyRequested);
     connect(m_revert, &QPushButton::clicked, this, &MemoryTablePage::revertRequested);
@@ -88,6 +101,9 @@ MemoryTablePage::MemoryTablePage(QWidget *parent)
 void MemoryTablePage::showServo(const feetech::BusClient &client, int index)
 {
     model::ParameterModel *parameters = client.servos()->parameters(index);
+    if (parameters != m_shownParameters)
+        m_note->hide(); // a note speaks of the servo it was typed for
+    m_shownParameters = parameters;
     m_registers->setServo(index >= 0 ? &client.servos()->at(index).info.table() : nullptr,
                           parameters);
     m_table->resizeColumnsToContents();
@@ -102,7 +118,7 @@ void MemoryTablePage::showServo(const feetech::BusClient &client, int index)
           model::State::Mismatch, model::State::Failed, model::State::Unknown})
         stateWidth = std::max(
             stateWidth,
-            m_table->fontMetrics().horizontalAdvance(model::ParameterModel::stateName(state)));
+            m_table->fontMetrics().horizontalAdvance(RegisterTableModel::snappedStateName(state)));
     m_table->setColumnWidth(RegisterTableModel::StateColumn, stateWidth + 16);
 }
 

@@ -1,6 +1,7 @@
 // The Memory table page: every register of the servo shown, filtered, edited, read and applied.
 #pragma once
 
+#include <QPointer>
 #include <QWidget>
 
 class QCheckBox;
@@ -50,6 +51,8 @@ private:
     QLineEdit *m_filterEdit = nullptr;
     QCheckBox *m_live = nullptr;
     QLabel *m_empty = nullptr; // the hint while no servo is chosen
+    QLabel *m_note = nullptr; // a typed value that was put on its register's step
+    QPointer<model::ParameterModel> m_shownParameters;
     QPushButton *m_read = nullptr;
     QPushButton *m_revert = nullptr;
     QPushButton *m_apply = nullptr;

@@ -50,6 +50,7 @@ void RegisterTableModel::setServo(const feetech::RegisterTable *table,
     beginResetModel();
     if (m_parameters)
         disconnect(m_parameters, nullptr, this, nullptr);
+    m_adjustments.clear();
     m_table = parameters ? table : nullptr;
     m_parameters = table ? parameters : nullptr;
     if (m_parameters) {
@@ -111,6 +112,8 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
         return reg->key;
     if (role == PendingRole)
         return pending.has_value();
+    if (role == RegisterValueRole)
+        return shown ? QVariant(qint32(*shown)) : QVariant();
     if (role == Qt::BackgroundRole) {
         const QColor colour = stateBackground(state);
         return colour.isValid() ? QVariant(QBrush(colour)) : QVariant();
@@ -134,9 +137,15 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
         }
     }
     if (role == Qt::ToolTipRole) {
-        QString tip = tr("%1 to %2").arg(reg->minimum).arg(reg->maximum);
-        if (!reg->unit.isEmpty())
-            tip += tr(" (× %1 %2)").arg(reg->scale).arg(feetech::tableText(reg->unit));
+        const bool plain = reg->choices.isEmpty() && reg->bits.isEmpty();
+        QString tip = plain ? tr("%1 to %2")
+                                  .arg(feetech::displayValue(*reg, reg->minimum),
+                                       feetech::displayValue(*reg, reg->maximum))
+                            : tr("%1 to %2").arg(reg->minimum).arg(reg->maximum);
+        if (plain && reg->scale != 1.0)
+            tip += tr(", in steps of %1").arg(feetech::resolutionText(*reg));
+        if (m_adjustments.contains(reg->key))
+            tip += u'\n' + m_adjustments.value(reg->key);
         if (!reg->note.isEmpty())
             tip += u'\n' + feetech::tableText(reg->note);
         if (pending && device)
@@ -148,8 +157,7 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
             return QString();
         if (!reg->choices.isEmpty())
             return feetech::displayValue(*reg, qint32(*shown));
-        return reg->scale == 1.0 ? QString::number(*shown)
-                                 : QString::number(double(*shown) * reg->scale, 'g', 10);
+        return feetech::realNumber(*reg, qint32(*shown));
     }
     if (role != Qt::DisplayRole)
         return {};
@@ -179,7 +187,11 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
     case ValueColumn:
         return shown ? feetech::displayValue(*reg, qint32(*shown)) : tr("—");
     case StateColumn:
-        return state == model::State::Clean ? QString() : model::ParameterModel::stateName(state);
+        if (state == model::State::Clean)
+            return QString();
+        // A value put on the register's step says so in its row until the edit is dropped.
+        return m_adjustments.contains(reg->key) ? snappedStateName(state)
+                                                : model::ParameterModel::stateName(state);
     default:
         return {};
     }
@@ -194,15 +206,25 @@ bool RegisterTableModel::setData(const QModelIndex &index, const QVariant &value
     if (text.isEmpty())
         return false;
     QString error;
-    const auto raw = feetech::parseValue(*reg, text, &error, feetech::ValueUnits::Real);
+    QString adjusted;
+    const auto raw = feetech::parseValue(*reg, text, &error, feetech::ValueUnits::Real, &adjusted);
     if (!raw) {
         emit editRefused(error);
         return false;
     }
+    if (adjusted.isEmpty())
+        m_adjustments.remove(reg->key);
+    else
+        m_adjustments.insert(reg->key, adjusted);
     if (!m_parameters->edit(reg->key, *raw, &error)) {
+        m_adjustments.remove(reg->key);
         emit editRefused(error);
         return false;
     }
+    // The row repaints (its state says "snapped") even when the value itself did not change.
+    emit dataChanged(index.siblingAtColumn(0), index.siblingAtColumn(ColumnCount - 1));
+    if (!adjusted.isEmpty())
+        emit editAdjusted(adjusted);
     return true;
 }
 
@@ -243,8 +265,17 @@ QVariant RegisterTableModel::headerData(int section, Qt::Orientation orientation
     }
 }
 
+QString RegisterTableModel::snappedStateName(model::State state)
+{
+    return tr("%1, snapped", "state of a register whose typed value was put on a step")
+        .arg(model::ParameterModel::stateName(state));
+}
+
 void RegisterTableModel::parameterChanged(const QString &key)
 {
+    // A dropped edit (Revert, a servo read anew) takes its note with it.
+    if (m_parameters && m_parameters->state(key) == model::State::Clean)
+        m_adjustments.remove(key);
     const int row = rowOf(key);
     if (row >= 0)
         emit dataChanged(index(row, 0), index(row, ColumnCount - 1));

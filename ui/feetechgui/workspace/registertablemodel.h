@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QAbstractTableModel>
+#include <QHash>
 #include <QPointer>
 
 namespace feetech {
@@ -10,7 +11,8 @@ struct Register;
 } // namespace feetech
 namespace model {
 class ParameterModel;
-}
+enum class State;
+} // namespace model
 
 // Rows are the table's registers in address order; values and edits live in the parameter
 // model, so the Settings form and this table always agree.
@@ -31,7 +33,8 @@ public:
         StateColumn,
         ColumnCount
     };
-    enum Role { KeyRole = Qt::UserRole + 1, PendingRole };
+    // RegisterValueRole: the value shown, in register units (what an editor starts from).
+    enum Role { KeyRole = Qt::UserRole + 1, PendingRole, RegisterValueRole };
 
     explicit RegisterTableModel(QObject *parent = nullptr);
 
@@ -48,8 +51,15 @@ public:
     Qt::ItemFlags flags(const QModelIndex &index) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
 
+    // Why the edit of `key` is not what was typed (put on the register's step); empty if it is.
+    QString adjustment(const QString &key) const { return m_adjustments.value(key); }
+    // The state column of a row whose typed value was snapped: "Edited, snapped".
+    static QString snappedStateName(model::State state);
+
 signals:
     void editRefused(const QString &message);
+    // A typed value became the nearest step of its register: the sentence that says so.
+    void editAdjusted(const QString &note);
 
 private:
     void parameterChanged(const QString &key);
@@ -57,4 +67,5 @@ private:
     const feetech::RegisterTable *m_table = nullptr;
     QPointer<model::ParameterModel> m_parameters;
     bool m_editable = false;
+    QHash<QString, QString> m_adjustments; // by key, until the edit is dropped or made again
 };
