@@ -208,6 +208,27 @@ private slots:
         }
     }
 
+    void aServoSetUpReplacesTheListsStaleEntryAtItsNewId()
+    {
+        // Scanned with a servo at ID 2 that is unplugged since: the factory servo set up as
+        // shoulder_lift takes ID 2, and the list shows the bus, ID 2 once and ID 1 no more.
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        QVERIFY(plug(2, QStringLiteral("STS3215"), k1M));
+        feetech::ScanOptions options;
+        options.lastId = 10;
+        QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
+        QVERIFY(m_client->scan(options));
+        QTRY_COMPARE_WITH_TIMEOUT(scanned.size(), 1, 30000);
+        QCOMPARE(m_client->servos()->idsInUse(), (QVector<int> {1, 2}));
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
+        QVERIFY(m_flow->chooseJoint(1));
+        findAndWait();
+        setUpAndWait();
+        QCOMPARE(m_flow->jointState(1), JointState::Done);
+        QCOMPARE(m_client->servos()->idsInUse(), QVector<int> {2});
+        QCOMPARE(m_client->servos()->rowCount(), 1);
+    }
+
     void aNewRobotStartsOver()
     {
         QVERIFY(m_flow->chooseJoint(2));
