@@ -278,6 +278,32 @@ private slots:
             QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
     }
 
+    void aWriteThatFailsSaysNothingWasWrittenAndVerified()
+    {
+        startArm();
+        CalibrationWizard wizard(m_client.get());
+        ScriptedHand hand(*m_simulator);
+        hand.place(1, 1000);
+        hand.script(1, {600, 1600, 1000});
+        startRecording(wizard, hand);
+        QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
+        QTRY_COMPARE(wizard.recordings().first().range.maximum(), 1600);
+        click(&wizard, "finishRecordingButton");
+        QVERIFY(wizard.results().first().ok());
+        // The only joint to write is unplugged before it is written.
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(0); });
+        QSignalSpy written(&wizard, &CalibrationWizard::writingFinished);
+        click(&wizard, "writeCalibrationButton");
+        QVERIFY(written.wait(30000));
+        QCOMPARE(written.first().at(0).toBool(), false);
+        QCOMPARE(summary(wizard),
+                 QStringLiteral("No joint's calibration was written and "
+                                "verified: the status column says why."));
+        QVERIFY(status(wizard).isEmpty());
+        QVERIFY(
+            !wizard.findChild<QPushButton *>(QStringLiteral("saveLeRobotFileButton"))->isEnabled());
+    }
+
     void recordingAgainForgetsTheFirstRecording()
     {
         startArm();
