@@ -3,18 +3,27 @@
 #include "feetechbus.h"
 #include "scriptedhand.h"
 
+#include "calibrationfiles.h"
 #include "calibrationsaver.h"
 #include "calibrationwizard.h"
 #include "lerobotcalibration.h"
 #include "loadcalibrationdialog.h"
 #include "mainwindow.h"
+#include "recentfiles.h"
+#include "robottemplate.h"
+#include "setupwizard.h"
 
 #include <QAction>
+#include <QFileDialog>
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QScopeGuard>
 #include <QSettings>
+#include <QStyledItemDelegate>
 #include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTranslator>
 #include <QtTest>
 
 using testsupport::ScriptedHand;
@@ -22,6 +31,19 @@ using testsupport::ScriptedHand;
 namespace {
 
 constexpr int kOffsetAddress = 31;
+
+// A language that names one joint: what the window shows changes, the file's keys do not.
+class JointTranslator : public QTranslator
+{
+public:
+    QString translate(const char *context, const char *source, const char *, int) const override
+    {
+        if (qstrcmp(context, "Joint") == 0 && qstrcmp(source, "shoulder_pan") == 0)
+            return QStringLiteral("Schulterdrehung");
+        return {};
+    }
+    bool isEmpty() const override { return false; }
+};
 
 } // namespace
 
@@ -42,6 +64,38 @@ private:
         m_client = std::make_unique<feetech::BusClient>(testsupport::patientTiming());
         QVERIFY(testsupport::connectAndScan(*m_client, m_simulator->linkPath(), 6));
         QCOMPARE(m_client->servos()->count(), 6);
+    }
+
+    static QString summary(const CalibrationWizard &wizard)
+    {
+        return wizard.findChild<QLabel *>(QStringLiteral("calibrationResultsSummary"))->text();
+    }
+    static QString status(const CalibrationWizard &wizard)
+    {
+        return wizard.findChild<QLabel *>(QStringLiteral("calibrationStatus"))->text();
+    }
+
+    // Answers the next file dialog once it shows: *folderShown says whether it opened in the
+    // folder of the file it offers (which must exist for that), `accept` whether it is accepted.
+    static void answerFileDialog(bool *folderShown, bool accept)
+    {
+        auto *poll = new QTimer;
+        poll->setInterval(10);
+        QObject::connect(poll, &QTimer::timeout, poll, [poll, folderShown, accept] {
+            auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            const QStringList offered = dialog->selectedFiles();
+            *folderShown = offered.size() == 1
+                && QDir(dialog->directory()).absolutePath()
+                    == QFileInfo(offered.first()).absolutePath();
+            if (accept)
+                QMetaObject::invokeMethod(dialog, "accept"); // protected, a slot
+            else
+                dialog->reject();
+            poll->deleteLater();
+        });
+        poll->start();
     }
 
     static void click(QWidget *parent, const char *name)
@@ -126,6 +180,7 @@ private slots:
         }
         QCOMPARE(testsupport::writesReceived(logPath(), 2, kOffsetAddress),
                  0); // nothing until Write
+        QVERIFY(summary(wizard).endsWith(QLatin1String("Nothing has been written yet.")));
 
         QSignalSpy written(&wizard, &CalibrationWizard::writingFinished);
         click(&wizard, "writeCalibrationButton");
@@ -133,6 +188,12 @@ private slots:
         QCOMPARE(written.first().at(0).toBool(), true);
         auto *results = wizard.findChild<QTableWidget *>(QStringLiteral("calibrationResultTable"));
         QCOMPARE(results->item(1, 4)->text(), QStringLiteral("Written and verified"));
+        // The page says one thing of the writes, and it is what happened.
+        QCOMPARE(summary(wizard),
+                 QStringLiteral("Every joint's offset and limits were written to its EEPROM and "
+                                "read back as written."));
+        QCOMPARE(status(wizard),
+                 QStringLiteral("Save LeRobot's file if you use LeRobot with this arm."));
         m_simulator->call([](sim::Simulator &simulator) { simulator.powerCycle(); });
         QCOMPARE(simulatorValue(2, u"position_offset"), -1996);
         QCOMPARE(simulatorValue(2, u"min_angle_limit"), 2048 - 648);
@@ -185,6 +246,10 @@ private slots:
         QSignalSpy written(&wizard, &CalibrationWizard::writingFinished);
         click(&wizard, "writeCalibrationButton");
         QVERIFY(written.wait(20000));
+        QCOMPARE(summary(wizard),
+                 QStringLiteral("1 of 6 joint(s) were written and verified; the "
+                                "status column says what became of the "
+                                "others."));
         QCOMPARE(simulatorValue(1, u"position_offset"), 1100 - 2047);
         for (quint8 id = 2; id <= 6; ++id)
             QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
@@ -202,12 +267,41 @@ private slots:
         startRecording(*wizard, hand);
         QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
         QVERIFY(m_client->telemetry()->isStreaming());
+        // The window stays usable, but nothing else moves the joints a hand is turning.
+        QCOMPARE(m_client->identify()->blocker(0).code(), feetech::Refusal::Code::ServoHeld);
         QPointer<CalibrationWizard> alive(wizard);
         click(wizard, "calibrationCancelButton");
         QTRY_VERIFY(alive.isNull());
         QVERIFY(!m_client->telemetry()->isStreaming());
+        QVERIFY(!m_client->identify()->blocker(0));
         for (quint8 id = 1; id <= 6; ++id)
             QCOMPARE(testsupport::writesReceived(logPath(), id, kOffsetAddress), 0);
+    }
+
+    void aWriteThatFailsSaysNothingWasWrittenAndVerified()
+    {
+        startArm();
+        CalibrationWizard wizard(m_client.get());
+        ScriptedHand hand(*m_simulator);
+        hand.place(1, 1000);
+        hand.script(1, {600, 1600, 1000});
+        startRecording(wizard, hand);
+        QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
+        QTRY_COMPARE(wizard.recordings().first().range.maximum(), 1600);
+        click(&wizard, "finishRecordingButton");
+        QVERIFY(wizard.results().first().ok());
+        // The only joint to write is unplugged before it is written.
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(0); });
+        QSignalSpy written(&wizard, &CalibrationWizard::writingFinished);
+        click(&wizard, "writeCalibrationButton");
+        QVERIFY(written.wait(30000));
+        QCOMPARE(written.first().at(0).toBool(), false);
+        QCOMPARE(summary(wizard),
+                 QStringLiteral("No joint's calibration was written and "
+                                "verified: the status column says why."));
+        QVERIFY(status(wizard).isEmpty());
+        QVERIFY(
+            !wizard.findChild<QPushButton *>(QStringLiteral("saveLeRobotFileButton"))->isEnabled());
     }
 
     void recordingAgainForgetsTheFirstRecording()
@@ -302,6 +396,69 @@ private slots:
         QCOMPARE(saved->at(1).homingOffset, -5);
     }
 
+    void jointNamesShowInTheUsersLanguageAndStayLeRobotsKeys()
+    {
+        JointTranslator translator;
+        QVERIFY(QCoreApplication::installTranslator(&translator));
+        startArm();
+        CalibrationWizard wizard(m_client.get());
+        auto *table = wizard.findChild<QTableWidget *>(QStringLiteral("calibrationJointTable"));
+        QTableWidgetItem *pan = table->item(0, 3);
+        QCOMPARE(pan->text(), QStringLiteral("shoulder_pan")); // what is edited and saved
+        auto *delegate = qobject_cast<QStyledItemDelegate *>(table->itemDelegateForColumn(3));
+        QVERIFY(delegate);
+        QCOMPARE(delegate->displayText(pan->data(Qt::DisplayRole), QLocale()),
+                 QStringLiteral("Schulterdrehung (shoulder_pan)"));
+        QCOMPARE(delegate->displayText(table->item(1, 3)->data(Qt::DisplayRole), QLocale()),
+                 QStringLiteral("shoulder_lift")); // no translation: the key alone
+        click(&wizard, "calibrationNextButton");
+        QVERIFY2(wizard.findChild<QLabel *>(QStringLiteral("torqueWarning"))
+                     ->text()
+                     .contains(QLatin1String("Schulterdrehung (ID 1)")),
+                 qPrintable(wizard.findChild<QLabel *>(QStringLiteral("torqueWarning"))->text()));
+        QCOMPARE(wizard.recordings().first().name, QStringLiteral("shoulder_pan"));
+        QCoreApplication::removeTranslator(&translator);
+    }
+
+    void savingOffersLeRobotsFolderForTheArmAndMakesIt()
+    {
+        QTemporaryDir root;
+        QVERIFY(root.isValid());
+        const QByteArray saved = qgetenv("HF_LEROBOT_CALIBRATION");
+        qputenv("HF_LEROBOT_CALIBRATION", QFile::encodeName(root.path()));
+        const auto restore = qScopeGuard([&saved] {
+            if (saved.isNull())
+                qunsetenv("HF_LEROBOT_CALIBRATION");
+            else
+                qputenv("HF_LEROBOT_CALIBRATION", saved);
+        });
+        const feetech::RobotTemplate *follower =
+            feetech::defaultRobotTemplateIn(feetech::builtInRobotTemplates());
+        QVERIFY(follower);
+        const QString folder = root.filePath(QStringLiteral("robots/so101_follower"));
+        const QString suggested = QDir(folder).filePath(QStringLiteral("my_arm.json"));
+        QCOMPARE(suggestedCalibrationFile(follower), suggested);
+
+        // Cancelled: the folders made for the dialog go again.
+        bool folderShown = false;
+        answerFileDialog(&folderShown, false);
+        QVERIFY(chooseCalibrationFileToSave(nullptr, QStringLiteral("Save"), follower).isEmpty());
+        QVERIFY(folderShown);
+        QVERIFY(!QDir(root.filePath(QStringLiteral("robots"))).exists());
+
+        // Saved there: the folder stays, and the next offer is the file used last.
+        folderShown = false;
+        answerFileDialog(&folderShown, true);
+        QCOMPARE(chooseCalibrationFileToSave(nullptr, QStringLiteral("Save"), follower), suggested);
+        QVERIFY(folderShown);
+        QVERIFY(QDir(folder).exists());
+        const QString renamed = QDir(folder).filePath(QStringLiteral("follower_a.json"));
+        QVERIFY(feetech::saveLeRobotCalibration(
+            {{QStringLiteral("shoulder_pan"), 1, 0, 0, 100, 4000}}, renamed, nullptr));
+        recentfiles::add(recentfiles::Kind::Calibration, renamed);
+        QCOMPARE(suggestedCalibrationFile(follower), renamed);
+    }
+
     void theRobotMenuIsEnabledOnceABusIsScanned()
     {
         QVector<sim::FeetechServoSpec> specs {{1, QStringLiteral("STS3215"), 1000000}};
@@ -314,13 +471,38 @@ private slots:
         QVERIFY(testsupport::connectAndScan(*window.feetechClient(), m_simulator->linkPath(), 3));
         QTRY_VERIFY(calibrate->isEnabled());
         QVERIFY(window.findChild<QAction *>(QStringLiteral("loadCalibrationAction"))->isEnabled());
-        // Application-modal: the modeless set-up wizard cannot start a set-up meanwhile.
+        // Modeless, so that the window (the demo's Simulator dock) stays usable; one at a time,
+        // and no motor set-up beside it.
         calibrate->trigger();
         QPointer<CalibrationWizard> wizard = window.findChild<CalibrationWizard *>();
         QVERIFY(wizard);
-        QCOMPARE(wizard->windowModality(), Qt::ApplicationModal);
+        QVERIFY(wizard->isVisible());
+        QCOMPARE(wizard->windowModality(), Qt::NonModal);
+        calibrate->trigger();
+        QCOMPARE(window.findChildren<CalibrationWizard *>().size(), 1);
+        auto *setUp = window.findChild<QAction *>(QStringLiteral("setUpMotorsAction"));
+        QVERIFY(setUp && setUp->isEnabled());
+        setUp->trigger();
+        QVERIFY(!window.findChild<SetupWizard *>());
+        auto *banner = window.findChild<QLabel *>(QStringLiteral("problemBanner"));
+        QVERIFY(!banner->isHidden());
+        QVERIFY2(banner->text().startsWith(QLatin1String("Close the calibration wizard")),
+                 qPrintable(banner->text()));
+        // The banner's problem came while the wizard was open: it goes with it.
         wizard->close();
         QTRY_VERIFY(wizard.isNull());
+        QVERIFY(banner->isHidden());
+        // Without the calibration, the set-up opens; the calibration is refused beside it.
+        setUp->trigger();
+        auto *setUpWizard = window.findChild<SetupWizard *>();
+        QVERIFY(setUpWizard && setUpWizard->isVisible());
+        calibrate->trigger();
+        QVERIFY(!window.findChild<CalibrationWizard *>());
+        QVERIFY(banner->text().startsWith(QLatin1String("Close the motor set-up")));
+        QTRY_VERIFY_WITH_TIMEOUT(!setUpWizard->flow()->isWorking(), 20000);
+        QTest::keyClick(setUpWizard, Qt::Key_Escape);
+        QVERIFY(!setUpWizard->isVisible());
+        QVERIFY(banner->isHidden());
         window.feetechClient()->disconnectFrom();
         QTRY_VERIFY(!calibrate->isEnabled());
     }

@@ -262,6 +262,27 @@ private slots:
                  QStringLiteral("teleoperators/so100_leader"));
         QVERIFY(leRobotArmFolders(QStringLiteral("My hexapod")).isEmpty());
     }
+
+    void anArmsFolderIsTheOneLeRobotHasElseTheUsualOne()
+    {
+        QTemporaryDir root;
+        QVERIFY(root.isValid());
+        const QByteArray saved = qgetenv("HF_LEROBOT_CALIBRATION");
+        qputenv("HF_LEROBOT_CALIBRATION", QFile::encodeName(root.path()));
+        const QString follower = QStringLiteral("SO-101 follower arm");
+        QCOMPARE(leRobotArmFolder(follower),
+                 root.filePath(QStringLiteral("robots/so101_follower")));
+        // LeRobot 0.4 keeps both SO arms in so_follower: a folder it made is the one.
+        QVERIFY(QDir(root.path()).mkpath(QStringLiteral("robots/so_follower")));
+        QCOMPARE(leRobotArmFolder(follower), root.filePath(QStringLiteral("robots/so_follower")));
+        QCOMPARE(leRobotArmFolder(QStringLiteral("SO-100 leader arm")),
+                 root.filePath(QStringLiteral("teleoperators/so100_leader")));
+        QVERIFY(leRobotArmFolder(QStringLiteral("My hexapod")).isEmpty());
+        if (saved.isNull())
+            qunsetenv("HF_LEROBOT_CALIBRATION");
+        else
+            qputenv("HF_LEROBOT_CALIBRATION", saved);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestLeRobotCalibration)

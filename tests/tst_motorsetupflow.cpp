@@ -163,6 +163,72 @@ private slots:
         QCOMPARE(m_flow->currentJoint(), 1); // the first joint not done
     }
 
+    void aCheckCountsOnlyTheJointsAnsweringNowAsTheOperationDoes()
+    {
+        // Every joint set up, then the arm unplugged and a factory servo connected alone.
+        for (const feetech::RobotJoint &joint : std::as_const(m_robot.joints)) {
+            QVERIFY(plug(quint8(joint.id), joint.model, m_robot.baud));
+            QVERIFY(withServo(quint8(joint.id), m_robot.baud, [&](sim::VirtualFeetechServo &servo) {
+                for (auto it = joint.settings.cbegin(); it != joint.settings.cend(); ++it)
+                    servo.setValue(it.key(), it.value());
+            }));
+        }
+        checkAndWait();
+        for (int joint = 0; joint < m_flow->jointCount(); ++joint)
+            QCOMPARE(m_flow->jointState(joint), JointState::Done);
+        unplugAll();
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        QSignalSpy checked(m_flow.get(), &feetech::MotorSetupFlow::checked);
+        QString operationMessage;
+        connect(m_client.get(), &feetech::BusClient::submitted, this,
+                [&operationMessage](feetech::OperationReply *reply) {
+                    connect(reply, &feetech::OperationReply::finished, reply,
+                            [&operationMessage](const feetech::OperationResult &result) {
+                                operationMessage = result.message;
+                            });
+                });
+        checkAndWait();
+        QCOMPARE(checked.size(), 1);
+        QCOMPARE(checked.at(0).at(2).toInt(), 0);
+        QCOMPARE(operationMessage, QStringLiteral("0 of 6 joint(s) already set up."));
+        for (int joint = 0; joint < m_flow->jointCount(); ++joint)
+            QCOMPARE(m_flow->jointState(joint), JointState::ToDo);
+        QVERIFY2(m_flow->jointReason(0).contains(QLatin1String("ID 1 answers")),
+                 qPrintable(m_flow->jointReason(0)));
+        QCOMPARE(m_flow->jointReason(1),
+                 QStringLiteral("set up earlier, but ID 2 does not answer now"));
+        QCOMPARE(m_flow->currentJoint(), 0);
+        // And once nothing answers at ID 1 either, nothing is said of what answered there: every
+        // joint is simply to do.
+        unplugAll();
+        checkAndWait();
+        for (int joint = 0; joint < m_flow->jointCount(); ++joint) {
+            QCOMPARE(m_flow->jointState(joint), JointState::ToDo);
+            QVERIFY2(m_flow->jointReason(joint).isEmpty(), qPrintable(m_flow->jointReason(joint)));
+        }
+    }
+
+    void aServoSetUpReplacesTheListsStaleEntryAtItsNewId()
+    {
+        // Scanned with a servo at ID 2 that is unplugged since: the factory servo set up as
+        // shoulder_lift takes ID 2, and the list shows the bus, ID 2 once and ID 1 no more.
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
+        QVERIFY(plug(2, QStringLiteral("STS3215"), k1M));
+        feetech::ScanOptions options;
+        options.lastId = 10;
+        QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
+        QVERIFY(m_client->scan(options));
+        QTRY_COMPARE_WITH_TIMEOUT(scanned.size(), 1, 30000);
+        QCOMPARE(m_client->servos()->idsInUse(), (QVector<int> {1, 2}));
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
+        QVERIFY(m_flow->chooseJoint(1));
+        findAndWait();
+        setUpAndWait();
+        QCOMPARE(m_flow->jointState(1), JointState::Done);
+        QCOMPARE(m_client->servos()->idsInUse(), QVector<int> {2});
+        QCOMPARE(m_client->servos()->rowCount(), 1);
+    }
+
     void aNewRobotStartsOver()
     {
         QVERIFY(m_flow->chooseJoint(2));

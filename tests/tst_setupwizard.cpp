@@ -8,6 +8,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -145,16 +146,37 @@ private slots:
         QVERIFY(outcome().contains(QLatin1String("2 of 6 joint(s) set up")));
     }
 
-    void checkTheBusKeepsJointsSetUpEarlierWhoseServosWereUnplugged()
+    void checkTheBusCallsDoneOnlyTheJointsAnsweringNow()
     {
         openWizard();
         QVERIFY(plug(1, QStringLiteral("STS3215"), k1M));
         clickAndWait(m_wizard->findButton());
         clickAndWait(m_wizard->setUpButton());
+        QCOMPARE(status(0), QStringLiteral("Done"));
         unplugAll();
+        QVERIFY(plug(1, QStringLiteral("STS3215"), k1M)); // a factory servo alone
         clickAndWait(m_wizard->checkButton());
-        QCOMPARE(m_wizard->flow()->jointState(0), feetech::MotorSetupFlow::JointState::Done);
+        QVERIFY2(outcome().contains(QLatin1String("0 of 6 joint(s) set up")),
+                 qPrintable(outcome()));
+        for (int joint = 0; joint < m_robot.joints.size(); ++joint)
+            QCOMPARE(m_wizard->flow()->jointState(joint),
+                     feetech::MotorSetupFlow::JointState::ToDo);
+        QVERIFY2(status(0).contains(QLatin1String("ID 1 answers, but ")), qPrintable(status(0)));
         QCOMPARE(m_wizard->flow()->currentJoint(), 1);
+    }
+
+    void theRobotOfferedFirstIsTheOneEveryWizardOffers()
+    {
+        // The calibration wizard and Apply template offer the same: the SO-101 follower.
+        const QVector<feetech::RobotTemplate> templates = feetech::availableRobotTemplates();
+        QVERIFY(feetech::defaultRobotTemplateIn(templates));
+        QCOMPARE(feetech::defaultRobotTemplateIn(templates)->name, kArm);
+        m_wizard = std::make_unique<SetupWizard>(m_client.get());
+        QCOMPARE(m_wizard->flow()->robot().name, kArm);
+        QCOMPARE(m_wizard->robotChoice()->currentText(), kArm);
+        m_wizard->show();
+        QTRY_VERIFY_WITH_TIMEOUT(!m_wizard->flow()->isWorking(), 20000);
+        QCOMPARE(m_wizard->flow()->robot().name, kArm);
     }
 
     void aStopBetweenStepsWritesNothingMoreAndLeavesTheJointToDo()
@@ -236,7 +258,33 @@ private slots:
         QVERIFY(wizard->isVisible());
         QTRY_VERIFY_WITH_TIMEOUT(!wizard->flow()->isWorking(), 20000); // its check of the bus
         QVERIFY(wizard->findButton()->isEnabled());
-        wizard->close();
+        // Its failures reach the window's banner too, and go when it closes, however it closes.
+        auto *banner = window.findChild<QLabel *>(QStringLiteral("problemBanner"));
+        QVERIFY(banner);
+        const auto failAFind = [&] {
+            QTest::mouseClick(wizard->findButton(), Qt::LeftButton);
+            QTRY_VERIFY_WITH_TIMEOUT(!wizard->flow()->isWorking(), 30000);
+            QVERIFY(!banner->isHidden());
+            QVERIFY2(banner->text().startsWith(QLatin1String("No servo answers")),
+                     qPrintable(banner->text()));
+        };
+        failAFind();
+        auto *buttons = wizard->findChild<QDialogButtonBox *>();
+        QVERIFY(buttons);
+        QTest::mouseClick(buttons->button(QDialogButtonBox::Close), Qt::LeftButton);
+        QVERIFY(!wizard->isVisible());
+        QVERIFY(banner->isHidden());
+        setUp->trigger();
+        QCOMPARE(window.findChild<SetupWizard *>(), wizard); // the same one, reopened
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard->flow()->isWorking(), 20000);
+        failAFind();
+        QTest::keyClick(wizard, Qt::Key_Escape);
+        QVERIFY(banner->isHidden());
+        setUp->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!wizard->flow()->isWorking(), 20000);
+        failAFind();
+        wizard->close(); // the title bar's close
+        QVERIFY(banner->isHidden());
     }
 };
 

@@ -4,6 +4,7 @@
 
 #include "busclient.h"
 #include "calibrationactions.h"
+#include "calibrationwizard.h"
 #include "connectionbar.h"
 #include "connectioncontroller.h"
 #include "demoservos.h"
@@ -328,13 +329,24 @@ void MainWindow::createMenus()
     setUpMotors->setEnabled(false);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, setUpMotors,
             [this, setUpMotors] { setUpMotors->setEnabled(m_feetech->link()->isConnected()); });
-    connect(setUpMotors, &QAction::triggered, this, [this] {
+    // A set-up changes the IDs and settings of the servos a calibration records and writes.
+    const auto calibrating = [this] {
+        auto *calibration = findChild<CalibrationWizard *>();
+        if (!calibration || !calibration->isVisible())
+            return false;
+        showProblem(tr("Close the calibration wizard before setting up motors: a set-up changes "
+                       "the servos' IDs and settings."));
+        calibration->raise();
+        calibration->activateWindow();
+        return true;
+    };
+    connect(setUpMotors, &QAction::triggered, this, [this, calibrating] {
+        if (calibrating())
+            return;
         auto *wizard = findChild<SetupWizard *>();
         if (!wizard)
             wizard = new SetupWizard(m_feetech.get(), this);
-        wizard->show();
-        wizard->raise();
-        wizard->activateWindow();
+        showWizard(wizard);
     });
     // Replacing one joint's motor: its set-up needs an open port only, as Set up motors; the
     // wizard scans the arm itself before calibrating the joint.
@@ -345,13 +357,14 @@ void MainWindow::createMenus()
     replaceMotor->setEnabled(false);
     connect(m_feetech.get(), &feetech::BusClient::statusChanged, replaceMotor,
             [this, replaceMotor] { replaceMotor->setEnabled(m_feetech->link()->isConnected()); });
-    connect(replaceMotor, &QAction::triggered, this, [this] {
+    connect(replaceMotor, &QAction::triggered, this, [this, calibrating] {
         auto *wizard = findChild<ReplaceMotorWizard *>();
+        // Its own calibration of the new joint is part of it.
+        if ((!wizard || !wizard->isVisible()) && calibrating())
+            return;
         if (!wizard)
             wizard = new ReplaceMotorWizard(m_feetech.get(), this);
-        wizard->show();
-        wizard->raise();
-        wizard->activateWindow();
+        showWizard(wizard);
     });
 
     m_feetechWorkspace->robotActions()->addTo(robot);
@@ -360,6 +373,7 @@ void MainWindow::createMenus()
     robot->addSeparator();
     auto *calibration = new CalibrationActions(robot, m_feetech.get(), this);
     connect(calibration, &CalibrationActions::problem, this, &MainWindow::showProblem);
+    connect(calibration, &CalibrationActions::wizardOpening, this, &MainWindow::followWizard);
     connect(calibration, &CalibrationActions::message, this, [this](const QString &text) {
         m_problem->hide();
         statusBar()->showMessage(text, kStatusMessageMs);
@@ -630,8 +644,33 @@ void MainWindow::updatePollRate()
 
 void MainWindow::showProblem(const QString &message)
 {
+    ++m_problemsShown;
     m_problem->setText(message);
     m_problem->show();
+}
+
+void MainWindow::showWizard(QDialog *wizard)
+{
+    followWizard(wizard);
+    wizard->show();
+    wizard->raise();
+    wizard->activateWindow();
+}
+
+void MainWindow::followWizard(QDialog *wizard)
+{
+    static const char *const kProblemsAtOpen = "servobenchProblemsAtOpen";
+    if (wizard->isVisible())
+        return; // open already: what it showed since it opened still goes when it closes
+    const bool followed = wizard->property(kProblemsAtOpen).isValid();
+    wizard->setProperty(kProblemsAtOpen, m_problemsShown);
+    if (followed)
+        return;
+    // finished comes from every way a dialog closes: Close, Cancel, Escape, the title bar.
+    connect(wizard, &QDialog::finished, this, [this, wizard] {
+        if (m_problemsShown > wizard->property(kProblemsAtOpen).toULongLong())
+            m_problem->hide();
+    });
 }
 
 void MainWindow::chooseProfileToSave()

@@ -18,6 +18,7 @@ class PacketLogDock;
 class ParameterPage;
 class PtkWorkspace;
 class QAction;
+class QDialog;
 class QMenu;
 class QLabel;
 class QTimer;
@@ -88,6 +89,10 @@ private:
     void chooseProfileToSave();
     void chooseProfileToLoad();
     void showProblem(const QString &message);
+    // Shows `wizard` (made or reopened); the problems the banner shows while it is open (its
+    // own operations' failures, which it shows itself too) go when it closes, however it closes.
+    void showWizard(QDialog *wizard);
+    void followWizard(QDialog *wizard);
     void showProtocol(bool feetech);
     void updateFeetechBusActions(); // enabled while a Feetech bus is connected
     void updatePollRate();
@@ -113,6 +118,7 @@ private:
     SimulatorDock *m_simulatorDock = nullptr;
     QMenu *m_viewMenu = nullptr;
     QLabel *m_problem = nullptr; // a banner above the page: why the last action failed
+    quint64 m_problemsShown = 0; // how many the banner has shown, to tell which came when
     QLabel *m_connectionState = nullptr;
     QLabel *m_pollRate = nullptr;
     QLabel *m_counters = nullptr;

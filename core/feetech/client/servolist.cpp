@@ -67,10 +67,7 @@ void ServoList::add(const ServoInfo &info)
     entry->parameters->setDefinitions(modelDefinitions(info.table()));
     beginResetModel();
     m_servos.push_back(std::move(entry));
-    // Fastest rate first, then by ID: the order the tree shows.
-    std::stable_sort(m_servos.begin(), m_servos.end(), [](const auto &a, const auto &b) {
-        return a->info.baud != b->info.baud ? a->info.baud > b->info.baud : a->info.id < b->info.id;
-    });
+    sort();
     endResetModel();
     emit servosChanged();
 }
@@ -79,9 +76,31 @@ void ServoList::move(int index, const ServoInfo &info)
 {
     if (index < 0 || index >= count())
         return;
+    const Servo *moved = m_servos.at(std::size_t(index)).get();
+    const bool sameAddress = moved->info.address() == info.address();
+    beginResetModel();
     m_servos.at(std::size_t(index))->info = info;
-    emit dataChanged(this->index(index, 0), this->index(index, ColumnCount - 1));
+    // The servo answers at its new address now, so an entry left there (a servo scanned earlier
+    // and unplugged since, whose ID a flow could therefore give) is no servo on the bus.
+    if (!sameAddress) {
+        m_servos.erase(std::remove_if(m_servos.begin(), m_servos.end(),
+                                      [moved, &info](const auto &entry) {
+                                          return entry.get() != moved
+                                              && entry->info.address() == info.address();
+                                      }),
+                       m_servos.end());
+    }
+    sort();
+    endResetModel();
     emit servosChanged();
+}
+
+void ServoList::sort()
+{
+    // Fastest rate first, then by ID: the order the tree shows.
+    std::stable_sort(m_servos.begin(), m_servos.end(), [](const auto &a, const auto &b) {
+        return a->info.baud != b->info.baud ? a->info.baud > b->info.baud : a->info.id < b->info.id;
+    });
 }
 
 void ServoList::noteUpdated(int index)

@@ -44,7 +44,8 @@ public:
     bool eepromUnlocked(int index) const;
 
     // For the client and its services: a servo found, moved (a new ID or rate), changed in
-    // place (new values, status, what it may do), or the whole list gone.
+    // place (new values, status, what it may do), or the whole list gone. A move takes the
+    // place of any other entry at the new ID and rate, and may change every index.
     void add(const ServoInfo &info);
     void move(int index, const ServoInfo &info);
     Servo &entry(int index) { return *m_servos.at(std::size_t(index)); }
@@ -62,6 +63,8 @@ signals:
     void servoUpdated(int index); // new values or status for this servo
 
 private:
+    void sort();
+
     std::vector<std::unique_ptr<Servo>> m_servos;
 };
 

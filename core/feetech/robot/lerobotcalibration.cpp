@@ -320,4 +320,17 @@ QStringList leRobotArmFolders(const QString &templateName)
     return {QStringLiteral("robots/%1_follower").arg(arm), QStringLiteral("robots/so_follower")};
 }
 
+QString leRobotArmFolder(const QString &templateName)
+{
+    const QStringList folders = leRobotArmFolders(templateName);
+    if (folders.isEmpty())
+        return {};
+    const QDir root(leRobotCalibrationFolder());
+    for (const QString &folder : folders) {
+        if (root.exists(folder))
+            return root.filePath(folder);
+    }
+    return root.filePath(folders.first());
+}
+
 } // namespace feetech

@@ -79,5 +79,9 @@ QString leRobotCalibrationFolder();
 // "robots/so_follower" for both SO arms), "teleoperators/so100_leader" for the SO-100 leader;
 // none for any other arm.
 QStringList leRobotArmFolders(const QString &templateName);
+// The folder LeRobot reads the arm of `templateName` from: the first of its leRobotArmFolders
+// that exists under leRobotCalibrationFolder(), else the usual one (which may not exist yet);
+// empty for an arm LeRobot does not know.
+QString leRobotArmFolder(const QString &templateName);
 
 } // namespace feetech

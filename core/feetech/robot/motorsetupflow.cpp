@@ -3,6 +3,17 @@
 
 #include "busclient.h"
 
+#include <QCoreApplication>
+
+namespace {
+
+struct Tr
+{
+    Q_DECLARE_TR_FUNCTIONS(MotorSetupFlow)
+};
+
+} // namespace
+
 namespace feetech {
 
 MotorSetupFlow::MotorSetupFlow(BusClient *client, QObject *parent)
@@ -146,13 +157,19 @@ void MotorSetupFlow::onChecked(const QVector<JointCheck> &joints, bool ok, const
     for (int i = 0; i < joints.size() && i < m_joints.size(); ++i) {
         const JointCheck &check = joints.at(i);
         Joint &joint = m_joints[i];
+        // Done is what the bus says now: a joint set up earlier whose servo no longer answers
+        // (unplugged, or moved to another ID since) is to be checked or set up again, so the
+        // wizard's count is the check's own.
         if (check.done()) {
             joint = {JointState::Done, {}};
         } else if (check.found) { // something else answers there: not set up as this joint
             joint = {JointState::ToDo, check.problem()};
+        } else if (joint.state == JointState::Done) {
+            joint = {JointState::ToDo,
+                     Tr::tr("set up earlier, but ID %1 does not answer now").arg(check.id)};
+        } else if (joint.state == JointState::ToDo) {
+            joint.reason.clear(); // what an earlier check found there has gone
         }
-        // A joint whose servo does not answer keeps its state: set up in this session, its
-        // servo was unplugged for the next one.
         done += joint.state == JointState::Done ? 1 : 0;
     }
     if (m_current < 0 || m_joints.at(m_current).state == JointState::Done)

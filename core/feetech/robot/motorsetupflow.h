@@ -13,9 +13,9 @@ namespace feetech {
 class BusClient;
 class Refusal;
 
-// Works through the client's motor set-up service, asynchronously. The joints set up while the
-// flow lives stay done; a check of the bus marks the joints whose servo already answers at its
-// ID, as its model and with its settings, as done too.
+// Works through the client's motor set-up service, asynchronously. A joint set up is done; a
+// check of the bus makes done exactly the joints whose servo answers at its ID now, as its model
+// and with its settings (a joint set up earlier whose servo is unplugged is to do again).
 class MotorSetupFlow : public QObject
 {
     Q_OBJECT

@@ -429,6 +429,21 @@ QVector<RobotTemplate> availableRobotTemplates(QStringList *problems)
     return templates;
 }
 
+int defaultRobotTemplate(const QVector<RobotTemplate> &templates)
+{
+    for (int i = 0; i < templates.size(); ++i) {
+        if (templates.at(i).name == QLatin1String("SO-101 follower arm"))
+            return i;
+    }
+    return templates.isEmpty() ? -1 : 0;
+}
+
+const RobotTemplate *defaultRobotTemplateIn(const QVector<RobotTemplate> &templates)
+{
+    const int chosen = defaultRobotTemplate(templates);
+    return chosen >= 0 ? &templates.at(chosen) : nullptr;
+}
+
 QString robotDisplayName(const QString &name)
 {
     return QCoreApplication::translate("RobotTemplate", name.toUtf8().constData());

@@ -75,5 +75,11 @@ QString userRobotTemplateFolder();
 // The built-in templates, then every valid template in userRobotTemplateFolder() by file name;
 // a file there that cannot be read adds its error to *problems and is skipped.
 QVector<RobotTemplate> availableRobotTemplates(QStringList *problems = nullptr);
+// The template every window offers first, so that the set-up wizard, Apply template and the
+// calibration wizard name the same arm: the SO-101 follower (LeRobot's current arm, and the
+// demo's) when it is among `templates`, else the first; -1 when there is none.
+int defaultRobotTemplate(const QVector<RobotTemplate> &templates);
+// That template itself, null when there is none.
+const RobotTemplate *defaultRobotTemplateIn(const QVector<RobotTemplate> &templates);
 
 } // namespace feetech

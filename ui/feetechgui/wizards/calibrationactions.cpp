@@ -2,22 +2,24 @@
 #include "calibrationactions.h"
 
 #include "busclient.h"
+#include "calibrationfiles.h"
 #include "calibrationjointspage.h"
 #include "calibrationsaver.h"
 #include "calibrationwizard.h"
 #include "loadcalibrationdialog.h"
 #include "recentfiles.h"
+#include "replacemotorwizard.h"
 #include "robottemplate.h"
+#include "setupwizard.h"
 
 #include <QAction>
-#include <QDir>
 #include <QFileDialog>
 #include <QMenu>
 
 namespace {
 
 // Application-modal, not window-modal: the set-up wizard is a window of its own (modeless), and
-// no set-up may run while joints are recorded or calibrations written.
+// no set-up may run while calibrations are written.
 void showApplicationModal(QDialog *dialog)
 {
     dialog->setWindowModality(Qt::ApplicationModal);
@@ -31,11 +33,7 @@ CalibrationActions::CalibrationActions(QMenu *menu, feetech::BusClient *client, 
     , m_client(client)
     , m_window(window)
 {
-    m_calibrate = menu->addAction(tr("&Calibrate arm…"), this, [this] {
-        auto *wizard = new CalibrationWizard(m_client, m_window);
-        wizard->setAttribute(Qt::WA_DeleteOnClose);
-        showApplicationModal(wizard);
-    });
+    m_calibrate = menu->addAction(tr("&Calibrate arm…"), this, &CalibrationActions::openWizard);
     m_calibrate->setObjectName(QStringLiteral("calibrateArmAction"));
     m_calibrate->setToolTip(tr("Record each joint's range by hand and centre it on the encoder"));
     m_save = menu->addAction(tr("&Save calibration…"), this, &CalibrationActions::saveCalibration);
@@ -52,6 +50,31 @@ CalibrationActions::CalibrationActions(QMenu *menu, feetech::BusClient *client, 
     updateEnabled();
 }
 
+void CalibrationActions::openWizard()
+{
+    if (!m_wizard) {
+        // A set-up gives servos new IDs and settings under the joints being recorded.
+        for (QDialog *setUp :
+             {static_cast<QDialog *>(m_window->findChild<SetupWizard *>()),
+              static_cast<QDialog *>(m_window->findChild<ReplaceMotorWizard *>())}) {
+            if (setUp && setUp->isVisible()) {
+                emit problem(tr("Close the motor set-up (%1) before calibrating: it changes the "
+                                "servos' IDs and settings.")
+                                 .arg(setUp->windowTitle()));
+                setUp->raise();
+                setUp->activateWindow();
+                return;
+            }
+        }
+        m_wizard = new CalibrationWizard(m_client, m_window);
+        m_wizard->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    emit wizardOpening(m_wizard);
+    m_wizard->show();
+    m_wizard->raise();
+    m_wizard->activateWindow();
+}
+
 void CalibrationActions::updateEnabled()
 {
     const bool ready = m_client->link()->isConnected() && !m_client->isScanning()
@@ -63,11 +86,8 @@ void CalibrationActions::updateEnabled()
 void CalibrationActions::saveCalibration()
 {
     const QVector<feetech::RobotTemplate> templates = feetech::availableRobotTemplates();
-    const QString path = QFileDialog::getSaveFileName(
-        m_window, tr("Save calibration"),
-        QDir(defaultCalibrationFolder(defaultRobotTemplateIn(templates)))
-            .filePath(QStringLiteral("arm.json")),
-        tr("LeRobot calibration (*.json)"));
+    const QString path = chooseCalibrationFileToSave(m_window, tr("Save calibration"),
+                                                     feetech::defaultRobotTemplateIn(templates));
     if (path.isEmpty())
         return;
     auto *saver = new CalibrationSaver(m_client, this);
@@ -87,10 +107,10 @@ void CalibrationActions::saveCalibration()
 void CalibrationActions::loadCalibration()
 {
     const QVector<feetech::RobotTemplate> templates = feetech::availableRobotTemplates();
-    const QString path =
-        QFileDialog::getOpenFileName(m_window, tr("Load calibration"),
-                                     defaultCalibrationFolder(defaultRobotTemplateIn(templates)),
-                                     tr("LeRobot calibration (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(
+        m_window, tr("Load calibration"),
+        defaultCalibrationFolder(feetech::defaultRobotTemplateIn(templates)),
+        tr("LeRobot calibration (*.json)"));
     if (path.isEmpty())
         return;
     util::FileError error;

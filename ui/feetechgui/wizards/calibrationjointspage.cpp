@@ -2,14 +2,12 @@
 #include "calibrationjointspage.h"
 
 #include "busclient.h"
+#include "jointnamedelegate.h"
 #include "lerobotcalibration.h"
-#include "recentfiles.h"
 #include "widgethelpers.h"
 
 #include <QButtonGroup>
 #include <QComboBox>
-#include <QDir>
-#include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -67,37 +65,6 @@ QVector<ArmJoint> armJoints(const feetech::BusClient &client, const feetech::Rob
     return joints;
 }
 
-int defaultRobotTemplate(const QVector<feetech::RobotTemplate> &templates)
-{
-    for (int i = 0; i < templates.size(); ++i) {
-        if (templates.at(i).name == QLatin1String("SO-101 follower arm"))
-            return i;
-    }
-    return templates.isEmpty() ? -1 : 0;
-}
-
-const feetech::RobotTemplate *
-defaultRobotTemplateIn(const QVector<feetech::RobotTemplate> &templates)
-{
-    const int chosen = defaultRobotTemplate(templates);
-    return chosen >= 0 ? &templates.at(chosen) : nullptr;
-}
-
-QString defaultCalibrationFolder(const feetech::RobotTemplate *robot)
-{
-    const QString root = feetech::leRobotCalibrationFolder();
-    if (robot) {
-        for (const QString &folder : feetech::leRobotArmFolders(robot->name)) {
-            if (QDir(root).exists(folder))
-                return QDir(root).filePath(folder);
-        }
-    }
-    const QStringList recent = recentfiles::list(recentfiles::Kind::Calibration);
-    if (!recent.isEmpty())
-        return QFileInfo(recent.first()).absolutePath();
-    return QDir(root).exists() ? root : QDir::homePath();
-}
-
 CalibrationJointsPage::CalibrationJointsPage(feetech::BusClient *client, QWidget *parent)
     : QWidget(parent)
     , m_client(client)
@@ -116,7 +83,7 @@ CalibrationJointsPage::CalibrationJointsPage(feetech::BusClient *client, QWidget
     for (const feetech::RobotTemplate &robot : std::as_const(m_templates))
         m_template->addItem(feetech::robotDisplayName(robot.name));
     m_template->addItem(tr("No template (joints named by ID)"));
-    m_template->setCurrentIndex(std::max(0, defaultRobotTemplate(m_templates)));
+    m_template->setCurrentIndex(std::max(0, feetech::defaultRobotTemplate(m_templates)));
     m_template->setToolTip(tr("Names the joints whose IDs the arm's template has"));
     connect(m_template, &QComboBox::currentIndexChanged, this, [this] { fillJointTable(); });
     form->addRow(tr("Robot:"), m_template);
@@ -129,6 +96,8 @@ CalibrationJointsPage::CalibrationJointsPage(feetech::BusClient *client, QWidget
     m_jointTable->verticalHeader()->hide();
     m_jointTable->horizontalHeader()->setSectionResizeMode(NameColumn, QHeaderView::Stretch);
     m_jointTable->setSelectionMode(QAbstractItemView::NoSelection);
+    // The names are LeRobot's keys, edited as such; the user's language shows beside them.
+    m_jointTable->setItemDelegateForColumn(NameColumn, new JointNameDelegate(m_jointTable));
     layout->addWidget(m_jointTable, 1);
 
     auto *orderBox = new QGroupBox(tr("Order"), page);
@@ -225,7 +194,8 @@ bool CalibrationJointsPage::choose(Choice *choice, QString *error) const
         joint.limits = *limits;
         choice->recordings.append(joint);
         choice->indexes.append(index);
-        choice->described.append(tr("%1 (ID %2)").arg(name).arg(info.id));
+        choice->described.append(
+            tr("%1 (ID %2)").arg(feetech::jointDisplayName(name)).arg(info.id));
     }
     if (choice->recordings.isEmpty())
         return refuse(tr("Choose at least one joint to calibrate."));

@@ -25,15 +25,6 @@ struct ArmJoint
     feetech::RobotJoint joint;
 };
 QVector<ArmJoint> armJoints(const feetech::BusClient &client, const feetech::RobotTemplate *robot);
-// The template ServoBench offers first: the SO-101 follower when it is there.
-int defaultRobotTemplate(const QVector<feetech::RobotTemplate> &templates);
-// That template itself, null when there is none.
-const feetech::RobotTemplate *
-defaultRobotTemplateIn(const QVector<feetech::RobotTemplate> &templates);
-// Where to offer saving or loading a LeRobot file for `robot`: its folder in LeRobot's
-// calibration folder when that exists, else the folder of the calibration file used last, else
-// the nearest folder of LeRobot's that exists.
-QString defaultCalibrationFolder(const feetech::RobotTemplate *robot);
 
 class CalibrationJointsPage : public QWidget
 {

@@ -25,10 +25,9 @@ CalibrationResultsPage::CalibrationResultsPage(QWidget *parent)
 {
     QWidget *page = this;
     auto *layout = new QVBoxLayout(page);
-    layout->addWidget(widgethelpers::wrappedLabel(
-        tr("Each joint's new position offset and angle limits (in steps, in the new "
-           "coordinates), or why it is refused. Nothing has been written yet."),
-        page));
+    m_summary = widgethelpers::wrappedLabel(QString(), page);
+    m_summary->setObjectName(QStringLiteral("calibrationResultsSummary"));
+    layout->addWidget(m_summary);
     m_table = new QTableWidget(0, 5, page);
     m_table->setObjectName(QStringLiteral("calibrationResultTable"));
     m_table->setHorizontalHeaderLabels(
@@ -63,6 +62,11 @@ CalibrationResultsPage::CalibrationResultsPage(QWidget *parent)
 
 void CalibrationResultsPage::showResults(const QVector<feetech::JointCalibration> &results)
 {
+    palette::showInTone(m_summary,
+                        tr("Each joint's new position offset and angle limits (in steps, in the "
+                           "new coordinates), or why it is refused. Nothing has been written "
+                           "yet."),
+                        palette::Tone::Accent);
     m_table->setRowCount(int(results.size()));
     const QColor refused = palette::toneColor(palette::Tone::Error, m_table->palette());
     for (int row = 0; row < results.size(); ++row) {
@@ -96,4 +100,34 @@ void CalibrationResultsPage::showWritten(int row, bool ok, const QString &messag
     if (!ok)
         status->setForeground(palette::toneColor(palette::Tone::Error, m_table->palette()));
     m_table->setItem(row, StatusColumn, status);
+}
+
+void CalibrationResultsPage::showWriting()
+{
+    palette::showInTone(m_summary,
+                        tr("Writing each joint's offset and limits to its EEPROM and reading "
+                           "them back…"),
+                        palette::Tone::Accent);
+}
+
+void CalibrationResultsPage::showWriteOutcome(int verified, int total)
+{
+    if (verified == total) {
+        palette::showInTone(m_summary,
+                            tr("Every joint's offset and limits were written to its EEPROM and "
+                               "read back as written."),
+                            palette::Tone::Good);
+    } else if (verified == 0) {
+        palette::showInTone(m_summary,
+                            tr("No joint's calibration was written and verified: the status "
+                               "column says why."),
+                            palette::Tone::Error);
+    } else {
+        palette::showInTone(m_summary,
+                            tr("%1 of %n joint(s) were written and verified; the status column "
+                               "says what became of the others.",
+                               nullptr, total)
+                                .arg(verified),
+                            palette::Tone::Warning);
+    }
 }

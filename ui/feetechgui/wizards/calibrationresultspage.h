@@ -6,6 +6,7 @@
 #include <QVector>
 #include <QWidget>
 
+class QLabel;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
@@ -22,6 +23,12 @@ public:
     void showResults(const QVector<feetech::JointCalibration> &results);
     // How the write of `row` ended.
     void showWritten(int row, bool ok, const QString &message);
+    // What the page says of the writes, one true thing at a time: the results shown by
+    // showResults are not written yet, then written (`verified` of `total` joints read back as
+    // written), or being written.
+    void showWriting();
+    void showWriteOutcome(int verified, int total);
+    QLabel *summary() const { return m_summary; }
 
     QProgressBar *progress() const { return m_progress; }
     QPushButton *writeButton() const { return m_write; }
@@ -29,6 +36,7 @@ public:
     QPushButton *recordAgainButton() const { return m_again; }
 
 private:
+    QLabel *m_summary = nullptr;
     QTableWidget *m_table = nullptr;
     QProgressBar *m_progress = nullptr;
     QPushButton *m_write = nullptr;

@@ -71,7 +71,7 @@ bool CalibrationSaver::save(const QString &path, util::FileError *error)
     m_indexes.clear();
     m_names.clear();
     QVector<CalibrationSteps::Step> steps;
-    for (const ArmJoint &joint : armJoints(*m_client, defaultRobotTemplateIn(templates))) {
+    for (const ArmJoint &joint : armJoints(*m_client, feetech::defaultRobotTemplateIn(templates))) {
         const feetech::ServoInfo &info = m_client->servos()->at(joint.index).info;
         if (!info.hasTable() || !feetech::calibrationLimits(info.table()))
             continue;

@@ -3,6 +3,7 @@
 #include "calibrationwizard.h"
 
 #include "busclient.h"
+#include "calibrationfiles.h"
 #include "calibrationresultspage.h"
 #include "calibrationsteps.h"
 #include "palette.h"
@@ -12,7 +13,6 @@
 #include "widgethelpers.h"
 
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -93,6 +93,7 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             }
             m_freshPositions = QVector<std::optional<double>>(m_recordings.size());
             m_stage = Stage::Recording;
+            holdJoints();
             m_status->clear();
             buildBars();
             showPage(m_jointsPage->order() == feetech::CalibrationOrder::MiddlePoseFirst
@@ -102,17 +103,22 @@ CalibrationWizard::CalibrationWizard(feetech::BusClient *client, QWidget *parent
             m_stage = Stage::Done;
             m_cancel->setText(tr("Close"));
             m_cancel->setEnabled(true);
-            m_resultsPage->saveButton()->setEnabled(!writtenMotors().isEmpty());
+            const int verified = int(writtenMotors().size());
+            m_resultsPage->saveButton()->setEnabled(verified > 0);
             m_resultsPage->recordAgainButton()->setEnabled(false);
-            if (!allOk)
-                m_status->setText(tr("Not every joint was written: see the status column."));
+            m_resultsPage->showWriteOutcome(verified, int(m_results.size()));
+            // The page says what was written; the line below says what to do next.
+            if (verified == 0)
+                m_status->clear();
             else if (!m_updatedFile.isEmpty())
-                m_status->setText(tr("The joint was written and verified. Save it into %1: the "
-                                     "file's other joints stay as they are.")
+                m_status->setText(tr("Save the joint into %1: the file's other joints stay as "
+                                     "they are.")
                                       .arg(QDir::toNativeSeparators(m_updatedFile)));
+            else if (verified < m_results.size())
+                m_status->setText(tr("Saving LeRobot's file keeps only the joints written and "
+                                     "verified."));
             else
-                m_status->setText(tr("Every joint was written and verified. Save LeRobot's "
-                                     "file if you use LeRobot with this arm."));
+                m_status->setText(tr("Save LeRobot's file if you use LeRobot with this arm."));
             emit writingFinished(allOk);
         }
     });
@@ -441,7 +447,8 @@ void CalibrationWizard::writeToServos()
     m_resultsPage->recordAgainButton()->setEnabled(false);
     m_cancel->setEnabled(false); // what is half written cannot be taken back
     m_resultsPage->progress()->show();
-    m_status->setText(tr("Writing to EEPROM and verifying…"));
+    m_resultsPage->showWriting();
+    m_status->clear();
     m_steps->start(steps);
 }
 
@@ -496,7 +503,7 @@ bool CalibrationWizard::calibrateReplacedMotor(int id, const QString &name, bool
     if (m_stage != Stage::Choosing || !m_jointsPage->keepOnly(id, name, fullTurn))
         return false;
     m_updatedFile = file;
-    setWindowTitle(tr("Calibrate the new %1 servo").arg(name));
+    setWindowTitle(tr("Calibrate the new %1 servo").arg(feetech::jointDisplayName(name)));
     m_resultsPage->saveButton()->setText(tr("&Save into %1").arg(QFileInfo(file).fileName()));
     m_resultsPage->saveButton()->setToolTip(
         tr("Update %1: this joint's offset and range replaced, the other joints kept")
@@ -508,11 +515,8 @@ void CalibrationWizard::chooseFileToSave()
 {
     const QString path = !m_updatedFile.isEmpty()
         ? m_updatedFile
-        : QFileDialog::getSaveFileName(
-            this, tr("Save LeRobot calibration"),
-            QDir(defaultCalibrationFolder(m_jointsPage->chosenTemplate()))
-                .filePath(QStringLiteral("arm.json")),
-            tr("LeRobot calibration (*.json)"));
+        : chooseCalibrationFileToSave(this, tr("Save LeRobot calibration"),
+                                      m_jointsPage->chosenTemplate());
     if (path.isEmpty())
         return;
     util::FileError error;
@@ -530,11 +534,34 @@ void CalibrationWizard::stopRecording()
         m_client->telemetry()->unsubscribe(this);
 }
 
+void CalibrationWizard::holdJoints()
+{
+    // The window stays usable meanwhile: Identify and the move test leave these joints alone
+    // while a hand turns them and their calibration is written.
+    releaseJoints();
+    for (int i = 0; i < m_indexes.size(); ++i) {
+        const feetech::ServoInfo &info = m_client->servos()->at(m_indexes.at(i)).info;
+        m_held.append(info.address());
+        m_client->identify()->hold(m_indexes.at(i),
+                                   tr("Servo ID %1 is being calibrated: close the calibration "
+                                      "wizard first.")
+                                       .arg(info.id));
+    }
+}
+
+void CalibrationWizard::releaseJoints()
+{
+    for (const feetech::ServoAddress &address : std::as_const(m_held))
+        m_client->identify()->release(address);
+    m_held.clear();
+}
+
 void CalibrationWizard::reject()
 {
     if (m_stage == Stage::Writing)
         return; // the writes under way finish first; Cancel is disabled meanwhile
     stopRecording();
+    releaseJoints();
     m_stage = Stage::Choosing;
     QDialog::reject();
 }

@@ -78,6 +78,9 @@ private:
     void onTelemetryStats(const feetech::TelemetryStats &stats);
     void refreshBars();
     void stopRecording();
+    // Held from torque off until the wizard closes: see IdentifyService::hold.
+    void holdJoints();
+    void releaseJoints();
     void chooseFileToSave();
     void fail(const QString &message);
 
@@ -95,6 +98,7 @@ private:
     QVector<bool> m_written; // per result: written and verified
     QVector<int> m_writeRows; // the result row of each write step
     QString m_updatedFile; // the arm's file a replaced motor is calibrated into
+    QVector<feetech::ServoAddress> m_held; // the joints held for this calibration
 
     QStackedWidget *m_pages = nullptr;
     CalibrationJointsPage *m_jointsPage = nullptr;

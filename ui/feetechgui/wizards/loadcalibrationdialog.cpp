@@ -5,6 +5,7 @@
 #include "busclient.h"
 #include "calibrationsteps.h"
 #include "palette.h"
+#include "robottemplate.h"
 
 #include <QDir>
 #include <QHBoxLayout>
@@ -77,8 +78,10 @@ LoadCalibrationDialog::LoadCalibrationDialog(feetech::BusClient *client,
     QVector<CalibrationSteps::Step> steps;
     for (int row = 0; row < motors.size(); ++row) {
         const feetech::LeRobotMotor &motor = motors.at(row);
-        m_table->setItem(row, FileJointColumn,
-                         new QTableWidgetItem(tr("%1 (%2)").arg(motor.name).arg(motor.id)));
+        m_table->setItem(
+            row, FileJointColumn,
+            new QTableWidgetItem(
+                tr("%1 (%2)").arg(feetech::jointDisplayName(motor.name)).arg(motor.id)));
         int found = -1;
         for (int index = 0; index < client->servos()->count() && found < 0; ++index) {
             if (client->servos()->at(index).info.id == motor.id)

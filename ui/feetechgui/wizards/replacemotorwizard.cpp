@@ -3,6 +3,7 @@
 #include "replacemotorwizard.h"
 
 #include "busclient.h"
+#include "calibrationfiles.h"
 #include "calibrationjointspage.h"
 #include "calibrationwizard.h"
 #include "recentfiles.h"
@@ -193,7 +194,7 @@ void ReplaceMotorWizard::loadRobots()
         m_robotChoice->clear();
         for (const feetech::RobotTemplate &robot : std::as_const(m_robots))
             m_robotChoice->addItem(feetech::robotDisplayName(robot.name));
-        m_robotChoice->setCurrentIndex(std::max(0, defaultRobotTemplate(m_robots)));
+        m_robotChoice->setCurrentIndex(std::max(0, feetech::defaultRobotTemplate(m_robots)));
     }
     chooseRobot(m_robotChoice->currentIndex());
     if (!problems.isEmpty())
@@ -375,7 +376,7 @@ void ReplaceMotorWizard::onSetUpFinished(feetech::MotorSetupFlow::Work work,
                       "make it the %4 joint.")
                        .arg(servo.id)
                        .arg(feetech::baudText(servo.baud), servo.model.name.toHtmlEscaped(),
-                            m_fileMotor.name.toHtmlEscaped()),
+                            feetech::jointDisplayName(m_fileMotor.name).toHtmlEscaped()),
                    palette::Tone::Accent);
         return;
     }
@@ -387,9 +388,9 @@ void ReplaceMotorWizard::onSetUpFinished(feetech::MotorSetupFlow::Work work,
         + tr("<b>Put the arm back together:</b> connect every servo in its chain as before, keep "
              "the power on, and press <i>Scan the arm</i>. The %1 joint is then calibrated alone "
              "into %2.")
-              .arg(m_fileMotor.name.toHtmlEscaped(),
+              .arg(feetech::jointDisplayName(m_fileMotor.name).toHtmlEscaped(),
                    QDir::toNativeSeparators(m_file).toHtmlEscaped()));
-    m_calibrate->setText(tr("&Calibrate %1…").arg(m_fileMotor.name));
+    m_calibrate->setText(tr("&Calibrate %1…").arg(feetech::jointDisplayName(m_fileMotor.name)));
     showStatus({}, palette::Tone::Accent);
     showPage(Page::Reassemble);
 }
@@ -424,7 +425,7 @@ void ReplaceMotorWizard::onScanFinished(bool completed, const QString &message)
     if (m_client->servos()->indexOf({quint8(m_fileMotor.id), baud}) < 0)
         return showStatus(tr("The new %1 servo does not answer at ID %2 and %3: check its cable "
                              "and the power, then scan again.")
-                              .arg(m_fileMotor.name)
+                              .arg(feetech::jointDisplayName(m_fileMotor.name))
                               .arg(m_fileMotor.id)
                               .arg(feetech::baudText(baud))
                               .toHtmlEscaped(),

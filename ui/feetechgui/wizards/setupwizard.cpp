@@ -54,7 +54,7 @@ SetupWizard::SetupWizard(feetech::BusClient *client, QWidget *parent)
         updateActions();
     });
     connect(m_client, &feetech::BusClient::busyChanged, this, &SetupWizard::updateActions);
-    chooseRobot(0);
+    chooseRobot(m_robotChoice->currentIndex());
 }
 
 void SetupWizard::buildUi()
@@ -159,6 +159,7 @@ void SetupWizard::loadRobots()
     m_robotChoice->clear();
     for (const feetech::RobotTemplate &robot : std::as_const(m_robots))
         m_robotChoice->addItem(feetech::robotDisplayName(robot.name));
+    m_robotChoice->setCurrentIndex(feetech::defaultRobotTemplate(m_robots));
     m_templateProblems->setText(problems.join(u'\n'));
     m_templateProblems->setVisible(!problems.isEmpty());
 }
@@ -179,7 +180,7 @@ void SetupWizard::showEvent(QShowEvent *event)
             const QSignalBlocker quiet(m_robotChoice);
             m_robotChoice->setCurrentIndex(index);
         } else {
-            chooseRobot(0);
+            chooseRobot(m_robotChoice->currentIndex()); // the default, as loadRobots chose it
         }
     }
     checkBus();
@@ -282,7 +283,7 @@ void SetupWizard::showCurrent()
         tr("Connect only the <b>%1</b> servo (ID will be %2) and press <i>Find</i>.<br>"
            "<small>Unplug every other servo from the bus first and keep the power on. A new servo "
            "answers at ID 1 and 1 Mbps; ServoBench finds it at any ID and rate.</small>")
-            .arg(joint.name.toHtmlEscaped())
+            .arg(feetech::jointDisplayName(joint.name).toHtmlEscaped())
             .arg(joint.id));
 }
 
@@ -408,14 +409,15 @@ void SetupWizard::showFound(const feetech::MotorSetupResult &result)
                     .arg(palette::toneColor(palette::Tone::Warning, palette()).name(),
                          tr("It answers where %1 should: it may be the %1 servo, already set "
                             "up. Set it up as %2 only if it is the %2 servo.")
-                             .arg(robot.joints.at(other).name, joint.name)
+                             .arg(feetech::jointDisplayName(robot.joints.at(other).name),
+                                  feetech::jointDisplayName(joint.name))
                              .toHtmlEscaped());
     }
     html += QStringLiteral("<br>")
         + tr("Press <i>Set up</i> to give it ID %2, %3 and the %1 settings (%n value(s), "
              "each read back).",
              nullptr, int(joint.settings.size()))
-              .arg(joint.name.toHtmlEscaped())
+              .arg(feetech::jointDisplayName(joint.name).toHtmlEscaped())
               .arg(joint.id)
               .arg(feetech::baudText(robot.baud));
     showOutcome(html, palette::Tone::Accent);
@@ -443,9 +445,10 @@ void SetupWizard::showSetUp(const feetech::MotorSetupResult &result)
     const int next = m_flow->currentJoint();
     QString html = QStringLiteral("<b>%1</b>").arg(result.message.toHtmlEscaped())
         + widgethelpers::stepList(result.steps);
-    html += next >= 0 ? tr("Unplug it and connect the next servo: <b>%1</b>.")
-                            .arg(m_flow->robot().joints.at(next).name.toHtmlEscaped())
-                      : tr("Every joint is set up.");
+    html += next >= 0
+        ? tr("Unplug it and connect the next servo: <b>%1</b>.")
+              .arg(feetech::jointDisplayName(m_flow->robot().joints.at(next).name).toHtmlEscaped())
+        : tr("Every joint is set up.");
     showOutcome(html, palette::Tone::Good);
     showJoints();
     showCurrent();

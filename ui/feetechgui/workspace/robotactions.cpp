@@ -19,6 +19,8 @@
 #include <QProgressDialog>
 #include <QTreeWidget>
 
+#include <algorithm>
+
 RobotActions::RobotActions(feetech::BusClient *client, FeetechWorkspace *workspace)
     : QObject(workspace)
     , m_client(client)
@@ -222,11 +224,11 @@ void RobotActions::chooseTemplateToApply()
     for (const feetech::RobotTemplate &robot : templates)
         names.append(feetech::robotDisplayName(robot.name));
     bool chosen = false;
-    const QString name =
-        QInputDialog::getItem(m_workspace, tr("Apply template settings"),
-                              tr("Each selected servo gets the settings of the template's joint "
-                                 "with its ID:"),
-                              names, 0, false, &chosen);
+    const QString name = QInputDialog::getItem(
+        m_workspace, tr("Apply template settings"),
+        tr("Each selected servo gets the settings of the template's joint "
+           "with its ID:"),
+        names, std::max(0, feetech::defaultRobotTemplate(templates)), false, &chosen);
     const int at = int(names.indexOf(name));
     if (!chosen || at < 0)
         return;
