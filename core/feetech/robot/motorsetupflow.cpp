@@ -7,7 +7,7 @@
 
 namespace {
 
-struct Tr
+struct MotorSetupFlowTr
 {
     Q_DECLARE_TR_FUNCTIONS(MotorSetupFlow)
 };
@@ -166,7 +166,8 @@ void MotorSetupFlow::onChecked(const QVector<JointCheck> &joints, bool ok, const
             joint = {JointState::ToDo, check.problem()};
         } else if (joint.state == JointState::Done) {
             joint = {JointState::ToDo,
-                     Tr::tr("set up earlier, but ID %1 does not answer now").arg(check.id)};
+                     MotorSetupFlowTr::tr("set up earlier, but ID %1 does not answer now")
+                         .arg(check.id)};
         } else if (joint.state == JointState::ToDo) {
             joint.reason.clear(); // what an earlier check found there has gone
         }

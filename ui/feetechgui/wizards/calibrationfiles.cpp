@@ -13,7 +13,7 @@
 
 namespace {
 
-struct Tr
+struct CalibrationFilesTr
 {
     Q_DECLARE_TR_FUNCTIONS(CalibrationFiles)
 };
@@ -69,8 +69,8 @@ QString chooseCalibrationFileToSave(QWidget *parent, const QString &title,
     const QStringList made = missingFolders(QFileInfo(suggested).path());
     if (!made.isEmpty())
         QDir().mkpath(QFileInfo(suggested).path()); // the dialog opens only in a folder that is
-    const QString path = QFileDialog::getSaveFileName(parent, title, suggested,
-                                                      Tr::tr("LeRobot calibration (*.json)"));
+    const QString path = QFileDialog::getSaveFileName(
+        parent, title, suggested, CalibrationFilesTr::tr("LeRobot calibration (*.json)"));
     const QString savedIn = path.isEmpty() ? QString() : QFileInfo(path).absolutePath();
     for (const QString &folder : made) {
         const QString clean = QDir::cleanPath(QFileInfo(folder).absoluteFilePath());
