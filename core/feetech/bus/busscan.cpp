@@ -2,8 +2,8 @@
 #include "busscan.h"
 
 #include "linksession.h"
+#include "porttransport.h"
 #include "sharedidcheck.h"
-#include "transport.h"
 
 #include <QCoreApplication>
 

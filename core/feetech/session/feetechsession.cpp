@@ -6,6 +6,7 @@
 
 #include "feetechdescription.h"
 #include "linksession.h"
+#include "porttransport.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
