@@ -1,6 +1,7 @@
-// Tests of the in-process port and its transport: bytes both ways with the host's rate, close,
-// a second host, a device that stops and returns, and a bus client on simulated servos
-// reached through it (wire-timed, and with SERVOBENCH_TEST_DEVICE=instant at once).
+// Tests of the in-process port and its transport: bytes both ways with the host's rate, bytes
+// sent ahead arriving at their time, close, a second host, a device that stops and returns, and
+// a bus client on simulated servos reached through it (wire-timed, and with
+// SERVOBENCH_TEST_DEVICE=instant at once).
 #include "busclient.h"
 #include "feetechbus.h"
 #include "feetechpacket.h"
@@ -15,6 +16,7 @@
 #include <QtTest>
 
 #include <atomic>
+#include <chrono>
 
 using seriallink::InProcessPort;
 using seriallink::InProcessTransport;
@@ -88,6 +90,16 @@ public:
         QMetaObject::invokeMethod(
             m_port, [this, bytes] { m_port->write(bytes); }, Qt::BlockingQueuedConnection);
     }
+    // Hands `bytes` over now, for the host to have `after` from now.
+    void sendAhead(const QByteArray &bytes, std::chrono::milliseconds after)
+    {
+        QMetaObject::invokeMethod(
+            m_port,
+            [this, bytes, after] {
+                m_port->writeAt(bytes, std::chrono::steady_clock::now() + after);
+            },
+            Qt::BlockingQueuedConnection);
+    }
 
 private:
     QThread m_thread;
@@ -149,6 +161,26 @@ private slots:
         QCOMPARE(transport.discardInput(), QByteArrayLiteral("\x33"));
         device.send(QByteArrayLiteral("\x44"));
         QTRY_COMPARE(receivedBytes(received), QByteArrayLiteral("\x11\x22\x44"));
+    }
+
+    void bytesSentAheadArriveAtTheirTimeAndNotBefore()
+    {
+        EchoDevice device(QStringLiteral("echo ahead"));
+        InProcessTransport transport;
+        QVERIFY(transport.open(device.name(), k1M, nullptr));
+        QSignalSpy received(&transport, &InProcessTransport::received);
+        // Handed over together: the first is due at once, the second not for a minute.
+        device.sendAhead(QByteArrayLiteral("\x0D"), std::chrono::minutes(1));
+        device.sendAhead(QByteArrayLiteral("\x0C"), std::chrono::milliseconds(0));
+        QTRY_COMPARE(receivedBytes(received), QByteArrayLiteral("\x0C"));
+        transport.deliverPendingInput();
+        QCOMPARE(transport.discardInput(), QByteArray());
+        QCOMPARE(receivedBytes(received), QByteArrayLiteral("\x0C"));
+        // Closed, the port drops what had not arrived yet.
+        transport.close();
+        QVERIFY(transport.open(device.name(), k1M, nullptr));
+        transport.write(QByteArrayLiteral("\x01\x02"));
+        QTRY_COMPARE(receivedBytes(received), QByteArrayLiteral("\x0C\x02\x01"));
     }
 
     void aClosedTransportNeitherSendsNorHears()

@@ -5,6 +5,8 @@
 #include <QObject>
 #include <QString>
 
+#include <chrono>
+
 namespace seriallink {
 
 // A pseudo-terminal (servosim, a shared bus's program side) or a port inside this program (the
@@ -23,6 +25,15 @@ public:
     virtual qint32 hostBaudRate() const = 0;
     // To the host, now: whoever calls this keeps the wire's time.
     virtual void write(const QByteArray &bytes) = 0;
+    // Whether the port takes bytes before they are due (writeAt) and lets the host have them
+    // at their time: the wire's time is then kept however late the device's thread next runs.
+    virtual bool takesBytesAhead() const { return false; }
+    // `bytes` for the host at `due`; a port that cannot take them ahead sends them now.
+    virtual void writeAt(const QByteArray &bytes, std::chrono::steady_clock::time_point due)
+    {
+        Q_UNUSED(due);
+        write(bytes);
+    }
 
 signals:
     // What the host sent.

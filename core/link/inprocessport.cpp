@@ -8,6 +8,8 @@
 #include <QMutex>
 #include <QSet>
 
+#include <algorithm>
+
 namespace {
 
 struct Tr
@@ -107,14 +109,24 @@ bool InProcessPort::hasHost() const
 
 void InProcessPort::write(const QByteArray &bytes)
 {
+    writeAt(bytes, std::chrono::steady_clock::now());
+}
+
+void InProcessPort::writeAt(const QByteArray &bytes, std::chrono::steady_clock::time_point due)
+{
     if (bytes.isEmpty())
         return;
     const QMutexLocker locked(&lock());
     InProcessTransport *host = m_host;
     if (!host)
         return;
-    host->m_input.append(bytes);
-    // One call on its way is enough: it takes everything that came until it runs.
+    // Kept in the order they are due (an echo may be handed over after an answer due later).
+    auto &input = host->m_input;
+    const auto at =
+        std::upper_bound(input.begin(), input.end(), due,
+                         [](auto time, const auto &arriving) { return time < arriving.due; });
+    input.insert(at, {due, bytes});
+    // One call on its way is enough: it takes everything due by then and waits for the rest.
     if (host->m_inputAnnounced)
         return;
     host->m_inputAnnounced = true;

@@ -12,10 +12,11 @@ class InProcessTransport;
 
 // Offered under a name that a link opens like a serial port (LinkSession picks an
 // InProcessTransport for it). The host's bytes arrive here by queued calls, each with the rate
-// the host had set, and what write() sends is handed to the host's thread at once: the device
-// decides when bytes cross the wire, as it does behind a pseudo-terminal, but no kernel worker
-// stands between the threads. One host at a time, as a serial port's exclusive lock allows.
-// Lives in the device's thread.
+// the host had set; the device's bytes go to the host's thread with the time they are due
+// (writeAt), and the host has them at that time: the device decides when bytes cross the wire,
+// as it does behind a pseudo-terminal, but neither a kernel worker nor the device's thread
+// has to run again for them to arrive. One host at a time, as a serial port's exclusive lock
+// allows. Lives in the device's thread.
 class InProcessPort final : public DevicePort
 {
     Q_OBJECT
@@ -35,8 +36,10 @@ public:
 
     QString portName() const override { return m_name; }
     qint32 hostBaudRate() const override { return m_hostBaud; }
-    // Bytes for the host; lost, as on a wire, while no host has the port open.
+    // Bytes for the host, now or at `due`; lost, as on a wire, while no host has the port open.
     void write(const QByteArray &bytes) override;
+    bool takesBytesAhead() const override { return true; }
+    void writeAt(const QByteArray &bytes, std::chrono::steady_clock::time_point due) override;
 
     // Whether this program offers, or offered, a port by that name: such a port is opened in
     // process, and while it is not offered it is a port that went away, not a missing device.

@@ -2,9 +2,13 @@
 #include "inprocesstransport.h"
 
 #include "inprocessport.h"
+#include "precisetimer.h"
 
 #include <QCoreApplication>
 #include <QMutex>
+
+#include <algorithm>
+#include <optional>
 
 namespace {
 
@@ -13,12 +17,15 @@ struct Tr
     Q_DECLARE_TR_FUNCTIONS(InProcessTransport)
 };
 
+using Clock = std::chrono::steady_clock;
+
 } // namespace
 
 namespace seriallink {
 
 InProcessTransport::InProcessTransport(QObject *parent)
     : PortTransport(parent)
+    , m_arrival(new PreciseTimer(this))
 { }
 
 InProcessTransport::~InProcessTransport()
@@ -54,6 +61,7 @@ bool InProcessTransport::open(const QString &portName, qint32 baud, QString *err
 
 void InProcessTransport::close()
 {
+    m_arrival->stop();
     const QMutexLocker locked(&InProcessPort::lock());
     if (m_device && m_device->m_host == this)
         m_device->m_host = nullptr;
@@ -99,22 +107,38 @@ void InProcessTransport::write(const QByteArray &bytes)
 
 QByteArray InProcessTransport::discardInput()
 {
+    const Clock::time_point now = Clock::now();
     const QMutexLocker locked(&InProcessPort::lock());
-    QByteArray waiting;
-    waiting.swap(m_input);
-    return waiting;
+    QByteArray come;
+    while (!m_input.empty() && m_input.front().due <= now) {
+        come += m_input.front().bytes;
+        m_input.pop_front();
+    }
+    return come;
 }
 
 void InProcessTransport::deliverPendingInput()
 {
-    QByteArray bytes;
+    const Clock::time_point now = Clock::now();
+    QByteArray come;
+    std::optional<Clock::time_point> next;
     {
         const QMutexLocker locked(&InProcessPort::lock());
-        bytes.swap(m_input);
         m_inputAnnounced = false;
+        while (!m_input.empty() && m_input.front().due <= now) {
+            come += m_input.front().bytes;
+            m_input.pop_front();
+        }
+        if (!m_input.empty())
+            next = m_input.front().due;
     }
-    if (m_open && !bytes.isEmpty())
-        emit received(bytes);
+    if (next) {
+        const auto wait = std::chrono::duration_cast<std::chrono::microseconds>(*next - now);
+        m_arrival->start(std::max(wait, std::chrono::microseconds(1)),
+                         [this] { deliverPendingInput(); });
+    }
+    if (m_open && !come.isEmpty())
+        emit received(come);
 }
 
 void InProcessTransport::onDeviceGone(quint64 attachment)

@@ -4,9 +4,13 @@
 
 #include "porttransport.h"
 
+#include <chrono>
+#include <deque>
+
 namespace seriallink {
 
 class InProcessPort;
+class PreciseTimer;
 
 // To the request engine it is a serial port like any other: the bytes the device sends arrive
 // through received, bytesWritten follows a write from the event loop, a device that stops is
@@ -29,21 +33,29 @@ public:
     bool isOpen() const override { return m_open; }
     qint32 baudRate() const override { return m_baud; }
     void write(const QByteArray &bytes) override;
+    // What has come, up to now; bytes the device sent ahead arrive at their time.
     QByteArray discardInput() override;
     void deliverPendingInput() override;
 
 private:
     friend class InProcessPort;
 
+    struct Arriving
+    {
+        std::chrono::steady_clock::time_point due;
+        QByteArray bytes;
+    };
+
     void onDeviceGone(quint64 attachment);
 
     QString m_name;
     qint32 m_baud = 0;
     bool m_open = false;
+    PreciseTimer *m_arrival = nullptr; // the next bytes sent ahead are due
     // Under InProcessPort::lock(), shared with the device's thread:
     InProcessPort *m_device = nullptr;
     quint64 m_attachment = 0;
-    QByteArray m_input; // the device's bytes not yet delivered
+    std::deque<Arriving> m_input; // the device's bytes not yet delivered, in the order due
     bool m_inputAnnounced = false; // a delivery is on its way to this thread
 };
 

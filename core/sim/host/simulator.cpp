@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #if defined(Q_OS_LINUX)
@@ -264,6 +265,17 @@ void Simulator::schedule(qint64 startUs, const QByteArray &frame, double byteUs,
 
 void Simulator::queue(Outgoing chunk)
 {
+    if (m_port->takesBytesAhead() && !chunk.bytes.isEmpty()) {
+        // The port lets the host have them at their time, however late this thread next runs;
+        // only the log waits here for it.
+        m_port->writeAt(chunk.bytes,
+                        std::chrono::steady_clock::now()
+                            + std::chrono::microseconds(chunk.dueUs - nowUs()));
+        chunk.bytes.clear();
+        // Nothing waits here for the bytes' time unless the frame is to be logged then.
+        if (!chunk.direction || !m_log.isOpen())
+            return;
+    }
     // Kept in time order (echo may be scheduled before pending replies end).
     auto at = std::upper_bound(m_outgoing.begin(), m_outgoing.end(), chunk.dueUs,
                                [](qint64 due, const Outgoing &o) { return due < o.dueUs; });
