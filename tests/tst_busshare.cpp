@@ -5,6 +5,7 @@
 #include "feetechbus.h"
 #include "feetechdescription.h"
 #include "linksession.h"
+#include "porttransport.h"
 #include "servoctlrun.h"
 
 #include <QJsonArray>

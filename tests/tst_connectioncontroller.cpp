@@ -5,6 +5,7 @@
 
 #include "busdoctor.h"
 #include "connectioncontroller.h"
+#include "inprocessport.h"
 #include "ptkclient.h"
 
 #include <QtTest>
@@ -295,7 +296,9 @@ private slots:
         QCOMPARE(m_controller->simulator(),
                  simulator.first().first().value<sim::SimulatorThread *>());
         QCOMPARE(m_controller->portShown(), QStringLiteral("simulated Feetech bus"));
-        QVERIFY(m_controller->portPath() != demo.port); // the simulator's pseudo-terminal
+        // The simulated bus's port inside the program, reached without a pseudo-terminal.
+        QVERIFY(m_controller->portPath() != demo.port);
+        QVERIFY(seriallink::InProcessPort::isKnown(m_controller->portPath()));
         QTRY_VERIFY_WITH_TIMEOUT(m_feetech->link()->isConnected(), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(scanWanted.size(), 1, 10000);
     }

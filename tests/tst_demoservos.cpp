@@ -1,7 +1,8 @@
-// The demo's simulated servos: each bus started once on a pseudo-terminal of its own, and why one
-// does not start, as a refusal's code.
+// The demo's simulated servos: each bus started once on a port of its own inside the program, and
+// why one does not start, as a refusal's code.
 #include "busclient.h"
 #include "demoservos.h"
+#include "inprocessport.h"
 #include "linkmirror.h"
 #include "virtualfeetechbus.h"
 
@@ -66,7 +67,9 @@ private slots:
         const QString feetech = demo.feetechPort(&why);
         QVERIFY2(!feetech.isEmpty(), qPrintable(why.describe()));
         QCOMPARE(why.code(), sim::SimRefusal::Code::None);
-        QVERIFY(QFileInfo::exists(feetech));
+        // Offered inside the program, not as a pseudo-terminal's link.
+        QVERIFY(seriallink::InProcessPort::isKnown(feetech));
+        QVERIFY(!QFileInfo::exists(feetech));
         QCOMPARE(demo.feetechPort(&why), feetech);
         QVERIFY(demo.feetechSimulator());
         QCOMPARE(servosOf(demo.feetechSimulator()),

@@ -2,7 +2,7 @@
 #include "feetechbus.h"
 
 #include "linksession.h"
-#include "transport.h"
+#include "porttransport.h"
 
 #include <QSignalSpy>
 #include <QtTest>

@@ -1,7 +1,7 @@
 // Unit tests of the request engine over a scripted transport: ordering, timeouts, retries, echo.
 #include "ptkframe.h"
 #include "requestengine.h"
-#include "transport.h"
+#include "serialtransport.h"
 
 #include <QtTest>
 

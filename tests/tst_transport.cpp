@@ -1,7 +1,7 @@
 // Tests of the serial transport on a simulator's pty, and of its table of port error messages.
 #include "feetechbus.h"
 
-#include "transport.h"
+#include "serialtransport.h"
 
 #include <QSignalSpy>
 #include <QtTest>

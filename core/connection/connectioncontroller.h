@@ -78,7 +78,7 @@ public:
     feetech::PortProbe *portProbe() const;
     // What the user connected to, as they chose it ("simulated Feetech bus" for the demo's).
     QString portShown() const { return m_portShown; }
-    // The port actually opened (a simulated bus's pseudo-terminal).
+    // The port actually opened (a simulated bus's port inside the program, by its name).
     QString portPath() const { return m_portPath; }
     // What the probe of Auto heard; none for a protocol chosen by hand.
     const std::optional<feetech::PortProbeReport> &probeReport() const { return m_probe; }

@@ -1,7 +1,9 @@
 // Link session: opening, closing, a failing port and reopening it, for both servo families.
 #include "linksession.h"
 
-#include "transport.h"
+#include "inprocessport.h"
+#include "inprocesstransport.h"
+#include "serialtransport.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -57,6 +59,7 @@ bool LinkSession::open(const QString &portName, qint32 baud, EchoMode echo)
     m_status.baud = baud;
     m_echo = echo;
     ++m_generation;
+    useTransportFor(portName);
     setState(ConnectionState::Connecting);
     QString error;
     if (!m_transport->open(portName, baud, &error)) {
@@ -109,6 +112,20 @@ void LinkSession::logNote(const QString &note, bool error)
 void LinkSession::logEntry(const PacketLogEntry &entry)
 {
     emit packetLogged(entry);
+}
+
+void LinkSession::useTransportFor(const QString &portName)
+{
+    const bool inProcess = InProcessPort::isKnown(portName);
+    if (inProcess == (qobject_cast<InProcessTransport *>(m_transport) != nullptr))
+        return;
+    // Closed by now, and the engine talks to the transport itself (a share ends before this).
+    PortTransport *fresh = PortTransport::forPort(portName, this);
+    m_engine->setTransport(*fresh);
+    delete m_transport;
+    m_transport = fresh;
+    connect(m_transport, &Transport::failed, this, &LinkSession::onPortFailed,
+            Qt::QueuedConnection);
 }
 
 void LinkSession::endLink(const QString &message, Failure failure)

@@ -12,7 +12,7 @@
 
 namespace seriallink {
 
-class SerialTransport;
+class PortTransport;
 
 // Owns the transport and the request engine of a device session and the connection state the
 // user sees. A protocol session composes one and says, through two hooks, what ends when the
@@ -42,8 +42,10 @@ public:
         m_reconnectInterval = interval;
     }
 
-    SerialTransport &transport() { return *m_transport; }
-    const SerialTransport &transport() const { return *m_transport; }
+    // A serial port, or the in-process transport of a port this program offers (the demo's
+    // simulated servos): whichever opens the port last opened.
+    PortTransport &transport() { return *m_transport; }
+    const PortTransport &transport() const { return *m_transport; }
     RequestEngine &engine() { return *m_engine; }
     const RequestEngine &engine() const { return *m_engine; }
     const ConnectionStatus &status() const { return m_status; }
@@ -75,11 +77,13 @@ signals:
     void countersChanged(const seriallink::LinkCounters &counters);
 
 private:
+    // A transport that can open `portName`, in place of the one there is if that one cannot.
+    void useTransportFor(const QString &portName);
     void endLink(const QString &message, Failure failure);
     void onPortFailed(const QString &message, bool lost);
     void tryReopen();
 
-    SerialTransport *m_transport = nullptr;
+    PortTransport *m_transport = nullptr;
     RequestEngine *m_engine = nullptr;
     QTimer *m_reopenTimer = nullptr;
     ConnectionStatus m_status;

@@ -41,7 +41,7 @@ constexpr qint64 kQuickPollPeriodMs = 500;
 } // namespace
 
 PseudoTerminal::PseudoTerminal(QObject *parent)
-    : QObject(parent)
+    : DevicePort(parent)
 {
     m_hangupPoll.setSingleShot(true);
     m_hangupPoll.setTimerType(Qt::PreciseTimer);

@@ -1,10 +1,9 @@
 // A pseudo-terminal whose slave side a client opens like a serial port, through a symlink.
 #pragma once
 
-#include <QByteArray>
+#include "deviceport.h"
+
 #include <QElapsedTimer>
-#include <QObject>
-#include <QString>
 #include <QTimer>
 
 class QSocketNotifier;
@@ -15,7 +14,7 @@ namespace seriallink {
 // the symlink. The slave is not kept open here, so the client's exclusive lock (TIOCEXCL) ends with
 // its close and a later client can open it again; while no client has it open, the master reports
 // a hang-up, which is handled by polling until a client returns.
-class PseudoTerminal : public QObject
+class PseudoTerminal final : public DevicePort
 {
     Q_OBJECT
 
@@ -25,19 +24,17 @@ public:
 
     // Creates the pty and makes `linkPath` a symlink to its slave (replacing a stale symlink).
     bool open(const QString &linkPath, QString *error);
-    void close();
+    void close() override;
 
     bool isOpen() const { return m_master >= 0; }
     QString slavePath() const { return m_slavePath; }
     QString linkPath() const { return m_linkPath; }
+    QString portName() const override { return m_linkPath; }
 
     // The baud rate the client configured on its side (0 when it cannot be read).
-    qint32 hostBaudRate() const;
+    qint32 hostBaudRate() const override;
 
-    void write(const QByteArray &bytes);
-
-signals:
-    void received(const QByteArray &bytes);
+    void write(const QByteArray &bytes) override;
 
 private:
     void readAvailable();

@@ -13,7 +13,7 @@ constexpr std::chrono::milliseconds kOwnAnswerWait {100};
 
 } // namespace
 
-BusGate::BusGate(seriallink::SerialTransport &port, QObject *parent)
+BusGate::BusGate(seriallink::Transport &port, QObject *parent)
     : Transport(parent)
     , m_port(port)
     , m_programFramer(m_format, seriallink::StreamFramer::BadChecksumPolicy::ConsumeFrame)

@@ -12,7 +12,6 @@
 
 namespace seriallink {
 class PreciseTimer;
-class SerialTransport;
 } // namespace seriallink
 
 namespace share {
@@ -41,7 +40,7 @@ class BusGate : public seriallink::Transport
     Q_OBJECT
 
 public:
-    explicit BusGate(seriallink::SerialTransport &port, QObject *parent = nullptr);
+    explicit BusGate(seriallink::Transport &port, QObject *parent = nullptr);
     ~BusGate() override;
 
     // Transport: the engine's side.
@@ -83,7 +82,7 @@ private:
     void passFrames(seriallink::StreamFramer &framer, FrameDirection direction,
                     TransactionTracker *tracker);
 
-    seriallink::SerialTransport &m_port;
+    seriallink::Transport &m_port;
     feetech::FrameFormat m_format;
     seriallink::StreamFramer m_programFramer;
     seriallink::StreamFramer m_portFramer;

@@ -3,6 +3,7 @@
 
 #include "feetechpacket.h"
 #include "linksession.h"
+#include "porttransport.h"
 #include "pseudoterminal.h"
 #include "sharewatch.h"
 

@@ -3,8 +3,8 @@
 
 #include "feetechsessiontr.h"
 #include "linksession.h"
+#include "porttransport.h"
 #include "sharedidcheck.h"
-#include "transport.h"
 
 #include <QCoreApplication>
 

@@ -3,11 +3,11 @@
 
 #include "feetechpacket.h"
 #include "modeltable.h"
+#include "porttransport.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"
 #include "registertable.h"
 #include "streamframer.h"
-#include "transport.h"
 
 #include <QCoreApplication>
 #include <QTimer>
@@ -67,7 +67,7 @@ void PortProbe::start(const QString &portPath)
     m_report.port = portPath;
     m_cancelled = false;
     m_running = true;
-    m_transport = std::make_unique<seriallink::SerialTransport>();
+    m_transport.reset(seriallink::PortTransport::forPort(portPath));
     connect(m_transport.get(), &seriallink::Transport::received, this, &PortProbe::onReceived);
     // A port that fails while the probe runs ends it: what was heard so far is the report.
     connect(m_transport.get(), &seriallink::Transport::failed, this,

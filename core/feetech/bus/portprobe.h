@@ -14,7 +14,7 @@
 class QTimer;
 
 namespace seriallink {
-class SerialTransport;
+class PortTransport;
 }
 
 namespace feetech {
@@ -59,7 +59,7 @@ private:
     void finish();
 
     ProbeTiming m_timing;
-    std::unique_ptr<seriallink::SerialTransport> m_transport;
+    std::unique_ptr<seriallink::PortTransport> m_transport;
     QTimer *m_deadline = nullptr;
     PortProbeReport m_report;
     int m_step = 0;

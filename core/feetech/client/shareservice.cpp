@@ -3,6 +3,7 @@
 
 #include "busclient.h"
 #include "linksession.h"
+#include "porttransport.h"
 
 #include <QDir>
 

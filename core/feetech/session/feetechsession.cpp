@@ -7,6 +7,7 @@
 #include "feetechdescription.h"
 #include "feetechsessiontr.h"
 #include "linksession.h"
+#include "porttransport.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -1,7 +1,17 @@
-// Demo servos: lazily started in-process simulators behind pseudo-terminals.
+// Demo servos: lazily started simulators, each offered as a port inside this program.
 #include "demoservos.h"
 
+#include <QCoreApplication>
 #include <QDir>
+
+namespace {
+
+struct DemoServosTr
+{
+    Q_DECLARE_TR_FUNCTIONS(DemoServos)
+};
+
+} // namespace
 
 namespace sim {
 
@@ -35,7 +45,11 @@ QString DemoServos::start(std::unique_ptr<SimulatorThread> &slot, const Simulato
 {
     auto simulator = std::make_unique<SimulatorThread>();
     QString reason;
-    if (!simulator->start(options, &reason)) {
+    SimulatorOptions inProcess = options;
+    // Reached by queued calls between the link's thread and the simulator's: a pseudo-terminal
+    // would put the kernel's worker between them, which a busy window starves of the CPU.
+    inProcess.inProcess = true;
+    if (!simulator->start(inProcess, &reason)) {
         refused(SimRefusal(SimRefusal::Code::DemoNotStarted, 0, 0, reason), why);
         return QString();
     }
@@ -51,21 +65,21 @@ QString DemoServos::ptkPort(SimRefusal *why)
         return QString();
     SimulatorOptions options;
     options.kind = SimulatorOptions::Kind::Ptk;
-    options.linkPath = m_folder->filePath(QStringLiteral("ptk-servo"));
+    options.linkPath = DemoServosTr::tr("Simulated PTK servo");
     // A single-wire adapter, like PTK's own programmer.
     options.echo = true;
     return start(m_ptk, options, why);
 }
 
 QString DemoServos::startFeetech(std::unique_ptr<SimulatorThread> &slot, SimulatorOptions options,
-                                 const QString &name, SimRefusal *why)
+                                 const QString &name, const QString &portName, SimRefusal *why)
 {
     if (slot)
         return slot->linkPath();
     if (!ensureFolder(why))
         return QString();
     options.kind = SimulatorOptions::Kind::Feetech;
-    options.linkPath = m_folder->filePath(name);
+    options.linkPath = portName;
     // The EEPROM lives in the demo folder for as long as the program runs.
     options.statePath = m_folder->filePath(name + QStringLiteral(".json"));
     return start(slot, options, why);
@@ -81,12 +95,14 @@ QString DemoServos::feetechPort(SimRefusal *why)
                       {3, QStringLiteral("STS3215"), 1000000},
                       {4, QStringLiteral("SCS15"), 1000000},
                       {5, QStringLiteral("HLS"), 1000000}};
-    return startFeetech(m_feetech, options, QStringLiteral("feetech-bus"), why);
+    return startFeetech(m_feetech, options, QStringLiteral("feetech-bus"),
+                        DemoServosTr::tr("Simulated Feetech bus"), why);
 }
 
 QString DemoServos::armPort(SimRefusal *why)
 {
-    return startArm(m_arm, QStringLiteral("so101"), QStringLiteral("so101-arm"), {}, why);
+    return startArm(m_arm, QStringLiteral("so101"), QStringLiteral("so101-arm"),
+                    DemoServosTr::tr("Simulated SO-101 arm"), {}, why);
 }
 
 QString DemoServos::leaderArmPort(SimRefusal *why)
@@ -95,11 +111,12 @@ QString DemoServos::leaderArmPort(SimRefusal *why)
     const QVector<HandSweep> sweeps = {{3, 1500, 2600, 4.0, 0, Hand::Way::Direct},
                                        {4, 1700, 2400, 3.0, 0, Hand::Way::Direct}};
     return startArm(m_leaderArm, QStringLiteral("so101-leader"), QStringLiteral("so101-leader"),
-                    sweeps, why);
+                    DemoServosTr::tr("Simulated SO-101 leader arm"), sweeps, why);
 }
 
 QString DemoServos::startArm(std::unique_ptr<SimulatorThread> &slot, const QString &robot,
-                             const QString &name, const QVector<HandSweep> &sweeps, SimRefusal *why)
+                             const QString &name, const QString &portName,
+                             const QVector<HandSweep> &sweeps, SimRefusal *why)
 {
     if (slot)
         return slot->linkPath();
@@ -112,7 +129,7 @@ QString DemoServos::startArm(std::unique_ptr<SimulatorThread> &slot, const QStri
     }
     options.servos = robotServos(*options.robot);
     options.sweeps = sweeps;
-    return startFeetech(slot, options, name, why);
+    return startFeetech(slot, options, name, portName, why);
 }
 
 } // namespace sim

@@ -10,8 +10,10 @@
 
 namespace sim {
 
-// Starts each simulator on first use, on a pseudo-terminal in a private temporary folder, and
-// stops them all when destroyed.
+// Starts each simulator on first use, offered as a port inside this program
+// (seriallink::InProcessPort) under a name the user reads ("Simulated SO-101 arm"), its EEPROM
+// kept in a private temporary folder, and stops them all when destroyed. No pseudo-terminal: a
+// link reaches them by queued calls between its thread and theirs.
 class DemoServos
 {
 public:
@@ -20,9 +22,9 @@ public:
     DemoServos(const DemoServos &) = delete;
     DemoServos &operator=(const DemoServos &) = delete;
 
-    // Each port is empty when its simulator cannot start, and *why says why: NoDemoFolder (the
-    // private folder could not be made), NoDemoRobot (an arm's built-in template did not load)
-    // or DemoNotStarted (the simulator refused to start).
+    // Each port is the name a link opens (LinkSession, PortProbe), empty when its simulator cannot
+    // start, and *why says why: NoDemoFolder (the private folder could not be made), NoDemoRobot
+    // (an arm's built-in template did not load) or DemoNotStarted (the simulator refused to start).
 
     // The port of the simulated PTK servo.
     QString ptkPort(SimRefusal *why);
@@ -44,10 +46,12 @@ private:
     // Starts `options` into `slot`; its port, or empty and *why (DemoNotStarted).
     QString start(std::unique_ptr<SimulatorThread> &slot, const SimulatorOptions &options,
                   SimRefusal *why);
+    // `name` names its EEPROM's file, `portName` the port.
     QString startFeetech(std::unique_ptr<SimulatorThread> &slot, SimulatorOptions options,
-                         const QString &name, SimRefusal *why);
+                         const QString &name, const QString &portName, SimRefusal *why);
     QString startArm(std::unique_ptr<SimulatorThread> &slot, const QString &robot,
-                     const QString &name, const QVector<HandSweep> &sweeps, SimRefusal *why);
+                     const QString &name, const QString &portName, const QVector<HandSweep> &sweeps,
+                     SimRefusal *why);
 
     std::unique_ptr<QTemporaryDir> m_folder;
     std::unique_ptr<SimulatorThread> m_ptk;

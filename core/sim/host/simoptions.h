@@ -45,7 +45,10 @@ struct SimulatorOptions
 {
     enum class Kind { Ptk, Feetech };
     Kind kind = Kind::Ptk;
-    QString linkPath;
+    QString linkPath; // the pty's link, or the in-process port's name
+    // The window's demo: offered as a port inside this program (seriallink::InProcessPort) that
+    // the link reaches without a pseudo-terminal, not as a pty.
+    bool inProcess = false;
     bool echo = false; // answer every host byte back first, like a single-wire adapter
     FaultSettings faults;
     quint32 seed = 1;

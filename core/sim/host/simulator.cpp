@@ -1,12 +1,16 @@
-// Simulator engine: pty transport, wire-rate pacing, echo, faults and log around a device.
+// Simulator engine: pty or in-process port, wire-rate pacing, echo, faults and log around a
+// device.
 #include "simulator.h"
 
+#include "inprocessport.h"
+#include "pseudoterminal.h"
 #include "simulatorfeetech.h"
 #include "virtualptkservo.h"
 
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #if defined(Q_OS_LINUX)
@@ -63,7 +67,6 @@ std::unique_ptr<Simulator> Simulator::create(const SimulatorOptions &options, QS
 Simulator::Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDevice> device)
     : m_options(options)
     , m_device(std::move(device))
-    , m_pty(new seriallink::PseudoTerminal(this))
     , m_sendTimer(new QTimer(this))
     , m_tickTimer(new QTimer(this))
 {
@@ -78,7 +81,6 @@ Simulator::Simulator(const SimulatorOptions &options, std::unique_ptr<VirtualDev
     connect(m_sendTimer, &QTimer::timeout, this, &Simulator::sendDue);
     m_tickTimer->setInterval(kTickMs);
     connect(m_tickTimer, &QTimer::timeout, this, &Simulator::advanceNow);
-    connect(m_pty, &seriallink::PseudoTerminal::received, this, &Simulator::onReceived);
 }
 
 Simulator::~Simulator()
@@ -90,8 +92,22 @@ bool Simulator::start(QString *error)
 {
     if (!m_options.logPath.isEmpty() && !m_log.open(m_options.logPath, error))
         return false;
-    if (!m_pty->open(m_options.linkPath, error))
-        return false;
+    if (m_options.inProcess) {
+        auto *port = new seriallink::InProcessPort(this);
+        if (!port->open(m_options.linkPath, error)) {
+            delete port;
+            return false;
+        }
+        m_port = port;
+    } else {
+        auto *pty = new seriallink::PseudoTerminal(this);
+        if (!pty->open(m_options.linkPath, error)) {
+            delete pty;
+            return false;
+        }
+        m_port = pty;
+    }
+    connect(m_port, &seriallink::DevicePort::received, this, &Simulator::onReceived);
 #if defined(Q_OS_LINUX)
     // Replies are paced by short sleeps (sendDue); Linux lets a thread's sleep run up to 50 µs
     // late by default, which at 1 Mbps is five bytes of wire time per reply. This thread only
@@ -110,7 +126,8 @@ void Simulator::stop()
     m_outgoing.clear();
     if (m_adapter)
         m_adapter->clear();
-    m_pty->close();
+    delete m_port;
+    m_port = nullptr;
 }
 
 VirtualPtkServo *Simulator::ptkServo()
@@ -153,10 +170,10 @@ void Simulator::setFaults(const FaultSettings &faults, quint32 seed)
 void Simulator::onReceived(const QByteArray &bytes)
 {
     const qint64 now = nowUs();
-    const qint32 hostBaud = m_pty->hostBaudRate();
+    const qint32 hostBaud = m_port->hostBaudRate();
     // An instant device takes no time to hear a frame or to answer it.
     const double byteUs = m_options.instant ? 0.0 : byteTimeUs(hostBaud);
-    // The pty hands the bytes over at once; on a wire they would still be arriving. Through a
+    // The port hands the bytes over at once; on a wire they would still be arriving. Through a
     // USB adapter they reach the wire with the next USB frame.
     const qint64 onWire = m_adapter ? m_adapter->requestOnWireUs(now) : now;
     m_inputEndUs = std::max(onWire, m_inputEndUs) + qint64(std::ceil(bytes.size() * byteUs));
@@ -229,7 +246,7 @@ void Simulator::schedule(qint64 startUs, const QByteArray &frame, double byteUs,
         queue(std::move(logged));
         return;
     }
-    // Hand the bytes to the pty as they would finish crossing the wire, about a millisecond's
+    // Hand the bytes to the port as they would finish crossing the wire, about a millisecond's
     // worth at a time (a USB adapter delivers in similar batches).
     const int perChunk = std::max(1, int(1000.0 / std::max(byteUs, 1e-3)));
     for (int offset = 0; offset < frame.size(); offset += perChunk) {
@@ -248,6 +265,17 @@ void Simulator::schedule(qint64 startUs, const QByteArray &frame, double byteUs,
 
 void Simulator::queue(Outgoing chunk)
 {
+    if (m_port->takesBytesAhead() && !chunk.bytes.isEmpty()) {
+        // The port lets the host have them at their time, however late this thread next runs;
+        // only the log waits here for it.
+        m_port->writeAt(chunk.bytes,
+                        std::chrono::steady_clock::now()
+                            + std::chrono::microseconds(chunk.dueUs - nowUs()));
+        chunk.bytes.clear();
+        // Nothing waits here for the bytes' time unless the frame is to be logged then.
+        if (!chunk.direction || !m_log.isOpen())
+            return;
+    }
     // Kept in time order (echo may be scheduled before pending replies end).
     auto at = std::upper_bound(m_outgoing.begin(), m_outgoing.end(), chunk.dueUs,
                                [](qint64 due, const Outgoing &o) { return due < o.dueUs; });
@@ -263,7 +291,7 @@ void Simulator::sendDue()
             const Outgoing chunk = m_outgoing.front();
             m_outgoing.pop_front();
             if (!chunk.bytes.isEmpty())
-                m_pty->write(chunk.bytes);
+                m_port->write(chunk.bytes);
             if (chunk.direction)
                 m_log.write(now, chunk.direction, chunk.frame, chunk.note);
         }
@@ -271,7 +299,7 @@ void Simulator::sendDue()
         if (m_adapter) {
             for (QByteArray packet = m_adapter->takeDelivery(now); !packet.isEmpty();
                  packet = m_adapter->takeDelivery(now))
-                m_pty->write(packet);
+                m_port->write(packet);
             next = std::min(next, m_adapter->nextDeliveryUs());
         }
         if (next == UsbAdapter::kNever)

@@ -1,9 +1,9 @@
-// The simulator: a virtual PTK servo or Feetech bus behind a pseudo-terminal, with wire-rate
-// pacing, optional echo, fault injection and a frame log.
+// The simulator: a virtual PTK servo or Feetech bus behind a pseudo-terminal (or a port inside
+// this program), with wire-rate pacing, optional echo, fault injection and a frame log.
 #pragma once
 
+#include "deviceport.h"
 #include "faultinjector.h"
-#include "pseudoterminal.h"
 #include "simlog.h"
 #include "simoptions.h"
 #include "usbadapter.h"
@@ -33,11 +33,13 @@ public:
     static std::unique_ptr<Simulator> create(const SimulatorOptions &options, QString *error);
     ~Simulator() override;
 
-    // Opens the pty and makes the link; call in the thread the simulator lives in.
+    // Opens the port (the pty and its link, or the in-process port); call in the thread the
+    // simulator lives in.
     bool start(QString *error);
     void stop();
 
-    QString linkPath() const { return m_pty->linkPath(); }
+    // The pty's link, or the name the in-process port is offered under.
+    QString linkPath() const { return m_port ? m_port->portName() : QString(); }
     qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
 
     VirtualDevice &device() { return *m_device; }
@@ -74,7 +76,7 @@ private:
 
     SimulatorOptions m_options;
     std::unique_ptr<VirtualDevice> m_device;
-    seriallink::PseudoTerminal *m_pty = nullptr;
+    seriallink::DevicePort *m_port = nullptr; // made by start()
     SimLog m_log;
     std::optional<FaultInjector> m_faults;
     std::optional<UsbAdapter> m_adapter;

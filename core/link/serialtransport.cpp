@@ -1,5 +1,5 @@
 // Serial transport over QSerialPort, and the table of port error messages.
-#include "transport.h"
+#include "serialtransport.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>
@@ -22,7 +22,7 @@ namespace seriallink {
 Q_LOGGING_CATEGORY(lcLink, "servobench.link", QtWarningMsg)
 
 SerialTransport::SerialTransport(QObject *parent)
-    : Transport(parent)
+    : PortTransport(parent)
     , m_port(new QSerialPort(this))
 {
     connect(m_port, &QSerialPort::readyRead, this, [this] {
