@@ -283,6 +283,62 @@
         <source>No servo answered at %1. Re-scan with the port probed: it listens at every rate and tells silence from bytes that never make an answer.</source>
         <translation>Bei %1 hat kein Servo geantwortet. Scannen Sie erneut mit Anschlussprüfung: Diese lauscht bei jeder Baudrate und unterscheidet Stille von Bytes, die nie eine Antwort ergeben.</translation>
     </message>
+    <message>
+        <source>You may not open the port</source>
+        <translation>Keine Berechtigung für den Anschluss</translation>
+    </message>
+    <message>
+        <source>Another program has the port</source>
+        <translation>Ein anderes Programm belegt den Anschluss</translation>
+    </message>
+    <message>
+        <source>The port is not there</source>
+        <translation>Der Anschluss ist nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>The port could not be opened</source>
+        <translation>Der Anschluss konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>Nothing answers</source>
+        <translation>Nichts antwortet</translation>
+    </message>
+    <message>
+        <source>Bytes come back, but no answer</source>
+        <translation>Bytes kommen zurück, aber keine Antwort</translation>
+    </message>
+    <message>
+        <source>A PTK servo, not a Feetech bus</source>
+        <translation>Ein PTK-Servo, kein Feetech-Bus</translation>
+    </message>
+    <message>
+        <source>No servo found</source>
+        <translation>Kein Servo gefunden</translation>
+    </message>
+    <message>
+        <source>A servo at an unexpected ID</source>
+        <translation>Ein Servo unter einer unerwarteten ID</translation>
+    </message>
+    <message>
+        <source>A servo at another rate</source>
+        <translation>Ein Servo mit anderer Baudrate</translation>
+    </message>
+    <message>
+        <source>The chain is broken</source>
+        <translation>Die Kette ist unterbrochen</translation>
+    </message>
+    <message>
+        <source>Servos are missing</source>
+        <translation>Servos fehlen</translation>
+    </message>
+    <message>
+        <source>Two servos may share an ID</source>
+        <translation>Zwei Servos teilen sich vielleicht eine ID</translation>
+    </message>
+    <message>
+        <source>The supply voltage is wrong</source>
+        <translation>Die Versorgungsspannung stimmt nicht</translation>
+    </message>
 </context>
 <context>
     <name>BusShare</name>
@@ -360,6 +416,17 @@
     <message>
         <source>Load calibration</source>
         <translation>Kalibrierung laden</translation>
+    </message>
+    <message>
+        <source>Close the motor set-up (%1) before calibrating: it changes the servos&apos; IDs and settings.</source>
+        <translation>Schließen Sie die Motoreinrichtung (%1) vor dem Kalibrieren: Sie ändert die IDs und Einstellungen der Servos.</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationFiles</name>
+    <message>
+        <source>LeRobot calibration (*.json)</source>
+        <translation>LeRobot-Kalibrierung (*.json)</translation>
     </message>
 </context>
 <context>
@@ -515,6 +582,25 @@
         <source>Written and verified</source>
         <translation>Geschrieben und verifiziert</translation>
     </message>
+    <message>
+        <source>Writing each joint&apos;s offset and limits to its EEPROM and reading them back…</source>
+        <translation>Offset und Grenzen jedes Gelenks werden in sein EEPROM geschrieben und zurückgelesen…</translation>
+    </message>
+    <message>
+        <source>Every joint&apos;s offset and limits were written to its EEPROM and read back as written.</source>
+        <translation>Offset und Grenzen jedes Gelenks wurden in sein EEPROM geschrieben und unverändert zurückgelesen.</translation>
+    </message>
+    <message>
+        <source>No joint&apos;s calibration was written and verified: the status column says why.</source>
+        <translation>Die Kalibrierung keines Gelenks wurde geschrieben und verifiziert: Die Statusspalte zeigt, warum.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n joint(s) were written and verified; the status column says what became of the others.</source>
+        <translation>
+            <numerusform>Geschrieben und verifiziert: %1 von %n Gelenk; die Statusspalte zeigt, was aus den übrigen wurde.</numerusform>
+            <numerusform>Geschrieben und verifiziert: %1 von %n Gelenken; die Statusspalte zeigt, was aus den übrigen wurde.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>CalibrationSaver</name>
@@ -576,14 +662,6 @@
         <translation>Schließen</translation>
     </message>
     <message>
-        <source>Every joint was written and verified. Save LeRobot&apos;s file if you use LeRobot with this arm.</source>
-        <translation>Jedes Gelenk wurde geschrieben und verifiziert. Speichern Sie die LeRobot-Datei, wenn Sie LeRobot mit diesem Arm verwenden.</translation>
-    </message>
-    <message>
-        <source>Not every joint was written: see the status column.</source>
-        <translation>Nicht jedes Gelenk wurde geschrieben: siehe Statusspalte.</translation>
-    </message>
-    <message>
         <source>Support the arm: torque goes off on these joints, and the arm will fall under its own weight if nothing holds it.
 
 %1</source>
@@ -628,20 +706,12 @@
         <translation>Aus dieser Aufzeichnung kann kein Gelenk kalibriert werden: Drücken Sie „Erneut aufzeichnen“ und bewegen Sie jedes Gelenk durch seinen Bereich.</translation>
     </message>
     <message>
-        <source>Writing to EEPROM and verifying…</source>
-        <translation>Schreiben ins EEPROM und Verifizieren…</translation>
-    </message>
-    <message>
         <source>No joint was written: there is nothing to save.</source>
         <translation>Kein Gelenk wurde geschrieben: Es gibt nichts zu speichern.</translation>
     </message>
     <message>
         <source>Save LeRobot calibration</source>
         <translation>LeRobot-Kalibrierung speichern</translation>
-    </message>
-    <message>
-        <source>LeRobot calibration (*.json)</source>
-        <translation>LeRobot-Kalibrierung (*.json)</translation>
     </message>
     <message>
         <source>Saved %1.</source>
@@ -700,10 +770,6 @@
         <translation>, volle Umdrehung</translation>
     </message>
     <message>
-        <source>The joint was written and verified. Save it into %1: the file&apos;s other joints stay as they are.</source>
-        <translation>Das Gelenk wurde geschrieben und verifiziert. Speichern Sie es in %1: Die anderen Gelenke der Datei bleiben unverändert.</translation>
-    </message>
-    <message>
         <source>Calibrate the new %1 servo</source>
         <translation>Das neue Servo %1 kalibrieren</translation>
     </message>
@@ -714,6 +780,22 @@
     <message>
         <source>Update %1: this joint&apos;s offset and range replaced, the other joints kept</source>
         <translation>%1 aktualisieren: Offset und Bereich dieses Gelenks werden ersetzt, die anderen Gelenke bleiben erhalten</translation>
+    </message>
+    <message>
+        <source>Save the joint into %1: the file&apos;s other joints stay as they are.</source>
+        <translation>Speichern Sie das Gelenk in %1: Die anderen Gelenke der Datei bleiben unverändert.</translation>
+    </message>
+    <message>
+        <source>Saving LeRobot&apos;s file keeps only the joints written and verified.</source>
+        <translation>Beim Speichern der LeRobot-Datei werden nur die geschriebenen und verifizierten Gelenke übernommen.</translation>
+    </message>
+    <message>
+        <source>Save LeRobot&apos;s file if you use LeRobot with this arm.</source>
+        <translation>Speichern Sie die LeRobot-Datei, wenn Sie LeRobot mit diesem Arm verwenden.</translation>
+    </message>
+    <message>
+        <source>Servo ID %1 is being calibrated: close the calibration wizard first.</source>
+        <translation>Servo-ID %1 wird gerade kalibriert: Schließen Sie zuerst den Kalibrierassistenten.</translation>
     </message>
 </context>
 <context>
@@ -794,6 +876,14 @@
         <source>Simulated SO-101 arm</source>
         <translation>Simulierter SO-101-Arm</translation>
     </message>
+    <message>
+        <source>Choose a port</source>
+        <translation>Anschluss wählen</translation>
+    </message>
+    <message>
+        <source>Choose a serial port or a simulated servo first</source>
+        <translation>Wählen Sie zuerst einen seriellen Anschluss oder ein simuliertes Servo</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionController</name>
@@ -836,11 +926,6 @@
 </context>
 <context>
     <name>ControlPage</name>
-    <message>
-        <source>× %1 %2</source>
-        <comment>scale and unit of a register value</comment>
-        <translation>× %1 %2</translation>
-    </message>
     <message>
         <source>Damping: the horn can be turned by hand against a resistance (torque enable 2).</source>
         <translation>Dämpfung: Das Servohorn lässt sich von Hand gegen einen Widerstand drehen (torque enable 2).</translation>
@@ -888,10 +973,6 @@
     <message>
         <source>Torque enable is %1.</source>
         <translation>Torque enable ist %1.</translation>
-    </message>
-    <message>
-        <source>%1 step</source>
-        <translation>%1 Schritte</translation>
     </message>
     <message>
         <source>Select a servo in the tree to control it.</source>
@@ -1077,6 +1158,22 @@
         <source>Cannot create a folder for the simulated servos: %1</source>
         <translation>Ordner für die simulierten Servos kann nicht angelegt werden: %1</translation>
     </message>
+    <message>
+        <source>Simulated PTK servo</source>
+        <translation>Simuliertes PTK-Servo</translation>
+    </message>
+    <message>
+        <source>Simulated Feetech bus</source>
+        <translation>Simulierter Feetech-Bus</translation>
+    </message>
+    <message>
+        <source>Simulated SO-101 arm</source>
+        <translation>Simulierter SO-101-Arm</translation>
+    </message>
+    <message>
+        <source>Simulated SO-101 leader arm</source>
+        <translation>Simulierter SO-101-Führungsarm</translation>
+    </message>
 </context>
 <context>
     <name>DoctorPanel</name>
@@ -1162,6 +1259,18 @@
     <message>
         <source>The servo moved to its new ID could not be found to change its rate; re-scan.</source>
         <translation>Das auf die neue ID umgestellte Servo wurde nicht gefunden, um seine Baudrate zu ändern; scannen Sie erneut.</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <source>%1 (code %2)</source>
+        <translation>%1 (Code %2)</translation>
+    </message>
+    <message>
+        <source>The finding&apos;s code, as servoctl doctor prints it</source>
+        <translation>Der Code des Befunds, wie servoctl doctor ihn ausgibt</translation>
     </message>
 </context>
 <context>
@@ -1462,6 +1571,10 @@
     <message>
         <source>%1: &quot;%2&quot; is not a number.</source>
         <translation>%1: „%2“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a whole number of steps of %3: set to %4.</source>
+        <translation>%1: %2 ist kein ganzzahliges Vielfaches der Schrittweite %3: auf %4 gesetzt.</translation>
     </message>
 </context>
 <context>
@@ -3228,6 +3341,14 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>No servo yet: scan the bus.</source>
         <translation>Noch kein Servo: Scannen Sie den Bus.</translation>
     </message>
+    <message>
+        <source>Not connected: the servos listed are those of the last scan. Connect, then scan again.</source>
+        <translation>Nicht verbunden: Die aufgeführten Servos stammen aus dem letzten Scan. Verbinden Sie sich und scannen Sie dann erneut.</translation>
+    </message>
+    <message>
+        <source>✓ Verified: %1</source>
+        <translation>✓ Verifiziert: %1</translation>
+    </message>
 </context>
 <context>
     <name>GuardBanner</name>
@@ -3567,6 +3688,51 @@ Eine belegte ID wird abgelehnt.</translation>
     </message>
 </context>
 <context>
+    <name>IdentifyQuestion</name>
+    <message>
+        <source>Identify a servo</source>
+        <translation>Servo identifizieren</translation>
+    </message>
+    <message>
+        <source>Move it</source>
+        <translation>Bewegen</translation>
+    </message>
+    <message>
+        <source>Identify moves %1: its torque comes on and it turns %2 steps each way, slowly and with little torque, then goes back where it was, its settings as before.
+
+Keep hands and objects clear of the arm. Move it now?</source>
+        <translation>Identifizieren bewegt %1: Das Drehmoment wird eingeschaltet, das Servo dreht sich langsam und mit wenig Drehmoment um %2 Schritte in jede Richtung und kehrt dann an seine Ausgangsstellung zurück, mit denselben Einstellungen wie zuvor.
+
+Halten Sie Hände und Gegenstände vom Arm fern. Jetzt bewegen?</translation>
+    </message>
+</context>
+<context>
+    <name>InProcessPort</name>
+    <message>
+        <source>A simulated port needs a name.</source>
+        <translation>Ein simulierter Anschluss braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>InProcessTransport</name>
+    <message>
+        <source>%1 is not running: its simulated servos have stopped.</source>
+        <translation>%1 läuft nicht: Die zugehörigen simulierten Servos wurden beendet.</translation>
+    </message>
+    <message>
+        <source>%1 is already open.</source>
+        <translation>%1 ist bereits geöffnet.</translation>
+    </message>
+    <message>
+        <source>%1 went away: its simulated servos have stopped.</source>
+        <translation>%1 ist verschwunden: Die zugehörigen simulierten Servos wurden beendet.</translation>
+    </message>
+</context>
+<context>
     <name>Joint</name>
     <message>
         <source>shoulder_pan</source>
@@ -3591,6 +3757,24 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>gripper</source>
         <translation>Greifer</translation>
+    </message>
+</context>
+<context>
+    <name>JointNameDelegate</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>JointNames</name>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1 (ID %2)</translation>
     </message>
 </context>
 <context>
@@ -3849,14 +4033,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Baudrate</translation>
     </message>
     <message>
-        <source>Position (steps)</source>
-        <translation>Position (Schritte)</translation>
-    </message>
-    <message>
-        <source>Target (steps)</source>
-        <translation>Ziel (Schritte)</translation>
-    </message>
-    <message>
         <source>Target range</source>
         <translation>Zielbereich</translation>
     </message>
@@ -3971,6 +4147,14 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>No target yet: type one, load a pose or take the present position</source>
         <translation>Noch kein Ziel: Tippen Sie eins ein, laden Sie eine Pose oder übernehmen Sie die aktuelle Position</translation>
+    </message>
+    <message>
+        <source>Position (%1)</source>
+        <translation>Position (%1)</translation>
+    </message>
+    <message>
+        <source>Target (%1)</source>
+        <translation>Ziel (%1)</translation>
     </message>
 </context>
 <context>
@@ -4390,6 +4574,22 @@ Eine belegte ID wird abgelehnt.</translation>
         <source>Move this arm with a leader arm on another port</source>
         <translation>Diesen Arm mit einem Führungsarm an einem anderen Anschluss bewegen</translation>
     </message>
+    <message>
+        <source>Close the calibration wizard before setting up motors: a set-up changes the servos&apos; IDs and settings.</source>
+        <translation>Schließen Sie den Kalibrierassistenten, bevor Sie Motoren einrichten: Eine Einrichtung ändert die IDs und Einstellungen der Servos.</translation>
+    </message>
+    <message>
+        <source>Ask skipped &amp;questions again</source>
+        <translation>Übersprungene &amp;Fragen wieder stellen</translation>
+    </message>
+    <message>
+        <source>ServoBench asks again before anything moves.</source>
+        <translation>ServoBench fragt wieder nach, bevor sich etwas bewegt.</translation>
+    </message>
+    <message>
+        <source>The questions you ticked &quot;Don&apos;t ask again&quot; on are asked again</source>
+        <translation>Fragen, bei denen Sie „Nicht mehr fragen“ angehakt haben, werden wieder gestellt</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -4719,16 +4919,16 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>unbekanntes Modell</translation>
     </message>
     <message>
-        <source>ID %1 · %2 · %3</source>
-        <translation>ID %1 · %2 · %3</translation>
-    </message>
-    <message>
         <source>Unknown model: its feedback cannot be decoded</source>
         <translation>Unbekanntes Modell: Seine Rückmeldungen können nicht dekodiert werden</translation>
     </message>
     <message>
         <source>Scan the bus to find servos.</source>
         <translation>Scannen Sie den Bus, um Servos zu finden.</translation>
+    </message>
+    <message>
+        <source>%1 · %2 · %3</source>
+        <translation>%1 · %2 · %3</translation>
     </message>
 </context>
 <context>
@@ -4799,10 +4999,6 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Step and sweep tests</source>
         <translation>Sprung- und Schwenktests</translation>
-    </message>
-    <message>
-        <source> step</source>
-        <translation> Schritte</translation>
     </message>
     <message>
         <source>Goal speed of the test moves (0: the servo&apos;s maximum).</source>
@@ -4913,10 +5109,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Toleranzband</translation>
     </message>
     <message>
-        <source>Position (step)</source>
-        <translation>Position (Schritte)</translation>
-    </message>
-    <message>
         <source>Target</source>
         <translation>Ziel</translation>
     </message>
@@ -4987,6 +5179,10 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>± %1 steps</source>
         <translation>± %1 Schritte</translation>
+    </message>
+    <message>
+        <source>Position (%1)</source>
+        <translation>Position (%1)</translation>
     </message>
 </context>
 <context>
@@ -5249,6 +5445,13 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>%1 is %2, with bits 0x%3 set</source>
         <translation>%1 ist %2, mit gesetzten Bits 0x%3</translation>
+    </message>
+</context>
+<context>
+    <name>MotorSetupFlow</name>
+    <message>
+        <source>set up earlier, but ID %1 does not answer now</source>
+        <translation>zuvor eingerichtet, aber ID %1 antwortet jetzt nicht</translation>
     </message>
 </context>
 <context>
@@ -6611,10 +6814,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <source> (× %1 %2)</source>
-        <translation> (× %1 %2)</translation>
-    </message>
-    <message>
         <source>On the servo: %1</source>
         <translation>Im Servo: %1</translation>
     </message>
@@ -6673,6 +6872,15 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>State</source>
         <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>, in steps of %1</source>
+        <translation>, in Schritten von %1</translation>
+    </message>
+    <message>
+        <source>%1, snapped</source>
+        <comment>state of a register whose typed value was put on a step</comment>
+        <translation>%1, auf Schritt gerundet</translation>
     </message>
 </context>
 <context>
@@ -6907,6 +7115,15 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <source>late answer, discarded</source>
         <translation>verspätete Antwort, verworfen</translation>
     </message>
+    <message>
+        <source>heard while several may answer</source>
+        <translation>empfangen, während mehrere antworten können</translation>
+    </message>
+    <message>
+        <source>%1: silence was expected, not counted as an error</source>
+        <comment>no reply (attempt …)</comment>
+        <translation>%1: Stille war erwartet, nicht als Fehler gezählt</translation>
+    </message>
 </context>
 <context>
     <name>RobotActions</name>
@@ -6997,6 +7214,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>Robot template saved to %1</source>
         <translation>Robotervorlage gespeichert unter %1</translation>
+    </message>
+    <message>
+        <source>servo ID %1</source>
+        <translation>Servo-ID %1</translation>
     </message>
 </context>
 <context>
@@ -7424,10 +7645,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Ziehen, um das Servo zu bewegen: Ziele werden so schnell gesendet, wie das Servo sie bestätigt, immer das neueste.</translation>
     </message>
     <message>
-        <source> step</source>
-        <translation> Schritte</translation>
-    </message>
-    <message>
         <source>Move</source>
         <translation>Bewegen</translation>
     </message>
@@ -7448,20 +7665,20 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Aktuell</translation>
     </message>
     <message>
-        <source>Goal speed, in register units (0: the servo&apos;s maximum).</source>
-        <translation>Zielgeschwindigkeit in Registereinheiten (0: Maximum des Servos).</translation>
-    </message>
-    <message>
-        <source>Acceleration, in register units (0: the servo&apos;s maximum).</source>
-        <translation>Beschleunigung in Registereinheiten (0: Maximum des Servos).</translation>
-    </message>
-    <message>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
         <source>Acceleration</source>
         <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <source>Goal speed (0: the servo&apos;s maximum). The arrows move by one step of the register.</source>
+        <translation>Zielgeschwindigkeit (0: Maximum des Servos). Die Pfeile ändern den Wert um einen Registerschritt.</translation>
+    </message>
+    <message>
+        <source>Acceleration (0: the servo&apos;s maximum). The arrows move by one step of the register.</source>
+        <translation>Beschleunigung (0: Maximum des Servos). Die Pfeile ändern den Wert um einen Registerschritt.</translation>
     </message>
 </context>
 <context>
@@ -7628,10 +7845,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>ID %1 (geteilt!)</translation>
     </message>
     <message>
-        <source>ID %1</source>
-        <translation>ID %1</translation>
-    </message>
-    <message>
         <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
         <translation>Zwei oder mehr Servos antworten unter ID %1: Ihre Antworten kommen verstümmelt zurück. Solange die ID geteilt ist, wird nichts an sie geschrieben; schließen Sie die Servos einzeln an und geben Sie jedem seine eigene ID.</translation>
     </message>
@@ -7646,6 +7859,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>No register table is known for this model: its memory is shown as raw bytes, read-only.</source>
         <translation>Für dieses Modell ist keine Registertabelle bekannt: Sein Speicher wird als Rohbytes angezeigt, schreibgeschützt.</translation>
+    </message>
+    <message>
+        <source>The servos are the joints of the %1</source>
+        <translation>Die Servos sind die Gelenke dieses Roboters: %1</translation>
     </message>
 </context>
 <context>
@@ -8585,6 +8802,17 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     </message>
 </context>
 <context>
+    <name>SkippableQuestion</name>
+    <message>
+        <source>Don&apos;t ask again</source>
+        <translation>Nicht mehr fragen</translation>
+    </message>
+    <message>
+        <source>View &gt; Ask skipped questions again brings it back</source>
+        <translation>Ansicht &gt; Übersprungene Fragen wieder stellen holt sie zurück</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryPlot</name>
     <message>
         <source>There is nothing to export: choose at least one quantity to plot.</source>
@@ -8985,6 +9213,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>No serial port found. Plug in the USB adapter: it shows up here by itself.</source>
         <translation>Kein serieller Anschluss gefunden. Stecken Sie den USB-Adapter ein: Er erscheint hier von selbst.</translation>
+    </message>
+    <message>
+        <source>Choose a serial port first</source>
+        <translation>Wählen Sie zuerst einen seriellen Anschluss</translation>
     </message>
 </context>
 <context>

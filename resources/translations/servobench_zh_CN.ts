@@ -282,6 +282,62 @@
         <source>No servo answered at %1. Re-scan with the port probed: it listens at every rate and tells silence from bytes that never make an answer.</source>
         <translation>在 %1 下没有舵机应答。请在探测端口后重新扫描：探测会在每种波特率下监听，并区分完全无信号与收到字节却始终构不成应答的情况。</translation>
     </message>
+    <message>
+        <source>You may not open the port</source>
+        <translation>无权打开端口</translation>
+    </message>
+    <message>
+        <source>Another program has the port</source>
+        <translation>端口被其他程序占用</translation>
+    </message>
+    <message>
+        <source>The port is not there</source>
+        <translation>端口不存在</translation>
+    </message>
+    <message>
+        <source>The port could not be opened</source>
+        <translation>无法打开端口</translation>
+    </message>
+    <message>
+        <source>Nothing answers</source>
+        <translation>没有任何应答</translation>
+    </message>
+    <message>
+        <source>Bytes come back, but no answer</source>
+        <translation>收到字节，但没有有效应答</translation>
+    </message>
+    <message>
+        <source>A PTK servo, not a Feetech bus</source>
+        <translation>是 PTK 舵机，不是 Feetech 总线</translation>
+    </message>
+    <message>
+        <source>No servo found</source>
+        <translation>未找到舵机</translation>
+    </message>
+    <message>
+        <source>A servo at an unexpected ID</source>
+        <translation>在意外的 ID 上发现舵机</translation>
+    </message>
+    <message>
+        <source>A servo at another rate</source>
+        <translation>有舵机处于其他波特率</translation>
+    </message>
+    <message>
+        <source>The chain is broken</source>
+        <translation>链路断开</translation>
+    </message>
+    <message>
+        <source>Servos are missing</source>
+        <translation>缺少舵机</translation>
+    </message>
+    <message>
+        <source>Two servos may share an ID</source>
+        <translation>可能有两个舵机共用一个 ID</translation>
+    </message>
+    <message>
+        <source>The supply voltage is wrong</source>
+        <translation>供电电压不正确</translation>
+    </message>
 </context>
 <context>
     <name>BusShare</name>
@@ -359,6 +415,17 @@
     <message>
         <source>Load calibration</source>
         <translation>加载校准</translation>
+    </message>
+    <message>
+        <source>Close the motor set-up (%1) before calibrating: it changes the servos&apos; IDs and settings.</source>
+        <translation>校准前请先关闭舵机设置（%1）：它会更改舵机的 ID 和参数。</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationFiles</name>
+    <message>
+        <source>LeRobot calibration (*.json)</source>
+        <translation>LeRobot 校准文件 (*.json)</translation>
     </message>
 </context>
 <context>
@@ -514,6 +581,24 @@
         <source>Written and verified</source>
         <translation>已写入并验证</translation>
     </message>
+    <message>
+        <source>Writing each joint&apos;s offset and limits to its EEPROM and reading them back…</source>
+        <translation>正在将每个关节的偏移和限制写入其 EEPROM 并回读…</translation>
+    </message>
+    <message>
+        <source>Every joint&apos;s offset and limits were written to its EEPROM and read back as written.</source>
+        <translation>每个关节的偏移和限制都已写入其 EEPROM，回读结果与写入一致。</translation>
+    </message>
+    <message>
+        <source>No joint&apos;s calibration was written and verified: the status column says why.</source>
+        <translation>没有任何关节的校准被写入并验证：原因见状态列。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n joint(s) were written and verified; the status column says what became of the others.</source>
+        <translation>
+            <numerusform>%n 个关节中有 %1 个已写入并验证；其余关节的情况见状态列。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>CalibrationSaver</name>
@@ -574,14 +659,6 @@
         <translation>关闭</translation>
     </message>
     <message>
-        <source>Every joint was written and verified. Save LeRobot&apos;s file if you use LeRobot with this arm.</source>
-        <translation>所有关节均已写入并验证。如果您在此机械臂上使用 LeRobot，请保存 LeRobot 文件。</translation>
-    </message>
-    <message>
-        <source>Not every joint was written: see the status column.</source>
-        <translation>并非所有关节都已写入：请查看状态列。</translation>
-    </message>
-    <message>
         <source>Support the arm: torque goes off on these joints, and the arm will fall under its own weight if nothing holds it.
 
 %1</source>
@@ -626,20 +703,12 @@
         <translation>此次记录无法校准任何关节：请按“重新记录”，并让每个关节转过其整个范围。</translation>
     </message>
     <message>
-        <source>Writing to EEPROM and verifying…</source>
-        <translation>正在写入 EEPROM 并验证…</translation>
-    </message>
-    <message>
         <source>No joint was written: there is nothing to save.</source>
         <translation>没有关节被写入：没有可保存的内容。</translation>
     </message>
     <message>
         <source>Save LeRobot calibration</source>
         <translation>保存 LeRobot 校准</translation>
-    </message>
-    <message>
-        <source>LeRobot calibration (*.json)</source>
-        <translation>LeRobot 校准文件 (*.json)</translation>
     </message>
     <message>
         <source>Saved %1.</source>
@@ -698,10 +767,6 @@
         <translation>，整圈</translation>
     </message>
     <message>
-        <source>The joint was written and verified. Save it into %1: the file&apos;s other joints stay as they are.</source>
-        <translation>该关节已写入并验证。请将其保存到 %1：文件中的其他关节保持不变。</translation>
-    </message>
-    <message>
         <source>Calibrate the new %1 servo</source>
         <translation>校准新的 %1 舵机</translation>
     </message>
@@ -712,6 +777,22 @@
     <message>
         <source>Update %1: this joint&apos;s offset and range replaced, the other joints kept</source>
         <translation>更新 %1：替换此关节的偏移和范围，保留其他关节</translation>
+    </message>
+    <message>
+        <source>Save the joint into %1: the file&apos;s other joints stay as they are.</source>
+        <translation>将该关节保存到 %1：文件中的其他关节保持不变。</translation>
+    </message>
+    <message>
+        <source>Saving LeRobot&apos;s file keeps only the joints written and verified.</source>
+        <translation>保存 LeRobot 文件时只保留已写入并验证的关节。</translation>
+    </message>
+    <message>
+        <source>Save LeRobot&apos;s file if you use LeRobot with this arm.</source>
+        <translation>如果您在此机械臂上使用 LeRobot，请保存 LeRobot 文件。</translation>
+    </message>
+    <message>
+        <source>Servo ID %1 is being calibrated: close the calibration wizard first.</source>
+        <translation>舵机 ID %1 正在校准：请先关闭校准向导。</translation>
     </message>
 </context>
 <context>
@@ -791,6 +872,14 @@
     <message>
         <source>Simulated SO-101 arm</source>
         <translation>模拟 SO-101 机械臂</translation>
+    </message>
+    <message>
+        <source>Choose a port</source>
+        <translation>选择端口</translation>
+    </message>
+    <message>
+        <source>Choose a serial port or a simulated servo first</source>
+        <translation>请先选择串口或模拟舵机</translation>
     </message>
 </context>
 <context>
@@ -883,10 +972,6 @@
         <translation>扭矩开关为 %1。</translation>
     </message>
     <message>
-        <source>%1 step</source>
-        <translation>%1 步</translation>
-    </message>
-    <message>
         <source>Select a servo in the tree to control it.</source>
         <translation>在树中选择一个舵机以进行控制。</translation>
     </message>
@@ -965,11 +1050,6 @@
     <message>
         <source>All torque off: torque is off on every servo of the bus.</source>
         <translation>全部关闭扭矩：总线上每个舵机的扭矩均已关闭。</translation>
-    </message>
-    <message>
-        <source>× %1 %2</source>
-        <comment>scale and unit of a register value</comment>
-        <translation>× %1 %2</translation>
     </message>
 </context>
 <context>
@@ -1073,6 +1153,22 @@
         <source>Cannot create a folder for the simulated servos: %1</source>
         <translation>无法为模拟舵机创建文件夹：%1</translation>
     </message>
+    <message>
+        <source>Simulated PTK servo</source>
+        <translation>模拟 PTK 舵机</translation>
+    </message>
+    <message>
+        <source>Simulated Feetech bus</source>
+        <translation>模拟 Feetech 总线</translation>
+    </message>
+    <message>
+        <source>Simulated SO-101 arm</source>
+        <translation>模拟 SO-101 机械臂</translation>
+    </message>
+    <message>
+        <source>Simulated SO-101 leader arm</source>
+        <translation>模拟 SO-101 主臂</translation>
+    </message>
 </context>
 <context>
     <name>DoctorPanel</name>
@@ -1157,6 +1253,18 @@
     <message>
         <source>The servo moved to its new ID could not be found to change its rate; re-scan.</source>
         <translation>找不到已改为新 ID 的舵机，无法更改其波特率；请重新扫描。</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>代码</translation>
+    </message>
+    <message>
+        <source>%1 (code %2)</source>
+        <translation>%1（代码 %2）</translation>
+    </message>
+    <message>
+        <source>The finding&apos;s code, as servoctl doctor prints it</source>
+        <translation>该问题的代码，与 servoctl doctor 输出的一致</translation>
     </message>
 </context>
 <context>
@@ -1457,6 +1565,10 @@
     <message>
         <source>none</source>
         <translation>无</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a whole number of steps of %3: set to %4.</source>
+        <translation>%1：%2 不是步长 %3 的整数倍：已设为 %4。</translation>
     </message>
 </context>
 <context>
@@ -3211,6 +3323,14 @@ An ID in use is refused.</source>
         <source>No servo yet: scan the bus.</source>
         <translation>还没有舵机：请扫描总线。</translation>
     </message>
+    <message>
+        <source>Not connected: the servos listed are those of the last scan. Connect, then scan again.</source>
+        <translation>未连接：列出的舵机来自上次扫描。请先连接，再重新扫描。</translation>
+    </message>
+    <message>
+        <source>✓ Verified: %1</source>
+        <translation>✓ 已验证：%1</translation>
+    </message>
 </context>
 <context>
     <name>GuardBanner</name>
@@ -3548,6 +3668,51 @@ An ID in use is refused.</source>
     </message>
 </context>
 <context>
+    <name>IdentifyQuestion</name>
+    <message>
+        <source>Identify a servo</source>
+        <translation>识别舵机</translation>
+    </message>
+    <message>
+        <source>Move it</source>
+        <translation>移动</translation>
+    </message>
+    <message>
+        <source>Identify moves %1: its torque comes on and it turns %2 steps each way, slowly and with little torque, then goes back where it was, its settings as before.
+
+Keep hands and objects clear of the arm. Move it now?</source>
+        <translation>识别将移动 %1：开启其扭矩，以小扭矩缓慢地向两侧各转动 %2 步，然后回到原位，设置恢复原样。
+
+请让手和物品远离机械臂。现在移动吗？</translation>
+    </message>
+</context>
+<context>
+    <name>InProcessPort</name>
+    <message>
+        <source>A simulated port needs a name.</source>
+        <translation>模拟端口需要一个名称。</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>InProcessTransport</name>
+    <message>
+        <source>%1 is not running: its simulated servos have stopped.</source>
+        <translation>%1 未运行：其模拟舵机已停止。</translation>
+    </message>
+    <message>
+        <source>%1 is already open.</source>
+        <translation>%1 已经打开。</translation>
+    </message>
+    <message>
+        <source>%1 went away: its simulated servos have stopped.</source>
+        <translation>%1 已消失：其模拟舵机已停止。</translation>
+    </message>
+</context>
+<context>
     <name>Joint</name>
     <message>
         <source>shoulder_pan</source>
@@ -3572,6 +3737,24 @@ An ID in use is refused.</source>
     <message>
         <source>gripper</source>
         <translation>夹爪</translation>
+    </message>
+</context>
+<context>
+    <name>JointNameDelegate</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>JointNames</name>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1 (ID %2)</translation>
     </message>
 </context>
 <context>
@@ -3829,14 +4012,6 @@ An ID in use is refused.</source>
         <translation>波特率</translation>
     </message>
     <message>
-        <source>Position (steps)</source>
-        <translation>位置（步）</translation>
-    </message>
-    <message>
-        <source>Target (steps)</source>
-        <translation>目标（步）</translation>
-    </message>
-    <message>
         <source>Target range</source>
         <translation>目标范围</translation>
     </message>
@@ -3951,6 +4126,14 @@ An ID in use is refused.</source>
     <message>
         <source>No target yet: type one, load a pose or take the present position</source>
         <translation>尚无目标：请输入目标、加载姿态或采用当前位置</translation>
+    </message>
+    <message>
+        <source>Position (%1)</source>
+        <translation>位置（%1）</translation>
+    </message>
+    <message>
+        <source>Target (%1)</source>
+        <translation>目标（%1）</translation>
     </message>
 </context>
 <context>
@@ -4369,6 +4552,22 @@ An ID in use is refused.</source>
         <source>Move this arm with a leader arm on another port</source>
         <translation>用另一个端口上的主臂操控此机械臂</translation>
     </message>
+    <message>
+        <source>Close the calibration wizard before setting up motors: a set-up changes the servos&apos; IDs and settings.</source>
+        <translation>设置舵机前请先关闭校准向导：设置过程会更改舵机的 ID 和参数。</translation>
+    </message>
+    <message>
+        <source>Ask skipped &amp;questions again</source>
+        <translation>重新询问已跳过的问题(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>ServoBench asks again before anything moves.</source>
+        <translation>ServoBench 会在任何部件移动前再次询问。</translation>
+    </message>
+    <message>
+        <source>The questions you ticked &quot;Don&apos;t ask again&quot; on are asked again</source>
+        <translation>勾选了“不再询问”的问题将重新询问</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -4695,16 +4894,16 @@ An ID in use is refused.</source>
         <translation>未知型号</translation>
     </message>
     <message>
-        <source>ID %1 · %2 · %3</source>
-        <translation>ID %1 · %2 · %3</translation>
-    </message>
-    <message>
         <source>Unknown model: its feedback cannot be decoded</source>
         <translation>未知型号：无法解码其反馈</translation>
     </message>
     <message>
         <source>Scan the bus to find servos.</source>
         <translation>扫描总线以查找舵机。</translation>
+    </message>
+    <message>
+        <source>%1 · %2 · %3</source>
+        <translation>%1 · %2 · %3</translation>
     </message>
 </context>
 <context>
@@ -4775,10 +4974,6 @@ An ID in use is refused.</source>
     <message>
         <source>Step and sweep tests</source>
         <translation>阶跃与往复测试</translation>
-    </message>
-    <message>
-        <source> step</source>
-        <translation> 步</translation>
     </message>
     <message>
         <source>Goal speed of the test moves (0: the servo&apos;s maximum).</source>
@@ -4889,10 +5084,6 @@ An ID in use is refused.</source>
         <translation>稳定带</translation>
     </message>
     <message>
-        <source>Position (step)</source>
-        <translation>位置（步）</translation>
-    </message>
-    <message>
         <source>Target</source>
         <translation>目标</translation>
     </message>
@@ -4963,6 +5154,10 @@ An ID in use is refused.</source>
     <message>
         <source>± %1 steps</source>
         <translation>± %1 步</translation>
+    </message>
+    <message>
+        <source>Position (%1)</source>
+        <translation>位置（%1）</translation>
     </message>
 </context>
 <context>
@@ -5222,6 +5417,13 @@ An ID in use is refused.</source>
     <message>
         <source>%1 is %2, with bits 0x%3 set</source>
         <translation>%1 为 %2，位 0x%3 已置位</translation>
+    </message>
+</context>
+<context>
+    <name>MotorSetupFlow</name>
+    <message>
+        <source>set up earlier, but ID %1 does not answer now</source>
+        <translation>之前已设置，但 ID %1 现在无应答</translation>
     </message>
 </context>
 <context>
@@ -6575,10 +6777,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>%1 到 %2</translation>
     </message>
     <message>
-        <source> (× %1 %2)</source>
-        <translation> (× %1 %2)</translation>
-    </message>
-    <message>
         <source>On the servo: %1</source>
         <translation>舵机上：%1</translation>
     </message>
@@ -6637,6 +6835,15 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>State</source>
         <translation>状态</translation>
+    </message>
+    <message>
+        <source>, in steps of %1</source>
+        <translation>，步长 %1</translation>
+    </message>
+    <message>
+        <source>%1, snapped</source>
+        <comment>state of a register whose typed value was put on a step</comment>
+        <translation>%1，已按步长取整</translation>
     </message>
 </context>
 <context>
@@ -6869,6 +7076,15 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <source>late answer, discarded</source>
         <translation>迟到应答，已丢弃</translation>
     </message>
+    <message>
+        <source>heard while several may answer</source>
+        <translation>在多个舵机可能同时应答时收到</translation>
+    </message>
+    <message>
+        <source>%1: silence was expected, not counted as an error</source>
+        <comment>no reply (attempt …)</comment>
+        <translation>%1：预期无应答，不计为错误</translation>
+    </message>
 </context>
 <context>
     <name>RobotActions</name>
@@ -6959,6 +7175,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Robot template saved to %1</source>
         <translation>机器人模板已保存到 %1</translation>
+    </message>
+    <message>
+        <source>servo ID %1</source>
+        <translation>舵机 ID %1</translation>
     </message>
 </context>
 <context>
@@ -7384,10 +7604,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>拖动以移动舵机：目标会以舵机确认的最快速度发送，且总是发送最新的目标。</translation>
     </message>
     <message>
-        <source> step</source>
-        <translation> 步</translation>
-    </message>
-    <message>
         <source>Move</source>
         <translation>移动</translation>
     </message>
@@ -7408,20 +7624,20 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>当前</translation>
     </message>
     <message>
-        <source>Goal speed, in register units (0: the servo&apos;s maximum).</source>
-        <translation>目标速度，单位为寄存器单位（0：舵机的最大值）。</translation>
-    </message>
-    <message>
-        <source>Acceleration, in register units (0: the servo&apos;s maximum).</source>
-        <translation>加速度，单位为寄存器单位（0：舵机的最大值）。</translation>
-    </message>
-    <message>
         <source>Speed</source>
         <translation>速度</translation>
     </message>
     <message>
         <source>Acceleration</source>
         <translation>加速度</translation>
+    </message>
+    <message>
+        <source>Goal speed (0: the servo&apos;s maximum). The arrows move by one step of the register.</source>
+        <translation>目标速度（0：舵机的最大值）。箭头每次按寄存器的一个步长调整。</translation>
+    </message>
+    <message>
+        <source>Acceleration (0: the servo&apos;s maximum). The arrows move by one step of the register.</source>
+        <translation>加速度（0：舵机的最大值）。箭头每次按寄存器的一个步长调整。</translation>
     </message>
 </context>
 <context>
@@ -7586,10 +7802,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>ID %1（共用！）</translation>
     </message>
     <message>
-        <source>ID %1</source>
-        <translation>ID %1</translation>
-    </message>
-    <message>
         <source>Two or more servos answer at ID %1: their replies come back garbled. Nothing is written to this ID while it is shared; connect them one at a time and give each its own ID.</source>
         <translation>有两个或更多舵机在 ID %1 应答：它们的应答是乱码。该 ID 被共用期间不会向其写入任何内容；请逐个连接，并为每个舵机分配各自的 ID。</translation>
     </message>
@@ -7604,6 +7816,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>No register table is known for this model: its memory is shown as raw bytes, read-only.</source>
         <translation>此型号没有已知的寄存器表：其内存以原始字节只读显示。</translation>
+    </message>
+    <message>
+        <source>The servos are the joints of the %1</source>
+        <translation>这些舵机是 %1 的关节</translation>
     </message>
 </context>
 <context>
@@ -8538,6 +8754,17 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     </message>
 </context>
 <context>
+    <name>SkippableQuestion</name>
+    <message>
+        <source>Don&apos;t ask again</source>
+        <translation>不再询问</translation>
+    </message>
+    <message>
+        <source>View &gt; Ask skipped questions again brings it back</source>
+        <translation>可通过“视图 &gt; 重新询问已跳过的问题”恢复</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryPlot</name>
     <message>
         <source>Drag across a time span to zoom in, right-click to zoom out, or turn the wheel; Reset zoom goes back to live data</source>
@@ -8936,6 +9163,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>No serial port found. Plug in the USB adapter: it shows up here by itself.</source>
         <translation>未找到串口。请插入 USB 适配器：它会自动出现在这里。</translation>
+    </message>
+    <message>
+        <source>Choose a serial port first</source>
+        <translation>请先选择串口</translation>
     </message>
 </context>
 <context>

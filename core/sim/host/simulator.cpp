@@ -35,6 +35,9 @@ constexpr int kTickMs = 10;
 // Waits shorter than this are slept through instead of going back to the event loop, so that
 // sub-millisecond wire times stay sub-millisecond.
 constexpr qint64 kSpinThresholdUs = 1500;
+// A sleep ends some tens of microseconds late (more on a virtual machine), which would delay
+// every reply's last byte: the last stretch before a reply is due is waited out awake.
+constexpr qint64 kAwakeUs = 40;
 
 // One start bit, eight data bits, one stop bit.
 double byteTimeUs(qint32 baud)
@@ -309,8 +312,8 @@ void Simulator::sendDue()
             m_sendTimer->start(int(wait / 1000));
             return;
         }
-        if (wait > 0)
-            QThread::usleep(static_cast<unsigned long>(wait));
+        if (wait > kAwakeUs)
+            QThread::usleep(static_cast<unsigned long>(wait - kAwakeUs));
     }
 }
 
