@@ -11,7 +11,7 @@ std::optional<AdapterProfile> adapterProfile(const QString &name)
     profile.name = name;
     if (name == QLatin1String("ftdi") || name == QLatin1String("ftdi-1ms")) {
         // FT232R: 64-byte packets of which two are modem status; a latency timer of 16 ms by
-        // default, 1 ms once lowered (README: "USB adapters").
+        // default, 1 ms once lowered (docs/hardware.md: "USB adapters and latency").
         profile.packetBytes = 62;
         profile.latencyTimerUs = name == QLatin1String("ftdi") ? 16000 : 1000;
         profile.jitterUs = 150;
