@@ -4767,7 +4767,7 @@ Keep hands and objects clear of the arm. Move it now?</source>
     </message>
     <message>
         <source>Status</source>
-        <translation>状态</translation>
+        <translation>舵机状态</translation>
     </message>
     <message>
         <source>Samples/s</source>
@@ -4779,7 +4779,7 @@ Keep hands and objects clear of the arm. Move it now?</source>
     </message>
     <message>
         <source>State</source>
-        <translation>状态</translation>
+        <translation>通信状态</translation>
     </message>
     <message>
         <source>The servo&apos;s protection bits that tripped (register 65)</source>
