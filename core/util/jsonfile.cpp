@@ -13,6 +13,12 @@
 
 namespace util {
 
+bool isWholeNumber(const QJsonValue &value)
+{
+    return value.isDouble() && std::isfinite(value.toDouble())
+        && value.toDouble() == std::floor(value.toDouble()) && std::abs(value.toDouble()) < 1e9;
+}
+
 std::optional<QByteArray> readFile(const QString &path, qint64 maxBytes, const QString &tooLarge,
                                    FileError *error)
 {

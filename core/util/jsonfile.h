@@ -5,6 +5,7 @@
 
 #include <QByteArray>
 #include <QJsonObject>
+#include <QJsonValue>
 #include <QString>
 #include <QVector>
 
@@ -31,6 +32,9 @@ struct JsonFormat
     QString wrongMarker; // %1: the format key, %2: the marker
     QString newerVersion; // %1: the file's version, %2: `version`
 };
+
+// A JSON number that is a whole number a file may hold (an ID, a step count), not 1.5 or 1e300.
+bool isWholeNumber(const QJsonValue &value);
 
 // The whole file, or nothing and *error naming the file: CannotRead (the file system's words),
 // or TooLarge (the sentence `tooLarge`) when the file is larger than maxBytes.

@@ -30,7 +30,7 @@ const QString kMaxVoltage = QStringLiteral("max_voltage");
 const QString kMinVoltage = QStringLiteral("min_voltage");
 const QString kPresentVoltage = QStringLiteral("present_voltage");
 
-QString number(double value, int decimals)
+QString fixedText(double value, int decimals)
 {
     return QString::number(value, 'f', decimals);
 }
@@ -209,7 +209,7 @@ void checkBus(ServoFindings &servo)
                   SettingsCheckTr::tr(
                       "The servo waits %1 µs before each answer: every read of the bus is "
                       "that much slower.")
-                      .arg(number(*delay * (r ? r->scale : 2.0), 0)));
+                      .arg(fixedText(*delay * (r ? r->scale : 2.0), 0)));
     }
     if (const auto lock = servo.value(kLock); lock && *lock == 0) {
         servo.add(QStringLiteral("unlocked"), kLock, 1,
@@ -236,7 +236,7 @@ void checkVoltage(ServoFindings &servo)
                       "The supply reads %1 V, above the maximum voltage setting of %2 V: the "
                       "servo reports a voltage error and may not move. Use a supply it is "
                       "made for, or raise the limit if it is a higher-voltage model.")
-                      .arg(number(volts, 1), number(*high, 1)));
+                      .arg(fixedText(volts, 1), fixedText(*high, 1)));
     }
     if (const auto low = limitVolts(kMinVoltage); low && volts < *low) {
         servo.add(QStringLiteral("voltage-limit"), kMinVoltage, std::nullopt,
@@ -244,7 +244,7 @@ void checkVoltage(ServoFindings &servo)
                       "The supply reads %1 V, below the minimum voltage setting of %2 V: the "
                       "servo reports a voltage error and may not move. Charge the battery or "
                       "check the supply.")
-                      .arg(number(volts, 1), number(*low, 1)));
+                      .arg(fixedText(volts, 1), fixedText(*low, 1)));
     }
 }
 

@@ -50,12 +50,6 @@ constexpr Field kFields[] = {
     {kRangeMaxKey, 0, kLeRobotLargestLimit},
 };
 
-bool isWhole(const QJsonValue &value)
-{
-    return value.isDouble() && std::isfinite(value.toDouble())
-        && value.toDouble() == std::floor(value.toDouble()) && std::abs(value.toDouble()) < 1e9;
-}
-
 QString environment(const char *name)
 {
     return qEnvironmentVariable(name);
@@ -132,7 +126,7 @@ leRobotCalibrationFromJson(const QByteArray &json, const QString &source, util::
                     Code::MissingField,
                     LeRobotCalibrationTr::tr("motor \"%1\": \"%2\" is missing").arg(name, key),
                     key);
-            if (!isWhole(value))
+            if (!util::isWholeNumber(value))
                 return failOn(
                     Code::WrongType,
                     LeRobotCalibrationTr::tr("motor \"%1\": \"%2\" must be a whole number")

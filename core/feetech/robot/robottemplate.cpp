@@ -56,12 +56,6 @@ util::JsonFormat robotFormat()
     return format;
 }
 
-bool isWhole(const QJsonValue &value)
-{
-    return value.isDouble() && std::isfinite(value.toDouble())
-        && value.toDouble() == std::floor(value.toDouble()) && std::abs(value.toDouble()) < 1e9;
-}
-
 bool isJointName(const QString &name)
 {
     if (name.isEmpty() || name.size() > 64 || !name.at(0).isLetter())
@@ -107,7 +101,7 @@ bool readSettings(const QJsonValue &value, const RegisterTable &table,
                 RobotTemplateTr::tr("settings: \"%1\" is set by its own flow, not by a template")
                     .arg(it.key()),
                 it.key());
-        if (!isWhole(it.value()))
+        if (!util::isWholeNumber(it.value()))
             return failWith(
                 why, Code::WrongType,
                 RobotTemplateTr::tr("settings: \"%1\" must be a whole number").arg(it.key()),
@@ -164,7 +158,7 @@ bool readClearedBits(const QJsonValue &value, const RegisterTable &table,
                             it.key());
         quint32 mask = 0;
         for (const QJsonValue &bit : it.value().toArray()) {
-            if (!isWhole(bit) || bit.toInt() < 0 || bit.toInt() >= reg->size * 8) {
+            if (!util::isWholeNumber(bit) || bit.toInt() < 0 || bit.toInt() >= reg->size * 8) {
                 failWith(why, Code::BadValue,
                          RobotTemplateTr::tr("%1: \"%2\" has bits 0 to %3")
                              .arg(field, it.key())
@@ -215,7 +209,7 @@ bool readJoint(const QJsonValue &value, const QJsonObject &root, RobotJoint &joi
                 .arg(QLatin1String(kTemplateNameKey)),
             QLatin1String(kTemplateNameKey));
     const QJsonValue id = object.value(QLatin1String(kTemplateIdKey));
-    if (!isWhole(id) || id.toInt() < 0 || id.toInt() > kMaxServoId)
+    if (!util::isWholeNumber(id) || id.toInt() < 0 || id.toInt() > kMaxServoId)
         return failWith(why, Code::BadValue,
                         RobotTemplateTr::tr("\"%1\" must be a servo ID from 0 to %2")
                             .arg(QLatin1String(kTemplateIdKey))
@@ -277,7 +271,7 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
                       kTemplateNameKey);
     const QJsonValue baud = root->value(QLatin1String(kTemplateBaudKey));
     if (!baud.isUndefined()) {
-        if (!isWhole(baud) || !baudCode(qint32(baud.toDouble())))
+        if (!util::isWholeNumber(baud) || !baudCode(qint32(baud.toDouble())))
             return failOn(Code::BadValue,
                           RobotTemplateTr::tr("\"%1\" must be a Feetech baud rate in bps")
                               .arg(QLatin1String(kTemplateBaudKey)),

@@ -27,7 +27,7 @@ namespace feetech {
 namespace {
 
 const QString kRobotMarker = QStringLiteral("servobench-robot");
-const QString kOffsetKey = QStringLiteral("position_offset");
+const QString kPositionOffsetKey = QStringLiteral("position_offset");
 
 } // namespace
 
@@ -138,10 +138,10 @@ SettingsFile::batchValuesFor(const ServoInfo &servo, QStringList *leftOut, QStri
     if (!values || m_robot)
         return values; // a template's joint holds that servo's own calibration
     const auto isOffset = [](const model::WriteItem &item) {
-        return item.key == kOffsetKey;
+        return item.key == kPositionOffsetKey;
     };
-    if (values->removeIf(isOffset) > 0 && !leftOut->contains(kOffsetKey))
-        leftOut->append(kOffsetKey);
+    if (values->removeIf(isOffset) > 0 && !leftOut->contains(kPositionOffsetKey))
+        leftOut->append(kPositionOffsetKey);
     return values;
 }
 
@@ -149,7 +149,7 @@ QString torqueRefusal(const ServoInfo &servo, const QVector<model::WriteItem> &c
                       std::optional<qint64> torque)
 {
     // The phase register changes how the position reads, so the servo would chase its goal.
-    static const QStringList moving {kOffsetKey, QStringLiteral("min_angle_limit"),
+    static const QStringList moving {kPositionOffsetKey, QStringLiteral("min_angle_limit"),
                                      QStringLiteral("max_angle_limit"),
                                      QStringLiteral("goal_position"), QStringLiteral("phase")};
     const bool moves = std::any_of(changed.cbegin(), changed.cend(),

@@ -20,7 +20,7 @@
 
 namespace {
 
-enum Column { NameColumn, IdColumn, ModelColumn, StatusColumn };
+enum SetupColumn { SetupNameColumn, SetupIdColumn, SetupModelColumn, SetupStatusColumn };
 
 QString servoDescription(const feetech::ServoInfo &servo)
 {
@@ -88,9 +88,9 @@ void SetupWizard::buildUi()
     m_jointList->setRootIsDecorated(false);
     m_jointList->setUniformRowHeights(true);
     m_jointList->header()->setStretchLastSection(true);
-    m_jointList->setColumnWidth(NameColumn, 130);
-    m_jointList->setColumnWidth(IdColumn, 40);
-    m_jointList->setColumnWidth(ModelColumn, 80);
+    m_jointList->setColumnWidth(SetupNameColumn, 130);
+    m_jointList->setColumnWidth(SetupIdColumn, 40);
+    m_jointList->setColumnWidth(SetupModelColumn, 80);
     connect(m_jointList, &QTreeWidget::itemClicked, this,
             [this](QTreeWidgetItem *item) { chooseJoint(m_jointList->indexOfTopLevelItem(item)); });
     // Room for a six-joint arm; the rest goes to what the current joint's work reports.
@@ -194,9 +194,9 @@ void SetupWizard::chooseRobot(int index)
     m_jointList->clear();
     for (const feetech::RobotJoint &joint : std::as_const(m_flow->robot().joints)) {
         auto *item = new QTreeWidgetItem(m_jointList);
-        item->setText(NameColumn, feetech::jointDisplayName(joint.name));
-        item->setText(IdColumn, QString::number(joint.id));
-        item->setText(ModelColumn, joint.model);
+        item->setText(SetupNameColumn, feetech::jointDisplayName(joint.name));
+        item->setText(SetupIdColumn, QString::number(joint.id));
+        item->setText(SetupModelColumn, joint.model);
     }
     showOutcome({}, palette::Tone::Accent);
     showJoints();
@@ -243,14 +243,14 @@ void SetupWizard::showJoints()
         }
         if (i == current && state != JointState::ToDo)
             status = tr("Current, %1").arg(status.left(1).toLower() + status.mid(1));
-        item->setText(StatusColumn, status);
-        item->setToolTip(StatusColumn, status);
-        item->setForeground(StatusColumn,
+        item->setText(SetupStatusColumn, status);
+        item->setToolTip(SetupStatusColumn, status);
+        item->setForeground(SetupStatusColumn,
                             tone ? QBrush(palette::toneColor(*tone, m_jointList->palette()))
                                  : m_jointList->palette().text());
-        QFont font = item->font(NameColumn);
+        QFont font = item->font(SetupNameColumn);
         font.setBold(i == current);
-        for (int column = NameColumn; column <= StatusColumn; ++column)
+        for (int column = SetupNameColumn; column <= SetupStatusColumn; ++column)
             item->setFont(column, font);
     }
     if (current >= 0)
