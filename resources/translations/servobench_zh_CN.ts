@@ -1226,7 +1226,7 @@
     </message>
     <message>
         <source>Move the servo</source>
-        <translation>修改舵机</translation>
+        <translation>修正舵机地址</translation>
     </message>
     <message>
         <source>Looking at the bus on %1…</source>
@@ -3681,7 +3681,7 @@ An ID in use is refused.</source>
         <source>Identify moves %1: its torque comes on and it turns %2 steps each way, slowly and with little torque, then goes back where it was, its settings as before.
 
 Keep hands and objects clear of the arm. Move it now?</source>
-        <translation>识别将移动 %1：开启其扭矩，以小扭矩缓慢地向两侧各转动 %2 步，然后回到原位，设置恢复原样。
+        <translation>识别将移动%1：开启其扭矩，以小扭矩缓慢地向两侧各转动 %2 步，然后回到原位，设置恢复原样。
 
 请让手和物品远离机械臂。现在移动吗？</translation>
     </message>
