@@ -3,8 +3,8 @@
 
 #include "busshare.h"
 #include "exitcode.h"
-#include "feetechdevice.h"
 #include "feetechdescription.h"
+#include "feetechdevice.h"
 #include "feetechpacket.h"
 #include "linksession.h"
 

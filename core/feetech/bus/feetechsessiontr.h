@@ -1,4 +1,4 @@
-// The translation context of the Feetech session's messages, shared by the bus, flows, health and session libraries.
+// The translation context of the Feetech session's messages, which several libraries share.
 #pragma once
 
 #include <QCoreApplication>
