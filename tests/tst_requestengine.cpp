@@ -223,7 +223,9 @@ private slots:
         QSignalSpy logged(requests.get(), &RequestEngine::packetLogged);
         TransactionResult result = unfinished();
         Transaction listen = query(0x38, Transaction::Priority::Command, nullptr, &result);
-        listen.acceptsReply = [](const QByteArray &) { return false; };
+        listen.acceptsReply = [](const QByteArray &) {
+            return false;
+        };
         listen.silenceExpected = true;
         listen.collisionsExpected = true;
         listen.retryCount = 0;
