@@ -95,9 +95,10 @@ case "$command" in
             export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
         fi
         build "$dir" "${flags[@]}"
-        # The tests mostly wait (on timers and on the simulated servos' replies): two per core
-        # keep the cores busy. Those that must run alone say so (RUN_SERIAL).
-        ctest --test-dir "$dir" --output-on-failure --parallel "$(( $(nproc) * 2 ))" --timeout 600
+        # The tests mostly wait (on timers and on the simulated servos' replies: the cores are
+        # busy a sixth of the time with three per core). Those that must run alone say so
+        # (RUN_SERIAL).
+        ctest --test-dir "$dir" --output-on-failure --parallel "$(( $(nproc) * 3 ))" --timeout 600
         ;;
     build)
         install_missing

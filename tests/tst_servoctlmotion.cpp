@@ -158,6 +158,27 @@ private:
         return play;
     }
 
+    // The goal frames the log shows once it holds the frame that sets servo 1 to `lastGoal`
+    // `times` times (or after 5 s without): the simulator logs a frame a moment after it came,
+    // and servoctl exits as soon as it has sent the last one.
+    QVector<GoalFrame> goalFramesThrough(int lastGoal, int times = 1) const
+    {
+        QVector<GoalFrame> frames;
+        const bool logged = QTest::qWaitFor(
+            [&] {
+                frames = goalFrames(logPath());
+                return std::count_if(frames.cbegin(), frames.cend(),
+                                     [lastGoal](const GoalFrame &frame) {
+                                         return frame.sync && frame.goals.value(1) == lastGoal;
+                                     })
+                    >= times;
+            },
+            5000);
+        if (!logged)
+            qWarning("the log shows no frame setting servo 1 to %d %d time(s)", lastGoal, times);
+        return frames;
+    }
+
     void checkFramesInOrder(const QVector<GoalFrame> &play, int frames)
     {
         QCOMPARE(play.size(), frames);
@@ -313,7 +334,7 @@ private slots:
         const auto result =
             servoctl({QStringLiteral("replay"), file, QStringLiteral("--speed"), speed});
         QVERIFY2(result.exitCode == 0, qPrintable(result.err));
-        const QVector<GoalFrame> play = played(goalFrames(logPath()), 0, 10);
+        const QVector<GoalFrame> play = played(goalFramesThrough(2000 + 40 * 9), 0, 10);
         checkFramesInOrder(play, 10);
         const double measured = play.last().seconds - play.first().seconds;
         QVERIFY2(measured > span * 0.8 && measured < span * 1.5,
@@ -347,7 +368,7 @@ private slots:
         const QString file = writeRecording(QStringLiteral("ease.csv"), 3, 0.1);
         const auto result = servoctl(QStringList {QStringLiteral("replay"), file} + options);
         QVERIFY2(result.exitCode == 0, qPrintable(result.err));
-        const QVector<GoalFrame> goals = goalFrames(logPath());
+        const QVector<GoalFrame> goals = goalFramesThrough(2000 + 40 * 2);
         const QVector<GoalFrame> play = played(goals, 0, 3);
         checkFramesInOrder(play, 3);
         const auto firstSync = std::find_if(goals.cbegin(), goals.cend(),
@@ -368,7 +389,7 @@ private slots:
         const QJsonObject report = QJsonDocument::fromJson(result.out.toUtf8()).object();
         QCOMPARE(report[QStringLiteral("loops")].toInt(), 3);
         QCOMPARE(report[QStringLiteral("frames")].toInt(), 5);
-        const QVector<GoalFrame> frames = goalFrames(logPath());
+        const QVector<GoalFrame> frames = goalFramesThrough(2000 + 40 * 4, 3);
         int from = 0;
         for (int loop = 0; loop < 3; ++loop) {
             const QVector<GoalFrame> play = played(frames, from, 5);
