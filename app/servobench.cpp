@@ -1,4 +1,5 @@
 // servobench: the desktop application's entry point.
+#include "eventloops.h"
 #include "languagemenu.h"
 #include "mainwindow.h"
 #include "startupprobe.h"
@@ -12,6 +13,7 @@
 
 int main(int argc, char *argv[])
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads);
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("ServoBench"));
     QApplication::setOrganizationName(QStringLiteral("ServoBench"));

@@ -1,5 +1,6 @@
 // servoctl: the command-line tool's entry point.
 #include "servoctl.h"
+#include "eventloops.h"
 #include "translations.h"
 #include "version.h"
 
@@ -10,6 +11,7 @@
 
 int main(int argc, char *argv[])
 {
+    util::preferQtEventLoops(util::QtEventLoops::AllThreads);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("servoctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(SERVOBENCH_VERSION));

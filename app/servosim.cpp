@@ -1,4 +1,5 @@
 // servosim: simulated PTK servo or Feetech bus on a pseudo-terminal, for users and tests.
+#include "eventloops.h"
 #include "simcommands.h"
 #include "simulator.h"
 #include "translations.h"
@@ -18,6 +19,7 @@
 
 int main(int argc, char *argv[])
 {
+    util::preferQtEventLoops(util::QtEventLoops::AllThreads);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("servosim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(SERVOBENCH_VERSION));

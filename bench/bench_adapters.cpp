@@ -10,6 +10,7 @@
 #include "benchsupport.h"
 #include "busoperations.h"
 #include "demoservos.h"
+#include "eventloops.h"
 #include "feetechsession.h"
 #include "ptksession.h"
 #include "simulatorthread.h"
@@ -245,6 +246,7 @@ QJsonObject demoRun(int seconds)
 
 int main(int argc, char **argv)
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     const auto options = parse(QCoreApplication::arguments().mid(1));
     if (!options) {

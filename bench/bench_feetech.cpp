@@ -2,6 +2,7 @@
 // at one and at every baud rate, and full table reads, each next to its wire-time lower bound.
 #include "benchsupport.h"
 #include "busoperations.h"
+#include "eventloops.h"
 #include "feetechpacket.h"
 #include "feetechsession.h"
 #include "modeltable.h"
@@ -223,6 +224,7 @@ QJsonObject summarise(const QVector<ScanRun> &runs, double wireBoundMs, int miss
 // those, e.g. to profile one of them (table_read alone still scans once to find its servo).
 int main(int argc, char *argv[])
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     const QStringList groups = QCoreApplication::arguments().mid(1);
     const auto wanted = [&groups](const QString &group) {

@@ -4,6 +4,7 @@
 // The simulated servos run in a separate servosim process, so their work is not counted.
 #include "benchsupport.h"
 #include "busclient.h"
+#include "eventloops.h"
 #include "monitorpage.h"
 #include "processmemory.h"
 #include "telemetryplot.h"
@@ -86,6 +87,7 @@ struct Frames
 
 int main(int argc, char **argv)
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QApplication app(argc, argv);
     // Options: --rate HZ (default 50) and --all-quantities (all six instead of the page's
     // default three), e.g. --rate 100 --all-quantities for the heavier case.

@@ -2,6 +2,7 @@
 // samples per second as fast as the bus allows and at set rates, next to the wire limit.
 #include "benchsupport.h"
 #include "busoperations.h"
+#include "eventloops.h"
 #include "feetechsession.h"
 #include "simulatorthread.h"
 #include "telemetry.h"
@@ -47,6 +48,7 @@ QJsonObject describe(const bench::StreamRun &run, double wireLimitCyclesPerSecon
 
 int main(int argc, char **argv)
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     QTemporaryDir dir;
     sim::SimulatorOptions options = bench::stsBusOptions(dir, kServos, k1M);

@@ -1,6 +1,7 @@
 // Runs the PTK session against the simulated servo at 115200 baud and prints JSON figures: poll
 // interval against PTK's 50 ms, fast-mode sweep time against the wire limit, CPU per second.
 #include "benchsupport.h"
+#include "eventloops.h"
 #include "ptkframe.h"
 #include "ptkparameters.h"
 #include "ptksession.h"
@@ -63,6 +64,7 @@ void runFor(int seconds)
 
 int main(int argc, char *argv[])
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     QTemporaryDir dir;
     sim::SimulatorOptions options;

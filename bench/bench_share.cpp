@@ -4,6 +4,7 @@
 #include "benchsupport.h"
 #include "blockingclient.h"
 #include "busshare.h"
+#include "eventloops.h"
 #include "feetechdescription.h"
 #include "feetechpacket.h"
 #include "linksession.h"
@@ -89,6 +90,7 @@ QJsonObject describe(const LoopRun &run)
 
 int main(int argc, char **argv)
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     QTemporaryDir dir;
     sim::SimulatorThread simulator;

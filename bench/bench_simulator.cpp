@@ -1,4 +1,5 @@
 // Measures request/reply round trips through servosim's pty against the wire-time lower bound.
+#include "eventloops.h"
 #include "feetechpacket.h"
 #include "ptkframe.h"
 #include "simulatorthread.h"
@@ -54,6 +55,7 @@ QJsonObject measure(const QString &link, qint32 baud, const QByteArray &request,
 
 int main(int argc, char *argv[])
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     QTemporaryDir dir;
     QJsonObject result;

@@ -1,6 +1,7 @@
 // The fault soak as a benchmark program: 10,000 transactions per family (--transactions N; one
 // family with --family) with 10 % of each fault, printing the counts as JSON; exit 1 when a value
 // shown or a write's outcome was not what the simulator held.
+#include "eventloops.h"
 #include "faultsoak.h"
 
 #include <QCoreApplication>
@@ -12,6 +13,7 @@
 
 int main(int argc, char *argv[])
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     soak::SoakOptions options;
     QString family; // both when empty

@@ -3,6 +3,7 @@
 // threads, open files and memory after the first cycle and after the last.
 //
 //   bench_unplug [--cycles N] [--work NAME]...
+#include "eventloops.h"
 #include "unplugcycles.h"
 
 #include <QCoreApplication>
@@ -13,6 +14,7 @@
 
 int main(int argc, char **argv)
 {
+    util::preferQtEventLoops(util::QtEventLoops::WorkerThreads); // as servobench does
     QCoreApplication app(argc, argv);
     const QStringList arguments = QCoreApplication::arguments().mid(1);
     int cycles = 50;

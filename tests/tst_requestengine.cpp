@@ -124,6 +124,17 @@ private:
     }
 
 private slots:
+    void theSlowEndIsTheNinetyFifthPercentileInAnyOrder()
+    {
+        QCOMPARE(seriallink::slowEnd({}), std::nullopt);
+        std::deque<std::chrono::microseconds> times;
+        for (int i = 100; i >= 1; --i) // 100, 99, ... 1, interleaved front and back
+            i % 2 ? times.push_back(std::chrono::microseconds(i))
+                  : times.push_front(std::chrono::microseconds(i));
+        QCOMPARE(seriallink::slowEnd(times), std::chrono::microseconds(95));
+        QCOMPARE(seriallink::slowEnd({std::chrono::microseconds(7)}), std::chrono::microseconds(7));
+    }
+
     void commandsGoBeforeQueuedPolls()
     {
         ScriptedTransport transport;

@@ -3,6 +3,7 @@
 
 #include <QCoreApplication>
 #include <QLoggingCategory>
+#include <QPointer>
 
 #ifdef Q_OS_UNIX
 #include <poll.h>
@@ -27,8 +28,13 @@ SerialTransport::SerialTransport(QObject *parent)
 {
     connect(m_port, &QSerialPort::readyRead, this, [this] {
         const QByteArray bytes = m_port->readAll();
-        if (!bytes.isEmpty())
-            emit received(bytes);
+        if (bytes.isEmpty())
+            return;
+        const QPointer<SerialTransport> alive(this); // whoever hears it may close the link
+        m_handingOn = true;
+        emit received(bytes);
+        if (alive)
+            m_handingOn = false;
     });
     connect(m_port, &QSerialPort::bytesWritten, this, &Transport::bytesWritten);
     connect(m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onError);
@@ -88,8 +94,12 @@ QByteArray SerialTransport::discardInput()
 
 void SerialTransport::deliverPendingInput()
 {
-    // A zero wait only looks: it reads what the port holds and emits readyRead at once.
-    if (m_port->isOpen())
+    // A zero wait only looks: it reads what the port holds and emits readyRead at once. While
+    // the port's input is being handed on (an answer that ends its exchange, and the next
+    // request sent from there) the port has just been read to the end: a look would find
+    // only what came in the microseconds since, as it would a moment after, at the cost of a
+    // system call on the way to every request of a stream.
+    if (m_port->isOpen() && !m_handingOn)
         m_port->waitForReadyRead(0);
 }
 

@@ -36,6 +36,7 @@ private:
     void resumeReading();
 
     QSerialPort *m_port = nullptr;
+    bool m_handingOn = false; // emitting received() with all the port held
 };
 
 // One translated sentence per QSerialPort error, naming the port (style: errors in one place).
