@@ -23,6 +23,9 @@ public:
     QVector<QByteArray> written;
     QVector<QByteArray> answers; // one per write, in order; empty: silence
     QByteArray pendingInput; // what discardInput() finds
+    // The answer comes 2 ms after the write and before the port says the write has left (a
+    // device that answers at once, behind a busy event loop).
+    bool answerBeforeConfirming = false;
 
     bool isOpen() const override { return open; }
     qint32 baudRate() const override { return baud; }
@@ -30,6 +33,13 @@ public:
     {
         written.append(bytes);
         const QByteArray answer = answers.isEmpty() ? QByteArray() : answers.takeFirst();
+        if (answerBeforeConfirming) {
+            QTimer::singleShot(2, this, [this, bytes, answer] {
+                emit received(answer);
+                emit bytesWritten(bytes.size());
+            });
+            return;
+        }
         QTimer::singleShot(0, this, [this, bytes, answer] {
             emit bytesWritten(bytes.size());
             if (echo)
@@ -133,6 +143,26 @@ private slots:
                   : times.push_front(std::chrono::microseconds(i));
         QCOMPARE(seriallink::slowEnd(times), std::chrono::microseconds(95));
         QCOMPARE(seriallink::slowEnd({std::chrono::microseconds(7)}), std::chrono::microseconds(7));
+    }
+
+    void anAnswerBeforeTheWriteIsConfirmedCountsItsLatencyFromTheWrite()
+    {
+        ScriptedTransport transport;
+        transport.answerBeforeConfirming = true;
+        transport.answers = {reply(1), reply(2)};
+        auto subject = engine(transport);
+        for (quint8 command : {0x38, 0x39}) {
+            // Long enough that a latency counted from the engine's start or from the request
+            // before would show it.
+            QTest::qWait(300);
+            TransactionResult result = unfinished();
+            subject->submit(query(command, Transaction::Priority::Command, nullptr, &result));
+            QTRY_COMPARE(result.failure, Failure::None);
+            // 2 ms after the write, less the wire time of an echo not yet ruled out (0.9 ms).
+            QVERIFY2(result.latency >= std::chrono::microseconds(500)
+                         && result.latency < std::chrono::milliseconds(250),
+                     qPrintable(QString::number(result.latency.count())));
+        }
     }
 
     void commandsGoBeforeQueuedPolls()

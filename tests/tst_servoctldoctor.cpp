@@ -268,6 +268,23 @@ private slots:
                     .contains(QStringLiteral("12.0 V")));
     }
 
+    void voltageLimitsOfZeroAreNoLimits()
+    {
+        // An HLS servo with both limits 0, its check off, on a 12 V supply: nothing is wrong.
+        startBus({{1, QStringLiteral("STS3215"), k1M}, {2, QStringLiteral("HLS"), k1M}});
+        onBus([](sim::VirtualFeetechBus &bus) {
+            bus.setSupplyVoltage(12.0);
+            bus.servo(0).setValue(u"max_voltage", 140);
+            bus.servo(1).setValue(u"max_voltage", 0);
+            bus.servo(1).setValue(u"min_voltage", 0);
+            return true;
+        });
+        const auto result = run(QStringLiteral("doctor --json --expect 1,2"));
+        QCOMPARE(result.exitCode, 0);
+        QVERIFY2(!findingsByCode(result.out).contains(feetech::doctorcodes::kVoltage),
+                 qPrintable(result.out));
+    }
+
     void doctorSuspectsTwoServosAtOneIdFromGarbledReads()
     {
         startBus({{1, QStringLiteral("STS3215"), k1M},

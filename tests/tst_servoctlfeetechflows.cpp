@@ -108,7 +108,11 @@ private slots:
         const QJsonObject ping = objectOf(result.out);
         QCOMPARE(ping.value(QStringLiteral("servo"))[QStringLiteral("family")].toString(),
                  QStringLiteral("sms"));
-        QVERIFY(ping.value(QStringLiteral("latency_us")).toInteger() > 0);
+        // The latency is the time beyond what the wire needs: a device that answers the moment
+        // the request is complete (while an echo may still be expected) has none.
+        QVERIFY(ping.contains(QStringLiteral("latency_us")));
+        QVERIFY(ping.value(QStringLiteral("latency_us")).toInteger()
+                >= (testsupport::instantTestDevice() ? 0 : 1));
     }
 
     void traceShowsEveryFrameOnStderr()

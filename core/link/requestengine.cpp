@@ -271,6 +271,7 @@ void RequestEngine::send()
     if (!m_current->logFailuresOnly)
         log(Direction::Out, m_current->request);
     m_sentAtUs = m_clock.nsecsElapsed() / 1000;
+    m_writtenAtUs = m_sentAtUs; // until the port says the frame has left
     m_lastRequest = m_current->request;
     m_transport->write(m_current->request);
     publishCounters();
@@ -296,7 +297,11 @@ void RequestEngine::onBytesWritten(qint64 count)
     const int requestSize = int(m_current->request.size());
     const int echoSize = echoExpected() ? requestSize : 0;
     const quint64 generation = m_generation;
-    m_writtenAtUs = m_clock.nsecsElapsed() / 1000;
+    // Bytes already in show the frame had left before the port said so (a device that answers
+    // at once, a busy event loop): it left when it was written (send() said so), or the
+    // answer's latency would come out negative.
+    if (m_firstRawUs < 0)
+        m_writtenAtUs = m_clock.nsecsElapsed() / 1000;
     m_replyWireTime = wireTime(echoSize);
     if (!m_current->expectsReply() && echoKnown() && m_echoConsumed) {
         finish(Failure::None); // the echo was back before the port said the frame had left

@@ -235,16 +235,19 @@ void conditionFindings(const BusObservation &seen, QVector<DoctorFinding> &findi
             continue;
         }
         const bool flagged = condition.status & kVoltageErrorBit;
-        const bool outside = condition.voltage && condition.minVoltage && condition.maxVoltage
+        // Both limits 0 turn the servo's voltage check off (as the servos do): no voltage is
+        // outside them.
+        const bool limited = condition.minVoltage && condition.maxVoltage
+            && (*condition.minVoltage != 0 || *condition.maxVoltage != 0);
+        const bool outside = condition.voltage && limited
             && (*condition.voltage < *condition.minVoltage
                 || *condition.voltage > *condition.maxVoltage);
         if (!flagged && !outside)
             continue;
-        const QString limits = condition.minVoltage && condition.maxVoltage
-            ? BusDoctorTr::tr("%1–%2 V")
-                  .arg(*condition.minVoltage, 0, 'f', 1)
-                  .arg(*condition.maxVoltage, 0, 'f', 1)
-            : BusDoctorTr::tr("its limits");
+        const QString limits = limited ? BusDoctorTr::tr("%1–%2 V")
+                                             .arg(*condition.minVoltage, 0, 'f', 1)
+                                             .arg(*condition.maxVoltage, 0, 'f', 1)
+                                       : BusDoctorTr::tr("its limits");
         const QString measured = condition.voltage
             ? BusDoctorTr::tr("%1 V").arg(*condition.voltage, 0, 'f', 1)
             : BusDoctorTr::tr("an unknown voltage");
