@@ -1,6 +1,7 @@
 // Loading and validating the model table (resources/feetech/models.json), and what it says.
 #include "modeltable.h"
 
+#include "jsonfile.h"
 #include "registertabletr.h"
 #include "tablejson.h"
 
@@ -52,7 +53,7 @@ std::optional<ModelTable> ModelTable::fromJson(const QByteArray &json, const QSt
         const QJsonValue major = object.value(QLatin1String("major"));
         const QJsonValue minor = object.value(QLatin1String("minor"));
         model.name = object.value(QLatin1String("name")).toString();
-        if (!isWholeNumber(major) || !isWholeNumber(minor) || major.toInt() < 0
+        if (!util::isWholeNumber(major) || !util::isWholeNumber(minor) || major.toInt() < 0
             || major.toInt() > 255 || minor.toInt() < 0 || minor.toInt() > 255
             || model.name.isEmpty()) {
             problems.fail(

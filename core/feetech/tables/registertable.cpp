@@ -2,6 +2,7 @@
 // as people read them.
 #include "registertable.h"
 
+#include "jsonfile.h"
 #include "modeltable.h"
 #include "registertabletr.h"
 #include "tablejson.h"
@@ -91,11 +92,11 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
     }
     if (!kKeyPattern.match(reg.key).hasMatch())
         return fail(RegisterTableTr::tr("the key must be snake_case"));
-    if (!isWholeNumber(address) || address.toInt() < 0 || address.toInt() > 255)
+    if (!util::isWholeNumber(address) || address.toInt() < 0 || address.toInt() > 255)
         return fail(RegisterTableTr::tr("the address must be a whole number from 0 to 255"));
     reg.address = address.toInt();
     const QJsonValue size = object.value(QLatin1String("size"));
-    if (!isWholeNumber(size) || (size.toInt() != 1 && size.toInt() != 2))
+    if (!util::isWholeNumber(size) || (size.toInt() != 1 && size.toInt() != 2))
         return fail(RegisterTableTr::tr("the size must be 1 or 2 bytes"));
     reg.size = size.toInt();
     if (reg.end() > 256)
@@ -130,7 +131,7 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
 
     const QJsonValue signBit = object.value(QLatin1String("sign_bit"));
     if (!signBit.isUndefined() && !signBit.isNull()) {
-        if (!isWholeNumber(signBit) || signBit.toInt() < 1 || signBit.toInt() >= reg.size * 8)
+        if (!util::isWholeNumber(signBit) || signBit.toInt() < 1 || signBit.toInt() >= reg.size * 8)
             return fail(RegisterTableTr::tr("the sign bit must lie inside the register"));
         reg.signBit = signBit.toInt();
     }
@@ -141,7 +142,7 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
 
     const QJsonValue minimum = object.value(QLatin1String("min"));
     const QJsonValue maximum = object.value(QLatin1String("max"));
-    if (!isWholeNumber(minimum) || !isWholeNumber(maximum))
+    if (!util::isWholeNumber(minimum) || !util::isWholeNumber(maximum))
         return fail(RegisterTableTr::tr("min and max must be whole numbers"));
     reg.minimum = minimum.toInt();
     reg.maximum = maximum.toInt();
@@ -155,7 +156,7 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
     const QJsonValue defaultValue = object.value(QLatin1String("default"));
     if (!defaultValue.isUndefined() && !defaultValue.isNull()) {
         // min and max already fit the register, so this also checks the default fits it.
-        if (!isWholeNumber(defaultValue) || defaultValue.toInt() < reg.minimum
+        if (!util::isWholeNumber(defaultValue) || defaultValue.toInt() < reg.minimum
             || defaultValue.toInt() > reg.maximum)
             return fail(RegisterTableTr::tr("the default does not fit the register"));
         reg.defaultValue = defaultValue.toInt();
@@ -165,7 +166,7 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
         const QJsonObject choice = entry.toObject();
         const QJsonValue value = choice.value(QLatin1String("value"));
         const QString label = choice.value(QLatin1String("label")).toString();
-        if (!isWholeNumber(value) || !fits(value.toInt()) || label.isEmpty())
+        if (!util::isWholeNumber(value) || !fits(value.toInt()) || label.isEmpty())
             return fail(
                 RegisterTableTr::tr("a choice needs a value that fits the register and a label"));
         reg.choices.append({value.toInt(), label});
@@ -174,7 +175,7 @@ bool parseRegister(const QJsonObject &object, ByteOrder order, Register &reg,
         const QJsonObject bit = entry.toObject();
         const QJsonValue index = bit.value(QLatin1String("bit"));
         const QString label = bit.value(QLatin1String("label")).toString();
-        if (!isWholeNumber(index) || index.toInt() < 0 || index.toInt() >= reg.size * 8
+        if (!util::isWholeNumber(index) || index.toInt() < 0 || index.toInt() >= reg.size * 8
             || label.isEmpty())
             return fail(
                 RegisterTableTr::tr("a bit needs an index inside the register and a label"));

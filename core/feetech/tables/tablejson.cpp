@@ -1,12 +1,10 @@
-// Reading the tables' JSON files: the root object checked, numbers, the built-in resources.
+// Reading the tables' JSON files: the root object checked, the built-in resources.
 #include "tablejson.h"
 #include "registertabletr.h"
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QJsonDocument>
-
-#include <cmath>
 
 namespace feetech {
 
@@ -30,12 +28,6 @@ std::optional<QJsonObject> parseTableObject(const QByteArray &json, TableProblem
         return std::nullopt;
     }
     return root;
-}
-
-bool isWholeNumber(const QJsonValue &value)
-{
-    return value.isDouble() && std::floor(value.toDouble()) == value.toDouble()
-        && std::abs(value.toDouble()) < 1e9;
 }
 
 QByteArray readBuiltInTable(const QString &path)

@@ -1,5 +1,5 @@
 // What the register and model tables' loaders share: the first problem found, the document's
-// root, whole numbers, the built-in files.
+// root, the built-in files.
 #pragma once
 
 #include <QByteArray>
@@ -35,8 +35,6 @@ private:
 
 // The root object of a table file: JSON, an object, "format" 1. Nothing, and the problem, else.
 std::optional<QJsonObject> parseTableObject(const QByteArray &json, TableProblems &problems);
-// A JSON number without a fraction, small enough for any register.
-bool isWholeNumber(const QJsonValue &value);
 // A table file built into the program; one missing is a broken build, and fatal.
 QByteArray readBuiltInTable(const QString &path);
 
