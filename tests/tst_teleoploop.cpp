@@ -121,6 +121,20 @@ private slots:
         QVERIFY(!loop.isWriting());
         QCOMPARE(loop.recording().frames.size(), 1);
     }
+
+    void aCycleThatComesAfterTheStopIsNotWritten()
+    {
+        // The leader's stream hands over its last batch as it stops: those goals must not go
+        // out after whatever the stop itself writes (torque off with --release).
+        feetech::TeleopLoop loop = makeLoop(720);
+        QVERIFY(loop.takeLeaderCycle({position(11, 2048), position(12, 2048)}));
+        loop.stop();
+        QVERIFY(!loop.takeLeaderCycle({position(11, 4095), position(12, 2048)}));
+        QVERIFY(!loop.takeWriteFinished());
+        QVERIFY(!loop.isWriting());
+        QVERIFY(!loop.takeLeaderCycle({position(11, 4095), position(12, 2048)}));
+        QCOMPARE(loop.recording().frames.size(), 1);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestTeleopLoop)

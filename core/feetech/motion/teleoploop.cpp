@@ -33,6 +33,8 @@ TeleopLoop::TeleopLoop(const TeleopMapping &mapping, const QVector<ServoInfo> &f
 
 std::optional<BusOperation> TeleopLoop::takeLeaderCycle(const QVector<FeedbackSample> &samples)
 {
+    if (m_stopped)
+        return std::nullopt; // a cycle the leader's stream handed over as it stopped
     QVector<qint32> targets = m_standing;
     int seen = 0;
     for (const FeedbackSample &sample : samples) {
@@ -73,6 +75,7 @@ std::optional<BusOperation> TeleopLoop::takeWriteFinished()
 
 void TeleopLoop::stop()
 {
+    m_stopped = true;
     m_waiting.reset();
 }
 

@@ -33,7 +33,8 @@ public:
     std::optional<BusOperation> takeLeaderCycle(const QVector<FeedbackSample> &samples);
     // The SYNC WRITE on the wire has ended: the write of the goals that waited, if any.
     std::optional<BusOperation> takeWriteFinished();
-    // Nothing more is sent: the goals waiting are dropped (a write on the wire still ends).
+    // Nothing more is sent: the goals waiting are dropped, and so are cycles that come later
+    // (a write on the wire still ends).
     void stop();
 
     bool isWriting() const { return m_writing; }
@@ -61,6 +62,7 @@ private:
     std::optional<QVector<qint32>> m_waiting;
     qint64 m_waitingSampleUs = 0;
     bool m_writing = false;
+    bool m_stopped = false;
     qint64 m_writes = 0;
     qint64 m_writeSampleUs = 0;
     QVector<qint64> m_latencies;
