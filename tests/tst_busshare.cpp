@@ -8,13 +8,17 @@
 #include "porttransport.h"
 #include "servoctlrun.h"
 
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QProcess>
+#include <QScopeGuard>
 #include <QtTest>
 
 #include <future>
 #include <thread>
+
+#include <unistd.h>
 
 namespace {
 
@@ -340,7 +344,8 @@ private slots:
 
     void riskyWritesOfTheProgramRaiseAlerts()
     {
-        startShare(busOptions(testsupport::servosAt(k1M, {u"STS3215"})));
+        const QString recording = m_dir.filePath(QStringLiteral("alerts.log"));
+        startShare(busOptions(testsupport::servosAt(k1M, {u"STS3215"})), false, recording);
         asProgram([path = programPath()] {
             BlockingClient program;
             if (!program.open(path, k1M))
@@ -359,6 +364,20 @@ private slots:
         QVERIFY2(hasAlert(QStringLiteral("multi-turn"), 1), qPrintable(alertCodes().join(u' ')));
         // Left unlocked: said once its time is up, by the share's own clock.
         QTRY_VERIFY_WITH_TIMEOUT(hasAlert(QStringLiteral("eeprom-unlocked"), 1), 8000);
+        // Every alert is in the recording, the one the clock raised too.
+        m_share->stop();
+        const auto frames = share::ShareRecording::load(recording, nullptr);
+        QVERIFY(frames.has_value());
+        QStringList notes;
+        for (const share::RecordedFrame &frame : *frames)
+            notes.append(frame.note);
+        for (const char *code : {"alert torque-jump 1", "alert eeprom-unlocked 1"}) {
+            QVERIFY2(std::any_of(notes.cbegin(), notes.cend(),
+                                 [code](const QString &note) {
+                                     return note.startsWith(QLatin1String(code));
+                                 }),
+                     qPrintable(notes.join(u'|')));
+        }
     }
 
     void aRecordingIsExplainedFrameByFrameByDecodeLog()
@@ -367,9 +386,12 @@ private slots:
         startShare(busOptions(testsupport::servosAt(k1M, {u"STS3215"})), false, recording);
         asProgram([path = programPath()] {
             BlockingClient program;
-            return program.open(path, k1M) && program.ask(feetech::read(1, 56, 2), 1);
+            return program.open(path, k1M) && program.ask(feetech::read(1, 56, 2), 1)
+                && program.ask(feetech::read(1, 3, 2), 1) // the model: now bytes have keys
+                && program.ask(feetech::write(1, 55, QByteArray(1, '\0')), 1)
+                && program.ask(feetech::write(1, 55, QByteArray(1, '\1')), 1);
         });
-        QTRY_COMPARE(programTransactions(feetech::Instruction::Read).size(), 1);
+        QTRY_COMPARE(programTransactions(feetech::Instruction::Write).size(), 2);
         m_share->stop();
         const auto text = testsupport::runServoctl(
             {QStringLiteral("decode"), QStringLiteral("--family"), QStringLiteral("feetech"),
@@ -379,14 +401,23 @@ private slots:
                  qPrintable(text.out));
         QVERIFY2(text.out.contains(QStringLiteral("READ ID 1 address 56")), qPrintable(text.out));
         QVERIFY2(text.out.contains(QStringLiteral("status from ID 1")), qPrintable(text.out));
+        // By key and value, as the share's JSON names them, once the model is known.
+        QVERIFY2(text.out.contains(QStringLiteral("ID 1: lock = 0")), qPrintable(text.out));
+        QVERIFY2(text.out.contains(QStringLiteral("ID 1: model_major = 9, model_minor = 3")),
+                 qPrintable(text.out));
         const auto json =
             testsupport::runServoctl({QStringLiteral("--json"), QStringLiteral("decode"),
                                       QStringLiteral("--log"), recording});
         QCOMPARE(json.exitCode, 0);
         const QJsonArray frames = QJsonDocument::fromJson(json.out.toUtf8()).array();
-        QCOMPARE(frames.size(), 2);
+        QCOMPARE(frames.size(), 8);
         QCOMPARE(frames.at(0)[QStringLiteral("direction")].toString(), QStringLiteral("program"));
         QCOMPARE(frames.at(1)[QStringLiteral("direction")].toString(), QStringLiteral("bus"));
+        QVERIFY(!frames.at(1).toObject().contains(QStringLiteral("registers"))); // model unknown
+        const QJsonObject unlock = frames.at(4)[QStringLiteral("registers")][0].toObject();
+        QCOMPARE(unlock[QStringLiteral("key")].toString(), QStringLiteral("lock"));
+        QCOMPARE(unlock[QStringLiteral("value")].toInt(), 0);
+        QCOMPARE(unlock[QStringLiteral("access")].toString(), QStringLiteral("write"));
         // Something that is no recording is refused with the reason, exit 2.
         const QString other = writeTestFile(QStringLiteral("other.log"), "0.1 program FF FF\n");
         const auto refused =
@@ -443,6 +474,73 @@ private slots:
         QVERIFY2(summary.contains(QStringLiteral("1 frame(s) (6 bytes) from the program")),
                  qPrintable(summary));
         QVERIFY(!QFileInfo::exists(programPath())); // the link is gone with the share
+    }
+
+    void servoctlShareAnswersTheProgramWhileNobodyReadsItsOutput()
+    {
+        QString error;
+        QVERIFY2(
+            startSimulator(
+                busOptions(testsupport::servosAt(
+                    k1M, {u"STS3215", u"STS3215", u"STS3215", u"STS3215", u"STS3215", u"STS3215"})),
+                &error),
+            qPrintable(error));
+        // servoctl's stdout is a pipe this test does not read: a paused pager.
+        int pipeEnds[2];
+        QCOMPARE(::pipe(pipeEnds), 0);
+        const auto closePipe = qScopeGuard([&] {
+            ::close(pipeEnds[0]);
+            ::close(pipeEnds[1]);
+        });
+        QProcess servoctl;
+        servoctl.setStandardOutputFile(
+            QStringLiteral("/proc/%1/fd/%2").arg(::getpid()).arg(pipeEnds[1]));
+        servoctl.start(QStringLiteral(SERVOBENCH_BINARY_DIR "/app/servoctl"),
+                       {QStringLiteral("--port"), m_simulator->linkPath(), QStringLiteral("--json"),
+                        QStringLiteral("share"), QStringLiteral("--link"), programPath()});
+        QVERIFY(servoctl.waitForStarted(10000));
+        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(programPath()).isSymLink(), 10000);
+        struct Loop
+        {
+            int exchanges = 0;
+            int unanswered = 0;
+            int foreign = 0; // answers that belong to another request
+        };
+        // Two requests in turn whose answers differ: an answer to the one before is seen.
+        const Loop loop = asProgram([path = programPath()] {
+            Loop done;
+            BlockingClient program;
+            if (!program.open(path, k1M))
+                return done;
+            const QVector<quint8> ids {1, 2, 3, 4, 5, 6};
+            QElapsedTimer clock;
+            clock.start();
+            while (clock.elapsed() < 3000) {
+                const QVector<QByteArray> feedback =
+                    program.exchange(feetech::syncRead(56, 8, ids), int(ids.size()));
+                const quint8 id = quint8(1 + done.exchanges % 6);
+                const std::optional<QByteArray> model = program.ask(feetech::read(id, 3, 2), id);
+                done.exchanges += 2;
+                done.unanswered += (feedback.size() < ids.size()) + !model.has_value();
+                for (qsizetype i = 0; i < feedback.size(); ++i) {
+                    if (quint8(feedback.at(i).at(2)) != ids.value(i) || feedback.at(i).size() != 14)
+                        ++done.foreign;
+                }
+                if (model && model->size() != 8)
+                    ++done.foreign;
+            }
+            done.foreign += program.unexpectedFrames();
+            return done;
+        });
+        QVERIFY2(loop.exchanges > 200, qPrintable(QString::number(loop.exchanges)));
+        QCOMPARE(loop.unanswered, 0);
+        QCOMPARE(loop.foreign, 0);
+        // Stalled on its output, it still ends at once on SIGTERM, and says what it dropped.
+        servoctl.terminate();
+        QVERIFY(servoctl.waitForFinished(5000));
+        QCOMPARE(servoctl.exitCode(), 0);
+        const QString summary = QString::fromUtf8(servoctl.readAllStandardError());
+        QVERIFY2(summary.contains(QStringLiteral("line(s) nobody read")), qPrintable(summary));
     }
 
     void servoctlShareRefusesWhatCannotWork()

@@ -1,5 +1,6 @@
 // Tests servoctl's offline commands (decode, packet) in-process: output and exit codes.
 #include "hex.h"
+#include "lineoutlet.h"
 #include "servoctlrun.h"
 #include "specvectors.h"
 
@@ -7,6 +8,11 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QtTest>
+
+#include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace {
 
@@ -25,6 +31,77 @@ class TestServoctl : public QObject
     Q_OBJECT
 
 private slots:
+    // servoctl's stdout and stderr: a stream never waits for a reader who stopped reading.
+    void anOutletThatMayDropNeverWaitsAndSaysWhatItDroppedOnceReadingResumes()
+    {
+        int ends[2];
+        QCOMPARE(::pipe(ends), 0);
+        QCOMPARE(::fcntl(ends[0], F_SETFL, O_NONBLOCK), 0);
+        const auto closeRead = qScopeGuard([&] { ::close(ends[0]); });
+        const auto readAll = [&] {
+            QByteArray all;
+            char buffer[65536];
+            for (ssize_t got; (got = ::read(ends[0], buffer, sizeof buffer)) > 0;)
+                all.append(buffer, got);
+            return all;
+        };
+        {
+            util::LineOutlet outlet(ends[1], 4096);
+            outlet.setWhenFull(util::LineOutlet::WhenFull::Drop);
+            outlet.setDroppedLine([](qint64 count) -> QByteArray {
+                return "{\"dropped\":" + QByteArray::number(count) + "}\n";
+            });
+            QTextStream out(&outlet);
+            // Nobody reads: far more than the pipe and the queue hold goes without waiting.
+            const QByteArray line(99, 'x');
+            for (int i = 0; i < 10000; ++i)
+                out << line << '\n' << Qt::flush;
+            QVERIFY(outlet.droppedLines() > 9000);
+            const qint64 dropped = outlet.droppedLines();
+            QByteArray read;
+            QVERIFY(QTest::qWaitFor(
+                [&] {
+                    read += readAll();
+                    return outlet.drain(std::chrono::milliseconds(0));
+                },
+                5000));
+            read += readAll();
+            out << "after\n" << Qt::flush;
+            QVERIFY(outlet.drain());
+            read += readAll();
+            const QList<QByteArray> lines = read.trimmed().split('\n');
+            QCOMPARE(lines.size(), 10000 - dropped + 2);
+            QCOMPARE(lines.at(lines.size() - 2),
+                     "{\"dropped\":" + QByteArray::number(dropped) + '}');
+            QCOMPARE(lines.last(), QByteArray("after"));
+        }
+        ::close(ends[1]);
+    }
+
+    void anOutletThatWaitsLosesNothing()
+    {
+        int ends[2];
+        QCOMPARE(::pipe(ends), 0);
+        QByteArray read;
+        std::thread reader([&] {
+            char buffer[4096];
+            for (ssize_t got; (got = ::read(ends[0], buffer, sizeof buffer)) > 0;)
+                read.append(buffer, got);
+        });
+        {
+            util::LineOutlet outlet(ends[1], 4096);
+            QTextStream out(&outlet);
+            for (int i = 0; i < 20000; ++i)
+                out << i << '\n';
+        } // the outlet writes everything before it goes
+        ::close(ends[1]);
+        reader.join();
+        ::close(ends[0]);
+        const QList<QByteArray> lines = read.trimmed().split('\n');
+        QCOMPARE(lines.size(), 20000);
+        QCOMPARE(lines.last(), QByteArray("19999"));
+    }
+
     void ptkQueriesReproduceTheSpecFrames()
     {
         for (const auto &exchange : specvectors::kPtkExchanges) {

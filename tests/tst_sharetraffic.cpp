@@ -1,5 +1,6 @@
 // The share's reading of traffic without a bus: pairing with echo and time-outs, what servos
 // show, and each alert's condition.
+#include "busgate.h"
 #include "feetechpacket.h"
 #include "observedservos.h"
 #include "sharealerts.h"
@@ -15,6 +16,19 @@ using share::TransactionTracker;
 namespace {
 
 constexpr qint32 k1M = 1000000;
+
+// A port that keeps what is written to it and answers only when told.
+class QuietPort final : public seriallink::Transport
+{
+public:
+    QVector<QByteArray> written;
+
+    bool isOpen() const override { return true; }
+    qint32 baudRate() const override { return k1M; }
+    void write(const QByteArray &bytes) override { written.append(bytes); }
+    QByteArray discardInput() override { return {}; }
+    void answer(const QByteArray &bytes) { emit received(bytes); }
+};
 
 seriallink::StreamItem frame(const QByteArray &bytes)
 {
@@ -228,6 +242,27 @@ private slots:
         feed(servos, alerts,
              {transaction(feetech::write(1, 55, QByteArray(1, char(1))), {ack}, 9000)});
         QVERIFY(alerts.tick(100000000).isEmpty());
+    }
+
+    void requestsTheProgramGaveUpOnWhileAnOwnRequestWasAnsweredAreNotSent()
+    {
+        QuietPort port;
+        share::BusGate gate(port);
+        const QByteArray own = feetech::read(1, 56, 2);
+        gate.write(own);
+        QCOMPARE(port.written, QVector<QByteArray> {own});
+        // Meanwhile the program asks, gives up waiting, and asks again: only the last one is
+        // still waited for, and the answer to the first would reach it as the answer to that.
+        const QByteArray gaveUp = feetech::read(2, 3, 2);
+        const QByteArray unlocked = feetech::syncWrite(55, 1, {{3, QByteArray(1, '\0')}}).value();
+        const QByteArray waited = feetech::read(3, 3, 2);
+        gate.fromProgram(gaveUp + unlocked);
+        gate.fromProgram(waited.left(3));
+        gate.fromProgram(waited.mid(3));
+        QCOMPARE(port.written.size(), 1);
+        port.answer(QByteArray::fromHex("ffff0104000008f2"));
+        QCOMPARE(port.written, (QVector<QByteArray> {own, unlocked + waited}));
+        QCOMPARE(gate.counters().givenUp, 1);
     }
 };
 

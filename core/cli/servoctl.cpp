@@ -8,6 +8,7 @@
 #include "feetechdescription.h"
 #include "feetechpacket.h"
 #include "hex.h"
+#include "observedservos.h"
 #include "ptkcommands.h"
 #include "ptkparameters.h"
 #include "servoctltr.h"
@@ -353,10 +354,13 @@ private:
             m_err.flush();
             return ExitUsage;
         }
+        const QVector<QVector<share::RegisterAccess>> keyed = registersByFrame(*frames);
         QByteArray programRequest;
         QByteArray ownRequest;
         QJsonArray array;
-        for (const share::RecordedFrame &frame : *frames) {
+        for (qsizetype index = 0; index < frames->size(); ++index) {
+            const share::RecordedFrame &frame = frames->at(index);
+            const QVector<share::RegisterAccess> &registers = keyed.at(index);
             QString meaning = frame.note;
             switch (frame.direction) {
             case share::FrameDirection::FromProgram:
@@ -384,18 +388,88 @@ private:
                                     {QStringLiteral("summary"), meaning}};
                 if (frame.direction != share::FrameDirection::Note)
                     object.insert(QStringLiteral("hex"), util::toHex(frame.bytes));
+                if (!registers.isEmpty())
+                    object.insert(QStringLiteral("registers"), share::registersToJson(registers));
                 array.append(object);
             } else if (frame.direction == share::FrameDirection::Note) {
                 m_out << time << ' ' << direction << "  " << meaning << '\n';
             } else {
                 m_out << time << ' ' << direction << "  " << util::toHex(frame.bytes) << '\n'
                       << "    " << meaning << '\n';
+                if (!registers.isEmpty())
+                    m_out << "    " << describeRegisters(registers) << '\n';
             }
         }
         if (m_json)
             printJson(array);
         m_out.flush();
         return ExitOk;
+    }
+
+    // What each frame of a recording read or wrote, by key, as the share named it while it
+    // ran: the frames replayed, transaction by transaction, through what it learns of servos.
+    static QVector<QVector<share::RegisterAccess>>
+    registersByFrame(const QVector<share::RecordedFrame> &frames)
+    {
+        QVector<QVector<share::RegisterAccess>> keyed(frames.size());
+        share::ObservedServos servos;
+        struct Open
+        {
+            qsizetype request = -1;
+            share::SharedTransaction transaction;
+            QHash<quint8, qsizetype> replies; // a reply's frame by the ID that sent it
+        };
+        Open program;
+        Open own;
+        const auto finish = [&](Open &open) {
+            if (open.request < 0)
+                return;
+            servos.learn(open.transaction, 0);
+            for (const share::RegisterAccess &access : std::as_const(open.transaction.registers)) {
+                const qsizetype at =
+                    access.written ? open.request : open.replies.value(access.id, -1);
+                if (at >= 0)
+                    keyed[at].append(access);
+            }
+            open = {};
+        };
+        for (qsizetype index = 0; index < frames.size(); ++index) {
+            const share::RecordedFrame &frame = frames.at(index);
+            const bool ownSide = frame.direction == share::FrameDirection::Own
+                || frame.direction == share::FrameDirection::OwnAnswer;
+            Open &open = ownSide ? own : program;
+            const bool request = frame.direction == share::FrameDirection::FromProgram
+                || frame.direction == share::FrameDirection::Own;
+            if (frame.direction == share::FrameDirection::Note || frame.bytes.size() < 6)
+                continue;
+            if (request) {
+                finish(open);
+                open.request = index;
+                open.transaction.request = frame.bytes;
+            } else if (open.request >= 0 && frame.bytes != open.transaction.request) {
+                open.transaction.replies.append(frame.bytes); // an echo is no answer
+                open.replies.insert(quint8(frame.bytes.at(2)), index);
+            }
+        }
+        finish(program);
+        finish(own);
+        return keyed;
+    }
+
+    // "ID 1: lock = 0, torque_enable = 1"; an ID's registers together, IDs in order met.
+    static QString describeRegisters(const QVector<share::RegisterAccess> &registers)
+    {
+        QStringList parts;
+        quint8 id = 0;
+        for (const share::RegisterAccess &access : registers) {
+            const QString value = QStringLiteral("%1 = %2").arg(access.key).arg(access.value);
+            if (parts.isEmpty() || access.id != id)
+                parts.append(ServoctlTr::tr("ID %1: %2").arg(access.id).arg(value));
+            else
+                parts.last() += QStringLiteral(", ") + value;
+            id = access.id;
+        }
+        return parts.join(QStringLiteral("; "));
     }
 
     int printFrames(const QVector<std::pair<QString, QByteArray>> &frames)

@@ -98,10 +98,14 @@ int runShareCommand(const Arguments &args, const QStringList &rest, const Output
     });
 
     QEventLoop loop;
+    streamWithoutWaiting(output);
     runUntilInterrupted(loop, duration);
-    const QString summary = share.summary();
+    QString summary = share.summary();
     share.stop();
     link.close();
+    const QString dropped = droppedLinesNote(output);
+    if (!dropped.isEmpty())
+        summary += u' ' + ShareCommandTr::tr("Output: %1.").arg(dropped);
     output.err << summary << '\n';
     output.err.flush();
     return ExitOk;

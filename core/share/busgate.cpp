@@ -145,13 +145,37 @@ void BusGate::pump()
     if (m_ownActive && !m_own.isOutstanding()) {
         m_ownActive = false;
         m_program.setEchoes(m_own.echoes());
-        const QByteArray held = std::exchange(m_held, {});
+        const QByteArray held = withoutGivenUp(std::exchange(m_held, {}));
         if (!held.isEmpty())
             forwardProgramBytes(held);
     }
     if (!m_ownActive && !m_ownWaiting.isEmpty() && !programBusy())
         startOwnRequest();
     armDeadline();
+}
+
+QByteArray BusGate::withoutGivenUp(const QByteArray &held)
+{
+    // Held bytes start at a frame boundary: an own request goes only when the program is not
+    // in the middle of one.
+    seriallink::StreamFramer framer(m_format,
+                                    seriallink::StreamFramer::BadChecksumPolicy::ConsumeFrame);
+    framer.append(held);
+    QVector<seriallink::StreamItem> items;
+    while (std::optional<seriallink::StreamItem> item = framer.next())
+        items.append(std::move(*item));
+    const QByteArray unfinished = held.right(framer.pendingBytes());
+    QByteArray kept;
+    for (qsizetype i = 0; i < items.size(); ++i) {
+        const bool followed = i + 1 < items.size() || !unfinished.isEmpty();
+        if (followed && items.at(i).kind == seriallink::StreamItem::Kind::Frame
+            && TransactionTracker::isAnswered(items.at(i).bytes)) {
+            ++m_counters.givenUp;
+            continue;
+        }
+        kept += items.at(i).bytes;
+    }
+    return kept + unfinished;
 }
 
 void BusGate::startOwnRequest()

@@ -28,12 +28,17 @@ struct ShareCounters
     qint64 ownTransactions = 0; // ServoBench's own requests (the watch's reads)
     qint64 heldBytes = 0; // the program's bytes that waited for an own request to be answered
     qint64 bytesWhileAway = 0; // the program's bytes sent while the adapter was gone: lost
+    // The program's requests that waited for an own request while it sent another: it had
+    // given up on them, so they were not sent (their answers would have reached it as answers
+    // to the next).
+    qint64 givenUp = 0;
 };
 
 // The request engine talks to the gate as its transport: an own request waits until no
 // request of the program is outstanding and the program is not in the middle of a frame, then
 // goes alone; bytes the program sends meanwhile wait, in order, until that request is answered
-// or its time is up, and go on then. Everything else passes at once, byte for byte, the
+// or its time is up, and go on then, less any request the program sent another after (it no
+// longer waits for that one's answer). Everything else passes at once, byte for byte, the
 // adapter's echo and garbage included. Lives in the thread of the port.
 class BusGate : public seriallink::Transport
 {
@@ -75,6 +80,8 @@ private:
     void onPortBytes(const QByteArray &bytes);
     void forwardProgramBytes(const QByteArray &bytes);
     void startOwnRequest();
+    // The held bytes less every request that a later one followed while they waited.
+    QByteArray withoutGivenUp(const QByteArray &held);
     // Starts an own request at a boundary, lets held bytes go once it is answered.
     void pump();
     void armDeadline();

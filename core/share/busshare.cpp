@@ -35,7 +35,7 @@ BusShare::BusShare(seriallink::LinkSession &link, QObject *parent)
     m_ticks.setInterval(kTickInterval);
     connect(&m_ticks, &QTimer::timeout, this, [this] {
         for (const ShareAlert &alert : m_alerts.tick(m_gate ? m_gate->nowUs() : 0))
-            emit alertRaised(alert);
+            raise(alert);
     });
     connect(&m_link, &seriallink::LinkSession::statusChanged, this, &BusShare::onLinkStatus);
 }
@@ -79,7 +79,7 @@ QString BusShare::start(const ShareOptions &options)
     connect(m_gate, &BusGate::toProgram, m_terminal, &seriallink::PseudoTerminal::write);
     connect(m_gate, &BusGate::transactionEnded, this, &BusShare::onTransaction);
     connect(m_gate, &BusGate::framePassed, this, [this](const RecordedFrame &frame) {
-        m_recording.write(frame);
+        record(frame);
         if (frame.direction == FrameDirection::ToProgram)
             m_watch->noteActivity();
         emit framePassed(frame);
@@ -201,8 +201,26 @@ void BusShare::onLinkStatus()
 
 void BusShare::note(const QString &text)
 {
-    m_recording.write({m_gate ? m_gate->nowUs() : 0, FrameDirection::Note, {}, text});
+    record({m_gate ? m_gate->nowUs() : 0, FrameDirection::Note, {}, text});
     emit noted(text);
+}
+
+void BusShare::record(const RecordedFrame &frame)
+{
+    if (m_recording.write(frame))
+        return;
+    note(BusShareTr::tr("The recording stopped after %1 line(s): %2. The share goes on.")
+             .arg(m_recording.framesWritten())
+             .arg(m_recording.error()));
+}
+
+void BusShare::raise(const ShareAlert &alert)
+{
+    record({alert.timeUs,
+            FrameDirection::Note,
+            {},
+            QStringLiteral("alert %1 %2: %3").arg(alert.code).arg(alert.id).arg(alert.message)});
+    emit alertRaised(alert);
 }
 
 void BusShare::onTransaction(const SharedTransaction &ended)
@@ -234,14 +252,8 @@ void BusShare::onTransaction(const SharedTransaction &ended)
     }
     const QVector<ShareAlert> alerts = m_alerts.inspect(transaction, m_servos);
     emit transactionEnded(transaction);
-    for (const ShareAlert &alert : alerts) {
-        m_recording.write(
-            {alert.timeUs,
-             FrameDirection::Note,
-             {},
-             QStringLiteral("alert %1 %2: %3").arg(alert.code).arg(alert.id).arg(alert.message)});
-        emit alertRaised(alert);
-    }
+    for (const ShareAlert &alert : alerts)
+        raise(alert);
 }
 
 void BusShare::announceServos()
@@ -266,7 +278,8 @@ QString BusShare::summary() const
     const ShareCounters &count = counters();
     return BusShareTr::tr(
                "%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; "
-               "%5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s).")
+               "%5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s), "
+               "%9 request(s) not sent because the program had sent the next.")
         .arg(count.framesFromProgram)
         .arg(count.bytesFromProgram)
         .arg(count.framesToProgram)
@@ -274,7 +287,8 @@ QString BusShare::summary() const
         .arg(count.unanswered)
         .arg(count.garbledBytes)
         .arg(m_alerts.raisedCount())
-        .arg(watchReads());
+        .arg(watchReads())
+        .arg(count.givenUp);
 }
 
 } // namespace share

@@ -87,6 +87,9 @@ private:
     void followProgramRate();
     void onLinkStatus();
     void note(const QString &text);
+    void raise(const ShareAlert &alert);
+    // Into the recording; a recording the file refuses ends with a note, and the share goes on.
+    void record(const RecordedFrame &frame);
     void announceServos();
 
     seriallink::LinkSession &m_link;

@@ -78,18 +78,24 @@ QJsonObject SharedTransaction::toJson() const
         json.insert(QStringLiteral("garbled_bytes"), garbledBytes);
     if (own)
         json.insert(QStringLiteral("own"), true);
-    QJsonArray meaning;
+    const QJsonArray meaning = registersToJson(registers);
+    if (!meaning.isEmpty())
+        json.insert(QStringLiteral("registers"), meaning);
+    return json;
+}
+
+QJsonArray registersToJson(const QVector<RegisterAccess> &registers)
+{
+    QJsonArray array;
     for (const RegisterAccess &access : registers) {
-        meaning.append(
+        array.append(
             QJsonObject {{QStringLiteral("id"), int(access.id)},
                          {QStringLiteral("key"), access.key},
                          {QStringLiteral("value"), access.value},
                          {QStringLiteral("access"),
                           access.written ? QStringLiteral("write") : QStringLiteral("read")}});
     }
-    if (!meaning.isEmpty())
-        json.insert(QStringLiteral("registers"), meaning);
-    return json;
+    return array;
 }
 
 } // namespace share

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QJsonArray>
 #include <QJsonObject>
 #include <QMetaType>
 #include <QString>
@@ -19,6 +20,9 @@ struct RegisterAccess
     qint32 value = 0;
     bool written = false; // the request wrote it; otherwise a reply reported it
 };
+
+// The registers as JSON objects: id, key, value, access ("read" or "write").
+QJsonArray registersToJson(const QVector<RegisterAccess> &registers);
 
 struct SharedTransaction
 {

@@ -18,6 +18,8 @@ struct ShareRecordingTr
 
 const char kMagic[] = "# servobench share recording 1";
 constexpr qint64 kLargestRecording = qint64(1) << 30;
+// Longer than any share runs (about 31 years), and far inside what microseconds in 64 bits hold.
+constexpr double kLatestSecond = 1e9;
 
 std::optional<FrameDirection> directionFromKey(QStringView key)
 {
@@ -57,6 +59,7 @@ util::FileError ShareRecording::open(const QString &path, const QString &port, q
         return util::FileError(util::FileError::Code::CannotWrite, m_file.errorString())
             .inFile(path, util::FileError::Action::Recording);
     m_frames = 0;
+    m_error.clear();
     const QByteArray header = QByteArray(kMagic) + "\n# port " + port.toUtf8() + " at "
         + QByteArray::number(baud) + " baud, started "
         + QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toUtf8()
@@ -66,19 +69,23 @@ util::FileError ShareRecording::open(const QString &path, const QString &port, q
     return {};
 }
 
-void ShareRecording::write(const RecordedFrame &frame)
+bool ShareRecording::write(const RecordedFrame &frame)
 {
     if (!m_file.isOpen())
-        return;
+        return true;
     QByteArray line = QByteArray::number(double(frame.timeUs) / 1e6, 'f', 6) + ' '
         + directionKey(frame.direction).toLatin1() + ' ';
     line += frame.direction == FrameDirection::Note ? frame.note.toUtf8()
                                                     : util::toHex(frame.bytes).toLatin1();
     line += '\n';
-    m_file.write(line);
-    ++m_frames;
     // Flushed now: a recording must survive the program (or ServoBench) being killed.
-    m_file.flush();
+    if (m_file.write(line) != line.size() || !m_file.flush()) {
+        m_error = m_file.errorString();
+        m_file.close();
+        return false;
+    }
+    ++m_frames;
+    return true;
 }
 
 void ShareRecording::close()
@@ -131,7 +138,7 @@ std::optional<QVector<RecordedFrame>> ShareRecording::load(const QString &path,
         bool ok = false;
         const double seconds = parts.at(0).toDouble(&ok);
         const auto direction = directionFromKey(parts.at(1));
-        if (!ok || seconds < 0 || !direction)
+        if (!ok || !(seconds >= 0 && seconds <= kLatestSecond) || !direction)
             return badLine();
         RecordedFrame frame;
         frame.timeUs = qint64(seconds * 1e6 + 0.5);

@@ -33,7 +33,10 @@ public:
     // Creates the file (replacing one) and writes the header; a FileError (Recording) when not.
     util::FileError open(const QString &path, const QString &port, qint32 baud);
     bool isOpen() const { return m_file.isOpen(); }
-    void write(const RecordedFrame &frame);
+    // Appends the frame's line; false when the file refused it (a full disk, a device gone),
+    // which closes the recording: what it holds stays readable, and error() says why.
+    bool write(const RecordedFrame &frame);
+    QString error() const { return m_error; }
     void close();
     qint64 framesWritten() const { return m_frames; }
 
@@ -45,6 +48,7 @@ public:
 private:
     QFile m_file;
     qint64 m_frames = 0;
+    QString m_error;
 };
 
 } // namespace share

@@ -24,6 +24,18 @@ TransactionTracker::TransactionTracker(Completed completed)
     : m_completed(std::move(completed))
 { }
 
+bool TransactionTracker::isAnswered(const QByteArray &frame)
+{
+    SharedTransaction transaction;
+    transaction.request = frame;
+    const quint8 code = transaction.instruction();
+    if (is(code, Instruction::SyncRead))
+        return !transaction.askedIds().isEmpty();
+    if (transaction.id() == feetech::kBroadcastId)
+        return is(code, Instruction::Ping);
+    return !is(code, Instruction::SyncWrite);
+}
+
 void TransactionTracker::request(const QByteArray &frame, qint64 nowUs)
 {
     if (m_current)

@@ -32,6 +32,9 @@ public:
     // The transactions it completes are ServoBench's own.
     void setOwn(bool own) { m_own = own; }
 
+    // Whether a request frame is answered at all (a broadcast other than PING, and a SYNC
+    // WRITE, are not).
+    static bool isAnswered(const QByteArray &frame);
     // A whole request frame left for the bus at `nowUs`; one still outstanding ends first.
     void request(const QByteArray &frame, qint64 nowUs);
     // A piece the bus sent back: a frame, a frame with a bad checksum, or bytes that are none.

@@ -3,6 +3,7 @@
 
 #include "arguments.h"
 #include "hex.h"
+#include "lineoutlet.h"
 #include "servoctltr.h"
 #include "unixsignals.h"
 
@@ -10,6 +11,7 @@
 #include <QTimer>
 
 #include <csignal>
+#include <limits>
 
 namespace cli {
 
@@ -23,6 +25,58 @@ seriallink::EchoMode echoModeOption(const Arguments &args)
     if (echo == QLatin1String("off"))
         return seriallink::EchoMode::Off;
     throw UsageError {ServoctlTr::tr("--echo must be auto, on or off")};
+}
+
+namespace {
+
+QVector<util::LineOutlet *> outlets(const Output &output)
+{
+    QVector<util::LineOutlet *> found;
+    for (QTextStream *stream : {&output.out, &output.err}) {
+        if (auto *outlet = qobject_cast<util::LineOutlet *>(stream->device()))
+            found.append(outlet);
+    }
+    return found;
+}
+
+QString droppedLinesText(qint64 count)
+{
+    return ServoctlTr::tr("dropped %Ln line(s) nobody read", nullptr,
+                          int(qMin<qint64>(count, std::numeric_limits<int>::max())));
+}
+
+} // namespace
+
+QString droppedLinesNote(const Output &output)
+{
+    qint64 dropped = 0;
+    for (const util::LineOutlet *outlet : outlets(output))
+        dropped += outlet->droppedLines();
+    return dropped > 0 ? droppedLinesText(dropped) : QString();
+}
+
+void sayDroppedLines(const Output &output)
+{
+    const QString dropped = droppedLinesNote(output);
+    if (dropped.isEmpty())
+        return;
+    output.err << "servoctl: " << dropped << '\n';
+    output.err.flush();
+}
+
+void streamWithoutWaiting(const Output &output)
+{
+    output.out.flush();
+    output.err.flush();
+    for (util::LineOutlet *outlet : outlets(output)) {
+        const bool json = output.json && outlet == output.out.device();
+        outlet->setDroppedLine([json](qint64 count) -> QByteArray {
+            if (json)
+                return QByteArrayLiteral("{\"dropped\":") + QByteArray::number(count) + "}\n";
+            return "servoctl: " + droppedLinesText(count).toUtf8() + '\n';
+        });
+        outlet->setWhenFull(util::LineOutlet::WhenFull::Drop);
+    }
 }
 
 void runUntilInterrupted(QEventLoop &loop, std::optional<double> seconds,

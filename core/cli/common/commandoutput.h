@@ -31,4 +31,14 @@ void printTrace(const Output &output, const seriallink::PacketLogEntry &entry);
 void runUntilInterrupted(QEventLoop &loop, std::optional<double> seconds = std::nullopt,
                          const std::function<void()> &onSignal = {});
 
+// For a stream (monitor, share, teleoperation, recording), before it starts: from then to the
+// command's end, output nobody reads is lost and counted, never waited for (the bus's timing
+// must not follow a reader); a line says how many when reading resumes ({"dropped": N} on
+// stdout with --json).
+void streamWithoutWaiting(const Output &output);
+// "dropped 1,204 lines nobody read", or empty when every line was read.
+QString droppedLinesNote(const Output &output);
+// The note above on stderr, when there is one: as a stream ends.
+void sayDroppedLines(const Output &output);
+
 } // namespace cli

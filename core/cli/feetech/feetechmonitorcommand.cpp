@@ -106,6 +106,7 @@ int FeetechMonitorCommand::monitor(const QString &what, const QStringList &opera
                              loop.quit(); // unplugged: nothing more will come
                      });
     QTimer::singleShot(0, &loop, [&session, options] { session.startTelemetry(options); });
+    streamWithoutWaiting(m_output);
     runUntilInterrupted(loop, duration);
     const bool linkLost = session.status().state != seriallink::ConnectionState::Connected;
     session.stopTelemetry(); // flushes the last samples through the connection above
@@ -119,6 +120,7 @@ int FeetechMonitorCommand::monitor(const QString &what, const QStringList &opera
                         .arg(last.late)
                  << '\n';
     m_output.err.flush();
+    sayDroppedLines(m_output);
     if (linkLost)
         return fail(session.status().message);
     if (printed == 0)

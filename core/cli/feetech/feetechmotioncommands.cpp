@@ -126,7 +126,9 @@ int FeetechMotionCommands::record(const QString &what, const QStringList &operan
                  << '\n';
     m_output.err.flush();
     QTimer::singleShot(0, &loop, [&session, options] { session.startTelemetry(options); });
+    streamWithoutWaiting(m_output);
     runUntilInterrupted(loop, duration);
+    sayDroppedLines(m_output);
     const bool linkLost = session.status().state != seriallink::ConnectionState::Connected;
     session.stopTelemetry(); // flushes the last samples through the connection above
 

@@ -237,7 +237,9 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     QElapsedTimer running;
     running.start();
     QTimer::singleShot(0, &loop, [&leader, stream] { leader.session().startTelemetry(stream); });
+    streamWithoutWaiting(m_output);
     runUntilInterrupted(loop, duration);
+    sayDroppedLines(m_output);
     const double seconds = running.nsecsElapsed() / 1e9;
     leader.session().stopTelemetry();
     teleop.stop();

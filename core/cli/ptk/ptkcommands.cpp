@@ -399,7 +399,9 @@ private:
                              ++rows;
                              printRow(double(clock.elapsed()) / 1000.0, sweep, csv);
                          });
+        streamWithoutWaiting(m_output);
         runUntilInterrupted(loop, duration);
+        sayDroppedLines(m_output);
         if (rows == 0) {
             const QString message = device.session().status().message;
             return fail(message.isEmpty() ? ServoctlTr::tr("the servo did not answer") : message);
