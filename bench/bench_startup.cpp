@@ -1,7 +1,9 @@
 // Times the real servobench from process start to its first painted window (no port), and its
-// resident memory then, by launching the built binary with SERVOBENCH_STARTUP_PROBE set.
+// resident memory then, by launching the built binary with SERVOBENCH_STARTUP_PROBE set; then
+// what the window costs left alone on its welcome page (CPU over a quiet stretch).
 #include <QCoreApplication>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -9,16 +11,22 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTemporaryDir>
+#include <QThread>
 
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
+
+#include <unistd.h>
 
 namespace {
 
 constexpr int kWarmUpRuns = 1; // the first start also reads the binary and Qt from disk
 constexpr int kRuns = 7;
 constexpr int kTimeoutMs = 30000;
+// The idle window: left to settle (first listings, fonts, the first paints), then watched.
+constexpr int kIdleSettleMs = 3000;
+constexpr int kIdleWatchMs = 10000;
 
 double monotonicNs()
 {
@@ -73,6 +81,48 @@ Start launch(const QString &binary, const QProcessEnvironment &environment)
     return start;
 }
 
+// The CPU time (user and system) of process `pid` so far, in seconds; -1 when unreadable.
+double cpuSeconds(qint64 pid)
+{
+    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly))
+        return -1;
+    // The fields after the command name, which is in parentheses and may hold spaces.
+    const QByteArray text = stat.readAll();
+    const QList<QByteArray> fields = text.mid(text.lastIndexOf(')') + 2).split(' ');
+    if (fields.size() < 13)
+        return -1;
+    const double ticks = double(sysconf(_SC_CLK_TCK));
+    return (fields.at(11).toDouble() + fields.at(12).toDouble()) / ticks;
+}
+
+// servobench on its welcome page, nothing connected, nobody touching it: % of one core.
+double idleCpuPercent(const QString &binary, const QProcessEnvironment &environment, QString *error)
+{
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.setProgram(binary);
+    process.start();
+    if (!process.waitForStarted(kTimeoutMs)) {
+        *error = QStringLiteral("servobench did not start: %1").arg(process.errorString());
+        return -1;
+    }
+    QThread::msleep(kIdleSettleMs);
+    const double before = cpuSeconds(process.processId());
+    const double startedNs = monotonicNs();
+    QThread::msleep(kIdleWatchMs);
+    const double after = cpuSeconds(process.processId());
+    const double seconds = (monotonicNs() - startedNs) / 1e9;
+    process.terminate();
+    if (!process.waitForFinished(kTimeoutMs))
+        process.kill();
+    if (before < 0 || after < 0) {
+        *error = QStringLiteral("servobench's CPU time could not be read (it quit early?)");
+        return -1;
+    }
+    return 100.0 * (after - before) / seconds;
+}
+
 double median(QVector<double> values)
 {
     std::sort(values.begin(), values.end());
@@ -117,6 +167,19 @@ int main(int argc, char *argv[])
         peak.append(start.peakResidentMb);
         platform = start.platform;
     }
+    QString idleError;
+    const double idlePercent = idleCpuPercent(
+        binary,
+        [environment] {
+            QProcessEnvironment quiet = environment;
+            quiet.remove(QStringLiteral("SERVOBENCH_STARTUP_PROBE"));
+            return quiet;
+        }(),
+        &idleError);
+    if (idlePercent < 0) {
+        std::fprintf(stderr, "bench_startup: %s\n", qPrintable(idleError));
+        return 1;
+    }
     QJsonArray each;
     for (const double ms : times)
         each.append(ms);
@@ -129,6 +192,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("max_ms_to_first_frame"), *std::max_element(times.begin(), times.end())},
         {QStringLiteral("median_resident_mb_at_first_frame"), median(resident)},
         {QStringLiteral("median_peak_resident_mb_at_first_frame"), median(peak)},
+        {QStringLiteral("idle_seconds_watched"), kIdleWatchMs / 1000},
+        {QStringLiteral("idle_cpu_percent_of_one_core"), idlePercent},
     };
     std::printf("%s", QJsonDocument(report).toJson(QJsonDocument::Indented).constData());
     return 0;

@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         FUZZ_CHECK(feetech::isLeRobotMotorName(motor.name));
         FUZZ_CHECK(std::abs(motor.homingOffset) <= feetech::kLeRobotMaximumOffset);
         FUZZ_CHECK(motor.rangeMin >= 0 && motor.rangeMin < motor.rangeMax);
-        FUZZ_CHECK(motor.rangeMax <= feetech::kLeRobotMaximumPosition);
+        FUZZ_CHECK(motor.rangeMax <= feetech::kLeRobotLargestLimit);
         ids.insert(motor.id);
         names.insert(motor.name);
     }

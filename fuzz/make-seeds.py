@@ -99,6 +99,9 @@ seed("lerobot_calibration", "two-motors.json", json.dumps(
                       "range_max": 3300},
      "wrist_roll": {"id": 5, "drive_mode": 0, "homing_offset": 15, "range_min": 0,
                     "range_max": 4095}}, indent=4))
+seed("lerobot_calibration", "one-past-the-last.json",
+     '{"wrist_roll": {"id": 5, "drive_mode": 0, "homing_offset": 0, "range_min": 0, '
+     '"range_max": 4096}}')
 seed("lerobot_calibration", "one-motor.json",
      '{"gripper": {"id": 6, "drive_mode": 0, "homing_offset": 2047, "range_min": 0, '
      '"range_max": 1}}')
@@ -119,3 +122,41 @@ seed("sim_state", "state.json", json.dumps(
     {"format": 1, "servos": [{"model": "STS3215", "eeprom": image(9, 3, 1)},
                              {"model": "SCS009/SCS0009", "eeprom": image(5, 4, 2)},
                              {"model": "HLSxx", "eeprom": image(10, 0, 3)}]}, indent=4))
+
+# A shared bus: what a program and the servos exchange, as chunks (a length byte whose top bit
+# says the program's side, then the bytes), and the recording the share writes of it.
+def chunk(from_program, data):
+    return bytes([(0x80 if from_program else 0) | len(data)]) + data
+
+def packet(servo, code, params=b""):
+    body = bytes([servo, len(params) + 2, code]) + params
+    return b"\xff\xff" + body + bytes([~sum(body) & 0xFF])
+
+# An STS3215's session as LeRobot starts one: the model, the feedback, a write, a SYNC READ.
+identity = bytes([3, 10, 0, 9, 3, 1, 0, 0, 1, 0, 0, 0, 0, 0xFF, 0x0F, 0x46, 0x50, 0x28])
+feetech_requests = [packet(1, 0x01), packet(1, 0x02, b"\x03\x02"), packet(1, 0x02, b"\x00\x13"),
+                    packet(1, 0x02, b"\x38\x08"), packet(1, 0x03, b"\x37\x00"),
+                    packet(1, 0x03, b"\x2a\x00\x08"), packet(0xFE, 0x82, b"\x38\x02\x01")]
+feetech_answers = [packet(1, 0), packet(1, 0, b"\x09\x03"), packet(1, 0, identity[:19]),
+                   packet(1, 0, b"\x00\x08\x00\x00\x00\x00\x78\x1e"), packet(1, 0), packet(1, 0x20),
+                   packet(1, 0, b"\x00\x08")]
+exchange = b""
+for request, answer in zip(feetech_requests, feetech_answers):
+    exchange += chunk(True, request) + chunk(False, answer)
+seed("share_traffic", "spec-exchanges", exchange)
+seed("share_traffic", "split-and-echoed",
+     b"".join(chunk(True, r[:3]) + chunk(True, r[3:]) + chunk(False, r) + chunk(False, a)
+              for r, a in zip(feetech_requests[:6], feetech_answers[:6])))
+
+recording = ["# servobench share recording 1", "# port /dev/ttyACM0 at 1000000 baud, started "
+             "2026-12-01T10:00:00Z"]
+at = 0.0
+for request, answer in zip(feetech_requests, feetech_answers):
+    at += 0.0004
+    recording.append("%.6f program %s" % (at, request.hex(" ").upper()))
+    at += 0.0003
+    recording.append("%.6f bus %s" % (at, answer.hex(" ").upper()))
+recording.append("%.6f note alert eeprom-unlocked 1: EEPROM left unlocked" % (at + 5))
+recording.append("%.6f own FF FF 01 04 02 38 02 BE" % (at + 5.1))
+recording.append("%.6f own-answer FF FF 01 04 00 00 08 F2" % (at + 5.1003))
+seed("share_recording", "spec-exchanges.log", "\n".join(recording) + "\n")

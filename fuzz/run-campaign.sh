@@ -57,7 +57,8 @@ run_target() {
     local crashes=$here/crashes/$target
     local found=$campaign/$target/new
     local log=$campaign/$target.log
-    mkdir -p "$corpus" "$crashes" "$found"
+    # A target the seed maker has nothing for runs from its corpus alone.
+    mkdir -p "$corpus" "$crashes" "$found" "$build/seeds/$target"
     local dict=()
     [[ $(max_len "$target") -gt 1024 ]] && dict=(-dict="$here/json.dict")
     local limit=()

@@ -1,7 +1,9 @@
 // Tests the order in which ServoBench offers the system's serial ports: USB adapters (a vendor
 // and product ID, or a description) before built-in ports, each group in its own order.
 #include "serialports.h"
+#include "serialportwatcher.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 namespace {
@@ -74,6 +76,25 @@ private slots:
             ports.cbegin(), ports.cend(), [](const SerialPort &p) { return !p.isUsbAdapter(); });
         QVERIFY(std::none_of(firstBuiltIn, ports.cend(),
                              [](const SerialPort &p) { return p.isUsbAdapter(); }));
+    }
+
+    // Each listing walks sysfs: an idle window lists the ports once, and again only when a
+    // device node comes or goes.
+    void theWatcherListsThePortsAgainOnlyWhenADeviceComesOrGoes()
+    {
+        QTemporaryDir devices;
+        QVERIFY(devices.isValid());
+        SerialPortWatcher watcher(devices.path());
+        QCOMPARE(watcher.listings(), 1);
+        QCOMPARE(watcher.ports(), availableSerialPorts());
+        QTest::qWait(1500); // what the window's two timers listed three times in
+        QCOMPARE(watcher.listings(), 1);
+        QFile node(devices.filePath(QStringLiteral("ttyUSB7")));
+        QVERIFY(node.open(QIODevice::WriteOnly));
+        node.close();
+        QTRY_COMPARE(watcher.listings(), 2);
+        QVERIFY(node.remove());
+        QTRY_COMPARE(watcher.listings(), 3);
     }
 };
 

@@ -1,19 +1,14 @@
 // Connection bar: port discovery, settings and the Connect button.
 #include "connectionbar.h"
 
+#include "serialportwatcher.h"
+
 #include <QComboBox>
 #include <QIntValidator>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QTimer>
-
-namespace {
-
-// Hot-plugged adapters show up within this time.
-constexpr int kPortRefreshMs = 1000;
-
-} // namespace
 
 const QString ConnectionBar::kSimulatedPtkPort =
     QLatin1String(ConnectionController::kSimulatedPtkPort);
@@ -102,14 +97,15 @@ ConnectionBar::ConnectionBar(QWidget *parent)
             emit connectRequested();
     });
 
-    m_refresh = new QTimer(this);
-    m_refresh->setInterval(kPortRefreshMs);
-    connect(m_refresh, &QTimer::timeout, this, &ConnectionBar::refreshPorts);
-    m_refresh->start();
     // Asking the system for its ports can take a while: the window shows first, with the
-    // simulated buses, and the real ports join the list once the event loop runs.
+    // simulated buses, and the real ports join the list once the event loop runs. From then on
+    // the list follows adapters plugged in and pulled out.
     showPorts({});
-    QTimer::singleShot(0, this, &ConnectionBar::refreshPorts);
+    QTimer::singleShot(0, this, [this] {
+        SerialPortWatcher &watcher = SerialPortWatcher::shared();
+        connect(&watcher, &SerialPortWatcher::portsChanged, this, &ConnectionBar::takePorts);
+        takePorts(watcher.ports());
+    });
     updateEnabled();
 }
 
@@ -203,7 +199,12 @@ void ConnectionBar::updateEnabled()
 
 void ConnectionBar::refreshPorts()
 {
-    const QVector<SerialPort> ports = availableSerialPorts();
+    SerialPortWatcher::shared().rescan();
+    takePorts(SerialPortWatcher::shared().ports());
+}
+
+void ConnectionBar::takePorts(const QVector<SerialPort> &ports)
+{
     const bool same = ports == m_knownPorts && m_port->count() > 0;
     m_portsListed = true;
     if (!same)

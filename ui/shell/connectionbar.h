@@ -56,6 +56,8 @@ private:
     // The port list: the system's `ports` (USB adapters first), then the simulated buses.
     // Until the user chooses, the first USB adapter (else the first port, else none) is chosen.
     void showPorts(const QVector<SerialPort> &ports);
+    // The system's ports as listed: shown when they changed.
+    void takePorts(const QVector<SerialPort> &ports);
     // Selects `port` in the list, or types it when it is not listed.
     void selectPort(const QString &port);
     // Auto finds the rate and the echo itself: their boxes are for the explicit protocols.
@@ -67,7 +69,6 @@ private:
     QComboBox *m_protocol = nullptr;
     QComboBox *m_echo = nullptr;
     QPushButton *m_connect = nullptr;
-    QTimer *m_refresh = nullptr;
     QVector<SerialPort> m_knownPorts;
     bool m_portsListed = false; // the system's ports were asked for at least once
     bool m_portChosen = false; // by the user or setPort: listings keep it

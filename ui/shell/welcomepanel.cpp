@@ -3,6 +3,7 @@
 #include "welcomepanel.h"
 
 #include "connectionbar.h"
+#include "serialportwatcher.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -10,12 +11,9 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QTableWidget>
-#include <QTimer>
 #include <QVBoxLayout>
 
 namespace {
-
-constexpr int kRefreshMs = 2000;
 
 enum PortColumnIndex {
     PortColumn,
@@ -37,7 +35,6 @@ QLabel *wrappedLabel(const QString &text, QWidget *parent)
 
 WelcomePanel::WelcomePanel(QWidget *parent)
     : QWidget(parent)
-    , m_refresh(new QTimer(this))
 {
     setObjectName(QStringLiteral("welcomePanel"));
     auto *title = new QLabel(tr("<h2>Connect your servos</h2>"), this);
@@ -58,9 +55,9 @@ WelcomePanel::WelcomePanel(QWidget *parent)
     layout->addWidget(intro);
     layout->addLayout(columns, 1);
 
-    m_refresh->setInterval(kRefreshMs);
-    connect(m_refresh, &QTimer::timeout, this, &WelcomePanel::refreshPorts);
-    refreshPorts();
+    SerialPortWatcher &watcher = SerialPortWatcher::shared();
+    connect(&watcher, &SerialPortWatcher::portsChanged, this, &WelcomePanel::showPorts);
+    showPorts(watcher.ports());
 }
 
 QWidget *WelcomePanel::createPortsBox()
@@ -155,7 +152,12 @@ QWidget *WelcomePanel::createWiringBox()
 
 void WelcomePanel::refreshPorts()
 {
-    const QVector<SerialPort> ports = availableSerialPorts();
+    SerialPortWatcher::shared().rescan();
+    showPorts(SerialPortWatcher::shared().ports());
+}
+
+void WelcomePanel::showPorts(const QVector<SerialPort> &ports)
+{
     // Rebuilt only when the list changed, so the view neither flickers nor scrolls.
     if (ports == m_listed && m_ports->rowCount() == ports.size())
         return;
@@ -205,17 +207,4 @@ void WelcomePanel::connectSelected()
 {
     if (!m_chosen.isEmpty())
         emit connectRequested(m_chosen);
-}
-
-void WelcomePanel::showEvent(QShowEvent *event)
-{
-    QWidget::showEvent(event);
-    refreshPorts();
-    m_refresh->start();
-}
-
-void WelcomePanel::hideEvent(QHideEvent *event)
-{
-    QWidget::hideEvent(event);
-    m_refresh->stop();
 }

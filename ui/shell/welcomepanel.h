@@ -18,8 +18,8 @@ class WelcomePanel : public QWidget
 public:
     explicit WelcomePanel(QWidget *parent = nullptr);
 
-    // Lists the system's serial ports again, USB adapters first (also every 2 s while the
-    // panel is on screen, so an adapter plugged in shows up by itself).
+    // Lists the system's serial ports again, USB adapters first (an adapter plugged in or
+    // pulled out shows by itself: SerialPortWatcher).
     void refreshPorts();
     QTableWidget *portTable() const { return m_ports; }
     QPushButton *connectButton() const { return m_connect; }
@@ -34,21 +34,17 @@ signals:
     // The user selected a port's row.
     void portChosen(const QString &port);
 
-protected:
-    void showEvent(QShowEvent *event) override;
-    void hideEvent(QHideEvent *event) override;
-
 private:
     QWidget *createPortsBox();
     QWidget *createSimulatedBox();
     QWidget *createWiringBox();
     void connectSelected();
     void selectChosenRow();
+    void showPorts(const QVector<SerialPort> &ports);
 
     QTableWidget *m_ports = nullptr;
     QLabel *m_noPorts = nullptr;
     QPushButton *m_connect = nullptr;
-    QTimer *m_refresh = nullptr;
     QVector<SerialPort> m_listed; // the ports shown, to rebuild the table only when they change
     QString m_chosen;
 };
