@@ -309,6 +309,51 @@ private slots:
         QCOMPARE(m_share->counters().garbledBytes, 0);
     }
 
+    // Servos that answer later than the share waits for a program's request (a loaded machine,
+    // an adapter's latency): the watch's READ may go after that wait, yet every answer is the
+    // program's or the watch's by what was asked, never by when it came.
+    void lateAnswersToTheProgramStayTheProgramsWhileTheWatchReads()
+    {
+        sim::SimulatorOptions options =
+            busOptions(testsupport::servosAt(k1M, {u"STS3215", u"STS3215", u"STS3215"}));
+        // Each answer within the share's 30 ms wait for one, a SYNC READ's three past it.
+        options.replyDelayUs = 25000;
+        startShare(options, true);
+        struct Loop
+        {
+            int whole = 0;
+            int foreign = 0;
+        };
+        const Loop loop = asProgram([path = programPath()] {
+            Loop done;
+            BlockingClient program;
+            if (!program.open(path, k1M))
+                return done;
+            const QVector<quint8> ids {1, 2, 3};
+            for (const quint8 id : ids) // the models first, as LeRobot does
+                program.ask(feetech::read(id, 3, 2), id);
+            for (int cycle = 0; cycle < 40; ++cycle) {
+                const QVector<QByteArray> answers =
+                    program.exchange(feetech::syncRead(56, 8, ids), int(ids.size()), kPatient);
+                done.whole += answers.size() == ids.size();
+                for (qsizetype i = 0; i < answers.size(); ++i) {
+                    if (quint8(answers.at(i).at(2)) != ids.value(i) || answers.at(i).size() != 14)
+                        ++done.foreign;
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(cycle % 5 == 0 ? 60 : 2));
+            }
+            done.foreign += program.unexpectedFrames();
+            return done;
+        });
+        QCOMPARE(loop.whole, 40);
+        QCOMPARE(loop.foreign, 0);
+        QVERIFY2(m_share->watchReads() > 0, "the watch read nothing in the gaps");
+        // Nothing the watch decoded came from the program's answers: no alert on healthy servos.
+        QVERIFY2(m_alerts.isEmpty(), qPrintable(alertCodes().join(u' ')));
+        // What the program got late is no unanswered request.
+        QCOMPARE(m_share->counters().unanswered, 0);
+    }
+
     void theProgramsReadsRaiseAlertsWithoutTheWatch()
     {
         startShare(busOptions(testsupport::servosAt(k1M, {u"STS3215", u"STS3215"})));

@@ -129,13 +129,33 @@ private slots:
         QVERIFY(tracker.isOutstanding());
         QVERIFY(!tracker.expire(1000));
         QVERIFY(tracker.expire(*tracker.deadlineUs()));
-        QCOMPARE(done.size(), 1);
-        QVERIFY(done.first().unanswered());
-        QCOMPARE(done.first().replies.size(), 2);
-        QCOMPARE(done.first().garbledBytes, 2);
-        // A frame after it ended answers nothing.
+        QVERIFY(!tracker.isOutstanding()); // the bus is free for another request
+        // The missing answer after its time, before the program's next request: the program
+        // (whose own wait is longer) got it after all. Any other frame answers nothing.
+        QCOMPARE(done.size(), 0);
         tracker.heard(frame(feetech::status(2, 0, QByteArray(2, '\0'))), 90000);
+        QCOMPARE(done.size(), 1);
+        QVERIFY(!done.first().unanswered());
+        QCOMPARE(done.first().replies.size(), 3);
+        QCOMPARE(done.first().garbledBytes, 2);
+        QCOMPARE(done.first().roundTripUs, std::optional<qint64>(90000));
+        QCOMPARE(tracker.strayFrames(), qint64(0));
+        tracker.heard(frame(feetech::status(2, 0, QByteArray(2, '\0'))), 90100);
         QCOMPARE(tracker.strayFrames(), qint64(1));
+        // Once the program asked again, an answer to the request before is no answer of it.
+        tracker.request(feetech::syncRead(56, 2, {1, 2, 3}), 100000);
+        QVERIFY(tracker.expire(*tracker.deadlineUs()));
+        tracker.request(feetech::ping(1), 200000);
+        QCOMPARE(done.size(), 2);
+        QVERIFY(done.last().unanswered());
+        tracker.heard(frame(feetech::status(3, 0, QByteArray(2, '\0'))), 200100);
+        QCOMPARE(tracker.strayFrames(), qint64(2));
+        // One the program never follows ends unanswered once no answer can be its any more.
+        QVERIFY(tracker.expire(*tracker.deadlineUs()));
+        QCOMPARE(done.size(), 2); // the PING's time ran out: it may still be answered late
+        QVERIFY(tracker.expire(*tracker.deadlineUs()));
+        QCOMPARE(done.size(), 3);
+        QVERIFY(done.last().unanswered());
     }
 
     void theNextRequestEndsOneStillWaiting()

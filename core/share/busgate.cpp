@@ -96,47 +96,64 @@ void BusGate::fromProgram(const QByteArray &bytes)
 
 void BusGate::forwardProgramBytes(const QByteArray &bytes)
 {
+    m_programActivityUs = nowUs();
     m_port.write(bytes);
     m_counters.bytesFromProgram += bytes.size();
     m_programFramer.append(bytes);
-    passFrames(m_programFramer, FrameDirection::FromProgram, nullptr);
+    passProgramFrames();
     armDeadline();
 }
 
 void BusGate::onPortBytes(const QByteArray &bytes)
 {
-    if (m_ownActive) {
-        emit received(bytes);
-        m_portFramer.append(bytes);
-        passFrames(m_portFramer, FrameDirection::OwnAnswer, &m_own);
-    } else {
-        emit toProgram(bytes);
-        m_counters.bytesToProgram += bytes.size();
-        m_portFramer.append(bytes);
-        passFrames(m_portFramer, FrameDirection::ToProgram, &m_program);
-    }
-    pump();
-}
-
-void BusGate::passFrames(seriallink::StreamFramer &framer, FrameDirection direction,
-                         TransactionTracker *tracker)
-{
-    while (const std::optional<seriallink::StreamItem> item = framer.next()) {
+    // Frame by frame, by what was asked: a frame the own request asked for (its answer, a late
+    // one too) is ServoBench's, and everything else is the program's, whenever it came. The
+    // program's bytes of one read go on in one write.
+    m_portFramer.append(bytes);
+    QByteArray forProgram;
+    while (const std::optional<seriallink::StreamItem> item = m_portFramer.next()) {
         const qint64 now = nowUs();
         const bool frame = item->kind == seriallink::StreamItem::Kind::Frame;
         if (!frame)
             m_counters.garbledBytes += item->bytes.size();
-        if (direction == FrameDirection::FromProgram) {
-            if (frame) {
-                ++m_counters.framesFromProgram;
-                m_program.request(item->bytes, now);
-            }
-        } else {
-            if (frame && direction == FrameDirection::ToProgram)
-                ++m_counters.framesToProgram;
-            tracker->heard(*item, now);
+        const bool own = frame ? m_own.claims(item->bytes) : m_ownActive;
+        if (own) {
+            if (m_ownActive)
+                emit received(item->bytes);
+            m_own.heard(*item, now);
+            emit framePassed({now, FrameDirection::OwnAnswer, item->bytes, {}});
+            continue;
         }
-        emit framePassed({now, direction, item->bytes, {}});
+        m_programActivityUs = now;
+        forProgram += item->bytes;
+        if (frame)
+            ++m_counters.framesToProgram;
+        m_program.heard(*item, now);
+        emit framePassed({now, FrameDirection::ToProgram, item->bytes, {}});
+    }
+    if (!forProgram.isEmpty()) {
+        emit toProgram(forProgram);
+        m_counters.bytesToProgram += forProgram.size();
+    }
+    pump();
+}
+
+qint64 BusGate::quietInUs() const
+{
+    return qMax<qint64>(0, m_programActivityUs + kQuietBeforeOwn.count() - nowUs());
+}
+
+void BusGate::passProgramFrames()
+{
+    while (const std::optional<seriallink::StreamItem> item = m_programFramer.next()) {
+        const qint64 now = nowUs();
+        if (item->kind == seriallink::StreamItem::Kind::Frame) {
+            ++m_counters.framesFromProgram;
+            m_program.request(item->bytes, now);
+        } else {
+            m_counters.garbledBytes += item->bytes.size();
+        }
+        emit framePassed({now, FrameDirection::FromProgram, item->bytes, {}});
     }
 }
 
@@ -149,7 +166,10 @@ void BusGate::pump()
         if (!held.isEmpty())
             forwardProgramBytes(held);
     }
-    if (!m_ownActive && !m_ownWaiting.isEmpty() && !programBusy())
+    // Not while answers may still come late, to the program's request or to an own one: who
+    // they are for is told by what was asked, and two requests alike would not tell it.
+    if (!m_ownActive && !m_ownWaiting.isEmpty() && !programBusy() && quietInUs() == 0
+        && !m_program.hasLate() && !m_own.hasLate())
         startOwnRequest();
     armDeadline();
 }
@@ -197,8 +217,13 @@ void BusGate::startOwnRequest()
 void BusGate::armDeadline()
 {
     std::optional<qint64> deadline = m_program.deadlineUs();
+    const auto sooner = [&deadline](qint64 at) {
+        deadline = deadline ? qMin(*deadline, at) : at;
+    };
     if (const auto own = m_own.deadlineUs())
-        deadline = deadline ? qMin(*deadline, *own) : *own;
+        sooner(*own);
+    if (!m_ownActive && !m_ownWaiting.isEmpty() && !programBusy())
+        sooner(nowUs() + quietInUs()); // the own request goes once the program is quiet
     if (!deadline) {
         m_deadline->stop();
         return;
@@ -215,6 +240,14 @@ void BusGate::onDeadline()
     pump();
 }
 
+void BusGate::endAll()
+{
+    const qint64 now = nowUs() + (qint64(1) << 40); // past every wait
+    m_program.expire(now);
+    m_own.expire(now);
+    m_deadline->stop();
+}
+
 void BusGate::portLost()
 {
     m_counters.bytesWhileAway += m_held.size();
@@ -223,10 +256,7 @@ void BusGate::portLost()
     m_ownActive = false;
     m_programFramer.discardPending();
     m_portFramer.discardPending();
-    const qint64 now = nowUs() + (qint64(1) << 40); // everything outstanding is over
-    m_program.expire(now);
-    m_own.expire(now);
-    m_deadline->stop();
+    endAll();
 }
 
 } // namespace share

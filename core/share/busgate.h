@@ -10,6 +10,8 @@
 
 #include <QElapsedTimer>
 
+#include <chrono>
+
 namespace seriallink {
 class PreciseTimer;
 } // namespace seriallink
@@ -35,16 +37,23 @@ struct ShareCounters
 };
 
 // The request engine talks to the gate as its transport: an own request waits until no
-// request of the program is outstanding and the program is not in the middle of a frame, then
-// goes alone; bytes the program sends meanwhile wait, in order, until that request is answered
-// or its time is up, and go on then, less any request the program sent another after (it no
-// longer waits for that one's answer). Everything else passes at once, byte for byte, the
-// adapter's echo and garbage included. Lives in the thread of the port.
+// request of the program is outstanding (all its answers in, or its time up and no late answer
+// still possible), the program is not in the middle of a frame and its side has been quiet a
+// moment, then goes alone; while it
+// is out, a frame from the bus is its answer only if it is what it asked for (a late answer to
+// the program's request still goes to the program); bytes the program sends meanwhile wait, in
+// order, until that request is answered or its time is up, and go on then, less any request the
+// program sent another after (it no longer waits for that one's answer). Everything else passes at
+// once, byte for byte, the adapter's echo and garbage included. Lives in the thread of the port.
 class BusGate : public seriallink::Transport
 {
     Q_OBJECT
 
 public:
+    // How long the program's side must have been quiet (nothing sent, nothing heard) before an
+    // own request goes: a program whose transaction just ended is about to send its next.
+    static constexpr std::chrono::microseconds kQuietBeforeOwn {2000};
+
     explicit BusGate(seriallink::Transport &port, QObject *parent = nullptr);
     ~BusGate() override;
 
@@ -61,6 +70,8 @@ public:
     void setBaudRate(qint32 baud);
     // The port went away: what waited is lost, nothing is outstanding any more.
     void portLost();
+    // Every transaction still open ends now, as it is (the share stops).
+    void endAll();
 
     const ShareCounters &counters() const { return m_counters; }
     // Microseconds since the gate was made: the time line of transactions and frames.
@@ -78,6 +89,8 @@ signals:
 
 private:
     void onPortBytes(const QByteArray &bytes);
+    // Microseconds until the program's side has been quiet long enough; 0 when it has.
+    qint64 quietInUs() const;
     void forwardProgramBytes(const QByteArray &bytes);
     void startOwnRequest();
     // The held bytes less every request that a later one followed while they waited.
@@ -86,8 +99,8 @@ private:
     void pump();
     void armDeadline();
     void onDeadline();
-    void passFrames(seriallink::StreamFramer &framer, FrameDirection direction,
-                    TransactionTracker *tracker);
+    // The program's requests as they pass: counted, recorded, and waited for.
+    void passProgramFrames();
 
     seriallink::Transport &m_port;
     feetech::FrameFormat m_format;
@@ -99,6 +112,7 @@ private:
     QByteArray m_ownWaiting; // an own request waiting for a boundary
     bool m_ownActive = false;
     QByteArray m_held; // the program's bytes waiting for the own request's answer
+    qint64 m_programActivityUs = -(qint64(1) << 40); // the last byte either way on its side
     ShareCounters m_counters;
     QElapsedTimer m_clock;
 };

@@ -100,6 +100,7 @@ void BusShare::stop()
         return;
     m_sharing = false;
     m_ticks.stop();
+    m_gate->endAll(); // what is still open is said and recorded before the recording ends
     // The engine goes back to the port itself; the gate and everything on it go.
     m_link.engine().setTransport(m_link.transport());
     delete m_watch;

@@ -1,6 +1,7 @@
 // The watch of a shared bus: one READ of a servo the program uses, in the program's idle gaps.
 #pragma once
 
+#include "busgate.h"
 #include "observedservos.h"
 
 #include <QObject>
@@ -14,8 +15,6 @@ class RequestEngine;
 
 namespace share {
 
-class BusGate;
-
 // Off by default. When the program has left the bus quiet long enough for one more
 // transaction, reads one servo it has seen: first its identity and limits, then (in turn with
 // the others) torque, goal, lock and the feedback block. One READ at a time, no retries, at
@@ -27,7 +26,7 @@ class ShareWatch : public QObject
 
 public:
     // How quiet the bus must be, at least, before a READ goes.
-    static constexpr std::chrono::microseconds kLeastGap {2000};
+    static constexpr std::chrono::microseconds kLeastGap = BusGate::kQuietBeforeOwn;
     // At most one READ this often.
     static constexpr std::chrono::milliseconds kInterval {50};
 

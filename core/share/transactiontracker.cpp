@@ -10,6 +10,9 @@ namespace {
 constexpr int kStatusOverhead = 6; // header, ID, length, error, checksum
 // A request nothing answers may still come back as the echo: how long past its wire time.
 constexpr qint64 kEchoAllowanceUs = 2000;
+// How long past its time a request's missing answers still count as its sender's: longer than
+// any program waits (the SDKs wait some tens of milliseconds; LeRobot's bus code about as long).
+constexpr qint64 kLateAnswersUs = 500000;
 
 using feetech::Instruction;
 
@@ -40,6 +43,7 @@ void TransactionTracker::request(const QByteArray &frame, qint64 nowUs)
 {
     if (m_current)
         complete();
+    endLate(); // its sender gave up on answers still to come
     Outstanding outstanding;
     outstanding.transaction.timeUs = nowUs;
     outstanding.transaction.request = frame;
@@ -53,6 +57,7 @@ void TransactionTracker::request(const QByteArray &frame, qint64 nowUs)
         expected = int(outstanding.ids.size());
         const int length = parameters >= 2 ? quint8(frame.at(6)) : 0;
         outstanding.replySize = expected * (kStatusOverhead + length);
+        outstanding.answerSize = kStatusOverhead + length;
     } else if (id == feetech::kBroadcastId) {
         // A broadcast PING is answered by every servo, each when it likes; nothing else is.
         expected = is(code, Instruction::Ping) ? -1 : 0;
@@ -64,6 +69,7 @@ void TransactionTracker::request(const QByteArray &frame, qint64 nowUs)
         expected = 1;
         const int length = is(code, Instruction::Read) && parameters >= 2 ? quint8(frame.at(6)) : 0;
         outstanding.replySize = kStatusOverhead + length;
+        outstanding.answerSize = is(code, Instruction::Read) ? outstanding.replySize : 0;
     }
     outstanding.transaction.expectedReplies = expected;
     m_current = std::move(outstanding);
@@ -74,6 +80,8 @@ void TransactionTracker::request(const QByteArray &frame, qint64 nowUs)
 void TransactionTracker::heard(const seriallink::StreamItem &item, qint64 nowUs)
 {
     if (!m_current) {
+        if (item.kind == seriallink::StreamItem::Kind::Frame && heardLate(item.bytes, nowUs))
+            return;
         ++m_strayFrames;
         m_strayBytes += item.bytes.size();
         return;
@@ -95,6 +103,8 @@ void TransactionTracker::heard(const seriallink::StreamItem &item, qint64 nowUs)
         return;
     }
     if (!isAnswer(item.bytes)) {
+        if (heardLate(item.bytes, nowUs))
+            return;
         ++m_strayFrames;
         m_strayBytes += item.bytes.size();
         return;
@@ -106,6 +116,21 @@ void TransactionTracker::heard(const seriallink::StreamItem &item, qint64 nowUs)
     if (transaction.expectedReplies > 0
         && transaction.replies.size() >= transaction.expectedReplies)
         complete();
+}
+
+bool TransactionTracker::claims(const QByteArray &frame) const
+{
+    if (frame.size() < kStatusOverhead)
+        return false;
+    if (m_current) {
+        if (frame == m_current->transaction.request)
+            return true; // the adapter's echo
+        if (isAnswer(frame)
+            && (m_current->answerSize == 0 || frame.size() == m_current->answerSize))
+            return true;
+    }
+    return m_late && m_late->ids.contains(quint8(frame.at(2)))
+        && (m_late->answerSize == 0 || frame.size() == m_late->answerSize);
 }
 
 bool TransactionTracker::isAnswer(const QByteArray &frame) const
@@ -120,7 +145,7 @@ bool TransactionTracker::isAnswer(const QByteArray &frame) const
 std::optional<qint64> TransactionTracker::deadlineUs() const
 {
     if (!m_current)
-        return std::nullopt;
+        return m_late ? std::optional<qint64>(m_late->untilUs) : std::nullopt;
     const SharedTransaction &transaction = m_current->transaction;
     const int requestSize = int(transaction.request.size());
     if (transaction.expectedReplies == 0)
@@ -132,19 +157,60 @@ std::optional<qint64> TransactionTracker::deadlineUs() const
 
 bool TransactionTracker::expire(qint64 nowUs)
 {
-    const std::optional<qint64> deadline = deadlineUs();
-    if (!deadline || nowUs < *deadline)
+    bool ended = false;
+    if (m_current) {
+        const std::optional<qint64> deadline = deadlineUs();
+        if (!deadline || nowUs < *deadline)
+            return false;
+        complete();
+        ended = true;
+    }
+    if (m_late && nowUs >= m_late->untilUs) {
+        endLate();
+        ended = true;
+    }
+    return ended;
+}
+
+bool TransactionTracker::heardLate(const QByteArray &frame, qint64 nowUs)
+{
+    if (!m_late || frame.size() < kStatusOverhead
+        || (m_late->answerSize != 0 && frame.size() != m_late->answerSize)
+        || !m_late->ids.removeOne(quint8(frame.at(2))))
         return false;
-    complete();
+    m_late->transaction.replies.append(frame);
+    m_late->transaction.roundTripUs = nowUs - m_late->transaction.timeUs;
+    if (m_late->ids.isEmpty())
+        endLate();
     return true;
+}
+
+void TransactionTracker::endLate()
+{
+    if (!m_late)
+        return;
+    SharedTransaction transaction = std::move(m_late->transaction);
+    m_late.reset();
+    m_completed(std::move(transaction));
 }
 
 void TransactionTracker::complete()
 {
     if (!m_current)
         return;
+    endLate();
+    const qint64 deadline = deadlineUs().value_or(0);
     SharedTransaction transaction = std::move(m_current->transaction);
+    QVector<quint8> missing = m_current->ids;
+    const int answerSize = m_current->answerSize;
     m_current.reset();
+    if (transaction.unanswered() && !missing.isEmpty()) {
+        for (const QByteArray &reply : std::as_const(transaction.replies))
+            missing.removeOne(quint8(reply.at(2)));
+        m_late = Late {std::move(transaction), std::move(missing), answerSize,
+                       deadline + kLateAnswersUs};
+        return;
+    }
     m_completed(std::move(transaction));
 }
 
