@@ -193,6 +193,31 @@ private slots:
         QCOMPARE(simulatorValue(1, QStringLiteral("max_temperature")), 66);
     }
 
+    void aLiveRefreshNeverTouchesTheValueBeingTyped()
+    {
+        connectAndScan();
+        workspace()->tabs()->setCurrentIndex(1);
+        QVERIFY(workspace()->memoryPage()->refreshesLive()); // the default
+        QTableView *table = workspace()->memoryPage()->table();
+        const QString key = QStringLiteral("acceleration"); // RAM: refreshed live
+        QTRY_VERIFY(valueIndex(key).flags() & Qt::ItemIsEditable);
+        table->setCurrentIndex(valueIndex(key));
+        table->edit(valueIndex(key));
+        auto *editor = table->findChild<QLineEdit *>();
+        QVERIFY(editor);
+        editor->selectAll();
+        QTest::keyClicks(editor, QStringLiteral("5000")); // step/s², 100 a raw step
+        // The servo's value changes meanwhile, and the live refresh shows it in the table.
+        setSimulatorValue(1, key, 7);
+        model::ParameterModel *parameters =
+            client()->servos()->parameters(workspace()->currentIndex());
+        QTRY_COMPARE_WITH_TIMEOUT(parameters->deviceValue(key), std::optional<qint64>(7), 5000);
+        QVERIFY2(editor->text().startsWith(QLatin1String("5000 ")), qPrintable(editor->text()));
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTRY_VERIFY(valueIndex(key).data(RegisterTableModel::PendingRole).toBool());
+        QCOMPARE(parameters->pendingValue(key), std::optional<qint64>(50));
+    }
+
     void memoryTableSnapsAValueBetweenStepsVisibly()
     {
         connectAndScan();

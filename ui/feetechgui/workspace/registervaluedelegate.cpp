@@ -7,6 +7,8 @@
 
 namespace {
 
+constexpr char kFilled[] = "servobenchEditorFilled";
+
 // A number people type, not a choice, a bit field or a rate typed in bits per second.
 bool isPlainNumber(const feetech::Register &reg)
 {
@@ -36,6 +38,11 @@ QWidget *RegisterValueDelegate::createEditor(QWidget *parent, const QStyleOption
 
 void RegisterValueDelegate::setEditorData(QWidget *editor, const QModelIndex &index) const
 {
+    // Filled once, as it opens: the view fills it again at every change of the register (a live
+    // refresh of RAM, several a second), which would wipe out what is being typed.
+    if (editor->property(kFilled).toBool())
+        return;
+    editor->setProperty(kFilled, true);
     auto *spin = qobject_cast<RegisterSpinBox *>(editor);
     if (!spin) {
         QStyledItemDelegate::setEditorData(editor, index);
