@@ -127,6 +127,33 @@ private slots:
         QCOMPARE(bus->findServo(1)->value(u"moving"), 0);
     }
 
+    void aSweepFromHereTakesTheHornToItsStartGradually()
+    {
+        // The horn stands at 1500; the sweep 1000-2000 in 1 s turns 2000 step/s: a quarter of a
+        // second on the way down to 1000, every reading on the way, then the sweep as asked.
+        auto bus = armBus();
+        QVERIFY(bus->hand().turnServo(0, 1500));
+        bus->advanceTo(1000 * kMs);
+        QVERIFY(bus->hand().sweepServoFromHere(0, 1000, 2000, 1.0, 1));
+        int last = present(*bus, 1);
+        QCOMPARE(last, 1500);
+        for (qint64 ms = 1010; ms <= 1250; ms += 10) {
+            bus->advanceTo(ms * kMs);
+            const int now = present(*bus, 1);
+            QVERIFY2(now <= last && last - now <= 25,
+                     qPrintable(QStringLiteral("%1 to %2 at %3 ms").arg(last).arg(now).arg(ms)));
+            last = now;
+        }
+        QCOMPARE(present(*bus, 1), 1000);
+        bus->advanceTo(1500 * kMs);
+        QCOMPARE(bus->findServo(1)->value(u"present_speed"), 2000); // sweeping out now
+        bus->advanceTo(1750 * kMs);
+        QCOMPARE(present(*bus, 1), 2000);
+        bus->advanceTo(2600 * kMs);
+        QCOMPARE(present(*bus, 1), 1000); // once, then rests at FROM
+        QVERIFY(!bus->hand().isSweeping(0));
+    }
+
     void turnsInQuickSuccessionReportTheGesturesSpeed()
     {
         // A slider dragged: each turn soon after the last, the encoder sees the speed between.

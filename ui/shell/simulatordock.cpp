@@ -409,8 +409,8 @@ bool SimulatorDock::sweepSelected(int from, int to, double seconds, int cycles)
 {
     return onSelected(
         [=](sim::VirtualFeetechBus &bus, int index, sim::SimRefusal *why) {
-            return bus.hand().sweepServo(index, from, to, seconds, cycles, sim::Hand::Way::Direct,
-                                         why);
+            return bus.hand().sweepServoFromHere(index, from, to, seconds, cycles,
+                                                 sim::Hand::Way::Direct, why);
         },
         [=](int index) {
             return tr("The hand sweeps servo #%1 from %2 to %3 and back every %4 s.")

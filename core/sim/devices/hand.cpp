@@ -32,6 +32,15 @@ int maxPosition(const VirtualFeetechServo &servo)
     return fullCircle(servo) ? ServoMotion::kFullCircleSteps - 1 : ServoMotion::kScsMaxPosition;
 }
 
+// A sweep from and to the same place still gets there at a hand's pace.
+constexpr double kLeastApproachSpeed = 500.0; // steps a second
+
+// How fast the sweep's horn turns: there and back in one period.
+double approachSpeed(double from, double to, double periodUs)
+{
+    return 2.0 * std::abs(to - from) / (periodUs / 1e6);
+}
+
 bool fail(const SimRefusal &refusal, SimRefusal *why)
 {
     refused(refusal, why);
@@ -128,6 +137,18 @@ bool Hand::sweep(quint8 id, int from, int to, double seconds, int cycles, Way wa
 bool Hand::sweepServo(int index, int from, int to, double seconds, int cycles, Way way,
                       SimRefusal *why)
 {
+    return startSweep(index, from, to, seconds, cycles, way, false, why);
+}
+
+bool Hand::sweepServoFromHere(int index, int from, int to, double seconds, int cycles, Way way,
+                              SimRefusal *why)
+{
+    return startSweep(index, from, to, seconds, cycles, way, true, why);
+}
+
+bool Hand::startSweep(int index, int from, int to, double seconds, int cycles, Way way,
+                      bool fromHere, SimRefusal *why)
+{
     if (!checkServo(index, {from, to}, why))
         return false;
     if (!(seconds > 0.0) || seconds > kMaxSweepSeconds)
@@ -146,10 +167,18 @@ bool Hand::sweepServo(int index, int from, int to, double seconds, int cycles, W
     }
     letGo(index);
     // The hand holds the horn: from now on it moves between these angles, whatever the offset
-    // (and so the readings) become.
-    m_sweeps.push_back(Sweep {index, hornAngle(index, from), hornAngle(index, end), seconds * 1e6,
-                              cycles, m_bus.nowUs()});
-    place(index, m_sweeps.back().from);
+    // (and so the readings) become. From here, it gets to FROM first, straight along the
+    // numbers (never across the seam), as fast as it then sweeps.
+    Sweep sweep {index, hornAngle(index, from), hornAngle(index, end), seconds * 1e6, cycles};
+    sweep.approachFrom = fromHere ? m_bus.servo(index).physicalPosition() : sweep.from;
+    sweep.approachStartUs = m_bus.nowUs();
+    const double speed =
+        std::max(kLeastApproachSpeed, approachSpeed(sweep.from, sweep.to, sweep.periodUs));
+    sweep.startUs =
+        sweep.approachStartUs + qint64(std::abs(sweep.from - sweep.approachFrom) / speed * 1e6);
+    m_sweeps.push_back(sweep);
+    if (!fromHere)
+        place(index, sweep.from);
     return true;
 }
 
@@ -195,6 +224,18 @@ void Hand::advanceTo(qint64 nowUs)
         if (holdsTorque(sweep.index, &resisted)) {
             m_notes.append(HandTr::tr("the hand lets go: %1").arg(resisted.describe()));
             it = m_sweeps.erase(it);
+            continue;
+        }
+        if (nowUs < sweep.startUs) {
+            // On its way to FROM.
+            const double share = std::clamp(double(nowUs - sweep.approachStartUs)
+                                                / double(sweep.startUs - sweep.approachStartUs),
+                                            0.0, 1.0);
+            const double speed = (sweep.from - sweep.approachFrom)
+                / (double(sweep.startUs - sweep.approachStartUs) / 1e6);
+            place(sweep.index, sweep.approachFrom + (sweep.from - sweep.approachFrom) * share,
+                  speed);
+            ++it;
             continue;
         }
         const double elapsed = double(std::max<qint64>(0, nowUs - sweep.startUs));

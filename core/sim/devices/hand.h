@@ -49,6 +49,11 @@ public:
                SimRefusal *why = nullptr);
     bool sweepServo(int index, int from, int to, double seconds, int cycles = 0,
                     Way way = Way::Direct, SimRefusal *why = nullptr);
+    // The same, as a person's hand does it: the horn is first taken from where it stands to
+    // FROM, straight along the numbers at the sweep's speed, never in one jump (which a reader
+    // of the encoder takes for a turn across the seam).
+    bool sweepServoFromHere(int index, int from, int to, double seconds, int cycles = 0,
+                            Way way = Way::Direct, SimRefusal *why = nullptr);
     // Lets go of every servo; the number of sweeps stopped.
     int stop();
     bool isSweeping(int index) const;
@@ -74,7 +79,9 @@ private:
         double to = 0.0;
         double periodUs = 0.0;
         int cycles = 0;
-        qint64 startUs = 0;
+        qint64 startUs = 0; // when the horn is at FROM and the first sweep begins
+        double approachFrom = 0.0; // the horn's angle when the hand took it
+        qint64 approachStartUs = 0;
     };
     // The last turn of a horn by hand, while it may be part of a gesture.
     struct Turn
@@ -85,6 +92,8 @@ private:
         qint64 atUs = 0;
     };
 
+    bool startSweep(int index, int from, int to, double seconds, int cycles, Way way, bool fromHere,
+                    SimRefusal *why);
     // The servo exists, its torque is off and every position is in its range.
     bool checkServo(int index, std::initializer_list<int> positions, SimRefusal *why) const;
     bool holdsTorque(int index, SimRefusal *why) const;
