@@ -148,6 +148,10 @@ private slots:
         QCOMPARE(m_client->servos()->count(), 6);
         CalibrationWizard &calibration = *m_wizard->calibrationWizard();
         QVERIFY(calibration.isVisible());
+        // Not modal, as Calibrate arm is not: the Simulator dock (or anything else in the
+        // window) can still turn the new joint while it records.
+        QCOMPARE(calibration.windowModality(), Qt::NonModal);
+        QVERIFY(!QApplication::activeModalWidget());
         QCOMPARE(calibration.updatedFile(), m_file);
 
         // Only the elbow is ticked and shown, named as the file names it, and it stays so.

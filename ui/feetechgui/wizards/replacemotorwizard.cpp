@@ -451,9 +451,8 @@ void ReplaceMotorWizard::calibrate()
                 palette::Tone::Error);
         }
     }
-    // Application-modal, as the calibration wizard always is: nothing else may use the bus
-    // while the joint is recorded or its calibration written.
-    m_calibration->setWindowModality(Qt::ApplicationModal);
+    // Not modal, as Calibrate arm's wizard is not: the Simulator dock turns the joint, the
+    // Monitor shows it, while the joint is recorded.
     m_calibration->show();
     m_calibration->raise();
 }
