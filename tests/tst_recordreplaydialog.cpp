@@ -68,7 +68,7 @@ private:
         QVERIFY(dialog.recordButton()->isEnabled());
         QVERIFY(!dialog.playButton()->isEnabled()); // nothing to play yet
         dialog.recordButton()->click();
-        QVERIFY(dialog.stopButton()->isEnabled());
+        QTRY_VERIFY(dialog.stopButton()->isEnabled()); // once torque is off
         hand.start([&dialog] { return recordedFrames(dialog) > 0; });
         QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 10000);
         // A few frames more with the horns at rest.
@@ -133,6 +133,26 @@ private slots:
         QCOMPARE(simulatorValue(1, u"goal_position"), recorded.frames.last().at(0));
         QCOMPARE(simulatorValue(2, u"goal_position"), recorded.frames.last().at(1));
         QVERIFY(dialog.playButton()->isEnabled());
+    }
+
+    void recordSwitchesTorqueOffSoThatTheJointsCanBeMovedByHand()
+    {
+        startArm();
+        // After teleoperation or a replay, the arm holds itself.
+        setSimulatorValue(1, u"torque_enable", 1);
+        setSimulatorValue(2, u"torque_enable", 1);
+        RecordReplayDialog dialog(m_client.get());
+        dialog.show();
+        const int recordWidth = dialog.recordButton()->width();
+        const QPoint stopAt = dialog.stopButton()->mapTo(&dialog, QPoint());
+        record(dialog);
+        QCOMPARE(simulatorValue(1, u"torque_enable"), 0);
+        QCOMPARE(simulatorValue(2, u"torque_enable"), 0);
+        // The hand's turns were recorded: the joints were free.
+        QVERIFY(qAbs(dialog.recording().frames.last().at(0) - 1800) <= 5);
+        // Nothing moved on the dialog between its states.
+        QCOMPARE(dialog.recordButton()->width(), recordWidth);
+        QCOMPARE(dialog.stopButton()->mapTo(&dialog, QPoint()), stopAt);
     }
 
     void stopHoldsTheArmWhereItStands()

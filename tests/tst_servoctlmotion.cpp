@@ -449,10 +449,28 @@ private slots:
         QCOMPARE(simulatorValue(1, u"goal_position"), goal);
     }
 
+    void framesALittleBeyondTheAngleLimitsArePlayedAtTheLimit()
+    {
+        // The hand's overshoot: the last frame, 2160, is 10 steps past the limit of 2150.
+        startArm(2000, 1800);
+        setSimulatorValue(1, u"max_angle_limit", 2150);
+        const QString file = writeRecording(QStringLiteral("overshoot.csv"), 5, 0.1);
+        const auto result = servoctl({QStringLiteral("replay"), file});
+        QVERIFY2(result.exitCode == 0, qPrintable(result.err));
+        QVERIFY2(result.out.contains(QStringLiteral("1 position(s) a little past a joint's limit")),
+                 qPrintable(result.out));
+        const QVector<GoalFrame> frames = goalFrames(logPath());
+        QVERIFY(!frames.isEmpty());
+        QCOMPARE(frames.last().goals.value(1), 2150);
+        QCOMPARE(simulatorValue(1, u"goal_position"), 2150);
+    }
+
     void framesBeyondTheAngleLimitsAreRefusedBeforeAnythingMoves()
     {
+        // Frame 3 (2080) is within the overshoot allowed, frame 4 (2120) 70 steps past: no
+        // overshoot of a hand, but a recording of another arm.
         startArm(1000, 1700);
-        setSimulatorValue(1, u"max_angle_limit", 2100);
+        setSimulatorValue(1, u"max_angle_limit", 2050);
         const QString file = writeRecording(QStringLiteral("wide.csv"), 5, 0.1);
         const auto result = servoctl({QStringLiteral("replay"), file});
         QCOMPARE(result.exitCode, 2);

@@ -33,11 +33,16 @@ struct MotionReplay::Run
     int loop = 0;
     int sent = -1; // the frame of this loop sent last
     bool easing = false;
+    int clamped = 0; // goals a little past a joint's limits, played at the limit
 };
 
 namespace {
 
 constexpr double kNsPerSecond = 1e9;
+// How far past a joint's limit a recorded position may lie and still be played, at the limit:
+// a hand moving a joint to its end overshoots by a few steps (some 4° here); farther is no
+// overshoot but a recording of another arm, refused.
+constexpr qint64 kOvershootSteps = 50;
 const double kPi = std::acos(-1.0);
 
 // The frame's time on the run's clock, at the plan's speed.
@@ -126,6 +131,12 @@ void MotionReplay::begin(std::shared_ptr<Run> run)
             const qint32 goal = plan.frames.at(i).at(j);
             if (range->contains(goal))
                 continue;
+            if (goal >= range->minimum - kOvershootSteps
+                && goal <= range->maximum + kOvershootSteps) {
+                run->plan.frames[i][j] = qBound(range->minimum, goal, range->maximum);
+                ++run->clamped;
+                continue;
+            }
             end(run, OperationFailure::InvalidRequest,
                 FeetechSessionTr::tr(
                     "Frame %1 (at %2 s) asks %3 for %4, outside the positions it accepts "
@@ -258,8 +269,11 @@ void MotionReplay::endLoop(std::shared_ptr<Run> run)
         startEase(run, plan.frames.last());
         return;
     }
-    const QString played =
-        FeetechSessionTr::tr("Played %n frame(s)", nullptr, int(plan.frames.size()));
+    QString played = FeetechSessionTr::tr("Played %n frame(s)", nullptr, int(plan.frames.size()));
+    if (run->clamped > 0)
+        played += FeetechSessionTr::tr(" (%n position(s) a little past a joint's limit played at "
+                                       "the limit)",
+                                       nullptr, run->clamped);
     const QString loops = FeetechSessionTr::tr("%n time(s)", nullptr, plan.loops);
     if (!plan.release) {
         end(run, OperationFailure::None,

@@ -2,6 +2,7 @@
 #include "recordreplaydialog.h"
 
 #include "busclient.h"
+#include "jointnames.h"
 #include "operationreply.h"
 #include "palette.h"
 #include "servolist.h"
@@ -43,13 +44,19 @@ RecordReplayDialog::RecordReplayDialog(feetech::BusClient *client, QWidget *pare
     auto *joints = new QGroupBox(tr("Joints to record"), this);
     m_joints = new QListWidget(joints);
     m_joints->setObjectName(QStringLiteral("recordJoints"));
-    m_joints->setToolTip(tr("The servos whose positions are recorded; their torque is left as "
-                            "it is, so switch it off to move them by hand"));
+    m_joints->setToolTip(tr("The servos whose positions are recorded; Record switches their "
+                            "torque off so that they can be moved by hand"));
     auto *jointLayout = new QVBoxLayout(joints);
     jointLayout->addWidget(m_joints);
 
-    m_record = new QPushButton(tr("&Record"), this);
+    m_record = new QPushButton(tr("Torque off and &record"), this);
     m_record->setObjectName(QStringLiteral("recordButton"));
+    m_record->setToolTip(tr("Support the arm: torque goes off on the joints to record, so that "
+                            "you can move them by hand"));
+    // As wide as its widest text: the row does not move when it changes.
+    m_record->setMinimumWidth(std::max(
+        m_record->sizeHint().width(),
+        m_record->fontMetrics().horizontalAdvance(tr("Stop &recording").remove(u'&')) * 5 / 4));
     m_open = new QPushButton(tr("&Open…"), this);
     m_open->setObjectName(QStringLiteral("openRecordingButton"));
     m_save = new QPushButton(tr("&Save…"), this);
@@ -114,6 +121,9 @@ RecordReplayDialog::RecordReplayDialog(feetech::BusClient *client, QWidget *pare
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("recordReplayStatus"));
     m_status->setWordWrap(true);
+    // Two lines are kept for it: a longer sentence does not push the buttons around.
+    m_status->setMinimumHeight(m_status->fontMetrics().lineSpacing() * 2);
+    m_status->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
@@ -171,11 +181,15 @@ void RecordReplayDialog::fillJoints()
     const bool first = m_joints->count() == 0;
     m_joints->clear();
     const feetech::ServoList &servos = *m_client->servos();
+    // Named by joint where the arm matches a template, as in the tree and the Monitor.
+    const feetech::JointNames joints = feetech::JointNames::of(*m_client);
     for (int i = 0; i < servos.count(); ++i) {
         const feetech::ServoInfo &servo = servos.at(i).info;
-        auto *item = new QListWidgetItem(
-            tr("Servo %1 (%2, %3 bps)").arg(servo.id).arg(servo.model.name).arg(servo.baud),
-            m_joints);
+        auto *item = new QListWidgetItem(tr("%1 · %2 · %3 bps")
+                                             .arg(joints.label(servo.address()))
+                                             .arg(servo.model.name)
+                                             .arg(servo.baud),
+                                         m_joints);
         item->setData(kAddressRole, servo.id);
         item->setData(kBaudRole, servo.baud);
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
@@ -196,20 +210,66 @@ void RecordReplayDialog::startRecording()
         indexes.append(m_client->servos()->indexOf(
             {quint8(item->data(kAddressRole).toInt()), item->data(kBaudRole).toInt()}));
     }
-    feetech::Refusal refusal;
-    if (!m_capture->start(indexes, feetech::MotionCapture::kDefaultRateHz, &refusal)) {
-        showStatus(refusal.describe(), true);
+    if (indexes.isEmpty()) {
+        showStatus(feetech::Refusal(feetech::Refusal::Code::NoServoToMonitor).describe(), true);
         return;
     }
-    m_record->setText(tr("Stop &recording"));
-    showStatus(tr("Recording: move the joints by hand, then Stop."));
+    // Moved by hand means limp: a servo that holds its position (after teleoperation, a replay)
+    // would only fight the hand. Torque off is never a move.
+    m_recordIndexes = indexes;
+    m_torqueOffNext = 0;
+    showStatus(tr("Switching torque off on %n joint(s)…", nullptr, int(indexes.size())));
     updateButtons();
+    switchNextTorqueOff();
+}
+
+void RecordReplayDialog::switchNextTorqueOff()
+{
+    if (m_torqueOffNext < 0)
+        return;
+    if (m_torqueOffNext >= m_recordIndexes.size()) {
+        m_torqueOffNext = -1;
+        feetech::Refusal refusal;
+        if (!m_capture->start(m_recordIndexes, feetech::MotionCapture::kDefaultRateHz, &refusal)) {
+            showStatus(refusal.describe(), true);
+            updateButtons();
+            return;
+        }
+        m_record->setText(tr("Stop &recording"));
+        showStatus(tr("Recording: torque is off, move the joints by hand, then Stop."));
+        updateButtons();
+        return;
+    }
+    const int index = m_recordIndexes.at(m_torqueOffNext);
+    const feetech::ServoInfo &servo = m_client->servos()->at(index).info;
+    const QString name = feetech::JointNames::of(*m_client).label(servo.address());
+    const auto fail = [this, name](const QString &why) {
+        m_torqueOffNext = -1;
+        showStatus(
+            tr("Torque could not be switched off on %1: %2 Nothing is recorded.").arg(name, why),
+            true);
+        updateButtons();
+    };
+    const auto off = servo.table().torqueValue(feetech::TorqueMode::Off);
+    feetech::Refusal refusal;
+    feetech::OperationReply *reply = off
+        ? m_client->writeValues(index, {{QStringLiteral("torque_enable"), *off}}, &refusal)
+        : nullptr;
+    if (!reply)
+        return fail(off ? refusal.describe() : tr("its model has no torque enable."));
+    connect(reply, &feetech::OperationReply::finished, this,
+            [this, fail](const feetech::OperationResult &result) {
+                if (!result.ok)
+                    return fail(result.message);
+                ++m_torqueOffNext;
+                switchNextTorqueOff();
+            });
 }
 
 void RecordReplayDialog::stopRecording()
 {
     m_capture->stop(); // its stopped signal takes the recording
-    m_record->setText(tr("&Record"));
+    m_record->setText(tr("Torque off and &record"));
 }
 
 void RecordReplayDialog::onFramesRecorded(int frames)
@@ -344,9 +404,10 @@ void RecordReplayDialog::updateButtons()
     const bool connected = m_client->link()->isConnected();
     const bool recording = m_capture->isRecording();
     const bool playing = m_player->isPlaying();
-    m_joints->setEnabled(!recording && !playing);
-    m_record->setEnabled(connected && !playing && (recording || !m_client->isBusy()));
-    m_open->setEnabled(!recording && !playing);
+    const bool starting = m_torqueOffNext >= 0;
+    m_joints->setEnabled(!recording && !playing && !starting);
+    m_record->setEnabled(connected && !playing && !starting && (recording || !m_client->isBusy()));
+    m_open->setEnabled(!recording && !playing && !starting);
     m_save->setEnabled(!recording && !playing && !m_recording.isEmpty());
     m_play->setEnabled(connected && !recording && !playing && !m_recording.isEmpty()
                        && !m_client->isBusy());

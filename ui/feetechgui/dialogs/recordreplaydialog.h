@@ -59,7 +59,9 @@ protected:
 
 private:
     void fillJoints();
+    // Torque off on the joints to record (one at a time), then the recording starts.
     void startRecording();
+    void switchNextTorqueOff();
     void stopRecording();
     void play();
     void stop();
@@ -89,4 +91,6 @@ private:
     QPushButton *m_stop = nullptr;
     QProgressBar *m_progress = nullptr;
     QLabel *m_status = nullptr;
+    QVector<int> m_recordIndexes; // the joints a recording about to start takes
+    int m_torqueOffNext = -1; // which of them has its torque switched off now; -1: none
 };
