@@ -42,6 +42,9 @@ private slots:
         const QJsonObject summary = QJsonDocument::fromJson(result.out.toUtf8()).object();
         QVERIFY(summary[QStringLiteral("cycles")].toInt() > 20);
         QVERIFY(summary[QStringLiteral("held")].toBool());
+        // Joints mapped as LeRobot's SO arms map them unless told, and said so.
+        QCOMPARE(summary[QStringLiteral("norm_mode")].toString(), QStringLiteral("degrees"));
+        QVERIFY2(result.err.contains(QStringLiteral("use_degrees")), qPrintable(result.err));
 
         const auto goals = syncWrites(kGoalAddress, 2);
         const auto torque = syncWrites(kTorqueAddress, 1);

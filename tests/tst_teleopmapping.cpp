@@ -52,7 +52,7 @@ private slots:
                                   motor(QStringLiteral("gripper"), 6, 2000, 2400)},
                                  {motor(QStringLiteral("gripper"), 16, 0, 1000),
                                   motor(QStringLiteral("shoulder_pan"), 11, 500, 1500, 1)},
-                                 &missing);
+                                 &missing, TeleopMapping::NormMode::RangeM100_100);
         QVERIFY(mapping);
         QCOMPARE(mapping->joints().size(), 2);
         QCOMPARE(mapping->joints().at(0).leader.id, 11); // in the follower's order, by name
@@ -60,6 +60,35 @@ private slots:
         QCOMPARE(mapping->followerGoal(0, 1250), 1500);
         QCOMPARE(mapping->followerGoal(1, 500), 2200);
         QCOMPARE(mapping->followerGoal(1, 9999), 2400);
+    }
+
+    // LeRobot's SO arms' default (use_degrees): the same angle from each range's middle, not
+    // the same share of each range; the gripper still maps share onto share.
+    void inDegreesAJointKeepsItsAngleFromTheMiddleOfEachRange()
+    {
+        const auto mapping =
+            TeleopMapping::match({motor(QStringLiteral("shoulder_pan"), 1, 1000, 3000),
+                                  motor(QStringLiteral("gripper"), 6, 2000, 2400)},
+                                 {motor(QStringLiteral("shoulder_pan"), 11, 500, 1500, 1),
+                                  motor(QStringLiteral("gripper"), 16, 0, 1000)},
+                                 nullptr);
+        QVERIFY(mapping);
+        QCOMPARE(mapping->normMode(), TeleopMapping::kDefaultNormMode);
+        QCOMPARE(TeleopMapping::kDefaultNormMode, TeleopMapping::NormMode::Degrees);
+        // 400 steps past the leader's middle (1000): 400 past the follower's (2000), where range
+        // onto range would send it 800 past; drive_mode plays no part in LeRobot's degrees.
+        QVERIFY(qAbs(mapping->followerGoal(0, 1400) - 2400) <= 1);
+        QVERIFY(qAbs(mapping->followerGoal(0, 700) - 1700) <= 1);
+        QCOMPARE(mapping->followerGoal(0, 1000), 2000);
+        // Not clamped to the leader's range (LeRobot does not); within the follower's.
+        QCOMPARE(mapping->followerGoal(0, 3000), 3000);
+        QCOMPARE(mapping->followerGoal(1, 500), 2200);
+        for (const auto mode :
+             {TeleopMapping::NormMode::Degrees, TeleopMapping::NormMode::RangeM100_100})
+            QCOMPARE(TeleopMapping::normModeFromKey(TeleopMapping::normModeKey(mode)), mode);
+        QCOMPARE(TeleopMapping::normModeKey(TeleopMapping::NormMode::Degrees),
+                 QStringLiteral("degrees"));
+        QVERIFY(!TeleopMapping::normModeFromKey(u"radians"));
     }
 
     void aJointOnlyOneFileNamesIsMissing()

@@ -122,10 +122,12 @@ const char *const kUsage = QT_TRANSLATE_NOOP(
     "                                         holds the arm where it is\n"
     "  feetech teleop --leader PORT --calibration FILE --leader-calibration FILE\n"
     "                 [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]\n"
-    "                 [--release]\n"
+    "                 [--release] [--norm-mode degrees|range_m100_100]\n"
     "                                         the leader arm on PORT drives this follower,\n"
     "                                         joints matched by name; Ctrl-C holds;\n"
-    "                                         --record: the follower's goals, for replay\n"
+    "                                         --record: the follower's goals, for replay;\n"
+    "                                         --norm-mode: as LeRobot maps joints (degrees,\n"
+    "                                         its use_degrees: the default)\n"
     "  share --link PATH [--record FILE] [--watch] [--duration S]\n"
     "                                         stand between another program and the servos:\n"
     "                                         it opens PATH, every byte is forwarded; --json\n"
@@ -187,6 +189,7 @@ public:
                  QStringLiteral("calibration"),
                  QStringLiteral("leader-calibration"),
                  QStringLiteral("max-speed"),
+                 QStringLiteral("norm-mode"),
                  QStringLiteral("update"),
                  QStringLiteral("speed"),
                  QStringLiteral("ease"),

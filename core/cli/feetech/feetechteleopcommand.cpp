@@ -112,7 +112,7 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
                  {QStringLiteral("leader"), QStringLiteral("calibration"),
                   QStringLiteral("leader-calibration"), QStringLiteral("rate"),
                   QStringLiteral("duration"), QStringLiteral("max-speed"), QStringLiteral("record"),
-                  QStringLiteral("release")});
+                  QStringLiteral("release"), QStringLiteral("norm-mode")});
     expectOperands(what, operands, 0, {});
     for (const char *option : {"port", "leader", "calibration", "leader-calibration"}) {
         if (!m_args.has(QLatin1String(option)))
@@ -137,6 +137,16 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     const double maxSpeed = m_args.has(QStringLiteral("max-speed"))
         ? double(integerOption(m_args, QStringLiteral("max-speed"), 1, 720))
         : feetech::TeleopLoop::kDefaultMaxSpeed;
+    // LeRobot's names for how body joints map; its SO arms' default unless told.
+    auto normMode = feetech::TeleopMapping::kDefaultNormMode;
+    if (m_args.has(QStringLiteral("norm-mode"))) {
+        const auto named =
+            feetech::TeleopMapping::normModeFromKey(m_args.value(QStringLiteral("norm-mode")));
+        if (!named)
+            throw UsageError {ServoctlTr::tr("--norm-mode must be degrees (LeRobot's use_degrees, "
+                                             "the default) or range_m100_100")};
+        normMode = *named;
+    }
     const std::optional<double> duration = durationOption(m_args);
     const bool release = m_args.flag(QStringLiteral("release"));
     // --record FILE: the follower's goals, as `feetech replay` plays them back on it.
@@ -154,7 +164,8 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     if (!leaderMotors)
         throw UsageError {error.describe()};
     QStringList missing;
-    const auto mapping = feetech::TeleopMapping::match(*followerMotors, *leaderMotors, &missing);
+    const auto mapping =
+        feetech::TeleopMapping::match(*followerMotors, *leaderMotors, &missing, normMode);
     if (!mapping)
         throw UsageError {ServoctlTr::tr("the two files name different joints: %1")
                               .arg(missing.join(QStringLiteral(", ")))};
@@ -195,6 +206,13 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     m_output.err << ServoctlTr::tr("servoctl: the follower holds; it moves to the leader's pose at "
                                    "%1°/s at most, then follows. Ctrl-C stops (it holds).")
                         .arg(maxSpeed)
+                 << '\n'
+                 << (normMode == feetech::TeleopMapping::NormMode::Degrees
+                         ? ServoctlTr::tr("servoctl: joints map in degrees from the middle of "
+                                          "their ranges (LeRobot's use_degrees, norm mode "
+                                          "degrees)")
+                         : ServoctlTr::tr("servoctl: joints map range onto range (LeRobot's norm "
+                                          "mode range_m100_100)"))
                  << '\n';
     m_output.err.flush();
 
@@ -275,12 +293,14 @@ int FeetechTeleopCommand::teleop(const QString &what, const QStringList &operand
     const double medianMs = teleop.medianLatencyMs();
     if (m_output.json)
         printJson(m_output.out,
-                  QJsonObject {{QStringLiteral("cycles"), writes},
-                               {QStringLiteral("rate_hz"), writes / std::max(seconds, 1e-3)},
-                               {QStringLiteral("median_latency_ms"), medianMs},
-                               {QStringLiteral("released"), release && stopped},
-                               {QStringLiteral("held"), !release && stopped},
-                               {QStringLiteral("lost"), linkLost}});
+                  QJsonObject {
+                      {QStringLiteral("cycles"), writes},
+                      {QStringLiteral("norm_mode"), feetech::TeleopMapping::normModeKey(normMode)},
+                      {QStringLiteral("rate_hz"), writes / std::max(seconds, 1e-3)},
+                      {QStringLiteral("median_latency_ms"), medianMs},
+                      {QStringLiteral("released"), release && stopped},
+                      {QStringLiteral("held"), !release && stopped},
+                      {QStringLiteral("lost"), linkLost}});
     m_output.err << ServoctlTr::tr(
                         "servoctl: %1 cycle(s) in %2 s (%3 per second), leader to follower "
                         "%4 ms (median)")

@@ -73,7 +73,8 @@ bool Teleoperation::start(const TeleopSettings &settings)
     if (!leaderMotors)
         return refuse(Problem::UnreadableFile, error.describe());
     QStringList missing;
-    const auto mapping = TeleopMapping::match(*followerMotors, *leaderMotors, &missing);
+    const auto mapping =
+        TeleopMapping::match(*followerMotors, *leaderMotors, &missing, settings.normMode);
     if (!mapping)
         return refuse(
             Problem::DifferentJoints,

@@ -25,6 +25,7 @@ struct TeleopSettings
     QString leaderCalibration;
     double rateHz = TeleopLoop::kDefaultRateHz;
     double maxSpeed = TeleopLoop::kDefaultMaxSpeed; // degrees per second
+    TeleopMapping::NormMode normMode = TeleopMapping::kDefaultNormMode;
 };
 
 // Start refuses what cannot work before anything is sent; then both arms are checked against

@@ -44,11 +44,26 @@ qint32 TeleopMapping::position(const LeRobotMotor &motor, bool gripper, double n
                       std::min(motor.rangeMax, kLeRobotMaximumPosition));
 }
 
+QString TeleopMapping::normModeKey(NormMode mode)
+{
+    return mode == NormMode::Degrees ? QStringLiteral("degrees") : QStringLiteral("range_m100_100");
+}
+
+std::optional<TeleopMapping::NormMode> TeleopMapping::normModeFromKey(QStringView key)
+{
+    for (const NormMode mode : {NormMode::Degrees, NormMode::RangeM100_100}) {
+        if (key == normModeKey(mode))
+            return mode;
+    }
+    return std::nullopt;
+}
+
 std::optional<TeleopMapping> TeleopMapping::match(const QVector<LeRobotMotor> &follower,
                                                   const QVector<LeRobotMotor> &leader,
-                                                  QStringList *missing)
+                                                  QStringList *missing, NormMode mode)
 {
     TeleopMapping mapping;
+    mapping.m_mode = mode;
     QStringList lacking;
     for (const LeRobotMotor &motor : follower) {
         const auto found = std::find_if(leader.begin(), leader.end(), [&](const auto &other) {
@@ -75,8 +90,18 @@ std::optional<TeleopMapping> TeleopMapping::match(const QVector<LeRobotMotor> &f
 qint32 TeleopMapping::followerGoal(int joint, qint32 leaderPosition) const
 {
     const TeleopJoint &pair = m_joints.at(joint);
-    return position(pair.follower, pair.gripper,
-                    normalise(pair.leader, pair.gripper, leaderPosition));
+    if (pair.gripper || m_mode == NormMode::RangeM100_100)
+        return position(pair.follower, pair.gripper,
+                        normalise(pair.leader, pair.gripper, leaderPosition));
+    // LeRobot's DEGREES: (position − middle) × 360 / 4095 on the leader, back with the same
+    // scale around the follower's middle, truncated as its int() does.
+    constexpr double kStepsPerTurn = kLeRobotMaximumPosition; // the STS3215's 4096 steps less 1
+    const double leaderMiddle = (pair.leader.rangeMin + pair.leader.rangeMax) / 2.0;
+    const double degrees = (leaderPosition - leaderMiddle) * 360.0 / kStepsPerTurn;
+    const double followerMiddle = (pair.follower.rangeMin + pair.follower.rangeMax) / 2.0;
+    const auto goal = qint32(std::trunc(degrees * kStepsPerTurn / 360.0 + followerMiddle));
+    return std::clamp(goal, pair.follower.rangeMin,
+                      std::min(pair.follower.rangeMax, kLeRobotMaximumPosition));
 }
 
 } // namespace feetech

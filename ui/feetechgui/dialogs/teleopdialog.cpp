@@ -35,6 +35,7 @@ const QString kFollowerFileKey = QStringLiteral("teleop/followerCalibration");
 const QString kLeaderFileKey = QStringLiteral("teleop/leaderCalibration");
 const QString kMaxSpeedKey = QStringLiteral("teleop/maxSpeed");
 const QString kRateKey = QStringLiteral("teleop/rate");
+const QString kNormModeKey = QStringLiteral("teleop/normMode");
 
 // The rate and latency change every cycle: read four times a second.
 constexpr int kFiguresIntervalMs = 250;
@@ -118,7 +119,20 @@ TeleopDialog::TeleopDialog(feetech::BusClient *follower, QWidget *parent)
     m_rate->setRange(1, 200);
     m_rate->setSuffix(tr(" Hz"));
     m_rate->setValue(settings.value(kRateKey, int(feetech::TeleopLoop::kDefaultRateHz)).toInt());
-    m_inputs += {m_leaderPort, m_followerFile, m_leaderFile, m_maxSpeed, m_rate};
+    m_normMode = new QComboBox(arms);
+    m_normMode->setObjectName(QStringLiteral("teleopNormMode"));
+    using NormMode = feetech::TeleopMapping::NormMode;
+    m_normMode->addItem(tr("Degrees from the middle (LeRobot's use_degrees, its default)"),
+                        feetech::TeleopMapping::normModeKey(NormMode::Degrees));
+    m_normMode->addItem(tr("Range onto range, −100 to 100 (LeRobot's range_m100_100)"),
+                        feetech::TeleopMapping::normModeKey(NormMode::RangeM100_100));
+    m_normMode->setCurrentIndex(
+        std::max(0, m_normMode->findData(settings.value(kNormModeKey).toString())));
+    m_normMode->setToolTip(tr("How a leader's joint position becomes the follower's goal, as "
+                              "LeRobot's teleoperation does it: the same angle from the middle "
+                              "of each arm's range, or the same share of each range. The gripper "
+                              "is always share of range."));
+    m_inputs += {m_leaderPort, m_followerFile, m_leaderFile, m_maxSpeed, m_rate, m_normMode};
     m_rate->setToolTip(tr("How often the leader is read; each reading is one write to the "
                           "follower, as fast as the follower's bus takes them"));
 
@@ -129,6 +143,7 @@ TeleopDialog::TeleopDialog(feetech::BusClient *follower, QWidget *parent)
     form->addRow(tr("Leader's calibration:"), leaderFileRow);
     form->addRow(tr("Maximum speed:"), m_maxSpeed);
     form->addRow(tr("Rate:"), m_rate);
+    form->addRow(tr("Joints map:"), m_normMode);
 
     m_start = new QPushButton(tr("&Start"), this);
     m_start->setObjectName(QStringLiteral("teleopStart"));
@@ -267,7 +282,10 @@ void TeleopDialog::start()
     run.leaderCalibration = m_leaderFile->text().trimmed();
     run.maxSpeed = m_maxSpeed->value();
     run.rateHz = m_rate->value();
+    run.normMode = feetech::TeleopMapping::normModeFromKey(m_normMode->currentData().toString())
+                       .value_or(feetech::TeleopMapping::kDefaultNormMode);
     QSettings settings;
+    settings.setValue(kNormModeKey, m_normMode->currentData());
     settings.setValue(kLeaderPortKey, chosen);
     settings.setValue(kFollowerFileKey, run.followerCalibration);
     settings.setValue(kLeaderFileKey, run.leaderCalibration);

@@ -45,6 +45,7 @@ public:
     QLineEdit *leaderFileEdit() const { return m_leaderFile; }
     QSpinBox *maxSpeedBox() const { return m_maxSpeed; }
     QSpinBox *rateBox() const { return m_rate; }
+    QComboBox *normModeBox() const { return m_normMode; }
     QPushButton *startButton() const { return m_start; }
     QPushButton *stopButton() const { return m_stopButton; }
     QLabel *statusLabel() const { return m_status; }
@@ -84,6 +85,7 @@ private:
     QLineEdit *m_leaderFile = nullptr;
     QSpinBox *m_maxSpeed = nullptr;
     QSpinBox *m_rate = nullptr;
+    QComboBox *m_normMode = nullptr; // how joints map, as LeRobot names it
     QPushButton *m_start = nullptr;
     QPushButton *m_stopButton = nullptr;
     QGridLayout *m_jointGrid = nullptr;
