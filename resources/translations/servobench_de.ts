@@ -375,8 +375,12 @@
         <translation>Der Adapter ist zurück: die Freigabe läuft weiter.</translation>
     </message>
     <message>
-        <source>%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; %5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s).</source>
-        <translation>%1 Frame(s) (%2 Bytes) vom Programm, %3 Frame(s) (%4 Bytes) zurück; %5 Anfrage(n) unbeantwortet, %6 verstümmelte(s) Byte(s), %7 Warnung(en), %8 Beobachtungs-Lesevorgang/-vorgänge.</translation>
+        <source>The recording stopped after %1 line(s): %2. The share goes on.</source>
+        <translation>Die Aufzeichnung endete nach %1 Zeile(n): %2. Die Freigabe läuft weiter.</translation>
+    </message>
+    <message>
+        <source>%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; %5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s), %9 request(s) not sent because the program had sent the next.</source>
+        <translation>%1 Frame(s) (%2 Bytes) vom Programm, %3 Frame(s) (%4 Bytes) zurück; %5 Anfrage(n) unbeantwortet, %6 verstümmelte(s) Byte(s), %7 Warnung(en), %8 Beobachtungs-Lesevorgang/-vorgänge, %9 Anfrage(n) nicht gesendet, weil das Programm schon die nächste gesendet hatte.</translation>
     </message>
 </context>
 <context>
@@ -3000,6 +3004,13 @@
     <message>
         <source>Not while the bus is shared with another program: this would change the port&apos;s rate under it. Stop sharing first.</source>
         <translation>Nicht, solange der Bus mit einem anderen Programm geteilt wird: Dies würde ihm die Baudrate des Ports unbemerkt ändern. Beenden Sie zuerst die Freigabe.</translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n position(s) a little past a joint&apos;s limit played at the limit)</source>
+        <translation>
+            <numerusform> (%n Position knapp hinter der Grenze eines Gelenks an der Grenze gespielt)</numerusform>
+            <numerusform> (%n Positionen knapp hinter der Grenze eines Gelenks an der Grenze gespielt)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6483,14 +6494,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>Aufzuzeichnende Gelenke</translation>
     </message>
     <message>
-        <source>The servos whose positions are recorded; their torque is left as it is, so switch it off to move them by hand</source>
-        <translation>Die Servos, deren Positionen aufgezeichnet werden; ihr Drehmoment bleibt, wie es ist: Schalten Sie es ab, um sie von Hand zu bewegen</translation>
-    </message>
-    <message>
-        <source>&amp;Record</source>
-        <translation>&amp;Aufzeichnen</translation>
-    </message>
-    <message>
         <source>&amp;Open…</source>
         <translation>&amp;Öffnen…</translation>
     </message>
@@ -6566,16 +6569,8 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         </translation>
     </message>
     <message>
-        <source>Servo %1 (%2, %3 bps)</source>
-        <translation>Servo %1 (%2, %3 bps)</translation>
-    </message>
-    <message>
         <source>Stop &amp;recording</source>
         <translation>Aufzeichnung &amp;beenden</translation>
-    </message>
-    <message>
-        <source>Recording: move the joints by hand, then Stop.</source>
-        <translation>Aufzeichnung läuft: Bewegen Sie die Gelenke von Hand, dann „Stopp“.</translation>
     </message>
     <message numerus="yes">
         <source>Recording: %n frame(s), %1 s</source>
@@ -6622,6 +6617,41 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>Saved to %1.</source>
         <translation>In %1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>The servos whose positions are recorded; Record switches their torque off so that they can be moved by hand</source>
+        <translation>Die Servos, deren Positionen aufgezeichnet werden; Aufzeichnen schaltet ihr Drehmoment ab, damit sie von Hand bewegt werden können</translation>
+    </message>
+    <message>
+        <source>Torque off and &amp;record</source>
+        <translation>Drehmoment aus und &amp;aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Support the arm: torque goes off on the joints to record, so that you can move them by hand</source>
+        <translation>Halten Sie den Arm: Das Drehmoment der aufzuzeichnenden Gelenke geht aus, damit Sie sie von Hand bewegen können</translation>
+    </message>
+    <message>
+        <source>%1 · %2 · %3 bps</source>
+        <translation>%1 · %2 · %3 bps</translation>
+    </message>
+    <message numerus="yes">
+        <source>Switching torque off on %n joint(s)…</source>
+        <translation>
+            <numerusform>Drehmoment von %n Gelenk wird abgeschaltet…</numerusform>
+            <numerusform>Drehmoment von %n Gelenken wird abgeschaltet…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Recording: torque is off, move the joints by hand, then Stop.</source>
+        <translation>Aufzeichnung: Das Drehmoment ist aus; bewegen Sie die Gelenke von Hand, dann Stopp.</translation>
+    </message>
+    <message>
+        <source>Torque could not be switched off on %1: %2 Nothing is recorded.</source>
+        <translation>Das Drehmoment von %1 ließ sich nicht abschalten: %2 Es wird nichts aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>its model has no torque enable.</source>
+        <translation>sein Modell hat keine Drehmomentfreigabe.</translation>
     </message>
 </context>
 <context>
@@ -8322,6 +8352,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <source>alert %1 at ID %2: %3</source>
         <translation>Warnung %1 bei ID %2: %3</translation>
     </message>
+    <message>
+        <source>Output: %1.</source>
+        <translation>Ausgabe: %1.</translation>
+    </message>
 </context>
 <context>
     <name>ShareDialog</name>
@@ -9025,6 +9059,22 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
             <numerusform>Schleife: nach %n Zyklus gestoppt; Führungs- zu Folgearm %1 ms (Median)</numerusform>
             <numerusform>Schleife: nach %n Zyklen gestoppt; Führungs- zu Folgearm %1 ms (Median)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Degrees from the middle (LeRobot&apos;s use_degrees, its default)</source>
+        <translation>Grad ab der Mitte (LeRobots use_degrees, sein Standard)</translation>
+    </message>
+    <message>
+        <source>Range onto range, −100 to 100 (LeRobot&apos;s range_m100_100)</source>
+        <translation>Bereich auf Bereich, −100 bis 100 (LeRobots range_m100_100)</translation>
+    </message>
+    <message>
+        <source>How a leader&apos;s joint position becomes the follower&apos;s goal, as LeRobot&apos;s teleoperation does it: the same angle from the middle of each arm&apos;s range, or the same share of each range. The gripper is always share of range.</source>
+        <translation>Wie die Gelenkposition des Führungsarms zum Ziel des Folgearms wird, wie LeRobots Teleoperation es tut: derselbe Winkel ab der Mitte des Bereichs jedes Arms oder derselbe Anteil jedes Bereichs. Der Greifer folgt immer dem Anteil des Bereichs.</translation>
+    </message>
+    <message>
+        <source>Joints map:</source>
+        <translation>Gelenkzuordnung:</translation>
     </message>
 </context>
 <context>
@@ -10753,6 +10803,25 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <source>servoctl: the follower could not be reached to stop it</source>
         <translation>servoctl: Der Folgearm war zum Anhalten nicht erreichbar</translation>
     </message>
+    <message numerus="yes">
+        <source>dropped %Ln line(s) nobody read</source>
+        <translation>
+            <numerusform>%Ln Zeile verworfen, die niemand las</numerusform>
+            <numerusform>%Ln Zeilen verworfen, die niemand las</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>--norm-mode must be degrees (LeRobot&apos;s use_degrees, the default) or range_m100_100</source>
+        <translation>--norm-mode muss degrees (LeRobots use_degrees, der Standard) oder range_m100_100 sein</translation>
+    </message>
+    <message>
+        <source>servoctl: joints map in degrees from the middle of their ranges (LeRobot&apos;s use_degrees, norm mode degrees)</source>
+        <translation>servoctl: Gelenke werden in Grad ab der Mitte ihrer Bereiche zugeordnet (LeRobots use_degrees, Normierung degrees)</translation>
+    </message>
+    <message>
+        <source>servoctl: joints map range onto range (LeRobot&apos;s norm mode range_m100_100)</source>
+        <translation>servoctl: Gelenke werden Bereich auf Bereich zugeordnet (LeRobots Normierung range_m100_100)</translation>
+    </message>
     <message>
         <source>usage: servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
 
@@ -10843,10 +10912,12 @@ commands:
                                          holds the arm where it is
   feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
                  [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
-                 [--release]
+                 [--release] [--norm-mode degrees|range_m100_100]
                                          the leader arm on PORT drives this follower,
                                          joints matched by name; Ctrl-C holds;
-                                         --record: the follower&apos;s goals, for replay
+                                         --record: the follower&apos;s goals, for replay;
+                                         --norm-mode: as LeRobot maps joints (degrees,
+                                         its use_degrees: the default)
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          stand between another program and the servos:
                                          it opens PATH, every byte is forwarded; --json
@@ -10958,10 +11029,12 @@ Befehle:
                                          hält den Arm, wo er ist
   feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
                  [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
-                 [--release]
+                 [--release] [--norm-mode degrees|range_m100_100]
                                          der Führungsarm an PORT steuert diesen Folgearm,
                                          Gelenke nach Namen zugeordnet; Ctrl-C hält;
-                                         --record: die Ziele des Folgearms, zur Wiedergabe
+                                         --record: die Ziele des Folgearms, zur Wiedergabe;
+                                         --norm-mode: wie LeRobot Gelenke zuordnet
+                                         (degrees, sein use_degrees: der Standard)
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          zwischen einem anderen Programm und den Servos:
                                          es öffnet PATH, jedes Byte wird weitergeleitet;
@@ -10984,6 +11057,10 @@ Der Überlast- und Temperaturschutz überwacht jedes Servo, das ein Befehl anste
 
 Exit-Status: 0 erledigt, 1 Geräte- oder Verbindungsfehler, 2 Aufruffehler (nichts gesendet)
 </translation>
+    </message>
+    <message>
+        <source>ID %1: %2</source>
+        <translation>ID %1: %2</translation>
     </message>
 </context>
 <context>

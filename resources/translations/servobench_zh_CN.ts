@@ -374,8 +374,12 @@
         <translation>适配器已恢复：共享继续。</translation>
     </message>
     <message>
-        <source>%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; %5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s).</source>
-        <translation>来自该程序 %1 帧（%2 字节），返回给它 %3 帧（%4 字节）；%5 个请求无应答，%6 个乱码字节，%7 条警报，%8 次监视读取。</translation>
+        <source>The recording stopped after %1 line(s): %2. The share goes on.</source>
+        <translation>记录在 %1 行后停止：%2。共享继续进行。</translation>
+    </message>
+    <message>
+        <source>%1 frame(s) (%2 bytes) from the program, %3 frame(s) (%4 bytes) back to it; %5 request(s) unanswered, %6 garbled byte(s), %7 alert(s), %8 watch read(s), %9 request(s) not sent because the program had sent the next.</source>
+        <translation>来自程序 %1 帧（%2 字节），返回给它 %3 帧（%4 字节）；%5 个请求无应答，%6 个乱码字节，%7 条警报，%8 次监视读取，%9 个请求因程序已发出下一个而未发送。</translation>
     </message>
 </context>
 <context>
@@ -2982,6 +2986,12 @@
     <message>
         <source>Not while the bus is shared with another program: this would change the port&apos;s rate under it. Stop sharing first.</source>
         <translation>总线与另一个程序共享期间不能执行此操作：这会在该程序不知情的情况下更改端口的波特率。请先停止共享。</translation>
+    </message>
+    <message numerus="yes">
+        <source> (%n position(s) a little past a joint&apos;s limit played at the limit)</source>
+        <translation>
+            <numerusform>（%n 个略超出关节限位的位置按限位值回放）</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6449,14 +6459,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>要记录的关节</translation>
     </message>
     <message>
-        <source>The servos whose positions are recorded; their torque is left as it is, so switch it off to move them by hand</source>
-        <translation>记录这些舵机的位置；其扭矩保持不变，因此要手动移动它们，请先关闭扭矩</translation>
-    </message>
-    <message>
-        <source>&amp;Record</source>
-        <translation>记录(&amp;R)</translation>
-    </message>
-    <message>
         <source>&amp;Open…</source>
         <translation>打开(&amp;O)…</translation>
     </message>
@@ -6531,16 +6533,8 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         </translation>
     </message>
     <message>
-        <source>Servo %1 (%2, %3 bps)</source>
-        <translation>舵机 %1（%2，%3 bps）</translation>
-    </message>
-    <message>
         <source>Stop &amp;recording</source>
         <translation>停止记录(&amp;R)</translation>
-    </message>
-    <message>
-        <source>Recording: move the joints by hand, then Stop.</source>
-        <translation>正在记录：请手动移动关节，然后点“停止”。</translation>
     </message>
     <message numerus="yes">
         <source>Recording: %n frame(s), %1 s</source>
@@ -6585,6 +6579,40 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Saved to %1.</source>
         <translation>已保存到 %1。</translation>
+    </message>
+    <message>
+        <source>The servos whose positions are recorded; Record switches their torque off so that they can be moved by hand</source>
+        <translation>要记录位置的舵机；“录制”会关闭它们的扭矩，以便用手移动</translation>
+    </message>
+    <message>
+        <source>Torque off and &amp;record</source>
+        <translation>关闭扭矩并录制(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Support the arm: torque goes off on the joints to record, so that you can move them by hand</source>
+        <translation>请扶住机械臂：要录制的关节将关闭扭矩，以便您用手移动它们</translation>
+    </message>
+    <message>
+        <source>%1 · %2 · %3 bps</source>
+        <translation>%1 · %2 · %3 bps</translation>
+    </message>
+    <message numerus="yes">
+        <source>Switching torque off on %n joint(s)…</source>
+        <translation>
+            <numerusform>正在关闭 %n 个关节的扭矩…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Recording: torque is off, move the joints by hand, then Stop.</source>
+        <translation>正在录制：扭矩已关闭，请用手移动关节，然后点击停止。</translation>
+    </message>
+    <message>
+        <source>Torque could not be switched off on %1: %2 Nothing is recorded.</source>
+        <translation>无法关闭 %1 的扭矩：%2 未录制任何内容。</translation>
+    </message>
+    <message>
+        <source>its model has no torque enable.</source>
+        <translation>其型号没有扭矩开关。</translation>
     </message>
 </context>
 <context>
@@ -8275,6 +8303,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <source>alert %1 at ID %2: %3</source>
         <translation>警报 %1，ID %2：%3</translation>
     </message>
+    <message>
+        <source>Output: %1.</source>
+        <translation>输出：%1。</translation>
+    </message>
 </context>
 <context>
     <name>ShareDialog</name>
@@ -8975,6 +9007,22 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>
             <numerusform>循环：%n 个周期后已停止；主臂到从臂 %1 ms（中位数）</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Degrees from the middle (LeRobot&apos;s use_degrees, its default)</source>
+        <translation>距中点的角度（LeRobot 的 use_degrees，其默认）</translation>
+    </message>
+    <message>
+        <source>Range onto range, −100 to 100 (LeRobot&apos;s range_m100_100)</source>
+        <translation>范围对范围，−100 到 100（LeRobot 的 range_m100_100）</translation>
+    </message>
+    <message>
+        <source>How a leader&apos;s joint position becomes the follower&apos;s goal, as LeRobot&apos;s teleoperation does it: the same angle from the middle of each arm&apos;s range, or the same share of each range. The gripper is always share of range.</source>
+        <translation>主臂的关节位置如何变成从臂的目标，与 LeRobot 的遥操作相同：距各臂范围中点的相同角度，或各范围中的相同比例。夹爪始终按范围比例。</translation>
+    </message>
+    <message>
+        <source>Joints map:</source>
+        <translation>关节映射：</translation>
     </message>
 </context>
 <context>
@@ -10689,6 +10737,24 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <source>servoctl: the follower could not be reached to stop it</source>
         <translation>servoctl：无法连接从臂以使其停止</translation>
     </message>
+    <message numerus="yes">
+        <source>dropped %Ln line(s) nobody read</source>
+        <translation>
+            <numerusform>丢弃了 %Ln 行无人读取的输出</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>--norm-mode must be degrees (LeRobot&apos;s use_degrees, the default) or range_m100_100</source>
+        <translation>--norm-mode 必须是 degrees（LeRobot 的 use_degrees，默认）或 range_m100_100</translation>
+    </message>
+    <message>
+        <source>servoctl: joints map in degrees from the middle of their ranges (LeRobot&apos;s use_degrees, norm mode degrees)</source>
+        <translation>servoctl：关节按距其范围中点的角度映射（LeRobot 的 use_degrees，归一化模式 degrees）</translation>
+    </message>
+    <message>
+        <source>servoctl: joints map range onto range (LeRobot&apos;s norm mode range_m100_100)</source>
+        <translation>servoctl：关节按范围对范围映射（LeRobot 的归一化模式 range_m100_100）</translation>
+    </message>
     <message>
         <source>usage: servoctl [--port PATH] [--baud N] [--json] [--trace] &lt;command&gt; [args]
 
@@ -10779,10 +10845,12 @@ commands:
                                          holds the arm where it is
   feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
                  [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
-                 [--release]
+                 [--release] [--norm-mode degrees|range_m100_100]
                                          the leader arm on PORT drives this follower,
                                          joints matched by name; Ctrl-C holds;
-                                         --record: the follower&apos;s goals, for replay
+                                         --record: the follower&apos;s goals, for replay;
+                                         --norm-mode: as LeRobot maps joints (degrees,
+                                         its use_degrees: the default)
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          stand between another program and the servos:
                                          it opens PATH, every byte is forwarded; --json
@@ -10894,10 +10962,12 @@ exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
                                          使机械臂保持在当前位置
   feetech teleop --leader PORT --calibration FILE --leader-calibration FILE
                  [--rate HZ] [--duration S] [--max-speed DEG_PER_S] [--record FILE]
-                 [--release]
+                 [--release] [--norm-mode degrees|range_m100_100]
                                          PORT 上的主臂驱动此从臂，
                                          关节按名称对应；Ctrl-C 使其保持；
-                                         --record：记录从臂的目标，供回放使用
+                                         --record：记录从臂的目标，供回放使用；
+                                         --norm-mode：与 LeRobot 相同的关节映射
+                                         （degrees，即其 use_degrees：默认）
   share --link PATH [--record FILE] [--watch] [--duration S]
                                          介于另一个程序和舵机之间：该程序打开 PATH，
                                          每个字节都被转发；--json 打印每个事务，
@@ -10920,6 +10990,10 @@ exit status: 0 done, 1 device or link failure, 2 usage error (nothing sent)
 
 退出状态：0 完成，1 设备或链路故障，2 用法错误（未发送任何内容）
 </translation>
+    </message>
+    <message>
+        <source>ID %1: %2</source>
+        <translation>ID %1：%2</translation>
     </message>
 </context>
 <context>
