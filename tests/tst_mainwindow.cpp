@@ -126,6 +126,28 @@ private slots:
         QCOMPARE(again.connectionBar()->baud(), 500000);
     }
 
+    // The welcome page says to leave Protocol on Auto: a demo run must not change that.
+    void aDemoRunChangesNoRememberedConnection()
+    {
+        const QString missing = QDir::temp().filePath(QStringLiteral("servobench-no-such-port"));
+        {
+            MainWindow window;
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QCOMPARE(window.connectionBar()->protocol(), ConnectionBar::Protocol::Auto);
+            window.startArmDemo();
+            QCOMPARE(window.connectionBar()->protocol(), ConnectionBar::Protocol::Feetech);
+            QVERIFY(!QSettings().contains(QStringLiteral("connection/protocol")));
+            QVERIFY(!QSettings().contains(QStringLiteral("connection/port")));
+            // A real port chosen next is probed again, as before the demo.
+            window.connectionBar()->setPort(missing);
+            QCOMPARE(window.connectionBar()->protocol(), ConnectionBar::Protocol::Auto);
+            QVERIFY(window.close());
+        }
+        MainWindow again;
+        QCOMPARE(again.connectionBar()->protocol(), ConnectionBar::Protocol::Auto);
+    }
+
     void aSkippedQuestionIsAskedAgainFromTheViewMenu()
     {
         MainWindow window;

@@ -139,6 +139,13 @@ private slots:
         QVERIFY2(result.ok, qPrintable(result.message));
         QCOMPARE(result.verified.value(QStringLiteral("phase")), 0x81);
         QCOMPARE(simulatorValue(2, u"phase"), 0x81);
+        // One count of what was verified, in the headline as in the read-back step.
+        const int settings = int(target.settings.size() + target.clearedBits.size());
+        QVERIFY2(result.message.contains(QStringLiteral("%1 setting(s) verified").arg(settings)),
+                 qPrintable(result.message));
+        QVERIFY2(result.steps.join(u'|').contains(
+                     QStringLiteral("%1 setting(s) hold their values").arg(settings)),
+                 qPrintable(result.steps.join(u'|')));
     }
 
     void aServoAlreadySetUpIsOnlyVerified()

@@ -136,6 +136,12 @@ MainWindow::MainWindow(QWidget *parent)
     });
     // One port chosen, shown in both places: Connect is offered in both by the same rule.
     connect(m_connectionBar, &ConnectionBar::portChanged, m_welcome, &WelcomePanel::showChosenPort);
+    connect(m_connectionBar, &ConnectionBar::portChanged, this, [this](const QString &port) {
+        if (!m_protocolBeforeSimulated || port.isEmpty()
+            || ConnectionController::simulatedProtocol(port))
+            return;
+        m_connectionBar->setProtocol(*std::exchange(m_protocolBeforeSimulated, std::nullopt));
+    });
     connect(m_welcome, &WelcomePanel::portChosen, m_connectionBar, &ConnectionBar::setPort);
     m_welcome->showChosenPort(m_connectionBar->port());
     layout->addWidget(m_pages);
@@ -491,7 +497,6 @@ void MainWindow::startDemo()
 
 void MainWindow::startFeetechDemo()
 {
-    m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
     m_connectionBar->setPort(ConnectionBar::kSimulatedFeetechPort);
     connectRequested();
     m_connection->scanOnceConnected();
@@ -499,7 +504,6 @@ void MainWindow::startFeetechDemo()
 
 void MainWindow::startArmDemo()
 {
-    m_connectionBar->setProtocol(ConnectionBar::Protocol::Feetech);
     m_connectionBar->setPort(ConnectionBar::kSimulatedArmPort);
     connectRequested();
     m_connection->scanOnceConnected();
@@ -562,11 +566,14 @@ void MainWindow::connectRequested()
 {
     m_problem->hide();
     const QString port = m_connectionBar->port();
-    if (!port.isEmpty()) {
+    if (const auto spoken = ConnectionController::simulatedProtocol(port)) {
+        // A simulated servo speaks one protocol: the bar shows it, at its usual rate. A demo is
+        // no connection to remember, and the protocol chosen for real ports comes back.
+        if (!m_protocolBeforeSimulated)
+            m_protocolBeforeSimulated = m_connectionBar->protocol();
+        m_connectionBar->setProtocol(*spoken);
+    } else if (!port.isEmpty()) {
         m_memory->rememberConnection();
-        // A simulated servo speaks one protocol: the bar shows it, at its usual rate.
-        if (const auto spoken = ConnectionController::simulatedProtocol(port))
-            m_connectionBar->setProtocol(*spoken);
     }
     ConnectionController::Request request;
     request.port = port;

@@ -2,14 +2,15 @@
 // Doctor panel and the status bar.
 #pragma once
 
+#include "connectioncontroller.h"
 #include "linktypes.h"
 
 #include <QMainWindow>
 
 #include <memory>
+#include <optional>
 
 class ConnectionBar;
-class ConnectionController;
 class DoctorPanel;
 class QProgressDialog;
 class FeetechWorkspace;
@@ -127,4 +128,6 @@ private:
     QProgressDialog *m_probeProgress = nullptr;
     WelcomePanel *m_welcome = nullptr;
     std::unique_ptr<WindowMemory> m_memory;
+    // The protocol chosen before a simulated bus set its own: back once a system port is chosen.
+    std::optional<ConnectionController::Protocol> m_protocolBeforeSimulated;
 };
