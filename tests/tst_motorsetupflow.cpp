@@ -229,6 +229,25 @@ private slots:
         QCOMPARE(m_client->servos()->rowCount(), 1);
     }
 
+    void theServoListFollowsWhatTheCheckProved()
+    {
+        // Scanned with servos at IDs 2 and 5; since then 5 was unplugged and the arm's joints
+        // 1-3 were set up: the list shows 1, 2 and 3 after the check, not 5.
+        QVERIFY(plug(2, QStringLiteral("STS3215"), k1M));
+        QVERIFY(plug(5, QStringLiteral("STS3215"), k1M));
+        feetech::ScanOptions options;
+        options.lastId = 10;
+        QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
+        QVERIFY(m_client->scan(options));
+        QTRY_COMPARE_WITH_TIMEOUT(scanned.size(), 1, 30000);
+        QCOMPARE(m_client->servos()->idsInUse(), (QVector<int> {2, 5}));
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
+        for (const quint8 id : {1, 3})
+            QVERIFY(plug(id, QStringLiteral("STS3215"), k1M));
+        checkAndWait();
+        QCOMPARE(m_client->servos()->idsInUse(), (QVector<int> {1, 2, 3}));
+    }
+
     void aNewRobotStartsOver()
     {
         QVERIFY(m_flow->chooseJoint(2));

@@ -44,6 +44,7 @@ OperationReply *MotorSetupService::setUp(const MotorTarget &target, Refusal *ref
 OperationReply *MotorSetupService::checkJoints(qint32 baud, const QVector<JointCheck> &joints,
                                                Refusal *refusal)
 {
+    m_checkBaud = baud;
     return start(operations::checkJoints(baud, joints), refusal);
 }
 
@@ -60,6 +61,8 @@ void MotorSetupService::onWorkFinished(const OperationResult &result)
     if (result.operation == Operation::CheckJoints) {
         // Without its joints when the link went down under it.
         const bool ok = result.ok && result.detail.canConvert<QVector<JointCheck>>();
+        if (ok)
+            followCheck(result.detail.value<QVector<JointCheck>>());
         emit jointsChecked(result.detail.value<QVector<JointCheck>>(), ok, result.message);
         return;
     }
@@ -78,6 +81,23 @@ void MotorSetupService::onWorkFinished(const OperationResult &result)
     if (reported.setUp && reported.ok && index >= 0 && moved)
         m_client->servos()->move(index, reported.to);
     emit finished(reported);
+}
+
+void MotorSetupService::followCheck(const QVector<JointCheck> &joints)
+{
+    // The list shows what the check proved at each joint's ID: the servo that answers there
+    // (moved or set up by a wizard since the scan), and no servo where nothing answers now.
+    ServoList *servos = m_client->servos();
+    for (const JointCheck &check : joints) {
+        const int index = servos->indexOf({quint8(check.id), m_checkBaud});
+        if (!check.found) {
+            servos->remove(index);
+        } else if (index < 0) {
+            servos->add(*check.found);
+        } else if (servos->at(index).info.model.name != check.found->model.name) {
+            servos->move(index, *check.found);
+        }
+    }
 }
 
 } // namespace feetech

@@ -42,10 +42,12 @@ signals:
     void jointsChecked(const QVector<feetech::JointCheck> &joints, bool ok, const QString &message);
 
 private:
+    void followCheck(const QVector<JointCheck> &joints);
     OperationReply *start(const BusOperation &operation, Refusal *refusal);
     void onWorkFinished(const OperationResult &result);
 
     BusClient *m_client;
+    qint32 m_checkBaud = 0; // the rate of the check under way
 };
 
 } // namespace feetech

@@ -110,6 +110,16 @@ void ServoList::noteUpdated(int index)
     emit servoUpdated(index);
 }
 
+void ServoList::remove(int index)
+{
+    if (index < 0 || index >= count())
+        return;
+    beginResetModel();
+    m_servos.erase(m_servos.begin() + index);
+    endResetModel();
+    emit servosChanged();
+}
+
 void ServoList::clear()
 {
     if (m_servos.empty())

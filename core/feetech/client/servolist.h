@@ -50,6 +50,8 @@ public:
     void move(int index, const ServoInfo &info);
     Servo &entry(int index) { return *m_servos.at(std::size_t(index)); }
     void noteUpdated(int index);
+    // A servo that no longer answers where it was listed (a check found nothing there).
+    void remove(int index);
     void clear();
 
     int rowCount(const QModelIndex &parent = {}) const override;

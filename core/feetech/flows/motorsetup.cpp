@@ -329,11 +329,11 @@ void MotorSetup::finish(std::shared_ptr<Run> run, OperationFailure failure, cons
     const QString who =
         run->target.joint.isEmpty() ? MotorSetupTr::tr("The servo") : run->target.joint;
     // The settings read back, as the read-back step counted them: the cleared bits too.
-    result.message = ok ? MotorSetupTr::tr("%1 is set up: %2, %n setting(s) verified.", nullptr,
-                                           int(run->target.settings.size()
-                                               + run->target.clearedBits.size()))
-                              .arg(who, servoName(run->servo))
-                        : message;
+    result.message = ok
+        ? MotorSetupTr::tr("%1 is set up: %2, %n setting(s) verified.", nullptr,
+                           int(run->target.settings.size() + run->target.clearedBits.size()))
+              .arg(who, servoName(run->servo))
+        : message;
     const SetupDone done = std::move(run->done);
     run->done = nullptr;
     if (done)
