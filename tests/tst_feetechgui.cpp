@@ -10,6 +10,7 @@
 #include "parameterpage.h"
 #include "registertablemodel.h"
 #include "servotree.h"
+#include "settingscheckservice.h"
 
 #include <QAbstractItemView>
 #include <QLabel>
@@ -319,6 +320,30 @@ private slots:
         for (int i = 0; i < baud->childCount(); ++i)
             ids.append(baud->child(i)->text(0));
         QVERIFY(ids.contains(QStringLiteral("ID 7")));
+    }
+
+    // The mark under the servo's header speaks of that servo only: fixes of the settings check
+    // on other servos say their outcome on the Health page, not under ID 1.
+    void fixesOfOtherServosPutNoVerifiedMarkUnderTheServoShown()
+    {
+        connectAndScan();
+        QCOMPARE(client()->servos()->at(workspace()->currentIndex()).info.id, quint8(1));
+        setSimulatorValue(2, QStringLiteral("return_delay"), 250);
+        feetech::SettingsFinding finding;
+        finding.servo = client()->servos()->at(client()->servos()->indexOf({2, k1M})).info;
+        finding.code = QStringLiteral("return-delay");
+        finding.key = QStringLiteral("return_delay");
+        finding.value = 250;
+        finding.expected = 0;
+        feetech::OperationReply *reply = client()->settingsCheck()->fix({finding});
+        QVERIFY(reply);
+        QSignalSpy finished(reply, &feetech::OperationReply::finished);
+        QVERIFY(finished.wait(10000));
+        QVERIFY(finished.first().first().value<feetech::OperationResult>().ok);
+        QCOMPARE(simulatorValue(2, QStringLiteral("return_delay")), 0);
+        auto *verified = workspace()->findChild<QLabel *>(QStringLiteral("verifiedMark"));
+        QVERIFY(verified);
+        QVERIFY2(verified->isHidden(), qPrintable(verified->text()));
     }
 
     void unknownModelIsReadOnlyRawBytes()

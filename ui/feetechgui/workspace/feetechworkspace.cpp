@@ -643,7 +643,10 @@ void FeetechWorkspace::onOperationFinished(const feetech::OperationResult &resul
     else
         emit problem(result.message);
     // The status bar's message fades; what was written and read back stays said on the page.
-    if (result.ok && result.final && changesServo(result.operation)) {
+    // Under the servo's header: what was written to one servo. The settings check's fixes
+    // (several servos at once) say their outcome in their own rows.
+    if (result.ok && result.final && changesServo(result.operation)
+        && result.operation != Operation::FixSettings) {
         m_verified->setText(tr("✓ Verified: %1").arg(result.message));
         QPalette tinted = m_verified->palette();
         tinted.setColor(QPalette::WindowText, palette::toneColor(palette::Tone::Good, tinted));
