@@ -328,19 +328,24 @@ private slots:
     {
         connectAndScan();
         QCOMPARE(client()->servos()->at(workspace()->currentIndex()).info.id, quint8(1));
-        setSimulatorValue(2, QStringLiteral("return_delay"), 250);
-        feetech::SettingsFinding finding;
-        finding.servo = client()->servos()->at(client()->servos()->indexOf({2, k1M})).info;
-        finding.code = QStringLiteral("return-delay");
-        finding.key = QStringLiteral("return_delay");
-        finding.value = 250;
-        finding.expected = 0;
-        feetech::OperationReply *reply = client()->settingsCheck()->fix({finding});
+        QVector<feetech::SettingsFinding> findings;
+        for (const quint8 id : {1, 2}) {
+            setSimulatorValue(id, QStringLiteral("return_delay"), 250);
+            feetech::SettingsFinding finding;
+            finding.servo = client()->servos()->at(client()->servos()->indexOf({id, k1M})).info;
+            finding.code = QStringLiteral("return-delay");
+            finding.key = QStringLiteral("return_delay");
+            finding.value = 250;
+            finding.expected = 0;
+            findings.append(finding);
+        }
+        feetech::OperationReply *reply = client()->settingsCheck()->fix(findings);
         QVERIFY(reply);
         QSignalSpy finished(reply, &feetech::OperationReply::finished);
         QVERIFY(finished.wait(10000));
         QVERIFY(finished.first().first().value<feetech::OperationResult>().ok);
         QCOMPARE(simulatorValue(2, QStringLiteral("return_delay")), 0);
+        // "2 of 2 fixed" is not ID 1's to say.
         auto *verified = workspace()->findChild<QLabel *>(QStringLiteral("verifiedMark"));
         QVERIFY(verified);
         QVERIFY2(verified->isHidden(), qPrintable(verified->text()));
