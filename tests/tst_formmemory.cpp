@@ -110,8 +110,28 @@ private slots:
         QVERIFY(QFile::remove(files.at(5)));
         QVERIFY(!recentfiles::list(recentfiles::Kind::Profile).contains(files.at(5)));
         QVERIFY(recentfiles::list(recentfiles::Kind::Pose).isEmpty());
+        // Nothing of a kind yet: Documents, or home where there is none; always a folder that
+        // exists (a dialog given none opens wherever the last one was).
+        const QString documents =
+            QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
         QCOMPARE(recentfiles::directory(recentfiles::Kind::Pose),
-                 QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
+                 QFileInfo(documents).isDir() ? documents : QDir::homePath());
+        for (const auto kind :
+             {recentfiles::Kind::PacketLog, recentfiles::Kind::ShareRecording,
+              recentfiles::Kind::MotionRecording, recentfiles::Kind::PlotImage,
+              recentfiles::Kind::HealthReport, recentfiles::Kind::TelemetryRecording})
+            QVERIFY(QFileInfo(recentfiles::directory(kind)).isDir());
+        // Each kind keeps its own folder: a packet log saved elsewhere moves only its own.
+        QTemporaryDir logs;
+        const QString log = logs.filePath(QStringLiteral("packets.tsv"));
+        QFile logFile(log);
+        QVERIFY(logFile.open(QIODevice::WriteOnly));
+        logFile.close();
+        recentfiles::add(recentfiles::Kind::PacketLog, log);
+        QCOMPARE(recentfiles::directory(recentfiles::Kind::PacketLog), logs.path());
+        QCOMPARE(recentfiles::directory(recentfiles::Kind::Profile), folder.path());
+        QCOMPARE(recentfiles::suggestedPath(recentfiles::Kind::PacketLog, QStringLiteral("x.tsv")),
+                 logs.filePath(QStringLiteral("x.tsv")));
     }
 };
 

@@ -69,10 +69,20 @@ private slots:
             out << "after\n" << Qt::flush;
             QVERIFY(outlet.drain());
             read += readAll();
+            // Every line lost is counted where reading resumed (more than once when the writer
+            // caught up for a moment meanwhile); every other line arrived.
             const QList<QByteArray> lines = read.trimmed().split('\n');
-            QCOMPARE(lines.size(), 10000 - dropped + 2);
-            QCOMPARE(lines.at(lines.size() - 2),
-                     "{\"dropped\":" + QByteArray::number(dropped) + '}');
+            qint64 counted = 0;
+            int plain = 0;
+            for (const QByteArray &line : lines) {
+                if (line.startsWith("{\"dropped\":"))
+                    counted += line.mid(11, line.size() - 12).toLongLong();
+                else if (line == QByteArray(99, 'x'))
+                    ++plain;
+            }
+            QCOMPARE(counted, dropped);
+            QCOMPARE(plain, 10000 - dropped);
+            QVERIFY(lines.at(lines.size() - 2).startsWith("{\"dropped\":"));
             QCOMPARE(lines.last(), QByteArray("after"));
         }
         ::close(ends[1]);

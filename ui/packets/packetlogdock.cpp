@@ -3,6 +3,7 @@
 
 #include "packetlogmodel.h"
 #include "palette.h"
+#include "recentfiles.h"
 #include "sharerecordingwindow.h"
 #include "widgethelpers.h"
 
@@ -231,8 +232,8 @@ void PacketLogDock::updateCounts()
 
 void PacketLogDock::exportLog()
 {
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    const QString suggested = QDir(folder).filePath(
+    const QString suggested = recentfiles::suggestedPath(
+        recentfiles::Kind::PacketLog,
         QStringLiteral("packet-log-%1.tsv")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss"))));
     const QString path =
@@ -243,15 +244,19 @@ void PacketLogDock::exportLog()
     QString error;
     if (!m_model->exportToFile(path, &error))
         QMessageBox::warning(this, tr("Export packet log"), error);
+    else
+        recentfiles::add(recentfiles::Kind::PacketLog, path);
 }
 
 void PacketLogDock::chooseRecording()
 {
     const QString path =
-        QFileDialog::getOpenFileName(this, tr("Open a shared bus recording"), QDir::homePath(),
+        QFileDialog::getOpenFileName(this, tr("Open a shared bus recording"),
+                                     recentfiles::directory(recentfiles::Kind::ShareRecording),
                                      tr("Share recordings (*.txt);;All files (*)"));
     if (path.isEmpty())
         return;
+    recentfiles::add(recentfiles::Kind::ShareRecording, path);
     QString error;
     if (!openRecording(path, &error))
         QMessageBox::warning(this, tr("Open recording"), error);

@@ -2,6 +2,7 @@
 // where the last one was, and File > Recent profiles lists them.
 #include "recentfiles.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QSettings>
 #include <QStandardPaths>
@@ -20,9 +21,21 @@ QString key(Kind kind)
     case Kind::Calibration:
         return QStringLiteral("recent/calibrations");
     case Kind::PacketSequence:
+        return QStringLiteral("recent/packets");
+    case Kind::PacketLog:
+        return QStringLiteral("recent/packetLogs");
+    case Kind::ShareRecording:
+        return QStringLiteral("recent/shareRecordings");
+    case Kind::MotionRecording:
+        return QStringLiteral("recent/motionRecordings");
+    case Kind::TelemetryRecording:
+        return QStringLiteral("recent/telemetry");
+    case Kind::HealthReport:
+        return QStringLiteral("recent/healthReports");
+    case Kind::PlotImage:
         break;
     }
-    return QStringLiteral("recent/packets");
+    return QStringLiteral("recent/plotImages");
 }
 
 } // namespace
@@ -51,8 +64,18 @@ void add(Kind kind, const QString &path)
 QString directory(Kind kind)
 {
     const QStringList files = list(kind);
-    return files.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
-                           : QFileInfo(files.first()).absolutePath();
+    if (!files.isEmpty())
+        return QFileInfo(files.first()).absolutePath();
+    // A dialog given a folder that does not exist opens wherever the last one was.
+    const QString usual = QStandardPaths::writableLocation(kind == Kind::PlotImage
+                                                               ? QStandardPaths::PicturesLocation
+                                                               : QStandardPaths::DocumentsLocation);
+    return QFileInfo(usual).isDir() ? usual : QDir::homePath();
+}
+
+QString suggestedPath(Kind kind, const QString &fileName)
+{
+    return QDir(directory(kind)).filePath(fileName);
 }
 
 } // namespace recentfiles

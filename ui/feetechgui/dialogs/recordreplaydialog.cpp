@@ -5,6 +5,7 @@
 #include "jointnames.h"
 #include "operationreply.h"
 #include "palette.h"
+#include "recentfiles.h"
 #include "servolist.h"
 
 #include <QCheckBox>
@@ -354,19 +355,22 @@ void RecordReplayDialog::showFrame(int frame)
 
 void RecordReplayDialog::chooseFileToOpen()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open recording"), QDir::homePath(),
-                                                      tr("Motion recordings (*.csv)"));
-    if (!path.isEmpty())
-        openFile(path);
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open recording"), recentfiles::directory(recentfiles::Kind::MotionRecording),
+        tr("Motion recordings (*.csv)"));
+    if (!path.isEmpty() && openFile(path))
+        recentfiles::add(recentfiles::Kind::MotionRecording, path);
 }
 
 void RecordReplayDialog::chooseFileToSave()
 {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save recording"), QDir::home().filePath(QStringLiteral("motion.csv")),
-        tr("Motion recordings (*.csv)"));
-    if (!path.isEmpty())
-        saveFile(path);
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save recording"),
+                                     recentfiles::suggestedPath(recentfiles::Kind::MotionRecording,
+                                                                QStringLiteral("motion.csv")),
+                                     tr("Motion recordings (*.csv)"));
+    if (!path.isEmpty() && saveFile(path))
+        recentfiles::add(recentfiles::Kind::MotionRecording, path);
 }
 
 bool RecordReplayDialog::openFile(const QString &path)

@@ -2,6 +2,7 @@
 #include "sharedialog.h"
 
 #include "busclient.h"
+#include "recentfiles.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -153,7 +154,9 @@ void ShareDialog::chooseRecording()
 {
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Record the shared bus to"),
-        m_record->text().isEmpty() ? QDir::homePath() : m_record->text(),
+        m_record->text().isEmpty() ? recentfiles::suggestedPath(recentfiles::Kind::ShareRecording,
+                                                                QStringLiteral("shared-bus.txt"))
+                                   : m_record->text(),
         tr("Share recordings (*.txt);;All files (*)"));
     if (!path.isEmpty())
         m_record->setText(QDir::toNativeSeparators(path));

@@ -5,6 +5,7 @@
 #include "busclient.h"
 #include "healthmovetest.h"
 #include "palette.h"
+#include "recentfiles.h"
 #include "settingscheckpanel.h"
 #include "widgethelpers.h"
 
@@ -270,7 +271,9 @@ void HealthPage::chooseReportFile()
 {
     QString filter;
     const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save health report"), QStringLiteral("servo-health.html"),
+        this, tr("Save health report"),
+        recentfiles::suggestedPath(recentfiles::Kind::HealthReport,
+                                   QStringLiteral("servo-health.html")),
         tr("HTML page (*.html);;JSON (*.json)"), &filter);
     if (path.isEmpty())
         return;
@@ -278,7 +281,8 @@ void HealthPage::chooseReportFile()
     if (!feetech::reportFormatFor(chosen))
         chosen += filter.contains(QLatin1String("json")) ? QStringLiteral(".json")
                                                          : QStringLiteral(".html");
-    saveReport(chosen);
+    if (saveReport(chosen))
+        recentfiles::add(recentfiles::Kind::HealthReport, chosen);
 }
 
 QVector<ServoHealth> HealthPage::results() const

@@ -7,6 +7,7 @@
 #include "monitorrecording.h"
 #include "monitorservolist.h"
 #include "monitorstatusline.h"
+#include "recentfiles.h"
 #include "telemetryplot.h"
 #include "widgethelpers.h"
 #include "widgetmemory.h"
@@ -470,12 +471,13 @@ void MonitorPage::togglePause()
 
 void MonitorPage::chooseExportFile()
 {
-    const QString directory = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
     const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export plot"), QDir(directory).filePath(QStringLiteral("servobench-monitor.png")),
+        this, tr("Export plot"),
+        recentfiles::suggestedPath(recentfiles::Kind::PlotImage,
+                                   QStringLiteral("servobench-monitor.png")),
         tr("PNG images (*.png)"));
-    if (!path.isEmpty())
-        exportPng(path);
+    if (!path.isEmpty() && exportPng(path))
+        recentfiles::add(recentfiles::Kind::PlotImage, path);
 }
 
 void MonitorPage::restartIfRunning()

@@ -2,6 +2,7 @@
 // and what the group says while it records and when it ends or fails.
 #include "monitorrecording.h"
 
+#include "recentfiles.h"
 #include "widgethelpers.h"
 
 #include <QDir>
@@ -86,13 +87,16 @@ void MonitorRecording::toggleRecording()
         stopRecording();
         return;
     }
-    const QString directory = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Record telemetry"),
-        QDir(directory).filePath(QStringLiteral("servobench-telemetry.csv")),
+        recentfiles::suggestedPath(recentfiles::Kind::TelemetryRecording,
+                                   QStringLiteral("servobench-telemetry.csv")),
         tr("CSV files (*.csv)"));
-    if (!path.isEmpty())
-        startRecording(path);
+    if (path.isEmpty())
+        return;
+    startRecording(path);
+    if (isRecording())
+        recentfiles::add(recentfiles::Kind::TelemetryRecording, path);
 }
 
 void MonitorRecording::updateLabel()
