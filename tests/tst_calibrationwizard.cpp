@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QFileDialog>
+#include <QInputDialog>
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
@@ -93,6 +94,27 @@ private:
                 QMetaObject::invokeMethod(dialog, "accept"); // protected, a slot
             else
                 dialog->reject();
+            poll->deleteLater();
+        });
+        poll->start();
+    }
+
+    // Answers the arm's name (asked before the first save of an arm) with `name`; nothing
+    // when empty: the question is cancelled.
+    static void answerArmName(const QString &name)
+    {
+        auto *poll = new QTimer;
+        poll->setInterval(10);
+        QObject::connect(poll, &QTimer::timeout, poll, [poll, name] {
+            auto *dialog = qobject_cast<QInputDialog *>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            if (name.isEmpty()) {
+                dialog->reject();
+            } else {
+                dialog->setTextValue(name);
+                dialog->accept();
+            }
             poll->deleteLater();
         });
         poll->start();
@@ -436,11 +458,19 @@ private slots:
             feetech::defaultRobotTemplateIn(feetech::builtInRobotTemplates());
         QVERIFY(follower);
         const QString folder = root.filePath(QStringLiteral("robots/so101_follower"));
-        const QString suggested = QDir(folder).filePath(QStringLiteral("my_arm.json"));
-        QCOMPARE(suggestedCalibrationFile(follower), suggested);
+        QCOMPARE(suggestedCalibrationFile(follower),
+                 QDir(folder).filePath(QStringLiteral("my_arm.json")));
 
-        // Cancelled: the folders made for the dialog go again.
+        // The first save asks the arm's name, which names the file, as LeRobot's --robot.id
+        // does; cancelled, nothing is offered and no folder is made.
+        answerArmName({});
+        QVERIFY(chooseCalibrationFileToSave(nullptr, QStringLiteral("Save"), follower).isEmpty());
+        QVERIFY(!QDir(root.filePath(QStringLiteral("robots"))).exists());
+        const QString suggested = QDir(folder).filePath(QStringLiteral("left_follower.json"));
+
+        // Cancelled at the file: the folders made for the dialog go again.
         bool folderShown = false;
+        answerArmName(QStringLiteral("left follower"));
         answerFileDialog(&folderShown, false);
         QVERIFY(chooseCalibrationFileToSave(nullptr, QStringLiteral("Save"), follower).isEmpty());
         QVERIFY(folderShown);
@@ -448,6 +478,7 @@ private slots:
 
         // Saved there: the folder stays, and the next offer is the file used last.
         folderShown = false;
+        answerArmName(QStringLiteral("left_follower"));
         answerFileDialog(&folderShown, true);
         QCOMPARE(chooseCalibrationFileToSave(nullptr, QStringLiteral("Save"), follower), suggested);
         QVERIFY(folderShown);

@@ -10,6 +10,8 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
+#include <QLineEdit>
 
 namespace {
 
@@ -30,6 +32,26 @@ QStringList missingFolders(const QString &folder)
             break;
     }
     return missing;
+}
+
+// What LeRobot's own examples call an arm of the template's kind.
+QString defaultArmName(const feetech::RobotTemplate *robot)
+{
+    const bool leader = robot && robot->name.contains(QLatin1String("leader"), Qt::CaseInsensitive);
+    return leader ? QStringLiteral("my_leader_arm") : QStringLiteral("my_follower_arm");
+}
+
+// A name as a file name: letters, digits, '-', '_' and '.' kept, anything else made '_'.
+QString fileNameOf(const QString &name)
+{
+    QString file = name.trimmed();
+    for (QChar &c : file) {
+        if (!(c.isLetterOrNumber() || c == u'-' || c == u'_' || c == u'.'))
+            c = u'_';
+    }
+    while (file.startsWith(u'.'))
+        file.remove(0, 1);
+    return file;
 }
 
 } // namespace
@@ -65,7 +87,22 @@ QString suggestedCalibrationFile(const feetech::RobotTemplate *robot)
 QString chooseCalibrationFileToSave(QWidget *parent, const QString &title,
                                     const feetech::RobotTemplate *robot)
 {
-    const QString suggested = suggestedCalibrationFile(robot);
+    QString suggested = suggestedCalibrationFile(robot);
+    if (QFileInfo(suggested).fileName() == kArmFileName) {
+        // No file of this arm saved yet: LeRobot names the file after the arm (its --robot.id
+        // or --teleop.id), so that is asked first rather than a name nobody chose.
+        bool ok = false;
+        const QString name = QInputDialog::getText(
+            parent, title,
+            CalibrationFilesTr::tr("The arm's name, as LeRobot's --robot.id (or --teleop.id) "
+                                   "gives it; it names the file:"),
+            QLineEdit::Normal, defaultArmName(robot), &ok);
+        if (!ok)
+            return {};
+        const QString file = fileNameOf(name);
+        if (!file.isEmpty())
+            suggested = QDir(QFileInfo(suggested).path()).filePath(file + QStringLiteral(".json"));
+    }
     const QStringList made = missingFolders(QFileInfo(suggested).path());
     if (!made.isEmpty())
         QDir().mkpath(QFileInfo(suggested).path()); // the dialog opens only in a folder that is
