@@ -138,6 +138,33 @@ private slots:
         QCOMPARE(m_dock->table()->rowCount(), 2);
     }
 
+    void anUnpluggedServoIsPluggedBackInAsItWas()
+    {
+        auto *plugBack = m_dock->findChild<QPushButton *>(QStringLiteral("plugBackButton"));
+        QVERIFY(plugBack);
+        QVERIFY(!plugBack->isEnabled()); // nothing is off the bus
+        // Servo 1, set up with settings of its own, taken off the bus.
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) {
+                     bus.servo(0).storeValue(u"max_temperature", 66);
+                     return int(bus.servo(0).id());
+                 }),
+                 1);
+        m_dock->selectServo(0);
+        QVERIFY(m_dock->unplugSelected());
+        QTRY_VERIFY(plugBack->isEnabled());
+        QVERIFY2(plugBack->toolTip().contains(QLatin1String("ID 1")),
+                 qPrintable(plugBack->toolTip()));
+        QVERIFY(m_dock->plugBackIn());
+        QCOMPARE(servoCount(), 2);
+        // Back last in the chain, at its ID with its settings: not a factory-new servo.
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) { return int(bus.servo(1).id()); }), 1);
+        QCOMPARE(onBus([](sim::VirtualFeetechBus &bus) {
+                     return int(bus.servo(1).value(u"max_temperature"));
+                 }),
+                 66);
+        QTRY_VERIFY(!plugBack->isEnabled());
+    }
+
     void putAtIdLetsTwoServosShareOne()
     {
         m_dock->selectServo(1);

@@ -191,6 +191,11 @@ QWidget *SimulatorDock::buildBusButtons()
     m_unplug = widgethelpers::actionButton(tr("Unplug"), "unplugButton",
                                            tr("Takes the selected servo off the bus"), box);
     connect(m_unplug, &QPushButton::clicked, this, &SimulatorDock::unplugSelected);
+    m_plugBack = widgethelpers::actionButton(
+        tr("Plug back in"), "plugBackButton",
+        tr("Puts the servo unplugged last back on the bus, as it was"), box);
+    m_plugBack->setEnabled(false);
+    connect(m_plugBack, &QPushButton::clicked, this, &SimulatorDock::plugBackIn);
     m_putAtId = widgethelpers::actionButton(
         tr("Put at ID…"), "putAtIdButton",
         tr("Changes the selected servo's ID in its EEPROM, as a set-up would; two servos may "
@@ -201,7 +206,7 @@ QWidget *SimulatorDock::buildBusButtons()
         tr("Power-cycle"), "powerCycleButton",
         tr("Switches the bus off and on: torque off, RAM back to its power-on values"), box);
     connect(cycle, &QPushButton::clicked, this, &SimulatorDock::powerCycle);
-    for (QPushButton *button : {plug, m_unplug, m_putAtId, cycle})
+    for (QPushButton *button : {plug, m_unplug, m_plugBack, m_putAtId, cycle})
         row->addWidget(button);
     row->addStretch();
     return box;
@@ -306,13 +311,26 @@ QString SimulatorDock::note() const
 void SimulatorDock::refresh()
 {
     QVector<sim::SimulatedServo> servos;
+    QString lastUnplugged;
     if (m_simulator) {
-        m_simulator->call([&servos](sim::Simulator &simulator) {
+        m_simulator->call([&servos, &lastUnplugged](sim::Simulator &simulator) {
             simulator.advanceNow();
-            if (sim::VirtualFeetechBus *bus = simulator.feetechBus())
+            if (sim::VirtualFeetechBus *bus = simulator.feetechBus()) {
                 servos = sim::simulatedServos(*bus);
+                if (bus->unpluggedCount() > 0) {
+                    const sim::VirtualFeetechServo &off =
+                        bus->unpluggedServo(bus->unpluggedCount() - 1);
+                    lastUnplugged = tr("ID %1 (%2)").arg(off.id()).arg(off.model().name);
+                }
+            }
         });
     }
+    m_lastUnplugged = lastUnplugged;
+    m_plugBack->setEnabled(!lastUnplugged.isEmpty());
+    m_plugBack->setToolTip(
+        lastUnplugged.isEmpty()
+            ? tr("Nothing was unplugged")
+            : tr("Puts %1, unplugged last, back on the bus as it was").arg(lastUnplugged));
     const int selected = selectedIndex();
     m_servos = servos;
     const QSignalBlocker quiet(m_table);
@@ -461,6 +479,12 @@ bool SimulatorDock::unplugSelected()
     return onSelected(
         [](sim::VirtualFeetechBus &bus, int index, sim::SimRefusal *) { return bus.unplug(index); },
         [this](int index) { return tr("Unplugged servo #%1.").arg(index + 1); });
+}
+
+bool SimulatorDock::plugBackIn()
+{
+    return onBus([](sim::VirtualFeetechBus &bus, sim::SimRefusal *) { return bus.plugBack(); },
+                 tr("Plugged %1 back in.").arg(m_lastUnplugged));
 }
 
 bool SimulatorDock::putSelectedAtId(int id)

@@ -51,6 +51,8 @@ public:
     bool letGo();
     bool plugFactoryNew(const QString &model); // at ID 1, the family's default rate
     bool unplugSelected();
+    // The servo unplugged last, back on the bus as it was (its ID, rate and settings).
+    bool plugBackIn();
     bool putSelectedAtId(int id);
     bool powerCycle();
 
@@ -103,6 +105,8 @@ private:
     QPushButton *m_sweep = nullptr;
     QPushButton *m_letGo = nullptr;
     QPushButton *m_unplug = nullptr;
+    QPushButton *m_plugBack = nullptr;
+    QString m_lastUnplugged; // "ID 3 (STS3215)", empty when none is off the bus
     QPushButton *m_putAtId = nullptr;
     QComboBox *m_benchCase = nullptr;
     QLabel *m_note = nullptr;

@@ -151,10 +151,25 @@ bool VirtualFeetechBus::unplug(int index)
 {
     if (index < 0 || index >= servoCount())
         return false;
+    m_unplugged.push_back(std::move(m_slots.at(size_t(index))));
     m_slots.erase(m_slots.begin() + index);
     if (index < m_chainReach)
         --m_chainReach; // the break stays where it is, after the servo before it
     m_hand.servoUnplugged(index);
+    saveIfChanged(true);
+    return true;
+}
+
+bool VirtualFeetechBus::plugBack()
+{
+    if (m_unplugged.empty())
+        return false;
+    m_slots.push_back(std::move(m_unplugged.back()));
+    m_unplugged.pop_back();
+    Slot &slot = m_slots.back();
+    slot.rebootUntilUs = 0;
+    slot.powerCut = PowerCut::None;
+    slot.servo.powerCycle(); // no power while it was off the bus
     saveIfChanged(true);
     return true;
 }

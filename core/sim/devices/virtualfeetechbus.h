@@ -72,8 +72,18 @@ public:
     // Plugs a powered-up servo into the running bus (last in order); it may share an ID with
     // another servo, as a factory-new servo at ID 1 does. False and *why for an invalid spec.
     bool plug(const ServoSpec &spec, SimRefusal *why);
-    // Unplugs the servo at `index`; later servos move up one place. False for a bad index.
+    // Unplugs the servo at `index`; later servos move up one place. It is kept aside, as a servo
+    // taken off a bench is, to be plugged back in. False for a bad index.
     bool unplug(int index);
+    // The servos unplugged and not plugged back in, the last unplugged last.
+    int unpluggedCount() const { return int(m_unplugged.size()); }
+    const VirtualFeetechServo &unpluggedServo(int index) const
+    {
+        return m_unplugged.at(size_t(index)).servo;
+    }
+    // Plugs the last unplugged servo back in (last in order) as it was, its ID, rate and EEPROM;
+    // it starts as after a power-up. False when none was unplugged.
+    bool plugBack();
     // Puts the servo at `index` at a new ID, in its RAM and its EEPROM, as a set-up would; two
     // servos may end up sharing one. False and *why (NoSuchPlace, IdOutOfRange) for a bad index or
     // ID.
@@ -134,6 +144,7 @@ private:
 
     feetech::FrameFormat m_format;
     std::vector<Slot> m_slots;
+    std::vector<Slot> m_unplugged; // taken off the bus, as they were
     QString m_statePath;
     QString m_lastStateError;
     qint64 m_nowUs = 0;
