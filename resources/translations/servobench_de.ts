@@ -432,6 +432,10 @@
         <source>LeRobot calibration (*.json)</source>
         <translation>LeRobot-Kalibrierung (*.json)</translation>
     </message>
+    <message>
+        <source>The arm&apos;s name, as LeRobot&apos;s --robot.id (or --teleop.id) gives it; it names the file:</source>
+        <translation>Der Name des Arms, wie LeRobots --robot.id (oder --teleop.id) ihn angibt; er benennt die Datei:</translation>
+    </message>
 </context>
 <context>
     <name>CalibrationJointsPage</name>
@@ -8833,6 +8837,30 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>Plays the chosen bench case now</source>
         <translation>Spielt das gewählte Werkbank-Szenario jetzt ab</translation>
+    </message>
+    <message>
+        <source>Plug back in</source>
+        <translation>Wieder einstecken</translation>
+    </message>
+    <message>
+        <source>Puts the servo unplugged last back on the bus, as it was</source>
+        <translation>Steckt das zuletzt abgezogene Servo wieder an den Bus, so wie es war</translation>
+    </message>
+    <message>
+        <source>ID %1 (%2)</source>
+        <translation>ID %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Nothing was unplugged</source>
+        <translation>Es wurde nichts abgezogen</translation>
+    </message>
+    <message>
+        <source>Puts %1, unplugged last, back on the bus as it was</source>
+        <translation>Steckt %1, zuletzt abgezogen, so wie es war wieder an den Bus</translation>
+    </message>
+    <message>
+        <source>Plugged %1 back in.</source>
+        <translation>%1 wieder eingesteckt.</translation>
     </message>
 </context>
 <context>

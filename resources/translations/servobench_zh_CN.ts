@@ -431,6 +431,10 @@
         <source>LeRobot calibration (*.json)</source>
         <translation>LeRobot 校准文件 (*.json)</translation>
     </message>
+    <message>
+        <source>The arm&apos;s name, as LeRobot&apos;s --robot.id (or --teleop.id) gives it; it names the file:</source>
+        <translation>机械臂的名称，与 LeRobot 的 --robot.id（或 --teleop.id）相同；文件以它命名：</translation>
+    </message>
 </context>
 <context>
     <name>CalibrationJointsPage</name>
@@ -8783,6 +8787,30 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Plays the chosen bench case now</source>
         <translation>立即执行所选的台架情形</translation>
+    </message>
+    <message>
+        <source>Plug back in</source>
+        <translation>重新接回</translation>
+    </message>
+    <message>
+        <source>Puts the servo unplugged last back on the bus, as it was</source>
+        <translation>将最后拔下的舵机按原样接回总线</translation>
+    </message>
+    <message>
+        <source>ID %1 (%2)</source>
+        <translation>ID %1（%2）</translation>
+    </message>
+    <message>
+        <source>Nothing was unplugged</source>
+        <translation>没有拔下任何舵机</translation>
+    </message>
+    <message>
+        <source>Puts %1, unplugged last, back on the bus as it was</source>
+        <translation>将最后拔下的 %1 按原样接回总线</translation>
+    </message>
+    <message>
+        <source>Plugged %1 back in.</source>
+        <translation>已将 %1 接回。</translation>
     </message>
 </context>
 <context>
