@@ -6,6 +6,7 @@
 #include <QJsonObject>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTranslator>
 #include <QtTest>
 
 using feetech::RobotTemplate;
@@ -148,6 +149,32 @@ private slots:
         QVERIFY2(robot, qPrintable(error.describe()));
         QCOMPARE(robot->joints.at(0).settings.value(QStringLiteral("return_delay")), 10);
         QCOMPARE(robot->joints.at(1).settings.value(QStringLiteral("return_delay")), 0);
+    }
+
+    // What a set-up says of a joint is in the user's language, not the file's key.
+    void aJointsTargetIsNamedAsTheUsersLanguageNamesIt()
+    {
+        class ChineseJoint : public QTranslator
+        {
+        public:
+            QString translate(const char *context, const char *source, const char *,
+                              int) const override
+            {
+                return qstrcmp(context, "Joint") == 0 && qstrcmp(source, "shoulder_pan") == 0
+                    ? QStringLiteral("肩部旋转")
+                    : QString();
+            }
+            bool isEmpty() const override { return false; }
+        } translator;
+        QVERIFY(QCoreApplication::installTranslator(&translator));
+        const auto restore =
+            qScopeGuard([&translator] { QCoreApplication::removeTranslator(&translator); });
+        const feetech::RobotTemplate *arm =
+            feetech::defaultRobotTemplateIn(feetech::builtInRobotTemplates());
+        QVERIFY(arm);
+        const feetech::MotorTarget target = feetech::motorTarget(*arm, arm->joints.first());
+        QCOMPARE(arm->joints.first().name, QStringLiteral("shoulder_pan"));
+        QCOMPARE(target.joint, QStringLiteral("肩部旋转"));
     }
 
     void aTemplateSavedAndLoadedIsTheSame()

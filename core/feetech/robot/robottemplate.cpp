@@ -321,7 +321,13 @@ std::optional<RobotTemplate> robotTemplateFromJson(const QByteArray &json, const
 
 MotorTarget motorTarget(const RobotTemplate &robot, const RobotJoint &joint)
 {
-    return {joint.name, joint.id, robot.baud, joint.model, joint.settings, joint.clearedBits};
+    // The joint as the user's language names it: the target's name is for messages.
+    return {jointDisplayName(joint.name),
+            joint.id,
+            robot.baud,
+            joint.model,
+            joint.settings,
+            joint.clearedBits};
 }
 
 QVector<JointCheck> jointChecks(const RobotTemplate &robot)
