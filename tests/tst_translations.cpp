@@ -1,6 +1,8 @@
 // Tests that the German and Chinese translations are complete and well formed, cover the
 // shipped tables' and templates' texts, and show on the window and a settings page under zh_CN.
 #include "busclient.h"
+#include "feetechdescription.h"
+#include "feetechpacket.h"
 #include "feetechworkspace.h"
 #include "mainwindow.h"
 #include "parameterpage.h"
@@ -233,6 +235,14 @@ private slots:
         QCOMPARE(feetech::tableText(QStringLiteral("Max temperature")).isEmpty(), false);
         QVERIFY(hasChinese(feetech::tableText(QStringLiteral("Max temperature"))));
         QVERIFY(hasChinese(feetech::jointDisplayName(QStringLiteral("shoulder_pan"))));
+        // The packet log names instructions as the Chinese manual does; its JSON keeps the
+        // protocol's names.
+        for (const QByteArray &frame : {feetech::ping(1), feetech::read(1, 56, 2)}) {
+            const QString said = feetech::describeFrame(frame, {});
+            QVERIFY2(hasChinese(said.section(u' ', 0, 0)), qPrintable(said));
+        }
+        QCOMPARE(*feetech::instructionName(quint8(feetech::Instruction::Ping)),
+                 QStringLiteral("PING"));
 
         MainWindow window;
         window.show();

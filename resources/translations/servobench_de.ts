@@ -1159,6 +1159,66 @@
         <source>parameters %1</source>
         <translation>Parameter %1</translation>
     </message>
+    <message>
+        <source>PING</source>
+        <comment>instruction</comment>
+        <translation>PING</translation>
+    </message>
+    <message>
+        <source>READ</source>
+        <comment>instruction</comment>
+        <translation>READ</translation>
+    </message>
+    <message>
+        <source>WRITE</source>
+        <comment>instruction</comment>
+        <translation>WRITE</translation>
+    </message>
+    <message>
+        <source>REG WRITE</source>
+        <comment>instruction</comment>
+        <translation>REG WRITE</translation>
+    </message>
+    <message>
+        <source>ACTION</source>
+        <comment>instruction</comment>
+        <translation>ACTION</translation>
+    </message>
+    <message>
+        <source>RECOVERY</source>
+        <comment>instruction</comment>
+        <translation>RECOVERY</translation>
+    </message>
+    <message>
+        <source>REBOOT</source>
+        <comment>instruction</comment>
+        <translation>REBOOT</translation>
+    </message>
+    <message>
+        <source>BACKUP</source>
+        <comment>instruction</comment>
+        <translation>BACKUP</translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <comment>instruction</comment>
+        <translation>RESET</translation>
+    </message>
+    <message>
+        <source>CALIBRATE</source>
+        <comment>instruction</comment>
+        <translation>CALIBRATE</translation>
+    </message>
+    <message>
+        <source>SYNC READ</source>
+        <comment>instruction</comment>
+        <translation>SYNC READ</translation>
+    </message>
+    <message>
+        <source>SYNC WRITE</source>
+        <comment>instruction</comment>
+        <translation>SYNC WRITE</translation>
+    </message>
 </context>
 <context>
     <name>DemoServos</name>

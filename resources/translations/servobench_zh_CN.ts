@@ -1154,6 +1154,66 @@
         <source>reply (query unknown): words %1, %2</source>
         <translation>应答（查询未知）：字 %1，%2</translation>
     </message>
+    <message>
+        <source>PING</source>
+        <comment>instruction</comment>
+        <translation>PING（查询）</translation>
+    </message>
+    <message>
+        <source>READ</source>
+        <comment>instruction</comment>
+        <translation>READ（读）</translation>
+    </message>
+    <message>
+        <source>WRITE</source>
+        <comment>instruction</comment>
+        <translation>WRITE（写）</translation>
+    </message>
+    <message>
+        <source>REG WRITE</source>
+        <comment>instruction</comment>
+        <translation>REG WRITE（异步写）</translation>
+    </message>
+    <message>
+        <source>ACTION</source>
+        <comment>instruction</comment>
+        <translation>ACTION（执行异步写）</translation>
+    </message>
+    <message>
+        <source>RECOVERY</source>
+        <comment>instruction</comment>
+        <translation>RECOVERY（恢复）</translation>
+    </message>
+    <message>
+        <source>REBOOT</source>
+        <comment>instruction</comment>
+        <translation>REBOOT（重启）</translation>
+    </message>
+    <message>
+        <source>BACKUP</source>
+        <comment>instruction</comment>
+        <translation>BACKUP（备份）</translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <comment>instruction</comment>
+        <translation>RESET（复位）</translation>
+    </message>
+    <message>
+        <source>CALIBRATE</source>
+        <comment>instruction</comment>
+        <translation>CALIBRATE（校准）</translation>
+    </message>
+    <message>
+        <source>SYNC READ</source>
+        <comment>instruction</comment>
+        <translation>SYNC READ（同步读）</translation>
+    </message>
+    <message>
+        <source>SYNC WRITE</source>
+        <comment>instruction</comment>
+        <translation>SYNC WRITE（同步写）</translation>
+    </message>
 </context>
 <context>
     <name>DemoServos</name>

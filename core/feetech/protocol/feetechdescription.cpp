@@ -26,6 +26,39 @@ using seriallink::StreamItem;
 
 namespace {
 
+// The instruction as the packet log and decode name it: a language may name it as its own manual
+// does (the Chinese one says PING（查询）); JSON keeps instructionName().
+QString instructionText(quint8 code, const QString &name)
+{
+    switch (Instruction(code)) {
+    case Instruction::Ping:
+        return DecoderTr::tr("PING", "instruction");
+    case Instruction::Read:
+        return DecoderTr::tr("READ", "instruction");
+    case Instruction::Write:
+        return DecoderTr::tr("WRITE", "instruction");
+    case Instruction::RegWrite:
+        return DecoderTr::tr("REG WRITE", "instruction");
+    case Instruction::Action:
+        return DecoderTr::tr("ACTION", "instruction");
+    case Instruction::Recovery:
+        return DecoderTr::tr("RECOVERY", "instruction");
+    case Instruction::Reboot:
+        return DecoderTr::tr("REBOOT", "instruction");
+    case Instruction::Backup:
+        return DecoderTr::tr("BACKUP", "instruction");
+    case Instruction::Reset:
+        return DecoderTr::tr("RESET", "instruction");
+    case Instruction::Calibrate:
+        return DecoderTr::tr("CALIBRATE", "instruction");
+    case Instruction::SyncRead:
+        return DecoderTr::tr("SYNC READ", "instruction");
+    case Instruction::SyncWrite:
+        return DecoderTr::tr("SYNC WRITE", "instruction");
+    }
+    return name;
+}
+
 QString idText(quint8 id)
 {
     return id == kBroadcastId ? DecoderTr::tr("ID %1 (broadcast)").arg(id)
@@ -162,7 +195,8 @@ QVector<DecodedFrame> decodeStream(const QByteArray &stream, seriallink::Detail 
         const auto instruction = Instruction(code);
         const QString detail =
             instructionDetail(instruction, params, frame.checksumValid, expectedReplies);
-        frame.summary = *name + u' ' + idText(id) + (detail.isEmpty() ? QString() : u' ' + detail);
+        frame.summary = instructionText(code, *name) + u' ' + idText(id)
+            + (detail.isEmpty() ? QString() : u' ' + detail);
         if (frame.checksumValid)
             expectRepliesAfter(instruction, id, expectedReplies);
         return frame;
