@@ -179,9 +179,10 @@ private slots:
         hand.place(6, 2100);
         hand.script(6, {1900, 2600, 2000});
         startRecording(wizard, hand);
-        QVERIFY(wizard.findChild<QLabel *>(QStringLiteral("torqueWarning"))
-                    ->text()
-                    .startsWith(QLatin1String("Support the arm")));
+        const QString warning = wizard.findChild<QLabel *>(QStringLiteral("torqueWarning"))->text();
+        QVERIFY(warning.startsWith(QLatin1String("Support the arm")));
+        // A joint a line: no separator of one language between them, and the page is filled.
+        QCOMPARE(warning.count(QStringLiteral("\n• ")), 6);
         QTRY_COMPARE_WITH_TIMEOUT(wizard.page(), CalibrationWizard::Page::Recording, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(hand.done(), 30000);
         // What the servo read while recording: the elbow's offset of 300 taken off.

@@ -280,7 +280,7 @@ void CalibrationWizard::goToWarning()
     m_status->clear();
     m_warning->setText(tr("Support the arm: torque goes off on these joints, and the arm will "
                           "fall under its own weight if nothing holds it.\n\n%1")
-                           .arg(choice.described.join(QStringLiteral(", "))));
+                           .arg(u"• " + choice.described.join(u"\n• ")));
     showPage(Page::Warning);
 }
 
