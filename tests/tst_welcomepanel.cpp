@@ -7,6 +7,7 @@
 #include "serialports.h"
 #include "welcomepanel.h"
 
+#include <QHeaderView>
 #include <QPushButton>
 #include <QSettings>
 #include <QTableWidget>
@@ -48,6 +49,24 @@ private slots:
                      first);
         QCOMPARE(window.welcomePanel()->connectButton()->isEnabled(), !first.isEmpty());
         QCOMPARE(barConnect(window)->isEnabled(), !first.isEmpty());
+    }
+
+    // The description gets the room; a short column never takes it from it (the Chinese
+    // window gave 描述 28 px and the USB ID 620).
+    void theDescriptionTakesTheRoomTheShortColumnsLeave()
+    {
+        MainWindow window;
+        window.resize(1366, 768);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTableWidget *table = window.welcomePanel()->portTable();
+        QHeaderView *header = table->horizontalHeader();
+        const int description = header->sectionSize(1);
+        for (const int shortColumn : {0, 4})
+            QVERIFY2(description > header->sectionSize(shortColumn),
+                     qPrintable(QStringLiteral("%1 against %2")
+                                    .arg(description)
+                                    .arg(header->sectionSize(shortColumn))));
     }
 
     void bothConnectButtonsFollowTheSameRule()

@@ -71,7 +71,10 @@ QWidget *WelcomePanel::createPortsBox()
     m_ports->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_ports->setSelectionMode(QAbstractItemView::SingleSelection);
     m_ports->verticalHeader()->hide();
-    m_ports->horizontalHeader()->setStretchLastSection(true);
+    // The description (the adapter's own name, "USB Single Serial") takes the room left; the
+    // short columns keep their text's width, in any language.
+    m_ports->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_ports->horizontalHeader()->setSectionResizeMode(DescriptionColumn, QHeaderView::Stretch);
     connect(m_ports, &QTableWidget::itemSelectionChanged, this, [this] {
         if (m_ports->selectedItems().isEmpty())
             return;
@@ -178,7 +181,6 @@ void WelcomePanel::showPorts(const QVector<SerialPort> &ports)
             m_ports->setItem(row, UsbIdColumn, new QTableWidgetItem(system.usbId()));
         }
     }
-    m_ports->resizeColumnsToContents();
     m_noPorts->setVisible(ports.isEmpty());
     selectChosenRow();
 }
