@@ -86,6 +86,14 @@ private slots:
         QVERIFY(!teleop.start(run));
         QCOMPARE(teleop.problem(), Teleoperation::Problem::UnreadableFile);
 
+        // No file chosen: which one to choose, not "No file name specified".
+        run = settings();
+        run.followerCalibration.clear();
+        QVERIFY(!teleop.start(run));
+        QCOMPARE(teleop.problem(), Teleoperation::Problem::UnreadableFile);
+        QVERIFY2(teleop.message().contains(QStringLiteral("Choose the follower's")),
+                 qPrintable(teleop.message()));
+
         run = settings();
         run.leaderCalibration = writeTestFile(
             QStringLiteral("fewer.json"),
@@ -112,8 +120,11 @@ private slots:
         QVERIFY(ended.wait(10000));
         QVERIFY(!ended.first().at(0).toBool());
         QCOMPARE(teleop.problem(), Teleoperation::Problem::NotCalibrated);
-        QVERIFY2(teleop.message().contains(QStringLiteral("shoulder_pan")),
-                 qPrintable(teleop.message()));
+        // Which arm, what differs in words, that nothing was written, and a menu that exists.
+        for (const char *said : {"The leader's shoulder_pan", "the file says 12",
+                                 "Nothing was written", "Load calibration"})
+            QVERIFY2(teleop.message().contains(QLatin1String(said)), qPrintable(teleop.message()));
+        QVERIFY2(!teleop.message().contains(QLatin1String("wrote")), qPrintable(teleop.message()));
 
         // A leader port nobody answers on.
         run = settings();

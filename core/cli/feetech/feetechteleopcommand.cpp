@@ -53,7 +53,8 @@ FeetechTeleopCommand::identifyArm(FeetechDevice &device, const QVector<LeRobotMo
             return std::nullopt;
         }
         const QHash<QString, qint32> values = valuesByKey(decodeMemory(servo->table(), *memory));
-        const QStringList mismatches = feetech::calibrationMismatches(
+        const QStringList mismatches = feetech::calibrationDifferences(
+            servo->table(),
             feetech::calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax), values);
         if (!mismatches.isEmpty()) {
             m_output.err << "servoctl: "

@@ -5,6 +5,7 @@
 #include "busclient.h"
 #include "busoperations.h"
 #include "registerkeys.h"
+#include "robottemplate.h"
 #include "servoparameters.h"
 
 #include <QDir>
@@ -65,6 +66,14 @@ bool Teleoperation::start(const TeleopSettings &settings)
         return refuse(Problem::SamePort,
                       tr("The leader's port is the follower's: the leader and the follower are "
                          "two arms on two adapters."));
+    if (settings.followerCalibration.isEmpty())
+        return refuse(Problem::UnreadableFile,
+                      tr("Choose the follower's LeRobot calibration file: the one saved when "
+                         "the follower arm was calibrated (Robot › Calibrate arm…)."));
+    if (settings.leaderCalibration.isEmpty())
+        return refuse(Problem::UnreadableFile,
+                      tr("Choose the leader's LeRobot calibration file: the one saved when the "
+                         "leader arm was calibrated."));
     util::FileError error;
     const auto followerMotors = loadLeRobotCalibration(settings.followerCalibration, &error);
     if (!followerMotors)
@@ -280,17 +289,25 @@ void Teleoperation::checkCalibration(TeleopBus *bus, const ServoInfo &servo,
                      fail(Problem::BusFailed, read.message);
                      return;
                  }
-                 const QStringList mismatches = calibrationMismatches(
+                 const QStringList differences = calibrationDifferences(
+                     servo.table(),
                      calibrationWrites(motor.homingOffset, motor.rangeMin, motor.rangeMax),
                      valuesByKey(servo.table(), memory));
-                 if (!mismatches.isEmpty()) {
+                 if (!differences.isEmpty()) {
+                     const bool leader = bus == m_leader.get();
                      fail(Problem::NotCalibrated,
-                          tr("Joint %1 (servo %2) does not hold what %3 says (%4): write the "
-                             "file to the arm first (Robot > Calibration files).")
-                              .arg(motor.name)
+                          (leader ? tr("The leader's %1 (servo %2) does not hold what %3 says "
+                                       "(%4). Nothing was written. Connect to the leader arm and "
+                                       "write the file to it (Robot › Load calibration…), or "
+                                       "choose the leader's own file.")
+                                  : tr("The follower's %1 (servo %2) does not hold what %3 says "
+                                       "(%4). Nothing was written. Write the file to the "
+                                       "follower (Robot › Load calibration…), or choose the "
+                                       "follower's own file."))
+                              .arg(jointDisplayName(motor.name))
                               .arg(motor.id)
                               .arg(QDir::toNativeSeparators(file),
-                                   mismatches.join(QStringLiteral("; "))));
+                                   differences.join(QStringLiteral("; "))));
                      return;
                  }
                  next();

@@ -205,4 +205,24 @@ QStringList calibrationMismatches(const QVector<model::WriteItem> &items,
     return mismatches;
 }
 
+QStringList calibrationDifferences(const RegisterTable &table,
+                                   const QVector<model::WriteItem> &fileSays,
+                                   const QHash<QString, qint32> &servoHolds)
+{
+    QStringList differences;
+    for (const model::WriteItem &item : fileSays) {
+        const auto found = servoHolds.constFind(item.key);
+        if (found != servoHolds.constEnd() && *found == item.value)
+            continue;
+        const Register *reg = table.find(item.key);
+        differences.append(ArmCalibrationTr::tr("%1: the file says %2, the servo holds %3")
+                               .arg(reg ? tableText(reg->label) : item.key)
+                               .arg(item.value)
+                               .arg(found != servoHolds.constEnd()
+                                        ? QString::number(*found)
+                                        : ArmCalibrationTr::tr("nothing readable")));
+    }
+    return differences;
+}
+
 } // namespace feetech

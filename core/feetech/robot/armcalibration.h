@@ -15,6 +15,8 @@ namespace feetech {
 
 class RegisterTable;
 
+class RegisterTable;
+
 // The encoder of the families with a position offset (STS, SMS, HLS): 4096 steps a turn.
 constexpr int kEncoderSteps = 4096;
 // Where ServoBench puts the middle of a joint's range: the middle of the encoder.
@@ -145,5 +147,11 @@ QVector<model::WriteItem> calibrationWrites(qint32 offset, qint32 minimumLimit,
 // register (empty when it holds every value).
 QStringList calibrationMismatches(const QVector<model::WriteItem> &items,
                                   const QHash<QString, qint32> &readBack);
+// What a servo holds differently from what a calibration file says, before anything is written:
+// one "Position offset: the file says F, the servo holds H" a register, named as `table` names
+// it in the user's language (empty when it holds every value).
+QStringList calibrationDifferences(const RegisterTable &table,
+                                   const QVector<model::WriteItem> &fileSays,
+                                   const QHash<QString, qint32> &servoHolds);
 
 } // namespace feetech
