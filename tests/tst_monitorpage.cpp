@@ -426,6 +426,29 @@ private slots:
         QVERIFY2(names.contains(QStringLiteral("elbow_flex (ID 3)")), qPrintable(names.join(u',')));
     }
 
+    // A re-scan (the Doctor's, Scan) takes the bus and the list: the Monitor says it pauses,
+    // and goes on with the same servos once they are found again.
+    void aScanPausesTheMonitorWhichStartsAgainWithTheServosFound()
+    {
+        startSimulatorAndScan();
+        QString error;
+        QVERIFY2(m_page->start(&error), qPrintable(error));
+        QVERIFY(m_page->isRunning());
+        auto *message = m_page->findChild<QLabel *>(QStringLiteral("monitorMessage"));
+        QVERIFY(message);
+        QSignalSpy scanned(m_client.get(), &feetech::BusClient::scanFinished);
+        feetech::ScanOptions options;
+        options.lastId = 10;
+        QVERIFY(m_client->scan(options));
+        QVERIFY(!m_page->isRunning());
+        QVERIFY2(message->text().contains(QStringLiteral("paused while the bus is scanned")),
+                 qPrintable(message->text()));
+        QTRY_COMPARE_WITH_TIMEOUT(scanned.size(), 1, 30000);
+        QTRY_VERIFY2_WITH_TIMEOUT(m_page->isRunning(), qPrintable(message->text()), 10000);
+        QVERIFY2(message->text().contains(QStringLiteral("Monitoring again")),
+                 qPrintable(message->text()));
+    }
+
     void servoThatStopsAnsweringIsFlagged()
     {
         startSimulatorAndScan();

@@ -97,6 +97,13 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
         connect(m_client->telemetry(), &feetech::TelemetryHub::streamingChanged, this,
                 &MonitorPage::onMonitoringChanged);
         connect(m_client, &feetech::BusClient::statusChanged, this, &MonitorPage::onStatusChanged);
+        connect(m_client, &feetech::BusClient::scanFinished, this, [this] {
+            if (m_resumeWhenListed && m_client->servos()->count() == 0) {
+                m_resumeWhenListed = false;
+                showMessage(tr("The scan found no servo: monitoring stays stopped."), false);
+            }
+            resumeAfterScan();
+        });
         connect(m_client->share(), &feetech::ShareService::stateChanged, this,
                 &MonitorPage::updateStatusLine);
     }
@@ -404,6 +411,22 @@ void MonitorPage::rebuildServoList()
                                     [this](const Key &key) { return m_servoList->isListed(key); }),
                      m_unlisted.end());
     onTicksChanged();
+    resumeAfterScan();
+}
+
+void MonitorPage::resumeAfterScan()
+{
+    if (!m_resumeWhenListed || !m_client || m_client->isScanning()
+        || m_client->servos()->count() == 0)
+        return;
+    m_resumeWhenListed = false;
+    if (!m_client->link()->isConnected() || selectedServos().isEmpty())
+        return;
+    QString error;
+    if (start(&error))
+        showMessage(tr("Monitoring again, after the scan."), false);
+    else
+        showMessage(tr("The Monitor could not start again after the scan: %1").arg(error), true);
 }
 
 void MonitorPage::onTicksChanged()
@@ -458,6 +481,7 @@ void MonitorPage::onStatusChanged()
 
 void MonitorPage::toggleStream()
 {
+    m_resumeWhenListed = false; // the user's Start or Stop is the last word
     if (isRunning())
         stop();
     else
@@ -484,6 +508,16 @@ void MonitorPage::restartIfRunning()
 {
     if (!isRunning())
         return;
+    if (selectedServos().isEmpty() && m_client && m_client->servos()->count() == 0) {
+        // The list is scanned again (a re-scan of the Doctor, Scan): it goes on once it has
+        // servos, and says so meanwhile rather than stopping unsaid.
+        stop();
+        m_resumeWhenListed = true;
+        showMessage(tr("Monitoring paused while the bus is scanned; it starts again with the "
+                       "servos found."),
+                    false);
+        return;
+    }
     if (selectedServos().isEmpty()) {
         stop();
         showMessage(tr("Monitoring stopped: no servo is ticked."), false);

@@ -90,6 +90,8 @@ private:
     void togglePause();
     void chooseExportFile();
     void restartIfRunning();
+    // After a scan that paused it: monitoring again, of the ticked servos found.
+    void resumeAfterScan();
     void updatePlotServos();
     void updateControls();
     void updateStatusLine();
@@ -113,6 +115,8 @@ private:
     QTimer *m_readoutTimer = nullptr;
 
     bool m_readoutsDirty = true;
+
+    bool m_resumeWhenListed = false; // stopped by a new scan: starts again once it has servos
     QVector<Key> m_unlisted; // servos samples came for that the list does not name
     feetech::TelemetryStats m_stats;
 };
