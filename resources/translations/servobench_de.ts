@@ -43,6 +43,14 @@
         <source>nothing</source>
         <translation>nichts</translation>
     </message>
+    <message>
+        <source>%1: the file says %2, the servo holds %3</source>
+        <translation>%1: Die Datei sagt %2, das Servo hält %3</translation>
+    </message>
+    <message>
+        <source>nothing readable</source>
+        <translation>nichts Lesbares</translation>
+    </message>
 </context>
 <context>
     <name>BatchResultDialog</name>
@@ -4847,6 +4855,22 @@ Halten Sie Hände und Gegenstände vom Arm fern. Jetzt bewegen?</translation>
         <source>Shared bus · showing the other program&apos;s reads, none of ServoBench&apos;s own</source>
         <translation>Geteilter Bus · zeigt die Lesevorgänge des anderen Programms, keine eigenen von ServoBench</translation>
     </message>
+    <message>
+        <source>The scan found no servo: monitoring stays stopped.</source>
+        <translation>Der Scan fand kein Servo: Die Überwachung bleibt angehalten.</translation>
+    </message>
+    <message>
+        <source>Monitoring again, after the scan.</source>
+        <translation>Nach dem Scan wird wieder überwacht.</translation>
+    </message>
+    <message>
+        <source>The Monitor could not start again after the scan: %1</source>
+        <translation>Die Überwachung konnte nach dem Scan nicht wieder starten: %1</translation>
+    </message>
+    <message>
+        <source>Monitoring paused while the bus is scanned; it starts again with the servos found.</source>
+        <translation>Überwachung angehalten, während der Bus gescannt wird; sie startet danach mit den gefundenen Servos wieder.</translation>
+    </message>
 </context>
 <context>
     <name>MonitorReadouts</name>
@@ -9594,10 +9618,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <translation>sein Modell ist unbekannt</translation>
     </message>
     <message>
-        <source>Joint %1 (servo %2) does not hold what %3 says (%4): write the file to the arm first (Robot &gt; Calibration files).</source>
-        <translation>Gelenk %1 (Servo %2) enthält nicht, was %3 angibt (%4): Schreiben Sie die Datei zuerst auf den Arm (Roboter &gt; Kalibrierdateien).</translation>
-    </message>
-    <message>
         <source>The follower holds where it stands…</source>
         <translation>Der Folgearm hält an seiner Stelle…</translation>
     </message>
@@ -9624,6 +9644,22 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>%1 The follower holds where it is.</source>
         <translation>%1 Der Folgearm hält an seiner Stelle.</translation>
+    </message>
+    <message>
+        <source>Choose the follower&apos;s LeRobot calibration file: the one saved when the follower arm was calibrated (Robot › Calibrate arm…).</source>
+        <translation>Wählen Sie die LeRobot-Kalibrierdatei des Folgearms: die beim Kalibrieren des Folgearms gespeicherte (Roboter › Arm kalibrieren…).</translation>
+    </message>
+    <message>
+        <source>Choose the leader&apos;s LeRobot calibration file: the one saved when the leader arm was calibrated.</source>
+        <translation>Wählen Sie die LeRobot-Kalibrierdatei des Führungsarms: die beim Kalibrieren des Führungsarms gespeicherte.</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s %1 (servo %2) does not hold what %3 says (%4). Nothing was written. Connect to the leader arm and write the file to it (Robot › Load calibration…), or choose the leader&apos;s own file.</source>
+        <translation>%1 des Führungsarms (Servo %2) hält nicht, was %3 angibt (%4). Es wurde nichts geschrieben. Verbinden Sie sich mit dem Führungsarm und schreiben Sie die Datei hinein (Roboter › Kalibrierung laden…), oder wählen Sie die eigene Datei des Führungsarms.</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s %1 (servo %2) does not hold what %3 says (%4). Nothing was written. Write the file to the follower (Robot › Load calibration…), or choose the follower&apos;s own file.</source>
+        <translation>%1 des Folgearms (Servo %2) hält nicht, was %3 angibt (%4). Es wurde nichts geschrieben. Schreiben Sie die Datei in den Folgearm (Roboter › Kalibrierung laden…), oder wählen Sie die eigene Datei des Folgearms.</translation>
     </message>
 </context>
 <context>

@@ -43,6 +43,14 @@
         <source>nothing</source>
         <translation>无</translation>
     </message>
+    <message>
+        <source>%1: the file says %2, the servo holds %3</source>
+        <translation>%1：文件中为 %2，舵机中为 %3</translation>
+    </message>
+    <message>
+        <source>nothing readable</source>
+        <translation>无法读取</translation>
+    </message>
 </context>
 <context>
     <name>BatchResultDialog</name>
@@ -4824,6 +4832,22 @@ Keep hands and objects clear of the arm. Move it now?</source>
         <source>Shared bus · showing the other program&apos;s reads, none of ServoBench&apos;s own</source>
         <translation>共享总线 · 显示另一个程序的读取，不含 ServoBench 自身的读取</translation>
     </message>
+    <message>
+        <source>The scan found no servo: monitoring stays stopped.</source>
+        <translation>扫描未找到舵机：监视保持停止。</translation>
+    </message>
+    <message>
+        <source>Monitoring again, after the scan.</source>
+        <translation>扫描结束，已恢复监视。</translation>
+    </message>
+    <message>
+        <source>The Monitor could not start again after the scan: %1</source>
+        <translation>扫描后监视无法重新开始：%1</translation>
+    </message>
+    <message>
+        <source>Monitoring paused while the bus is scanned; it starts again with the servos found.</source>
+        <translation>扫描总线期间监视已暂停；扫描结束后将用找到的舵机重新开始。</translation>
+    </message>
 </context>
 <context>
     <name>MonitorReadouts</name>
@@ -9541,10 +9565,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <translation>其型号未知</translation>
     </message>
     <message>
-        <source>Joint %1 (servo %2) does not hold what %3 says (%4): write the file to the arm first (Robot &gt; Calibration files).</source>
-        <translation>关节 %1（舵机 %2）中的值与 %3 不符（%4）：请先将该文件写入机械臂（机器人 &gt; 校准文件）。</translation>
-    </message>
-    <message>
         <source>The follower holds where it stands…</source>
         <translation>从臂正保持在当前位置…</translation>
     </message>
@@ -9571,6 +9591,22 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>%1 The follower holds where it is.</source>
         <translation>%1 从臂保持在当前位置。</translation>
+    </message>
+    <message>
+        <source>Choose the follower&apos;s LeRobot calibration file: the one saved when the follower arm was calibrated (Robot › Calibrate arm…).</source>
+        <translation>请选择从臂的 LeRobot 校准文件：即校准从臂时保存的文件（机器人 › 校准机械臂…）。</translation>
+    </message>
+    <message>
+        <source>Choose the leader&apos;s LeRobot calibration file: the one saved when the leader arm was calibrated.</source>
+        <translation>请选择主臂的 LeRobot 校准文件：即校准主臂时保存的文件。</translation>
+    </message>
+    <message>
+        <source>The leader&apos;s %1 (servo %2) does not hold what %3 says (%4). Nothing was written. Connect to the leader arm and write the file to it (Robot › Load calibration…), or choose the leader&apos;s own file.</source>
+        <translation>主臂的 %1（舵机 %2）与 %3 中的值不符（%4）。未写入任何内容。请连接主臂并将该文件写入（机器人 › 加载校准…），或选择主臂自己的文件。</translation>
+    </message>
+    <message>
+        <source>The follower&apos;s %1 (servo %2) does not hold what %3 says (%4). Nothing was written. Write the file to the follower (Robot › Load calibration…), or choose the follower&apos;s own file.</source>
+        <translation>从臂的 %1（舵机 %2）与 %3 中的值不符（%4）。未写入任何内容。请将该文件写入从臂（机器人 › 加载校准…），或选择从臂自己的文件。</translation>
     </message>
 </context>
 <context>
