@@ -3,6 +3,8 @@
 
 #include "feetechpacket.h"
 
+#include <algorithm>
+
 namespace share {
 
 namespace {
@@ -78,6 +80,13 @@ void ObservedServos::learn(SharedTransaction &transaction, qint32 baud)
             store(transaction, id, address, params.mid(at + 1, length), true);
         }
     }
+    // A later part of the same transaction (a second answer from one ID, a SYNC WRITE naming
+    // it twice) may have written model bytes no table knows: what was decoded of that servo
+    // with the model before is not said.
+    transaction.registers.erase(
+        std::remove_if(transaction.registers.begin(), transaction.registers.end(),
+                       [this](const RegisterAccess &access) { return !table(access.id); }),
+        transaction.registers.end());
 }
 
 void ObservedServos::store(SharedTransaction &transaction, quint8 id, int address,
