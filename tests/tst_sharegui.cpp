@@ -4,7 +4,9 @@
 #include "programport.h"
 
 #include "busclient.h"
+#include "controlpage.h"
 #include "feetechpacket.h"
+#include "feetechworkspace.h"
 #include "hex.h"
 #include "monitorpage.h"
 #include "packetlogdock.h"
@@ -23,6 +25,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QStandardItemModel>
 #include <QStatusBar>
 #include <QtTest>
@@ -168,6 +171,30 @@ private slots:
         QVERIFY(dialog->pathEdit()->isEnabled());
         QVERIFY(dialog->startStopButton()->text().contains(QLatin1String("Start")));
         QVERIFY(!QFileInfo::exists(sharePath()));
+    }
+
+    // While shared, the Control page says why it neither reads nor moves a servo, and offers
+    // nothing that cannot work.
+    void theControlPageSaysWhyItWaitsWhileTheBusIsShared()
+    {
+        connectAndScanUpTo(3);
+        ShareDialog *dialog = openShareDialog();
+        QVERIFY(startSharing(*dialog));
+        ControlPage *control = m_window->feetechWorkspace()->controlPage();
+        control->setServo(0);
+        auto *hint = control->findChild<QLabel *>(QStringLiteral("controlHint"));
+        QVERIFY(hint);
+        QTRY_VERIFY(!hint->isHidden());
+        QVERIFY2(hint->text().contains(QLatin1String("shared with another program")),
+                 qPrintable(hint->text()));
+        QVERIFY(!control->findChild<QSlider *>(QStringLiteral("goalSlider"))->isEnabled());
+        QString error;
+        QVERIFY(!control->moveTo(2000, &error));
+        // Sharing stopped: the page controls the servo again.
+        dialog->startStopButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(client()->share()->state(), ShareService::State::Off, 10000);
+        QTRY_VERIFY(hint->isHidden());
+        QVERIFY(control->findChild<QSlider *>(QStringLiteral("goalSlider"))->isEnabled());
     }
 
     void theMonitorPlotsTheProgramsReads()

@@ -12,6 +12,7 @@
 #include "registerspinbox.h"
 #include "registerwidgets.h"
 #include "servoparameters.h"
+#include "shareservice.h"
 #include "widgethelpers.h"
 
 #include <QButtonGroup>
@@ -139,6 +140,10 @@ ControlPage::ControlPage(feetech::BusClient *client, QWidget *parent)
             &ControlPage::onTelemetry);
     connect(m_client->telemetry(), &feetech::TelemetryHub::streamingChanged, this,
             &ControlPage::updatePresent);
+    connect(m_client->share(), &feetech::ShareService::stateChanged, this, [this] {
+        updateEnabled();
+        updateRanges();
+    });
     connect(m_client, &feetech::BusClient::allTorqueOffRequested, this,
             &ControlPage::onAllTorqueOff);
     connect(m_client, &feetech::BusClient::statusChanged, this, [this] {
@@ -216,7 +221,7 @@ QString ControlPage::statusText() const
 bool ControlPage::ready() const
 {
     return m_client->link()->isConnected() && m_index >= 0 && m_index < m_client->servos()->count()
-        && m_client->servos()->at(m_index).info.hasTable();
+        && m_client->servos()->at(m_index).info.hasTable() && !m_client->share()->isActive();
 }
 
 bool ControlPage::testRunsHere() const
@@ -471,12 +476,16 @@ void ControlPage::updateEnabled()
             m_hint->setText(tr("Select a servo in the tree to control it."));
         else if (!m_client->link()->isConnected())
             m_hint->setText(tr("The bus is not connected: connect and scan to control servos."));
+        else if (m_client->share()->isActive())
+            m_hint->setText(tr("The bus is shared with another program: ServoBench neither reads "
+                               "nor moves this servo meanwhile. Stop sharing (Link › Share this "
+                               "bus…) to control it here."));
         else
             m_hint->setText(tr("This servo's model is unknown: ServoBench does not move it."));
         m_hint->show();
     }
 
-    const bool torque = has(kTorqueEnable);
+    const bool torque = has(kTorqueEnable); // false while shared: `table` is none then
     m_controls.torqueOff->setEnabled(torque);
     m_controls.torqueOn->setEnabled(torque);
     m_controls.torqueDamping->setEnabled(torque && allowsDamping(*table));
