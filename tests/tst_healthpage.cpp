@@ -212,6 +212,17 @@ private slots:
         QCOMPARE(panel->stateLabel()->text(), error);
     }
 
+    // Four joints of an SO-101 answer, its wrist roll and gripper do not: the check says so, it
+    // does not say "4 servo(s) checked" as if that were the arm.
+    void jointsOfTheArmThatDoNotAnswerAreAFinding()
+    {
+        startSimulatorAndScan({u"STS3215", u"STS3215", u"STS3215", u"STS3215"});
+        checkAll();
+        const QString said = m_page->stateLabel()->text();
+        for (const char *part : {"did not answer the scan", "ID 5", "ID 6"})
+            QVERIFY2(said.contains(QLatin1String(part)), qPrintable(said));
+    }
+
     void theWorkspaceHasAHealthTab()
     {
         FeetechWorkspace workspace(m_client.get());

@@ -1070,6 +1070,10 @@
         <source>All torque off: torque is off on every servo of the bus.</source>
         <translation>Alle Drehmomente aus: Das Drehmoment ist an jedem Servo des Busses aus.</translation>
     </message>
+    <message>
+        <source>The bus is shared with another program: ServoBench neither reads nor moves this servo meanwhile. Stop sharing (Link › Share this bus…) to control it here.</source>
+        <translation>Der Bus wird mit einem anderen Programm geteilt: ServoBench liest und bewegt dieses Servo währenddessen nicht. Beenden Sie die Freigabe (Verbindung › Diesen Bus teilen…), um es hier zu steuern.</translation>
+    </message>
 </context>
 <context>
     <name>Decoder</name>
@@ -3693,6 +3697,17 @@ Eine belegte ID wird abgelehnt.</translation>
     <message>
         <source>Settings</source>
         <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1 (ID %2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Of the %1, %n joint(s) did not answer the scan: %2. Check their cables and scan again.</source>
+        <translation>
+            <numerusform>Vom %1 antwortete %n Gelenk nicht beim Scan: %2. Prüfen Sie seine Kabel und scannen Sie erneut.</numerusform>
+            <numerusform>Vom %1 antworteten %n Gelenke nicht beim Scan: %2. Prüfen Sie ihre Kabel und scannen Sie erneut.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -1067,6 +1067,10 @@
         <source>All torque off: torque is off on every servo of the bus.</source>
         <translation>全部关闭扭矩：总线上每个舵机的扭矩均已关闭。</translation>
     </message>
+    <message>
+        <source>The bus is shared with another program: ServoBench neither reads nor moves this servo meanwhile. Stop sharing (Link › Share this bus…) to control it here.</source>
+        <translation>总线正与另一个程序共享：在此期间 ServoBench 既不读取也不移动此舵机。请停止共享（连接 › 共享此总线…）后在此控制它。</translation>
+    </message>
 </context>
 <context>
     <name>Decoder</name>
@@ -3672,6 +3676,16 @@ An ID in use is refused.</source>
     <message>
         <source>Settings</source>
         <translation>设置</translation>
+    </message>
+    <message>
+        <source>%1 (ID %2)</source>
+        <translation>%1（ID %2）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Of the %1, %n joint(s) did not answer the scan: %2. Check their cables and scan again.</source>
+        <translation>
+            <numerusform>%1 有 %n 个关节在扫描中未应答：%2。请检查其线缆后重新扫描。</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -4,8 +4,10 @@
 
 #include "busclient.h"
 #include "healthmovetest.h"
+#include "jointnames.h"
 #include "palette.h"
 #include "recentfiles.h"
+#include "robottemplate.h"
 #include "settingscheckpanel.h"
 #include "widgethelpers.h"
 
@@ -161,7 +163,10 @@ HealthPage::HealthPage(feetech::BusClient *client, QWidget *parent)
                 m_checking = false;
                 m_progress->setVisible(false);
                 m_checkedAt = QDateTime::currentDateTime();
-                showState(text, !completed);
+                // Servos of the arm that are not on the bus are a finding too, not silence.
+                const QString missing = missingJoints();
+                showState(missing.isEmpty() ? text : text + u' ' + missing,
+                          !completed || !missing.isEmpty());
                 updateActions();
             });
     connect(m_client->health(), &feetech::HealthService::moveTested, this,
@@ -295,6 +300,30 @@ QVector<ServoHealth> HealthPage::results() const
             checked.append(*found);
     }
     return checked;
+}
+
+QString HealthPage::missingJoints() const
+{
+    const feetech::JointNames names = feetech::JointNames::of(*m_client);
+    if (names.isEmpty())
+        return {};
+    for (const feetech::RobotTemplate &robot : feetech::availableRobotTemplates()) {
+        if (robot.name != names.robot())
+            continue;
+        QStringList missing;
+        for (const feetech::RobotJoint &joint : robot.joints) {
+            if (m_client->servos()->indexOf({quint8(joint.id), robot.baud}) < 0)
+                missing.append(
+                    tr("%1 (ID %2)").arg(feetech::jointDisplayName(joint.name)).arg(joint.id));
+        }
+        if (missing.isEmpty())
+            return {};
+        return tr("Of the %1, %n joint(s) did not answer the scan: %2. Check their cables and "
+                  "scan again.",
+                  nullptr, int(missing.size()))
+            .arg(feetech::robotDisplayName(robot.name), QLocale().createSeparatedList(missing));
+    }
+    return {};
 }
 
 void HealthPage::forgetResults()

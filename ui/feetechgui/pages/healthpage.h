@@ -80,6 +80,9 @@ private:
     void rebuildRows();
     // Drops the verdicts and what was said of them: the servos they spoke of are gone.
     void forgetResults();
+    // The joints of the arm the servos match that the list lacks, said in a sentence; empty
+    // when none is missing or the servos are no known arm.
+    QString missingJoints() const;
     void reassess();
     void fillRow(int row, const feetech::ServoHealth &health);
     void updateActions();
