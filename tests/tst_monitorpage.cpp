@@ -17,6 +17,7 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTabBar>
 #include <QtTest>
 
 #include <memory>
@@ -125,9 +126,11 @@ private slots:
 
     void tenMinutesAtOneHundredHertzForSixServosStayBounded()
     {
+        m_page->resize(1180, 1600); // room for all six panes: every series drawn
         m_page->setQuantities(
             {std::begin(feetech::kAllQuantities), std::end(feetech::kAllQuantities)});
         TelemetryPlot *plot = m_page->plot();
+        QTRY_COMPARE(plot->quantities().size(), feetech::kQuantityCount);
         QCOMPARE(plot->seriesCount(), 0);
         const qint64 origin = 1000000000;
         qint64 now = origin;
@@ -330,14 +333,42 @@ private slots:
         const QImage image(path);
         QVERIFY(!image.isNull());
         QVERIFY(image.width() > 0 && image.height() > 0);
-        // All three charts, stacked.
-        QCOMPARE(image.size(), m_page->plot()->size() * m_page->plot()->devicePixelRatioF());
+        // All three charts, stacked, at the file's own size, not the window's.
+        QCOMPARE(image.size(), m_page->plot()->exportSize(3));
 
         QVERIFY(!m_page->exportPng(m_dir.filePath(QStringLiteral("missing/plot.png")), &error));
         QVERIFY(!error.isEmpty());
         m_page->setQuantities({});
         QVERIFY(!m_page->exportPng(path, &error));
         QVERIFY(error.contains(QStringLiteral("quantity")));
+    }
+
+    // Six quantities in the Monitor of a 1366x768 window: not six unreadable slivers, but one
+    // pane at a time, chosen by a tab, with three labelled values at least; tall enough, all.
+    void aShortPlotShowsOneQuantityAtATimeEachReadable()
+    {
+        m_page->resize(1000, 430);
+        m_page->setQuantities(
+            {std::begin(feetech::kAllQuantities), std::end(feetech::kAllQuantities)});
+        feed(*m_page, 0, 3, 3);
+        auto *tabs = m_page->findChild<QTabBar *>(QStringLiteral("monitorQuantityTabs"));
+        QVERIFY(tabs);
+        QTRY_VERIFY(tabs->isVisible());
+        QCOMPARE(tabs->count(), feetech::kQuantityCount);
+        TelemetryPlot *plot = m_page->plot();
+        for (int tab = 0; tab < tabs->count(); ++tab) {
+            tabs->setCurrentIndex(tab);
+            QCOMPARE(plot->quantities().size(), 1);
+            const auto quantity = feetech::Quantity(tabs->tabData(tab).toInt());
+            QCOMPARE(plot->quantities().first(), quantity);
+            plot->refresh();
+            QVERIFY2(plot->valueLabels(quantity).size() >= 3,
+                     qPrintable(QString::number(plot->valueLabels(quantity).size())));
+        }
+        // Given the room, every quantity its pane again.
+        m_page->resize(1000, 1600);
+        QTRY_VERIFY(!tabs->isVisible());
+        QCOMPARE(plot->quantities().size(), feetech::kQuantityCount);
     }
 
     void monitoringTheSimulatedBusFillsReadoutsAndPlot()

@@ -27,6 +27,8 @@
 #include <QStandardPaths>
 #include <QStyle>
 #include <QTimer>
+#include <QTabBar>
+#include <QScopedValueRollback>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -58,11 +60,29 @@ MonitorPage::MonitorPage(feetech::BusClient *client, QWidget *parent)
     rightLayout->setContentsMargins(6, 0, 0, 0);
     auto *splitter = new QSplitter(Qt::Vertical, right);
     splitter->setChildrenCollapsible(false);
-    m_plot = new TelemetryPlot(splitter);
+    // The plot, and over it, when not every quantity ticked has room for a readable pane, a
+    // tab a quantity: one pane at a time then.
+    m_plotBox = new QWidget(splitter);
+    auto *plotLayout = new QVBoxLayout(m_plotBox);
+    plotLayout->setContentsMargins(0, 0, 0, 0);
+    plotLayout->setSpacing(0);
+    m_quantityTabs = new QTabBar(m_plotBox);
+    m_quantityTabs->setObjectName(QStringLiteral("monitorQuantityTabs"));
+    m_quantityTabs->setDocumentMode(true);
+    m_quantityTabs->setExpanding(false);
+    m_quantityTabs->hide();
+    connect(m_quantityTabs, &QTabBar::currentChanged, this, [this] {
+        if (!m_fittingPanes)
+            fitPanes();
+    });
+    plotLayout->addWidget(m_quantityTabs);
+    m_plot = new TelemetryPlot(m_plotBox);
     m_plot->setWindowSeconds(m_windowCombo->currentData().toDouble()); // as last chosen
     connect(m_plot, &TelemetryPlot::pausedChanged, this, &MonitorPage::updateControls);
     connect(m_plot, &TelemetryPlot::zoomedChanged, this, &MonitorPage::updateControls);
-    splitter->addWidget(m_plot);
+    plotLayout->addWidget(m_plot, 1);
+    m_plotBox->installEventFilter(this);
+    splitter->addWidget(m_plotBox);
 
     m_readouts = new MonitorReadouts(m_client, splitter);
     splitter->addWidget(m_readouts);
@@ -338,7 +358,8 @@ bool MonitorPage::isRunning() const
 bool MonitorPage::exportPng(const QString &path, QString *error)
 {
     QString why;
-    if (m_plot->exportPng(path, &why)) {
+    // Every quantity ticked, at the file's own size, whatever the window shows.
+    if (m_plot->exportPng(path, &why, quantities())) {
         showMessage(tr("Plot saved to %1.").arg(QDir::toNativeSeparators(path)), false);
         return true;
     }
@@ -440,8 +461,41 @@ void MonitorPage::onTicksChanged()
 
 void MonitorPage::onQuantityToggled()
 {
-    m_plot->setQuantities(quantities());
+    fitPanes();
     m_exportButton->setEnabled(!quantities().isEmpty());
+}
+
+void MonitorPage::fitPanes()
+{
+    const QVector<feetech::Quantity> ticked = quantities();
+    const feetech::Quantity shown = m_quantityTabs->isVisible() && m_quantityTabs->currentIndex() >= 0
+        ? feetech::Quantity(m_quantityTabs->tabData(m_quantityTabs->currentIndex()).toInt())
+        : (ticked.isEmpty() ? feetech::Quantity::Position : ticked.first());
+    const QScopedValueRollback<bool> fitting(m_fittingPanes, true);
+    if (ticked.size() <= m_plot->readablePanesIn(m_plotBox->height())) {
+        m_quantityTabs->hide();
+        m_plot->setQuantities(ticked);
+        return;
+    }
+    // One pane, its quantity chosen by a tab; the tabs keep the order of the ticks.
+    while (m_quantityTabs->count() > 0)
+        m_quantityTabs->removeTab(0);
+    for (const feetech::Quantity quantity : ticked) {
+        const int tab = m_quantityTabs->addTab(feetech::quantityName(quantity));
+        m_quantityTabs->setTabData(tab, int(quantity));
+        if (quantity == shown)
+            m_quantityTabs->setCurrentIndex(tab);
+    }
+    m_quantityTabs->show();
+    m_plot->setQuantities({feetech::Quantity(
+        m_quantityTabs->tabData(std::max(0, m_quantityTabs->currentIndex())).toInt())});
+}
+
+bool MonitorPage::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_plotBox && event->type() == QEvent::Resize && !m_fittingPanes)
+        QTimer::singleShot(0, this, &MonitorPage::fitPanes); // after the layout settles
+    return QWidget::eventFilter(watched, event);
 }
 
 void MonitorPage::onRateChosen()

@@ -12,6 +12,7 @@
 #include <QVector>
 #include <QWidget>
 
+class QTabBar;
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -72,6 +73,7 @@ signals:
 
 protected:
     void showEvent(QShowEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
     void hideEvent(QHideEvent *event) override;
 
 private:
@@ -90,6 +92,8 @@ private:
     void togglePause();
     void chooseExportFile();
     void restartIfRunning();
+    // Every quantity ticked a pane where they all fit readably, else one pane and a tab each.
+    void fitPanes();
     // After a scan that paused it: monitoring again, of the ticked servos found.
     void resumeAfterScan();
     void updatePlotServos();
@@ -116,6 +120,9 @@ private:
 
     bool m_readoutsDirty = true;
 
+    QWidget *m_plotBox = nullptr;
+    QTabBar *m_quantityTabs = nullptr;
+    bool m_fittingPanes = false;
     bool m_resumeWhenListed = false; // stopped by a new scan: starts again once it has servos
     QVector<Key> m_unlisted; // servos samples came for that the list does not name
     feetech::TelemetryStats m_stats;

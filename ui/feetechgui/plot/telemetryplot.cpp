@@ -134,6 +134,7 @@ void TelemetryPlot::addSamples(const QVector<feetech::FeedbackSample> &samples)
 
 void TelemetryPlot::setServoNames(const QHash<feetech::ServoAddress, QString> &names)
 {
+    m_servoNames = names;
     if (m_painter.setServoNames(names)) {
         m_layoutDirty = true; // the legends' width changes with the names
         refresh();
@@ -215,21 +216,43 @@ void TelemetryPlot::scheduleFrame()
         m_frameTimer->start();
 }
 
-bool TelemetryPlot::exportPng(const QString &path, QString *error)
+bool TelemetryPlot::exportPng(const QString &path, QString *error,
+                              const QVector<feetech::Quantity> &quantities)
 {
     const auto fail = [error](const QString &why) {
         if (error)
             *error = why;
         return false;
     };
-    if (m_painter.panes().empty())
+    const QVector<feetech::Quantity> drawn = quantities.isEmpty() ? m_quantities : quantities;
+    if (drawn.isEmpty())
         return fail(tr("There is nothing to export: choose at least one quantity to plot."));
     if (path.isEmpty())
         return fail(tr("No file name was given for the image."));
     m_viewDirty = true;
     refresh();
-    const QImage image = grab().toImage();
-    if (image.isNull() || image.width() <= 0 || image.height() <= 0)
+    // A surface of the file's size, never shown, painted as the plot paints itself.
+    QWidget canvas;
+    canvas.setAttribute(Qt::WA_DontShowOnScreen);
+    canvas.setFont(font());
+    canvas.setPalette(palette());
+    canvas.resize(exportSize(int(drawn.size())));
+    TelemetryPlotPainter painter(canvas, m_buffer);
+    painter.setServoNames(m_servoNames);
+    painter.setQuantities(drawn);
+    painter.tracesChanged();
+    painter.layoutPanes();
+    painter.fitToView(m_viewFrom, m_viewTo);
+    QImage image(canvas.size(), QImage::Format_ARGB32_Premultiplied);
+    image.fill(palette().color(QPalette::Window));
+    {
+        QPainter onImage(&image);
+        TelemetryPlotPainter::View view;
+        view.from = m_viewFrom;
+        view.to = m_viewTo;
+        painter.paint(onImage, QRegion(canvas.rect()), view);
+    }
+    if (image.isNull())
         return fail(tr("The plot could not be drawn into an image (it has no size)."));
     QImageWriter writer(path, "png");
     if (!writer.write(image)) {
@@ -237,6 +260,22 @@ bool TelemetryPlot::exportPng(const QString &path, QString *error)
                         .arg(QDir::toNativeSeparators(path), writer.errorString()));
     }
     return true;
+}
+
+QSize TelemetryPlot::exportSize(int panes) const
+{
+    const QFontMetrics metrics(font());
+    return {kExportWidth, kExportPaneHeight * std::max(1, panes) + 2 * metrics.height() + 30};
+}
+
+int TelemetryPlot::readablePanesIn(int height) const
+{
+    const QFontMetrics metrics(font());
+    const int title = metrics.height() + 8;
+    const int timeAxis = 2 * metrics.height() + 14;
+    // Three labels a pane, each hanging half a line around its grid line, a line apart.
+    const int pane = title + 5 * metrics.height() + 12;
+    return std::max(1, (height - timeAxis) / pane);
 }
 
 QColor TelemetryPlot::servoColor(quint8 id, qint32 baud) const

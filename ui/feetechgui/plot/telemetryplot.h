@@ -79,8 +79,18 @@ public:
     // Brings the view up to date now (the frame timer does this while data comes in).
     void refresh();
 
-    // The whole stack of panes as one PNG; false and *error when it cannot be written.
-    bool exportPng(const QString &path, QString *error = nullptr);
+    // The panes of `quantities` (none given: those shown) as one PNG, drawn for the file at a
+    // size of its own (kExportWidth wide, kExportPaneHeight a pane), whatever the window's;
+    // false and *error when it cannot be written.
+    static constexpr int kExportWidth = 1600;
+    static constexpr int kExportPaneHeight = 300;
+    bool exportPng(const QString &path, QString *error = nullptr,
+                   const QVector<feetech::Quantity> &quantities = {});
+    QSize exportSize(int panes) const;
+
+    // How many panes fit in `height` pixels, each tall enough for its title and three labelled
+    // values; the page shows fewer panes (with a chooser) when not all fit.
+    int readablePanesIn(int height) const;
 
     // ---- for tests, the page and the benchmark
     int seriesCount() const; // drawn series: servos × quantities
@@ -137,6 +147,7 @@ private:
     void requestPaint(); // of the frame region only, unless the chrome changed too
 
     QVector<feetech::Quantity> m_quantities;
+    QHash<feetech::ServoAddress, QString> m_servoNames; // for a painter of an export
     TelemetryBuffer m_buffer;
     TelemetryPlotPainter m_painter {*this, m_buffer};
     QTimer *m_frameTimer = nullptr;
