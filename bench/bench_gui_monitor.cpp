@@ -131,7 +131,9 @@ int main(int argc, char **argv)
 
     feetech::BusClient client;
     MonitorPage page(&client);
-    page.resize(1180, 820);
+    // Tall enough for every quantity's pane (six with --all-quantities): the figure is of
+    // every line drawn, not of the one pane a short window shows at a time.
+    page.resize(1180, allQuantities ? 1250 : 820);
     page.show();
     bench::Waiter connected;
     QObject::connect(&client, &feetech::BusClient::statusChanged, [&](const auto &status) {
@@ -158,6 +160,11 @@ int main(int argc, char **argv)
         page.setQuantities(QVector<feetech::Quantity>(std::begin(feetech::kAllQuantities),
                                                       std::end(feetech::kAllQuantities)));
     page.setRate(rateHz);
+    QCoreApplication::processEvents(); // the panes are fitted to the page's height
+    if (page.plot()->quantities().size() != page.quantities().size())
+        return fail(QStringLiteral("the plot shows %1 of %2 quantities: the page is too short")
+                        .arg(page.plot()->quantities().size())
+                        .arg(page.quantities().size()));
     QString error;
     if (!page.start(&error))
         return fail(error);
