@@ -105,6 +105,40 @@ private slots:
         QCOMPARE(cell(log, 0, PacketLogModel::MeaningColumn), QStringLiteral("frame 990"));
     }
 
+    // Errors are what one looks for among thousands of frames: they outlast ordinary rows (the
+    // header counted 31 errors while Errors only showed one), within half of the log.
+    void errorsStayLongerThanOrdinaryRows()
+    {
+        PacketLogModel log;
+        log.setCapacity(100);
+        for (int n = 0; n < 1000; ++n) {
+            PacketLogEntry entry = logEntry(n);
+            if (n % 50 == 0)
+                entry.error = QStringLiteral("timeout");
+            log.append(entry);
+            if (n % 10 == 9)
+                log.flush();
+        }
+        log.flush();
+        QCOMPARE(log.rowCount(), 100);
+        int errors = 0;
+        for (int row = 0; row < log.rowCount(); ++row)
+            errors += !log.entry(row).error.isEmpty();
+        QCOMPARE(errors, 20); // every one of them
+        QCOMPARE(log.droppedErrorCount(), 0);
+        QCOMPARE(log.entry(0).summary, QStringLiteral("frame 0")); // the oldest error, kept
+        QCOMPARE(log.entry(99).summary, QStringLiteral("frame 999"));
+        // Errors past half of the log go as the oldest rows do, and are counted.
+        for (int n = 1000; n < 1200; ++n) {
+            PacketLogEntry entry = logEntry(n);
+            entry.error = QStringLiteral("timeout");
+            log.append(entry);
+        }
+        log.flush();
+        QCOMPARE(log.rowCount(), 100);
+        QVERIFY(log.droppedErrorCount() > 0);
+    }
+
     void pauseHoldsNewEntriesUntilResumed()
     {
         PacketLogModel log;

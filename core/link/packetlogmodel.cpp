@@ -69,18 +69,47 @@ void PacketLogModel::flush()
         return;
 
     const int incoming = int(m_queue.size()); // trimQueue() keeps this <= capacity
-    const int overflow = int(m_rows.size()) + incoming - m_capacity;
-    if (overflow > 0) {
-        beginRemoveRows({}, 0, overflow - 1);
-        m_rows.erase(m_rows.begin(), m_rows.begin() + overflow);
-        endRemoveRows();
-    }
+    dropOldest(int(m_rows.size()) + incoming - m_capacity);
     const int first = int(m_rows.size());
     beginInsertRows({}, first, first + incoming - 1);
     std::move(m_queue.begin(), m_queue.end(), std::back_inserter(m_rows));
     m_queue.clear();
     endInsertRows();
     emit countsChanged(m_totalCount, m_errorCount);
+}
+
+void PacketLogModel::dropOldest(int count)
+{
+    if (count <= 0)
+        return;
+    // Errors are what people look for among thousands of frames: ordinary rows go first, while
+    // errors take at most half of the log; past that the oldest rows go, errors or not.
+    const auto isError = [](const PacketLogEntry &entry) {
+        return !entry.error.isEmpty();
+    };
+    const int errors = int(std::count_if(m_rows.begin(), m_rows.end(), isError));
+    if (errors > m_capacity / 2 || int(m_rows.size()) - errors < count) {
+        const int dropped = std::min(count, int(m_rows.size()));
+        m_droppedErrors += int(std::count_if(m_rows.begin(), m_rows.begin() + dropped, isError));
+        beginRemoveRows({}, 0, dropped - 1);
+        m_rows.erase(m_rows.begin(), m_rows.begin() + dropped);
+        endRemoveRows();
+        return;
+    }
+    // Runs of ordinary rows from the oldest, each removed as one range.
+    int row = 0;
+    while (count > 0) {
+        while (isError(m_rows.at(std::size_t(row))))
+            ++row;
+        int end = row;
+        while (end < int(m_rows.size()) && end - row < count
+               && !isError(m_rows.at(std::size_t(end))))
+            ++end;
+        beginRemoveRows({}, row, end - 1);
+        m_rows.erase(m_rows.begin() + row, m_rows.begin() + end);
+        endRemoveRows();
+        count -= end - row;
+    }
 }
 
 std::chrono::milliseconds PacketLogModel::batchInterval() const
@@ -98,12 +127,8 @@ void PacketLogModel::setCapacity(int capacity)
     m_capacity = std::max(capacity, 1);
     trimQueue();
     // Only the rows views already have are removed; while paused the held entries stay held.
-    const int overflow = int(m_rows.size()) - m_capacity;
-    if (overflow > 0 && !m_paused) {
-        beginRemoveRows({}, 0, overflow - 1);
-        m_rows.erase(m_rows.begin(), m_rows.begin() + overflow);
-        endRemoveRows();
-    }
+    if (!m_paused)
+        dropOldest(int(m_rows.size()) - m_capacity);
 }
 
 void PacketLogModel::setPaused(bool paused)
@@ -134,6 +159,7 @@ void PacketLogModel::clear()
     endResetModel();
     m_totalCount = 0;
     m_errorCount = 0;
+    m_droppedErrors = 0;
     emit countsChanged(m_totalCount, m_errorCount);
 }
 

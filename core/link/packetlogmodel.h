@@ -58,6 +58,9 @@ public:
     // capacity and those held while paused.
     int totalCount() const { return m_totalCount; }
     int errorCount() const { return m_errorCount; }
+    // Errors dropped for capacity: ordinary rows go first, so errors stay longer, but not
+    // forever (they may take half of the log).
+    int droppedErrorCount() const { return m_droppedErrors; }
 
     const PacketLogEntry &entry(int row) const { return m_rows.at(std::size_t(row)); }
 
@@ -80,9 +83,12 @@ signals:
     void countsChanged(int total, int errors);
 
 private:
+    // Drops `count` rows for capacity, ordinary ones first.
+    void dropOldest(int count);
     void trimQueue();
 
     std::deque<PacketLogEntry> m_rows;
+    int m_droppedErrors = 0;
     std::deque<PacketLogEntry> m_queue;
     QTimer m_batchTimer;
     int m_capacity = kDefaultCapacity;

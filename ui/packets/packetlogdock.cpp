@@ -225,8 +225,13 @@ void PacketLogDock::updateCounts()
     m_counts->setToolTip(m_model->isPaused()
                              ? tr("New frames are kept while paused and appear when you resume")
                              : m_model->rowCount() < m_shownTotal
-                             ? tr("The log keeps the newest %n frame(s); older ones were dropped",
+                             ? tr("The log keeps the newest %n frame(s), errors longer; older "
+                                  "ones were dropped",
                                   nullptr, m_model->capacity())
+                                 + (m_model->droppedErrorCount() > 0 ? u'\n'
+                                            + tr("%n older error(s) among them", nullptr,
+                                                 m_model->droppedErrorCount())
+                                                                     : QString())
                              : QString());
 }
 
