@@ -9,6 +9,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -163,6 +164,25 @@ private slots:
                      feetech::MotorSetupFlow::JointState::ToDo);
         QVERIFY2(status(0).contains(QLatin1String("ID 1 answers, but ")), qPrintable(status(0)));
         QCOMPARE(m_wizard->flow()->currentJoint(), 1);
+        // That long status is read whole: its row is as tall as its wrapped lines.
+        auto *list = m_wizard->findChild<QTreeWidget *>(QStringLiteral("jointList"));
+        QVERIFY(list);
+        const int statusColumn = 3;
+        // As narrow as a small screen (or a longer sentence in another language) makes it.
+        list->header()->setStretchLastSection(false);
+        list->setColumnWidth(statusColumn, 140);
+        QCoreApplication::processEvents();
+        const int width = list->columnWidth(statusColumn);
+        const int lines = list->fontMetrics()
+                              .boundingRect(QRect(0, 0, width, 10000), Qt::TextWordWrap, status(0))
+                              .height()
+            / list->fontMetrics().lineSpacing();
+        QVERIFY2(lines > 1, qPrintable(QString::number(lines)));
+        QVERIFY2(list->visualItemRect(list->topLevelItem(0)).height()
+                     >= lines * list->fontMetrics().lineSpacing(),
+                 qPrintable(QStringLiteral("%1 lines in %2 px")
+                                .arg(lines)
+                                .arg(list->visualItemRect(list->topLevelItem(0)).height())));
     }
 
     void theRobotOfferedFirstIsTheOneEveryWizardOffers()

@@ -86,7 +86,12 @@ void SetupWizard::buildUi()
     m_jointList->setObjectName(QStringLiteral("jointList"));
     m_jointList->setHeaderLabels({tr("Joint"), tr("ID"), tr("Model"), tr("Status")});
     m_jointList->setRootIsDecorated(false);
-    m_jointList->setUniformRowHeights(true);
+    // A status says why a joint is not done ("ID 3 answers as an SCS15, not an STS3215"): it
+    // wraps onto as many lines as it needs rather than end in "…".
+    m_jointList->setWordWrap(true);
+    m_jointList->setUniformRowHeights(false);
+    // The rows' heights follow the status column's width (a tree sizes rows by their hints).
+    connect(m_jointList->header(), &QHeaderView::sectionResized, this, &SetupWizard::fitStatusRows);
     m_jointList->header()->setStretchLastSection(true);
     m_jointList->setColumnWidth(SetupNameColumn, 130);
     m_jointList->setColumnWidth(SetupIdColumn, 40);
@@ -255,6 +260,29 @@ void SetupWizard::showJoints()
     }
     if (current >= 0)
         m_jointList->setCurrentItem(m_jointList->topLevelItem(current));
+    fitStatusRows();
+}
+
+void SetupWizard::fitStatusRows()
+{
+    const int width = std::max(40, m_jointList->columnWidth(SetupStatusColumn) - 8);
+    bool changed = false;
+    for (int row = 0; row < m_jointList->topLevelItemCount(); ++row) {
+        QTreeWidgetItem *item = m_jointList->topLevelItem(row);
+        const QFontMetrics metrics(item->font(SetupStatusColumn));
+        const int height = metrics
+                               .boundingRect(QRect(0, 0, width, 10000), Qt::TextWordWrap,
+                                             item->text(SetupStatusColumn))
+                               .height()
+            + 4;
+        if (item->sizeHint(SetupStatusColumn).height() != height) {
+            // A size hint with no width is none at all: the column's width goes with it.
+            item->setSizeHint(SetupStatusColumn, QSize(width, height));
+            changed = true;
+        }
+    }
+    if (changed)
+        m_jointList->doItemsLayout(); // the tree keeps its rows' heights until told
 }
 
 void SetupWizard::showCurrent()

@@ -49,6 +49,8 @@ protected:
     void showEvent(QShowEvent *event) override;
 
 private:
+    // Each row as tall as its status, wrapped at the column's width, needs.
+    void fitStatusRows();
     void buildUi();
     void loadRobots(); // the templates built in and saved, into the choice
     void chooseRobot(int index);
