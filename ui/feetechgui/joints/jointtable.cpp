@@ -2,6 +2,8 @@
 // Move all as one SYNC WRITE per baud rate, torque switches, register reads and identify.
 #include "jointtable.h"
 
+#include "jointnames.h"
+
 #include "busclient.h"
 #include "identifyquestion.h"
 #include "jointtableposes.h"
@@ -247,9 +249,12 @@ QString JointTable::servoName(int row) const
     const int index = servoIndex(row);
     if (index < 0)
         return tr("ID %1").arg(m_rows.at(row).servo.id);
-    return tr("ID %1 (%2)")
-        .arg(m_rows.at(row).servo.id)
-        .arg(m_client->servos()->at(index).info.model.name);
+    // By joint where the arm matches a template ("shoulder_pan (ID 1)"), as the tree says.
+    const feetech::JointNames joints = feetech::JointNames::of(*m_client);
+    const feetech::ServoInfo &info = m_client->servos()->at(index).info;
+    if (!joints.joint(info.address()).isEmpty())
+        return joints.label(info.address());
+    return tr("ID %1 (%2)").arg(info.id).arg(info.model.name);
 }
 
 void JointTable::setMessage(const QString &text, Tone tone)

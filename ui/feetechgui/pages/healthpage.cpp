@@ -223,9 +223,9 @@ bool HealthPage::moveTest(QString *error)
         // so the servo confirmed is looked up again by its address.
         const feetech::ServoInfo info = m_client->servos()->at(index).info;
         const QString question =
-            tr("Servo %1 (%2) will move %3 steps from where it stands and back, with its torque "
+            tr("%1 (%2) will move %3 steps from where it stands and back, with its torque "
                "on meanwhile. Make sure nothing is in the way. Move it?")
-                .arg(info.id)
+                .arg(feetech::JointNames::of(*m_client).label(info.address()))
                 .arg(info.model.name)
                 .arg(feetech::HealthMoveTest::kAmplitude);
         const bool confirmed = m_confirm(question);
@@ -397,7 +397,12 @@ void HealthPage::fillRow(int row, const ServoHealth &health)
     QStringList reasons;
     for (const feetech::HealthFinding &finding : health.findings)
         reasons.append(finding.message);
-    const QStringList cells {QString::number(health.id),
+    // The servo by joint where the arm matches a template, as the tree names it.
+    const feetech::ServoAddress address {health.id, health.baud};
+    const feetech::JointNames joints = feetech::JointNames::of(*m_client);
+    const QString servo =
+        joints.joint(address).isEmpty() ? QString::number(health.id) : joints.label(address);
+    const QStringList cells {servo,
                              health.model,
                              health.firmware,
                              feetech::verdictName(health.verdict),
