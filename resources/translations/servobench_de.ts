@@ -3659,10 +3659,6 @@ Eine belegte ID wird abgelehnt.</translation>
         <translation>Wählen Sie zuerst in der Tabelle das zu bewegende Servo aus.</translation>
     </message>
     <message>
-        <source>Servo %1 (%2) will move %3 steps from where it stands and back, with its torque on meanwhile. Make sure nothing is in the way. Move it?</source>
-        <translation>Servo %1 (%2) bewegt sich %3 Schritte von seiner aktuellen Stelle und zurück, währenddessen mit eingeschaltetem Drehmoment. Stellen Sie sicher, dass nichts im Weg ist. Bewegen?</translation>
-    </message>
-    <message>
         <source>The move test was not confirmed: nothing moved.</source>
         <translation>Der Bewegungstest wurde nicht bestätigt: Nichts wurde bewegt.</translation>
     </message>
@@ -3708,6 +3704,10 @@ Eine belegte ID wird abgelehnt.</translation>
             <numerusform>Vom %1 antwortete %n Gelenk nicht beim Scan: %2. Prüfen Sie seine Kabel und scannen Sie erneut.</numerusform>
             <numerusform>Vom %1 antworteten %n Gelenke nicht beim Scan: %2. Prüfen Sie ihre Kabel und scannen Sie erneut.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (%2) will move %3 steps from where it stands and back, with its torque on meanwhile. Make sure nothing is in the way. Move it?</source>
+        <translation>%1 (%2) bewegt sich %3 Schritte von seiner Stellung weg und zurück, währenddessen mit eingeschaltetem Drehmoment. Achten Sie darauf, dass nichts im Weg ist. Bewegen?</translation>
     </message>
 </context>
 <context>
@@ -5679,13 +5679,6 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
         <source>New frames are kept while paused and appear when you resume</source>
         <translation>Neue Frames werden während der Pause behalten und erscheinen beim Fortsetzen</translation>
     </message>
-    <message numerus="yes">
-        <source>The log keeps the newest %n frame(s); older ones were dropped</source>
-        <translation>
-            <numerusform>Das Protokoll behält den neuesten %n Frame; ältere wurden verworfen</numerusform>
-            <numerusform>Das Protokoll behält die neuesten %n Frames; ältere wurden verworfen</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Export packet log</source>
         <translation>Paketprotokoll exportieren</translation>
@@ -5713,6 +5706,20 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>Open recording</source>
         <translation>Aufzeichnung öffnen</translation>
+    </message>
+    <message numerus="yes">
+        <source>The log keeps the newest %n frame(s), errors longer; older ones were dropped</source>
+        <translation>
+            <numerusform>Das Protokoll behält den neuesten %n Frame, Fehler länger; ältere wurden verworfen</numerusform>
+            <numerusform>Das Protokoll behält die neuesten %n Frames, Fehler länger; ältere wurden verworfen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n older error(s) among them</source>
+        <translation>
+            <numerusform>darunter %n älterer Fehler</numerusform>
+            <numerusform>darunter %n ältere Fehler</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -3638,10 +3638,6 @@ An ID in use is refused.</source>
         <translation>请先在表中选择要移动的舵机。</translation>
     </message>
     <message>
-        <source>Servo %1 (%2) will move %3 steps from where it stands and back, with its torque on meanwhile. Make sure nothing is in the way. Move it?</source>
-        <translation>舵机 %1（%2）将在扭矩开启的状态下，从当前位置移动 %3 步再返回。请确保没有障碍物。要移动它吗？</translation>
-    </message>
-    <message>
         <source>The move test was not confirmed: nothing moved.</source>
         <translation>运动测试未确认：没有移动任何舵机。</translation>
     </message>
@@ -3686,6 +3682,10 @@ An ID in use is refused.</source>
         <translation>
             <numerusform>%1 有 %n 个关节在扫描中未应答：%2。请检查其线缆后重新扫描。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (%2) will move %3 steps from where it stands and back, with its torque on meanwhile. Make sure nothing is in the way. Move it?</source>
+        <translation>%1（%2）将从当前位置移动 %3 步再返回，期间扭矩开启。请确保没有障碍物。要移动吗？</translation>
     </message>
 </context>
 <context>
@@ -5647,12 +5647,6 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
         <source>New frames are kept while paused and appear when you resume</source>
         <translation>暂停期间新帧会被保留，并在继续时显示</translation>
     </message>
-    <message numerus="yes">
-        <source>The log keeps the newest %n frame(s); older ones were dropped</source>
-        <translation>
-            <numerusform>日志保留最新的 %n 帧；更早的帧已丢弃</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Export packet log</source>
         <translation>导出数据包日志</translation>
@@ -5680,6 +5674,18 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Open recording</source>
         <translation>打开记录</translation>
+    </message>
+    <message numerus="yes">
+        <source>The log keeps the newest %n frame(s), errors longer; older ones were dropped</source>
+        <translation>
+            <numerusform>日志保留最新的 %n 帧，错误保留更久；更早的已丢弃</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n older error(s) among them</source>
+        <translation>
+            <numerusform>其中包括 %n 个较早的错误</numerusform>
+        </translation>
     </message>
 </context>
 <context>
