@@ -321,6 +321,16 @@ private slots:
         QTRY_VERIFY(!m_client->telemetry()->isStreaming());
         QVERIFY(!test->isRunning());
         QVERIFY(child<QPushButton>("moveButton")->isEnabled());
+        // A sweep after it draws its own line and leaves the step's numbers as they were.
+        const QString riseTime = child<QLabel>("riseTimeLabel")->text();
+        child<QSpinBox>("sweepLegsSpinBox")->setValue(2);
+        QSignalSpy swept(test, &feetech::MotionTest::sweepFinished);
+        child<QPushButton>("sweepButton")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(swept.size() + failed.size(), 1, 20000);
+        QVERIFY(failed.isEmpty());
+        QCOMPARE(child<QLabel>("riseTimeLabel")->text(), riseTime);
+        QVERIFY2(test->recording().size() > 5,
+                 qPrintable(QString::number(test->recording().size())));
     }
 
     void stepTestAsksFirstWithCancelAsTheDefault()

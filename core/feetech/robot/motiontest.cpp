@@ -133,6 +133,7 @@ bool MotionTest::start(const MotionPlan &plan, Kind kind, MotionTestRefusal *ref
     m_recording.clear();
     m_summary = {};
     m_leg = 0;
+    m_sweepStartUs.reset();
     if (!ensureMonitor(plan.index, refusal))
         return false;
 
@@ -272,6 +273,10 @@ void MotionTest::onTelemetry(const QVector<FeedbackSample> &samples)
         }
         case Phase::Leg:
             m_summary.legs[m_leg].finalPosition = *position;
+            // The sweep as a line too: each position from the first leg's start on.
+            if (m_sweepStartUs && sample.steadyUs >= *m_sweepStartUs)
+                m_recording.append(
+                    {double(sample.steadyUs - *m_sweepStartUs) / kMicroseconds, *position});
             if (current && isReached(*position, sample.moving, m_legTarget)) {
                 m_lastPosition = position;
                 endLeg(true, sample.steadyUs);
@@ -333,6 +338,8 @@ void MotionTest::beginLeg()
         return;
     }
     setPhase(Phase::Leg, m_timing.reachTimeout);
+    if (!m_sweepStartUs)
+        m_sweepStartUs = m_commandUs;
     emit progress(
         tr("Sweep leg %1 of %2: moving to %3…").arg(m_leg + 1).arg(m_plan.legs).arg(m_legTarget));
 }

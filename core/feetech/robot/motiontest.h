@@ -94,8 +94,8 @@ public:
     bool isRunning() const { return m_phase != Phase::Idle; }
     Kind kind() const { return m_kind; }
     const MotionPlan &plan() const { return m_plan; }
-    // The position samples of the last step test, in seconds since the step command (the one
-    // before the command has a negative time).
+    // The position samples of the last test: a step test's in seconds since the step command
+    // (the one before the command has a negative time), a sweep's since its first leg began.
     const QVector<TimedValue> &recording() const { return m_recording; }
 
 signals:
@@ -140,6 +140,7 @@ private:
     qint64 m_commandUs = 0; // when the current goal was written (steady clock)
     std::optional<double> m_lastPosition;
     std::optional<qint64> m_lastSampleUs;
+    std::optional<qint64> m_sweepStartUs; // when the sweep's first leg began (steady clock)
     // Step test.
     QVector<TimedValue> m_recording;
     double m_stepStart = 0.0;

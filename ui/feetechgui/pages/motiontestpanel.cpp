@@ -312,7 +312,11 @@ void MotionTestPanel::startTest(feetech::MotionTest::Kind kind)
     if (m_confirmMoves && !confirmTest(kind, plan))
         return;
     emit statusChanged({}, false);
-    clearResults();
+    // A sweep has its own line on the plot; the step test's numbers stay until the next step.
+    if (kind == feetech::MotionTest::Kind::Step)
+        clearResults();
+    else
+        clearPlot();
     const bool started = kind == feetech::MotionTest::Kind::Step
         ? m_test->startStep(plan, &refusal)
         : m_test->startSweep(plan, &refusal);
@@ -338,6 +342,42 @@ void MotionTestPanel::onSweepFinished(const feetech::SweepSummary &summary)
         text += QLatin1Char(' ')
             + tr("A leg took %1 ms on average.").arg(QLocale().toString(*mean * 1000.0, 'f', 0));
     m_testProgress->setText(text);
+    plotSweep();
+}
+
+void MotionTestPanel::plotSweep()
+{
+    const QVector<feetech::TimedValue> &recording = m_test->recording();
+    QList<QPointF> points;
+    points.reserve(recording.size());
+    const feetech::MotionPlan &plan = m_test->plan();
+    double low = std::min(plan.from, plan.to);
+    double high = std::max(plan.from, plan.to);
+    for (const feetech::TimedValue &sample : recording) {
+        points.append({sample.seconds * 1000.0, sample.value});
+        low = std::min(low, sample.value);
+        high = std::max(high, sample.value);
+    }
+    const double last = points.isEmpty() ? 1000.0 : std::max(1.0, points.last().x());
+    m_response->replace(points);
+    // The two ends it sweeps between, where a step test shows its target and band.
+    m_bandHigh->setName(tr("Sweep ends"));
+    m_targetLine->clear();
+    m_bandHigh->replace({{0.0, double(plan.to)}, {last, double(plan.to)}});
+    m_bandLow->replace({{0.0, double(plan.from)}, {last, double(plan.from)}});
+    const double margin = std::max(1.0, (high - low) * 0.05);
+    m_timeAxis->setRange(0.0, last);
+    m_timeAxis->applyNiceNumbers();
+    m_positionAxis->setRange(low - margin, high + margin);
+    m_positionAxis->applyNiceNumbers();
+}
+
+void MotionTestPanel::clearPlot()
+{
+    m_response->clear();
+    m_targetLine->clear();
+    m_bandHigh->clear();
+    m_bandLow->clear();
 }
 
 void MotionTestPanel::onTestFailed(const QString &message)
@@ -407,6 +447,7 @@ void MotionTestPanel::plotRecording(const feetech::StepMetrics &metrics)
     const auto level = [first, last](double value) {
         return QList<QPointF> {{first, value}, {last, value}};
     };
+    m_bandHigh->setName(tr("Settling band"));
     m_targetLine->replace(level(metrics.target));
     m_bandHigh->replace(level(metrics.target + metrics.band));
     m_bandLow->replace(level(metrics.target - metrics.band));

@@ -53,6 +53,9 @@ signals:
     void statusChanged(const QString &text, bool isError);
 
 private:
+    // The sweep's positions over time, between its two ends.
+    void plotSweep();
+    void clearPlot();
     void buildSettings();
     void buildResults();
     void buildChart();
