@@ -5298,6 +5298,10 @@ Halten Sie Hände und Gegenstände vom Arm fern. Jetzt bewegen?</translation>
         <source>Position (%1)</source>
         <translation>Position (%1)</translation>
     </message>
+    <message>
+        <source>Sweep ends</source>
+        <translation>Enden des Schwenks</translation>
+    </message>
 </context>
 <context>
     <name>MotionTestRefusal</name>

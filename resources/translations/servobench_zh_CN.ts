@@ -5271,6 +5271,10 @@ Keep hands and objects clear of the arm. Move it now?</source>
         <source>Position (%1)</source>
         <translation>位置（%1）</translation>
     </message>
+    <message>
+        <source>Sweep ends</source>
+        <translation>扫动两端</translation>
+    </message>
 </context>
 <context>
     <name>MotionTestRefusal</name>
