@@ -11,6 +11,7 @@
 #include "registertablemodel.h"
 #include "servotree.h"
 #include "settingscheckservice.h"
+#include "telemetryhub.h"
 
 #include <QAbstractItemView>
 #include <QLabel>
@@ -349,6 +350,21 @@ private slots:
         auto *verified = workspace()->findChild<QLabel *>(QStringLiteral("verifiedMark"));
         QVERIFY(verified);
         QVERIFY2(verified->isHidden(), qPrintable(verified->text()));
+    }
+
+    // A servo unplugged mid-stream: its missed samples are in the status bar's counters, which
+    // said "timeouts 0" while the Monitor counted them.
+    void theStatusBarCountsWhatAStreamMissed()
+    {
+        connectAndScan();
+        QVERIFY(client()->telemetry()->subscribe(this, {0, 1, 2}, 50));
+        const auto stop = qScopeGuard([this] { client()->telemetry()->unsubscribe(this); });
+        QSignalSpy samples(client()->telemetry(), &feetech::TelemetryHub::samplesReceived);
+        QVERIFY(samples.wait(5000));
+        m_simulator->call([](sim::Simulator &simulator) { simulator.feetechBus()->unplug(1); });
+        auto *counters = m_window->findChild<QLabel *>(QStringLiteral("linkCounters"));
+        QVERIFY(counters);
+        QTRY_VERIFY_WITH_TIMEOUT(counters->text().contains(QLatin1String("stream missed")), 10000);
     }
 
     void unknownModelIsReadOnlyRawBytes()

@@ -27,6 +27,7 @@
 #include "shortcutsdialog.h"
 #include "simulatordock.h"
 #include "skippablequestion.h"
+#include "telemetryhub.h"
 #include "teleopdialog.h"
 #include "welcomepanel.h"
 #include "windowmemory.h"
@@ -216,6 +217,13 @@ MainWindow::MainWindow(QWidget *parent)
                 &MainWindow::onCountersChanged);
         connect(link, &seriallink::LinkMirror::packetLogged, m_packetLog, &PacketLogDock::append);
     }
+    // A stream's misses are said beside the link's counters: a servo that stops answering in a
+    // SYNC READ is a missed sample, not a timed-out request, and the line must not say "0".
+    connect(m_feetech->telemetry(), &feetech::TelemetryHub::statsChanged, this,
+            [this](const feetech::TelemetryStats &stats) {
+                m_streamMissed = stats.missed;
+                onCountersChanged(m_lastCounters);
+            });
 
     m_rateTimer = new QTimer(this);
     m_rateTimer->setInterval(kRateRefreshMs);
@@ -630,14 +638,18 @@ void MainWindow::onStatusChanged(const seriallink::ConnectionStatus &status)
 
 void MainWindow::onCountersChanged(const seriallink::LinkCounters &counters)
 {
-    m_counters->setText(tr("sent %1 · ok %2 · checksum errors %3 · timeouts %4 · retries %5 · "
-                           "discarded %6 B")
-                            .arg(counters.framesSent)
-                            .arg(counters.repliesOk)
-                            .arg(counters.checksumErrors)
-                            .arg(counters.timeouts)
-                            .arg(counters.retries)
-                            .arg(counters.discardedBytes));
+    m_lastCounters = counters;
+    QString text = tr("sent %1 · ok %2 · checksum errors %3 · timeouts %4 · retries %5 · "
+                      "discarded %6 B")
+                       .arg(counters.framesSent)
+                       .arg(counters.repliesOk)
+                       .arg(counters.checksumErrors)
+                       .arg(counters.timeouts)
+                       .arg(counters.retries)
+                       .arg(counters.discardedBytes);
+    if (m_streamMissed > 0)
+        text += tr(" · stream missed %1").arg(m_streamMissed);
+    m_counters->setText(text);
 }
 
 void MainWindow::updatePollRate()

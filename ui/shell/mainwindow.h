@@ -128,6 +128,8 @@ private:
     QProgressDialog *m_probeProgress = nullptr;
     WelcomePanel *m_welcome = nullptr;
     std::unique_ptr<WindowMemory> m_memory;
+    seriallink::LinkCounters m_lastCounters; // as the status bar shows them
+    qint64 m_streamMissed = 0; // samples the Feetech stream missed (its servos' silences)
     // The protocol chosen before a simulated bus set its own: back once a system port is chosen.
     std::optional<ConnectionController::Protocol> m_protocolBeforeSimulated;
 };

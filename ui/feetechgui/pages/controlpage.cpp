@@ -701,5 +701,9 @@ void ControlPage::onAllTorqueOff()
     if (ready())
         m_controls.torqueOff->setChecked(true); // the read-back confirms it
     m_controls.torqueState->setText(tr("Off: All torque off was sent to every servo."));
-    setStatus(tr("All torque off: torque is off on every servo of the bus."), Severity::Warning);
+    // Sent, not yet confirmed: the read-back of each servo says (a servo that no longer
+    // answers cannot confirm it, and the window says so then).
+    setStatus(tr("All torque off was sent to every servo of the bus; each one's torque is read "
+                 "back to confirm it."),
+              Severity::Warning);
 }
