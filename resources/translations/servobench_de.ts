@@ -1067,12 +1067,12 @@
         <translation>Aus: „Alle Drehmomente aus“ wurde an jedes Servo gesendet.</translation>
     </message>
     <message>
-        <source>All torque off: torque is off on every servo of the bus.</source>
-        <translation>Alle Drehmomente aus: Das Drehmoment ist an jedem Servo des Busses aus.</translation>
-    </message>
-    <message>
         <source>The bus is shared with another program: ServoBench neither reads nor moves this servo meanwhile. Stop sharing (Link › Share this bus…) to control it here.</source>
         <translation>Der Bus wird mit einem anderen Programm geteilt: ServoBench liest und bewegt dieses Servo währenddessen nicht. Beenden Sie die Freigabe (Verbindung › Diesen Bus teilen…), um es hier zu steuern.</translation>
+    </message>
+    <message>
+        <source>All torque off was sent to every servo of the bus; each one&apos;s torque is read back to confirm it.</source>
+        <translation>Alles Drehmoment aus wurde an jedes Servo des Busses gesendet; das Drehmoment jedes Servos wird zur Bestätigung zurückgelesen.</translation>
     </message>
 </context>
 <context>
@@ -4687,6 +4687,10 @@ Halten Sie Hände und Gegenstände vom Arm fern. Jetzt bewegen?</translation>
     <message>
         <source>The questions you ticked &quot;Don&apos;t ask again&quot; on are asked again</source>
         <translation>Fragen, bei denen Sie „Nicht mehr fragen“ angehakt haben, werden wieder gestellt</translation>
+    </message>
+    <message>
+        <source> · stream missed %1</source>
+        <translation> · Datenstrom verpasst %1</translation>
     </message>
 </context>
 <context>

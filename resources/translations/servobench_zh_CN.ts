@@ -1064,12 +1064,12 @@
         <translation>关：已向每个舵机发送“全部关闭扭矩”。</translation>
     </message>
     <message>
-        <source>All torque off: torque is off on every servo of the bus.</source>
-        <translation>全部关闭扭矩：总线上每个舵机的扭矩均已关闭。</translation>
-    </message>
-    <message>
         <source>The bus is shared with another program: ServoBench neither reads nor moves this servo meanwhile. Stop sharing (Link › Share this bus…) to control it here.</source>
         <translation>总线正与另一个程序共享：在此期间 ServoBench 既不读取也不移动此舵机。请停止共享（连接 › 共享此总线…）后在此控制它。</translation>
+    </message>
+    <message>
+        <source>All torque off was sent to every servo of the bus; each one&apos;s torque is read back to confirm it.</source>
+        <translation>已向总线上的每个舵机发送全部关闭扭矩；将逐一读回每个舵机的扭矩以确认。</translation>
     </message>
 </context>
 <context>
@@ -4663,6 +4663,10 @@ Keep hands and objects clear of the arm. Move it now?</source>
     <message>
         <source>The questions you ticked &quot;Don&apos;t ask again&quot; on are asked again</source>
         <translation>勾选了“不再询问”的问题将重新询问</translation>
+    </message>
+    <message>
+        <source> · stream missed %1</source>
+        <translation> · 数据流丢失 %1</translation>
     </message>
 </context>
 <context>
