@@ -116,6 +116,31 @@ private slots:
                  qPrintable(dialog.statusLabel()->text()));
     }
 
+    // The demo's leader has no file of its own: with none chosen, the one its simulator makes of
+    // what the arm holds is used, not a refusal.
+    void theSimulatedLeaderWithNoFileUsesTheOneItsSimulatorMakes()
+    {
+        startArms();
+        TeleopDialog dialog(m_client.get());
+        dialog.show();
+        int made = 0;
+        dialog.setSimulatedLeader([this](QString *) { return m_leader->linkPath(); },
+                                  [this, &made](QString *) {
+                                      ++made;
+                                      return leaderFile();
+                                  });
+        dialog.followerFileEdit()->setText(followerFile());
+        dialog.leaderFileEdit()->clear();
+        dialog.startButton()->click();
+        QCOMPARE(made, 1);
+        QCOMPARE(QDir::fromNativeSeparators(dialog.leaderFileEdit()->text()), leaderFile());
+        QTRY_COMPARE_WITH_TIMEOUT(dialog.teleoperation()->state(),
+                                  feetech::Teleoperation::State::Running, 15000);
+        dialog.stopButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(dialog.teleoperation()->state(),
+                                  feetech::Teleoperation::State::Idle, 10000);
+    }
+
     void mismatchedFilesAreRefusedWithTheReasonShown()
     {
         startArms();

@@ -11,6 +11,7 @@
 #include "doctorpanel.h"
 #include "feetechworkspace.h"
 #include "languagemenu.h"
+#include "lerobotcalibration.h"
 #include "packetlogdock.h"
 #include "packetlogmodel.h"
 #include "packetwindow.h"
@@ -21,14 +22,18 @@
 #include "recordreplaydialog.h"
 #include "replacemotorwizard.h"
 #include "robotactions.h"
+#include "robottemplate.h"
 #include "servolist.h"
 #include "setupwizard.h"
 #include "sharedialog.h"
 #include "shortcutsdialog.h"
+#include "simulator.h"
 #include "simulatordock.h"
+#include "simulatorthread.h"
 #include "skippablequestion.h"
 #include "telemetryhub.h"
 #include "teleopdialog.h"
+#include "virtualfeetechbus.h"
 #include "welcomepanel.h"
 #include "windowmemory.h"
 
@@ -45,6 +50,7 @@
 #include <QProgressDialog>
 #include <QScreen>
 #include <QStackedWidget>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTimer>
@@ -73,6 +79,44 @@ QString stateColour(seriallink::ConnectionState state)
         break;
     }
     return QStringLiteral("#555555");
+}
+
+// A LeRobot calibration file of what the demo's simulated leader arm holds (its joints named as
+// its template names them), in ServoBench's data folder: the demo teleoperates without a file
+// the user never had. Its path; empty and *error when it could not be made.
+QString demoLeaderCalibration(sim::DemoServos &demo, QString *error)
+{
+    sim::SimulatorThread *arm = demo.leaderArmSimulator();
+    const auto robot = std::find_if(
+        feetech::builtInRobotTemplates().cbegin(), feetech::builtInRobotTemplates().cend(),
+        [](const feetech::RobotTemplate &t) { return t.name == u"SO-101 leader arm"; });
+    if (!arm || robot == feetech::builtInRobotTemplates().cend()) {
+        *error = MainWindow::tr("the simulated leader arm is not running");
+        return {};
+    }
+    QVector<feetech::LeRobotMotor> motors;
+    arm->call([&motors, &robot](sim::Simulator &simulator) {
+        sim::VirtualFeetechBus *bus = simulator.feetechBus();
+        for (int i = 0; bus && i < bus->servoCount(); ++i) {
+            const sim::VirtualFeetechServo &servo = bus->servo(i);
+            for (const feetech::RobotJoint &joint : robot->joints) {
+                if (joint.id == servo.id())
+                    motors.append({joint.name, joint.id, 0, servo.value(u"position_offset"),
+                                   servo.value(u"min_angle_limit"),
+                                   servo.value(u"max_angle_limit")});
+            }
+        }
+    });
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    QDir().mkpath(folder);
+    const QString path = QDir(folder).filePath(QStringLiteral("demo-leader-calibration.json"));
+    util::FileError failed;
+    if (motors.isEmpty() || !feetech::saveLeRobotCalibration(motors, path, &failed)) {
+        *error = motors.isEmpty() ? MainWindow::tr("the simulated leader arm has no joints")
+                                  : failed.describe();
+        return {};
+    }
+    return path;
 }
 
 // The height of the tabs under docks tabbed together, as the main window draws them.
@@ -441,8 +485,16 @@ void MainWindow::createMenus()
                 return port;
             };
         }
+        // Its calibration file, made of what the simulated leader holds, for a demo run that
+        // has none.
+        std::function<QString(QString *)> leaderCalibration;
+        if (simulatedLeader) {
+            leaderCalibration = [demo = m_connection->demo()](QString *error) {
+                return demoLeaderCalibration(*demo, error);
+            };
+        }
         if (dialog->teleoperation()->state() == feetech::Teleoperation::State::Idle)
-            dialog->setSimulatedLeader(simulatedLeader);
+            dialog->setSimulatedLeader(simulatedLeader, leaderCalibration);
         dialog->show();
         dialog->raise();
         dialog->activateWindow();

@@ -204,8 +204,10 @@ TeleopDialog::TeleopDialog(feetech::BusClient *follower, QWidget *parent)
     resize(sizeHint().expandedTo(QSize(560, 0)));
 }
 
-void TeleopDialog::setSimulatedLeader(std::function<QString(QString *error)> start)
+void TeleopDialog::setSimulatedLeader(std::function<QString(QString *error)> start,
+                                      std::function<QString(QString *error)> calibration)
 {
+    m_simulatedLeaderCalibration = std::move(calibration);
     const bool offered = !m_simulatedLeader && start;
     m_simulatedLeader = std::move(start);
     refreshPorts();
@@ -276,6 +278,17 @@ void TeleopDialog::start()
         if (run.leaderPort.isEmpty()) {
             showStatus(tr("The simulated leader arm could not start: %1").arg(error), true);
             return;
+        }
+        // The demo's leader has no file of its own until one is made of what it holds.
+        if (m_leaderFile->text().trimmed().isEmpty() && m_simulatedLeaderCalibration) {
+            const QString made = m_simulatedLeaderCalibration(&error);
+            if (made.isEmpty()) {
+                showStatus(
+                    tr("The simulated leader's calibration file could not be made: %1").arg(error),
+                    true);
+                return;
+            }
+            m_leaderFile->setText(QDir::toNativeSeparators(made));
         }
     }
     run.followerCalibration = m_followerFile->text().trimmed();

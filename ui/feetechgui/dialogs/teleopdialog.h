@@ -37,7 +37,11 @@ public:
 
     // When the window runs on simulated servos: `start` gives the simulated leader arm's port
     // (empty and *error when it cannot start), and the port list offers it. Empty: not offered.
-    void setSimulatedLeader(std::function<QString(QString *error)> start);
+    // `calibration` writes a LeRobot file that the simulated leader holds and gives its path
+    // (empty and *error when it cannot): a run with the simulated leader and no leader's file
+    // uses it, rather than refuse for a file the demo never had.
+    void setSimulatedLeader(std::function<QString(QString *error)> start,
+                            std::function<QString(QString *error)> calibration = {});
 
     feetech::Teleoperation *teleoperation() const { return m_teleop; }
     QComboBox *leaderPortBox() const { return m_leaderPort; }
@@ -80,6 +84,7 @@ private:
     feetech::BusClient *m_client = nullptr;
     feetech::Teleoperation *m_teleop = nullptr;
     std::function<QString(QString *error)> m_simulatedLeader;
+    std::function<QString(QString *error)> m_simulatedLeaderCalibration;
     QComboBox *m_leaderPort = nullptr;
     QLineEdit *m_followerFile = nullptr;
     QLineEdit *m_leaderFile = nullptr;
