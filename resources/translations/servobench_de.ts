@@ -4692,6 +4692,14 @@ Halten Sie Hände und Gegenstände vom Arm fern. Jetzt bewegen?</translation>
         <source> · stream missed %1</source>
         <translation> · Datenstrom verpasst %1</translation>
     </message>
+    <message>
+        <source>the simulated leader arm is not running</source>
+        <translation>der simulierte Führungsarm läuft nicht</translation>
+    </message>
+    <message>
+        <source>the simulated leader arm has no joints</source>
+        <translation>der simulierte Führungsarm hat keine Gelenke</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -9217,6 +9225,10 @@ Befreien Sie zuerst das Servohorn (entfernen Sie, was es blockiert). Dann schalt
     <message>
         <source>Joints map:</source>
         <translation>Gelenkzuordnung:</translation>
+    </message>
+    <message>
+        <source>The simulated leader&apos;s calibration file could not be made: %1</source>
+        <translation>Die Kalibrierdatei des simulierten Führungsarms ließ sich nicht anlegen: %1</translation>
     </message>
 </context>
 <context>

@@ -4668,6 +4668,14 @@ Keep hands and objects clear of the arm. Move it now?</source>
         <source> · stream missed %1</source>
         <translation> · 数据流丢失 %1</translation>
     </message>
+    <message>
+        <source>the simulated leader arm is not running</source>
+        <translation>模拟主臂未在运行</translation>
+    </message>
+    <message>
+        <source>the simulated leader arm has no joints</source>
+        <translation>模拟主臂没有关节</translation>
+    </message>
 </context>
 <context>
     <name>MemoryTablePage</name>
@@ -9163,6 +9171,10 @@ First free the horn (remove what blocks it). Then ServoBench switches its torque
     <message>
         <source>Joints map:</source>
         <translation>关节映射：</translation>
+    </message>
+    <message>
+        <source>The simulated leader&apos;s calibration file could not be made: %1</source>
+        <translation>无法生成模拟主臂的校准文件：%1</translation>
     </message>
 </context>
 <context>
