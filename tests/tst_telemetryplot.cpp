@@ -247,7 +247,7 @@ private slots:
         QVERIFY(m_plot->plotArea(Quantity::Load).isEmpty());
     }
 
-    void exportPngWritesAnImageOfTheWidgetsSizeWithTheServosColours()
+    void exportPngWritesAnImageOfItsOwnSizeWithTheServosColours()
     {
         m_plot->resize(700, 420);
         feed(*m_plot, 0, 300, 2);
@@ -255,7 +255,9 @@ private slots:
         QString error;
         QVERIFY2(m_plot->exportPng(path, &error), qPrintable(error));
         const QImage image(path);
-        QCOMPARE(image.size(), m_plot->size() * m_plot->devicePixelRatioF());
+        // Sized for the file, whatever the widget's size: a pane 300 px tall for each quantity.
+        QCOMPARE(image.size(), m_plot->exportSize(int(m_plot->quantities().size())));
+        QCOMPARE(image.width(), TelemetryPlot::kExportWidth);
         // Both traces are in it, in their servos' colours.
         for (const quint8 id : {quint8(1), quint8(2)}) {
             const QColor colour = m_plot->servoColor(id);
