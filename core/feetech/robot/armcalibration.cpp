@@ -7,6 +7,8 @@
 #include <QCoreApplication>
 
 #include <algorithm>
+#include <functional>
+#include <optional>
 
 namespace {
 
@@ -188,41 +190,50 @@ QVector<model::WriteItem> calibrationWrites(qint32 offset, qint32 minimumLimit, 
         {QString::fromUtf16(kMaximumLimitKey), std::min(maximumLimit, kLeRobotMaximumPosition)}};
 }
 
+namespace {
+
+// Each item the servo does not hold as `say` puts it: the item, and what the servo holds (none
+// when it was not read).
+QStringList
+unheld(const QVector<model::WriteItem> &items, const QHash<QString, qint32> &holds,
+       const std::function<QString(const model::WriteItem &, std::optional<qint32>)> &say)
+{
+    QStringList said;
+    for (const model::WriteItem &item : items) {
+        const auto found = holds.constFind(item.key);
+        if (found != holds.constEnd() && *found == item.value)
+            continue;
+        said.append(
+            say(item, found != holds.constEnd() ? std::optional<qint32>(*found) : std::nullopt));
+    }
+    return said;
+}
+
+} // namespace
+
 QStringList calibrationMismatches(const QVector<model::WriteItem> &items,
                                   const QHash<QString, qint32> &readBack)
 {
-    QStringList mismatches;
-    for (const model::WriteItem &item : items) {
-        const auto found = readBack.constFind(item.key);
-        if (found != readBack.constEnd() && *found == item.value)
-            continue;
-        mismatches.append(ArmCalibrationTr::tr("%1: wrote %2, the servo holds %3")
-                              .arg(item.key)
-                              .arg(item.value)
-                              .arg(found != readBack.constEnd() ? QString::number(*found)
-                                                                : ArmCalibrationTr::tr("nothing")));
-    }
-    return mismatches;
+    return unheld(items, readBack, [](const model::WriteItem &item, std::optional<qint32> held) {
+        return ArmCalibrationTr::tr("%1: wrote %2, the servo holds %3")
+            .arg(item.key)
+            .arg(item.value)
+            .arg(held ? QString::number(*held) : ArmCalibrationTr::tr("nothing"));
+    });
 }
 
 QStringList calibrationDifferences(const RegisterTable &table,
                                    const QVector<model::WriteItem> &fileSays,
                                    const QHash<QString, qint32> &servoHolds)
 {
-    QStringList differences;
-    for (const model::WriteItem &item : fileSays) {
-        const auto found = servoHolds.constFind(item.key);
-        if (found != servoHolds.constEnd() && *found == item.value)
-            continue;
-        const Register *reg = table.find(item.key);
-        differences.append(ArmCalibrationTr::tr("%1: the file says %2, the servo holds %3")
-                               .arg(reg ? tableText(reg->label) : item.key)
-                               .arg(item.value)
-                               .arg(found != servoHolds.constEnd()
-                                        ? QString::number(*found)
-                                        : ArmCalibrationTr::tr("nothing readable")));
-    }
-    return differences;
+    return unheld(
+        fileSays, servoHolds, [&table](const model::WriteItem &item, std::optional<qint32> held) {
+            const Register *reg = table.find(item.key);
+            return ArmCalibrationTr::tr("%1: the file says %2, the servo holds %3")
+                .arg(reg ? tableText(reg->label) : item.key)
+                .arg(item.value)
+                .arg(held ? QString::number(*held) : ArmCalibrationTr::tr("nothing readable"));
+        });
 }
 
 } // namespace feetech
