@@ -6,6 +6,7 @@
 #include "goalrange.h"
 #include "goalstreamer.h"
 #include "guardbanner.h"
+#include "jointnames.h"
 #include "motiontestpanel.h"
 #include "palette.h"
 #include "registerkeys.h"
@@ -231,7 +232,12 @@ bool ControlPage::testRunsHere() const
 
 QString ControlPage::servoName() const
 {
-    return m_servo ? tr("Servo ID %1").arg(m_servo->id) : QString();
+    if (!m_servo)
+        return {};
+    // By joint where the arm matches a template ("shoulder_pan (ID 1)"), as the tree says.
+    const feetech::JointNames joints = feetech::JointNames::of(*m_client);
+    return joints.joint(*m_servo).isEmpty() ? tr("Servo ID %1").arg(m_servo->id)
+                                            : joints.label(*m_servo);
 }
 
 void ControlPage::onServosChanged()
