@@ -90,10 +90,14 @@ double cpuSeconds(qint64 pid)
     // The fields after the command name, which is in parentheses and may hold spaces.
     const QByteArray text = stat.readAll();
     const QList<QByteArray> fields = text.mid(text.lastIndexOf(')') + 2).split(' ');
-    if (fields.size() < 13)
+    if (fields.size() < 13) // through the system time
         return -1;
-    const double ticks = double(sysconf(_SC_CLK_TCK));
-    return (fields.at(11).toDouble() + fields.at(12).toDouble()) / ticks;
+    // utime and stime, the 14th and 15th fields of stat(5), in clock ticks (the list starts
+    // at the 3rd field, the state).
+    constexpr int kUserTicks = 14 - 3;
+    constexpr int kSystemTicks = 15 - 3;
+    const double ticksPerSecond = double(sysconf(_SC_CLK_TCK));
+    return (fields.at(kUserTicks).toDouble() + fields.at(kSystemTicks).toDouble()) / ticksPerSecond;
 }
 
 // servobench on its welcome page, nothing connected, nobody touching it: % of one core.

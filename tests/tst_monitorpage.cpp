@@ -15,9 +15,9 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QTabBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include <QTabBar>
 #include <QtTest>
 
 #include <memory>

@@ -129,7 +129,12 @@ bool TransactionTracker::claims(const QByteArray &frame) const
             && (m_current->answerSize == 0 || frame.size() == m_current->answerSize))
             return true;
     }
-    return m_late && m_late->ids.contains(quint8(frame.at(2)))
+    return isLateAnswer(frame);
+}
+
+bool TransactionTracker::isLateAnswer(const QByteArray &frame) const
+{
+    return m_late && frame.size() >= kStatusOverhead && m_late->ids.contains(quint8(frame.at(2)))
         && (m_late->answerSize == 0 || frame.size() == m_late->answerSize);
 }
 
@@ -174,10 +179,9 @@ bool TransactionTracker::expire(qint64 nowUs)
 
 bool TransactionTracker::heardLate(const QByteArray &frame, qint64 nowUs)
 {
-    if (!m_late || frame.size() < kStatusOverhead
-        || (m_late->answerSize != 0 && frame.size() != m_late->answerSize)
-        || !m_late->ids.removeOne(quint8(frame.at(2))))
+    if (!isLateAnswer(frame))
         return false;
+    m_late->ids.removeOne(quint8(frame.at(2)));
     m_late->transaction.replies.append(frame);
     m_late->transaction.roundTripUs = nowUs - m_late->transaction.timeUs;
     if (m_late->ids.isEmpty())

@@ -81,6 +81,8 @@ private:
         int answerSize = 0;
         qint64 untilUs = 0; // after this, what is missing never came
     };
+    // Whether `frame` answers the late request (an ID it still waits for, the answer's size).
+    bool isLateAnswer(const QByteArray &frame) const;
     // An answer to the late request; true when it was one.
     bool heardLate(const QByteArray &frame, qint64 nowUs);
     // The late request is complete as it is: answered late, or not at all.

@@ -243,9 +243,10 @@ void RecordReplayDialog::switchNextTorqueOff()
     }
     const int index = m_recordIndexes.at(m_torqueOffNext);
     const feetech::ServoInfo &servo = m_client->servos()->at(index).info;
-    const QString name = feetech::JointNames::of(*m_client).label(servo.address());
-    const auto fail = [this, name](const QString &why) {
+    const auto fail = [this, address = servo.address()](const QString &why) {
         m_torqueOffNext = -1;
+        // Named only when it failed: the names read the templates from disk.
+        const QString name = feetech::JointNames::of(*m_client).label(address);
         showStatus(
             tr("Torque could not be switched off on %1: %2 Nothing is recorded.").arg(name, why),
             true);

@@ -364,6 +364,8 @@ void HealthPage::rebuildRows()
 {
     const int selected = m_table->currentRow();
     m_table->setRowCount(m_client->servos()->count());
+    // Read once a table (the templates come from disk), not once a row.
+    const feetech::JointNames joints = feetech::JointNames::of(*m_client);
     for (int row = 0; row < m_client->servos()->count(); ++row) {
         const feetech::ServoInfo &info = m_client->servos()->at(row).info;
         ServoHealth health;
@@ -372,10 +374,11 @@ void HealthPage::rebuildRows()
             health = *found;
         if (found == m_health.constEnd()) { // as the scan found it
             health.id = info.id;
+            health.baud = info.baud;
             health.model = info.model.name;
             health.firmware = info.firmware();
         }
-        fillRow(row, health);
+        fillRow(row, health, joints);
         if (found == m_health.constEnd()) {
             m_table->item(row, VerdictColumn)->setText(tr("not checked"));
             m_table->item(row, VerdictColumn)->setForeground(palette().color(QPalette::Text));
@@ -392,14 +395,13 @@ void HealthPage::rebuildRows()
     updateActions();
 }
 
-void HealthPage::fillRow(int row, const ServoHealth &health)
+void HealthPage::fillRow(int row, const ServoHealth &health, const feetech::JointNames &joints)
 {
     QStringList reasons;
     for (const feetech::HealthFinding &finding : health.findings)
         reasons.append(finding.message);
     // The servo by joint where the arm matches a template, as the tree names it.
     const feetech::ServoAddress address {health.id, health.baud};
-    const feetech::JointNames joints = feetech::JointNames::of(*m_client);
     const QString servo =
         joints.joint(address).isEmpty() ? QString::number(health.id) : joints.label(address);
     const QStringList cells {servo,

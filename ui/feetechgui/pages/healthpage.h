@@ -20,8 +20,9 @@ class QTableWidget;
 class SettingsCheckPanel;
 
 namespace feetech {
+class JointNames;
 class BusClient;
-}
+} // namespace feetech
 
 class HealthPage : public QWidget
 {
@@ -84,7 +85,7 @@ private:
     // when none is missing or the servos are no known arm.
     QString missingJoints() const;
     void reassess();
-    void fillRow(int row, const feetech::ServoHealth &health);
+    void fillRow(int row, const feetech::ServoHealth &health, const feetech::JointNames &joints);
     void updateActions();
     void showState(const QString &text, bool error);
     int selectedServo() const; // client index of the selected row, -1 for none

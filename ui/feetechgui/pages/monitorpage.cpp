@@ -22,13 +22,13 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScopedValueRollback>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStyle>
-#include <QTimer>
 #include <QTabBar>
-#include <QScopedValueRollback>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -468,7 +468,8 @@ void MonitorPage::onQuantityToggled()
 void MonitorPage::fitPanes()
 {
     const QVector<feetech::Quantity> ticked = quantities();
-    const feetech::Quantity shown = m_quantityTabs->isVisible() && m_quantityTabs->currentIndex() >= 0
+    const feetech::Quantity shown =
+        m_quantityTabs->isVisible() && m_quantityTabs->currentIndex() >= 0
         ? feetech::Quantity(m_quantityTabs->tabData(m_quantityTabs->currentIndex()).toInt())
         : (ticked.isEmpty() ? feetech::Quantity::Position : ticked.first());
     const QScopedValueRollback<bool> fitting(m_fittingPanes, true);
@@ -477,14 +478,20 @@ void MonitorPage::fitPanes()
         m_plot->setQuantities(ticked);
         return;
     }
-    // One pane, its quantity chosen by a tab; the tabs keep the order of the ticks.
-    while (m_quantityTabs->count() > 0)
-        m_quantityTabs->removeTab(0);
-    for (const feetech::Quantity quantity : ticked) {
-        const int tab = m_quantityTabs->addTab(feetech::quantityName(quantity));
-        m_quantityTabs->setTabData(tab, int(quantity));
-        if (quantity == shown)
-            m_quantityTabs->setCurrentIndex(tab);
+    // One pane, its quantity chosen by a tab; the tabs keep the order of the ticks, and are
+    // made again only when the ticks change (a resize keeps them).
+    QVector<feetech::Quantity> tabbed;
+    for (int tab = 0; tab < m_quantityTabs->count(); ++tab)
+        tabbed.append(feetech::Quantity(m_quantityTabs->tabData(tab).toInt()));
+    if (tabbed != ticked) {
+        while (m_quantityTabs->count() > 0)
+            m_quantityTabs->removeTab(0);
+        for (const feetech::Quantity quantity : ticked) {
+            const int tab = m_quantityTabs->addTab(feetech::quantityName(quantity));
+            m_quantityTabs->setTabData(tab, int(quantity));
+            if (quantity == shown)
+                m_quantityTabs->setCurrentIndex(tab);
+        }
     }
     m_quantityTabs->show();
     m_plot->setQuantities({feetech::Quantity(
